@@ -1,0 +1,48 @@
+#include "assembly/dof_map.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+
+#include "common/errors.hpp"
+
+namespace bb {
+
+DofMap number_dofs(const Model& model) {
+  DofMap map;
+  map.dim = model.mesh.dim;
+  const int n = model.mesh.n_nodes() * map.dim;
+  std::vector<char> fixed(n, 0);
+  std::map<int, double> values;
+  for (const Constraint& c : model.constraints) {
+    auto set = model.node_sets.find(c.set);
+    if (set == model.node_sets.end()) throw InputError(fmt::format("constraint on unknown node set '{}'", c.set));
+    for (int node : set->second) {
+      for (Direction d : c.directions) {
+        const int g = node * map.dim + d;
+        fixed[g] = 1;
+        values[g] = c.value;  // a later constraint on the same DOF wins
+      }
+    }
+  }
+  map.equation.assign(n, -1);
+  for (int g = 0; g < n; ++g) {
+    if (fixed[g]) {
+      map.constrained_dofs.push_back(g);
+    } else {
+      map.equation[g] = map.n_free++;
+      map.free_dofs.push_back(g);
+    }
+  }
+  map.prescribed.resize(static_cast<Eigen::Index>(map.constrained_dofs.size()));
+  for (size_t i = 0; i < map.constrained_dofs.size(); ++i) map.prescribed[static_cast<Eigen::Index>(i)] = values[map.constrained_dofs[i]];
+  return map;
+}
+
+std::string describe_dof(const Mesh& mesh, int global_dof) {
+  static constexpr const char* names[] = {"ux", "uy", "uz"};
+  const int node = global_dof / mesh.dim;
+  return fmt::format("node {} {}", mesh.node_ids[node], names[global_dof % mesh.dim]);
+}
+
+}  // namespace bb

@@ -1,0 +1,27 @@
+// Numbering of nodal DOFs into free equations and constrained values.
+#pragma once
+#include <Eigen/Dense>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace bb {
+
+struct DofMap {
+  int dim = 2;
+  int n_free = 0;
+  std::vector<int> equation;          // per global DOF (node * dim + dir): free index, or -1
+  std::vector<int> free_dofs;         // global DOF of each free equation
+  std::vector<int> constrained_dofs;  // global DOFs with a prescribed value
+  Eigen::VectorXd prescribed;         // value of each constrained DOF, in constrained_dofs order
+
+  int n_global() const { return static_cast<int>(equation.size()); }
+};
+
+// Throws InputError when a constraint names an unknown set.
+DofMap number_dofs(const Model& model);
+
+// "node 17 uy" for messages.
+std::string describe_dof(const Mesh& mesh, int global_dof);
+
+}  // namespace bb

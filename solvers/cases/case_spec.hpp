@@ -1,0 +1,108 @@
+// A case file parsed into plain, validated structs (parse once, at the edge).
+#pragma once
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linalg/modal_solver.hpp"
+#include "mesh/mapped_quad.hpp"
+#include "model/model.hpp"
+
+namespace bb {
+
+struct SourceLocation {
+  std::filesystem::path file;
+  int line = 0;
+  std::string where() const;  // "file:line"
+};
+
+struct MeshSpec {
+  enum class Kind { mapped_quad, csv } kind = Kind::mapped_quad;
+  MappedQuadSpec mapped;
+  std::filesystem::path nodes_csv;     // csv: columns id,x,y
+  std::filesystem::path elements_csv;  // csv: columns id,n1,n2,n3[,n4]
+  ElementType element = ElementType::q4;
+  SourceLocation at;
+};
+
+struct NodeSetSpec {
+  std::string name;
+  std::vector<long> ids;  // explicit ids, or empty
+  // Coordinate predicate: every given axis must match (|x - value| <= tol, or within a range).
+  std::array<std::optional<double>, 3> equals;
+  std::array<std::optional<std::pair<double, double>>, 3> range;
+  double tol = 1e-9;
+  SourceLocation at;
+};
+
+struct ConstraintSpec {
+  Constraint constraint;
+  SourceLocation at;
+};
+
+struct LoadSpec {
+  NodalLoad load;
+  SourceLocation at;
+};
+
+enum class AnalysisType { static_linear, modal };
+
+struct AnalysisSpec {
+  AnalysisType type = AnalysisType::static_linear;
+  ModalOptions modal;
+};
+
+// Compare result columns to reference columns, row by row on a shared integer key.
+struct CheckSpec {
+  std::string name;
+  std::string result;                 // result table, e.g. "nodal_displacements"
+  std::filesystem::path reference;    // CSV, resolved against the case file's folder
+  std::string key;                    // key column of the reference, e.g. "node"
+  std::vector<std::pair<std::string, std::string>> compare;  // result column -> reference column
+  double abs_tol = 0.0;
+  double rel_tol = 0.0;
+  std::string source;                 // where the reference values come from (for the report)
+  SourceLocation at;
+};
+
+// Mesh-refinement study of a mapped-quad static case against Timoshenko beam theory.
+struct RefinementStudySpec {
+  std::vector<int> levels;                   // factors applied to nx and ny
+  std::string probe_set;                     // node set whose mean displacement is tracked
+  Direction probe_direction = 1;
+  std::optional<LoadSplit> load_split;       // overrides every load's split rule in the study
+  double beam_length = 0.0;                  // Timoshenko reference [m]
+  double beam_height = 0.0;                  // [m]
+  double beam_load = 0.0;                    // tip shear force [N], signed like the probe
+  double shear_coefficient = 5.0 / 6.0;
+  std::string note;                          // assumptions, quoted in the report
+  SourceLocation at;
+};
+
+struct CaseSpec {
+  std::filesystem::path file;
+  std::string name;
+  std::string title;
+  std::string description;
+  MeshSpec mesh;
+  fe::PlaneSection section;
+  std::vector<NodeSetSpec> sets;
+  std::vector<ConstraintSpec> constraints;
+  std::vector<LoadSpec> loads;
+  AnalysisSpec analysis;
+  std::vector<CheckSpec> checks;
+  std::optional<RefinementStudySpec> study;
+};
+
+// Throws InputError naming file, line and key for every malformed or missing entry.
+CaseSpec parse_case_file(const std::filesystem::path& file);
+
+// Mesh, sets, constraints and loads resolved against the mesh. Throws InputError.
+Model build_model(const CaseSpec& spec);
+
+// Node set resolution on its own, also used by the refinement study on refined meshes.
+std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set);
+
+}  // namespace bb

@@ -1,0 +1,54 @@
+// Typed access to one TOML table with errors that name file, line and key, and a final
+// check that rejects keys the case format does not know (typos must not pass silently).
+#pragma once
+#include <toml++/toml.h>
+
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cases/case_spec.hpp"
+
+namespace bb {
+
+class TomlReader {
+ public:
+  TomlReader(const toml::table& table, std::string path, std::filesystem::path file);
+
+  bool has(const std::string& key) const;
+  double number(const std::string& key);
+  std::optional<double> optional_number(const std::string& key);
+  double non_negative(const std::string& key, double fallback);
+  double positive(const std::string& key);
+  long integer(const std::string& key);
+  std::optional<long> optional_integer(const std::string& key);
+  std::string string(const std::string& key);
+  std::optional<std::string> optional_string(const std::string& key);
+  // One of `choices`; the error lists them.
+  std::string choice(const std::string& key, const std::vector<std::string>& choices,
+                     std::optional<std::string> fallback = std::nullopt);
+  const toml::array& array(const std::string& key);
+  std::vector<double> number_array(const std::string& key);
+  std::vector<long> integer_array(const std::string& key);
+  std::vector<std::string> string_array(const std::string& key);
+  const toml::table& table(const std::string& key);
+  const toml::table* optional_table(const std::string& key);
+
+  // Throws for any key that was never read.
+  void finish() const;
+  SourceLocation location(const std::string& key = {}) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  const std::string& path() const { return path_; }
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  const toml::node& required(const std::string& key);
+  const toml::table& table_;
+  std::string path_;
+  std::filesystem::path file_;
+  mutable std::set<std::string> used_;
+};
+
+}  // namespace bb

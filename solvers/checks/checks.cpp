@@ -1,0 +1,78 @@
+#include "checks/checks.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+#include "common/csv_reader.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+
+ReferenceColumn read_reference_column(const std::filesystem::path& file, const std::string& key_column,
+                                      const std::string& value_column) {
+  if (!std::filesystem::is_regular_file(file)) throw InputError(fmt::format("reference file not found: {}", file.string()));
+  ReferenceColumn out;
+  try {
+    CsvReader<2> in(file.string());
+    in.read_header(io::ignore_extra_column, key_column, value_column);
+    std::string key_text, value_text;
+    while (in.read_row(key_text, value_text)) {
+      const auto line = in.get_file_line();
+      long key = 0;
+      auto [kp, kec] = std::from_chars(key_text.data(), key_text.data() + key_text.size(), key);
+      if (kec != std::errc() || kp != key_text.data() + key_text.size())
+        throw InputError(fmt::format("{}:{}: column '{}': '{}' is not an integer key", file.string(), line, key_column, key_text));
+      double value = 0.0;
+      auto [vp, vec] = std::from_chars(value_text.data(), value_text.data() + value_text.size(), value);
+      if (vec != std::errc() || vp != value_text.data() + value_text.size())
+        throw InputError(fmt::format("{}:{}: column '{}': '{}' is not a number", file.string(), line, value_column, value_text));
+      if (!std::isfinite(value))
+        throw InputError(fmt::format("{}:{}: column '{}': non-finite reference value '{}'", file.string(), line, value_column, value_text));
+      out.keys.push_back(key);
+      out.values.push_back(value);
+    }
+  } catch (const io::error::base& e) {
+    throw InputError(fmt::format("{}: {}", file.string(), e.what()));
+  }
+  if (out.keys.empty()) throw InputError(fmt::format("{}: no data rows", file.string()));
+  return out;
+}
+
+std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results) {
+  auto table_it = results.find(check.result);
+  if (table_it == results.end())
+    throw InputError(fmt::format("{}: check '{}' asks for result '{}', which this analysis does not produce",
+                                 check.at.where(), check.name, check.result));
+  const ResultTable& table = table_it->second;
+  std::vector<CheckEntry> entries;
+  for (const auto& [result_column, reference_column] : check.compare) {
+    const auto col = table.column_index(result_column);
+    if (!col || *col == 0)
+      throw InputError(fmt::format("{}: check '{}': result '{}' has no column '{}' (columns: {})", check.at.where(),
+                                   check.name, check.result, result_column, fmt::join(table.columns, ", ")));
+    const ReferenceColumn ref = read_reference_column(check.reference, check.key, reference_column);
+    for (size_t i = 0; i < ref.keys.size(); ++i) {
+      const int row = table.row_of_key(ref.keys[i]);
+      if (row < 0)
+        throw InputError(fmt::format("{}: reference row {} = {} has no match in result '{}'", check.reference.string(),
+                                     check.key, ref.keys[i], check.result));
+      CheckEntry e;
+      e.group = check.name;
+      e.name = fmt::format("{}: {} {} {}", check.name, result_column, table.columns[0], ref.keys[i]);
+      e.computed = table.values(row, *col);
+      e.reference = ref.values[i];
+      e.abs_error = std::abs(e.computed - e.reference);
+      e.rel_error = e.reference != 0.0 ? e.abs_error / std::abs(e.reference)
+                                       : (e.abs_error == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+      e.tolerance = check.abs_tol + check.rel_tol * std::abs(e.reference);
+      e.pass = std::isfinite(e.computed) && e.abs_error <= e.tolerance;
+      entries.push_back(e);
+    }
+  }
+  return entries;
+}
+
+}  // namespace bb

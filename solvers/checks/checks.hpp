@@ -1,0 +1,35 @@
+// Checks: computed result vs reference value vs tolerance, one entry per compared number.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cases/case_spec.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+struct CheckEntry {
+  std::string name;        // "<check name>: <column> <key> <id>"
+  std::string group;       // the check's name
+  double computed = 0.0;
+  double reference = 0.0;
+  double abs_error = 0.0;
+  double rel_error = 0.0;  // abs_error / |reference|, infinity for a zero reference with a nonzero error
+  double tolerance = 0.0;  // abs_tol + rel_tol * |reference|
+  bool pass = false;
+};
+
+struct ReferenceColumn {
+  std::vector<long> keys;
+  std::vector<double> values;
+};
+
+// Reads one key column and one value column by header name; '#' lines are comments.
+// Throws InputError naming the file and line of a missing column, a bad or non-finite number.
+ReferenceColumn read_reference_column(const std::filesystem::path& file, const std::string& key_column,
+                                      const std::string& value_column);
+
+// Throws InputError when the reference names a row the results do not have.
+std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results);
+
+}  // namespace bb

@@ -1,0 +1,117 @@
+// bladebench command line: run and validate cases. Exit codes in common/errors.hpp.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "cli/run_case.hpp"
+#include "common/errors.hpp"
+#include "report/writers.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int failed_count(const bb::RunRecord& r) {
+  return static_cast<int>(std::count_if(r.checks.begin(), r.checks.end(), [](const bb::CheckEntry& e) { return !e.pass; }));
+}
+
+void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
+  const bb::RunRecord& r = o.record;
+  std::fprintf(stderr, "%s%s: %s (%zu checks, %d failed, %.3f s) -> %s\n", prefix.c_str(), r.case_name.c_str(),
+               bb::status_name(r.status).c_str(), r.checks.size(), failed_count(r), r.wall_seconds,
+               (o.out_dir / "report.md").string().c_str());
+  if (!r.message.empty()) std::fprintf(stderr, "  error: %s\n", r.message.c_str());
+  for (const bb::CheckEntry& e : r.checks)
+    if (!e.pass)
+      std::fprintf(stderr, "  FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n", e.name.c_str(),
+                   e.computed, e.reference, e.abs_error, e.tolerance);
+}
+
+int worst(int a, int b) { return std::max(a, b); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"bladebench: validation and benchmark harness for friction-damped turbine blades"};
+  app.require_subcommand(1);
+  app.footer("Exit codes: 0 all checks pass, 1 a check failed, 2 bad input, 3 solver failure.");
+
+  std::vector<std::string> run_cases;
+  std::string run_out;
+  bool run_study = false, run_no_plots = false;
+  CLI::App* run = app.add_subcommand("run", "Run one or more case files and write their reports");
+  run->add_option("CASE", run_cases, "Case file(s) (TOML, see cases/README.md)")->required()->check(CLI::ExistingFile);
+  run->add_option("--out", run_out, "Output folder (default reports/<case-name>; with several cases, a parent folder)");
+  run->add_flag("--study", run_study, "Also run the case's [study] (mesh refinement, accuracy vs cost)");
+  run->add_flag("--no-plots", run_no_plots, "Skip gnuplot figures");
+
+  std::string validate_dir = "cases", validate_out = "reports";
+  bool validate_study = false, validate_no_plots = false;
+  CLI::App* validate = app.add_subcommand("validate", "Run every case under a folder and write reports/index.md");
+  validate->add_option("DIR", validate_dir, "Folder searched recursively for *.toml case files")->check(CLI::ExistingDirectory);
+  validate->add_option("--out", validate_out, "Report folder; each case goes to <out>/<case-name>");
+  validate->add_flag("--study", validate_study, "Also run every case's [study]");
+  validate->add_flag("--no-plots", validate_no_plots, "Skip gnuplot figures");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : bb::exit_bad_input;
+  }
+
+  if (*run) {
+    int rc = bb::exit_pass;
+    for (const std::string& c : run_cases) {
+      bb::RunOptions opt;
+      opt.study = run_study;
+      opt.plots = !run_no_plots;
+      if (!run_out.empty()) opt.out_dir = run_cases.size() == 1 ? fs::path(run_out) : fs::path(run_out) / fs::path(c).stem();
+      const bb::RunOutcome o = bb::run_case(c, opt);
+      print_outcome(o, "");
+      rc = worst(rc, bb::exit_code(o.record.status));
+    }
+    return rc;
+  }
+
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(validate_dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".toml") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  if (files.empty()) {
+    std::fprintf(stderr, "error: no *.toml case file under %s\n", validate_dir.c_str());
+    return bb::exit_bad_input;
+  }
+  std::vector<bb::IndexEntry> index;
+  std::map<std::string, fs::path> seen;
+  int rc = bb::exit_pass;
+  for (size_t i = 0; i < files.size(); ++i) {
+    bb::RunOptions opt;
+    opt.study = validate_study;
+    opt.plots = !validate_no_plots;
+    // Output folder by file stem first; the case name is only known after parsing.
+    opt.out_dir = fs::path(validate_out) / files[i].stem();
+    const bb::RunOutcome o = bb::run_case(files[i], opt);
+    print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
+    int code = bb::exit_code(o.record.status);
+    bb::IndexEntry e{o.record.case_name, fs::relative(o.out_dir / "report.md", validate_out), o.record.status,
+                     static_cast<int>(o.record.checks.size()), failed_count(o.record), o.record.wall_seconds,
+                     o.record.message};
+    if (auto [it, fresh] = seen.emplace(files[i].stem().string(), files[i]); !fresh) {
+      e.status = bb::RunStatus::bad_input;
+      e.message = fmt::format("two case files share the name '{}': {} and {}", files[i].stem().string(),
+                              it->second.string(), files[i].string());
+      std::fprintf(stderr, "  error: %s\n", e.message.c_str());
+      code = bb::exit_bad_input;
+    }
+    index.push_back(e);
+    rc = worst(rc, code);
+  }
+  bb::write_index_md(index, fs::path(validate_out) / "index.md");
+  std::fprintf(stderr, "%zu cases, index: %s\n", files.size(), (fs::path(validate_out) / "index.md").string().c_str());
+  return rc;
+}

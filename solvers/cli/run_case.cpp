@@ -1,0 +1,141 @@
+#include "cli/run_case.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <system_error>
+
+#include "analysis/modal_analysis.hpp"
+#include "analysis/static_analysis.hpp"
+#include "common/errors.hpp"
+#include "report/plots.hpp"
+#include "report/writers.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string g(double v) { return fmt::format("{:.6g}", v); }
+
+void describe_model(const CaseSpec& spec, const Model& model, RunRecord& run) {
+  const Mesh& mesh = model.mesh;
+  std::string elements;
+  for (const auto& b : mesh.blocks) elements += fmt::format("{}{} x {}", elements.empty() ? "" : ", ", b.ids.size(), element_name(b.type));
+  run.facts.emplace_back("mesh", spec.mesh.kind == MeshSpec::Kind::csv
+                                     ? fmt::format("CSV ({}, {})", spec.mesh.nodes_csv.filename().string(),
+                                                   spec.mesh.elements_csv.filename().string())
+                                     : fmt::format("mapped quad, {} x {} divisions", spec.mesh.mapped.nx, spec.mesh.mapped.ny));
+  run.facts.emplace_back("elements", elements);
+  run.facts.emplace_back("nodes", std::to_string(mesh.n_nodes()));
+  run.facts.emplace_back("E [Pa], nu, rho [kg/m^3]", fmt::format("{}, {}, {}", g(spec.section.youngs_modulus),
+                                                                 g(spec.section.poisson_ratio), g(spec.section.density)));
+  run.facts.emplace_back("thickness [m]", g(spec.section.thickness));
+  for (const auto& l : model.loads)
+    run.facts.emplace_back(fmt::format("load on '{}'", l.set),
+                           fmt::format("{} N along {}, split {}", g(l.total), "xyz"[l.direction],
+                                       l.split == LoadSplit::equal ? "equally" : "consistently over the edge"));
+}
+
+void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
+  ResultTables tables;
+  std::optional<Eigen::MatrixXd> static_displacements;
+  std::optional<ModalResult> modal;
+  if (spec.analysis.type == AnalysisType::static_linear) {
+    const StaticSolution sol = solve_static(model);
+    run.facts.emplace_back("analysis", "linear static, sparse Cholesky (CHOLMOD)");
+    run.facts.emplace_back("free DOFs", std::to_string(sol.n_free_dofs));
+    run.facts.emplace_back("pivot ratio (rcond estimate)", fmt::format("{:.3e}", sol.pivot_ratio));
+    run.facts.emplace_back("relative residual ||Ku - f|| / ||f||", fmt::format("{:.3e}", sol.relative_residual));
+    const double applied = sol.loads.sum(), reacted = sol.reactions.sum();
+    run.facts.emplace_back("force balance |sum f + sum R| [N]", fmt::format("{:.3e}", std::abs(applied + reacted)));
+    run.facts.emplace_back("assembly / factor+solve [s]", fmt::format("{:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds));
+    tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, sol.displacements));
+    static_displacements = sol.displacements;
+  } else {
+    modal = solve_modal(model, spec.analysis.modal);
+    run.facts.emplace_back("analysis", fmt::format("modal, lowest {} modes, Lanczos shift-invert (Spectra + CHOLMOD)",
+                                                   spec.analysis.modal.n_modes));
+    run.facts.emplace_back("free DOFs", std::to_string(modal->n_free_dofs));
+    run.facts.emplace_back("Lanczos iterations", std::to_string(modal->iterations));
+    run.facts.emplace_back("max eigen-residual (backward error)", fmt::format("{:.3e}", modal->max_residual));
+    run.facts.emplace_back("assembly / eigensolve [s]", fmt::format("{:.4f} / {:.4f}", modal->assembly_seconds, modal->solve_seconds));
+    tables.emplace("frequencies", frequency_table(modal->frequencies_hz));
+  }
+  for (const CheckSpec& c : spec.checks) {
+    auto entries = evaluate_check(c, tables);
+    run.checks.insert(run.checks.end(), entries.begin(), entries.end());
+  }
+  fs::create_directories(out);
+  for (const auto& [name, table] : tables) {
+    write_table_csv(table, out / (name + ".csv"));
+    run.tables.push_back(name + ".csv");
+  }
+  if (options.plots) {
+    if (static_displacements) run.plots.push_back(plot_deformed_mesh(model.mesh, *static_displacements, out, "deformed", "Deformed mesh"));
+    if (modal) {
+      for (size_t k = 0; k < std::min<size_t>(4, modal->shapes.size()); ++k)
+        run.plots.push_back(plot_deformed_mesh(model.mesh, modal->shapes[k], out, fmt::format("mode{}", k + 1),
+                                               fmt::format("Mode {}: {:.4f} Hz", k + 1, modal->frequencies_hz[static_cast<Eigen::Index>(k)])));
+    }
+    int i = 0;
+    for (const CheckSpec& c : spec.checks) run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
+  }
+  if (options.study && spec.study) {
+    run.study = run_refinement_study(spec);
+    run.study_note = spec.study->note;
+    if (options.plots) {
+      run.study_plots.push_back(plot_refinement_error(*run.study, out, "study_error"));
+      run.study_plots.push_back(plot_refinement_cost(*run.study, out, "study_cost"));
+    }
+  }
+  bool all_pass = true;
+  for (const CheckEntry& e : run.checks) all_pass = all_pass && e.pass;
+  run.status = run.checks.empty() ? RunStatus::no_checks : (all_pass ? RunStatus::pass : RunStatus::fail);
+}
+
+}  // namespace
+
+RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RunOutcome outcome;
+  RunRecord& run = outcome.record;
+  run.case_file = case_file;
+  run.case_name = case_file.stem().string();
+  run.title = run.case_name;
+  outcome.out_dir = options.out_dir.value_or(fs::path("reports") / run.case_name);
+  try {
+    const CaseSpec spec = parse_case_file(case_file);
+    run.case_name = spec.name;
+    run.title = spec.title;
+    run.description = spec.description;
+    run.check_specs = spec.checks;
+    outcome.out_dir = options.out_dir.value_or(fs::path("reports") / spec.name);
+    fs::create_directories(outcome.out_dir);
+    fs::remove(outcome.out_dir / "summary.json");  // a stale success must not survive a failed rerun
+    const Model model = build_model(spec);
+    describe_model(spec, model, run);
+    analyse(spec, model, outcome.out_dir, options, run);
+  } catch (const InputError& e) {
+    run.status = RunStatus::bad_input;
+    run.message = e.what();
+  } catch (const SolverError& e) {
+    run.status = RunStatus::solver_failed;
+    run.message = e.what();
+  } catch (const std::exception& e) {
+    run.status = RunStatus::solver_failed;
+    run.message = fmt::format("internal error: {}", e.what());
+  }
+  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  try {
+    fs::create_directories(outcome.out_dir);
+    write_report_md(run, outcome.out_dir / "report.md");
+    write_summary_json(run, outcome.out_dir / "summary.json");
+  } catch (const std::exception& e) {
+    run.status = RunStatus::solver_failed;
+    run.message = fmt::format("could not write the report: {}", e.what());
+  }
+  return outcome;
+}
+
+}  // namespace bb

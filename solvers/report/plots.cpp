@@ -1,0 +1,134 @@
+#include "report/plots.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kTerminal = "set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'\n";
+
+std::string gnuplot_quote(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (c == '\'' ? std::string("''") : std::string(1, c));
+  return out;
+}
+
+// Runs gnuplot on `script`; returns the plot or the reason it was not drawn.
+Plot draw(const fs::path& out_dir, const std::string& stem, const std::string& title, const std::string& script) {
+  const fs::path dir = out_dir / "plots";
+  fs::create_directories(dir);
+  const fs::path gp = dir / (stem + ".gp");
+  {
+    std::ofstream out(gp);
+    out << kTerminal << fmt::format("set output '{}.svg'\n", stem) << script;
+  }
+  const std::string cmd = fmt::format("cd '{}' && gnuplot '{}.gp' > '{}.log' 2>&1", dir.string(), stem, stem);
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0 || !fs::exists(dir / (stem + ".svg"))) {
+    return {title, "", fmt::format("gnuplot failed or is not installed; see plots/{}.log", stem)};
+  }
+  fs::remove(dir / (stem + ".log"));
+  return {title, fmt::format("plots/{}.svg", stem), ""};
+}
+
+void write_edges(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd& xy) {
+  for (const auto& b : mesh.blocks) {
+    const int nn = nodes_per_element(b.type);
+    for (Eigen::Index e = 0; e < b.conn.rows(); ++e) {
+      for (int a = 0; a <= nn; ++a) {
+        const int n = b.conn(e, a % nn);
+        out << xy(n, 0) << ' ' << xy(n, 1) << '\n';
+      }
+      out << "\n";
+    }
+  }
+}
+
+}  // namespace
+
+Plot plot_deformed_mesh(const Mesh& mesh, const Eigen::MatrixXd& displacements, const fs::path& out_dir,
+                        const std::string& stem, const std::string& title) {
+  const Eigen::MatrixXd xy = mesh.coords.leftCols(2);
+  const double size = (xy.colwise().maxCoeff() - xy.colwise().minCoeff()).norm();
+  const double umax = displacements.leftCols(2).rowwise().norm().maxCoeff();
+  const double scale = umax > 0 ? 0.1 * size / umax : 1.0;
+  fs::create_directories(out_dir / "plots");
+  {
+    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
+    out.precision(10);
+    write_edges(out, mesh, xy);
+    out << "\n";
+    write_edges(out, mesh, xy + scale * displacements.leftCols(2));
+  }
+  const std::string script = fmt::format(
+      "set title '{} (displacements x {:.3g})'\nset size ratio -1\nset xlabel 'x [m]'\nset ylabel 'y [m]'\n"
+      "set key outside right\nplot '{}.dat' index 0 with lines lc rgb '#999999' dt 2 title 'undeformed', \\\n"
+      "     '{}.dat' index 1 with lines lc rgb '#1f5fbf' lw 1.5 title 'deformed'\n",
+      gnuplot_quote(title), scale, stem, stem);
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_check(const std::vector<CheckEntry>& entries, const std::string& group, const fs::path& out_dir,
+                const std::string& stem) {
+  fs::create_directories(out_dir / "plots");
+  {
+    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
+    out.precision(12);
+    out << "# index computed reference tolerance\n";
+    int i = 0;
+    for (const CheckEntry& e : entries)
+      if (e.group == group) out << ++i << ' ' << e.computed << ' ' << e.reference << ' ' << e.tolerance << '\n';
+  }
+  const std::string title = "Check: " + group;
+  const std::string script = fmt::format(
+      "set title '{}'\nset xlabel 'entry (order of the report table)'\nset ylabel 'value'\nset key outside right\n"
+      "set grid\nplot '{}.dat' using 1:3:4 with yerrorbars lc rgb '#999999' title 'reference +- tolerance', \\\n"
+      "     '{}.dat' using 1:2 with points pt 7 ps 0.6 lc rgb '#1f5fbf' title 'computed'\n",
+      gnuplot_quote(title), stem, stem);
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_refinement_error(const RefinementResult& study, const fs::path& out_dir, const std::string& stem) {
+  fs::create_directories(out_dir / "plots");
+  {
+    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
+    out.precision(12);
+    out << "# free_dofs |error vs Timoshenko| |error vs Richardson limit|\n";
+    for (const RefinementRow& r : study.rows)
+      out << r.n_free_dofs << ' ' << std::abs(r.error_vs_beam) << ' ' << std::abs(r.error_vs_limit) << '\n';
+  }
+  const std::string title = "Tip deflection error vs DOFs";
+  const std::string script = fmt::format(
+      "set title '{}'\nset logscale xy\nset format y '10^{{%L}}'\nset xlabel 'free DOFs'\n"
+      "set ylabel 'relative error'\nset grid\nset key outside right\n"
+      "plot '{}.dat' using 1:2 with linespoints pt 7 lc rgb '#bf1f1f' title 'vs Timoshenko beam', \\\n"
+      "     '{}.dat' using 1:($3 > 0 ? $3 : 1/0) with linespoints pt 5 lc rgb '#1f5fbf' title 'vs Richardson limit'\n",
+      title, stem, stem);
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_refinement_cost(const RefinementResult& study, const fs::path& out_dir, const std::string& stem) {
+  fs::create_directories(out_dir / "plots");
+  {
+    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
+    out.precision(12);
+    out << "# free_dofs assembly_s solve_s\n";
+    for (const RefinementRow& r : study.rows)
+      out << r.n_free_dofs << ' ' << std::max(r.assembly_seconds, 1e-6) << ' ' << std::max(r.solve_seconds, 1e-6) << '\n';
+  }
+  const std::string title = "Cost vs DOFs";
+  const std::string script = fmt::format(
+      "set title '{}'\nset logscale xy\nset xlabel 'free DOFs'\nset ylabel 'wall time [s]'\nset grid\n"
+      "set key outside right\nplot '{}.dat' using 1:2 with linespoints pt 7 title 'assembly', \\\n"
+      "     '{}.dat' using 1:3 with linespoints pt 5 title 'factorization + solve'\n",
+      title, stem, stem);
+  return draw(out_dir, stem, title, script);
+}
+
+}  // namespace bb

@@ -1,0 +1,43 @@
+// Everything a finished (or failed) run reports: the input to summary.json and report.md.
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cases/case_spec.hpp"
+#include "checks/checks.hpp"
+#include "study/refinement.hpp"
+
+namespace bb {
+
+enum class RunStatus { pass, fail, no_checks, bad_input, solver_failed };
+std::string status_name(RunStatus status);
+int exit_code(RunStatus status);
+
+struct Plot {
+  std::string title;
+  std::string file;  // relative to the output folder; empty when not drawn
+  std::string note;  // why it was not drawn
+};
+
+struct RunRecord {
+  std::filesystem::path case_file;
+  std::string case_name;
+  std::string title;
+  std::string description;
+  RunStatus status = RunStatus::bad_input;
+  std::string message;  // error message for bad_input / solver_failed
+  double wall_seconds = 0.0;
+  std::vector<std::pair<std::string, std::string>> facts;  // inputs and solver statistics
+  std::vector<CheckSpec> check_specs;
+  std::vector<CheckEntry> checks;
+  std::vector<std::string> tables;  // CSV files written
+  std::vector<Plot> plots;
+  std::optional<RefinementResult> study;
+  std::string study_note;
+  std::vector<Plot> study_plots;
+};
+
+}  // namespace bb

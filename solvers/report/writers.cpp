@@ -1,0 +1,173 @@
+#include "report/writers.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace bb {
+namespace {
+
+std::ofstream open_for_writing(const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+  out.precision(17);
+  return out;
+}
+
+std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.4e}", v) : std::string("inf"); }
+
+}  // namespace
+
+std::string status_name(RunStatus status) {
+  switch (status) {
+    case RunStatus::pass: return "pass";
+    case RunStatus::fail: return "fail";
+    case RunStatus::no_checks: return "no_checks";
+    case RunStatus::bad_input: return "bad_input";
+    case RunStatus::solver_failed: return "solver_failed";
+  }
+  return "?";
+}
+
+int exit_code(RunStatus status) {
+  switch (status) {
+    case RunStatus::pass:
+    case RunStatus::no_checks: return 0;
+    case RunStatus::fail: return 1;
+    case RunStatus::bad_input: return 2;
+    case RunStatus::solver_failed: return 3;
+  }
+  return 3;
+}
+
+void write_table_csv(const ResultTable& table, const std::filesystem::path& file) {
+  std::ofstream out = open_for_writing(file);
+  out << fmt::format("{}\n", fmt::join(table.columns, ","));
+  for (Eigen::Index r = 0; r < table.values.rows(); ++r) {
+    out << std::lround(table.values(r, 0));
+    for (Eigen::Index c = 1; c < table.values.cols(); ++c) out << fmt::format(",{:.12g}", table.values(r, c));
+    out << '\n';
+  }
+  if (!out) throw std::runtime_error("failed writing " + file.string());
+}
+
+void write_summary_json(const RunRecord& run, const std::filesystem::path& file) {
+  nlohmann::json j;
+  j["case"] = run.case_name;
+  j["case_file"] = run.case_file.string();
+  j["status"] = status_name(run.status);
+  j["wall_time_s"] = run.wall_seconds;
+  if (!run.message.empty()) j["message"] = run.message;
+  j["checks"] = nlohmann::json::array();
+  for (const CheckEntry& c : run.checks) {
+    j["checks"].push_back({{"name", c.name},
+                           {"computed", c.computed},
+                           {"reference", c.reference},
+                           {"abs_error", c.abs_error},
+                           {"rel_error", std::isfinite(c.rel_error) ? nlohmann::json(c.rel_error) : nlohmann::json(nullptr)},
+                           {"tolerance", c.tolerance},
+                           {"pass", c.pass}});
+  }
+  nlohmann::json facts = nlohmann::json::object();
+  for (const auto& [k, v] : run.facts) facts[k] = v;
+  j["facts"] = facts;
+  j["tables"] = run.tables;
+  std::ofstream out = open_for_writing(file);
+  out << j.dump(2) << '\n';
+  if (!out) throw std::runtime_error("failed writing " + file.string());
+}
+
+void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
+  std::ofstream out = open_for_writing(file);
+  out << fmt::format("# {}\n\n", run.title);
+  out << fmt::format("Case `{}` (`{}`): **{}** in {:.3f} s.\n\n", run.case_name, run.case_file.string(),
+                     status_name(run.status), run.wall_seconds);
+  if (!run.message.empty()) out << fmt::format("> {}\n\n", run.message);
+  if (!run.description.empty()) out << run.description << "\n\n";
+  if (!run.facts.empty()) {
+    out << "## Inputs and solver\n\n| item | value |\n|---|---|\n";
+    for (const auto& [k, v] : run.facts) out << fmt::format("| {} | {} |\n", k, v);
+    out << '\n';
+  }
+  if (!run.check_specs.empty()) {
+    out << "## Checks\n\nAn entry passes when |computed - reference| <= abs_tol + rel_tol * |reference|.\n\n";
+    out << "| check | reference file | source | abs_tol | rel_tol | entries | failed | max abs error | max rel error |\n"
+           "|---|---|---|---|---|---|---|---|---|\n";
+    for (const CheckSpec& spec : run.check_specs) {
+      int n = 0, failed = 0;
+      double max_abs = 0.0, max_rel = 0.0;
+      for (const CheckEntry& e : run.checks) {
+        if (e.group != spec.name) continue;
+        ++n;
+        failed += e.pass ? 0 : 1;
+        max_abs = std::max(max_abs, e.abs_error);
+        if (std::isfinite(e.rel_error) && e.reference != 0.0) max_rel = std::max(max_rel, e.rel_error);
+      }
+      out << fmt::format("| {} | `{}` | {} | {} | {} | {} | {} | {} | {} |\n", spec.name,
+                         spec.reference.filename().string(), spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol),
+                         sci(spec.rel_tol), n, failed, sci(max_abs), sci(max_rel));
+    }
+    out << "\n<details><summary>Every entry</summary>\n\n";
+    out << "| entry | computed | reference | abs error | rel error | tolerance | pass |\n|---|---|---|---|---|---|---|\n";
+    for (const CheckEntry& e : run.checks)
+      out << fmt::format("| {} | {:.9e} | {:.9e} | {} | {} | {} | {} |\n", e.name, e.computed, e.reference,
+                         sci(e.abs_error), sci(e.rel_error), sci(e.tolerance), e.pass ? "pass" : "**FAIL**");
+    out << "\n</details>\n\n";
+  }
+  if (!run.tables.empty()) {
+    out << "## Result tables\n\n";
+    for (const std::string& t : run.tables) out << fmt::format("- [`{}`]({})\n", t, t);
+    out << '\n';
+  }
+  auto plots = [&out](const std::vector<Plot>& list) {
+    for (const Plot& p : list) {
+      if (p.file.empty()) {
+        out << fmt::format("*{}: not drawn ({})*\n\n", p.title, p.note);
+      } else {
+        out << fmt::format("![{}]({})\n\n", p.title, p.file);
+      }
+    }
+  };
+  if (!run.plots.empty()) {
+    out << "## Plots\n\n";
+    plots(run.plots);
+  }
+  if (run.study) {
+    const RefinementResult& s = *run.study;
+    out << "## Refinement study (accuracy vs cost)\n\n";
+    if (!run.study_note.empty()) out << run.study_note << "\n\n";
+    out << fmt::format(
+        "Timoshenko beam tip deflection {:.6e} m (bending alone {:.6e} m); Richardson limit of the finite-element "
+        "sequence {:.6e} m (order {:.2f}), which differs from Timoshenko by {:.2f}%.\n\n",
+        s.beam_deflection, s.bending_only, s.extrapolated, s.extrapolation_order,
+        100.0 * (s.extrapolated - s.beam_deflection) / s.beam_deflection);
+    out << "| level | nx x ny | free DOFs | probe [m] | error vs Timoshenko | error vs limit | observed order | "
+           "assembly [s] | factor+solve [s] |\n|---|---|---|---|---|---|---|---|---|\n";
+    for (const RefinementRow& r : s.rows)
+      out << fmt::format("| {} | {} x {} | {} | {:.6e} | {:+.3f}% | {:+.4f}% | {} | {:.4f} | {:.4f} |\n", r.level, r.nx, r.ny,
+                         r.n_free_dofs, r.probe, 100 * r.error_vs_beam, 100 * r.error_vs_limit,
+                         r.observed_order > 0 ? fmt::format("{:.2f}", r.observed_order) : std::string("-"),
+                         r.assembly_seconds, r.solve_seconds);
+    out << '\n';
+    plots(run.study_plots);
+  }
+  if (!out) throw std::runtime_error("failed writing " + file.string());
+}
+
+void write_index_md(const std::vector<IndexEntry>& entries, const std::filesystem::path& file) {
+  std::ofstream out = open_for_writing(file);
+  int passed = 0;
+  for (const auto& e : entries) passed += exit_code(e.status) == 0 ? 1 : 0;
+  out << "# bladebench validation index\n\n";
+  out << fmt::format("{} of {} cases passed.\n\n", passed, entries.size());
+  out << "| case | status | checks | failed | wall time [s] | note |\n|---|---|---|---|---|---|\n";
+  for (const auto& e : entries)
+    out << fmt::format("| [{}]({}) | {} | {} | {} | {:.3f} | {} |\n", e.case_name, e.report.generic_string(),
+                       status_name(e.status), e.checks, e.failed, e.wall_seconds, e.message);
+  if (!out) throw std::runtime_error("failed writing " + file.string());
+}
+
+}  // namespace bb

@@ -1,0 +1,26 @@
+// Output files of a run: result CSVs, summary.json, report.md.
+#pragma once
+#include <filesystem>
+
+#include "report/run_record.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+// Header row = column names; the key column is written as an integer.
+void write_table_csv(const ResultTable& table, const std::filesystem::path& file);
+void write_summary_json(const RunRecord& run, const std::filesystem::path& file);
+void write_report_md(const RunRecord& run, const std::filesystem::path& file);
+
+struct IndexEntry {
+  std::string case_name;
+  std::filesystem::path report;  // relative to the index
+  RunStatus status;
+  int checks = 0;
+  int failed = 0;
+  double wall_seconds = 0.0;
+  std::string message;
+};
+void write_index_md(const std::vector<IndexEntry>& entries, const std::filesystem::path& file);
+
+}  // namespace bb

@@ -73,6 +73,7 @@ struct RefinementStudySpec {
   std::string probe_set;                     // node set whose mean displacement is tracked
   Direction probe_direction = 1;
   std::optional<LoadSplit> load_split;       // overrides every load's split rule in the study
+  std::optional<std::string> load_set;       // moves every load onto this node set in the study
   double beam_length = 0.0;                  // Timoshenko reference [m]
   double beam_height = 0.0;                  // [m]
   double beam_load = 0.0;                    // tip shear force [N], signed like the probe

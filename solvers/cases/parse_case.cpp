@@ -175,6 +175,7 @@ RefinementStudySpec parse_study(TomlReader r) {
   s.probe_direction = parse_direction(r, "probe_direction", r.string("probe_direction"));
   if (r.has("load_split"))
     s.load_split = r.choice("load_split", {"equal", "consistent"}) == "equal" ? LoadSplit::equal : LoadSplit::consistent_edge;
+  s.load_set = r.optional_string("load_set");
   TomlReader ref(r.table("reference"), r.path() + ".reference", r.file());
   ref.choice("kind", {"timoshenko_cantilever"});
   s.beam_length = ref.positive("length");

@@ -19,8 +19,10 @@ RefinementResult run_refinement_study(const CaseSpec& spec) {
     CaseSpec refined = spec;
     refined.mesh.mapped.nx *= level;
     refined.mesh.mapped.ny *= level;
-    if (s.load_split)
-      for (LoadSpec& l : refined.loads) l.load.split = *s.load_split;
+    for (LoadSpec& l : refined.loads) {
+      if (s.load_split) l.load.split = *s.load_split;
+      if (s.load_set) l.load.set = *s.load_set;
+    }
     const Model model = build_model(refined);
     const StaticSolution sol = solve_static(model);
     const std::vector<int>& probe = model.node_sets.at(s.probe_set);

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# bladebench's two set-up commands (see README.md):
+#   ./run.sh all   install missing packages, build Release, run every case (with studies), write reports/
+#   ./run.sh test  install missing packages, build Release, run the default test set (ctest, no 'study' label)
+# Extra: ./run.sh asan  builds with AddressSanitizer + UBSan and runs the default test set under it.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(build-essential cmake pkg-config libeigen3-dev libspectra-dev libtomlplusplus-dev libfccp-dev
+          libceres-dev libsuitesparse-dev libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev
+          libbenchmark-dev gnuplot-nox)
+
+ensure_packages() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "Missing Debian packages. As root, run:" >&2
+    echo "  apt-get update && apt-get install -y --no-install-recommends ${missing[*]}" >&2
+    exit 2
+  fi
+  echo "Installing: ${missing[*]}" >&2
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+build() {
+  cmake --preset "$1" >/dev/null
+  cmake --build --preset "$1" -j "$(nproc)"
+}
+
+case "${1:-}" in
+  all)
+    ensure_packages
+    build release
+    ./build/solvers/bladebench validate cases --out reports --study
+    ;;
+  test)
+    ensure_packages
+    build release
+    ctest --preset release -j "$(nproc)"
+    ;;
+  asan)
+    ensure_packages
+    build asan
+    ctest --preset asan -j "$(nproc)"
+    ;;
+  *)
+    echo "usage: ./run.sh all | test | asan" >&2
+    exit 2
+    ;;
+esac

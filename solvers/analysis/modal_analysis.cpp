@@ -4,7 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "assembly/assemble.hpp"
+#include "common/errors.hpp"
 
 namespace bb {
 
@@ -15,6 +18,9 @@ ModalResult solve_modal(const Model& model, const ModalOptions& options) {
   const GlobalMatrices global = assemble(mesh, model.section);
   const Partitioned k = partition(global.stiffness, dofs);
   const Partitioned m = partition(global.mass, dofs);
+  if (options.n_modes >= dofs.n_free)
+    throw InputError(fmt::format("'analysis.modes': asked for {} modes of a model with only {} free DOFs",
+                                 options.n_modes, dofs.n_free));
   ModalResult result;
   result.n_free_dofs = dofs.n_free;
   auto t1 = std::chrono::steady_clock::now();

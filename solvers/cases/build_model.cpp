@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <unordered_set>
 
 #include "cases/case_spec.hpp"
@@ -25,6 +27,33 @@ void with_csv_errors(const fs::path& file, Fn fn) {
   } catch (const io::error::base& e) {
     throw InputError(fmt::format("{}: {}", file.string(), e.what()));
   }
+}
+
+// fccp's has_column() only knows the requested columns, so the header is read here.
+bool header_has_column(const fs::path& file, const std::string& column) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) {
+      const auto first = cell.find_first_not_of(" \t\r"), last = cell.find_last_not_of(" \t\r");
+      if (first != std::string::npos && cell.substr(first, last - first + 1) == column) return true;
+    }
+    return false;
+  }
+  return false;
+}
+
+// Shoelace area of the element polygon; <= 0 means clockwise or degenerate.
+double signed_area(const Mesh& mesh, const std::array<int, 4>& c, int nn) {
+  double twice = 0.0;
+  for (int a = 0; a < nn; ++a) {
+    const int p = c[a], q = c[(a + 1) % nn];
+    twice += mesh.coords(p, 0) * mesh.coords(q, 1) - mesh.coords(q, 0) * mesh.coords(p, 1);
+  }
+  return 0.5 * twice;
 }
 
 Mesh read_csv_mesh(const MeshSpec& spec) {
@@ -68,6 +97,9 @@ Mesh read_csv_mesh(const MeshSpec& spec) {
         throw InputError(fmt::format("{}:{}: element {} uses node {}, which is not in {}", spec.elements_csv.string(),
                                      line, id, ids[a], spec.nodes_csv.filename().string()));
     }
+    if (signed_area(mesh, c, nn) <= 0.0)
+      throw InputError(fmt::format("{}:{}: element {} is inverted or degenerate (list its nodes counterclockwise)",
+                                   spec.elements_csv.string(), line, id));
     block.ids.push_back(id);
     conn.push_back(c);
   };
@@ -81,6 +113,9 @@ Mesh read_csv_mesh(const MeshSpec& spec) {
     } else {
       CsvReader<4> in(spec.elements_csv.string());
       in.read_header(io::ignore_extra_column, "id", "n1", "n2", "n3");
+      if (header_has_column(spec.elements_csv, "n4"))
+        throw InputError(fmt::format("{}: column 'n4' found, but element \"{}\" takes 3 nodes (check mesh.element)",
+                                     spec.elements_csv.string(), element_name(spec.element)));
       while (in.read_row(id, n[0], n[1], n[2])) add(id, n, in.get_file_line());
     }
   });

@@ -51,6 +51,10 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
   const long nx = r.integer("nx"), ny = r.integer("ny");
   if (nx < 1) r.fail("nx", fmt::format("must be >= 1, found {}", nx));
   if (ny < 1) r.fail("ny", fmt::format("must be >= 1, found {}", ny));
+  // DOF numbers are int (CHOLMOD's int interface): keep 3 (nx+1)(ny+1) well inside its range.
+  constexpr long kMaxNodes = 200'000'000;
+  if (nx > kMaxNodes || ny > kMaxNodes || (nx + 1) * (ny + 1) > kMaxNodes)
+    r.fail(nx >= ny ? "nx" : "ny", fmt::format("{} x {} divisions exceed the limit of {} nodes", nx, ny, kMaxNodes));
   q.nx = static_cast<int>(nx);
   q.ny = static_cast<int>(ny);
   const std::string numbering = r.choice("numbering", {"rows", "serpentine"}, "rows");
@@ -221,6 +225,7 @@ CaseSpec parse_case_file(const fs::path& file) {
     spec.description = c.optional_string("description").value_or("");
     c.finish();
   }
+  spec.analysis = parse_analysis(TomlReader(top.table("analysis"), "analysis", file));
   {
     TomlReader m(top.table("material"), "material", file);
     spec.section.youngs_modulus = m.positive("E");
@@ -228,6 +233,8 @@ CaseSpec parse_case_file(const fs::path& file) {
     if (!(spec.section.poisson_ratio > -1 && spec.section.poisson_ratio < 0.5))
       m.fail("nu", fmt::format("must lie in (-1, 0.5), found {}", spec.section.poisson_ratio));
     spec.section.density = m.non_negative("rho", 0.0);
+    if (spec.analysis.type == AnalysisType::modal && !(spec.section.density > 0))
+      m.fail("rho", "must be > 0 for a modal analysis");
     m.finish();
   }
   {
@@ -245,9 +252,6 @@ CaseSpec parse_case_file(const fs::path& file) {
   }
   for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
   for_each_table_in_array(top, "load", [&](TomlReader r) { spec.loads.push_back(parse_load(std::move(r))); });
-  spec.analysis = parse_analysis(TomlReader(top.table("analysis"), "analysis", file));
-  if (spec.analysis.type == AnalysisType::modal && !(spec.section.density > 0))
-    throw InputError(fmt::format("{}: 'material.rho' must be > 0 for a modal analysis", file.string()));
   for_each_table_in_array(top, "check", [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
   if (const toml::table* study = top.optional_table("study")) {
     spec.study = parse_study(TomlReader(*study, "study", file));

@@ -53,7 +53,12 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
     if (!col || *col == 0)
       throw InputError(fmt::format("{}: check '{}': result '{}' has no column '{}' (columns: {})", check.at.where(),
                                    check.name, check.result, result_column, fmt::join(table.columns, ", ")));
-    const ReferenceColumn ref = read_reference_column(check.reference, check.key, reference_column);
+    ReferenceColumn ref;
+    try {
+      ref = read_reference_column(check.reference, check.key, reference_column);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: check '{}': {}", check.at.where(), check.name, e.what()));
+    }
     for (size_t i = 0; i < ref.keys.size(); ++i) {
       const int row = table.row_of_key(ref.keys[i]);
       if (row < 0)

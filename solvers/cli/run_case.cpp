@@ -115,7 +115,13 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     fs::remove(outcome.out_dir / "summary.json");  // a stale success must not survive a failed rerun
     const Model model = build_model(spec);
     describe_model(spec, model, run);
-    analyse(spec, model, outcome.out_dir, options, run);
+    try {
+      analyse(spec, model, outcome.out_dir, options, run);
+    } catch (const InputError& e) {
+      // Errors found by the solvers concern the model as a whole: name the case they came from.
+      const std::string what = e.what();
+      throw InputError(what.starts_with(case_file.string()) ? what : fmt::format("{}: {}", case_file.string(), what));
+    }
   } catch (const InputError& e) {
     run.status = RunStatus::bad_input;
     run.message = e.what();

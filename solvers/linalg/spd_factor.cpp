@@ -11,10 +11,15 @@ namespace bb {
 struct SpdFactorization::Impl {
   cholmod_common common{};
   cholmod_factor* factor = nullptr;
-  Impl() {
+  explicit Impl(FillOrdering ordering) {
     cholmod_start(&common);
     common.print = 0;
     common.error_handler = nullptr;
+    if (ordering != FillOrdering::best_of_both) {
+      common.nmethods = 1;
+      common.method[0].ordering = ordering == FillOrdering::amd ? CHOLMOD_AMD : CHOLMOD_METIS;
+      common.postorder = 1;
+    }
   }
   ~Impl() {
     if (factor) cholmod_free_factor(&factor, &common);
@@ -68,7 +73,7 @@ int weakest_pivot_column(cholmod_factor* factor, cholmod_common* common) {
 
 }  // namespace
 
-SpdFactorization::SpdFactorization() : impl_(std::make_unique<Impl>()) {}
+SpdFactorization::SpdFactorization(FillOrdering ordering) : impl_(std::make_unique<Impl>(ordering)) {}
 SpdFactorization::~SpdFactorization() = default;
 SpdFactorization::SpdFactorization(SpdFactorization&&) noexcept = default;
 SpdFactorization& SpdFactorization::operator=(SpdFactorization&&) noexcept = default;

@@ -1,0 +1,266 @@
+// Case files (cases/parse_case, cases/build_model): the thesis cases parse into the values they
+// state, a minimal case gets the documented defaults, and malformed input fails with a message
+// that names the key and the line.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "analysis/static_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kThesisCases = fs::path(BB_SOURCE_DIR) / "cases" / "thesis";
+
+TEST(ThesisCases, TableTwoCaseParsesIntoItsStatedValues) {
+  const CaseSpec spec = parse_case_file(kThesisCases / "table02_q4_cantilever.toml");
+  EXPECT_EQ(spec.name, "table02_q4_cantilever");
+  EXPECT_EQ(spec.section.youngs_modulus, 2.0e11);
+  EXPECT_EQ(spec.section.poisson_ratio, 0.25);
+  EXPECT_EQ(spec.section.density, 8000.0);
+  EXPECT_EQ(spec.section.thickness, 0.01);
+  ASSERT_EQ(spec.mesh.kind, MeshSpec::Kind::mapped_quad);
+  EXPECT_EQ(spec.mesh.element, ElementType::q4);
+  EXPECT_EQ(spec.mesh.mapped.nx, 5);
+  EXPECT_EQ(spec.mesh.mapped.ny, 2);
+  EXPECT_EQ(spec.mesh.mapped.numbering, NodeNumbering::serpentine);
+  EXPECT_EQ(spec.mesh.mapped.corners[2], Eigen::Vector2d(10.0, 2.0));
+  ASSERT_EQ(spec.constraints.size(), 1u);
+  EXPECT_EQ(spec.constraints[0].constraint.set, "clamp");
+  EXPECT_EQ(spec.constraints[0].constraint.directions, (std::vector<Direction>{0, 1}));
+  ASSERT_EQ(spec.loads.size(), 1u);
+  EXPECT_EQ(spec.loads[0].load.total, -1.0e5);
+  EXPECT_EQ(spec.loads[0].load.direction, 1);
+  EXPECT_EQ(spec.loads[0].load.split, LoadSplit::consistent_edge);
+  EXPECT_EQ(spec.analysis.type, AnalysisType::static_linear);
+  ASSERT_EQ(spec.checks.size(), 2u);
+  EXPECT_EQ(spec.checks[0].abs_tol, 2.0e-5);
+  EXPECT_EQ(spec.checks[0].reference.filename(), "table02.csv");
+  ASSERT_TRUE(spec.study.has_value());
+  EXPECT_EQ(spec.study->levels.size(), 7u);
+  EXPECT_EQ(spec.study->beam_length, 10.0);
+  EXPECT_EQ(spec.study->beam_height, 2.0);
+}
+
+TEST(ThesisCases, TableFourCaseParsesIntoItsStatedValues) {
+  const CaseSpec spec = parse_case_file(kThesisCases / "table04_cst_cantilever.toml");
+  EXPECT_EQ(spec.section.youngs_modulus, 2.2e11);
+  EXPECT_EQ(spec.section.poisson_ratio, 0.3);
+  EXPECT_EQ(spec.section.density, 7730.0);
+  EXPECT_EQ(spec.section.thickness, 0.1);
+  EXPECT_EQ(spec.mesh.element, ElementType::cst);
+  EXPECT_EQ(spec.mesh.mapped.nx, 5);
+  EXPECT_EQ(spec.mesh.mapped.ny, 1);
+  EXPECT_EQ(spec.mesh.mapped.diagonal, TriangleDiagonal::bottom_right_to_top_left);
+  ASSERT_EQ(spec.loads.size(), 1u);
+  EXPECT_EQ(spec.loads[0].load.set, "load_point");
+  EXPECT_EQ(spec.loads[0].load.total, -1.0e4);
+  EXPECT_EQ(spec.loads[0].load.split, LoadSplit::equal);
+  ASSERT_TRUE(spec.study.has_value());
+  EXPECT_EQ(spec.study->load_split, LoadSplit::consistent_edge);
+}
+
+TEST(ThesisCases, TableTwoModelResolvesTheClampAndTipSetsOnTheMesh) {
+  const Model model = build_model(parse_case_file(kThesisCases / "table02_q4_cantilever.toml"));
+  EXPECT_EQ(model.mesh.n_nodes(), 18);
+  EXPECT_EQ(model.mesh.n_elements(), 10);
+  ASSERT_EQ(model.node_sets.at("clamp").size(), 3u);
+  ASSERT_EQ(model.node_sets.at("tip").size(), 3u);
+  for (int n : model.node_sets.at("clamp")) EXPECT_EQ(model.mesh.coords(n, 0), 0.0);
+  for (int n : model.node_sets.at("tip")) EXPECT_EQ(model.mesh.coords(n, 0), 10.0);
+  // Node 18 is the top tip corner (Table II); the tip load bends the beam downwards there.
+  const StaticSolution sol = solve_static(model);
+  const int n18 = model.mesh.index_of(18);
+  ASSERT_GE(n18, 0);
+  EXPECT_LT(sol.displacements(n18, 1), 0.0);
+  EXPECT_GT(sol.displacements(n18, 0), 0.0) << "the top fibre at the tip moves towards +x under a downward load";
+}
+
+TEST(ThesisCases, TableFourLoadPointIsTheSingleTopTipNodeSeven) {
+  const Model model = build_model(parse_case_file(kThesisCases / "table04_cst_cantilever.toml"));
+  ASSERT_EQ(model.node_sets.at("load_point").size(), 1u);
+  EXPECT_EQ(model.mesh.node_ids[static_cast<size_t>(model.node_sets.at("load_point")[0])], 7);
+}
+
+// A minimal valid case; tests insert, replace or remove lines, then write it to a private folder.
+const std::string kMinimalCase = R"([case]
+name = "minimal"
+
+[material]
+E = 2.0e11
+nu = 0.3
+rho = 7800.0
+
+[section]
+thickness = 0.1
+
+[mesh]
+kind = "mapped_quad"
+element = "q4"
+corners = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]
+nx = 4
+ny = 2
+
+[sets.left]
+x = 0.0
+
+[sets.right]
+x = 2.0
+
+[[bc]]
+set = "left"
+dofs = ["x", "y"]
+
+[[load]]
+set = "right"
+direction = "y"
+total = -1000.0
+split = "consistent"
+
+[analysis]
+type = "static"
+)";
+
+class CaseFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("bladebench_case_parser_" + std::string(info->name()) + "_" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+  fs::path write(const std::string& text) {
+    const fs::path file = dir_ / "case.toml";
+    std::ofstream(file) << text;
+    return file;
+  }
+  // The case with `line` inserted after the first line equal to `after`; returns its 1-based line.
+  static std::string insert_after(const std::string& text, const std::string& after, const std::string& line, int& line_no) {
+    const size_t at = text.find(after + "\n");
+    EXPECT_NE(at, std::string::npos) << after;
+    const size_t end = at + after.size() + 1;
+    line_no = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
+    return text.substr(0, end) + line + "\n" + text.substr(end);
+  }
+  static std::string replace(std::string text, const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+  }
+  // The InputError message parse_case_file throws, or "" when it does not throw.
+  static std::string error_of(const fs::path& file) {
+    try {
+      parse_case_file(file);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return {};
+  }
+  fs::path dir_;
+};
+
+TEST_F(CaseFile, MinimalCaseParsesWithTheDocumentedDefaults) {
+  const CaseSpec spec = parse_case_file(write(kMinimalCase));
+  EXPECT_EQ(spec.name, "minimal");
+  EXPECT_EQ(spec.title, "minimal");
+  EXPECT_EQ(spec.mesh.mapped.numbering, NodeNumbering::rows);
+  EXPECT_EQ(spec.mesh.mapped.diagonal, TriangleDiagonal::bottom_left_to_top_right);
+  EXPECT_EQ(spec.mesh.mapped.first_node_id, 1);
+  EXPECT_EQ(spec.mesh.mapped.first_element_id, 1);
+  ASSERT_EQ(spec.sets.size(), 2u);
+  EXPECT_EQ(spec.constraints[0].constraint.value, 0.0);
+  EXPECT_EQ(spec.constraints[0].at.line, 25);
+  EXPECT_FALSE(spec.study.has_value());
+  EXPECT_TRUE(spec.checks.empty());
+  // And it runs: a downward tip load on a cantilever gives a downward tip.
+  const Model model = build_model(spec);
+  const StaticSolution sol = solve_static(model);
+  for (int n : model.node_sets.at("right")) EXPECT_LT(sol.displacements(n, 1), 0.0);
+}
+
+TEST_F(CaseFile, ModalAnalysisReadsModesAndShift) {
+  const CaseSpec spec = parse_case_file(
+      write(replace(kMinimalCase, "type = \"static\"", "type = \"modal\"\nmodes = 4\nshift_hz = 2.5")));
+  EXPECT_EQ(spec.analysis.type, AnalysisType::modal);
+  EXPECT_EQ(spec.analysis.modal.n_modes, 4);
+  EXPECT_EQ(spec.analysis.modal.shift_frequency_hz, 2.5);
+}
+
+TEST_F(CaseFile, UnknownKeyIsRejectedNamingTheKeyAndItsLine) {
+  int line = 0;
+  const fs::path file = write(insert_after(kMinimalCase, "ny = 2", "nxx = 5", line));
+  const std::string msg = error_of(file);
+  ASSERT_FALSE(msg.empty()) << "a typo must not pass silently";
+  EXPECT_NE(msg.find("nxx"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(":" + std::to_string(line) + ":"), std::string::npos) << "line " << line << ": " << msg;
+  EXPECT_NE(msg.find("unknown key"), std::string::npos) << msg;
+}
+
+TEST_F(CaseFile, UnknownKeyInsideAnArrayOfTablesIsRejectedNamingTheKeyAndItsLine) {
+  int line = 0;
+  const fs::path file = write(insert_after(kMinimalCase, "dofs = [\"x\", \"y\"]", "valeu = 1.0", line));
+  const std::string msg = error_of(file);
+  ASSERT_FALSE(msg.empty());
+  EXPECT_NE(msg.find("valeu"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(":" + std::to_string(line) + ":"), std::string::npos) << "line " << line << ": " << msg;
+}
+
+TEST_F(CaseFile, UnknownTopLevelTableIsRejected) {
+  const std::string msg = error_of(write(kMinimalCase + "\n[solver]\ntolerance = 1e-9\n"));
+  EXPECT_NE(msg.find("solver"), std::string::npos) << msg;
+}
+
+TEST_F(CaseFile, MissingRequiredKeyIsNamed) {
+  const std::string msg = error_of(write(replace(kMinimalCase, "thickness = 0.1\n", "")));
+  EXPECT_NE(msg.find("thickness"), std::string::npos) << msg;
+}
+
+TEST_F(CaseFile, ValueOfTheWrongTypeIsNamedWithItsLine) {
+  const std::string msg = error_of(write(replace(kMinimalCase, "nx = 4", "nx = 4.5")));
+  EXPECT_NE(msg.find("nx"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(":16:"), std::string::npos) << msg;
+}
+
+TEST_F(CaseFile, PoissonRatioOutsidePhysicalRangeIsRejected) {
+  EXPECT_NE(error_of(write(replace(kMinimalCase, "nu = 0.3", "nu = 0.5"))).find("nu"), std::string::npos);
+  EXPECT_NE(error_of(write(replace(kMinimalCase, "nu = 0.3", "nu = -1.0"))).find("nu"), std::string::npos);
+}
+
+TEST_F(CaseFile, ClockwiseCornersAreRejected) {
+  const std::string msg = error_of(write(replace(kMinimalCase, "[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]",
+                                                 "[[0.0, 0.0], [0.0, 1.0], [2.0, 1.0], [2.0, 0.0]]")));
+  EXPECT_NE(msg.find("corners"), std::string::npos) << msg;
+}
+
+TEST_F(CaseFile, ModalAnalysisWithoutDensityIsRejected) {
+  const std::string text = replace(replace(kMinimalCase, "rho = 7800.0\n", ""), "type = \"static\"", "type = \"modal\"\nmodes = 3");
+  EXPECT_NE(error_of(write(text)).find("rho"), std::string::npos);
+}
+
+TEST_F(CaseFile, MissingFileIsAnInputError) {
+  EXPECT_THROW(parse_case_file(dir_ / "does_not_exist.toml"), InputError);
+}
+
+TEST_F(CaseFile, ConstraintOnAnUnknownSetIsRejectedWhenBuildingTheModel) {
+  const CaseSpec spec = parse_case_file(write(replace(kMinimalCase, "set = \"left\"", "set = \"lefft\"")));
+  try {
+    build_model(spec);
+    FAIL() << "unknown set must be rejected";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lefft"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace bb

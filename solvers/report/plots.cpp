@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 
 namespace bb {
 namespace {
@@ -37,7 +38,30 @@ Plot draw(const fs::path& out_dir, const std::string& stem, const std::string& t
   return {title, fmt::format("plots/{}.svg", stem), ""};
 }
 
+// Above this many elements only the boundary is drawn: every edge would bloat the SVG to megabytes.
+constexpr int kMaxDrawnElements = 2000;
+
+void write_boundary(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd& xy) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& b : mesh.blocks) {
+    const int nn = nodes_per_element(b.type);
+    for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
+      for (int a = 0; a < nn; ++a) {
+        const int p = b.conn(e, a), q = b.conn(e, (a + 1) % nn);
+        ++uses[{std::min(p, q), std::max(p, q)}];
+      }
+  }
+  for (const auto& [edge, count] : uses) {
+    if (count != 1) continue;
+    out << xy(edge.first, 0) << ' ' << xy(edge.first, 1) << '\n' << xy(edge.second, 0) << ' ' << xy(edge.second, 1) << "\n\n";
+  }
+}
+
 void write_edges(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd& xy) {
+  if (mesh.n_elements() > kMaxDrawnElements) {
+    write_boundary(out, mesh, xy);
+    return;
+  }
   for (const auto& b : mesh.blocks) {
     const int nn = nodes_per_element(b.type);
     for (Eigen::Index e = 0; e < b.conn.rows(); ++e) {

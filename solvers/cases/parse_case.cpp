@@ -19,6 +19,10 @@ Direction parse_direction(TomlReader& r, const std::string& key, const std::stri
   r.fail(key, fmt::format("unknown direction '{}'; expected x, y or z", value));
 }
 
+LoadSplit parse_split(TomlReader& r, const std::string& key) {
+  return r.choice(key, {"equal", "consistent"}) == "equal" ? LoadSplit::equal : LoadSplit::consistent_edge;
+}
+
 ElementType parse_element(TomlReader& r) {
   const std::string e = r.choice("element", {"q4", "cst"});
   return e == "q4" ? ElementType::q4 : ElementType::cst;
@@ -125,7 +129,7 @@ LoadSpec parse_load(TomlReader r) {
   l.load.set = r.string("set");
   l.load.direction = parse_direction(r, "direction", r.string("direction"));
   l.load.total = r.number("total");
-  l.load.split = r.choice("split", {"equal", "consistent"}) == "equal" ? LoadSplit::equal : LoadSplit::consistent_edge;
+  l.load.split = parse_split(r, "split");
   r.finish();
   return l;
 }
@@ -177,8 +181,7 @@ RefinementStudySpec parse_study(TomlReader r) {
   if (s.levels.size() < 3) r.fail("levels", "need at least 3 levels to estimate a convergence order");
   s.probe_set = r.string("probe_set");
   s.probe_direction = parse_direction(r, "probe_direction", r.string("probe_direction"));
-  if (r.has("load_split"))
-    s.load_split = r.choice("load_split", {"equal", "consistent"}) == "equal" ? LoadSplit::equal : LoadSplit::consistent_edge;
+  if (r.has("load_split")) s.load_split = parse_split(r, "load_split");
   s.load_set = r.optional_string("load_set");
   TomlReader ref(r.table("reference"), r.path() + ".reference", r.file());
   ref.choice("kind", {"timoshenko_cantilever"});

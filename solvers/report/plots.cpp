@@ -57,6 +57,13 @@ void write_boundary(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd&
   }
 }
 
+std::ofstream open_plot_data(const fs::path& out_dir, const std::string& stem) {
+  fs::create_directories(out_dir / "plots");
+  std::ofstream out(out_dir / "plots" / (stem + ".dat"));
+  out.precision(12);
+  return out;
+}
+
 void write_edges(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd& xy) {
   if (mesh.n_elements() > kMaxDrawnElements) {
     write_boundary(out, mesh, xy);
@@ -82,10 +89,8 @@ Plot plot_deformed_mesh(const Mesh& mesh, const Eigen::MatrixXd& displacements, 
   const double size = (xy.colwise().maxCoeff() - xy.colwise().minCoeff()).norm();
   const double umax = displacements.leftCols(2).rowwise().norm().maxCoeff();
   const double scale = umax > 0 ? 0.1 * size / umax : 1.0;
-  fs::create_directories(out_dir / "plots");
   {
-    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
-    out.precision(10);
+    std::ofstream out = open_plot_data(out_dir, stem);
     write_edges(out, mesh, xy);
     out << "\n";
     write_edges(out, mesh, xy + scale * displacements.leftCols(2));
@@ -100,10 +105,8 @@ Plot plot_deformed_mesh(const Mesh& mesh, const Eigen::MatrixXd& displacements, 
 
 Plot plot_check(const std::vector<CheckEntry>& entries, const std::string& group, const fs::path& out_dir,
                 const std::string& stem) {
-  fs::create_directories(out_dir / "plots");
   {
-    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
-    out.precision(12);
+    std::ofstream out = open_plot_data(out_dir, stem);
     out << "# index computed reference tolerance\n";
     int i = 0;
     for (const CheckEntry& e : entries)
@@ -119,10 +122,8 @@ Plot plot_check(const std::vector<CheckEntry>& entries, const std::string& group
 }
 
 Plot plot_refinement_error(const RefinementResult& study, const fs::path& out_dir, const std::string& stem) {
-  fs::create_directories(out_dir / "plots");
   {
-    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
-    out.precision(12);
+    std::ofstream out = open_plot_data(out_dir, stem);
     out << "# free_dofs |error vs Timoshenko| |error vs Richardson limit|\n";
     for (const RefinementRow& r : study.rows)
       out << r.n_free_dofs << ' ' << std::abs(r.error_vs_beam) << ' ' << std::abs(r.error_vs_limit) << '\n';
@@ -138,10 +139,8 @@ Plot plot_refinement_error(const RefinementResult& study, const fs::path& out_di
 }
 
 Plot plot_refinement_cost(const RefinementResult& study, const fs::path& out_dir, const std::string& stem) {
-  fs::create_directories(out_dir / "plots");
   {
-    std::ofstream out(out_dir / "plots" / (stem + ".dat"));
-    out.precision(12);
+    std::ofstream out = open_plot_data(out_dir, stem);
     out << "# free_dofs assembly_s solve_s\n";
     for (const RefinementRow& r : study.rows)
       out << r.n_free_dofs << ' ' << std::max(r.assembly_seconds, 1e-6) << ' ' << std::max(r.solve_seconds, 1e-6) << '\n';

@@ -11,13 +11,16 @@
 
 namespace bb {
 
-ModalResult solve_modal(const Model& model, const ModalOptions& options) {
+ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& base_options) {
   const Mesh& mesh = model.mesh;
   auto t0 = std::chrono::steady_clock::now();
   const DofMap dofs = number_dofs(model);
   const GlobalMatrices global = assemble(mesh, model.section);
   const Partitioned k = partition(global.stiffness, dofs);
   const Partitioned m = partition(global.mass, dofs);
+  ModalOptions options = base_options;
+  options.n_modes = selection.lowest;
+  options.ordering = ordering_for_dimension(mesh.dim);
   if (options.n_modes >= dofs.n_free)
     throw InputError(fmt::format("'analysis.modes': asked for {} modes of a model with only {} free DOFs",
                                  options.n_modes, dofs.n_free));
@@ -25,17 +28,57 @@ ModalResult solve_modal(const Model& model, const ModalOptions& options) {
   result.n_free_dofs = dofs.n_free;
   auto t1 = std::chrono::steady_clock::now();
   result.assembly_seconds = std::chrono::duration<double>(t1 - t0).count();
-  const ModalSolution sol = lowest_modes(k.ff, m.ff, options);
+  // A band is found from below: double the mode count until the band's top is passed. The
+  // negative shift keeps one Cholesky factor valid; the cost is a few Lanczos restarts.
+  ModalSolution sol = lowest_modes(k.ff, m.ff, options);
+  const double two_pi = 2 * std::numbers::pi;
+  while (selection.band_max_hz && std::sqrt(std::max(sol.eigenvalues.maxCoeff(), 0.0)) / two_pi < *selection.band_max_hz &&
+         options.n_modes < dofs.n_free - 1) {
+    options.n_modes = std::min(2 * options.n_modes, dofs.n_free - 1);
+    sol = lowest_modes(k.ff, m.ff, options);
+  }
+  if (selection.band_min_hz || selection.band_max_hz) {
+    std::vector<Eigen::Index> keep;
+    for (Eigen::Index i = 0; i < sol.eigenvalues.size(); ++i) {
+      const double f = std::sqrt(std::max(sol.eigenvalues[i], 0.0)) / two_pi;
+      if (f >= selection.band_min_hz.value_or(0.0) && f <= selection.band_max_hz.value_or(INFINITY)) keep.push_back(i);
+    }
+    ModalSolution band = sol;
+    band.eigenvalues.resize(static_cast<Eigen::Index>(keep.size()));
+    band.shapes.resize(sol.shapes.rows(), static_cast<Eigen::Index>(keep.size()));
+    for (size_t j = 0; j < keep.size(); ++j) {
+      band.eigenvalues[static_cast<Eigen::Index>(j)] = sol.eigenvalues[keep[j]];
+      band.shapes.col(static_cast<Eigen::Index>(j)) = sol.shapes.col(keep[j]);
+    }
+    sol = std::move(band);
+  }
   result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   result.iterations = sol.iterations;
   result.max_residual = sol.max_residual;
   result.frequencies_hz = sol.eigenvalues.array().max(0.0).sqrt() / (2 * std::numbers::pi);
+  result.effective_mass_fraction.resize(sol.shapes.cols(), mesh.dim);
+  for (int d = 0; d < mesh.dim; ++d) {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.n_free);
+    for (int i = 0; i < dofs.n_free; ++i) r[i] = dofs.free_dofs[i] % mesh.dim == d ? 1.0 : 0.0;
+    const Eigen::VectorXd mr = m.ff * r;
+    const double total = r.dot(mr);
+    for (Eigen::Index k_mode = 0; k_mode < sol.shapes.cols(); ++k_mode) {
+      const double gamma = sol.shapes.col(k_mode).dot(mr);
+      result.effective_mass_fraction(k_mode, d) = total > 0 ? gamma * gamma / total : 0.0;
+    }
+  }
   for (Eigen::Index k_mode = 0; k_mode < sol.shapes.cols(); ++k_mode) {
     Eigen::MatrixXd shape = Eigen::MatrixXd::Zero(mesh.n_nodes(), mesh.dim);
     for (int i = 0; i < dofs.n_free; ++i) shape(dofs.free_dofs[i] / mesh.dim, dofs.free_dofs[i] % mesh.dim) = sol.shapes(i, k_mode);
     result.shapes.push_back(std::move(shape));
   }
   return result;
+}
+
+ModalResult solve_modal(const Model& model, const ModalOptions& options) {
+  ModeSelection lowest;
+  lowest.lowest = options.n_modes;
+  return solve_modal(model, lowest, options);
 }
 
 ResultTable frequency_table(const Eigen::VectorXd& frequencies_hz) {
@@ -46,6 +89,20 @@ ResultTable frequency_table(const Eigen::VectorXd& frequencies_hz) {
   for (Eigen::Index i = 0; i < frequencies_hz.size(); ++i) {
     t.values(i, 0) = static_cast<double>(i + 1);
     t.values(i, 1) = frequencies_hz[i];
+  }
+  return t;
+}
+
+ResultTable participation_table(const ModalResult& result) {
+  ResultTable t;
+  t.name = "modal_participation";
+  t.columns = {"mode", "frequency_hz", "eff_mass_x", "eff_mass_y"};
+  if (result.effective_mass_fraction.cols() == 3) t.columns.push_back("eff_mass_z");
+  t.values.resize(result.frequencies_hz.size(), static_cast<Eigen::Index>(t.columns.size()));
+  for (Eigen::Index i = 0; i < result.frequencies_hz.size(); ++i) {
+    t.values(i, 0) = static_cast<double>(i + 1);
+    t.values(i, 1) = result.frequencies_hz[i];
+    t.values.row(i).tail(result.effective_mass_fraction.cols()) = result.effective_mass_fraction.row(i);
   }
   return t;
 }

@@ -1,6 +1,7 @@
 // Modal analysis: lowest natural frequencies and mass-normalized shapes of the constrained model.
 #pragma once
 #include <Eigen/Dense>
+#include <optional>
 #include <vector>
 
 #include "linalg/modal_solver.hpp"
@@ -9,8 +10,18 @@
 
 namespace bb {
 
+// Which modes a modal analysis returns.
+struct ModeSelection {
+  int lowest = 6;                      // the lowest n modes, when no band is given
+  std::optional<double> band_min_hz;   // all modes with band_min_hz <= f <= band_max_hz
+  std::optional<double> band_max_hz;
+};
+
 struct ModalResult {
   Eigen::VectorXd frequencies_hz;
+  // Effective modal mass of each mode along x, y (, z) as a fraction of the free mass:
+  // (phi^T M r_d)^2 / (r_d^T M r_d), r_d the unit translation along d.
+  Eigen::MatrixXd effective_mass_fraction;
   std::vector<Eigen::MatrixXd> shapes;  // per mode: n_nodes x dim, mass-normalized
   int n_free_dofs = 0;
   int iterations = 0;
@@ -19,8 +30,13 @@ struct ModalResult {
   double solve_seconds = 0.0;
 };
 
+// Throws InputError when more modes are asked than the model has free DOFs.
+ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options);
+
+// The lowest options.n_modes modes.
 ModalResult solve_modal(const Model& model, const ModalOptions& options);
 
 ResultTable frequency_table(const Eigen::VectorXd& frequencies_hz);
+ResultTable participation_table(const ModalResult& result);
 
 }  // namespace bb

@@ -31,7 +31,7 @@ StaticSolution solve_static(const Model& model) {
   if (dofs.prescribed.size() > 0) rhs -= k.fc * dofs.prescribed;
 
   t0 = std::chrono::steady_clock::now();
-  SpdFactorization factor;
+  SpdFactorization factor(ordering_for_dimension(mesh.dim));
   const FactorStatus status = factor.factorize(k.ff);
   if (!status.ok) {
     const std::string where = status.weakest_column >= 0

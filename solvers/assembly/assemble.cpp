@@ -6,41 +6,29 @@
 #include <set>
 #include <stdexcept>
 
+#include "assembly/sparsity.hpp"
 #include "common/errors.hpp"
+#include "fe/solid.hpp"
 
 namespace bb {
 namespace {
 
-using Triplets = std::vector<Eigen::Triplet<double>>;
-
-template <int N>
-void scatter(const Eigen::Matrix<double, 2 * N, 2 * N>& ke, const int* nodes, Triplets& out) {
-  for (int a = 0; a < N; ++a)
-    for (int da = 0; da < 2; ++da)
-      for (int c = 0; c < N; ++c)
-        for (int dc = 0; dc < 2; ++dc) {
-          const double v = ke(2 * a + da, 2 * c + dc);
-          if (v != 0.0) out.emplace_back(2 * nodes[a] + da, 2 * nodes[c] + dc, v);
-        }
+template <int N, int D>
+Eigen::Matrix<double, N, D> element_coords(const Mesh& mesh, const int* nodes) {
+  Eigen::Matrix<double, N, D> xyz;
+  for (int a = 0; a < N; ++a) xyz.row(a) = mesh.coords.row(nodes[a]).template head<D>();
+  return xyz;
 }
 
-template <int N>
-Eigen::Matrix<double, N, 2> element_coords(const Mesh& mesh, const int* nodes) {
-  Eigen::Matrix<double, N, 2> xy;
-  for (int a = 0; a < N; ++a) xy.row(a) = mesh.coords.row(nodes[a]).head<2>();
-  return xy;
-}
-
-template <int N, typename StiffFn, typename MassFn>
-void assemble_block(const Mesh& mesh, const ElementBlock& block, const fe::PlaneSection& section,
-                    const AssemblyOptions& options, StiffFn stiff, MassFn mass, Triplets& k,
-                    Triplets& m) {
+template <int N, int D, typename Props, typename StiffFn, typename MassFn>
+void assemble_block(const Mesh& mesh, const ElementBlock& block, const Props& props, const NodalPattern& pattern,
+                    StiffFn stiff, MassFn mass, GlobalMatrices& g, const AssemblyOptions& options) {
   for (Eigen::Index e = 0; e < block.conn.rows(); ++e) {
     const int* nodes = block.conn.row(e).data();
-    const auto xy = element_coords<N>(mesh, nodes);
+    const auto xyz = element_coords<N, D>(mesh, nodes);
     try {
-      if (options.stiffness) scatter<N>(stiff(xy, section), nodes, k);
-      if (options.mass) scatter<N>(mass(xy, section), nodes, m);
+      if (options.stiffness) pattern.add(g.stiffness, nodes, N, stiff(xyz, props));
+      if (options.mass) pattern.add(g.mass, nodes, N, mass(xyz, props));
     } catch (const std::domain_error& err) {
       throw InputError(fmt::format("element {} ({}): {}", block.ids[e], element_name(block.type), err.what()));
     }
@@ -50,57 +38,64 @@ void assemble_block(const Mesh& mesh, const ElementBlock& block, const fe::Plane
 }  // namespace
 
 GlobalMatrices assemble(const Mesh& mesh, const fe::PlaneSection& section, const AssemblyOptions& options) {
-  if (mesh.dim != 2) throw InputError("plane-stress assembly needs a 2D mesh");
-  Triplets k, m;
-  size_t entries = 0;
-  for (const auto& b : mesh.blocks) entries += b.ids.size() * static_cast<size_t>(4 * nodes_per_element(b.type) * nodes_per_element(b.type));
-  if (options.stiffness) k.reserve(entries);
-  if (options.mass) m.reserve(entries / 2);  // mass has no x-y coupling
+  for (const auto& b : mesh.blocks)
+    if (element_dimension(b.type) != mesh.dim)
+      throw InputError(fmt::format("{} elements in a {}D mesh", element_name(b.type), mesh.dim));
+  const NodalPattern pattern(mesh);
+  GlobalMatrices g;
+  if (options.stiffness) g.stiffness = pattern.zero_matrix();
+  if (options.mass) g.mass = pattern.zero_matrix();
+  const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
   for (const auto& b : mesh.blocks) {
     switch (b.type) {
       case ElementType::q4:
-        assemble_block<4>(mesh, b, section, options, fe::q4_stiffness, fe::q4_consistent_mass, k, m);
+        assemble_block<4, 2>(mesh, b, section, pattern, fe::q4_stiffness, fe::q4_consistent_mass, g, options);
         break;
       case ElementType::cst:
-        assemble_block<3>(mesh, b, section, options, fe::cst_stiffness, fe::cst_consistent_mass, k, m);
+        assemble_block<3, 2>(mesh, b, section, pattern, fe::cst_stiffness, fe::cst_consistent_mass, g, options);
+        break;
+      case ElementType::hex8:
+        assemble_block<8, 3>(mesh, b, solid, pattern, fe::hex8_stiffness, fe::hex8_consistent_mass, g, options);
+        break;
+      case ElementType::hex8i:
+        assemble_block<8, 3>(mesh, b, solid, pattern, fe::hex8_incompatible_stiffness, fe::hex8_consistent_mass, g, options);
+        break;
+      case ElementType::hex20:
+        assemble_block<20, 3>(mesh, b, solid, pattern, fe::hex20_stiffness, fe::hex20_consistent_mass, g, options);
         break;
     }
   }
-  const int n = mesh.n_nodes() * mesh.dim;
-  GlobalMatrices g;
-  if (options.stiffness) {
-    g.stiffness.resize(n, n);
-    g.stiffness.setFromTriplets(k.begin(), k.end());
-  }
-  if (options.mass) {
-    g.mass.resize(n, n);
-    g.mass.setFromTriplets(m.begin(), m.end());
-  }
+  // The mass pattern carries the stiffness's direction coupling, which mass never has.
+  if (options.mass) g.mass.prune(0.0);
   return g;
 }
 
 Partitioned partition(const SparseMatrix& a, const DofMap& dofs) {
-  std::vector<int> constrained_index(dofs.n_global(), -1);
-  for (size_t i = 0; i < dofs.constrained_dofs.size(); ++i) constrained_index[dofs.constrained_dofs[i]] = static_cast<int>(i);
-  Triplets ff, fc;
-  ff.reserve(static_cast<size_t>(a.nonZeros()));
-  for (int col = 0; col < a.outerSize(); ++col) {
-    for (SparseMatrix::InnerIterator it(a, col); it; ++it) {
-      const int row_eq = dofs.equation[it.row()];
-      if (row_eq < 0) continue;
-      const int col_eq = dofs.equation[col];
-      if (col_eq >= 0) {
-        ff.emplace_back(row_eq, col_eq, it.value());
-      } else {
-        fc.emplace_back(row_eq, constrained_index[col], it.value());
+  // Equation numbers grow with the global DOF, so slicing columns keeps rows sorted.
+  const int n_con = static_cast<int>(dofs.constrained_dofs.size());
+  auto slice = [&](const std::vector<int>& columns, int n_cols) {
+    SparseMatrix out(dofs.n_free, n_cols);
+    long nnz = 0;
+    for (int col : columns)
+      for (SparseMatrix::InnerIterator it(a, col); it; ++it) nnz += dofs.equation[it.row()] >= 0 ? 1 : 0;
+    out.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+    long pos = 0;
+    int j = 0;
+    for (int col : columns) {
+      out.outerIndexPtr()[j++] = static_cast<int>(pos);
+      for (SparseMatrix::InnerIterator it(a, col); it; ++it) {
+        const int row = dofs.equation[it.row()];
+        if (row < 0) continue;
+        out.innerIndexPtr()[pos] = row;
+        out.valuePtr()[pos++] = it.value();
       }
     }
-  }
+    out.outerIndexPtr()[j] = static_cast<int>(pos);
+    return out;
+  };
   Partitioned p;
-  p.ff.resize(dofs.n_free, dofs.n_free);
-  p.ff.setFromTriplets(ff.begin(), ff.end());
-  p.fc.resize(dofs.n_free, static_cast<Eigen::Index>(dofs.constrained_dofs.size()));
-  p.fc.setFromTriplets(fc.begin(), fc.end());
+  p.ff = slice(dofs.free_dofs, dofs.n_free);
+  p.fc = slice(dofs.constrained_dofs, n_con);
   return p;
 }
 

@@ -1,12 +1,17 @@
 // A case file parsed into plain, validated structs (parse once, at the edge).
 #pragma once
 #include <filesystem>
+#include <toml++/toml.h>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/modal_analysis.hpp"
+#include "analysis/mode_pairs.hpp"
+#include "articles/two_blade.hpp"
 #include "linalg/modal_solver.hpp"
+#include "mesh/hex_block.hpp"
 #include "mesh/mapped_quad.hpp"
 #include "model/model.hpp"
 
@@ -19,17 +24,24 @@ struct SourceLocation {
 };
 
 struct MeshSpec {
-  enum class Kind { mapped_quad, csv } kind = Kind::mapped_quad;
+  enum class Kind { mapped_quad, csv, hex_blocks, gmsh, two_blade } kind = Kind::mapped_quad;
   MappedQuadSpec mapped;
-  std::filesystem::path nodes_csv;     // csv: columns id,x,y
-  std::filesystem::path elements_csv;  // csv: columns id,n1,n2,n3[,n4]
+  std::filesystem::path nodes_csv;     // csv: columns id,x,y[,z]
+  std::filesystem::path elements_csv;  // csv: columns id,n1..nN
+  std::vector<HexBlockSpec> blocks;    // hex_blocks: merged at coincident nodes
+  double merge_tolerance = 1e-9;       // [m]
+  std::filesystem::path gmsh_file;     // gmsh: .msh 4.1 ASCII
+  TwoBladeDimensions two_blade;        // two_blade: the thesis's test article, validated
   ElementType element = ElementType::q4;
   SourceLocation at;
+
+  int dim() const { return element_dimension(element); }
 };
 
 struct NodeSetSpec {
   std::string name;
   std::vector<long> ids;  // explicit ids, or empty
+  std::string group;      // a Gmsh physical group name, or empty
   // Coordinate predicate: every given axis must match (|x - value| <= tol, or within a range).
   std::array<std::optional<double>, 3> equals;
   std::array<std::optional<std::pair<double, double>>, 3> range;
@@ -51,7 +63,10 @@ enum class AnalysisType { static_linear, modal };
 
 struct AnalysisSpec {
   AnalysisType type = AnalysisType::static_linear;
+  ModeSelection modes;
   ModalOptions modal;
+  std::optional<ModePairSpec> pairs;  // modal: in-phase / out-of-phase and type of each mode
+  SourceLocation pairs_at;
 };
 
 // Compare result columns to reference columns, row by row on a shared integer key.
@@ -61,6 +76,7 @@ struct CheckSpec {
   std::filesystem::path reference;    // CSV, resolved against the case file's folder
   std::string key;                    // key column of the reference, e.g. "node"
   std::vector<std::pair<std::string, std::string>> compare;  // result column -> reference column
+  std::vector<long> keys;             // compare only these reference rows; empty = every row
   double abs_tol = 0.0;
   double rel_tol = 0.0;
   std::string source;                 // where the reference values come from (for the report)
@@ -100,10 +116,16 @@ struct CaseSpec {
 // Throws InputError naming file, line and key for every malformed or missing entry.
 CaseSpec parse_case_file(const std::filesystem::path& file);
 
+// The same in two steps, so a caller can change values (e.g. calibration parameters) between
+// reading and parsing; `file` locates relative paths and names the source in messages.
+toml::table read_case_table(const std::filesystem::path& file);
+CaseSpec parse_case_table(const toml::table& root, const std::filesystem::path& file);
+
 // Mesh, sets, constraints and loads resolved against the mesh. Throws InputError.
 Model build_model(const CaseSpec& spec);
 
 // Node set resolution on its own, also used by the refinement study on refined meshes.
-std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set);
+using NodeGroups = std::map<std::string, std::vector<int>>;  // e.g. Gmsh physical groups
+std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set, const NodeGroups* groups = nullptr);
 
 }  // namespace bb

@@ -1,6 +1,8 @@
 // TOML case file -> CaseSpec. The format is documented in cases/README.md.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <toml++/toml.h>
 
 #include "cases/case_spec.hpp"
@@ -24,15 +26,108 @@ LoadSplit parse_split(TomlReader& r, const std::string& key) {
 }
 
 ElementType parse_element(TomlReader& r) {
-  const std::string e = r.choice("element", {"q4", "cst"});
-  return e == "q4" ? ElementType::q4 : ElementType::cst;
+  const std::string e = r.choice("element", {"q4", "cst", "hex8", "hex8i", "hex20"});
+  for (ElementType t : {ElementType::q4, ElementType::cst, ElementType::hex8, ElementType::hex8i, ElementType::hex20})
+    if (element_name(t) == e) return t;
+  r.fail("element", "unreachable");
+}
+
+std::vector<Eigen::Vector3d> parse_points(TomlReader& r, const std::string& key, size_t count) {
+  const toml::array& points = r.array(key);
+  if (points.size() != count) r.fail(key, fmt::format("expected {} points, found {}", count, points.size()));
+  std::vector<Eigen::Vector3d> out;
+  for (size_t i = 0; i < count; ++i) {
+    const toml::array* p = points[i].as_array();
+    if (!p || p->size() != 3 || !(*p)[0].is_number() || !(*p)[1].is_number() || !(*p)[2].is_number())
+      r.fail(key, fmt::format("point {} must be [x, y, z] with three numbers", i + 1));
+    out.emplace_back((*p)[0].value<double>().value(), (*p)[1].value<double>().value(), (*p)[2].value<double>().value());
+    if (!out.back().allFinite()) r.fail(key, "coordinates must be finite");
+  }
+  return out;
+}
+
+int parse_divisions(TomlReader& r, const std::string& key) {
+  const long n = r.integer(key);
+  if (n < 1) r.fail(key, fmt::format("must be >= 1, found {}", n));
+  if (n > 100'000) r.fail(key, fmt::format("{} divisions exceed the limit of 100000", n));
+  return static_cast<int>(n);
+}
+
+HexBlockSpec parse_hex_block(TomlReader r, ElementType element) {
+  HexBlockSpec b;
+  b.element = element;
+  const auto corners = parse_points(r, "corners", 8);
+  std::copy(corners.begin(), corners.end(), b.corners.begin());
+  b.nx = parse_divisions(r, "nx");
+  b.ny = parse_divisions(r, "ny");
+  b.nz = parse_divisions(r, "nz");
+  // Orientation: corners 1-4 must run counterclockwise seen from corner 5's side.
+  const Eigen::Vector3d e1 = b.corners[1] - b.corners[0], e2 = b.corners[3] - b.corners[0], e3 = b.corners[4] - b.corners[0];
+  if (!(e1.cross(e2).dot(e3) > 0)) r.fail("corners", "corners 1-4 must run counterclockwise seen from corners 5-8 (positive volume)");
+  r.finish();
+  return b;
+}
+
+// The generated two-blade article: mesh density in [mesh], any subset of the named dimensions
+// in [mesh.dimensions] (the others keep their documented defaults, articles/two_blade.hpp).
+void parse_two_blade(TomlReader& r, MeshSpec& m) {
+  m.kind = MeshSpec::Kind::two_blade;
+  // Far below every clearance validate() admits (1e-6 m), far above rounding in the corners.
+  m.merge_tolerance = 1e-7;
+  TwoBladeDimensions& d = m.two_blade;
+  auto small_integer = [&r](const std::string& key, long lo, long hi, int fallback) {
+    const auto v = r.optional_integer(key);
+    if (!v) return fallback;
+    if (*v < lo || *v > hi) r.fail(key, fmt::format("must lie in {}..{}, found {}", lo, hi, *v));
+    return static_cast<int>(*v);
+  };
+  d.refinement = small_integer("refinement", 1, 64, d.refinement);
+  d.thickness_divisions = small_integer("thickness_divisions", 1, 1000, d.thickness_divisions);
+  d.airfoil_divisions = small_integer("airfoil_divisions", 1, 1000, d.airfoil_divisions);
+  std::optional<TomlReader> dims;
+  if (const toml::table* table = r.optional_table("dimensions")) {
+    dims.emplace(*table, r.path() + ".dimensions", r.file());
+    for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
+      if (auto v = dims->optional_number(f.name)) d.*f.member = *v;
+    dims->finish();
+  }
+  try {
+    d.validate();
+  } catch (const DimensionError& e) {
+    if (dims && dims->has(e.name())) dims->fail(e.name(), e.what());
+    r.fail(r.has(e.name()) ? e.name() : std::string(), e.what());
+  }
 }
 
 MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
   MeshSpec m;
   m.at = r.location();
-  const std::string kind = r.choice("kind", {"mapped_quad", "csv"});
+  const std::string kind = r.choice("kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "two_blade"});
   m.element = parse_element(r);
+  if (kind == "two_blade") {
+    if (m.dim() != 3) r.fail("element", "kind 'two_blade' needs a solid element (hex8, hex8i, hex20)");
+    parse_two_blade(r, m);
+    r.finish();
+    return m;
+  }
+  if (kind == "hex_blocks" || kind == "gmsh") {
+    if (m.dim() != 3) r.fail("element", fmt::format("kind '{}' needs a solid element (hex8, hex8i, hex20)", kind));
+    m.merge_tolerance = r.non_negative("merge_tolerance", m.merge_tolerance);
+    if (kind == "gmsh") {
+      m.kind = MeshSpec::Kind::gmsh;
+      m.gmsh_file = folder / r.string("file");
+    } else {
+      m.kind = MeshSpec::Kind::hex_blocks;
+      int index = 0;
+      for (const toml::node& n : r.array("block")) {
+        if (!n.is_table()) r.fail("block", "write blocks as [[mesh.block]] tables");
+        m.blocks.push_back(parse_hex_block(TomlReader(*n.as_table(), fmt::format("mesh.block[{}]", index++), r.file()), m.element));
+      }
+      if (m.blocks.empty()) r.fail("block", "needs at least one [[mesh.block]]");
+    }
+    r.finish();
+    return m;
+  }
   if (kind == "csv") {
     m.kind = MeshSpec::Kind::csv;
     m.nodes_csv = folder / r.string("nodes");
@@ -41,6 +136,7 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
     return m;
   }
   m.kind = MeshSpec::Kind::mapped_quad;
+  if (m.dim() != 2) r.fail("element", "a mapped_quad mesh needs q4 or cst elements (solids: kind = \"hex_blocks\")");
   MappedQuadSpec& q = m.mapped;
   q.element = m.element;
   const toml::array& corners = r.array("corners");
@@ -90,6 +186,7 @@ NodeSetSpec parse_set(TomlReader r, const std::string& name) {
     s.ids = r.integer_array("ids");
     if (s.ids.empty()) r.fail("ids", "empty id list");
   }
+  s.group = r.optional_string("group").value_or("");
   static const char* axes[] = {"x", "y", "z"};
   bool predicate = false;
   for (int a = 0; a < 3; ++a) {
@@ -106,8 +203,8 @@ NodeSetSpec parse_set(TomlReader r, const std::string& name) {
     }
   }
   s.tol = r.non_negative("tol", 1e-9);
-  if (predicate == !s.ids.empty())
-    r.fail("", "a node set needs either 'ids' or a coordinate predicate (x, y, z, x_range, ...), not both");
+  if (static_cast<int>(predicate) + static_cast<int>(!s.ids.empty()) + static_cast<int>(!s.group.empty()) != 1)
+    r.fail("", "a node set needs exactly one of 'ids', 'group' or a coordinate predicate (x, y, z, x_range, ...)");
   r.finish();
   return s;
 }
@@ -139,11 +236,31 @@ AnalysisSpec parse_analysis(TomlReader r) {
   const std::string type = r.choice("type", {"static", "modal"});
   if (type == "modal") {
     a.type = AnalysisType::modal;
-    const long modes = r.integer("modes");
-    if (modes < 1) r.fail("modes", "must be >= 1");
-    a.modal.n_modes = static_cast<int>(modes);
+    if (r.has("band_hz")) {
+      const auto band = r.number_array("band_hz");
+      if (band.size() != 2 || band[0] < 0 || band[0] >= band[1]) r.fail("band_hz", "expected [f_min, f_max] with 0 <= f_min < f_max");
+      a.modes.band_min_hz = band[0];
+      a.modes.band_max_hz = band[1];
+    }
+    const auto modes = r.optional_integer("modes");
+    if (!modes && !a.modes.band_max_hz) r.fail("modes", "missing required key (or give band_hz)");
+    if (modes && *modes < 1) r.fail("modes", "must be >= 1");
+    // With a band, `modes` is the first guess of how many modes lie below its top.
+    a.modes.lowest = static_cast<int>(modes.value_or(20));
     a.modal.shift_frequency_hz = r.optional_number("shift_hz").value_or(a.modal.shift_frequency_hz);
     a.modal.tolerance = r.optional_number("tolerance").value_or(a.modal.tolerance);
+  }
+  if (const toml::table* pairs = r.optional_table("pairs")) {
+    if (a.type != AnalysisType::modal) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\"");
+    TomlReader p(*pairs, r.path() + ".pairs", r.file());
+    a.pairs_at = p.location();
+    ModePairSpec& spec = a.pairs.emplace();
+    spec.left = p.string("left");
+    spec.right = p.string("right");
+    spec.direction = parse_direction(p, "direction", p.string("direction"));
+    spec.left_tip = p.string("left_tip");
+    spec.right_tip = p.string("right_tip");
+    p.finish();
   }
   r.finish();
   return a;
@@ -162,6 +279,13 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
     c.compare.emplace_back(result_column, compare.string(result_column));
   }
   if (c.compare.empty()) r.fail("compare", "needs at least one 'result_column = \"reference_column\"' pair");
+  if (r.has("keys")) {
+    c.keys = r.integer_array("keys");
+    if (c.keys.empty()) r.fail("keys", "empty list (leave 'keys' out to compare every reference row)");
+    std::vector<long> sorted = c.keys;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) r.fail("keys", "a key is listed twice");
+  }
   if (!r.has("abs_tol") && !r.has("rel_tol")) r.fail("", "a check needs abs_tol and/or rel_tol");
   c.abs_tol = r.non_negative("abs_tol", 0.0);
   c.rel_tol = r.non_negative("rel_tol", 0.0);
@@ -209,14 +333,18 @@ void for_each_table_in_array(TomlReader& top, const std::string& key, Fn fn) {
 
 }  // namespace
 
-CaseSpec parse_case_file(const fs::path& file) {
+toml::table read_case_table(const fs::path& file) {
   if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: case file not found", file.string()));
-  toml::table root;
   try {
-    root = toml::parse_file(file.string());
+    return toml::parse_file(file.string());
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}: TOML syntax error: {}", file.string(), e.source().begin.line, e.description()));
   }
+}
+
+CaseSpec parse_case_file(const fs::path& file) { return parse_case_table(read_case_table(file), file); }
+
+CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   const fs::path folder = file.parent_path();
   TomlReader top(root, "", file);
   CaseSpec spec;
@@ -240,17 +368,25 @@ CaseSpec parse_case_file(const fs::path& file) {
       m.fail("rho", "must be > 0 for a modal analysis");
     m.finish();
   }
-  {
+  spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder);
+  if (spec.mesh.dim() == 2) {
     TomlReader s(top.table("section"), "section", file);
     spec.section.thickness = s.positive("thickness");
     s.finish();
+  } else if (top.has("section")) {
+    top.fail("section", "a solid mesh takes no [section] (thickness is for plane stress)");
   }
-  spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder);
   if (const toml::table* sets = top.optional_table("sets")) {
     for (const auto& [k, v] : *sets) {
       const std::string name(k.str());
       if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
       spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
+      if (spec.mesh.kind == MeshSpec::Kind::two_blade) {
+        const auto reserved = two_blade_set_names();
+        if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
+          throw InputError(fmt::format("{}: 'sets.{}': the two_blade mesh defines this set itself ({}); choose another name",
+                                       spec.sets.back().at.where(), name, fmt::join(reserved, ", ")));
+      }
     }
   }
   for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
@@ -261,6 +397,7 @@ CaseSpec parse_case_file(const fs::path& file) {
     if (spec.mesh.kind != MeshSpec::Kind::mapped_quad || spec.analysis.type != AnalysisType::static_linear)
       top.fail("study", "a refinement study needs a mapped_quad mesh and a static analysis");
   }
+  top.has("calibration");  // read by `bladebench calibrate` (cases/calibration_spec.hpp)
   top.finish();
   return spec;
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -50,6 +51,10 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
   std::vector<CheckEntry> entries;
   for (const auto& [result_column, reference_column] : check.compare) {
     const auto col = table.column_index(result_column);
+    const bool text_column = std::find(table.text_columns.begin(), table.text_columns.end(), result_column) != table.text_columns.end();
+    if (text_column)
+      throw InputError(fmt::format("{}: check '{}': column '{}' of result '{}' holds text labels; checks compare numbers",
+                                   check.at.where(), check.name, result_column, check.result));
     if (!col || *col == 0)
       throw InputError(fmt::format("{}: check '{}': result '{}' has no column '{}' (columns: {})", check.at.where(),
                                    check.name, check.result, result_column, fmt::join(table.columns, ", ")));
@@ -59,13 +64,20 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: check '{}': {}", check.at.where(), check.name, e.what()));
     }
+    for (long key : check.keys)
+      if (std::find(ref.keys.begin(), ref.keys.end(), key) == ref.keys.end())
+        throw InputError(fmt::format("{}: check '{}': key {} = {} is not a row of {}", check.at.where(), check.name,
+                                     check.key, key, check.reference.string()));
     for (size_t i = 0; i < ref.keys.size(); ++i) {
+      if (!check.keys.empty() && std::find(check.keys.begin(), check.keys.end(), ref.keys[i]) == check.keys.end()) continue;
       const int row = table.row_of_key(ref.keys[i]);
       if (row < 0)
         throw InputError(fmt::format("{}: reference row {} = {} has no match in result '{}'", check.reference.string(),
                                      check.key, ref.keys[i], check.result));
       CheckEntry e;
       e.group = check.name;
+      e.column = result_column;
+      e.key = ref.keys[i];
       e.name = fmt::format("{}: {} {} {}", check.name, result_column, table.columns[0], ref.keys[i]);
       e.computed = table.values(row, *col);
       e.reference = ref.values[i];

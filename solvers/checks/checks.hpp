@@ -11,6 +11,8 @@ namespace bb {
 struct CheckEntry {
   std::string name;        // "<check name>: <column> <key> <id>"
   std::string group;       // the check's name
+  std::string column;      // the compared result column
+  long key = 0;            // the row's key (node id, mode number)
   double computed = 0.0;
   double reference = 0.0;
   double abs_error = 0.0;

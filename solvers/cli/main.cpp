@@ -3,12 +3,17 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 
+#include "cases/case_spec.hpp"
 #include "cli/run_case.hpp"
+#include "identify/calibrate_case.hpp"
+#include "identify/calibration_report.hpp"
 #include "common/errors.hpp"
+#include "report/calculix_export.hpp"
 #include "report/writers.hpp"
 
 namespace fs = std::filesystem;
@@ -57,11 +62,63 @@ int main(int argc, char** argv) {
   validate->add_flag("--study", validate_study, "Also run every case's [study]");
   validate->add_flag("--no-plots", validate_no_plots, "Skip gnuplot figures");
 
+  std::string calibrate_case_file, calibrate_out;
+  CLI::App* calibrate = app.add_subcommand(
+      "calibrate", "Identify the case's [calibration] parameters against its checks (Ceres least squares)");
+  calibrate->add_option("CASE", calibrate_case_file, "Case file with a [calibration] section")->required()->check(CLI::ExistingFile);
+  calibrate->add_option("--out", calibrate_out, "Output folder (default reports/<case-name>-calibration)");
+
+  std::string export_case_file, export_out;
+  int export_modes = 0;
+  CLI::App* export_ccx = app.add_subcommand(
+      "export-calculix", "Write the case's model as a CalculiX *FREQUENCY deck (bench/calculix_compare.sh)");
+  export_ccx->add_option("CASE", export_case_file, "Case file with a 3D solid mesh")->required()->check(CLI::ExistingFile);
+  export_ccx->add_option("--out", export_out, "Deck to write (.inp)")->required();
+  export_ccx->add_option("--modes", export_modes, "Modes to ask for (default: the case's analysis.modes)")->check(CLI::PositiveNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : bb::exit_bad_input;
+  }
+
+  if (*calibrate) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const fs::path out = calibrate_out.empty() ? fs::path("reports") / (fs::path(calibrate_case_file).stem().string() + "-calibration")
+                                               : fs::path(calibrate_out);
+    try {
+      const bb::CalibrationOutcome o = bb::calibrate_case(calibrate_case_file, true);
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      bb::write_calibration_outputs(o, calibrate_case_file, wall, out);
+      std::fprintf(stderr, "%s: %s, cost %.6g -> %.6g in %.1f s -> %s\n", calibrate_case_file.c_str(),
+                   o.converged ? "converged" : "NOT converged", o.initial_cost, o.final_cost, wall,
+                   (out / "report.md").string().c_str());
+      for (size_t i = 0; i < o.values.size(); ++i)
+        std::fprintf(stderr, "  %s = %.8g (start %.8g, std %.3g)\n", o.spec.parameters[i].path.c_str(), o.values[i],
+                     o.spec.parameters[i].start, o.std_devs[i]);
+      for (const auto& w : o.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
+      return o.converged ? bb::exit_pass : bb::exit_solver_failed;
+    } catch (const bb::InputError& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return bb::exit_bad_input;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return bb::exit_solver_failed;
+    }
+  }
+
+  if (*export_ccx) {
+    try {
+      const bb::CaseSpec spec = bb::parse_case_file(export_case_file);
+      const int modes = export_modes > 0 ? export_modes : spec.analysis.modes.lowest;
+      bb::write_calculix_frequency_deck(bb::build_model(spec), modes, export_out);
+      std::fprintf(stderr, "%s: CalculiX deck, %d modes -> %s\n", export_case_file.c_str(), modes, export_out.c_str());
+      return bb::exit_pass;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return bb::exit_bad_input;
+    }
   }
 
   if (*run) {

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "analysis/modal_analysis.hpp"
+#include "analysis/mode_pairs.hpp"
 #include "analysis/static_analysis.hpp"
 #include "common/errors.hpp"
 #include "report/plots.hpp"
@@ -22,15 +23,36 @@ void describe_model(const CaseSpec& spec, const Model& model, RunRecord& run) {
   const Mesh& mesh = model.mesh;
   std::string elements;
   for (const auto& b : mesh.blocks) elements += fmt::format("{}{} x {}", elements.empty() ? "" : ", ", b.ids.size(), element_name(b.type));
-  run.facts.emplace_back("mesh", spec.mesh.kind == MeshSpec::Kind::csv
-                                     ? fmt::format("CSV ({}, {})", spec.mesh.nodes_csv.filename().string(),
-                                                   spec.mesh.elements_csv.filename().string())
-                                     : fmt::format("mapped quad, {} x {} divisions", spec.mesh.mapped.nx, spec.mesh.mapped.ny));
+  std::string source;
+  switch (spec.mesh.kind) {
+    case MeshSpec::Kind::csv:
+      source = fmt::format("CSV ({}, {})", spec.mesh.nodes_csv.filename().string(), spec.mesh.elements_csv.filename().string());
+      break;
+    case MeshSpec::Kind::mapped_quad:
+      source = fmt::format("mapped quad, {} x {} divisions", spec.mesh.mapped.nx, spec.mesh.mapped.ny);
+      break;
+    case MeshSpec::Kind::hex_blocks:
+      source = fmt::format("{} hexahedral block(s) merged at coincident nodes", spec.mesh.blocks.size());
+      break;
+    case MeshSpec::Kind::gmsh: source = fmt::format("Gmsh {}", spec.mesh.gmsh_file.filename().string()); break;
+    case MeshSpec::Kind::two_blade: {
+      const TwoBladeDimensions& d = spec.mesh.two_blade;
+      source = fmt::format("two-blade article (2 blades, 2 wedges, fixture), refinement {}, {} divisions through t, "
+                           "{} along the airfoil, glued at coincident nodes (tolerance {} m)",
+                           d.refinement, d.nz(), d.airfoil_divisions * d.refinement, g(spec.mesh.merge_tolerance));
+      std::string dims;
+      for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
+        dims += fmt::format("{}{} = {}", dims.empty() ? "" : ", ", f.name, g(d.*f.member));
+      run.facts.emplace_back("two-blade dimensions [m, deg]", dims);
+      break;
+    }
+  }
+  run.facts.emplace_back("mesh", source);
   run.facts.emplace_back("elements", elements);
   run.facts.emplace_back("nodes", std::to_string(mesh.n_nodes()));
   run.facts.emplace_back("E [Pa], nu, rho [kg/m^3]", fmt::format("{}, {}, {}", g(spec.section.youngs_modulus),
                                                                  g(spec.section.poisson_ratio), g(spec.section.density)));
-  run.facts.emplace_back("thickness [m]", g(spec.section.thickness));
+  if (mesh.dim == 2) run.facts.emplace_back("thickness [m]", g(spec.section.thickness));
   for (const auto& l : model.loads)
     run.facts.emplace_back(fmt::format("load on '{}'", l.set),
                            fmt::format("{} N along {}, split {}", g(l.total), "xyz"[l.direction],
@@ -53,14 +75,24 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, sol.displacements));
     static_displacements = sol.displacements;
   } else {
-    modal = solve_modal(model, spec.analysis.modal);
-    run.facts.emplace_back("analysis", fmt::format("modal, lowest {} modes, Lanczos shift-invert (Spectra + CHOLMOD)",
-                                                   spec.analysis.modal.n_modes));
+    modal = solve_modal(model, spec.analysis.modes, spec.analysis.modal);
+    const ModeSelection& sel = spec.analysis.modes;
+    run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
+                                                   sel.band_max_hz ? fmt::format("all modes in [{}, {}] Hz", sel.band_min_hz.value_or(0.0), *sel.band_max_hz)
+                                                                   : fmt::format("lowest {} modes", sel.lowest)));
     run.facts.emplace_back("free DOFs", std::to_string(modal->n_free_dofs));
     run.facts.emplace_back("Lanczos iterations", std::to_string(modal->iterations));
     run.facts.emplace_back("max eigen-residual (backward error)", fmt::format("{:.3e}", modal->max_residual));
     run.facts.emplace_back("assembly / eigensolve [s]", fmt::format("{:.4f} / {:.4f}", modal->assembly_seconds, modal->solve_seconds));
-    tables.emplace("frequencies", frequency_table(modal->frequencies_hz));
+    ResultTable frequencies = frequency_table(modal->frequencies_hz);
+    if (spec.analysis.pairs) {
+      add_mode_labels(frequencies, label_mode_pairs(model, *modal, *spec.analysis.pairs));
+      const ModePairSpec& p = *spec.analysis.pairs;
+      run.facts.emplace_back("mode labels", fmt::format("pair: sign of '{}' vs '{}' along {}; type: motion of tip face '{}' "
+                                                        "(else '{}')", p.left, p.right, "xyz"[p.direction], p.right_tip, p.left_tip));
+    }
+    tables.emplace("frequencies", std::move(frequencies));
+    tables.emplace("modal_participation", participation_table(*modal));
   }
   for (const CheckSpec& c : spec.checks) {
     auto entries = evaluate_check(c, tables);
@@ -70,6 +102,7 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
   for (const auto& [name, table] : tables) {
     write_table_csv(table, out / (name + ".csv"));
     run.tables.push_back(name + ".csv");
+    if (!table.text_columns.empty()) run.listed_tables.push_back(table);
   }
   if (options.plots) {
     if (static_displacements) run.plots.push_back(plot_deformed_mesh(model.mesh, *static_displacements, out, "deformed", "Deformed mesh"));

@@ -18,7 +18,8 @@ namespace {
 class ShiftInvertOp {
  public:
   using Scalar = double;
-  ShiftInvertOp(const Eigen::SparseMatrix<double>& k, const Eigen::SparseMatrix<double>& m) : k_(k), m_(m) {}
+  ShiftInvertOp(const Eigen::SparseMatrix<double>& k, const Eigen::SparseMatrix<double>& m, FillOrdering ordering)
+      : k_(k), m_(m), factor_(ordering) {}
   Eigen::Index rows() const { return k_.rows(); }
   Eigen::Index cols() const { return k_.cols(); }
   void set_shift(double sigma) {
@@ -49,7 +50,7 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
   const double sigma = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
   const int ncv = static_cast<int>(std::min<Eigen::Index>(
       n, options.subspace_size > 0 ? options.subspace_size : std::max(2 * options.n_modes + 1, 20)));
-  ShiftInvertOp op(stiffness, mass);
+  ShiftInvertOp op(stiffness, mass, options.ordering);
   Spectra::SparseSymMatProd<double> bop(mass);
   Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert>
       eigs(op, bop, options.n_modes, ncv, sigma);

@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include "linalg/spd_factor.hpp"
+
 namespace bb {
 
 struct ModalOptions {
@@ -13,6 +15,7 @@ struct ModalOptions {
   int max_iterations = 1000;
   double tolerance = 1e-10;
   int subspace_size = 0;  // Lanczos vectors; 0 = max(2 n + 1, 20)
+  FillOrdering ordering = FillOrdering::amd;
 };
 
 struct ModalSolution {

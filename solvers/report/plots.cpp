@@ -4,7 +4,10 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
+#include <array>
 #include <fstream>
+#include <vector>
 #include <map>
 
 namespace bb {
@@ -83,8 +86,67 @@ void write_edges(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd& xy
 
 }  // namespace
 
+namespace {
+
+// Corner-node faces of every solid element that no other element shares (the skin).
+std::vector<std::array<int, 4>> boundary_faces(const Mesh& mesh) {
+  static constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::map<std::array<int, 4>, std::pair<int, std::array<int, 4>>> faces;
+  for (const auto& b : mesh.blocks) {
+    if (element_dimension(b.type) != 3) continue;
+    for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
+      for (const auto& f : kHexFaces) {
+        std::array<int, 4> face{b.conn(e, f[0]), b.conn(e, f[1]), b.conn(e, f[2]), b.conn(e, f[3])};
+        std::array<int, 4> key = face;
+        std::sort(key.begin(), key.end());
+        auto [it, fresh] = faces.try_emplace(key, 0, face);
+        ++it->second.first;
+      }
+  }
+  std::vector<std::array<int, 4>> out;
+  for (const auto& [key, value] : faces)
+    if (value.first == 1) out.push_back(value.second);
+  return out;
+}
+
+// Above this many skin faces a 3D picture would weigh megabytes: it is not drawn.
+constexpr size_t kMaxDrawnFaces = 20000;
+
+Plot plot_deformed_solid(const Mesh& mesh, const Eigen::MatrixXd& displacements, const fs::path& out_dir,
+                         const std::string& stem, const std::string& title) {
+  const auto faces = boundary_faces(mesh);
+  if (faces.size() > kMaxDrawnFaces)
+    return {title, "", fmt::format("{} skin faces exceed the drawing limit of {}", faces.size(), kMaxDrawnFaces)};
+  const double size = (mesh.coords.colwise().maxCoeff() - mesh.coords.colwise().minCoeff()).norm();
+  const double umax = displacements.rowwise().norm().maxCoeff();
+  const double scale = umax > 0 ? 0.1 * size / umax : 1.0;
+  const Eigen::MatrixXd deformed = mesh.coords + scale * displacements;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    for (const Eigen::MatrixXd* xyz : {&mesh.coords, &deformed}) {
+      for (const auto& f : faces) {
+        for (int a = 0; a <= 4; ++a) {
+          const int n = f[a % 4];
+          out << (*xyz)(n, 0) << ' ' << (*xyz)(n, 1) << ' ' << (*xyz)(n, 2) << '\n';
+        }
+        out << "\n";
+      }
+      out << "\n";
+    }
+  }
+  const std::string script = fmt::format(
+      "set title '{} (displacements x {:.3g})'\nset view equal xyz\nset view 60, 30\nunset border\nunset tics\n"
+      "set key outside right\nsplot '{}.dat' index 0 with lines lc rgb '#bbbbbb' title 'undeformed', \\\n"
+      "      '{}.dat' index 1 with lines lc rgb '#1f5fbf' title 'deformed'\n",
+      gnuplot_quote(title), scale, stem, stem);
+  return draw(out_dir, stem, title, script);
+}
+
+}  // namespace
+
 Plot plot_deformed_mesh(const Mesh& mesh, const Eigen::MatrixXd& displacements, const fs::path& out_dir,
                         const std::string& stem, const std::string& title) {
+  if (mesh.dim == 3) return plot_deformed_solid(mesh, displacements, out_dir, stem, title);
   const Eigen::MatrixXd xy = mesh.coords.leftCols(2);
   const double size = (xy.colwise().maxCoeff() - xy.colwise().minCoeff()).norm();
   const double umax = displacements.leftCols(2).rowwise().norm().maxCoeff();

@@ -34,6 +34,7 @@ struct RunRecord {
   std::vector<CheckSpec> check_specs;
   std::vector<CheckEntry> checks;
   std::vector<std::string> tables;  // CSV files written
+  std::vector<ResultTable> listed_tables;  // shown row by row in the report (tables with text labels)
   std::vector<Plot> plots;
   std::optional<RefinementResult> study;
   std::string study_note;

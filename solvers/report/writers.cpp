@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -17,7 +18,62 @@ std::ofstream open_for_writing(const std::filesystem::path& file) {
   return out;
 }
 
+// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.4e}", v) : std::string("inf"); }
+
+// A result table row by row, with its text labels and, where a check compared a row, the
+// reference value, the signed relative error, whether every check of that row passed and the
+// tightest tolerance among them (relative to the reference).
+void write_listed_table(std::ofstream& out, const RunRecord& run, const ResultTable& table) {
+  std::vector<const CheckEntry*> entries;  // checks of this table
+  for (const CheckEntry& e : run.checks)
+    for (const CheckSpec& spec : run.check_specs)
+      if (spec.name == e.group && spec.result == table.name) {
+        entries.push_back(&e);
+        break;
+      }
+  out << fmt::format("## {}\n\n", table.name == "frequencies" ? std::string("Modes") : table.name);
+  std::vector<std::string> header = table.columns;
+  header.insert(header.end(), table.text_columns.begin(), table.text_columns.end());
+  if (!entries.empty()) header.insert(header.end(), {"reference", "error", "checks"});
+  std::string rule = "|";
+  for (size_t c = 0; c < header.size(); ++c) rule += "---|";
+  out << fmt::format("| {} |\n{}\n", fmt::join(header, " | "), rule);
+  for (Eigen::Index r = 0; r < table.values.rows(); ++r) {
+    const long key = std::lround(table.values(r, 0));
+    std::vector<std::string> cells = {std::to_string(key)};
+    for (Eigen::Index c = 1; c < table.values.cols(); ++c) cells.push_back(fmt::format("{:.6g}", table.values(r, c)));
+    for (const auto& column : table.text) cells.push_back(column[static_cast<size_t>(r)]);
+    if (!entries.empty()) {
+      const CheckEntry* first = nullptr;
+      bool pass = true;
+      double tightest = INFINITY;  // the smallest tolerance any check applies to this row
+      for (const CheckEntry* e : entries)
+        if (e->key == key) {
+          if (!first) first = e;
+          pass = pass && e->pass;
+          tightest = std::min(tightest, e->tolerance);
+        }
+      if (first && first->reference != 0.0) {
+        const double scale = std::abs(first->reference);
+        cells.push_back(fmt::format("{:.6g}", first->reference));
+        cells.push_back(fmt::format("{:+.2f}%", 100.0 * (first->computed - first->reference) / scale));
+        cells.push_back(fmt::format("{} (tolerance {:.3g}%)", pass ? "pass" : "**FAIL**", 100.0 * tightest / scale));
+      } else {
+        cells.insert(cells.end(), {"-", "-", "-"});
+      }
+    }
+    out << fmt::format("| {} |\n", fmt::join(cells, " | "));
+  }
+  out << '\n';
+}
 
 }  // namespace
 
@@ -45,10 +101,13 @@ int exit_code(RunStatus status) {
 
 void write_table_csv(const ResultTable& table, const std::filesystem::path& file) {
   std::ofstream out = open_for_writing(file);
-  out << fmt::format("{}\n", fmt::join(table.columns, ","));
+  std::vector<std::string> header = table.columns;
+  for (const std::string& c : table.text_columns) header.push_back(csv_field(c));
+  out << fmt::format("{}\n", fmt::join(header, ","));
   for (Eigen::Index r = 0; r < table.values.rows(); ++r) {
     out << std::lround(table.values(r, 0));
     for (Eigen::Index c = 1; c < table.values.cols(); ++c) out << fmt::format(",{:.12g}", table.values(r, c));
+    for (const auto& column : table.text) out << ',' << csv_field(column[static_cast<size_t>(r)]);
     out << '\n';
   }
   if (!out) throw std::runtime_error("failed writing " + file.string());
@@ -117,6 +176,7 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
                          sci(e.abs_error), sci(e.rel_error), sci(e.tolerance), e.pass ? "pass" : "**FAIL**");
     out << "\n</details>\n\n";
   }
+  for (const ResultTable& table : run.listed_tables) write_listed_table(out, run, table);
   if (!run.tables.empty()) {
     out << "## Result tables\n\n";
     for (const std::string& t : run.tables) out << fmt::format("- [`{}`]({})\n", t, t);

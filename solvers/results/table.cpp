@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace bb {
 
@@ -9,6 +10,14 @@ std::optional<int> ResultTable::column_index(const std::string& column) const {
   auto it = std::find(columns.begin(), columns.end(), column);
   if (it == columns.end()) return std::nullopt;
   return static_cast<int>(it - columns.begin());
+}
+
+void ResultTable::add_text_column(const std::string& column, std::vector<std::string> column_values) {
+  if (static_cast<Eigen::Index>(column_values.size()) != values.rows())
+    throw std::invalid_argument("text column '" + column + "' has " + std::to_string(column_values.size()) +
+                                " values for " + std::to_string(values.rows()) + " rows");
+  text_columns.push_back(column);
+  text.push_back(std::move(column_values));
 }
 
 int ResultTable::row_of_key(long key) const {

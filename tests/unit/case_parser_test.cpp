@@ -193,7 +193,7 @@ TEST_F(CaseFile, ModalAnalysisReadsModesAndShift) {
   const CaseSpec spec = parse_case_file(
       write(replace(kMinimalCase, "type = \"static\"", "type = \"modal\"\nmodes = 4\nshift_hz = 2.5")));
   EXPECT_EQ(spec.analysis.type, AnalysisType::modal);
-  EXPECT_EQ(spec.analysis.modal.n_modes, 4);
+  EXPECT_EQ(spec.analysis.modes.lowest, 4);
   EXPECT_EQ(spec.analysis.modal.shift_frequency_hz, 2.5);
 }
 

@@ -1,0 +1,18 @@
+#include "analysis/case_results.hpp"
+
+namespace bb {
+
+CaseResults compute_case_results(const CaseSpec& spec, const Model& model) {
+  CaseResults out;
+  if (spec.analysis.type == AnalysisType::static_linear) {
+    out.static_solution = solve_static(model);
+    out.tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, out.static_solution->displacements));
+  } else {
+    out.modal = solve_modal(model, spec.analysis.modes, spec.analysis.modal);
+    out.tables.emplace("frequencies", frequency_table(out.modal->frequencies_hz));
+    out.tables.emplace("modal_participation", participation_table(*out.modal));
+  }
+  return out;
+}
+
+}  // namespace bb

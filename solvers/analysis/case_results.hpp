@@ -1,0 +1,20 @@
+// The analysis a case asks for, run on its model, as result tables in memory (no files).
+#pragma once
+#include <optional>
+
+#include "analysis/modal_analysis.hpp"
+#include "analysis/static_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+struct CaseResults {
+  ResultTables tables;
+  std::optional<StaticSolution> static_solution;
+  std::optional<ModalResult> modal;
+};
+
+CaseResults compute_case_results(const CaseSpec& spec, const Model& model);
+
+}  // namespace bb

@@ -1,0 +1,37 @@
+// The [calibration] section of a case: which numeric case values to identify, within which
+// bounds, against which checks' reference data.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cases/case_spec.hpp"
+
+namespace bb {
+
+struct CalibrationParameter {
+  std::string path;     // dotted path of a number in the case file, e.g. "mesh.dimensions.L_a"
+  double lower = 0.0;   // bounds, > 0: parameters are fitted in log space
+  double upper = 0.0;
+  double start = 0.0;   // the value in the case file
+};
+
+struct CalibrationSpec {
+  std::vector<CalibrationParameter> parameters;
+  std::vector<std::string> fit_checks;  // [[check]] names whose entries become residuals
+  double relative_uncertainty = 0.01;   // sigma of each reference value, relative
+  std::string loss = "none";            // none | huber | cauchy
+  double loss_scale = 1.0;              // in units of sigma
+  int max_iterations = 50;
+  SourceLocation at;
+};
+
+// Reads [calibration] from a case file's table; std::nullopt when absent. Checks that every
+// path names an existing number inside its bounds and every fit check exists. Throws InputError.
+std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const std::filesystem::path& file,
+                                                 const CaseSpec& spec);
+
+// The number at a dotted path ("a.b.c"), or nullptr.
+toml::node* node_at_path(toml::table& root, const std::string& path);
+
+}  // namespace bb

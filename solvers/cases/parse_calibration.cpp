@@ -1,0 +1,69 @@
+#include <fmt/format.h>
+
+#include "cases/calibration_spec.hpp"
+#include "cases/toml_reader.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+
+toml::node* node_at_path(toml::table& root, const std::string& path) {
+  toml::table* table = &root;
+  size_t begin = 0;
+  while (true) {
+    const size_t dot = path.find('.', begin);
+    const std::string key = path.substr(begin, dot == std::string::npos ? std::string::npos : dot - begin);
+    toml::node* n = table->get(key);
+    if (!n || dot == std::string::npos) return n;
+    table = n->as_table();
+    if (!table) return nullptr;
+    begin = dot + 1;
+  }
+}
+
+std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const std::filesystem::path& file,
+                                                 const CaseSpec& spec) {
+  const toml::node* section = root.get("calibration");
+  if (!section) return std::nullopt;
+  if (!section->is_table()) throw InputError(fmt::format("{}: [calibration] must be a table", file.string()));
+  TomlReader r(*section->as_table(), "calibration", file);
+  CalibrationSpec c;
+  c.at = r.location();
+  toml::table copy = root;  // node_at_path needs a mutable table
+  int index = 0;
+  for (const toml::node& n : r.array("parameters")) {
+    if (!n.is_table()) r.fail("parameters", "write each parameter as { path = \"...\", lower = ..., upper = ... }");
+    TomlReader p(*n.as_table(), fmt::format("calibration.parameters[{}]", index++), file);
+    CalibrationParameter param;
+    param.path = p.string("path");
+    param.lower = p.positive("lower");
+    param.upper = p.positive("upper");
+    if (!(param.lower < param.upper)) p.fail("upper", "must exceed lower");
+    const toml::node* target = node_at_path(copy, param.path);
+    if (!target || !target->is_number()) p.fail("path", fmt::format("'{}' is not a number in the case file", param.path));
+    param.start = target->value<double>().value();
+    if (param.start < param.lower || param.start > param.upper)
+      p.fail("path", fmt::format("the case value {} of '{}' lies outside [{}, {}]", param.start, param.path, param.lower, param.upper));
+    p.finish();
+    c.parameters.push_back(param);
+  }
+  if (c.parameters.empty()) r.fail("parameters", "needs at least one parameter");
+  c.fit_checks = r.string_array("fit_checks");
+  if (c.fit_checks.empty()) r.fail("fit_checks", "needs at least one check name");
+  for (const std::string& name : c.fit_checks) {
+    const bool found = std::any_of(spec.checks.begin(), spec.checks.end(), [&](const CheckSpec& k) { return k.name == name; });
+    if (!found) r.fail("fit_checks", fmt::format("no [[check]] named '{}'", name));
+  }
+  if (r.has("relative_uncertainty")) {
+    c.relative_uncertainty = r.positive("relative_uncertainty");
+  }
+  c.loss = r.choice("loss", {"none", "huber", "cauchy"}, "none");
+  if (r.has("loss_scale")) c.loss_scale = r.positive("loss_scale");
+  if (const auto it = r.optional_integer("max_iterations")) {
+    if (*it < 1) r.fail("max_iterations", "must be >= 1");
+    c.max_iterations = static_cast<int>(*it);
+  }
+  r.finish();
+  return c;
+}
+
+}  // namespace bb

@@ -1,0 +1,171 @@
+#include "identify/calibrate_case.hpp"
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "analysis/case_results.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+void set_number(toml::table& root, const std::string& path, double value) {
+  const size_t dot = path.rfind('.');
+  toml::table* parent = &root;
+  if (dot != std::string::npos) {
+    toml::node* n = node_at_path(root, path.substr(0, dot));
+    parent = n ? n->as_table() : nullptr;
+  }
+  if (!parent) throw InputError(fmt::format("calibration path '{}' does not exist", path));
+  parent->insert_or_assign(path.substr(dot == std::string::npos ? 0 : dot + 1), value);
+}
+
+// Entries of the fitted checks for a case table with the given parameter values.
+std::vector<CheckEntry> fitted_entries(const toml::table& base, const fs::path& file, const CalibrationSpec& cal,
+                                       const std::vector<double>& values) {
+  toml::table t = base;
+  for (size_t i = 0; i < values.size(); ++i) set_number(t, cal.parameters[i].path, values[i]);
+  const CaseSpec spec = parse_case_table(t, file);
+  const Model model = build_model(spec);
+  const CaseResults results = compute_case_results(spec, model);
+  std::vector<CheckEntry> entries;
+  for (const CheckSpec& c : spec.checks) {
+    if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
+    auto e = evaluate_check(c, results.tables);
+    entries.insert(entries.end(), e.begin(), e.end());
+  }
+  return entries;
+}
+
+// r_k = (computed_k / reference_k - 1) / sigma: relative misfit in units of the stated uncertainty.
+struct CaseResidual {
+  const toml::table* base;
+  fs::path file;
+  const CalibrationSpec* cal;
+  int* evaluations;
+  bool operator()(double const* const* log_values, double* residuals) const {
+    std::vector<double> values(cal->parameters.size());
+    for (size_t i = 0; i < values.size(); ++i) values[i] = std::exp(log_values[0][i]);
+    try {
+      const auto entries = fitted_entries(*base, file, *cal, values);
+      ++*evaluations;
+      for (size_t k = 0; k < entries.size(); ++k)
+        residuals[k] = (entries[k].computed / entries[k].reference - 1.0) / cal->relative_uncertainty;
+      return true;
+    } catch (const std::exception&) {
+      return false;  // an impossible geometry or a failed solve: Ceres shrinks the step
+    }
+  }
+};
+
+class Progress : public ceres::IterationCallback {
+ public:
+  Progress(bool show, CalibrationOutcome& out) : show_(show), out_(out) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    out_.history.emplace_back(s.iteration, s.cost);
+    if (show_)
+      std::fprintf(stderr, "\r  calibration: iteration %3d  cost %.6e  |gradient| %.3e  step %s   ", s.iteration, s.cost,
+                   s.gradient_max_norm, s.step_is_successful ? "accepted" : "rejected");
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  bool show_;
+  CalibrationOutcome& out_;
+};
+
+}  // namespace
+
+CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress) {
+  const toml::table base = read_case_table(case_file);
+  const CaseSpec spec = parse_case_table(base, case_file);
+  auto cal = parse_calibration(base, case_file, spec);
+  if (!cal) throw InputError(fmt::format("{}: no [calibration] section", case_file.string()));
+  CalibrationOutcome out;
+  out.spec = *cal;
+  const size_t n = cal->parameters.size();
+  std::vector<double> start(n);
+  for (size_t i = 0; i < n; ++i) start[i] = cal->parameters[i].start;
+  out.before = fitted_entries(base, case_file, *cal, start);
+  for (const CheckEntry& e : out.before)
+    if (e.reference == 0.0) throw InputError(fmt::format("{}: fitted entry '{}' has a zero reference", cal->at.where(), e.name));
+
+  std::vector<double> x(n);
+  for (size_t i = 0; i < n; ++i) x[i] = std::log(start[i]);
+  ceres::NumericDiffOptions diff;
+  diff.relative_step_size = 1e-4;  // well above the eigensolver's 1e-10 noise, well below the model's curvature
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<CaseResidual, ceres::CENTRAL>(
+      new CaseResidual{&base, case_file, &*cal, &out.residual_evaluations}, ceres::TAKE_OWNERSHIP, diff);
+  cost->AddParameterBlock(static_cast<int>(n));
+  cost->SetNumResiduals(static_cast<int>(out.before.size()));
+  ceres::LossFunction* loss = nullptr;
+  if (cal->loss == "huber") loss = new ceres::HuberLoss(cal->loss_scale);
+  if (cal->loss == "cauchy") loss = new ceres::CauchyLoss(cal->loss_scale);
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, loss, x.data());
+  for (size_t i = 0; i < n; ++i) {
+    problem.SetParameterLowerBound(x.data(), static_cast<int>(i), std::log(cal->parameters[i].lower));
+    problem.SetParameterUpperBound(x.data(), static_cast<int>(i), std::log(cal->parameters[i].upper));
+  }
+  ceres::Solver::Options options;
+  options.max_num_iterations = cal->max_iterations;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.function_tolerance = 1e-10;
+  options.parameter_tolerance = 1e-8;
+  Progress progress(show_progress && isatty(STDERR_FILENO), out);
+  options.callbacks.push_back(&progress);
+  options.update_state_every_iteration = true;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  if (show_progress && isatty(STDERR_FILENO)) std::fputc('\n', stderr);
+  out.initial_cost = summary.initial_cost;
+  out.final_cost = summary.final_cost;
+  out.converged = summary.termination_type == ceres::CONVERGENCE;
+  out.termination = summary.BriefReport();
+  if (!out.converged) out.warnings.push_back("the fit did not converge: " + summary.message);
+
+  out.values.resize(n);
+  for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
+  out.std_devs.assign(n, NAN);
+  ceres::Covariance::Options cov_options;
+  cov_options.algorithm_type = ceres::DENSE_SVD;
+  cov_options.null_space_rank = -1;  // report rank deficiency instead of failing
+  ceres::Covariance covariance(cov_options);
+  std::vector<std::pair<const double*, const double*>> blocks{{x.data(), x.data()}};
+  if (covariance.Compute(blocks, &problem)) {
+    Eigen::MatrixXd c(n, n);
+    covariance.GetCovarianceBlock(x.data(), x.data(), c.data());
+    out.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    for (size_t i = 0; i < n; ++i) {
+      const auto ii = static_cast<Eigen::Index>(i);
+      out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log-space sigma -> value sigma
+      for (size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        out.correlation(ii, jj) = c(ii, jj) / std::sqrt(c(ii, ii) * c(jj, jj));
+        if (j > i && std::abs(out.correlation(ii, jj)) > 0.95)
+          out.warnings.push_back(fmt::format("'{}' and '{}' correlate at {:.3f}: the data cannot separate them",
+                                             cal->parameters[i].path, cal->parameters[j].path, out.correlation(ii, jj)));
+      }
+    }
+  } else {
+    out.warnings.push_back("the covariance could not be computed: the problem is rank deficient at the optimum");
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const double span = std::log(cal->parameters[i].upper / cal->parameters[i].lower);
+    if (std::abs(x[i] - std::log(cal->parameters[i].lower)) < 1e-3 * span || std::abs(x[i] - std::log(cal->parameters[i].upper)) < 1e-3 * span)
+      out.warnings.push_back(fmt::format("'{}' ended on a bound ({:.6g}): the optimum may lie outside the stated range",
+                                         cal->parameters[i].path, out.values[i]));
+  }
+  out.after = fitted_entries(base, case_file, *cal, out.values);
+  out.calibrated = base;
+  for (size_t i = 0; i < n; ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);
+  return out;
+}
+
+}  // namespace bb

@@ -1,0 +1,35 @@
+// Identification of numeric case values (dimensions, stiffnesses, damping ...) by weighted
+// nonlinear least squares (Ceres, trust region, central differences) against the reference
+// data of chosen checks, with the parameter covariance at the optimum.
+#pragma once
+#include <Eigen/Dense>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cases/calibration_spec.hpp"
+#include "checks/checks.hpp"
+
+namespace bb {
+
+struct CalibrationOutcome {
+  CalibrationSpec spec;
+  std::vector<double> values;           // identified values, in spec.parameters order
+  std::vector<double> std_devs;         // 1-sigma, from the covariance at the optimum (NaN if unavailable)
+  Eigen::MatrixXd correlation;          // empty if the covariance could not be computed
+  std::vector<std::string> warnings;    // identifiability and convergence warnings
+  std::vector<std::pair<int, double>> history;  // (iteration, cost)
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+  int residual_evaluations = 0;
+  bool converged = false;
+  std::string termination;              // Ceres's report
+  std::vector<CheckEntry> before;       // fitted check entries at the start values
+  std::vector<CheckEntry> after;        // and at the identified values
+  toml::table calibrated;               // the case table with the identified values
+};
+
+// Throws InputError for a malformed case or [calibration]; a failed fit is reported in the outcome.
+CalibrationOutcome calibrate_case(const std::filesystem::path& case_file, bool show_progress);
+
+}  // namespace bb

@@ -1,0 +1,128 @@
+#include "report/calculix_export.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+// ccx reads every real with Fortran format f20.0 from the first 20 characters of a field
+// (e.g. nodes.f), so a longer number would be cut silently. The shortest round-trip form fits
+// for most values; otherwise 14 significant digits do.
+std::string ccx_real(double v) {
+  std::string s = fmt::format("{}", v);
+  if (s.size() > 20) s = fmt::format("{:.13e}", v);
+  if (s.size() > 20) throw InputError(fmt::format("CalculiX export: {} does not fit ccx's 20-character number field", s));
+  return s;
+}
+
+std::string_view ccx_element_type(ElementType type) {
+  switch (type) {
+    case ElementType::hex8: return "C3D8";
+    case ElementType::hex8i: return "C3D8I";  // ccx's own incompatible-mode formulation
+    case ElementType::hex20: return "C3D20";  // 3x3x3 Gauss, like fe::hex20_stiffness
+    case ElementType::q4:
+    case ElementType::cst: break;
+  }
+  throw InputError(fmt::format("CalculiX export: element type '{}' is not a 3D solid; only hex8, hex8i and hex20 are exported",
+                               element_name(type)));
+}
+
+// ccx set names are case-insensitive words; keep letters, digits and '_' and make them unique.
+std::string ccx_set_name(const std::string& name, std::set<std::string>& used) {
+  std::string base = "N_";
+  for (const char c : name) base += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : '_';
+  base.resize(std::min<size_t>(base.size(), 70));
+  std::string candidate = base;
+  for (int k = 2; used.count(candidate) != 0; ++k) candidate = fmt::format("{}_{}", base, k);
+  used.insert(candidate);
+  return candidate;
+}
+
+// Data lines of at most `per_line` entries; a line ending in a comma continues on the next.
+void write_list(std::ofstream& out, const std::vector<long>& values, size_t per_line, bool continued) {
+  for (size_t i = 0; i < values.size(); ++i) {
+    out << values[i];
+    if (i + 1 < values.size()) out << (((i + 1) % per_line == 0) ? ",\n" : ", ");
+  }
+  out << (continued ? ",\n" : "\n");
+}
+
+}  // namespace
+
+void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp) {
+  const Mesh& mesh = model.mesh;
+  if (mesh.dim != 3) throw InputError("CalculiX export: only 3D solid meshes (hex8, hex8i, hex20) are exported");
+  if (n_modes < 1) throw InputError(fmt::format("CalculiX export: asked for {} modes; give at least 1", n_modes));
+  for (const Constraint& c : model.constraints)
+    if (c.value != 0.0)
+      throw InputError(fmt::format("CalculiX export: constraint on set '{}' prescribes {} m; a frequency step needs "
+                                   "homogeneous constraints (value 0)", c.set, c.value));
+  for (const ElementBlock& b : mesh.blocks) ccx_element_type(b.type);  // reject before writing anything
+
+  std::ofstream out(inp);
+  if (!out) throw std::runtime_error("cannot write " + inp.string());
+  out << "** CalculiX deck written by bladebench (report/calculix_export). SI units: m, Pa, kg/m^3.\n"
+         "** Node n = bladebench internal node index n-1; elements numbered 1..m over the blocks in order.\n";
+  if (!model.loads.empty()) out << fmt::format("** {} nodal load(s) of the case left out: a frequency step does not use them.\n", model.loads.size());
+
+  out << "*NODE, NSET=NALL\n";
+  for (int i = 0; i < mesh.n_nodes(); ++i) {
+    out << i + 1;
+    for (int d = 0; d < 3; ++d) out << ", " << ccx_real(mesh.coords(i, d));
+    out << '\n';
+  }
+
+  long element = 0;
+  for (size_t k = 0; k < mesh.blocks.size(); ++k) {
+    const ElementBlock& b = mesh.blocks[k];
+    out << fmt::format("*ELEMENT, TYPE={}, ELSET=E{}\n", ccx_element_type(b.type), k + 1);
+    std::vector<long> nodes(static_cast<size_t>(b.conn.cols()));
+    for (Eigen::Index e = 0; e < b.conn.rows(); ++e) {
+      for (Eigen::Index a = 0; a < b.conn.cols(); ++a) nodes[static_cast<size_t>(a)] = b.conn(e, a) + 1L;
+      // Ten node numbers a line keeps even 10-digit numbers within ccx's line length.
+      out << ++element << ", ";
+      write_list(out, nodes, 10, false);
+    }
+  }
+
+  std::map<std::string, std::string> set_names;  // model set -> ccx set
+  std::set<std::string> used{"NALL"};
+  for (const Constraint& c : model.constraints) {
+    if (set_names.count(c.set) != 0) continue;
+    const auto it = model.node_sets.find(c.set);
+    if (it == model.node_sets.end()) throw InputError(fmt::format("CalculiX export: constraint names unknown node set '{}'", c.set));
+    const std::string name = ccx_set_name(c.set, used);
+    set_names.emplace(c.set, name);
+    out << fmt::format("*NSET, NSET={}\n", name);
+    std::vector<long> nodes;
+    for (const int i : it->second) nodes.push_back(i + 1L);
+    write_list(out, nodes, 10, false);
+  }
+  if (!model.constraints.empty()) {
+    out << "*BOUNDARY\n";
+    for (const Constraint& c : model.constraints)
+      for (const Direction d : c.directions) out << fmt::format("{}, {}, {}\n", set_names.at(c.set), d + 1, d + 1);
+  }
+
+  out << "*MATERIAL, NAME=MAT\n*ELASTIC\n"
+      << ccx_real(model.section.youngs_modulus) << ", " << ccx_real(model.section.poisson_ratio) << '\n'
+      << "*DENSITY\n" << ccx_real(model.section.density) << '\n';
+  for (size_t k = 0; k < mesh.blocks.size(); ++k) out << fmt::format("*SOLID SECTION, ELSET=E{}, MATERIAL=MAT\n", k + 1);
+
+  out << "*STEP\n*FREQUENCY\n" << n_modes << '\n'
+      << "** add '*NODE FILE' and 'U' here to write the mode shapes to the .frd file\n"
+         "*END STEP\n";
+  if (!out) throw std::runtime_error("failed writing " + inp.string());
+}
+
+}  // namespace bb

@@ -1,0 +1,20 @@
+// Export of a 3D model as a CalculiX (ccx) input deck, to run an established solver on the
+// identical mesh (bench/calculix_compare.sh). SI units, written as they are in the model.
+#pragma once
+#include <filesystem>
+
+#include "model/model.hpp"
+
+namespace bb {
+
+// Writes an ASCII .inp deck for a *FREQUENCY step asking for the lowest n_modes modes:
+// *NODE (number = internal index + 1), *ELEMENT per block (hex20 -> C3D20, hex8 -> C3D8,
+// hex8i -> C3D8I; our node order is CalculiX's, see mesh/mesh.hpp), one *NSET and *BOUNDARY
+// per constraint, *MATERIAL (*ELASTIC, *DENSITY), *SOLID SECTION, *STEP / *FREQUENCY.
+// Loads are left out: a frequency step does not use them. Mode shapes are not requested
+// (no *NODE FILE), so ccx writes the eigenvalues to the .dat file only.
+// Throws InputError for a 2D mesh, a nonzero prescribed displacement, or n_modes < 1, and
+// std::runtime_error when the file cannot be written.
+void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp);
+
+}  // namespace bb

@@ -1,5 +1,7 @@
 #include "analysis/case_results.hpp"
 
+#include "analysis/mode_pairs.hpp"
+
 namespace bb {
 
 CaseResults compute_case_results(const CaseSpec& spec, const Model& model) {
@@ -9,7 +11,9 @@ CaseResults compute_case_results(const CaseSpec& spec, const Model& model) {
     out.tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, out.static_solution->displacements));
   } else {
     out.modal = solve_modal(model, spec.analysis.modes, spec.analysis.modal);
-    out.tables.emplace("frequencies", frequency_table(out.modal->frequencies_hz));
+    ResultTable frequencies = frequency_table(out.modal->frequencies_hz);
+    if (spec.analysis.pairs) add_mode_labels(frequencies, label_mode_pairs(model, *out.modal, *spec.analysis.pairs));
+    out.tables.emplace("frequencies", std::move(frequencies));
     out.tables.emplace("modal_participation", participation_table(*out.modal));
   }
   return out;

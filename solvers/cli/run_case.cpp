@@ -5,6 +5,7 @@
 #include <chrono>
 #include <system_error>
 
+#include "analysis/case_results.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
 #include "analysis/static_analysis.hpp"
@@ -60,11 +61,12 @@ void describe_model(const CaseSpec& spec, const Model& model, RunRecord& run) {
 }
 
 void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
-  ResultTables tables;
+  CaseResults results = compute_case_results(spec, model);
+  const ResultTables& tables = results.tables;
   std::optional<Eigen::MatrixXd> static_displacements;
-  std::optional<ModalResult> modal;
-  if (spec.analysis.type == AnalysisType::static_linear) {
-    const StaticSolution sol = solve_static(model);
+  const std::optional<ModalResult>& modal = results.modal;
+  if (results.static_solution) {
+    const StaticSolution& sol = *results.static_solution;
     run.facts.emplace_back("analysis", "linear static, sparse Cholesky (CHOLMOD)");
     run.facts.emplace_back("free DOFs", std::to_string(sol.n_free_dofs));
     run.facts.emplace_back("pivot ratio (rcond estimate)", fmt::format("{:.3e}", sol.pivot_ratio));
@@ -72,10 +74,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     const double applied = sol.loads.sum(), reacted = sol.reactions.sum();
     run.facts.emplace_back("force balance |sum f + sum R| [N]", fmt::format("{:.3e}", std::abs(applied + reacted)));
     run.facts.emplace_back("assembly / factor+solve [s]", fmt::format("{:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds));
-    tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, sol.displacements));
     static_displacements = sol.displacements;
   } else {
-    modal = solve_modal(model, spec.analysis.modes, spec.analysis.modal);
     const ModeSelection& sel = spec.analysis.modes;
     run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
                                                    sel.band_max_hz ? fmt::format("all modes in [{}, {}] Hz", sel.band_min_hz.value_or(0.0), *sel.band_max_hz)
@@ -84,15 +84,11 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     run.facts.emplace_back("Lanczos iterations", std::to_string(modal->iterations));
     run.facts.emplace_back("max eigen-residual (backward error)", fmt::format("{:.3e}", modal->max_residual));
     run.facts.emplace_back("assembly / eigensolve [s]", fmt::format("{:.4f} / {:.4f}", modal->assembly_seconds, modal->solve_seconds));
-    ResultTable frequencies = frequency_table(modal->frequencies_hz);
     if (spec.analysis.pairs) {
-      add_mode_labels(frequencies, label_mode_pairs(model, *modal, *spec.analysis.pairs));
       const ModePairSpec& p = *spec.analysis.pairs;
       run.facts.emplace_back("mode labels", fmt::format("pair: sign of '{}' vs '{}' along {}; type: motion of tip face '{}' "
                                                         "(else '{}')", p.left, p.right, "xyz"[p.direction], p.right_tip, p.left_tip));
     }
-    tables.emplace("frequencies", std::move(frequencies));
-    tables.emplace("modal_participation", participation_table(*modal));
   }
   for (const CheckSpec& c : spec.checks) {
     auto entries = evaluate_check(c, tables);

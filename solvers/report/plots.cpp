@@ -109,36 +109,51 @@ std::vector<std::array<int, 4>> boundary_faces(const Mesh& mesh) {
   return out;
 }
 
-// Above this many skin faces a 3D picture would weigh megabytes: it is not drawn.
-constexpr size_t kMaxDrawnFaces = 20000;
+// Edges of the skin faces that face `axis` (+x, +y or +z) and belong to only one such face: the
+// outline of the solid seen from that side, bodies and openings included, with no interior lines.
+std::vector<std::pair<int, int>> facing_outline(const Mesh& mesh, const std::vector<std::array<int, 4>>& faces, int axis) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& f : faces) {
+    const Eigen::Vector3d d1 = mesh.coords.row(f[2]) - mesh.coords.row(f[0]);
+    const Eigen::Vector3d d2 = mesh.coords.row(f[3]) - mesh.coords.row(f[1]);
+    const Eigen::Vector3d n = d1.cross(d2);
+    if (n[axis] <= 0.5 * n.norm()) continue;
+    for (int a = 0; a < 4; ++a) ++uses[{std::min(f[a], f[(a + 1) % 4]), std::max(f[a], f[(a + 1) % 4])}];
+  }
+  std::vector<std::pair<int, int>> out;
+  for (const auto& [edge, count] : uses)
+    if (count == 1) out.push_back(edge);
+  return out;
+}
 
+// Two views of the solid's outline: front (x-y, seen from +z) and side (z-y, seen from +x).
 Plot plot_deformed_solid(const Mesh& mesh, const Eigen::MatrixXd& displacements, const fs::path& out_dir,
                          const std::string& stem, const std::string& title) {
   const auto faces = boundary_faces(mesh);
-  if (faces.size() > kMaxDrawnFaces)
-    return {title, "", fmt::format("{} skin faces exceed the drawing limit of {}", faces.size(), kMaxDrawnFaces)};
   const double size = (mesh.coords.colwise().maxCoeff() - mesh.coords.colwise().minCoeff()).norm();
   const double umax = displacements.rowwise().norm().maxCoeff();
   const double scale = umax > 0 ? 0.1 * size / umax : 1.0;
   const Eigen::MatrixXd deformed = mesh.coords + scale * displacements;
+  const std::array<std::array<int, 3>, 2> views{{{2, 0, 1}, {0, 2, 1}}};  // facing axis, horizontal, vertical
   {
     std::ofstream out = open_plot_data(out_dir, stem);
-    for (const Eigen::MatrixXd* xyz : {&mesh.coords, &deformed}) {
-      for (const auto& f : faces) {
-        for (int a = 0; a <= 4; ++a) {
-          const int n = f[a % 4];
-          out << (*xyz)(n, 0) << ' ' << (*xyz)(n, 1) << ' ' << (*xyz)(n, 2) << '\n';
-        }
+    for (const auto& v : views) {
+      const auto edges = facing_outline(mesh, faces, v[0]);
+      for (const Eigen::MatrixXd* xyz : {&mesh.coords, &deformed}) {
+        for (const auto& [p, q] : edges)
+          out << (*xyz)(p, v[1]) << ' ' << (*xyz)(p, v[2]) << '\n' << (*xyz)(q, v[1]) << ' ' << (*xyz)(q, v[2]) << "\n\n";
         out << "\n";
       }
-      out << "\n";
     }
   }
   const std::string script = fmt::format(
-      "set title '{} (displacements x {:.3g})'\nset view equal xyz\nset view 60, 30\nunset border\nunset tics\n"
-      "set key outside right\nsplot '{}.dat' index 0 with lines lc rgb '#bbbbbb' title 'undeformed', \\\n"
-      "      '{}.dat' index 1 with lines lc rgb '#1f5fbf' title 'deformed'\n",
-      gnuplot_quote(title), scale, stem, stem);
+      "set multiplot layout 1,2 title '{} (displacements x {:.3g})'\nset size ratio -1\nset key off\n"
+      "set title 'front (x-y)'\nset xlabel 'x [m]'\nset ylabel 'y [m]'\n"
+      "plot '{}.dat' index 0 with lines lc rgb '#bbbbbb', '{}.dat' index 1 with lines lc rgb '#1f5fbf'\n"
+      "set title 'side (z-y)'\nset xlabel 'z [m]'\nset xtics rotate by 90 right\n"
+      "plot '{}.dat' index 2 with lines lc rgb '#bbbbbb', '{}.dat' index 3 with lines lc rgb '#1f5fbf'\n"
+      "unset multiplot\n",
+      gnuplot_quote(title), scale, stem, stem, stem, stem);
   return draw(out_dir, stem, title, script);
 }
 

@@ -7,6 +7,7 @@
 
 #include "analysis/case_results.hpp"
 #include "identify/calibrate_case.hpp"
+#include "temp_folder.hpp"
 
 namespace bb {
 namespace {
@@ -55,18 +56,11 @@ std::string substitute(std::string text, const std::string& key, const std::stri
   return text;
 }
 
-class CalibrationRoundTrip : public ::testing::Test {
+class CalibrationRoundTrip : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("bb_calibration_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Writes the case with the given values and, from the truth values, its reference file.
   fs::path write_case(double e_start, double rho_start, const std::string& parameters, double e_true, double rho_true) {
-    write(dir_ / "truth.toml", e_true, rho_true, parameters);
+    write_values(dir_ / "truth.toml", e_true, rho_true, parameters);
     std::ofstream(dir_ / "reference.csv") << "mode,frequency_hz\n1,1\n2,1\n3,1\n";  // placeholder for parsing
     const CaseSpec truth = parse_case_file(dir_ / "truth.toml");
     const CaseResults r = compute_case_results(truth, build_model(truth));
@@ -75,16 +69,15 @@ class CalibrationRoundTrip : public ::testing::Test {
     ref << "mode,frequency_hz\n";
     for (Eigen::Index i = 0; i < r.modal->frequencies_hz.size(); ++i) ref << i + 1 << ',' << r.modal->frequencies_hz[i] << '\n';
     ref.close();
-    write(dir_ / "case.toml", e_start, rho_start, parameters);
+    write_values(dir_ / "case.toml", e_start, rho_start, parameters);
     return dir_ / "case.toml";
   }
 
  private:
-  void write(const fs::path& file, double e, double rho, const std::string& parameters) {
+  static void write_values(const fs::path& file, double e, double rho, const std::string& parameters) {
     std::string text = substitute(substitute(substitute(std::string(kCase), "E", std::to_string(e)), "rho", std::to_string(rho)), "parameters", parameters);
     std::ofstream(file) << text;
   }
-  fs::path dir_;
 };
 
 TEST_F(CalibrationRoundTrip, RecoversYoungsModulusFromFrequencies) {

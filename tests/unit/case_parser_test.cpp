@@ -2,7 +2,6 @@
 // state, a minimal case gets the documented defaults, and malformed input fails with a message
 // that names the key and the line.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include "analysis/static_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
+#include "temp_folder.hpp"
 
 namespace bb {
 namespace {
@@ -129,22 +129,8 @@ split = "consistent"
 type = "static"
 )";
 
-class CaseFile : public ::testing::Test {
+class CaseFile : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("bladebench_case_parser_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  fs::path write(const std::string& text) {
-    const fs::path file = dir_ / "case.toml";
-    std::ofstream(file) << text;
-    return file;
-  }
   // The case with `line` inserted after the first line equal to `after`; returns its 1-based line.
   static std::string insert_after(const std::string& text, const std::string& after, const std::string& line, int& line_no) {
     const size_t at = text.find(after + "\n");
@@ -167,7 +153,6 @@ class CaseFile : public ::testing::Test {
     }
     return {};
   }
-  fs::path dir_;
 };
 
 TEST_F(CaseFile, MinimalCaseParsesWithTheDocumentedDefaults) {

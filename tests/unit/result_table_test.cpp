@@ -2,7 +2,6 @@
 // numeric columns in the CSV, quoted where needed; checks compare numbers only and may be
 // restricted to some reference rows.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,6 +13,7 @@
 #include "common/errors.hpp"
 #include "report/writers.hpp"
 #include "results/table.hpp"
+#include "temp_folder.hpp"
 
 namespace bb {
 namespace {
@@ -31,19 +31,7 @@ ResultTable labelled_frequencies() {
   return t;
 }
 
-class LabelledTable : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("bladebench_table_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  fs::path dir_;
-};
+class LabelledTable : public test::TempFolderTest {};
 
 TEST_F(LabelledTable, CsvWritesTextColumnsAfterTheNumericOnesAndQuotesWhereNeeded) {
   write_table_csv(labelled_frequencies(), dir_ / "frequencies.csv");

@@ -3,7 +3,6 @@
 // of the bodies, the named points are nodes, impossible geometry is rejected by name, and the two
 // identical blades give near-degenerate pairs of modes. Units: SI.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -26,6 +25,7 @@
 #include "fe/solid.hpp"
 #include "mesh/hex_block.hpp"
 #include "test_support.hpp"
+#include "temp_folder.hpp"
 
 namespace bb {
 namespace {
@@ -265,22 +265,8 @@ right_tip = "tip2"
 )" + extra;
 }
 
-class TwoBladeCase : public ::testing::Test {
+class TwoBladeCase : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("bladebench_two_blade_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  fs::path write(const std::string& text) {
-    const fs::path file = dir_ / "case.toml";
-    std::ofstream(file) << text;
-    return file;
-  }
   std::string error_of(const std::string& text) {
     try {
       build_model(parse_case_file(write(text)));
@@ -289,7 +275,6 @@ class TwoBladeCase : public ::testing::Test {
     }
     return {};
   }
-  fs::path dir_;
 };
 
 TEST_F(TwoBladeCase, AutomaticNodeSetsSitAtTheNamedPointsAndFaces) {

@@ -98,6 +98,16 @@ struct RefinementStudySpec {
   SourceLocation at;
 };
 
+// Mesh-refinement study of a solid modal case: the first `modes` frequencies for every element
+// type at every refinement level, against the finest hex20 mesh, with the cost of each.
+struct ModalRefinementStudySpec {
+  std::vector<int> refinements;       // two_blade: the article's refinement; hex_blocks: factor on nx, ny, nz
+  std::vector<ElementType> elements;  // solid element types to compare
+  int modes = 10;
+  std::string note;
+  SourceLocation at;
+};
+
 struct CaseSpec {
   std::filesystem::path file;
   std::string name;
@@ -111,6 +121,7 @@ struct CaseSpec {
   AnalysisSpec analysis;
   std::vector<CheckSpec> checks;
   std::optional<RefinementStudySpec> study;
+  std::optional<ModalRefinementStudySpec> modal_study;
 };
 
 // Throws InputError naming file, line and key for every malformed or missing entry.

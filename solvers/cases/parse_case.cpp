@@ -320,6 +320,34 @@ RefinementStudySpec parse_study(TomlReader r) {
   return s;
 }
 
+ModalRefinementStudySpec parse_modal_study(TomlReader r) {
+  ModalRefinementStudySpec s;
+  s.at = r.location();
+  r.choice("kind", {"modal_refinement"});
+  for (long level : r.integer_array("refinements")) {
+    if (level < 1 || level > 16) r.fail("refinements", "levels must lie in 1..16");
+    s.refinements.push_back(static_cast<int>(level));
+  }
+  if (s.refinements.size() < 2) r.fail("refinements", "need at least 2 levels");
+  for (const std::string& e : r.string_array("elements")) {
+    bool known = false;
+    for (ElementType t : {ElementType::hex8, ElementType::hex8i, ElementType::hex20})
+      if (element_name(t) == e) {
+        s.elements.push_back(t);
+        known = true;
+      }
+    if (!known) r.fail("elements", fmt::format("unknown solid element '{}'; expected hex8, hex8i or hex20", e));
+  }
+  if (s.elements.empty()) r.fail("elements", "needs at least one element type");
+  if (const auto m = r.optional_integer("modes")) {
+    if (*m < 1) r.fail("modes", "must be >= 1");
+    s.modes = static_cast<int>(*m);
+  }
+  s.note = r.optional_string("note").value_or("");
+  r.finish();
+  return s;
+}
+
 template <typename Fn>
 void for_each_table_in_array(TomlReader& top, const std::string& key, Fn fn) {
   if (!top.has(key)) return;
@@ -393,9 +421,17 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   for_each_table_in_array(top, "load", [&](TomlReader r) { spec.loads.push_back(parse_load(std::move(r))); });
   for_each_table_in_array(top, "check", [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
   if (const toml::table* study = top.optional_table("study")) {
-    spec.study = parse_study(TomlReader(*study, "study", file));
-    if (spec.mesh.kind != MeshSpec::Kind::mapped_quad || spec.analysis.type != AnalysisType::static_linear)
-      top.fail("study", "a refinement study needs a mapped_quad mesh and a static analysis");
+    const toml::node* kind = study->get("kind");
+    if (kind && kind->value<std::string>() == "modal_refinement") {
+      spec.modal_study = parse_modal_study(TomlReader(*study, "study", file));
+      const bool solid = spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::hex_blocks;
+      if (!solid || spec.analysis.type != AnalysisType::modal)
+        top.fail("study", "a modal_refinement study needs a two_blade or hex_blocks mesh and a modal analysis");
+    } else {
+      spec.study = parse_study(TomlReader(*study, "study", file));
+      if (spec.mesh.kind != MeshSpec::Kind::mapped_quad || spec.analysis.type != AnalysisType::static_linear)
+        top.fail("study", "a refinement study needs a mapped_quad mesh and a static analysis");
+    }
   }
   top.has("calibration");  // read by `bladebench calibrate` (cases/calibration_spec.hpp)
   top.finish();

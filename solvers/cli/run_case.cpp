@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
+#include "study/modal_refinement.hpp"
 
 namespace bb {
 namespace {
@@ -109,6 +110,11 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     }
     int i = 0;
     for (const CheckSpec& c : spec.checks) run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
+  }
+  if (options.study && spec.modal_study) {
+    run.modal_study = run_modal_refinement_study(spec);
+    run.study_note = spec.modal_study->note;
+    if (options.plots) run.study_plots.push_back(plot_modal_refinement(*run.modal_study, out, "study_modal"));
   }
   if (options.study && spec.study) {
     run.study = run_refinement_study(spec);

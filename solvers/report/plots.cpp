@@ -231,4 +231,29 @@ Plot plot_refinement_cost(const RefinementResult& study, const fs::path& out_dir
   return draw(out_dir, stem, title, script);
 }
 
+Plot plot_modal_refinement(const ModalRefinementResult& study, const fs::path& out_dir, const std::string& stem) {
+  std::vector<ElementType> elements;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    for (const ModalRefinementRow& r : study.rows) {
+      if (elements.empty() || elements.back() != r.element) {
+        if (!elements.empty()) out << "\n\n";
+        elements.push_back(r.element);
+        out << "# " << element_name(r.element) << ": free_dofs max_error eigensolve_s\n";
+      }
+      if (r.max_error > 0) out << r.n_free_dofs << ' ' << r.max_error << ' ' << r.solve_seconds << '\n';
+    }
+  }
+  std::string plot = "plot ";
+  for (size_t i = 0; i < elements.size(); ++i)
+    plot += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints pt 7 title '{}'", i ? ", " : "", stem, i,
+                        element_name(elements[i]));
+  const std::string title = "First-frequency error vs DOFs";
+  const std::string script = fmt::format(
+      "set title '{}'\nset logscale xy\nset format y '10^{{%L}}'\nset xlabel 'free DOFs'\n"
+      "set ylabel 'max relative error (vs finest hex20)'\nset grid\nset key outside right\n{}\n",
+      title, plot);
+  return draw(out_dir, stem, title, script);
+}
+
 }  // namespace bb

@@ -8,6 +8,7 @@
 
 #include "cases/case_spec.hpp"
 #include "checks/checks.hpp"
+#include "study/modal_refinement.hpp"
 #include "study/refinement.hpp"
 
 namespace bb {
@@ -39,6 +40,7 @@ struct RunRecord {
   std::optional<RefinementResult> study;
   std::string study_note;
   std::vector<Plot> study_plots;
+  std::optional<ModalRefinementResult> modal_study;
 };
 
 }  // namespace bb

@@ -219,6 +219,24 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     out << '\n';
     plots(run.study_plots);
   }
+  if (run.modal_study) {
+    const ModalRefinementResult& m = *run.modal_study;
+    const ModalRefinementRow& ref = m.rows[static_cast<size_t>(m.reference_row)];
+    out << "## Mesh convergence of the first frequencies (accuracy vs cost)\n\n";
+    if (!run.study_note.empty()) out << run.study_note << "\n\n";
+    out << fmt::format("Errors are relative to the finest mesh of the study ({} at refinement {}, {} free DOFs), mode by "
+                       "mode in frequency order, over the first {} modes.\n\n",
+                       element_name(ref.element), ref.refinement, ref.n_free_dofs, m.modes);
+    out << "| element | refinement | free DOFs | f1 [Hz] | f" << m.modes
+        << " [Hz] | max error | rms error | assembly [s] | eigensolve [s] |\n|---|---|---|---|---|---|---|---|---|\n";
+    for (const ModalRefinementRow& r : m.rows)
+      out << fmt::format("| {} | {} | {} | {:.3f} | {:.2f} | {:.3f}% | {:.3f}% | {:.2f} | {:.2f} |\n", element_name(r.element),
+                         r.refinement, r.n_free_dofs, r.frequencies_hz.front(), r.frequencies_hz.back(), 100 * r.max_error,
+                         100 * r.rms_error, r.assembly_seconds, r.solve_seconds);
+    out << '\n';
+    for (const Plot& p : run.study_plots) out << (p.file.empty() ? fmt::format("*{}: not drawn ({})*\n\n", p.title, p.note)
+                                                                 : fmt::format("![{}]({})\n\n", p.title, p.file));
+  }
   if (!out) throw std::runtime_error("failed writing " + file.string());
 }
 

@@ -62,9 +62,8 @@ void describe_model(const CaseSpec& spec, const Model& model, RunRecord& run) {
 }
 
 void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
-  CaseResults results = compute_case_results(spec, model);
+  const CaseResults results = compute_case_results(spec, model);
   const ResultTables& tables = results.tables;
-  std::optional<Eigen::MatrixXd> static_displacements;
   const std::optional<ModalResult>& modal = results.modal;
   if (results.static_solution) {
     const StaticSolution& sol = *results.static_solution;
@@ -75,7 +74,6 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     const double applied = sol.loads.sum(), reacted = sol.reactions.sum();
     run.facts.emplace_back("force balance |sum f + sum R| [N]", fmt::format("{:.3e}", std::abs(applied + reacted)));
     run.facts.emplace_back("assembly / factor+solve [s]", fmt::format("{:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds));
-    static_displacements = sol.displacements;
   } else {
     const ModeSelection& sel = spec.analysis.modes;
     run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
@@ -102,7 +100,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);
   }
   if (options.plots) {
-    if (static_displacements) run.plots.push_back(plot_deformed_mesh(model.mesh, *static_displacements, out, "deformed", "Deformed mesh"));
+    if (results.static_solution)
+      run.plots.push_back(plot_deformed_mesh(model.mesh, results.static_solution->displacements, out, "deformed", "Deformed mesh"));
     if (modal) {
       for (size_t k = 0; k < std::min<size_t>(4, modal->shapes.size()); ++k)
         run.plots.push_back(plot_deformed_mesh(model.mesh, modal->shapes[k], out, fmt::format("mode{}", k + 1),

@@ -15,6 +15,7 @@
 #include "common/errors.hpp"
 #include "mesh/gmsh_import.hpp"
 #include "test_support.hpp"
+#include "hex20_checks.hpp"
 
 namespace bb {
 namespace {
@@ -25,10 +26,6 @@ std::filesystem::path fixture(const std::string& name) {
   return std::filesystem::path(BB_SOURCE_DIR) / "tests" / "data" / "gmsh" / name;
 }
 
-// Corner pairs of the hex20 mid-edge nodes 9-20 of mesh/mesh.hpp (Ansys/CalculiX), 0-based.
-constexpr std::array<std::array<int, 2>, 12> kEdges = {{
-    {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
-}};
 constexpr std::array<std::array<int, 4>, 6> kFaceCorners = {{
     {0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7},
 }};
@@ -172,14 +169,8 @@ TEST(GmshImport, Hex20BoxHasTheExpectedCountsVolumeAndConformingFaces) {
 TEST(GmshImport, Hex20MidEdgeNodesAreReorderedToTheMidpointsOfTheirCornerPairs) {
   // With Gmsh's own order left in place, node 10 (edge 2-3) would be Gmsh's edge 1-4 node, etc.
   const GmshMesh g = read_gmsh_msh41(fixture("box_hex20.msh"));
-  const Mesh& m = g.mesh;
-  const ElementBlock& b = m.blocks[0];
-  for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
-    for (size_t k = 0; k < 12; ++k) {
-      const Vec3 mid = 0.5 * (node(m, b.conn(e, kEdges[k][0])) + node(m, b.conn(e, kEdges[k][1])));
-      EXPECT_LE((node(m, b.conn(e, 8 + static_cast<Eigen::Index>(k))) - mid).norm(), 1e-12)
-          << "element " << b.ids[static_cast<size_t>(e)] << " node " << 9 + k;
-    }
+  ASSERT_EQ(g.mesh.blocks[0].type, ElementType::hex20);
+  EXPECT_TRUE(test::hex20_mid_edge_nodes_at_midpoints(g.mesh));
 }
 
 TEST(GmshImport, Hex20PhysicalSurfacesIncludeTheirMidEdgeNodes) {

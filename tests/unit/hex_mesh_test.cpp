@@ -14,16 +14,13 @@
 
 #include "mesh/hex_block.hpp"
 #include "test_support.hpp"
+#include "hex20_checks.hpp"
 
 namespace bb {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-// Corner pairs of the hex20 mid-edge nodes 9-20 of mesh/mesh.hpp, 0-based.
-constexpr std::array<std::array<int, 2>, 12> kEdges = {{
-    {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
-}};
 // Faces of a hex by corners; for hex20 also the mid-edge nodes on each face's edges.
 constexpr std::array<std::array<int, 4>, 6> kFaceCorners = {{
     {0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7},
@@ -207,13 +204,8 @@ TEST(HexBlockMesh, Hex20MidEdgeNodesSitAtTheMidpointsOfTheirEdges) {
   // The trilinear map is linear along each parameter line, so this holds in a distorted block too.
   for (const HexBlockSpec& spec : {parallelepiped(3, 2, 2, ElementType::hex20), distorted(3, 3, 2, ElementType::hex20)}) {
     const Mesh m = generate_hex_block(spec);
-    const ElementBlock& b = m.blocks[0];
-    for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
-      for (size_t k = 0; k < 12; ++k) {
-        const Vec3 mid = 0.5 * (node(m, b.conn(e, kEdges[k][0])) + node(m, b.conn(e, kEdges[k][1])));
-        EXPECT_LE((node(m, b.conn(e, 8 + static_cast<Eigen::Index>(k))) - mid).norm(), 1e-12)
-            << "element " << b.ids[static_cast<size_t>(e)] << " node " << 9 + k;
-      }
+    ASSERT_EQ(m.blocks[0].type, ElementType::hex20);
+    EXPECT_TRUE(test::hex20_mid_edge_nodes_at_midpoints(m));
   }
 }
 

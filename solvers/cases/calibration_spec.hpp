@@ -1,6 +1,7 @@
 // The [calibration] section of a case: which numeric case values to identify, within which
 // bounds, against which checks' reference data.
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,11 +21,15 @@ struct CalibrationSpec {
   std::vector<CalibrationParameter> parameters;
   std::vector<std::string> fit_checks;  // [[check]] names whose entries become residuals
   double relative_uncertainty = 0.01;   // sigma of each reference value, relative
+  std::map<std::string, double> check_uncertainties;  // per-check override of relative_uncertainty
   std::string loss = "none";            // none | huber | cauchy
   double loss_scale = 1.0;              // in units of sigma
   int max_iterations = 50;
   SourceLocation at;
 };
+
+// Sigma of the entries of fit check `name`.
+double uncertainty_of(const CalibrationSpec& c, const std::string& name);
 
 // Reads [calibration] from a case file's table; std::nullopt when absent. Checks that every
 // path names an existing number inside its bounds and every fit check exists. Throws InputError.

@@ -1,5 +1,7 @@
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "cases/calibration_spec.hpp"
 #include "cases/toml_reader.hpp"
 #include "common/errors.hpp"
@@ -18,6 +20,11 @@ toml::node* node_at_path(toml::table& root, const std::string& path) {
     if (!table) return nullptr;
     begin = dot + 1;
   }
+}
+
+double uncertainty_of(const CalibrationSpec& c, const std::string& name) {
+  const auto it = c.check_uncertainties.find(name);
+  return it == c.check_uncertainties.end() ? c.relative_uncertainty : it->second;
 }
 
 std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const std::filesystem::path& file,
@@ -55,6 +62,16 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   }
   if (r.has("relative_uncertainty")) {
     c.relative_uncertainty = r.positive("relative_uncertainty");
+  }
+  if (const toml::table* per_check = r.optional_table("check_uncertainties")) {
+    for (const auto& [key, value] : *per_check) {
+      const std::string name(key.str());
+      if (std::find(c.fit_checks.begin(), c.fit_checks.end(), name) == c.fit_checks.end())
+        r.fail("check_uncertainties", fmt::format("'{}' is not one of fit_checks", name));
+      const std::optional<double> sigma = value.value<double>();
+      if (!sigma || !(*sigma > 0.0)) r.fail("check_uncertainties", fmt::format("'{}' needs a positive number", name));
+      c.check_uncertainties[name] = *sigma;
+    }
   }
   c.loss = r.choice("loss", {"none", "huber", "cauchy"}, "none");
   if (r.has("loss_scale")) c.loss_scale = r.positive("loss_scale");

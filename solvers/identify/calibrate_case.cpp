@@ -56,7 +56,7 @@ struct CaseResidual {
       const auto entries = fitted_entries(*base, file, *cal, values);
       ++*evaluations;
       for (size_t k = 0; k < entries.size(); ++k)
-        residuals[k] = (entries[k].computed / entries[k].reference - 1.0) / cal->relative_uncertainty;
+        residuals[k] = (entries[k].computed / entries[k].reference - 1.0) / uncertainty_of(*cal, entries[k].group);
       return true;
     } catch (const std::exception&) {
       return false;  // an impossible geometry or a failed solve: Ceres shrinks the step

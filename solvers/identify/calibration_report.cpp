@@ -55,8 +55,10 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   md << fmt::format("{} in {:.1f} s, {} model evaluations. Cost {:.6g} -> {:.6g}; rms relative misfit {:.3f}% -> {:.3f}%.\n\n",
                     o.converged ? "Converged" : "**Not converged**", wall_seconds, o.residual_evaluations, o.initial_cost,
                     o.final_cost, 100 * rms_relative(o.before), 100 * rms_relative(o.after));
-  md << fmt::format("Residuals: (computed / reference - 1) / {} per entry of the checks: {}. Loss: {}.\n\n",
-                    o.spec.relative_uncertainty, fmt::join(o.spec.fit_checks, ", "), o.spec.loss);
+  md << "Residuals: (computed / reference - 1) / sigma per entry of the fitted checks. Loss: " << o.spec.loss << ".\n\n";
+  md << "| fitted check | sigma (relative) |\n|---|---|\n";
+  for (const std::string& name : o.spec.fit_checks) md << fmt::format("| {} | {:g} |\n", name, uncertainty_of(o.spec, name));
+  md << '\n';
   md << "## Parameters\n\n| parameter | start | identified | std (1 sigma) | lower | upper |\n|---|---|---|---|---|---|\n";
   for (size_t i = 0; i < o.values.size(); ++i) {
     const auto& p = o.spec.parameters[i];

@@ -113,5 +113,21 @@ TEST_F(CalibrationRoundTrip, UnknownParameterPathIsAnInputError) {
   EXPECT_THROW(calibrate_case(c, false), InputError);
 }
 
+TEST_F(CalibrationRoundTrip, PerCheckUncertaintyMustNameAFittedCheck) {
+  const fs::path c = write_case(2e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  std::ofstream(c, std::ios::app) << "check_uncertainties = { \"other\" = 0.005 }\n";
+  EXPECT_THROW(calibrate_case(c, false), InputError);
+}
+
+TEST_F(CalibrationRoundTrip, PerCheckUncertaintyOverridesTheDefault) {
+  const fs::path c = write_case(2e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  std::ofstream(c, std::ios::app) << "check_uncertainties = { \"frequencies\" = 0.005 }\n";
+  const CaseSpec spec = parse_case_file(c);
+  const auto cal = parse_calibration(read_case_table(c), c, spec);
+  ASSERT_TRUE(cal.has_value());
+  EXPECT_DOUBLE_EQ(uncertainty_of(*cal, "frequencies"), 0.005);
+  EXPECT_DOUBLE_EQ(uncertainty_of(*cal, "anything else"), 0.001);
+}
+
 }  // namespace
 }  // namespace bb

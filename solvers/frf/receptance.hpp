@@ -1,0 +1,42 @@
+// Linear receptances of a damped structure, thesis eqs 3.32 and 3.37-3.39.
+#pragma once
+#include <Eigen/Dense>
+#include <complex>
+
+namespace bb {
+
+// Modal superposition (eq 3.32): H(w) = sum_r phi_out,r phi_in,r^T / (w_r^2 - w^2 + 2 i zeta_r w_r w)
+// (+ residual, a constant flexibility standing in for the truncated modes).
+struct ModalReceptance {
+  Eigen::VectorXd omega;           // w_r [rad/s], one per kept mode
+  Eigen::VectorXd zeta;            // modal damping ratio per mode
+  Eigen::MatrixXd shapes_out;      // mass-normalized shapes at the response DOFs (n_out x modes)
+  Eigen::MatrixXd shapes_in;       // at the force DOFs (n_in x modes)
+  Eigen::MatrixXd residual;        // n_out x n_in, or empty
+
+  // n_out x n_in receptance [m/N] at w [rad/s].
+  Eigen::MatrixXcd at(double omega_rad_s) const;
+};
+
+// Residual flexibility of the truncated modes: K^-1 (out, in) - sum_r phi_out,r phi_in,r^T / w_r^2.
+// `static_flexibility` is K^-1 restricted to out x in; every w_r must be > 0.
+Eigen::MatrixXd residual_flexibility(const Eigen::MatrixXd& static_flexibility, const Eigen::MatrixXd& shapes_out,
+                                     const Eigen::MatrixXd& shapes_in, const Eigen::VectorXd& omega);
+
+// Rayleigh damping C = alpha M + beta K with zeta = alpha / (2 w) + beta w / 2 at w1 and w2 (eqs 3.37-3.39).
+struct RayleighCoefficients {
+  double alpha = 0.0;  // [1/s]
+  double beta = 0.0;   // [s]
+};
+RayleighCoefficients fit_rayleigh(double omega1, double zeta1, double omega2, double zeta2);
+
+// C = M Phi diag(2 zeta_r w_r) Phi^T M over every mode of the small dense model (K, M), one zeta for all.
+// Throws SolverError when M is not positive definite.
+Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& mass, double zeta);
+
+// Direct solve of D(w) x = f, D = K + i w C - w^2 M, for small dense models. Throws SolverError
+// when D(w) is singular (an undamped resonance hit exactly).
+Eigen::VectorXcd direct_response(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& damping,
+                                 const Eigen::MatrixXd& mass, double omega_rad_s, const Eigen::VectorXcd& force);
+
+}  // namespace bb

@@ -1,0 +1,34 @@
+// Craig-Bampton reduction (fixed-interface component mode synthesis, thesis eqs 3.4-3.5):
+// u = [I 0; Psi Phi] [u_m; q], Psi = -K_ss^-1 K_sm the static constraint modes, Phi the lowest
+// fixed-interface modes of (K_ss, M_ss), mass-normalized.
+#pragma once
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "linalg/spd_factor.hpp"
+#include "reduction/reduced_model.hpp"
+
+namespace bb {
+
+struct CraigBamptonOptions {
+  int n_modes = 10;                             // fixed-interface modes kept (may be 0: Guyan)
+  FillOrdering ordering = FillOrdering::metis;  // for K_ss and the shift-invert factor
+  double shift_frequency_hz = 1.0;              // see ModalOptions
+};
+
+struct CraigBamptonTiming {
+  double constraint_modes_seconds = 0.0;  // factor K_ss, solve for Psi
+  double fixed_interface_seconds = 0.0;   // eigenproblem of the clamped slaves
+  double projection_seconds = 0.0;        // T^T K T, T^T M T
+};
+
+// `stiffness`, `mass`: over the free DOFs (both symmetric, full storage). `masters[i]` is a free-DOF
+// index named `master_names[i]`; the reduced DOFs are the masters in the given order, then the
+// modes. Throws InputError for repeated or out-of-range masters, more modes than slave DOFs, or a
+// singular K_ss (slaves not held by the masters and constraints), SolverError when the
+// eigensolver fails.
+ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                           const std::vector<int>& masters, const std::vector<ReducedDof>& master_names,
+                           const CraigBamptonOptions& options, CraigBamptonTiming* timing = nullptr);
+
+}  // namespace bb

@@ -1,0 +1,24 @@
+// Reduced models on disk: two matrix files (Matrix Market or CSV) and a TOML sidecar that names
+// them and every DOF, so matrices exported from Ansys or NX can replace bladebench's own:
+//
+//   [reduced_model]
+//   format = "matrix_market"        # or "csv": dense, comma-separated, no header, '#' comments
+//   stiffness = "rom.K.mtx"         # relative to the sidecar
+//   mass = "rom.M.mtx"
+//   dofs = ["R.x", "R.y", "R.z", ..., "mode 1", ..., "mode 10"]
+#pragma once
+#include <filesystem>
+
+#include "reduction/reduced_model.hpp"
+
+namespace bb {
+
+// Writes `sidecar` and, next to it, <stem>.K.mtx / <stem>.M.mtx (full precision). The recovery
+// matrix is not written.
+void write_reduced_model(const ReducedModel& model, const std::filesystem::path& sidecar);
+
+// Throws InputError naming the file and line (or the sidecar field) of anything malformed,
+// and everything validate_reduced_model rejects.
+ReducedModel read_reduced_model(const std::filesystem::path& sidecar);
+
+}  // namespace bb

@@ -26,7 +26,9 @@ struct CraigBamptonTiming {
 // index named `master_names[i]`; the reduced DOFs are the masters in the given order, then the
 // modes. Throws InputError for repeated or out-of-range masters, more modes than slave DOFs, or a
 // singular K_ss (slaves not held by the masters and constraints), SolverError when the
-// eigensolver fails.
+// eigensolver fails. Masters may be empty when n_modes > 0 (plain fixed-interface modal
+// truncation). Keeping every slave mode (n_modes == slave count, a small model) uses a dense
+// eigensolver, since Lanczos needs n_modes below the matrix size; the reduction is then exact.
 ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                            const std::vector<int>& masters, const std::vector<ReducedDof>& master_names,
                            const CraigBamptonOptions& options, CraigBamptonTiming* timing = nullptr);

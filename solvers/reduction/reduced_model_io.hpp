@@ -14,7 +14,8 @@
 namespace bb {
 
 // Writes `sidecar` and, next to it, <stem>.K.mtx / <stem>.M.mtx (full precision). The recovery
-// matrix is not written.
+// matrix is not written. Throws InputError for a model validate_reduced_model rejects (only the
+// lower triangles are stored, so it would not read back) or a file that cannot be written.
 void write_reduced_model(const ReducedModel& model, const std::filesystem::path& sidecar);
 
 // Throws InputError naming the file and line (or the sidecar field) of anything malformed,

@@ -1,0 +1,282 @@
+// Reduced-model files. Units: SI (K in N/m on nodal rows, M in kg; modal coordinates are
+// mass-normalized, so their rows carry K in 1/s^2 and M = 1).
+//
+// The Matrix Market and CSV readers are our own rather than Eigen's unsupported MarketIO or the
+// project's fast-cpp-csv-parser: MarketIO reports no line numbers (a malformed export fails
+// silently or with a bare "false"), and the CSV parser wants a header row and a column count
+// fixed at compile time. Exported reduced matrices are small and dense, so a line-by-line
+// reader that names file and line on every error costs nothing.
+#include "reduction/reduced_model_io.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <string_view>
+#include <vector>
+
+#include "cases/toml_reader.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+namespace fs = std::filesystem;
+namespace {
+
+// ---------------------------------------------------------------- writing
+
+void write_matrix_market(const Eigen::MatrixXd& a, const fs::path& file, const std::string& what) {
+  std::ofstream out(file);
+  if (!out) throw InputError(fmt::format("{}: cannot open for writing", file.string()));
+  // Zeros are left out, but not -0.0: the round trip is meant to be bitwise.
+  const auto stored = [&](Eigen::Index i, Eigen::Index j) { return a(i, j) != 0.0 || std::signbit(a(i, j)); };
+  Eigen::Index nnz = 0;
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    for (Eigen::Index i = j; i < a.rows(); ++i) nnz += stored(i, j) ? 1 : 0;
+  out << "%%MatrixMarket matrix coordinate real symmetric\n";
+  out << fmt::format("% bladebench reduced {} (SI units); lower triangle, %.17g round-trips exactly\n", what);
+  out << fmt::format("{} {} {}\n", a.rows(), a.cols(), nnz);
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    for (Eigen::Index i = j; i < a.rows(); ++i)
+      if (stored(i, j)) out << fmt::format("{} {} {:.17g}\n", i + 1, j + 1, a(i, j));
+  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+}
+
+// ---------------------------------------------------------------- reading: shared helpers
+
+// One file read as numbered lines; every error it raises starts with "file:line:".
+class LineSource {
+ public:
+  explicit LineSource(fs::path file) : file_(std::move(file)), in_(file_) {}
+  bool is_open() const { return static_cast<bool>(in_); }
+  // Next line, or false at the end of the file.
+  bool next(std::string& line) {
+    if (!std::getline(in_, line)) return false;
+    ++line_number_;
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // files written on Windows
+    return true;
+  }
+  int line_number() const { return line_number_; }
+  const fs::path& file() const { return file_; }
+  [[noreturn]] void fail(const std::string& message) const {
+    throw InputError(fmt::format("{}:{}: {}", file_.string(), line_number_, message));
+  }
+
+ private:
+  fs::path file_;
+  std::ifstream in_;
+  int line_number_ = 0;
+};
+
+std::string_view trim(std::string_view s) {
+  const auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> split_whitespace(std::string_view s) {
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    const size_t start = i;
+    while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    if (i > start) out.push_back(s.substr(start, i - start));
+  }
+  return out;
+}
+
+// A finite double, the whole token; from_chars is locale-independent (a "," decimal comma locale
+// must not change what a file means).
+double parse_value(std::string_view token, const LineSource& src, const std::string& what) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
+  if (ec == std::errc::result_out_of_range) src.fail(fmt::format("{} '{}' is out of the double range", what, token));
+  if (ec != std::errc() || end != token.data() + token.size() || token.empty())
+    src.fail(fmt::format("{} '{}' is not a number", what, token));
+  if (!std::isfinite(v)) src.fail(fmt::format("{} '{}' is not finite", what, token));
+  return v;
+}
+
+long parse_count(std::string_view token, const LineSource& src, const std::string& what) {
+  long v = 0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
+  if (ec != std::errc() || end != token.data() + token.size() || token.empty())
+    src.fail(fmt::format("{} '{}' is not an integer", what, token));
+  return v;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+// ---------------------------------------------------------------- Matrix Market
+
+// Supported: "coordinate real general|symmetric" and "array real general" (the NIST format,
+// math.nist.gov/MatrixMarket/formats.html). Symmetric files hold the lower triangle only.
+Eigen::MatrixXd read_matrix_market(const fs::path& file, Eigen::Index n) {
+  LineSource src(file);
+  std::string line;
+  if (!src.next(line)) src.fail("empty file; expected a '%%MatrixMarket matrix ...' header");
+  const std::vector<std::string_view> header = split_whitespace(line);
+  const bool banner = header.size() == 5 && header[0] == "%%MatrixMarket" && lower(header[1]) == "matrix";
+  const std::string format = banner ? lower(header[2]) : "", field = banner ? lower(header[3]) : "",
+                    symmetry = banner ? lower(header[4]) : "";
+  const bool coordinate = format == "coordinate";
+  const bool supported = banner && field == "real" &&
+                         ((coordinate && (symmetry == "general" || symmetry == "symmetric")) ||
+                          (format == "array" && symmetry == "general"));
+  if (!supported)
+    src.fail(fmt::format("unsupported Matrix Market header '{}'; expected '%%MatrixMarket matrix coordinate real "
+                         "general|symmetric' or '%%MatrixMarket matrix array real general'",
+                         trim(line)));
+  const bool symmetric = symmetry == "symmetric";
+
+  // Comments ('%') and blank lines may precede the size line.
+  auto next_data_line = [&](std::string& out) {
+    while (src.next(out)) {
+      const std::string_view t = trim(out);
+      if (!t.empty() && t.front() != '%') return true;
+    }
+    return false;
+  };
+  if (!next_data_line(line)) src.fail("missing the size line");
+  const std::vector<std::string_view> size = split_whitespace(line);
+  if (size.size() != (coordinate ? 3u : 2u))
+    src.fail(coordinate ? "expected the size line 'rows columns entries'" : "expected the size line 'rows columns'");
+  const long rows = parse_count(size[0], src, "row count"), cols = parse_count(size[1], src, "column count");
+  if (rows != n || cols != n)
+    src.fail(fmt::format("matrix is {} x {} but the sidecar names {} DOFs", rows, cols, n));
+  const long expected = coordinate ? parse_count(size[2], src, "entry count") : n * n;
+  const long capacity = symmetric ? n * (n + 1) / 2 : n * n;
+  if (expected < 0 || expected > capacity)
+    src.fail(fmt::format("{} entries cannot fit a {} x {} {} matrix", expected, n, n, symmetry));
+
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+  Eigen::MatrixXi first_line = Eigen::MatrixXi::Zero(n, n);  // where each entry was set, for duplicates
+  long count = 0;
+  while (next_data_line(line)) {
+    if (count == expected) src.fail(fmt::format("more entries than the {} the size line announces", expected));
+    const std::vector<std::string_view> tokens = split_whitespace(line);
+    if (coordinate) {
+      if (tokens.size() != 3) src.fail("expected an entry 'row column value'");
+      const long i = parse_count(tokens[0], src, "row index"), j = parse_count(tokens[1], src, "column index");
+      if (i < 1 || i > n || j < 1 || j > n)
+        src.fail(fmt::format("entry ({}, {}) is out of range for a {} x {} matrix", i, j, n, n));
+      if (symmetric && i < j)
+        src.fail(fmt::format("entry ({}, {}) is above the diagonal; a symmetric file holds the lower triangle", i, j));
+      const double v = parse_value(tokens[2], src, "value");
+      if (first_line(i - 1, j - 1) != 0)
+        src.fail(fmt::format("entry ({}, {}) repeats line {}", i, j, first_line(i - 1, j - 1)));
+      first_line(i - 1, j - 1) = src.line_number();
+      a(i - 1, j - 1) = v;
+      if (symmetric) a(j - 1, i - 1) = v;
+    } else {
+      if (tokens.size() != 1) src.fail("expected one value per line in array format");
+      a(count % n, count / n) = parse_value(tokens[0], src, "value");  // column-major
+    }
+    ++count;
+  }
+  if (count < expected) src.fail(fmt::format("found {} entries, the size line announces {}", count, expected));
+  return a;
+}
+
+// ---------------------------------------------------------------- CSV
+
+// Dense rows, comma-separated, no header; '#' starts a comment, blank lines are skipped.
+Eigen::MatrixXd read_csv_matrix(const fs::path& file, Eigen::Index n) {
+  LineSource src(file);
+  Eigen::MatrixXd a(n, n);
+  Eigen::Index row = 0;
+  std::string line;
+  while (src.next(line)) {
+    std::string_view content(line);
+    content = trim(content.substr(0, content.find('#')));
+    if (content.empty()) continue;
+    if (row == n) src.fail(fmt::format("more than {} rows (the sidecar names {} DOFs)", n, n));
+    Eigen::Index col = 0;
+    size_t start = 0;
+    while (true) {
+      const size_t comma = content.find(',', start);
+      const std::string_view field = trim(content.substr(start, comma == std::string_view::npos ? comma : comma - start));
+      if (col == n) src.fail(fmt::format("more than {} values in the row (the sidecar names {} DOFs)", n, n));
+      a(row, col) = parse_value(field, src, fmt::format("column {}", col + 1));
+      ++col;
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
+    if (col != n) src.fail(fmt::format("found {} values in the row, expected {} (one per DOF)", col, n));
+    ++row;
+  }
+  if (row < n) src.fail(fmt::format("found {} rows, expected {} (one per DOF)", row, n));
+  return a;
+}
+
+// ---------------------------------------------------------------- sidecar
+
+toml::table parse_sidecar(const fs::path& sidecar) {
+  if (!fs::is_regular_file(sidecar)) throw InputError(fmt::format("{}: reduced-model sidecar not found", sidecar.string()));
+  try {
+    return toml::parse_file(sidecar.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}: TOML syntax error: {}", sidecar.string(), e.source().begin.line, e.description()));
+  }
+}
+
+}  // namespace
+
+void write_reduced_model(const ReducedModel& model, const fs::path& sidecar) {
+  // Only the lower triangles are written, so a model that is not symmetric would not survive.
+  validate_reduced_model(model, sidecar.string());
+  const std::string stem = sidecar.stem().string();
+  const fs::path folder = sidecar.parent_path();
+  const std::string k_name = stem + ".K.mtx", m_name = stem + ".M.mtx";
+  write_matrix_market(model.stiffness, folder / k_name, "stiffness K");
+  write_matrix_market(model.mass, folder / m_name, "mass M");
+
+  toml::array dofs;
+  for (const ReducedDof& d : model.dofs) dofs.push_back(d.name());
+  toml::table table{{"format", "matrix_market"}, {"stiffness", k_name}, {"mass", m_name}, {"dofs", std::move(dofs)}};
+  std::ofstream out(sidecar);
+  if (!out) throw InputError(fmt::format("{}: cannot open for writing", sidecar.string()));
+  out << "# bladebench reduced model (SI units): matrices relative to this file, one name per DOF.\n";
+  out << toml::table{{"reduced_model", std::move(table)}} << "\n";
+  if (!out) throw InputError(fmt::format("{}: write failed", sidecar.string()));
+}
+
+ReducedModel read_reduced_model(const fs::path& sidecar) {
+  const toml::table root = parse_sidecar(sidecar);
+  TomlReader top(root, "", sidecar);
+  TomlReader r(top.table("reduced_model"), "reduced_model", sidecar);
+  top.finish();
+  const std::string format = r.choice("format", {"matrix_market", "csv"});
+  const std::string k_file = r.string("stiffness"), m_file = r.string("mass");
+  ReducedModel model;
+  const std::vector<std::string> names = r.string_array("dofs");
+  for (size_t i = 0; i < names.size(); ++i) {
+    const auto dof = ReducedDof::parse(names[i]);
+    if (!dof) r.fail("dofs", fmt::format("entry {} '{}' is not a DOF name ('<node>.x|y|z' or 'mode <n>')", i + 1, names[i]));
+    model.dofs.push_back(*dof);
+  }
+  if (model.dofs.empty()) r.fail("dofs", "names no DOF");
+  r.finish();
+
+  const auto n = static_cast<Eigen::Index>(model.dofs.size());
+  auto read_matrix = [&](const std::string& key, const std::string& name) {
+    const fs::path file = sidecar.parent_path() / name;
+    if (!fs::is_regular_file(file)) r.fail(key, fmt::format("matrix file '{}' not found", file.string()));
+    return format == "csv" ? read_csv_matrix(file, n) : read_matrix_market(file, n);
+  };
+  model.stiffness = read_matrix("stiffness", k_file);
+  model.mass = read_matrix("mass", m_file);
+  validate_reduced_model(model, sidecar.string());
+  return model;
+}
+
+}  // namespace bb

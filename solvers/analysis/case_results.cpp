@@ -9,6 +9,9 @@ CaseResults compute_case_results(const CaseSpec& spec, const Model& model) {
   if (spec.analysis.type == AnalysisType::static_linear) {
     out.static_solution = solve_static(model);
     out.tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, out.static_solution->displacements));
+  } else if (spec.analysis.type == AnalysisType::frf) {
+    out.frf = run_frf(model, spec.analysis.frf, spec.analysis.pairs);
+    out.tables = out.frf->tables;
   } else {
     out.modal = solve_modal(model, spec.analysis.modes, spec.analysis.modal);
     ResultTable frequencies = frequency_table(out.modal->frequencies_hz);

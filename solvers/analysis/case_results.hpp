@@ -2,6 +2,7 @@
 #pragma once
 #include <optional>
 
+#include "analysis/frf_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "cases/case_spec.hpp"
@@ -13,6 +14,7 @@ struct CaseResults {
   ResultTables tables;
   std::optional<StaticSolution> static_solution;
   std::optional<ModalResult> modal;
+  std::optional<FrfOutcome> frf;
 };
 
 CaseResults compute_case_results(const CaseSpec& spec, const Model& model);

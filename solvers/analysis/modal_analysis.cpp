@@ -11,13 +11,25 @@
 
 namespace bb {
 
-ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& base_options) {
+FreeSystem assemble_free_system(const Model& model) {
+  const auto t0 = std::chrono::steady_clock::now();
+  FreeSystem s;
+  s.dofs = number_dofs(model);
+  const GlobalMatrices global = assemble(model.mesh, model.section);
+  s.stiffness = partition(global.stiffness, s.dofs).ff;
+  s.mass = partition(global.mass, s.dofs).ff;
+  s.assembly_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return s;
+}
+
+ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options) {
+  return solve_modal(model, assemble_free_system(model), selection, options);
+}
+
+ModalResult solve_modal(const Model& model, const FreeSystem& system, const ModeSelection& selection,
+                        const ModalOptions& base_options) {
   const Mesh& mesh = model.mesh;
-  auto t0 = std::chrono::steady_clock::now();
-  const DofMap dofs = number_dofs(model);
-  const GlobalMatrices global = assemble(mesh, model.section);
-  const Partitioned k = partition(global.stiffness, dofs);
-  const Partitioned m = partition(global.mass, dofs);
+  const DofMap& dofs = system.dofs;
   ModalOptions options = base_options;
   options.n_modes = selection.lowest;
   options.ordering = ordering_for_dimension(mesh.dim);
@@ -26,16 +38,16 @@ ModalResult solve_modal(const Model& model, const ModeSelection& selection, cons
                                  options.n_modes, dofs.n_free));
   ModalResult result;
   result.n_free_dofs = dofs.n_free;
-  auto t1 = std::chrono::steady_clock::now();
-  result.assembly_seconds = std::chrono::duration<double>(t1 - t0).count();
+  const auto t1 = std::chrono::steady_clock::now();
+  result.assembly_seconds = system.assembly_seconds;
   // A band is found from below: double the mode count until the band's top is passed. The
   // negative shift keeps one Cholesky factor valid; the cost is a few Lanczos restarts.
-  ModalSolution sol = lowest_modes(k.ff, m.ff, options);
+  ModalSolution sol = lowest_modes(system.stiffness, system.mass, options);
   const double two_pi = 2 * std::numbers::pi;
   while (selection.band_max_hz && std::sqrt(std::max(sol.eigenvalues.maxCoeff(), 0.0)) / two_pi < *selection.band_max_hz &&
          options.n_modes < dofs.n_free - 1) {
     options.n_modes = std::min(2 * options.n_modes, dofs.n_free - 1);
-    sol = lowest_modes(k.ff, m.ff, options);
+    sol = lowest_modes(system.stiffness, system.mass, options);
   }
   if (selection.band_min_hz || selection.band_max_hz) {
     std::vector<Eigen::Index> keep;
@@ -60,7 +72,7 @@ ModalResult solve_modal(const Model& model, const ModeSelection& selection, cons
   for (int d = 0; d < mesh.dim; ++d) {
     Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.n_free);
     for (int i = 0; i < dofs.n_free; ++i) r[i] = dofs.free_dofs[i] % mesh.dim == d ? 1.0 : 0.0;
-    const Eigen::VectorXd mr = m.ff * r;
+    const Eigen::VectorXd mr = system.mass * r;
     const double total = r.dot(mr);
     for (Eigen::Index k_mode = 0; k_mode < sol.shapes.cols(); ++k_mode) {
       const double gamma = sol.shapes.col(k_mode).dot(mr);

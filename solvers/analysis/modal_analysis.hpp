@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "assembly/dof_map.hpp"
 #include "linalg/modal_solver.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
@@ -30,8 +31,19 @@ struct ModalResult {
   double solve_seconds = 0.0;
 };
 
+// K and M restricted to the free DOFs, assembled once for analyses that need them several times.
+struct FreeSystem {
+  DofMap dofs;
+  Eigen::SparseMatrix<double> stiffness;
+  Eigen::SparseMatrix<double> mass;
+  double assembly_seconds = 0.0;
+};
+FreeSystem assemble_free_system(const Model& model);
+
 // Throws InputError when more modes are asked than the model has free DOFs.
 ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options);
+ModalResult solve_modal(const Model& model, const FreeSystem& system, const ModeSelection& selection,
+                        const ModalOptions& options);
 
 // The lowest options.n_modes modes.
 ModalResult solve_modal(const Model& model, const ModalOptions& options);

@@ -86,7 +86,7 @@ std::span<const TwoBladeDimensionField> two_blade_dimension_fields() {
 }
 
 std::span<const char* const> two_blade_set_names() {
-  static const char* const names[] = {"T1",           "T2",           "F",             "L1",   "L2",  "R",
+  static const char* const names[] = {"T1",           "T2",           "F",             "L1",   "L2",  "R", "C1", "C2",
                                       "fixture_base", "fixture_left", "fixture_right", "tip1", "tip2"};
   return names;
 }
@@ -227,6 +227,10 @@ TwoBladeArticle two_blade_article(const TwoBladeDimensions& d, ElementType eleme
   a.points["L1"] = {x_n1 + 0.25 * a_c, Y[5] + 0.25 * c, zm};
   a.points["L2"] = {x_n1 + 0.75 * a_c, Y[5] + 0.75 * c, zm};
   a.points["R"] = {d.p + x_n0 - 0.5 * a_c, Y[5] + 0.5 * c, zm};
+  // Tip corners, off the torsion axis: the thesis's remedy for torsional modes that mid-plane
+  // masters cannot see (section 3.3.1.3).
+  a.points["C1"] = {a.tips[0].x_max, Y[8], 0.0};
+  a.points["C2"] = {a.tips[1].x_max, Y[8], 0.0};
   return a;
 }
 

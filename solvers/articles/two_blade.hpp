@@ -109,7 +109,8 @@ struct TwoBladeArticle {
   // Master nodes of the thesis, all at mid-thickness z = t/2: T1, T2 (tip centres, L1035),
   // F (right face of blade 2's airfoil at L_a / 4, force along x; height assumed), L1, L2 (lower
   // and upper point on blade 1's right contact face, at 1/4 and 3/4 of it), R (midpoint of
-  // blade 2's left contact face). Each is a node of the mesh.
+  // blade 2's left contact face); and C1, C2, the tip corners (x_max, tip, z = 0) of blades 1
+  // and 2, off the torsion axis. Each is a node of the mesh.
   std::map<std::string, Eigen::Vector3d> points;
   double fixture_base_y = 0.0;   // Y0: clamped base face
   double fixture_left_x = 0.0;   // XF0: clamped lateral face

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/frf_spec.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
 #include "articles/two_blade.hpp"
@@ -59,13 +60,14 @@ struct LoadSpec {
   SourceLocation at;
 };
 
-enum class AnalysisType { static_linear, modal };
+enum class AnalysisType { static_linear, modal, frf };
 
 struct AnalysisSpec {
   AnalysisType type = AnalysisType::static_linear;
   ModeSelection modes;
   ModalOptions modal;
-  std::optional<ModePairSpec> pairs;  // modal: in-phase / out-of-phase and type of each mode
+  FrfSpec frf;                        // frf: linear forced response
+  std::optional<ModePairSpec> pairs;  // modal, frf: in-phase / out-of-phase and type of each mode
   SourceLocation pairs_at;
 };
 
@@ -73,7 +75,8 @@ struct AnalysisSpec {
 struct CheckSpec {
   std::string name;
   std::string result;                 // result table, e.g. "nodal_displacements"
-  std::filesystem::path reference;    // CSV, resolved against the case file's folder
+  std::filesystem::path reference;    // CSV, resolved against the case file's folder; or empty when
+  std::string reference_result;       // another result table of the same run is the reference
   std::string key;                    // key column of the reference, e.g. "node"
   std::vector<std::pair<std::string, std::string>> compare;  // result column -> reference column
   std::vector<long> keys;             // compare only these reference rows; empty = every row
@@ -108,11 +111,21 @@ struct ModalRefinementStudySpec {
   SourceLocation at;
 };
 
+// Accuracy vs cost of reduced models: fixed-interface modes x master sets, against the full mesh.
+struct RomStudySpec {
+  std::vector<int> modes;                                                   // fixed-interface modes to try
+  std::vector<std::pair<std::string, std::vector<std::string>>> master_sets;  // name -> master points
+  int compare_modes = 10;  // natural frequencies compared with the full mesh's
+  std::string note;
+  SourceLocation at;
+};
+
 struct CaseSpec {
   std::filesystem::path file;
   std::string name;
   std::string title;
   std::string description;
+  std::filesystem::path model_from;  // the case whose material, mesh, sets and constraints these are
   MeshSpec mesh;
   fe::PlaneSection section;
   std::vector<NodeSetSpec> sets;
@@ -122,6 +135,7 @@ struct CaseSpec {
   std::vector<CheckSpec> checks;
   std::optional<RefinementStudySpec> study;
   std::optional<ModalRefinementStudySpec> modal_study;
+  std::optional<RomStudySpec> rom_study;
 };
 
 // Throws InputError naming file, line and key for every malformed or missing entry.

@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include "cases/case_spec.hpp"
+#include "cases/parse_frf.hpp"
 #include "cases/toml_reader.hpp"
 #include "common/errors.hpp"
 
@@ -231,9 +232,13 @@ LoadSpec parse_load(TomlReader r) {
   return l;
 }
 
-AnalysisSpec parse_analysis(TomlReader r) {
+AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
   AnalysisSpec a;
-  const std::string type = r.choice("type", {"static", "modal"});
+  const std::string type = r.choice("type", {"static", "modal", "frf"});
+  if (type == "frf") {
+    a.type = AnalysisType::frf;
+    a.frf = parse_frf(r, folder);
+  }
   if (type == "modal") {
     a.type = AnalysisType::modal;
     if (r.has("band_hz")) {
@@ -251,7 +256,7 @@ AnalysisSpec parse_analysis(TomlReader r) {
     a.modal.tolerance = r.optional_number("tolerance").value_or(a.modal.tolerance);
   }
   if (const toml::table* pairs = r.optional_table("pairs")) {
-    if (a.type != AnalysisType::modal) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\"");
+    if (a.type == AnalysisType::static_linear) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
     TomlReader p(*pairs, r.path() + ".pairs", r.file());
     a.pairs_at = p.location();
     ModePairSpec& spec = a.pairs.emplace();
@@ -270,8 +275,11 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   CheckSpec c;
   c.at = r.location();
   c.name = r.string("name");
-  c.result = r.choice("result", {"nodal_displacements", "frequencies"});
-  c.reference = folder / r.string("reference");
+  c.result = r.string("result");  // whether the analysis makes it is known only when it runs
+  if (r.has("reference") == r.has("reference_result"))
+    r.fail("reference", "give either 'reference' (a CSV file) or 'reference_result' (a result table of this run)");
+  if (r.has("reference")) c.reference = folder / r.string("reference");
+  else c.reference_result = r.string("reference_result");
   c.key = r.string("key");
   TomlReader compare(r.table("compare"), r.path() + ".compare", r.file());
   for (const auto& [k, v] : r.table("compare")) {
@@ -320,6 +328,32 @@ RefinementStudySpec parse_study(TomlReader r) {
   return s;
 }
 
+RomStudySpec parse_rom_study(TomlReader r) {
+  RomStudySpec s;
+  s.at = r.location();
+  r.choice("kind", {"rom_modes"});
+  for (long m : r.integer_array("modes")) {
+    if (m < 0 || m > 1000) r.fail("modes", "mode counts must lie in 0..1000");
+    s.modes.push_back(static_cast<int>(m));
+  }
+  if (s.modes.empty()) r.fail("modes", "needs at least one mode count");
+  TomlReader sets(r.table("master_sets"), r.path() + ".master_sets", r.file());
+  for (const auto& [k, v] : r.table("master_sets")) {
+    const std::string name(k.str());
+    s.master_sets.emplace_back(name, sets.string_array(name));
+    if (s.master_sets.back().second.empty()) sets.fail(name, "needs at least one master point");
+  }
+  sets.finish();
+  if (s.master_sets.empty()) r.fail("master_sets", "needs at least one set, e.g. { thesis = [\"T1\", \"T2\"] }");
+  if (const auto m = r.optional_integer("compare_modes")) {
+    if (*m < 1) r.fail("compare_modes", "must be >= 1");
+    s.compare_modes = static_cast<int>(*m);
+  }
+  s.note = r.optional_string("note").value_or("");
+  r.finish();
+  return s;
+}
+
 ModalRefinementStudySpec parse_modal_study(TomlReader r) {
   ModalRefinementStudySpec s;
   s.at = r.location();
@@ -361,14 +395,38 @@ void for_each_table_in_array(TomlReader& top, const std::string& key, Fn fn) {
 
 }  // namespace
 
-toml::table read_case_table(const fs::path& file) {
+namespace {
+
+toml::table read_case_table(const fs::path& file, int depth) {
   if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: case file not found", file.string()));
+  toml::table root;
   try {
-    return toml::parse_file(file.string());
+    root = toml::parse_file(file.string());
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}: TOML syntax error: {}", file.string(), e.source().begin.line, e.description()));
   }
+  // [case] model_from: material, mesh, sets, constraints and section of another case, so that
+  // several analyses of one article share a single description of it.
+  const toml::node* from = root.at_path("case.model_from").node();
+  if (!from) return root;
+  const SourceLocation at{file, static_cast<int>(from->source().begin.line)};
+  if (!from->is_string()) throw InputError(fmt::format("{}: 'case.model_from': expected a case file name", at.where()));
+  if (depth > 8) throw InputError(fmt::format("{}: 'case.model_from': more than 8 levels (a cycle?)", at.where()));
+  const fs::path base_file = file.parent_path() / from->value<std::string>().value();
+  const toml::table base = read_case_table(base_file, depth + 1);
+  parse_case_table(base, base_file);  // errors in the base name the base file and its lines
+  for (const char* key : {"material", "mesh", "sets", "bc", "section"}) {
+    if (root.contains(key))
+      throw InputError(fmt::format("{}: '{}' is given here and by model_from = \"{}\"; keep one", at.where(), key,
+                                   base_file.filename().string()));
+    if (const toml::node* n = base.get(key)) root.insert(key, *n);
+  }
+  return root;
 }
+
+}  // namespace
+
+toml::table read_case_table(const fs::path& file) { return read_case_table(file, 0); }
 
 CaseSpec parse_case_file(const fs::path& file) { return parse_case_table(read_case_table(file), file); }
 
@@ -382,9 +440,10 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
     spec.name = c.optional_string("name").value_or(file.stem().string());
     spec.title = c.optional_string("title").value_or(spec.name);
     spec.description = c.optional_string("description").value_or("");
+    if (const auto from = c.optional_string("model_from")) spec.model_from = folder / *from;
     c.finish();
   }
-  spec.analysis = parse_analysis(TomlReader(top.table("analysis"), "analysis", file));
+  spec.analysis = parse_analysis(TomlReader(top.table("analysis"), "analysis", file), folder);
   {
     TomlReader m(top.table("material"), "material", file);
     spec.section.youngs_modulus = m.positive("E");
@@ -392,8 +451,8 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
     if (!(spec.section.poisson_ratio > -1 && spec.section.poisson_ratio < 0.5))
       m.fail("nu", fmt::format("must lie in (-1, 0.5), found {}", spec.section.poisson_ratio));
     spec.section.density = m.non_negative("rho", 0.0);
-    if (spec.analysis.type == AnalysisType::modal && !(spec.section.density > 0))
-      m.fail("rho", "must be > 0 for a modal analysis");
+    if (spec.analysis.type != AnalysisType::static_linear && !(spec.section.density > 0))
+      m.fail("rho", "must be > 0 for a modal analysis or a forced response");
     m.finish();
   }
   spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder);
@@ -422,7 +481,13 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   for_each_table_in_array(top, "check", [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
   if (const toml::table* study = top.optional_table("study")) {
     const toml::node* kind = study->get("kind");
-    if (kind && kind->value<std::string>() == "modal_refinement") {
+    if (kind && kind->value<std::string>() == "rom_modes") {
+      spec.rom_study = parse_rom_study(TomlReader(*study, "study", file));
+      if (spec.analysis.type != AnalysisType::frf || !spec.analysis.frf.full_model)
+        top.fail("study", "a rom_modes study needs an frf analysis with the full model");
+      if (spec.rom_study->compare_modes > spec.analysis.frf.full_modes)
+        top.fail("study", "compare_modes exceeds the analysis's full_modes");
+    } else if (kind && kind->value<std::string>() == "modal_refinement") {
       spec.modal_study = parse_modal_study(TomlReader(*study, "study", file));
       const bool solid = spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::hex_blocks;
       if (!solid || spec.analysis.type != AnalysisType::modal)

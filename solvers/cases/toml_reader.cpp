@@ -91,6 +91,13 @@ std::optional<long> TomlReader::optional_integer(const std::string& key) {
   return integer(key);
 }
 
+bool TomlReader::boolean(const std::string& key, bool fallback) {
+  if (!has(key)) return fallback;
+  const toml::node& n = required(key);
+  if (!n.is_boolean()) fail(key, "expected true or false, found " + type_name(n));
+  return n.value<bool>().value();
+}
+
 std::string TomlReader::string(const std::string& key) {
   const toml::node& n = required(key);
   if (!n.is_string()) fail(key, "expected a string, found " + type_name(n));

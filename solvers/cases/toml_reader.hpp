@@ -24,6 +24,7 @@ class TomlReader {
   double positive(const std::string& key);
   long integer(const std::string& key);
   std::optional<long> optional_integer(const std::string& key);
+  bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key);
   std::optional<std::string> optional_string(const std::string& key);
   // One of `choices`; the error lists them.

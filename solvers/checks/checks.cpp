@@ -42,6 +42,36 @@ ReferenceColumn read_reference_column(const std::filesystem::path& file, const s
   return out;
 }
 
+namespace {
+
+// A column of another result table of the same run as the reference (e.g. the full model's
+// peaks for a reduced model's).
+ReferenceColumn result_reference_column(const ResultTables& results, const std::string& table_name,
+                                        const std::string& key_column, const std::string& value_column) {
+  const auto it = results.find(table_name);
+  if (it == results.end()) throw InputError(fmt::format("reference result '{}' is not produced by this analysis", table_name));
+  const ResultTable& t = it->second;
+  if (t.columns.empty() || t.columns[0] != key_column)
+    throw InputError(fmt::format("reference result '{}' is keyed by '{}', not '{}'", table_name,
+                                 t.columns.empty() ? "" : t.columns[0], key_column));
+  const auto col = t.column_index(value_column);
+  if (!col || *col == 0)
+    throw InputError(fmt::format("reference result '{}' has no column '{}' (columns: {})", table_name, value_column,
+                                 fmt::join(t.columns, ", ")));
+  ReferenceColumn ref;
+  for (Eigen::Index i = 0; i < t.values.rows(); ++i) {
+    ref.keys.push_back(std::lround(t.values(i, 0)));
+    ref.values.push_back(t.values(i, *col));
+  }
+  return ref;
+}
+
+std::string reference_name(const CheckSpec& check) {
+  return check.reference_result.empty() ? check.reference.string() : "result " + check.reference_result;
+}
+
+}  // namespace
+
 std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results) {
   auto table_it = results.find(check.result);
   if (table_it == results.end())
@@ -60,19 +90,20 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
                                    check.name, check.result, result_column, fmt::join(table.columns, ", ")));
     ReferenceColumn ref;
     try {
-      ref = read_reference_column(check.reference, check.key, reference_column);
+      ref = check.reference_result.empty() ? read_reference_column(check.reference, check.key, reference_column)
+                                           : result_reference_column(results, check.reference_result, check.key, reference_column);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: check '{}': {}", check.at.where(), check.name, e.what()));
     }
     for (long key : check.keys)
       if (std::find(ref.keys.begin(), ref.keys.end(), key) == ref.keys.end())
         throw InputError(fmt::format("{}: check '{}': key {} = {} is not a row of {}", check.at.where(), check.name,
-                                     check.key, key, check.reference.string()));
+                                     check.key, key, reference_name(check)));
     for (size_t i = 0; i < ref.keys.size(); ++i) {
       if (!check.keys.empty() && std::find(check.keys.begin(), check.keys.end(), ref.keys[i]) == check.keys.end()) continue;
       const int row = table.row_of_key(ref.keys[i]);
       if (row < 0)
-        throw InputError(fmt::format("{}: reference row {} = {} has no match in result '{}'", check.reference.string(),
+        throw InputError(fmt::format("{}: reference row {} = {} has no match in result '{}'", reference_name(check),
                                      check.key, ref.keys[i], check.result));
       CheckEntry e;
       e.group = check.name;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <system_error>
 
@@ -10,9 +11,11 @@
 #include "analysis/mode_pairs.hpp"
 #include "analysis/static_analysis.hpp"
 #include "common/errors.hpp"
+#include "report/frf_plots.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
 #include "study/modal_refinement.hpp"
+#include "study/rom_study.hpp"
 
 namespace bb {
 namespace {
@@ -61,6 +64,41 @@ void describe_model(const CaseSpec& spec, const Model& model, RunRecord& run) {
                                        l.split == LoadSplit::equal ? "equally" : "consistently over the edge"));
 }
 
+void describe_frf(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
+  std::string forces;
+  for (const FrfForce& f : spec.forces) forces += fmt::format("{}{} N on {}", forces.empty() ? "" : ", ", g(f.amplitude), f.dof.name());
+  const std::string damping = spec.damping.kind == FrfDamping::Kind::modal
+                                  ? fmt::format("modal, zeta = {}", g(spec.damping.zeta))
+                                  : fmt::format("Rayleigh, zeta = {} at {} Hz and {} at {} Hz", g(spec.damping.rayleigh_zeta[0]),
+                                                g(spec.damping.rayleigh_hz[0]), g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[1]));
+  run.facts.emplace_back("analysis", fmt::format("linear forced response, {} to {} Hz, {} ({} frequencies), {}; force {}",
+                                                 g(spec.f_min), g(spec.f_max),
+                                                 spec.adaptive ? fmt::format("step {} Hz refined to {} Hz around peaks", g(spec.step), g(spec.min_step))
+                                                               : fmt::format("step {} Hz", g(spec.step)),
+                                                 frf.sweep.frequency_hz.size(), damping, forces));
+  if (frf.full_modal) {
+    run.facts.emplace_back("full mesh", fmt::format("{} free DOFs; modal superposition (eq 3.32) of the lowest {} modes (up to {:.1f} Hz){}",
+                                                    frf.full_modal->n_free_dofs, frf.full_modal->frequencies_hz.size(),
+                                                    frf.full_modal->frequencies_hz.maxCoeff(),
+                                                    spec.residual_flexibility ? " + static residual flexibility of the rest" : ""));
+    run.facts.emplace_back("full mesh: assembly / modes + residual / sweep [s]",
+                           fmt::format("{:.2f} / {:.2f} / {:.4f}", frf.full_modal->assembly_seconds, frf.full_setup_seconds, frf.full_sweep_seconds));
+  }
+  for (size_t i = 0; i < frf.roms.size(); ++i) {
+    const RomOutcome& r = frf.roms[i];
+    const RomSpec& rs = spec.roms[i];
+    const std::string origin = rs.file.empty() ? fmt::format("Craig-Bampton, masters {} (3 DOFs each), {} fixed-interface modes",
+                                                             fmt::join(rs.masters, " "), rs.modes)
+                                               : fmt::format("read from {}", rs.file.filename().string());
+    run.facts.emplace_back(fmt::format("reduced model '{}'", r.name),
+                           fmt::format("{} DOFs, {}; response by {}", r.model.size(), origin,
+                                       rs.method == RomSpec::Method::direct ? "direct solve of D(w)" : "modal superposition"));
+    run.facts.emplace_back(fmt::format("reduced model '{}': constraint modes / fixed-interface modes / projection / sweep [s]", r.name),
+                           fmt::format("{:.2f} / {:.2f} / {:.3f} / {:.4f}", r.timing.constraint_modes_seconds, r.timing.fixed_interface_seconds,
+                                       r.timing.projection_seconds, r.sweep_seconds));
+  }
+}
+
 void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
   const CaseResults results = compute_case_results(spec, model);
   const ResultTables& tables = results.tables;
@@ -74,6 +112,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     const double applied = sol.loads.sum(), reacted = sol.reactions.sum();
     run.facts.emplace_back("force balance |sum f + sum R| [N]", fmt::format("{:.3e}", std::abs(applied + reacted)));
     run.facts.emplace_back("assembly / factor+solve [s]", fmt::format("{:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds));
+  } else if (results.frf) {
+    describe_frf(spec.analysis.frf, *results.frf, run);
   } else {
     const ModeSelection& sel = spec.analysis.modes;
     run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
@@ -107,6 +147,14 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
         run.plots.push_back(plot_deformed_mesh(model.mesh, modal->shapes[k], out, fmt::format("mode{}", k + 1),
                                                fmt::format("Mode {}: {:.4f} Hz", k + 1, modal->frequencies_hz[static_cast<Eigen::Index>(k)])));
     }
+    if (results.frf) {
+      std::vector<std::string> outputs;  // each response once, in order of appearance
+      for (const FrfCurveSet& c : results.frf->curves)
+        for (const std::string& o : c.outputs)
+          if (std::find(outputs.begin(), outputs.end(), o) == outputs.end()) outputs.push_back(o);
+      for (const std::string& o : outputs) run.plots.push_back(plot_frf(*results.frf, o, out, "frf_" + o));
+      if (!results.frf->level_forces.empty()) run.plots.push_back(plot_force_levels(*results.frf, out, "force_levels"));
+    }
     int i = 0;
     for (const CheckSpec& c : spec.checks) run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
   }
@@ -114,6 +162,12 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     run.modal_study = run_modal_refinement_study(spec);
     run.study_note = spec.modal_study->note;
     if (options.plots) run.study_plots.push_back(plot_modal_refinement(*run.modal_study, out, "study_modal"));
+  }
+  if (options.study && spec.rom_study) {
+    run.study_tables.push_back(run_rom_study(spec, model));
+    run.study_note = spec.rom_study->note;
+    write_table_csv(run.study_tables.back(), out / "rom_study.csv");
+    if (options.plots) run.study_plots.push_back(plot_rom_study(run.study_tables.back(), out, "study_rom"));
   }
   if (options.study && spec.study) {
     run.study = run_refinement_study(spec);

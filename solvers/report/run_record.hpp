@@ -41,6 +41,7 @@ struct RunRecord {
   std::string study_note;
   std::vector<Plot> study_plots;
   std::optional<ModalRefinementResult> modal_study;
+  std::vector<ResultTable> study_tables;  // other studies: shown as tables under "Study"
 };
 
 }  // namespace bb

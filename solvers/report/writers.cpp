@@ -31,6 +31,21 @@ std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.4e}", v) :
 // A result table row by row, with its text labels and, where a check compared a row, the
 // reference value, the signed relative error, whether every check of that row passed and the
 // tightest tolerance among them (relative to the reference).
+// Every row of `table` as a markdown table, numbers to 4 significant digits.
+void write_table_rows(std::ofstream& out, const ResultTable& table) {
+  std::vector<std::string> header = table.columns;
+  header.insert(header.end(), table.text_columns.begin(), table.text_columns.end());
+  std::string rule = "|";
+  for (size_t c = 0; c < header.size(); ++c) rule += "---|";
+  out << fmt::format("| {} |\n{}\n", fmt::join(header, " | "), rule);
+  for (Eigen::Index r = 0; r < table.values.rows(); ++r) {
+    std::vector<std::string> cells = {std::to_string(std::lround(table.values(r, 0)))};
+    for (Eigen::Index c = 1; c < table.values.cols(); ++c) cells.push_back(fmt::format("{:.4g}", table.values(r, c)));
+    for (const auto& column : table.text) cells.push_back(column[static_cast<size_t>(r)]);
+    out << fmt::format("| {} |\n", fmt::join(cells, " | "));
+  }
+}
+
 void write_listed_table(std::ofstream& out, const RunRecord& run, const ResultTable& table) {
   std::vector<const CheckEntry*> entries;  // checks of this table
   for (const CheckEntry& e : run.checks)
@@ -166,7 +181,7 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
         if (std::isfinite(e.rel_error) && e.reference != 0.0) max_rel = std::max(max_rel, e.rel_error);
       }
       out << fmt::format("| {} | `{}` | {} | {} | {} | {} | {} | {} | {} |\n", spec.name,
-                         spec.reference.filename().string(), spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol),
+                         spec.reference_result.empty() ? spec.reference.filename().string() : "result " + spec.reference_result, spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol),
                          sci(spec.rel_tol), n, failed, sci(max_abs), sci(max_rel));
     }
     out << "\n<details><summary>Every entry</summary>\n\n";
@@ -236,6 +251,13 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     out << '\n';
     for (const Plot& p : run.study_plots) out << (p.file.empty() ? fmt::format("*{}: not drawn ({})*\n\n", p.title, p.note)
                                                                  : fmt::format("![{}]({})\n\n", p.title, p.file));
+  }
+  for (const ResultTable& t : run.study_tables) {
+    out << fmt::format("## Study: {} (accuracy vs cost)\n\n", t.name);
+    if (!run.study_note.empty()) out << run.study_note << "\n\n";
+    write_table_rows(out, t);
+    out << '\n';
+    plots(run.study_plots);
   }
   if (!out) throw std::runtime_error("failed writing " + file.string());
 }

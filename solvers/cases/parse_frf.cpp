@@ -1,0 +1,142 @@
+#include "cases/parse_frf.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+// "T2.x": a point (one-node set) and a direction.
+PointDof parse_point_dof(TomlReader& r, const std::string& key, const std::string& text) {
+  const size_t dot = text.rfind('.');
+  const std::string axis = dot == std::string::npos ? "" : text.substr(dot + 1);
+  if (dot == 0 || (axis != "x" && axis != "y" && axis != "z"))
+    r.fail(key, fmt::format("'{}' is not a point DOF; write the point and the direction, e.g. \"T2.x\"", text));
+  return {text.substr(0, dot), static_cast<Direction>(axis[0] - 'x')};
+}
+
+std::vector<PointDof> parse_responses(TomlReader& r) {
+  std::vector<PointDof> out;
+  for (const std::string& s : r.string_array("responses")) out.push_back(parse_point_dof(r, "responses", s));
+  if (out.empty()) r.fail("responses", "needs at least one response, e.g. [\"T2.x\"]");
+  return out;
+}
+
+std::vector<FrfForce> parse_forces(TomlReader& r) {
+  std::vector<FrfForce> out;
+  int i = 0;
+  for (const toml::node& n : r.array("forces")) {
+    if (!n.is_table()) r.fail("forces", "write each force as { dof = \"F.x\", amplitude = 5.0 }");
+    TomlReader f(*n.as_table(), fmt::format("{}.forces[{}]", r.path(), i++), r.file());
+    FrfForce force;
+    force.dof = parse_point_dof(f, "dof", f.string("dof"));
+    force.amplitude = f.number("amplitude");
+    if (force.amplitude == 0.0 || !std::isfinite(force.amplitude)) f.fail("amplitude", "must be finite and nonzero");
+    f.finish();
+    out.push_back(force);
+  }
+  if (out.empty()) r.fail("forces", "needs at least one force");
+  return out;
+}
+
+RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
+  RomSpec rom;
+  rom.name = r.string("name");
+  if (rom.name.empty() || rom.name == "full" || rom.name.find_first_of(" ./") != std::string::npos)
+    r.fail("name", fmt::format("'{}': choose a short name without spaces, dots or slashes, other than \"full\"", rom.name));
+  if (r.has("file") == r.has("masters")) r.fail("masters", "give either 'masters' (Craig-Bampton) or 'file' (a reduced model on disk)");
+  if (r.has("file")) {
+    rom.file = folder / r.string("file");
+  } else {
+    rom.masters = r.string_array("masters");
+    if (rom.masters.empty()) r.fail("masters", "needs at least one master point");
+    std::set<std::string> unique(rom.masters.begin(), rom.masters.end());
+    if (unique.size() != rom.masters.size()) r.fail("masters", "a master point is listed twice");
+    const long modes = r.integer("modes");
+    if (modes < 0 || modes > 10000) r.fail("modes", "must lie in [0, 10000]");
+    rom.modes = static_cast<int>(modes);
+  }
+  const std::string method = r.choice("method", {"direct", "modal"}, "direct");
+  rom.method = method == "modal" ? RomSpec::Method::modal : RomSpec::Method::direct;
+  if (r.has("forces")) rom.forces = parse_forces(r);
+  if (r.has("responses")) rom.responses = parse_responses(r);
+  r.finish();
+  return rom;
+}
+
+}  // namespace
+
+FrfSpec parse_frf(TomlReader& r, const fs::path& folder) {
+  FrfSpec s;
+  const std::vector<double> range = r.number_array("frequency_hz");
+  if (range.size() != 2 || !(range[0] >= 0.0) || !(range[0] < range[1]))
+    r.fail("frequency_hz", "expected [f_min, f_max] with 0 <= f_min < f_max");
+  s.f_min = range[0];
+  s.f_max = range[1];
+  s.step = r.positive("step_hz");
+  if ((s.f_max - s.f_min) / s.step > 2e6) r.fail("step_hz", "more than 2 million frequencies: choose a larger step or adaptive = true");
+  s.adaptive = r.boolean("adaptive", false);
+  if (s.adaptive) {
+    s.min_step = r.positive("min_step_hz");
+    if (s.min_step >= s.step) r.fail("min_step_hz", "must be smaller than step_hz");
+  }
+  if (r.has("modal_damping") == r.has("rayleigh"))
+    r.fail("modal_damping", "give either 'modal_damping' (one ratio for every mode) or 'rayleigh' = { frequency_hz = [f1, f2], zeta = [z1, z2] }");
+  if (r.has("modal_damping")) {
+    s.damping.zeta = r.non_negative("modal_damping", 0.0);
+    if (s.damping.zeta >= 1.0) r.fail("modal_damping", "must be below 1 (critical damping)");
+  } else {
+    TomlReader d(r.table("rayleigh"), r.path() + ".rayleigh", r.file());
+    const auto f = d.number_array("frequency_hz");
+    const auto z = d.number_array("zeta");
+    if (f.size() != 2 || !(f[0] > 0) || !(f[1] > f[0])) d.fail("frequency_hz", "expected [f1, f2] with 0 < f1 < f2");
+    if (z.size() != 2 || !(z[0] >= 0) || !(z[1] >= 0) || z[0] >= 1 || z[1] >= 1) d.fail("zeta", "expected [zeta1, zeta2], each in [0, 1)");
+    d.finish();
+    s.damping.kind = FrfDamping::Kind::rayleigh;
+    s.damping.rayleigh_hz = {f[0], f[1]};
+    s.damping.rayleigh_zeta = {z[0], z[1]};
+  }
+  s.full_model = r.boolean("full_model", true);
+  if (s.full_model) {
+    const long modes = r.integer("full_modes");
+    if (modes < 1 || modes > 10000) r.fail("full_modes", "must lie in [1, 10000]");
+    s.full_modes = static_cast<int>(modes);
+    s.residual_flexibility = r.boolean("residual_flexibility", true);
+  }
+  s.forces = parse_forces(r);
+  s.responses = parse_responses(r);
+  if (r.has("force_levels")) {
+    s.force_levels = r.number_array("force_levels");
+    if (s.force_levels.empty()) r.fail("force_levels", "empty list (leave it out for no linearity sweep)");
+    for (double f : s.force_levels)
+      if (!(f > 0) || !std::isfinite(f)) r.fail("force_levels", "every level must be a positive force [N]");
+  }
+  if (r.has("peak_prominence")) {
+    s.peak_prominence = r.positive("peak_prominence");
+    if (s.peak_prominence < 1.0) r.fail("peak_prominence", "must be >= 1");
+  }
+  if (r.has("peak_floor")) {
+    s.peak_floor = r.non_negative("peak_floor", 0.0);
+    if (s.peak_floor >= 1.0) r.fail("peak_floor", "must lie in [0, 1): a fraction of the largest response");
+  }
+  if (r.has("match_tolerance")) s.match_tolerance = r.positive("match_tolerance");
+  if (r.has("rom")) {
+    int i = 0;
+    std::set<std::string> names;
+    for (const toml::node& n : r.array("rom")) {
+      if (!n.is_table()) r.fail("rom", "write each reduced model as a [[analysis.rom]] table");
+      TomlReader rr(*n.as_table(), fmt::format("{}.rom[{}]", r.path(), i++), r.file());
+      s.roms.push_back(parse_rom(rr, folder));
+      if (!names.insert(s.roms.back().name).second) rr.fail("name", fmt::format("a reduced model named '{}' exists already", s.roms.back().name));
+    }
+  }
+  if (!s.full_model && s.roms.empty()) r.fail("full_model", "with full_model = false, give at least one [[analysis.rom]]");
+  return s;
+}
+
+}  // namespace bb

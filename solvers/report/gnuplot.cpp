@@ -1,0 +1,47 @@
+#include "report/gnuplot.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kTerminal = "set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'\n";
+
+}  // namespace
+
+std::string gnuplot_quote(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (c == '\'' ? std::string("''") : std::string(1, c));
+  return out;
+}
+
+// Runs gnuplot on `script`; returns the plot or the reason it was not drawn.
+Plot draw(const fs::path& out_dir, const std::string& stem, const std::string& title, const std::string& script) {
+  const fs::path dir = out_dir / "plots";
+  fs::create_directories(dir);
+  const fs::path gp = dir / (stem + ".gp");
+  {
+    std::ofstream out(gp);
+    out << kTerminal << fmt::format("set output '{}.svg'\n", stem) << script;
+  }
+  const std::string cmd = fmt::format("cd '{}' && gnuplot '{}.gp' > '{}.log' 2>&1", dir.string(), stem, stem);
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0 || !fs::exists(dir / (stem + ".svg"))) {
+    return {title, "", fmt::format("gnuplot failed or is not installed; see plots/{}.log", stem)};
+  }
+  fs::remove(dir / (stem + ".log"));
+  return {title, fmt::format("plots/{}.svg", stem), ""};
+}
+
+std::ofstream open_plot_data(const fs::path& out_dir, const std::string& stem) {
+  fs::create_directories(out_dir / "plots");
+  std::ofstream out(out_dir / "plots" / (stem + ".dat"));
+  out.precision(12);
+  return out;
+}
+
+}  // namespace bb

@@ -1,0 +1,16 @@
+// Accuracy vs cost of Craig-Bampton models (the trade users make): number of fixed-interface
+// modes and master set vs the error of the first natural frequencies and of the FRF peaks, vs
+// reduction time and time per frequency, all against the full mesh of the case.
+#pragma once
+#include "cases/case_spec.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+// One row per master set x mode count: key "variant"; columns master_points, modes, rom_dofs,
+// max_freq_error, rms_freq_error (first compare_modes, by index), peak_freq_error,
+// peak_amp_error (first peak of each response, the worst), reduction_s, solve_us_per_frequency;
+// text column master_set.
+ResultTable run_rom_study(const CaseSpec& spec, const Model& model);
+
+}  // namespace bb

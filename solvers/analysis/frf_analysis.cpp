@@ -300,8 +300,18 @@ ResultTable rom_frequency_table(const RomOutcome& rom) {
 
 }  // namespace
 
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs) {
-  FrfOutcome o;
+struct PreparedFrf {
+  std::optional<ModalResult> full_modal;
+  std::vector<ModeLabel> labels;
+  std::optional<FullResponse> full;
+  std::vector<RomResponse> roms;
+  std::vector<FrfCurveSet> curves;
+  int columns = 0;
+  double full_setup_seconds = 0.0;
+};
+
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs) {
+  auto p = std::make_shared<PreparedFrf>();
   const FreeSystem system = assemble_free_system(model);
   // Every named point first: a typo must not wait for the eigensolver.
   for (const FrfForce& f : spec.forces) free_index(model, system, f.dof);
@@ -311,36 +321,52 @@ FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<
     for (const FrfForce& f : rom.forces) free_index(model, system, f.dof);
     for (const PointDof& d : rom.responses) free_index(model, system, d);
   }
-  std::vector<ModeLabel> labels;
-  std::optional<FullResponse> full;
   if (spec.full_model) {
     const auto t0 = Clock::now();
     ModeSelection lowest;
     lowest.lowest = spec.full_modes;
     ModalOptions options;
     options.ordering = ordering_for_dimension(model.mesh.dim);
-    o.full_modal = solve_modal(model, system, lowest, options);
-    if (pairs) labels = label_mode_pairs(model, *o.full_modal, *pairs);
-    full = full_response(model, system, spec, *o.full_modal);
-    o.full_setup_seconds = seconds_since(t0);
-    ResultTable frequencies = frequency_table(o.full_modal->frequencies_hz);
-    if (pairs) add_mode_labels(frequencies, labels);
-    o.tables.emplace("frequencies", std::move(frequencies));
-  }
-  std::vector<RomResponse> roms;
-  for (const RomSpec& rom : spec.roms) roms.push_back(reduced_response(model, system, spec, rom));
-
-  int column = 0;
-  if (full) {
+    p->full_modal = solve_modal(model, system, lowest, options);
+    if (pairs) p->labels = label_mode_pairs(model, *p->full_modal, *pairs);
+    p->full = full_response(model, system, spec, *p->full_modal);
+    p->full_setup_seconds = seconds_since(t0);
     std::vector<std::string> outputs;
     for (const PointDof& d : spec.responses) outputs.push_back(d.name());
-    o.curves.push_back({"full", outputs, column});
-    column += static_cast<int>(outputs.size());
+    p->curves.push_back({"full", outputs, p->columns});
+    p->columns += static_cast<int>(outputs.size());
   }
-  for (const RomResponse& r : roms) {
-    o.curves.push_back({r.outcome.name, r.outputs, column});
-    column += static_cast<int>(r.outputs.size());
+  for (const RomSpec& rom : spec.roms) {
+    p->roms.push_back(reduced_response(model, system, spec, rom));
+    p->curves.push_back({rom.name, p->roms.back().outputs, p->columns});
+    p->columns += static_cast<int>(p->roms.back().outputs.size());
   }
+  return p;
+}
+
+const std::vector<FrfCurveSet>& frf_curves(const PreparedFrf& prepared) { return prepared.curves; }
+
+Eigen::VectorXcd frf_respond(const PreparedFrf& p, size_t curve, double frequency_hz) {
+  const double omega = kTwoPi * frequency_hz;
+  const size_t rom = p.full ? curve - 1 : curve;
+  if (p.full && curve == 0) return p.full->receptance.at(omega) * p.full->force.cast<std::complex<double>>();
+  return p.roms.at(rom).at(omega);
+}
+
+FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
+  FrfOutcome o;
+  o.full_modal = p.full_modal;
+  o.full_setup_seconds = p.full_setup_seconds;
+  o.curves = p.curves;
+  const std::vector<ModeLabel>& labels = p.labels;
+  const std::optional<FullResponse>& full = p.full;
+  const std::vector<RomResponse>& roms = p.roms;
+  if (o.full_modal) {
+    ResultTable frequencies = frequency_table(o.full_modal->frequencies_hz);
+    if (!labels.empty()) add_mode_labels(frequencies, labels);
+    o.tables.emplace("frequencies", std::move(frequencies));
+  }
+  const int column = p.columns;
   std::vector<double> rom_seconds(roms.size(), 0.0);
   const ResponseAt response = [&](double f_hz) {
     const double omega = kTwoPi * f_hz;
@@ -365,8 +391,8 @@ FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<
   o.sweep = spec.adaptive ? adaptive_sweep(response, spec.f_min, spec.f_max, spec.step, spec.min_step)
                           : sweep(response, fixed_grid(spec.f_min, spec.f_max, spec.step));
   for (size_t i = 0; i < roms.size(); ++i) {
-    roms[i].outcome.sweep_seconds = rom_seconds[i];
     o.roms.push_back(roms[i].outcome);
+    o.roms.back().sweep_seconds = rom_seconds[i];
   }
   o.tables.emplace("frf", frf_table(o));
   for (const FrfCurveSet& c : o.curves) {
@@ -415,6 +441,10 @@ FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<
     o.tables.emplace("linearity", std::move(t));
   }
   return o;
+}
+
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs) {
+  return sweep_frf(*prepare_frf(model, spec, pairs), spec);
 }
 
 }  // namespace bb

@@ -2,6 +2,7 @@
 // static residual of the truncated modes) and any number of reduced models (Craig-Bampton or
 // imported), swept over one frequency grid, with peaks and the modes they belong to.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,7 +44,17 @@ struct FrfOutcome {
   std::vector<Eigen::VectorXd> level_amplitudes;
 };
 
-// Throws InputError for points that are not one-node sets, constrained DOFs, masters that repeat,
+// The models of an analysis made ready to respond (modes, residual flexibility, reductions):
+// the expensive part, done once. Throws as run_frf.
+struct PreparedFrf;
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs);
+const std::vector<FrfCurveSet>& frf_curves(const PreparedFrf& prepared);
+// The outputs of model `curve` (an index into frf_curves) at one frequency, for the spec's forces.
+Eigen::VectorXcd frf_respond(const PreparedFrf& prepared, size_t curve, double frequency_hz);
+// The sweep, peaks, mode matching and linearity levels of `spec` on prepared models.
+FrfOutcome sweep_frf(const PreparedFrf& prepared, const FrfSpec& spec);
+
+// prepare_frf + sweep_frf. Throws InputError for points that are not one-node sets, constrained DOFs, masters that repeat,
 // responses or forces a reduced model does not hold; SolverError from the solvers.
 FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs);
 

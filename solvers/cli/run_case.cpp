@@ -11,6 +11,7 @@
 #include "analysis/mode_pairs.hpp"
 #include "analysis/static_analysis.hpp"
 #include "common/errors.hpp"
+#include "reduction/reduced_model_io.hpp"
 #include "report/frf_plots.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
@@ -138,6 +139,16 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     write_table_csv(table, out / (name + ".csv"));
     run.tables.push_back(name + ".csv");
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);
+  }
+  if (results.frf) {
+    // Reduced models built here are written out, so they can be read back (`file = ...`) or used elsewhere.
+    for (const RomOutcome& r : results.frf->roms) {
+      if (r.model.recovery.size() == 0) continue;  // read from a file: nothing new
+      const fs::path sidecar = out / "reduced_models" / (r.name + ".toml");
+      fs::create_directories(sidecar.parent_path());
+      write_reduced_model(r.model, sidecar);
+      run.tables.push_back("reduced_models/" + r.name + ".toml");
+    }
   }
   if (options.plots) {
     if (results.static_solution)

@@ -314,12 +314,16 @@ std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec
   auto p = std::make_shared<PreparedFrf>();
   const FreeSystem system = assemble_free_system(model);
   // Every named point first: a typo must not wait for the eigensolver.
-  for (const FrfForce& f : spec.forces) free_index(model, system, f.dof);
-  for (const PointDof& d : spec.responses) free_index(model, system, d);
+  // Points of reduced models read from files name their DOFs, not mesh nodes.
+  if (spec.full_model) {
+    for (const FrfForce& f : spec.forces) free_index(model, system, f.dof);
+    for (const PointDof& d : spec.responses) free_index(model, system, d);
+  }
   for (const RomSpec& rom : spec.roms) {
+    if (!rom.file.empty()) continue;
     for (const std::string& point : rom.masters) node_of_point(model, point);
-    for (const FrfForce& f : rom.forces) free_index(model, system, f.dof);
-    for (const PointDof& d : rom.responses) free_index(model, system, d);
+    for (const FrfForce& f : rom.forces.empty() ? spec.forces : rom.forces) free_index(model, system, f.dof);
+    for (const PointDof& d : rom.responses.empty() ? spec.responses : rom.responses) free_index(model, system, d);
   }
   if (spec.full_model) {
     const auto t0 = Clock::now();

@@ -50,8 +50,9 @@ double parallelogram(double theta, double amplitude, double kt, double slip_forc
 }
 
 // Describing function of the Jenkins element (Griffin, "Friction damping of resonant stresses in gas
-// turbine engine airfoils", J. Eng. Power 102, 1980; also Yang & Menq's macroslip limit): integrating
-// the loop above against cos and sin over a period,
+// turbine engine airfoils", J. Eng. Power 102, 1980, whose equivalent stiffness and damping of the
+// elastic-Coulomb damper are these coefficients divided by U): integrating the loop above against
+// cos and sin over a period,
 //   a1 = (kt U / pi) (beta - sin(2 beta) / 2),   b1 = -(kt U / pi) sin^2(beta)   (U > F / kt),
 //   a1 = kt U, b1 = 0 (stuck), with cos beta = 1 - 2 F / (kt U).
 // Then W = -pi b1 U = kt U^2 sin^2 beta = 4 F (U - F / kt), the parallelogram's area.

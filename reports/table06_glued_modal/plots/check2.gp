@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'check2.svg'
-set title 'Check: Table VI, modes 1-10 and 13-14 (x-flexure 1-4, z-flexure 1, torsion 1), 5 % target'
+set title 'Check: Table VI, modes 3-10 and 13-14 (x-flexure 2-4, z-flexure 1, torsion 1), 5 % target'
 set xlabel 'entry (order of the report table)'
 set ylabel 'value'
 set key outside right

@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'mode1.svg'
-set multiplot layout 1,2 title 'Mode 1: 175.3225 Hz (displacements x 0.0117)'
+set multiplot layout 1,2 title 'Mode 1: 174.6383 Hz (displacements x 0.0119)'
 set size ratio -1
 set key off
 set title 'front (x-y)'

@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'mode2.svg'
-set multiplot layout 1,2 title 'Mode 2: 175.3323 Hz (displacements x 0.0117)'
+set multiplot layout 1,2 title 'Mode 2: 174.6482 Hz (displacements x 0.0119)'
 set size ratio -1
 set key off
 set title 'front (x-y)'

@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'mode4.svg'
-set multiplot layout 1,2 title 'Mode 4: 930.7171 Hz (displacements x 0.0135)'
+set multiplot layout 1,2 title 'Mode 4: 922.3890 Hz (displacements x 0.0137)'
 set size ratio -1
 set key off
 set title 'front (x-y)'

@@ -110,6 +110,8 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
   r.outcome.name = rom.name;
   if (!rom.file.empty()) {
     r.outcome.model = read_reduced_model(rom.file);
+  } else if (rom.matrices) {
+    r.outcome.model = *rom.matrices;
   } else {
     std::vector<int> masters;
     std::vector<ReducedDof> names;
@@ -312,7 +314,9 @@ struct PreparedFrf {
 
 std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs) {
   auto p = std::make_shared<PreparedFrf>();
-  const FreeSystem system = assemble_free_system(model);
+  // A model of matrices only has no mesh to assemble.
+  FreeSystem system;
+  if (model.mesh.n_nodes() > 0) system = assemble_free_system(model);
   // Every named point first: a typo must not wait for the eigensolver.
   // Points of reduced models read from files name their DOFs, not mesh nodes.
   if (spec.full_model) {
@@ -320,7 +324,7 @@ std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec
     for (const PointDof& d : spec.responses) free_index(model, system, d);
   }
   for (const RomSpec& rom : spec.roms) {
-    if (!rom.file.empty()) continue;
+    if (rom.masters.empty()) continue;
     for (const std::string& point : rom.masters) node_of_point(model, point);
     for (const FrfForce& f : rom.forces.empty() ? spec.forces : rom.forces) free_index(model, system, f.dof);
     for (const PointDof& d : rom.responses.empty() ? spec.responses : rom.responses) free_index(model, system, d);

@@ -3,10 +3,12 @@
 #pragma once
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "model/model.hpp"
+#include "reduction/reduced_model.hpp"
 
 namespace bb {
 
@@ -29,12 +31,13 @@ struct FrfDamping {
   std::array<double, 2> rayleigh_zeta{};
 };
 
-// A reduced model: Craig-Bampton on master points, or matrices from files.
+// A reduced model: Craig-Bampton on master points, matrices from files, or matrices in the case.
 struct RomSpec {
   std::string name;                   // names its columns and tables, e.g. "rom"
   std::vector<std::string> masters;   // point names, all three directions of each, in this order
   int modes = 10;                     // fixed-interface modes
   std::filesystem::path file;         // a reduced-model sidecar (reduction/reduced_model_io.hpp) instead
+  std::optional<ReducedModel> matrices;  // or matrices written in the case (a lumped model)
   enum class Method { direct, modal } method = Method::direct;
   std::vector<FrfForce> forces;       // empty: the analysis's
   std::vector<PointDof> responses;    // empty: the analysis's

@@ -265,6 +265,7 @@ Model build_model(const CaseSpec& spec) {
       break;
     }
     case MeshSpec::Kind::two_blade: model.mesh = build_two_blade(spec.mesh, model.node_sets); break;
+    case MeshSpec::Kind::none: return model;  // the analysis brings its own matrices
     case MeshSpec::Kind::gmsh: {
       require_file(spec.mesh.gmsh_file, spec.mesh.at);
       const ElementType linear = spec.mesh.element == ElementType::hex20 ? ElementType::hex8 : spec.mesh.element;

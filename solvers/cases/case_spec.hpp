@@ -25,7 +25,7 @@ struct SourceLocation {
 };
 
 struct MeshSpec {
-  enum class Kind { mapped_quad, csv, hex_blocks, gmsh, two_blade } kind = Kind::mapped_quad;
+  enum class Kind { mapped_quad, csv, hex_blocks, gmsh, two_blade, none } kind = Kind::mapped_quad;  // none: matrices only
   MappedQuadSpec mapped;
   std::filesystem::path nodes_csv;     // csv: columns id,x,y[,z]
   std::filesystem::path elements_csv;  // csv: columns id,n1..nN

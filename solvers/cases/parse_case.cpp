@@ -444,6 +444,19 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
     c.finish();
   }
   spec.analysis = parse_analysis(TomlReader(top.table("analysis"), "analysis", file), folder);
+  // A model given by matrices alone (reduced models read from files or written inline) needs no mesh.
+  const FrfSpec& frf = spec.analysis.frf;
+  const bool matrices_only = spec.analysis.type == AnalysisType::frf && !frf.full_model &&
+                             std::all_of(frf.roms.begin(), frf.roms.end(), [](const RomSpec& r) { return r.masters.empty(); });
+  if (matrices_only && !top.has("mesh")) {
+    for (const char* key : {"material", "section", "sets", "bc", "load"})
+      if (top.has(key)) top.fail(key, "the model is given by matrices only ([[analysis.rom]] with file or matrices): it takes no mesh data");
+    spec.mesh.kind = MeshSpec::Kind::none;
+    for_each_table_in_array(top, "check", [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
+    top.has("calibration");
+    top.finish();
+    return spec;
+  }
   {
     TomlReader m(top.table("material"), "material", file);
     spec.section.youngs_modulus = m.positive("E");

@@ -44,14 +44,48 @@ std::vector<FrfForce> parse_forces(TomlReader& r) {
   return out;
 }
 
+Eigen::MatrixXd parse_square_matrix(TomlReader& r, const std::string& key, size_t n) {
+  const toml::array& rows = r.array(key);
+  if (rows.size() != n) r.fail(key, fmt::format("needs {} rows, one per DOF in 'dofs', found {}", n, rows.size()));
+  Eigen::MatrixXd m(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  for (size_t i = 0; i < n; ++i) {
+    const toml::array* row = rows[i].as_array();
+    if (!row || row->size() != n) r.fail(key, fmt::format("row {} must be a list of {} numbers", i + 1, n));
+    for (size_t j = 0; j < n; ++j) {
+      const std::optional<double> v = (*row)[j].value<double>();
+      if (!v || !std::isfinite(*v)) r.fail(key, fmt::format("entry ({}, {}) is not a finite number", i + 1, j + 1));
+      m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *v;
+    }
+  }
+  return m;
+}
+
+// A lumped or reduced model written in the case: dofs = ["A.x", ...], stiffness and mass as rows.
+ReducedModel parse_matrices(TomlReader& r) {
+  ReducedModel m;
+  for (const std::string& name : r.string_array("dofs")) {
+    const std::optional<ReducedDof> dof = ReducedDof::parse(name);
+    if (!dof) r.fail("dofs", fmt::format("'{}' is not a DOF name (\"A.x\", or \"mode 3\")", name));
+    m.dofs.push_back(*dof);
+  }
+  if (m.dofs.empty()) r.fail("dofs", "needs at least one DOF");
+  m.stiffness = parse_square_matrix(r, "stiffness", m.dofs.size());
+  m.mass = parse_square_matrix(r, "mass", m.dofs.size());
+  validate_reduced_model(m, r.location("stiffness").where() + ": '" + r.path() + "'");
+  return m;
+}
+
 RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
   RomSpec rom;
   rom.name = r.string("name");
   if (rom.name.empty() || rom.name == "full" || rom.name.find_first_of(" ./") != std::string::npos)
     r.fail("name", fmt::format("'{}': choose a short name without spaces, dots or slashes, other than \"full\"", rom.name));
-  if (r.has("file") == r.has("masters")) r.fail("masters", "give either 'masters' (Craig-Bampton) or 'file' (a reduced model on disk)");
+  if (static_cast<int>(r.has("file")) + static_cast<int>(r.has("masters")) + static_cast<int>(r.has("stiffness")) != 1)
+    r.fail("masters", "give one of 'masters' (Craig-Bampton), 'file' (a reduced model on disk) or 'stiffness' + 'mass' + 'dofs' (matrices)");
   if (r.has("file")) {
     rom.file = folder / r.string("file");
+  } else if (r.has("stiffness")) {
+    rom.matrices = parse_matrices(r);
   } else {
     rom.masters = r.string_array("masters");
     if (rom.masters.empty()) r.fail("masters", "needs at least one master point");

@@ -38,6 +38,13 @@ void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
 
 int worst(int a, int b) { return std::max(a, b); }
 
+// Files under a "data" folder are inputs of cases (CSV meshes, reduced-model sidecars), not cases.
+bool in_data_folder(const std::filesystem::path& file, const std::filesystem::path& root) {
+  for (const auto& part : std::filesystem::relative(file.parent_path(), root))
+    if (part == "data") return true;
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -137,7 +144,8 @@ int main(int argc, char** argv) {
 
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(validate_dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".toml") files.push_back(entry.path());
+    if (entry.is_regular_file() && entry.path().extension() == ".toml" && !in_data_folder(entry.path(), validate_dir))
+      files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   if (files.empty()) {
     std::fprintf(stderr, "error: no *.toml case file under %s\n", validate_dir.c_str());

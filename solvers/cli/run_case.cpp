@@ -41,6 +41,9 @@ void describe_model(const CaseSpec& spec, const Model& model, RunRecord& run) {
       source = fmt::format("{} hexahedral block(s) merged at coincident nodes", spec.mesh.blocks.size());
       break;
     case MeshSpec::Kind::gmsh: source = fmt::format("Gmsh {}", spec.mesh.gmsh_file.filename().string()); break;
+    case MeshSpec::Kind::none:
+      run.facts.emplace_back("model", "no mesh: reduced or lumped models given by their matrices");
+      return;
     case MeshSpec::Kind::two_blade: {
       const TwoBladeDimensions& d = spec.mesh.two_blade;
       source = fmt::format("two-blade article (2 blades, 2 wedges, fixture), refinement {}, {} divisions through t, "

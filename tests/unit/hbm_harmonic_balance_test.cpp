@@ -279,6 +279,8 @@ TEST(HbmContinuation, ImpactResonanceIsFollowedThroughItsFolds) {
     const double residual = (linear->operator_ * p.x + system.contact_forces(p.x).force - linear->load).norm();
     EXPECT_LE(residual, 1.0001 * system.options().tolerance * system.force_scale());
     max_amplitude = std::max(max_amplitude, std::hypot(p.x[2], p.x[4]));
+    if (i > 0 && (p.tangent_omega > 0.0) != (r.points[i - 1].tangent_omega > 0.0))
+      std::printf("  turning point near omega %.2f rad/s, |q0| %.3e m\n", p.omega, std::hypot(p.x[2], p.x[4]));
     if (i > 0) {
       // Continuity: consecutive points are no further apart (scaled) than the step that joined them, plus the corrector.
       const ContinuationPoint& q = r.points[i - 1];
@@ -295,6 +297,16 @@ TEST(HbmContinuation, ImpactResonanceIsFollowedThroughItsFolds) {
   EXPECT_GE(r.turning_points, 2);
   // Past the folds the path has returned to the small-amplitude linear branch.
   EXPECT_GT(r.points.back().omega, 1600.0);
+}
+
+TEST(HbmContinuation, StoppedPathReportsFrequencyAndResidualWithoutNaN) {
+  const HarmonicBalance system(impact_pair(), {.harmonics = 3});
+  const ContinuationResult r = continue_in_frequency(system, {.omega_start = 800.0, .omega_end = 1600.0, .max_points = 5, .progress = {}});
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.points.size(), 5u);
+  EXPECT_NE(r.failure.find("omega ="), std::string::npos) << r.failure;
+  EXPECT_NE(r.failure.find("|R| ="), std::string::npos) << r.failure;
+  for (const ContinuationPoint& p : r.points) EXPECT_TRUE(p.x.allFinite() && std::isfinite(p.omega));
 }
 
 TEST(HbmMultiDof, ExtremeParametersConvergeOrReportFailureWithoutNaN) {

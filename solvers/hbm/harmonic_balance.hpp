@@ -140,6 +140,10 @@ struct CycleEnergy {
 CycleEnergy cycle_energy(const HarmonicBalance& system, const HbmSolution& solution);
 
 // ---- Frequency continuation: tangent predictor + pseudo-arclength corrector in (x, omega). ----
+// Known limit: R is only piecewise smooth (AFT samples switch between stick, slip and lift-off).
+// Where the path meets a kink at a large angle (grazing of a stiff impact, kn >> k) the corrector
+// can stall on the kink; after the step falls below min_step a few larger steps over it are tried,
+// and if they fail the result says so (converged == false, with omega and |R|).
 
 struct ContinuationProgress {
   int point = 0;           // index of the point just accepted

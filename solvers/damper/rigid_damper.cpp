@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <stdexcept>
+
+#include "common/errors.hpp"
 
 namespace bb::damper {
 
@@ -78,6 +81,15 @@ RigidDamper asymmetric_damper(const AsymmetricDamperGeometry& g) {
   d.contacts.push_back({"L2", g.l2, n_l, g.l2_x, g.l2_y});
   d.contacts.push_back({"R", g.r, right_face_normal(g.beta_right_deg), g.r_x, g.r_y});
   return d;
+}
+
+std::pair<int, int> platform_dofs(const ReducedModel& blades, const std::string& label) {
+  const std::optional<int> x = blades.index_of(label, 0), y = blades.index_of(label, 1);
+  if (!x || !y)
+    throw InputError(fmt::format("damper: the blade reduced model has no DOF {}.{}: the platform contact point must "
+                                 "be a master node with x and y translations",
+                                 label, x ? "y" : "x"));
+  return {*x, *y};
 }
 
 Eigen::Vector2d damper_point_displacement(const Eigen::Vector3d& damper_dofs, const Eigen::Vector2d& r) {

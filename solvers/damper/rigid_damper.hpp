@@ -28,7 +28,10 @@
 #pragma once
 #include <Eigen/Dense>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "reduction/reduced_model.hpp"
 
 namespace bb::damper {
 
@@ -78,6 +81,12 @@ struct AsymmetricDamperGeometry {
 // Throws std::invalid_argument if an angle is outside (0, 90) or L1 -> L2 is not along the flat
 // face (relative 1e-9), i.e. the three points do not describe the geometry the normals assume.
 RigidDamper asymmetric_damper(const AsymmetricDamperGeometry& g);
+
+// Indices (x, y) of master node `label`'s in-plane translations in a blade reduced model (its z
+// DOF, if any, plays no part in the planar damper): the blade side of a contact on elastic
+// platforms, e.g. platform_dofs(model, "L1") for the thesis's masters L1, L2, R. Throws InputError
+// naming the label when the model has no such DOF.
+std::pair<int, int> platform_dofs(const ReducedModel& blades, const std::string& label);
 
 // Damper DOF indices in q for a model with blade_dofs blade DOFs.
 inline int damper_x(int blade_dofs) { return blade_dofs; }

@@ -6,9 +6,13 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "damper/rigid_damper.hpp"
+#include "common/errors.hpp"
 #include "damper_support.hpp"
+#include "reduction/reduced_model.hpp"
 
 namespace bb::damper {
 namespace {
@@ -145,6 +149,25 @@ TEST(DamperAssembly, CoupledMatricesAreBlockDiagonalWithTheDamperInertiaAndNoDam
   EXPECT_EQ(f.size(), 9);
   EXPECT_EQ(f(damper_y(6)), 250.0);
   EXPECT_EQ(f.norm(), 250.0);
+}
+
+TEST(DamperGeometry, PlatformPointsOfAReducedModelGiveTheBladeSideOfTheContacts) {
+  ReducedModel m;
+  for (const char* label : {"T1", "L1", "L2", "R"})
+    for (int dir = 0; dir < 3; ++dir) m.dofs.push_back({.label = label, .direction = dir, .mode = 0});
+  m.dofs.push_back({.label = "", .direction = -1, .mode = 1});
+  EXPECT_EQ(platform_dofs(m, "L1"), std::make_pair(3, 4));
+  EXPECT_EQ(platform_dofs(m, "R"), std::make_pair(9, 10));
+  EXPECT_THROW((void)platform_dofs(m, "F"), InputError);
+  AsymmetricDamperGeometry g = asymmetric_geometry();
+  std::tie(g.l1_x, g.l1_y) = platform_dofs(m, "L1");
+  std::tie(g.l2_x, g.l2_y) = platform_dofs(m, "L2");
+  std::tie(g.r_x, g.r_y) = platform_dofs(m, "R");
+  const ContactKinematics k = contact_kinematics(asymmetric_damper(g), m.size());
+  EXPECT_EQ(k.normal.cols(), 16);
+  EXPECT_EQ(k.normal(2, 9), -std::sin(rad(55.0)));  // R's n_x on its blade x DOF
+  EXPECT_EQ(k.normal.block(0, 0, 3, 3).norm(), 0.0);  // T1 plays no part
+  EXPECT_EQ(k.normal.col(5).norm(), 0.0);             // nor any z DOF
 }
 
 TEST(DamperGeometry, InvalidDampersAreRejectedWithTheOffendingValue) {

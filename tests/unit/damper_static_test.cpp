@@ -127,6 +127,32 @@ TEST(DamperStatic, DamperWhoseFlatFaceWouldPullIsReportedAsAMechanism) {
   std::printf("unbalanced damper: %s\n", s.failure.c_str());
 }
 
+TEST(DamperStatic, FlatFacePointThatWouldPullOpensAndTheOthersCarryTheLoad) {
+  // A third point far up the flat face: with all four closed the face's load spreads linearly
+  // along it and the far end would pull; the active set opens it and the three remaining points
+  // carry the loads of their own statics.
+  // The flat face's resultant lies about 2.1 mm up the face from its centre c: L1 and L2 bracket
+  // it closely, L3 lies far down the face, on the other side of their mean.
+  AsymmetricDamperGeometry g = asymmetric_geometry();
+  const Eigen::Vector2d c(-4e-3, 1.5e-3), t(std::cos(rad(40.0)), std::sin(rad(40.0)));
+  g.l1 = c + 1.0e-3 * t;
+  g.l2 = c + 2.4e-3 * t;
+  const RigidDamper three = asymmetric_damper(g);
+  RigidDamper four = three;
+  four.contacts.push_back({"L3", c - 6e-3 * t, three.contacts[0].normal});
+  const double cf = 180.0;
+  const DamperStaticState s = solve_rigid(four, cf, 1e8);
+  ASSERT_TRUE(s.converged) << s.failure;
+  EXPECT_FALSE(s.open[0] || s.open[1] || s.open[2]);
+  EXPECT_TRUE(s.open[3]);
+  EXPECT_EQ(s.normal_preload(3), 0.0);
+  EXPECT_LT(s.normal_displacement(3), 0.0);  // L3 separates: a gap opens there
+  EXPECT_EQ(s.iterations, 2);
+  const Eigen::Vector3d hand = three_point_statics(three, cf);
+  ASSERT_GT(hand.minCoeff(), 0.0);
+  for (Eigen::Index k = 0; k < 3; ++k) EXPECT_NEAR(s.normal_preload(k), hand(k), 1e-10 * hand.norm());
+}
+
 TEST(DamperStatic, ClosedFormHoldsFromSoftToVeryStiffContactsAndFromTinyToLargeCF) {
   const double beta = 35.0;
   const RigidDamper sym = asymmetric_damper(symmetric_geometry(beta));

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "articles/two_blade.hpp"
 #include "damper/rigid_damper.hpp"
 #include "damper_support.hpp"
 
@@ -151,6 +152,32 @@ TEST(DamperStatic, FlatFacePointThatWouldPullOpensAndTheOthersCarryTheLoad) {
   const Eigen::Vector3d hand = three_point_statics(three, cf);
   ASSERT_GT(hand.minCoeff(), 0.0);
   for (Eigen::Index k = 0; k < 3; ++k) EXPECT_NEAR(s.normal_preload(k), hand(k), 1e-10 * hand.norm());
+}
+
+TEST(DamperStatic, TwoBladeArticlePlatformPointsSeatTheDamperWithTheWedgeLoads) {
+  // The article's own contact points (articles/two_blade): L1, L2 at 1/4 and 3/4 of blade 1's
+  // right face, R at the middle of blade 2's left face, mirror images about the line midway
+  // between the faces. A damper with G on that line, at the level of the faces' lower ends, takes
+  // the closed-form wedge loads; the article's points also pass asymmetric_damper's face check.
+  for (const double beta : {30.0, 45.0, 60.0}) {
+    TwoBladeDimensions dims;
+    dims.beta_deg = beta;
+    const TwoBladeArticle a = two_blade_article(dims, ElementType::hex8);
+    const Eigen::Vector2d l1 = a.points.at("L1").head<2>(), l2 = a.points.at("L2").head<2>(),
+                          r = a.points.at("R").head<2>();
+    const Eigen::Vector2d centre = 0.5 * (l1 + l2);
+    const Eigen::Vector2d g_pos(0.5 * (centre.x() + r.x()), a.levels[5]);
+    AsymmetricDamperGeometry g{.mass = 0.05, .inertia = 2e-6, .beta_left_deg = beta, .beta_right_deg = beta,
+                               .l1 = l1 - g_pos, .l2 = l2 - g_pos, .r = r - g_pos};
+    const RigidDamper d = asymmetric_damper(g);
+    const DamperStaticState s = solve_rigid(d, 250.0, 1e9);
+    ASSERT_TRUE(s.converged) << s.failure;
+    const double side = 250.0 / (2.0 * std::cos(rad(beta)));
+    EXPECT_NEAR(s.normal_preload(0), 0.5 * side, 1e-9 * side) << beta;
+    EXPECT_NEAR(s.normal_preload(1), 0.5 * side, 1e-9 * side) << beta;
+    EXPECT_NEAR(s.normal_preload(2), side, 1e-9 * side) << beta;
+    EXPECT_NEAR(s.damper(2), 0.0, 1e-9 * 250.0 / 1e9 / 1e-3) << beta;
+  }
 }
 
 TEST(DamperStatic, ClosedFormHoldsFromSoftToVeryStiffContactsAndFromTinyToLargeCF) {

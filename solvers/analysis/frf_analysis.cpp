@@ -35,9 +35,13 @@ int free_index(const Model& model, const FreeSystem& system, const PointDof& dof
   return eq;
 }
 
+RayleighCoefficients rayleigh_of(const FrfDamping& d) {
+  return fit_rayleigh(kTwoPi * d.rayleigh_hz[0], d.rayleigh_zeta[0], kTwoPi * d.rayleigh_hz[1], d.rayleigh_zeta[1]);
+}
+
 Eigen::VectorXd modal_zetas(const FrfDamping& d, const Eigen::VectorXd& omega) {
   if (d.kind == FrfDamping::Kind::modal) return Eigen::VectorXd::Constant(omega.size(), d.zeta);
-  const RayleighCoefficients c = fit_rayleigh(kTwoPi * d.rayleigh_hz[0], d.rayleigh_zeta[0], kTwoPi * d.rayleigh_hz[1], d.rayleigh_zeta[1]);
+  const RayleighCoefficients c = rayleigh_of(d);
   return (c.alpha / (2 * omega.array().max(1e-300)) + 0.5 * c.beta * omega.array()).matrix();
 }
 
@@ -45,6 +49,8 @@ Eigen::VectorXd modal_zetas(const FrfDamping& d, const Eigen::VectorXd& omega) {
 struct FullResponse {
   ModalReceptance receptance;
   Eigen::VectorXd force;  // amplitudes of the force DOFs
+
+  Eigen::VectorXcd at(double omega) const { return receptance.at(omega) * force.cast<std::complex<double>>(); }
 };
 
 FullResponse full_response(const Model& model, const FreeSystem& system, const FrfSpec& spec, const ModalResult& modal) {
@@ -159,8 +165,7 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
   } else if (spec.damping.kind == FrfDamping::Kind::modal) {
     r.damping = modal_damping_matrix(m.stiffness, m.mass, spec.damping.zeta);
   } else {
-    const FrfDamping& d = spec.damping;
-    const RayleighCoefficients c = fit_rayleigh(kTwoPi * d.rayleigh_hz[0], d.rayleigh_zeta[0], kTwoPi * d.rayleigh_hz[1], d.rayleigh_zeta[1]);
+    const RayleighCoefficients c = rayleigh_of(spec.damping);
     r.damping = c.alpha * m.mass + c.beta * m.stiffness;
   }
   r.outcome.setup_seconds = seconds_since(t0);
@@ -356,9 +361,8 @@ const std::vector<FrfCurveSet>& frf_curves(const PreparedFrf& prepared) { return
 
 Eigen::VectorXcd frf_respond(const PreparedFrf& p, size_t curve, double frequency_hz) {
   const double omega = kTwoPi * frequency_hz;
-  const size_t rom = p.full ? curve - 1 : curve;
-  if (p.full && curve == 0) return p.full->receptance.at(omega) * p.full->force.cast<std::complex<double>>();
-  return p.roms.at(rom).at(omega);
+  if (p.full && curve == 0) return p.full->at(omega);
+  return p.roms.at(p.full ? curve - 1 : curve).at(omega);
 }
 
 FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
@@ -374,33 +378,24 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
     if (!labels.empty()) add_mode_labels(frequencies, labels);
     o.tables.emplace("frequencies", std::move(frequencies));
   }
-  const int column = p.columns;
-  std::vector<double> rom_seconds(roms.size(), 0.0);
+  std::vector<double> curve_seconds(p.curves.size(), 0.0);  // each model's share of the sweep
   const ResponseAt response = [&](double f_hz) {
-    const double omega = kTwoPi * f_hz;
-    Eigen::VectorXcd y(column);
-    Eigen::Index c = 0;
-    if (full) {
+    Eigen::VectorXcd y(p.columns);
+    for (size_t c = 0; c < p.curves.size(); ++c) {
       const auto t0 = Clock::now();
-      const Eigen::VectorXcd x = full->receptance.at(omega) * full->force.cast<std::complex<double>>();
-      y.segment(c, x.size()) = x;
-      c += x.size();
-      o.full_sweep_seconds += seconds_since(t0);
-    }
-    for (size_t i = 0; i < roms.size(); ++i) {
-      const auto t0 = Clock::now();
-      const Eigen::VectorXcd x = roms[i].at(omega);
-      y.segment(c, x.size()) = x;
-      c += x.size();
-      rom_seconds[i] += seconds_since(t0);
+      const FrfCurveSet& curve = p.curves[c];
+      y.segment(curve.first_column, static_cast<Eigen::Index>(curve.outputs.size())) = frf_respond(p, c, f_hz);
+      curve_seconds[c] += seconds_since(t0);
     }
     return y;
   };
   o.sweep = spec.adaptive ? adaptive_sweep(response, spec.f_min, spec.f_max, spec.step, spec.min_step)
                           : sweep(response, fixed_grid(spec.f_min, spec.f_max, spec.step));
+  const size_t first_rom = full ? 1 : 0;
+  if (full) o.full_sweep_seconds = curve_seconds[0];
   for (size_t i = 0; i < roms.size(); ++i) {
     o.roms.push_back(roms[i].outcome);
-    o.roms.back().sweep_seconds = rom_seconds[i];
+    o.roms.back().sweep_seconds = curve_seconds[first_rom + i];
   }
   o.tables.emplace("frf", frf_table(o));
   for (const FrfCurveSet& c : o.curves) {
@@ -424,20 +419,17 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
     t.columns = {"level", "force_n", "peak_amplitude_m", "compliance_m_per_n", "compliance_ratio"};
     t.values.resize(static_cast<Eigen::Index>(spec.force_levels.size()), 5);
     double first_compliance = 0.0;
-    for (size_t l = 0; l < spec.force_levels.size(); ++l) {
+    // The first model with its first force set to `level`: a copy, so the prepared models stay as they are.
+    auto first_output_at_level = [&](auto model, double level) {
+      model.force[0] = level;
       Eigen::VectorXd amplitude(static_cast<Eigen::Index>(o.sweep.frequency_hz.size()));
-      if (full) {
-        FullResponse level = *full;
-        level.force[0] = spec.force_levels[l];
-        for (size_t i = 0; i < o.sweep.frequency_hz.size(); ++i)
-          amplitude[static_cast<Eigen::Index>(i)] =
-              std::abs((level.receptance.at(kTwoPi * o.sweep.frequency_hz[i]) * level.force.cast<std::complex<double>>())[0]);
-      } else {
-        RomResponse level = roms.front();
-        level.force[0] = spec.force_levels[l];
-        for (size_t i = 0; i < o.sweep.frequency_hz.size(); ++i)
-          amplitude[static_cast<Eigen::Index>(i)] = std::abs(level.at(kTwoPi * o.sweep.frequency_hz[i])[0]);
-      }
+      for (size_t i = 0; i < o.sweep.frequency_hz.size(); ++i)
+        amplitude[static_cast<Eigen::Index>(i)] = std::abs(model.at(kTwoPi * o.sweep.frequency_hz[i])[0]);
+      return amplitude;
+    };
+    for (size_t l = 0; l < spec.force_levels.size(); ++l) {
+      Eigen::VectorXd amplitude = full ? first_output_at_level(*full, spec.force_levels[l])
+                                       : first_output_at_level(roms.front(), spec.force_levels[l]);
       const double peak = amplitude.maxCoeff();
       const double compliance = peak / spec.force_levels[l];
       if (l == 0) first_compliance = compliance;

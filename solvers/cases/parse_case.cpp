@@ -397,6 +397,45 @@ void for_each_table_in_array(TomlReader& top, const std::string& key, Fn fn) {
 
 namespace {
 
+// Material, mesh, section, node sets, constraints and loads: the model when it has a mesh.
+void parse_model_sections(TomlReader& top, const fs::path& folder, CaseSpec& spec) {
+  const fs::path& file = spec.file;
+  {
+    TomlReader m(top.table("material"), "material", file);
+    spec.section.youngs_modulus = m.positive("E");
+    spec.section.poisson_ratio = m.number("nu");
+    if (!(spec.section.poisson_ratio > -1 && spec.section.poisson_ratio < 0.5))
+      m.fail("nu", fmt::format("must lie in (-1, 0.5), found {}", spec.section.poisson_ratio));
+    spec.section.density = m.non_negative("rho", 0.0);
+    if (spec.analysis.type != AnalysisType::static_linear && !(spec.section.density > 0))
+      m.fail("rho", "must be > 0 for a modal analysis or a forced response");
+    m.finish();
+  }
+  spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder);
+  if (spec.mesh.dim() == 2) {
+    TomlReader s(top.table("section"), "section", file);
+    spec.section.thickness = s.positive("thickness");
+    s.finish();
+  } else if (top.has("section")) {
+    top.fail("section", "a solid mesh takes no [section] (thickness is for plane stress)");
+  }
+  if (const toml::table* sets = top.optional_table("sets")) {
+    for (const auto& [k, v] : *sets) {
+      const std::string name(k.str());
+      if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
+      spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
+      if (spec.mesh.kind == MeshSpec::Kind::two_blade) {
+        const auto reserved = two_blade_set_names();
+        if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
+          throw InputError(fmt::format("{}: 'sets.{}': the two_blade mesh defines this set itself ({}); choose another name",
+                                       spec.sets.back().at.where(), name, fmt::join(reserved, ", ")));
+      }
+    }
+  }
+  for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
+  for_each_table_in_array(top, "load", [&](TomlReader r) { spec.loads.push_back(parse_load(std::move(r))); });
+}
+
 toml::table read_case_table(const fs::path& file, int depth) {
   if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: case file not found", file.string()));
   toml::table root;
@@ -452,45 +491,9 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
     for (const char* key : {"material", "section", "sets", "bc", "load"})
       if (top.has(key)) top.fail(key, "the model is given by matrices only ([[analysis.rom]] with file or matrices): it takes no mesh data");
     spec.mesh.kind = MeshSpec::Kind::none;
-    for_each_table_in_array(top, "check", [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
-    top.has("calibration");
-    top.finish();
-    return spec;
+  } else {
+    parse_model_sections(top, folder, spec);
   }
-  {
-    TomlReader m(top.table("material"), "material", file);
-    spec.section.youngs_modulus = m.positive("E");
-    spec.section.poisson_ratio = m.number("nu");
-    if (!(spec.section.poisson_ratio > -1 && spec.section.poisson_ratio < 0.5))
-      m.fail("nu", fmt::format("must lie in (-1, 0.5), found {}", spec.section.poisson_ratio));
-    spec.section.density = m.non_negative("rho", 0.0);
-    if (spec.analysis.type != AnalysisType::static_linear && !(spec.section.density > 0))
-      m.fail("rho", "must be > 0 for a modal analysis or a forced response");
-    m.finish();
-  }
-  spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder);
-  if (spec.mesh.dim() == 2) {
-    TomlReader s(top.table("section"), "section", file);
-    spec.section.thickness = s.positive("thickness");
-    s.finish();
-  } else if (top.has("section")) {
-    top.fail("section", "a solid mesh takes no [section] (thickness is for plane stress)");
-  }
-  if (const toml::table* sets = top.optional_table("sets")) {
-    for (const auto& [k, v] : *sets) {
-      const std::string name(k.str());
-      if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
-      spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
-      if (spec.mesh.kind == MeshSpec::Kind::two_blade) {
-        const auto reserved = two_blade_set_names();
-        if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
-          throw InputError(fmt::format("{}: 'sets.{}': the two_blade mesh defines this set itself ({}); choose another name",
-                                       spec.sets.back().at.where(), name, fmt::join(reserved, ", ")));
-      }
-    }
-  }
-  for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
-  for_each_table_in_array(top, "load", [&](TomlReader r) { spec.loads.push_back(parse_load(std::move(r))); });
   for_each_table_in_array(top, "check", [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
   if (const toml::table* study = top.optional_table("study")) {
     const toml::node* kind = study->get("kind");

@@ -10,6 +10,17 @@ namespace bb {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// Title and axes of an amplitude-vs-frequency plot (log amplitude).
+std::string amplitude_axes(const std::string& title) {
+  return fmt::format("set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
+                     "set ylabel 'amplitude [m]'\nset grid\nset key outside right\n",
+                     gnuplot_quote(title));
+}
+
+}  // namespace
+
 Plot plot_frf(const FrfOutcome& frf, const std::string& output, const fs::path& out_dir, const std::string& stem) {
   std::vector<std::pair<std::string, Eigen::Index>> curves;  // model, sweep column
   for (const FrfCurveSet& c : frf.curves)
@@ -27,9 +38,7 @@ Plot plot_frf(const FrfOutcome& frf, const std::string& output, const fs::path& 
     }
   }
   const std::string title = fmt::format("Response {} (amplitude)", output);
-  std::string script = fmt::format("set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
-                                   "set ylabel 'amplitude [m]'\nset grid\nset key outside right\n",
-                                   gnuplot_quote(title));
+  std::string script = amplitude_axes(title);
   const double f0 = frf.sweep.frequency_hz.front(), f1 = frf.sweep.frequency_hz.back();
   script += fmt::format("set xrange [{}:{}]\n", f0, f1);
   if (frf.full_modal)
@@ -59,9 +68,7 @@ Plot plot_force_levels(const FrfOutcome& frf, const fs::path& out_dir, const std
   }
   const FrfCurveSet& first = frf.curves.front();
   const std::string title = fmt::format("Response {} ({}) at each force level", first.outputs.front(), first.model);
-  std::string script = fmt::format("set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
-                                   "set ylabel 'amplitude [m]'\nset grid\nset key outside right\nplot ",
-                                   gnuplot_quote(title));
+  std::string script = amplitude_axes(title) + "plot ";
   for (size_t i = 0; i < frf.level_forces.size(); ++i)
     script += fmt::format("{}'{}.dat' using 1:{} with lines title 'Fe = {:g} N'", i ? ", \\\n     " : "", stem, i + 2, frf.level_forces[i]);
   script += '\n';

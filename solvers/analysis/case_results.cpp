@@ -4,11 +4,14 @@
 
 namespace bb {
 
-CaseResults compute_case_results(const CaseSpec& spec, const Model& model) {
+CaseResults compute_case_results(const CaseSpec& spec, const Model& model, const HbmProgress& progress) {
   CaseResults out;
   if (spec.analysis.type == AnalysisType::static_linear) {
     out.static_solution = solve_static(model);
     out.tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, out.static_solution->displacements));
+  } else if (spec.analysis.type == AnalysisType::hbm) {
+    out.hbm = run_hbm(model, spec.analysis.hbm, progress);
+    out.tables = out.hbm->tables;
   } else if (spec.analysis.type == AnalysisType::frf) {
     out.frf = run_frf(model, spec.analysis.frf, spec.analysis.pairs);
     out.tables = out.frf->tables;

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "analysis/frf_analysis.hpp"
+#include "analysis/hbm_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "cases/case_spec.hpp"
@@ -15,8 +16,10 @@ struct CaseResults {
   std::optional<StaticSolution> static_solution;
   std::optional<ModalResult> modal;
   std::optional<FrfOutcome> frf;
+  std::optional<HbmOutcome> hbm;
 };
 
-CaseResults compute_case_results(const CaseSpec& spec, const Model& model);
+// `progress` receives the progress lines of long sweeps (none when empty).
+CaseResults compute_case_results(const CaseSpec& spec, const Model& model, const HbmProgress& progress = {});
 
 }  // namespace bb

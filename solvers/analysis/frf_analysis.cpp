@@ -114,23 +114,7 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
   const auto t0 = Clock::now();
   RomResponse r;
   r.outcome.name = rom.name;
-  if (!rom.file.empty()) {
-    r.outcome.model = read_reduced_model(rom.file);
-  } else if (rom.matrices) {
-    r.outcome.model = *rom.matrices;
-  } else {
-    std::vector<int> masters;
-    std::vector<ReducedDof> names;
-    for (const std::string& point : rom.masters)
-      for (Direction d = 0; d < model.mesh.dim; ++d) {
-        masters.push_back(free_index(model, system, {point, d}));
-        names.push_back({point, d, 0});
-      }
-    CraigBamptonOptions options;
-    options.n_modes = rom.modes;
-    options.ordering = ordering_for_dimension(model.mesh.dim);
-    r.outcome.model = craig_bampton(system.stiffness, system.mass, masters, names, options, &r.outcome.timing);
-  }
+  r.outcome.model = build_reduced_model(model, system, rom, &r.outcome.timing);
   const ReducedModel& m = r.outcome.model;
   const std::vector<FrfForce>& forces = rom.forces.empty() ? spec.forces : rom.forces;
   const std::vector<PointDof>& responses = rom.responses.empty() ? spec.responses : rom.responses;
@@ -162,11 +146,8 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
     for (size_t i = 0; i < r.out.size(); ++i) h.shapes_out.row(static_cast<Eigen::Index>(i)) = eig.eigenvectors().row(r.out[i]);
     for (size_t j = 0; j < r.in.size(); ++j) h.shapes_in.row(static_cast<Eigen::Index>(j)) = eig.eigenvectors().row(r.in[j]);
     r.modal = std::move(h);
-  } else if (spec.damping.kind == FrfDamping::Kind::modal) {
-    r.damping = modal_damping_matrix(m.stiffness, m.mass, spec.damping.zeta);
   } else {
-    const RayleighCoefficients c = rayleigh_of(spec.damping);
-    r.damping = c.alpha * m.mass + c.beta * m.stiffness;
+    r.damping = damping_matrix(spec.damping, m);
   }
   r.outcome.setup_seconds = seconds_since(t0);
   return r;
@@ -306,6 +287,28 @@ ResultTable rom_frequency_table(const RomOutcome& rom) {
 }
 
 }  // namespace
+
+ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, const RomSpec& rom, CraigBamptonTiming* timing) {
+  if (!rom.file.empty()) return read_reduced_model(rom.file);
+  if (rom.matrices) return *rom.matrices;
+  std::vector<int> masters;
+  std::vector<ReducedDof> names;
+  for (const std::string& point : rom.masters)
+    for (Direction d = 0; d < model.mesh.dim; ++d) {
+      masters.push_back(free_index(model, system, {point, d}));
+      names.push_back({point, d, 0});
+    }
+  CraigBamptonOptions options;
+  options.n_modes = rom.modes;
+  options.ordering = ordering_for_dimension(model.mesh.dim);
+  return craig_bampton(system.stiffness, system.mass, masters, names, options, timing);
+}
+
+Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& m) {
+  if (damping.kind == FrfDamping::Kind::modal) return modal_damping_matrix(m.stiffness, m.mass, damping.zeta);
+  const RayleighCoefficients c = rayleigh_of(damping);
+  return c.alpha * m.mass + c.beta * m.stiffness;
+}
 
 struct PreparedFrf {
   std::optional<ModalResult> full_modal;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/frf_spec.hpp"
+#include "analysis/hbm_spec.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
 #include "articles/two_blade.hpp"
@@ -60,13 +61,14 @@ struct LoadSpec {
   SourceLocation at;
 };
 
-enum class AnalysisType { static_linear, modal, frf };
+enum class AnalysisType { static_linear, modal, frf, hbm };
 
 struct AnalysisSpec {
   AnalysisType type = AnalysisType::static_linear;
   ModeSelection modes;
   ModalOptions modal;
   FrfSpec frf;                        // frf: linear forced response
+  HbmSpec hbm;                        // hbm: nonlinear forced response (harmonic balance)
   std::optional<ModePairSpec> pairs;  // modal, frf: in-phase / out-of-phase and type of each mode
   SourceLocation pairs_at;
 };

@@ -7,6 +7,7 @@
 
 #include "cases/case_spec.hpp"
 #include "cases/parse_frf.hpp"
+#include "cases/parse_hbm.hpp"
 #include "cases/toml_reader.hpp"
 #include "common/errors.hpp"
 
@@ -234,10 +235,14 @@ LoadSpec parse_load(TomlReader r) {
 
 AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
   AnalysisSpec a;
-  const std::string type = r.choice("type", {"static", "modal", "frf"});
+  const std::string type = r.choice("type", {"static", "modal", "frf", "hbm"});
   if (type == "frf") {
     a.type = AnalysisType::frf;
     a.frf = parse_frf(r, folder);
+  }
+  if (type == "hbm") {
+    a.type = AnalysisType::hbm;
+    a.hbm = parse_hbm(r, folder);
   }
   if (type == "modal") {
     a.type = AnalysisType::modal;
@@ -256,7 +261,7 @@ AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
     a.modal.tolerance = r.optional_number("tolerance").value_or(a.modal.tolerance);
   }
   if (const toml::table* pairs = r.optional_table("pairs")) {
-    if (a.type == AnalysisType::static_linear) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
+    if (a.type == AnalysisType::static_linear || a.type == AnalysisType::hbm) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
     TomlReader p(*pairs, r.path() + ".pairs", r.file());
     a.pairs_at = p.location();
     ModePairSpec& spec = a.pairs.emplace();
@@ -485,11 +490,12 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   spec.analysis = parse_analysis(TomlReader(top.table("analysis"), "analysis", file), folder);
   // A model given by matrices alone (reduced models read from files or written inline) needs no mesh.
   const FrfSpec& frf = spec.analysis.frf;
-  const bool matrices_only = spec.analysis.type == AnalysisType::frf && !frf.full_model &&
-                             std::all_of(frf.roms.begin(), frf.roms.end(), [](const RomSpec& r) { return r.masters.empty(); });
+  const bool matrices_only = (spec.analysis.type == AnalysisType::frf && !frf.full_model &&
+                              std::all_of(frf.roms.begin(), frf.roms.end(), [](const RomSpec& r) { return r.masters.empty(); })) ||
+                             (spec.analysis.type == AnalysisType::hbm && spec.analysis.hbm.model.masters.empty());
   if (matrices_only && !top.has("mesh")) {
     for (const char* key : {"material", "section", "sets", "bc", "load"})
-      if (top.has(key)) top.fail(key, "the model is given by matrices only ([[analysis.rom]] with file or matrices): it takes no mesh data");
+      if (top.has(key)) top.fail(key, "the model is given by matrices only (a reduced model from a file or written in the case): it takes no mesh data");
     spec.mesh.kind = MeshSpec::Kind::none;
   } else {
     parse_model_sections(top, folder, spec);

@@ -7,8 +7,6 @@
 #include <set>
 
 namespace bb {
-namespace {
-
 namespace fs = std::filesystem;
 
 // "T2.x": a point (one-node set) and a direction.
@@ -44,6 +42,8 @@ std::vector<FrfForce> parse_forces(TomlReader& r) {
   return out;
 }
 
+namespace {
+
 Eigen::MatrixXd parse_square_matrix(TomlReader& r, const std::string& key, size_t n) {
   const toml::array& rows = r.array(key);
   if (rows.size() != n) r.fail(key, fmt::format("needs {} rows, one per DOF in 'dofs', found {}", n, rows.size()));
@@ -75,6 +75,8 @@ ReducedModel parse_matrices(TomlReader& r) {
   return m;
 }
 
+}  // namespace
+
 RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
   RomSpec rom;
   rom.name = r.string("name");
@@ -103,7 +105,26 @@ RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
   return rom;
 }
 
-}  // namespace
+FrfDamping parse_damping(TomlReader& r) {
+  FrfDamping damping;
+  if (r.has("modal_damping") == r.has("rayleigh"))
+    r.fail("modal_damping", "give either 'modal_damping' (one ratio for every mode) or 'rayleigh' = { frequency_hz = [f1, f2], zeta = [z1, z2] }");
+  if (r.has("modal_damping")) {
+    damping.zeta = r.non_negative("modal_damping", 0.0);
+    if (damping.zeta >= 1.0) r.fail("modal_damping", "must be below 1 (critical damping)");
+  } else {
+    TomlReader d(r.table("rayleigh"), r.path() + ".rayleigh", r.file());
+    const auto f = d.number_array("frequency_hz");
+    const auto z = d.number_array("zeta");
+    if (f.size() != 2 || !(f[0] > 0) || !(f[1] > f[0])) d.fail("frequency_hz", "expected [f1, f2] with 0 < f1 < f2");
+    if (z.size() != 2 || !(z[0] >= 0) || !(z[1] >= 0) || z[0] >= 1 || z[1] >= 1) d.fail("zeta", "expected [zeta1, zeta2], each in [0, 1)");
+    d.finish();
+    damping.kind = FrfDamping::Kind::rayleigh;
+    damping.rayleigh_hz = {f[0], f[1]};
+    damping.rayleigh_zeta = {z[0], z[1]};
+  }
+  return damping;
+}
 
 FrfSpec parse_frf(TomlReader& r, const fs::path& folder) {
   FrfSpec s;
@@ -119,22 +140,7 @@ FrfSpec parse_frf(TomlReader& r, const fs::path& folder) {
     s.min_step = r.positive("min_step_hz");
     if (s.min_step >= s.step) r.fail("min_step_hz", "must be smaller than step_hz");
   }
-  if (r.has("modal_damping") == r.has("rayleigh"))
-    r.fail("modal_damping", "give either 'modal_damping' (one ratio for every mode) or 'rayleigh' = { frequency_hz = [f1, f2], zeta = [z1, z2] }");
-  if (r.has("modal_damping")) {
-    s.damping.zeta = r.non_negative("modal_damping", 0.0);
-    if (s.damping.zeta >= 1.0) r.fail("modal_damping", "must be below 1 (critical damping)");
-  } else {
-    TomlReader d(r.table("rayleigh"), r.path() + ".rayleigh", r.file());
-    const auto f = d.number_array("frequency_hz");
-    const auto z = d.number_array("zeta");
-    if (f.size() != 2 || !(f[0] > 0) || !(f[1] > f[0])) d.fail("frequency_hz", "expected [f1, f2] with 0 < f1 < f2");
-    if (z.size() != 2 || !(z[0] >= 0) || !(z[1] >= 0) || z[0] >= 1 || z[1] >= 1) d.fail("zeta", "expected [zeta1, zeta2], each in [0, 1)");
-    d.finish();
-    s.damping.kind = FrfDamping::Kind::rayleigh;
-    s.damping.rayleigh_hz = {f[0], f[1]};
-    s.damping.rayleigh_zeta = {z[0], z[1]};
-  }
+  s.damping = parse_damping(r);
   s.full_model = r.boolean("full_model", true);
   if (s.full_model) {
     const long modes = r.integer("full_modes");

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <system_error>
+
+#include <unistd.h>
 
 #include "analysis/case_results.hpp"
 #include "analysis/modal_analysis.hpp"
@@ -103,8 +106,47 @@ void describe_frf(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
   }
 }
 
+void describe_hbm(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
+  const PreparedHbm& p = hbm.prepared;
+  std::string levels;
+  for (double f : spec.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
+  const std::string damping = spec.damping.kind == FrfDamping::Kind::modal
+                                  ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
+                                  : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
+                                                g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]), g(spec.damping.rayleigh_hz[1]));
+  run.facts.emplace_back("analysis", fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by pseudo-arclength "
+                                                 "continuation; {}", spec.harmonics, spec.time_samples > 0 ? g(spec.time_samples) : "automatic",
+                                                 g(spec.sweep.f_min), g(spec.sweep.f_max), damping));
+  run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
+  std::string contacts;
+  for (const hbm::ContactElement& c : p.model.contacts)
+    contacts += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ", p.contact_names[static_cast<size_t>(&c - p.model.contacts.data())],
+                            g(c.law.kn), g(c.law.kt), g(c.law.mu));
+  run.facts.emplace_back("contacts", contacts);
+  run.facts.emplace_back("model DOFs / linear model DOFs", fmt::format("{} / {}", p.model.mass.rows(), p.blade_dofs));
+  if (p.damper_static) {
+    std::string n0;
+    for (size_t c = 0; c < p.damper->contacts.size(); ++c)
+      n0 += fmt::format("{}{} {:.4g} N{}", n0.empty() ? "" : ", ", p.damper->contacts[c].name, p.damper_static->normal_preload[static_cast<Eigen::Index>(c)],
+                        p.damper_static->open[c] ? " (open)" : "");
+    run.facts.emplace_back("damper static pre-solve: normal loads", n0);
+  }
+  run.facts.emplace_back("setup (reduction + matrices) / all sweeps [s]", fmt::format("{:.2f} / {:.3f}", p.setup_seconds, hbm.sweep_seconds));
+  int reached = 0, points = 0;
+  for (const HbmLevel& l : hbm.levels) {
+    reached += l.path.converged ? 1 : 0;
+    points += static_cast<int>(l.path.points.size());
+    if (!l.path.converged) run.facts.emplace_back(fmt::format("sweep at Fe = {} N stopped", g(l.force)), l.path.failure);
+  }
+  run.facts.emplace_back("sweeps that reached the end / points", fmt::format("{} of {} / {}", reached, hbm.levels.size(), points));
+}
+
 void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
-  const CaseResults results = compute_case_results(spec, model);
+  // Long sweeps report progress on a terminal only (one line, rewritten in place).
+  HbmProgress progress;
+  if (isatty(STDERR_FILENO)) progress = [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
+  const CaseResults results = compute_case_results(spec, model, progress);
+  if (progress) std::fputs("\r\033[K", stderr);
   const ResultTables& tables = results.tables;
   const std::optional<ModalResult>& modal = results.modal;
   if (results.static_solution) {
@@ -118,6 +160,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     run.facts.emplace_back("assembly / factor+solve [s]", fmt::format("{:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds));
   } else if (results.frf) {
     describe_frf(spec.analysis.frf, *results.frf, run);
+  } else if (results.hbm) {
+    describe_hbm(spec.analysis.hbm, *results.hbm, run);
   } else {
     const ModeSelection& sel = spec.analysis.modes;
     run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",

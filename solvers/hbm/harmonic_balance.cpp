@@ -94,7 +94,8 @@ HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options) : model_(st
     }
     if (e.tangential.size() != n || e.normal.size() != n)
       fail(fmt::format("contact {}: a_t and a_n must have {} entries (one per DOF)", k, n));
-    if (!e.tangential.allFinite() || !e.normal.allFinite()) fail(fmt::format("contact {}: a_t, a_n must be finite", k));
+    if (!e.tangential.allFinite() || !e.normal.allFinite() || !std::isfinite(e.tangential_offset))
+      fail(fmt::format("contact {}: a_t, a_n and the tangential offset must be finite", k));
     for (Index i = 0; i < n; ++i)
       if (e.tangential[i] != 0.0 || e.normal[i] != 0.0) touched[static_cast<size_t>(i)] = true;
   }
@@ -186,7 +187,9 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
   Eigen::Map<Eigen::MatrixXd> force(out.force.data(), nc, m);
   for (Index k = 0; k < tangential_c_.rows(); ++k) {
     const Eigen::RowVectorXd at = tangential_c_.row(k), an = normal_c_.row(k);
-    const Eigen::VectorXd u = (at * coefficients).transpose(), v = (an * coefficients).transpose();
+    Eigen::VectorXd u = (at * coefficients).transpose();
+    const Eigen::VectorXd v = (an * coefficients).transpose();
+    u[0] -= model_.contacts[static_cast<size_t>(k)].tangential_offset;
     contact::AftResult r = contact::aft_jenkins(model_.contacts[static_cast<size_t>(k)].law, u, v, aft_);
     out.closed = out.closed && r.closed;
     // g = a_t^T T + a_n^T N, per coefficient.
@@ -248,8 +251,11 @@ std::optional<Eigen::VectorXd> HarmonicBalance::linearized(double omega, bool st
   for (Index k = 0; k < tangential_c_.rows(); ++k) {
     const contact::JenkinsParameters& law = model_.contacts[static_cast<size_t>(k)].law;
     springs += law.kn * normal_c_.row(k).transpose() * normal_c_.row(k);
-    if (stuck) springs += law.kt * tangential_c_.row(k).transpose() * tangential_c_.row(k);
     preload += law.n0 * normal_c_.row(k).transpose();
+    if (stuck) {
+      springs += law.kt * tangential_c_.row(k).transpose() * tangential_c_.row(k);
+      preload -= law.kt * model_.contacts[static_cast<size_t>(k)].tangential_offset * tangential_c_.row(k).transpose();
+    }
   }
   Eigen::MatrixXd a = linear->operator_;
   for (Index j = 0; j < m; ++j) a.block(j * nc, j * nc, nc, nc) += springs;
@@ -386,13 +392,23 @@ HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std
   // amplitude; normal springs only: large amplitude), the better one first. Newton on this
   // piecewise-smooth map can stall on a kink from one start and converge from another; each start
   // gets max_iterations, so a solve costs at most three times that.
-  std::vector<std::pair<Eigen::VectorXd, Evaluation>> starts;
+  HbmSolution best;
+  int iterations = 0;
+  const auto attempt = [&](Eigen::VectorXd x, Evaluation e) {
+    HbmSolution trial = newton(s, *linear, omega, std::move(x), std::move(e));
+    iterations += trial.iterations;
+    const bool converged = trial.converged;
+    if (converged || best.x.size() == 0 || trial.residual < best.residual) best = std::move(trial);
+    best.iterations = iterations;
+    return converged;
+  };
   if (initial) {
     if (initial->size() != s.unknowns())
       throw std::invalid_argument(fmt::format("harmonic balance: initial guess has {} entries, expected {}",
                                               initial->size(), s.unknowns()));
-    starts.emplace_back(*initial, evaluate(s, *linear, *initial));
+    if (attempt(*initial, evaluate(s, *linear, *initial))) return best;
   }
+  // The linear limits only when needed: on a sweep the caller's guess almost always converges.
   std::vector<std::pair<Eigen::VectorXd, Evaluation>> limits;
   for (const bool stuck : {true, false}) {
     const auto guess = s.linearized(omega, stuck);
@@ -401,23 +417,12 @@ HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std
     if (e.ok) limits.emplace_back(*guess, std::move(e));
   }
   std::sort(limits.begin(), limits.end(), [](const auto& a, const auto& b) { return a.second.norm < b.second.norm; });
-  for (auto& l : limits) starts.push_back(std::move(l));
-  if (starts.empty()) {
+  if (limits.empty() && !initial) {
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(s.unknowns());
-    starts.emplace_back(zero, evaluate(s, *linear, zero));
+    limits.emplace_back(zero, evaluate(s, *linear, zero));
   }
-  HbmSolution best;
-  int iterations = 0;
-  for (auto& [x, e] : starts) {
-    HbmSolution trial = newton(s, *linear, omega, std::move(x), std::move(e));
-    iterations += trial.iterations;
-    if (trial.converged) {
-      trial.iterations = iterations;
-      return trial;
-    }
-    if (best.x.size() == 0 || trial.residual < best.residual) best = std::move(trial);
-  }
-  best.iterations = iterations;
+  for (auto& [x, e] : limits)
+    if (attempt(std::move(x), std::move(e))) return best;
   return best;
 }
 
@@ -482,7 +487,7 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
   const double target = target_norm(s);
   const double r_ref = s.force_scale() > 0.0 ? s.force_scale() : 1.0;
 
-  HbmSolution first = solve_at_frequency(s, o.omega_start);
+  HbmSolution first = solve_at_frequency(s, o.omega_start, o.initial);
   if (!first.converged) {
     result.failure = "first point: " + first.failure;
     return result;

@@ -41,6 +41,10 @@ struct ContactElement {
   contact::JenkinsParameters law;  // kn, kt, mu, N0 (validated by contact::validate)
   Eigen::RowVectorXd tangential;   // a_t: u = a_t . q
   Eigen::RowVectorXd normal;       // a_n: v = a_n . q
+  // The slider's rest position: u = a_t . q - tangential_offset enters the law, so a contact that
+  // closed at a static seat (e.g. a damper pressed in by CF with no friction) carries no tangential
+  // force there and a stuck contact stays continuous with one that starts to slip.
+  double tangential_offset = 0.0;  // [m]
 };
 
 struct HbmModel {
@@ -166,6 +170,7 @@ struct ContinuationOptions {
   int easy_iterations = 4;
   int max_corrector_iterations = 25;
   int max_points = 5000;    // hard cap, then failure
+  std::optional<Eigen::VectorXd> initial;  // guess for the first point (e.g. from a static pre-solve)
   std::function<void(const ContinuationProgress&)> progress;  // called per accepted point; may be empty
 };
 

@@ -1,0 +1,544 @@
+#include "analysis/hbm_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <stdexcept>
+
+#include "analysis/frf_analysis.hpp"
+#include "analysis/modal_analysis.hpp"
+#include "common/errors.hpp"
+#include "frf/receptance.hpp"
+
+namespace bb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::Index;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Coordinates of a one-node set.
+std::array<double, 2> point_position(const Model& model, const std::string& point) {
+  const auto it = model.node_sets.find(point);
+  if (it == model.node_sets.end() || it->second.size() != 1)
+    throw InputError(fmt::format("'analysis.damper': '{}' is not a one-node set of the mesh; give the point's 'position'", point));
+  const auto x = model.mesh.coords.row(it->second.front());
+  return {x[0], x[1]};
+}
+
+damper::RigidDamper build_damper(const Model& model, const DamperSpec& spec, const ReducedModel& blades) {
+  damper::RigidDamper d;
+  d.mass = spec.mass;
+  d.inertia = spec.inertia;
+  for (const DamperPointSpec& p : spec.points) {
+    damper::DamperContact c;
+    c.name = p.name;
+    const std::array<double, 2> at = p.position ? *p.position : point_position(model, p.point);
+    c.position = Eigen::Vector2d(at[0] - spec.centre[0], at[1] - spec.centre[1]);
+    c.normal = p.left_face ? damper::left_face_normal(spec.left_face_deg) : damper::right_face_normal(spec.right_face_deg);
+    if (!p.point.empty()) std::tie(c.blade_x, c.blade_y) = damper::platform_dofs(blades, p.point);
+    d.contacts.push_back(c);
+  }
+  try {
+    damper::validate(d, blades.size());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("'analysis.damper': {}", e.what()));
+  }
+  return d;
+}
+
+// Model DOF of a named DOF: the linear model's, or "damper.x" / "damper.y" after them.
+Index dof_index(const PreparedHbm& p, const ReducedModel& blades, const PointDof& dof, const std::string& where) {
+  if (p.damper && dof.point == "damper" && dof.direction < 2) return p.blade_dofs + dof.direction;
+  const auto i = blades.index_of(dof.point, dof.direction);
+  if (!i) throw InputError(fmt::format("'{}': the model has no DOF {}", where, dof.name()));
+  return *i;
+}
+
+Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& blades, const std::vector<std::pair<PointDof, double>>& terms,
+                                   Index n, const std::string& where) {
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n);
+  for (const auto& [dof, c] : terms) row[dof_index(p, blades, dof, where)] += c;
+  return row;
+}
+
+Eigen::VectorXcd solve_linear(const Eigen::MatrixXd& k, const Eigen::MatrixXd& c, const Eigen::MatrixXd& m, double omega,
+                              const Eigen::VectorXcd& f) {
+  const Eigen::MatrixXcd d = k.cast<std::complex<double>>() + std::complex<double>(0.0, omega) * c.cast<std::complex<double>>() -
+                             (omega * omega) * m.cast<std::complex<double>>();
+  return d.partialPivLu().solve(f);
+}
+
+// First-harmonic complex amplitude of each model DOF (Re(Z e^{i theta}) = a cos + b sin).
+Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega) {
+  const Eigen::MatrixXd q = system.recover(x, omega);
+  return q.col(1).cast<std::complex<double>>() - std::complex<double>(0.0, 1.0) * q.col(2).cast<std::complex<double>>();
+}
+
+struct PeakValues {
+  double component = 0.0, amplitude = 0.0;
+};
+
+PeakValues peak_values(const PreparedHbm& p, const Eigen::VectorXcd& z, int kind) {
+  if (!p.ip_oop) return {std::abs(z[p.responses.front()]), std::abs(z[p.responses.front()])};
+  const auto [l, r] = *p.ip_oop;
+  const double c = kind == 0 ? std::abs(z[l] + z[r]) / 2 : std::abs(z[r] - z[l]) / 2;
+  return {c, std::abs(z[r])};
+}
+
+// The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
+// by golden-section search between the path's neighbours of the largest point (where the path does
+// not fold there), each trial a Newton solve from the nearest path point.
+HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, const HbmLevel& level, int kind) {
+  const auto& pts = level.path.points;
+  const Eigen::VectorXd values = p.ip_oop ? level.components.col(kind) : level.amplitude.col(0);
+  Index k = 0;
+  values.maxCoeff(&k);
+  HbmPeak peak;
+  peak.kind = p.ip_oop ? (kind == 0 ? "IP" : "OOP") : "peak";
+  auto solve = [&](double omega) {
+    size_t nearest = 0;
+    for (size_t i = 1; i < pts.size(); ++i)
+      if (std::abs(pts[i].omega - omega) < std::abs(pts[nearest].omega - omega)) nearest = i;
+    return hbm::solve_at_frequency(system, omega, pts[nearest].x);
+  };
+  auto value = [&](const hbm::HbmSolution& s) { return peak_values(p, first_harmonic(system, s.x, s.omega), kind); };
+  hbm::HbmSolution best = solve(pts[static_cast<size_t>(k)].omega);
+  const bool interior = k > 0 && k + 1 < static_cast<Index>(pts.size());
+  if (interior) {
+    double a = pts[static_cast<size_t>(k - 1)].omega, b = pts[static_cast<size_t>(k + 1)].omega;
+    if ((pts[static_cast<size_t>(k)].omega - a) * (b - pts[static_cast<size_t>(k)].omega) > 0) {  // no fold here
+      const double g = (std::sqrt(5.0) - 1) / 2;
+      double best_value = best.converged ? value(best).component : -1.0;
+      double c = b - g * (b - a), d = a + g * (b - a);
+      hbm::HbmSolution sc = solve(c), sd = solve(d);
+      for (int it = 0; it < 14 && sc.converged && sd.converged; ++it) {
+        const double vc = value(sc).component, vd = value(sd).component;
+        if (vc > best_value) best = sc, best_value = vc;
+        if (vd > best_value) best = sd, best_value = vd;
+        if (vc > vd) {
+          b = d, d = c, sd = sc, c = b - g * (b - a), sc = solve(c);
+        } else {
+          a = c, c = d, sc = sd, d = a + g * (b - a), sd = solve(d);
+        }
+      }
+    }
+  }
+  peak.solution = best;
+  peak.frequency_hz = best.omega / kTwoPi;
+  if (best.converged) {
+    const PeakValues v = value(best);
+    peak.component = v.component;
+    peak.amplitude = v.amplitude;
+    peak.energy = hbm::cycle_energy(system, best);
+  }
+  return peak;
+}
+
+}  // namespace
+
+std::string hbm_frf_table_name(double force) { return fmt::format("frf_{:g}", force); }
+
+PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
+  const auto t0 = Clock::now();
+  PreparedHbm p;
+  FreeSystem system;
+  if (!spec.model.masters.empty()) system = assemble_free_system(model);
+  const ReducedModel blades = build_reduced_model(model, system, spec.model, &p.timing);
+  p.blade_dofs = blades.size();
+  for (const ReducedDof& d : blades.dofs) p.dof_names.push_back(d.name());
+  {
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(blades.stiffness, blades.mass, Eigen::EigenvaluesOnly);
+    p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
+  }
+  const Eigen::MatrixXd blade_damping = damping_matrix(spec.damping, blades);
+  hbm::HbmModel& m = p.model;
+  if (spec.damper) {
+    p.damper = build_damper(model, *spec.damper, blades);
+    const damper::CoupledSystem coupled = damper::assemble_coupled_system(blades.mass, blades.stiffness, *p.damper);
+    m.mass = coupled.mass;
+    m.stiffness = coupled.stiffness;
+    for (const char* n : {"damper.x", "damper.y", "damper.theta"}) p.dof_names.push_back(n);
+  } else {
+    m.mass = blades.mass;
+    m.stiffness = blades.stiffness;
+  }
+  const Index n = m.mass.rows();
+  m.damping = Eigen::MatrixXd::Zero(n, n);
+  m.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) = blade_damping;  // the rigid damper has none of its own
+  m.static_load = Eigen::VectorXd::Zero(n);
+  for (const auto& [dof, f] : spec.static_loads) m.static_load[dof_index(p, blades, dof, "analysis.static_loads")] += f;
+  if (spec.damper) {
+    const damper::ContactKinematics kin = damper::contact_kinematics(*p.damper, p.blade_dofs);
+    contact::JenkinsParameters law = spec.damper->law;
+    law.n0 = 0.0;  // contacts just touch at q = 0; CF loads them through the static balance
+    for (size_t c = 0; c < p.damper->contacts.size(); ++c) {
+      m.contacts.push_back({law, kin.tangential.row(static_cast<Index>(c)), kin.normal.row(static_cast<Index>(c))});
+      p.contact_names.push_back(p.damper->contacts[c].name);
+    }
+    m.static_load += damper::centrifugal_load(p.blade_dofs, spec.damper->centrifugal_force);
+    damper::DamperStaticOptions options;
+    options.kn = law.kn;
+    p.damper_static = damper::solve_damper_static(blades.stiffness, *p.damper, m.static_load, options);
+    if (!p.damper_static->converged)
+      throw InputError(fmt::format("'analysis.damper': the static pre-solve (CF = {} N) has no equilibrium: {}",
+                                   spec.damper->centrifugal_force, p.damper_static->failure));
+    // The damper seats without friction (eq 3.49): each slider rests where its contact came to rest.
+    for (hbm::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(p.damper_static->q);
+  }
+  for (const HbmContactSpec& c : spec.contacts) {
+    const std::string where = "analysis.contact '" + c.name + "'";
+    m.contacts.push_back({c.law, combination_row(p, blades, c.tangential, n, where),
+                          c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where)});
+    p.contact_names.push_back(c.name);
+  }
+  m.harmonic_load = Eigen::VectorXcd::Zero(n);
+  for (const FrfForce& f : spec.forces) m.harmonic_load[dof_index(p, blades, f.dof, "analysis.forces")] += f.amplitude / spec.forces.front().amplitude;
+  for (const PointDof& r : spec.responses) {
+    p.responses.push_back(dof_index(p, blades, r, "analysis.responses"));
+    p.response_names.push_back(r.name());
+  }
+  if (spec.ip_oop)
+    p.ip_oop.emplace(dof_index(p, blades, spec.ip_oop->first, "analysis.ip_oop"), dof_index(p, blades, spec.ip_oop->second, "analysis.ip_oop"));
+  try {
+    const hbm::HarmonicBalance check(m, {});  // sizes, contact laws and a nonsingular non-contact part
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("'analysis': {}", e.what()));
+  }
+  p.setup_seconds = seconds_since(t0);
+  return p;
+}
+
+namespace {
+
+hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics) {
+  hbm::HbmModel m = p.model;
+  m.harmonic_load *= force;
+  hbm::HbmOptions options;
+  options.harmonics = harmonics;
+  options.aft.samples = spec.time_samples;
+  options.tolerance = spec.tolerance;
+  return hbm::HarmonicBalance(std::move(m), options);
+}
+
+// The first frequency's solution. Direct Newton from the static pre-solve (or the linear limits)
+// first; when that fails, a homotopy in the force: from 1/64 of it, each converged fraction the
+// start of the next, the increment halved on failure.
+hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, double omega,
+                                const std::optional<Eigen::VectorXd>& initial) {
+  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics);
+  hbm::HbmSolution direct = hbm::solve_at_frequency(system, omega, initial);
+  if (direct.converged) return direct;
+  double done = 1.0 / 64, step = 1.0 / 64;
+  hbm::HbmSolution at = hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics), omega, initial);
+  int total = direct.iterations + at.iterations;
+  while (at.converged && done < 1.0 && step >= 1.0 / 4096) {
+    const double next = std::min(1.0, done + step);
+    hbm::HbmSolution trial = hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics), omega, at.x);
+    total += trial.iterations;
+    if (trial.converged) {
+      at = std::move(trial), done = next, step *= 2;
+    } else {
+      step /= 2;
+    }
+  }
+  if (at.converged && done == 1.0) {
+    at.iterations = total;
+    return at;
+  }
+  direct.failure += fmt::format("; force homotopy reached {:.4g} of the force", at.converged ? done : 0.0);
+  return direct;
+}
+
+}  // namespace
+
+HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, const HbmProgress& progress) {
+  const auto t0 = Clock::now();
+  HbmLevel level;
+  level.force = force;
+  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics);
+  const double omega_start = kTwoPi * spec.sweep.f_min, omega_end = kTwoPi * spec.sweep.f_max;
+  std::optional<Eigen::VectorXd> initial;
+  if (p.damper_static) {
+    // Start from the static pre-solve: the damper seated by CF, the vibration of the stuck limit.
+    initial = system.linearized(omega_start, true);
+    if (initial) {
+      const auto& dofs = system.contact_dofs();
+      for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
+    }
+  }
+  const hbm::HbmSolution first = first_solution(p, spec, force, harmonics, omega_start, initial);
+  hbm::ContinuationResult& path = level.path;
+  auto report = [&](double omega, int point, int iterations) {
+    if (progress && point % 25 == 0)
+      progress(fmt::format("Fe = {:g} N, H = {}: {:.3f} Hz, point {}, {} iterations", force, harmonics, omega / kTwoPi, point, iterations));
+  };
+  if (!first.converged) {
+    path.failure = "first point: " + first.failure;
+  } else if (spec.sweep.method == HbmSweepSpec::Method::arclength) {
+    hbm::ContinuationOptions c;
+    c.omega_start = omega_start;
+    c.omega_end = omega_end;
+    c.initial_step = spec.sweep.initial_step;
+    c.max_step = spec.sweep.max_step;
+    c.min_step = spec.sweep.min_step;
+    c.max_points = 20000;
+    c.initial = first.x;
+    c.progress = [&](const hbm::ContinuationProgress& s) { report(s.omega, s.point, s.iterations); };
+    path = hbm::continue_in_frequency(system, c);
+  } else {
+    // Grid: every frequency solved from the secant extrapolation of the last two converged points.
+    const int n = static_cast<int>(std::floor((spec.sweep.f_max - spec.sweep.f_min) / spec.sweep.step_hz + 1e-9)) + 1;
+    path.points.push_back({first.omega, first.x, first.residual, first.iterations, 0.0, 1.0});
+    path.corrector_iterations = first.iterations;
+    std::vector<double> failed;
+    std::string last_failure;
+    for (int i = 1; i < n; ++i) {
+      const double omega = i + 1 == n ? omega_end : kTwoPi * (spec.sweep.f_min + i * spec.sweep.step_hz);
+      const auto& pts = path.points;
+      Eigen::VectorXd guess = pts.back().x;
+      if (pts.size() >= 2) {
+        const auto& a = pts[pts.size() - 2];
+        const auto& b = pts.back();
+        guess += (b.x - a.x) * ((omega - b.omega) / (b.omega - a.omega));
+      }
+      hbm::HbmSolution s = hbm::solve_at_frequency(system, omega, guess);
+      path.corrector_iterations += s.iterations;
+      if (!s.converged) {
+        // Approach it in smaller steps from the last converged point (a kink between the two).
+        Eigen::VectorXd x = pts.back().x;
+        const double w0 = pts.back().omega;
+        for (int k = 1; k <= 8; ++k) {
+          s = hbm::solve_at_frequency(system, w0 + (omega - w0) * k / 8.0, x);
+          path.corrector_iterations += s.iterations;
+          if (!s.converged) break;
+          x = s.x;
+        }
+      }
+      report(omega, i, s.iterations);
+      if (!s.converged) {
+        failed.push_back(omega / kTwoPi);
+        last_failure = s.failure;
+        ++path.rejected_steps;
+        continue;
+      }
+      path.points.push_back({omega, std::move(s.x), s.residual, s.iterations, 0.0, 1.0});
+    }
+    path.converged = failed.empty();
+    if (!failed.empty())
+      path.failure = fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})", failed.size(), n,
+                                 failed.front(), failed.back(), last_failure);
+  }
+  const size_t n_points = path.points.size();
+  level.amplitude.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
+  if (p.ip_oop) level.components.resize(static_cast<Index>(n_points), 2);
+  for (size_t i = 0; i < n_points; ++i) {
+    const hbm::ContinuationPoint& pt = path.points[i];
+    level.frequency_hz.push_back(pt.omega / kTwoPi);
+    const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
+    for (size_t r = 0; r < p.responses.size(); ++r) level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
+    if (p.ip_oop)
+      for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
+  }
+  if (n_points > 0)
+    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, level, k));
+  level.seconds = seconds_since(t0);
+  return level;
+}
+
+namespace {
+
+ResultTable make_table(const std::string& name, std::vector<std::string> columns, const std::vector<std::vector<double>>& rows) {
+  ResultTable t;
+  t.name = name;
+  t.columns = std::move(columns);
+  t.values.resize(static_cast<Index>(rows.size()), static_cast<Index>(t.columns.size()));
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < rows[i].size(); ++j) t.values(static_cast<Index>(i), static_cast<Index>(j)) = rows[i][j];
+  return t;
+}
+
+// Energy the contact dissipates per cycle: T against u, u's coefficients from its samples (exact:
+// u holds H harmonics and the AFT takes at least 2H + 1 samples).
+double friction_work(const contact::AftResult& a) {
+  const int h = contact::harmonics_of(a.tangential.size());
+  return contact::cycle_work(a.tangential, contact::analysis_matrix(h, static_cast<int>(a.u.size())) * a.u);
+}
+
+// Largest value of column `col` with a parabola through its neighbours: (frequency, value).
+std::pair<double, double> grid_peak(const Eigen::VectorXd& f, const Eigen::VectorXd& v) {
+  Index k = 0;
+  v.maxCoeff(&k);
+  if (k == 0 || k + 1 == v.size()) return {f[k], v[k]};
+  const double y0 = v[k - 1], y1 = v[k], y2 = v[k + 1], h = f[k + 1] - f[k];
+  const double denom = y0 - 2 * y1 + y2;
+  if (denom >= 0) return {f[k], y1};
+  const double s = 0.5 * (y0 - y2) / denom;
+  return {f[k] + s * h, y1 - 0.25 * (y0 - y2) * s};
+}
+
+}  // namespace
+
+HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress) {
+  HbmOutcome o;
+  o.prepared = prepare_hbm(model, spec);
+  const PreparedHbm& p = o.prepared;
+  const auto t0 = Clock::now();
+  for (double f : spec.force_levels) o.levels.push_back(sweep_hbm_level(p, spec, f, spec.harmonics, progress));
+  o.sweep_seconds = seconds_since(t0);
+
+  const double cf = spec.damper ? spec.damper->centrifugal_force : 0.0;
+  // peaks, energy balance, contact states, cost
+  std::vector<std::vector<double>> peak_rows, energy_rows, state_rows, cost_rows;
+  std::vector<std::string> state_contacts, state_peaks;
+  for (size_t l = 0; l < o.levels.size(); ++l) {
+    const HbmLevel& level = o.levels[l];
+    const double key = static_cast<double>(l + 1);
+    std::vector<double> row = {key, level.force};
+    if (spec.damper) row.push_back(cf / level.force);
+    if (level.peaks.empty()) row.insert(row.end(), p.ip_oop ? 6 : 3, std::numeric_limits<double>::quiet_NaN());
+    for (const HbmPeak& pk : level.peaks) {
+      const bool ok = pk.solution.converged;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      row.insert(row.end(), {ok ? pk.frequency_hz : nan, ok ? pk.amplitude : nan, ok ? pk.amplitude / level.force : nan});
+      if (!ok) continue;
+      const hbm::CycleEnergy& e = pk.energy;
+      const size_t k = static_cast<size_t>(&pk - level.peaks.data());
+      energy_rows.push_back({key * 10 + static_cast<double>(k + 1), level.force, pk.frequency_hz, e.excitation, e.viscous, e.friction,
+                             e.normal, std::abs(e.excitation - e.viscous - e.friction - e.normal) / std::max(std::abs(e.excitation), 1e-300)});
+      for (size_t c = 0; c < pk.solution.contacts.size(); ++c) {
+        const contact::AftResult& a = pk.solution.contacts[c];
+        double stick = 0, slip = 0, lift = 0;
+        for (const contact::ContactState s : a.state) {
+          if (s == contact::ContactState::stick) ++stick;
+          else if (s == contact::ContactState::lift_off) ++lift;
+          else ++slip;
+        }
+        const double nt = static_cast<double>(a.state.size());
+        state_rows.push_back({key * 1000 + static_cast<double>(k + 1) * 100 + static_cast<double>(c + 1), level.force, pk.frequency_hz,
+                              stick / nt, slip / nt, lift / nt, a.normal[0], a.n.minCoeff(), a.n.maxCoeff(),
+                              friction_work(a)});
+        state_contacts.push_back(p.contact_names[c]);
+        state_peaks.push_back(pk.kind);
+      }
+    }
+    row.push_back(level.path.converged ? 1.0 : 0.0);
+    peak_rows.push_back(row);
+    cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()), static_cast<double>(level.path.corrector_iterations),
+                         static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
+                         static_cast<double>(level.path.jumps), level.path.converged ? 1.0 : 0.0, level.seconds});
+  }
+  std::vector<std::string> peak_columns = {"level", "fe_n"};
+  if (spec.damper) peak_columns.push_back("cf_over_fe");
+  const std::vector<std::string> kinds = p.ip_oop ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
+  for (const std::string& k : kinds)
+    for (const char* s : {"_hz", "_amp_m", "_amp_per_n"}) peak_columns.push_back(k + s);
+  peak_columns.push_back("reached_end");
+  o.tables.emplace("peaks", make_table("peaks", peak_columns, peak_rows));
+  o.tables.emplace("energy_balance", make_table("energy_balance", {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j", "friction_j",
+                                                                   "normal_j", "relative_error"}, energy_rows));
+  ResultTable states = make_table("contact_states", {"key", "fe_n", "frequency_hz", "stick", "slip", "lift_off", "mean_normal_n",
+                                                     "min_normal_n", "max_normal_n", "friction_work_j"}, state_rows);
+  states.add_text_column("peak", state_peaks);
+  states.add_text_column("contact", state_contacts);
+  o.tables.emplace("contact_states", std::move(states));
+  o.tables.emplace("sweep_cost", make_table("sweep_cost", {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
+                                                           "turning_points", "jumps", "reached_end", "seconds"}, cost_rows));
+  // One FRF table per level: the path points in order.
+  for (const HbmLevel& level : o.levels) {
+    std::vector<std::string> cols = {"point", "frequency_hz"};
+    for (const std::string& r : p.response_names) cols.push_back(r + "_amp_m");
+    if (p.ip_oop) cols.insert(cols.end(), {"ip_component_m", "oop_component_m"});
+    cols.insert(cols.end(), {"residual_n", "iterations"});
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < level.path.points.size(); ++i) {
+      std::vector<double> row = {static_cast<double>(i + 1), level.frequency_hz[i]};
+      for (Index r = 0; r < level.amplitude.cols(); ++r) row.push_back(level.amplitude(static_cast<Index>(i), r));
+      if (p.ip_oop) row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
+      row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});
+      rows.push_back(row);
+    }
+    const std::string name = hbm_frf_table_name(level.force);
+    o.tables.emplace(name, make_table(name, cols, rows));
+  }
+  // Linear limits per newton of the first force: the linear model alone (no damper or contacts)
+  // and every contact stuck (kn on the normal, kt on the tangential direction, eq 3.51).
+  {
+    const hbm::HbmModel& m = p.model;
+    const Index nb = p.blade_dofs;
+    Eigen::MatrixXd stuck = m.stiffness;
+    for (const hbm::ContactElement& c : m.contacts)
+      stuck += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+    const int n_grid = 2001;
+    o.limit_frequency_hz = Eigen::VectorXd::LinSpaced(n_grid, spec.sweep.f_min, spec.sweep.f_max);
+    const Index nr = static_cast<Index>(p.responses.size()) + (p.ip_oop ? 2 : 0);
+    o.free_response.resize(n_grid, nr);
+    o.stuck_response.resize(n_grid, nr);
+    auto outputs = [&](const Eigen::VectorXcd& z, Eigen::MatrixXd& into, Index i) {
+      for (size_t r = 0; r < p.responses.size(); ++r) into(i, static_cast<Index>(r)) = p.responses[r] < z.size() ? std::abs(z[p.responses[r]]) : 0.0;
+      if (p.ip_oop)
+        for (int k = 0; k < 2; ++k) into(i, static_cast<Index>(p.responses.size()) + k) = peak_values(p, z, k).component;
+    };
+    for (Index i = 0; i < n_grid; ++i) {
+      const double w = kTwoPi * o.limit_frequency_hz[i];
+      outputs(solve_linear(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb), m.mass.topLeftCorner(nb, nb), w,
+                           m.harmonic_load.head(nb)),
+              o.free_response, i);
+      outputs(solve_linear(stuck, m.damping, m.mass, w, m.harmonic_load), o.stuck_response, i);
+    }
+    std::vector<std::string> cols = {"point", "frequency_hz"};
+    for (const char* limit : {"free", "stuck"}) {
+      for (const std::string& r : p.response_names) cols.push_back(fmt::format("{}_{}_amp_per_n", limit, r));
+      if (p.ip_oop) cols.insert(cols.end(), {fmt::format("{}_ip_per_n", limit), fmt::format("{}_oop_per_n", limit)});
+    }
+    std::vector<std::vector<double>> rows;
+    for (Index i = 0; i < n_grid; ++i) {
+      std::vector<double> row = {static_cast<double>(i + 1), o.limit_frequency_hz[i]};
+      for (const Eigen::MatrixXd* lim : {&o.free_response, &o.stuck_response})
+        for (Index r = 0; r < nr; ++r) row.push_back((*lim)(i, r));
+      rows.push_back(row);
+    }
+    o.tables.emplace("limits", make_table("limits", cols, rows));
+    // Peaks of the limits, in the columns of `peaks`.
+    std::vector<std::vector<double>> peak_limit_rows;
+    for (int l = 0; l < 2; ++l) {
+      const Eigen::MatrixXd& lim = l == 0 ? o.free_response : o.stuck_response;
+      std::vector<double> row = {static_cast<double>(l + 1)};
+      for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) {
+        const Index col = p.ip_oop ? static_cast<Index>(p.responses.size()) + k : 0;
+        const auto [f, v] = grid_peak(o.limit_frequency_hz, lim.col(col));
+        // amplitude of the right response at the component's peak (nearest grid point)
+        const Index at = std::clamp<Index>(static_cast<Index>(std::lround((f - spec.sweep.f_min) / (spec.sweep.f_max - spec.sweep.f_min) * (n_grid - 1))), 0, n_grid - 1);
+        const Index right = p.ip_oop ? static_cast<Index>(std::find(p.responses.begin(), p.responses.end(), p.ip_oop->second) - p.responses.begin()) : 0;
+        row.insert(row.end(), {f, right < static_cast<Index>(p.responses.size()) ? lim(at, right) : v});
+      }
+      peak_limit_rows.push_back(row);
+    }
+    std::vector<std::string> lcols = {"limit"};
+    for (const std::string& k : kinds) lcols.insert(lcols.end(), {k + "_hz", k + "_amp_per_n"});
+    ResultTable t = make_table("limit_peaks", lcols, peak_limit_rows);
+    t.add_text_column("model", {"free (no contacts)", "stuck (contacts as springs kn, kt)"});
+    o.tables.emplace("limit_peaks", std::move(t));
+  }
+  if (p.damper_static) {
+    const damper::DamperStaticState& s = *p.damper_static;
+    std::vector<std::vector<double>> rows;
+    for (size_t c = 0; c < p.damper->contacts.size(); ++c)
+      rows.push_back({static_cast<double>(c + 1), s.normal_preload[static_cast<Index>(c)], s.normal_displacement[static_cast<Index>(c)],
+                      s.open[c] ? 1.0 : 0.0});
+    ResultTable t = make_table("damper_static", {"contact", "normal_preload_n", "normal_displacement_m", "open"}, rows);
+    std::vector<std::string> names;
+    for (const auto& c : p.damper->contacts) names.push_back(c.name);
+    t.add_text_column("name", names);
+    o.tables.emplace("damper_static", std::move(t));
+  }
+  return o;
+}
+
+}  // namespace bb

@@ -1,0 +1,85 @@
+// Nonlinear forced response by harmonic balance (thesis sections 3.3.2.4-3.3.2.7): the linear
+// model of the case (Craig-Bampton reduction, reduced model from files, or lumped matrices) with
+// friction contacts and optionally a rigid underplatform damper, swept in frequency by
+// pseudo-arclength continuation at each force level; peaks (in-phase / out-of-phase when asked),
+// contact states and energy balance at each peak, the free and fully stuck linear limits.
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/hbm_spec.hpp"
+#include "damper/rigid_damper.hpp"
+#include "hbm/harmonic_balance.hpp"
+#include "model/model.hpp"
+#include "reduction/craig_bampton.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+// One line of progress ("Fe = 60 N: 176.2 Hz, 212 points"); the caller decides where it goes.
+using HbmProgress = std::function<void(const std::string&)>;
+
+// The linear model, contacts and loads assembled once; the force level and H are set per sweep.
+struct PreparedHbm {
+  hbm::HbmModel model;                     // harmonic load for a first-force amplitude of 1 N
+  std::vector<std::string> dof_names;      // of the model's DOFs ("T2.x", "mode 3", "damper.x")
+  std::vector<std::string> contact_names;
+  std::vector<Eigen::Index> responses;     // model DOF of each response
+  std::vector<std::string> response_names;
+  std::optional<std::pair<Eigen::Index, Eigen::Index>> ip_oop;  // (left, right) DOFs
+  std::optional<damper::RigidDamper> damper;
+  std::optional<damper::DamperStaticState> damper_static;
+  Eigen::VectorXd linear_frequencies_hz;   // of the linear model without contacts
+  int blade_dofs = 0;                      // DOFs of the linear model (the damper's follow)
+  CraigBamptonTiming timing;
+  double setup_seconds = 0.0;
+};
+
+// Throws InputError for unknown DOFs or points, a singular static problem or a damper whose static
+// pre-solve fails (message with the reason); SolverError from the reduction.
+PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec);
+
+struct HbmPeak {
+  std::string kind;         // "IP", "OOP", or "peak" (maximum of the first response)
+  double frequency_hz = 0.0;
+  double amplitude = 0.0;   // first-harmonic amplitude of the right (or first) response [m]
+  double component = 0.0;   // the in-phase / out-of-phase component that peaks there [m]
+  hbm::HbmSolution solution;
+  hbm::CycleEnergy energy;
+};
+
+struct HbmLevel {
+  double force = 0.0;               // amplitude of the first force [N]
+  hbm::ContinuationResult path;
+  std::vector<double> frequency_hz; // of the path points
+  Eigen::MatrixXd amplitude;        // path points x responses, first harmonic [m]
+  Eigen::MatrixXd components;       // path points x (IP, OOP) [m] when ip_oop is set
+  std::vector<HbmPeak> peaks;
+  double seconds = 0.0;
+};
+
+// The sweep of one force level with H harmonics. A continuation that stops is reported in
+// path.failure (with frequency and residual) and the level keeps the points reached.
+HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, double force, int harmonics,
+                         const HbmProgress& progress = {});
+
+struct HbmOutcome {
+  ResultTables tables;
+  PreparedHbm prepared;
+  std::vector<HbmLevel> levels;
+  Eigen::VectorXd limit_frequency_hz;
+  Eigen::MatrixXd free_response, stuck_response;  // frequencies x responses, per N of the first force
+  double sweep_seconds = 0.0;
+};
+
+// prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost,
+// limits, limit_peaks, damper_static.
+HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
+
+// The name of level `force`'s FRF table, e.g. "frf_300" or "frf_0.5".
+std::string hbm_frf_table_name(double force);
+
+}  // namespace bb

@@ -1,0 +1,68 @@
+// What a nonlinear forced-response (harmonic balance) analysis computes: one linear model (a
+// Craig-Bampton reduction of the mesh, a reduced model from files, or lumped matrices), friction
+// contacts between its DOFs or with the ground, optionally a rigid underplatform damper, swept in
+// frequency at several force levels.
+#pragma once
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/frf_spec.hpp"
+#include "contact/jenkins_contact.hpp"
+
+namespace bb {
+
+// A contact between lumped DOFs: u = sum c_i q_i along `tangential`, v = sum c_i q_i along
+// `normal` (v > 0 presses). One DOF alone ties it to the ground; no normal terms = constant load n0.
+struct HbmContactSpec {
+  std::string name;
+  std::vector<std::pair<PointDof, double>> tangential, normal;
+  contact::JenkinsParameters law;
+};
+
+// One point of the rigid damper: its position and the blade point that carries the platform side.
+struct DamperPointSpec {
+  std::string name;                 // "L1"
+  bool left_face = true;            // flat face on the left platform, else the right platform
+  std::string point;                // master point of the blade model (x and y DOFs); empty = rigid platform
+  std::optional<std::array<double, 2>> position;  // [x, y] in the model frame; default: the point's node
+};
+
+// Rigid planar damper (damper/rigid_damper.hpp) pressed by the centrifugal force.
+struct DamperSpec {
+  double mass = 0.0, inertia = 0.0;        // [kg], [kg m^2] about G
+  std::array<double, 2> centre{};          // G in the model frame [m]
+  double left_face_deg = 45.0, right_face_deg = 45.0;
+  double centrifugal_force = 0.0;          // CF along +y at G [N]
+  contact::JenkinsParameters law;          // kn, kt, mu of every point (n0 = 0: the static solve sets the load)
+  std::vector<DamperPointSpec> points;
+};
+
+struct HbmSweepSpec {
+  double f_min = 0.0, f_max = 0.0;  // [Hz]
+  // grid: Newton at each frequency of a fixed grid from the previous solutions (secant predictor);
+  // robust on the kinks of stick-slip-lift-off, cannot pass a fold. arclength: pseudo-arclength
+  // continuation, passes folds (impacts, softening), may stall on kinks.
+  enum class Method { grid, arclength } method = Method::grid;
+  double step_hz = 0.05;                                           // grid
+  double initial_step = 0.01, max_step = 0.05, min_step = 1e-6;  // arclength, scaled (hbm::ContinuationOptions)
+};
+
+struct HbmSpec {
+  RomSpec model;                     // the linear part: masters / file / matrices
+  FrfDamping damping;                // on the linear model's modes (the damper is undamped)
+  std::vector<HbmContactSpec> contacts;
+  std::optional<DamperSpec> damper;
+  std::vector<std::pair<PointDof, double>> static_loads;  // [N], besides the damper's CF
+  std::vector<FrfForce> forces;      // the excitation pattern; each level scales it
+  std::vector<double> force_levels;  // amplitude of the first force at each level [N]
+  std::vector<PointDof> responses;   // first-harmonic amplitudes written per level
+  std::optional<std::pair<PointDof, PointDof>> ip_oop;  // (left, right): in-phase / out-of-phase peaks
+  int harmonics = 1;
+  int time_samples = 0;              // AFT samples per period; 0 = automatic
+  double tolerance = 1e-9;           // relative, hbm::HbmOptions
+  HbmSweepSpec sweep;
+};
+
+}  // namespace bb

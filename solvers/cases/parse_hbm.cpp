@@ -1,0 +1,173 @@
+#include "cases/parse_hbm.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "cases/parse_frf.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+// { "A.x" = 1.0, "B.x" = -1.0 }: the coefficients of a relative displacement.
+std::vector<std::pair<PointDof, double>> parse_combination(TomlReader& r, const std::string& key) {
+  std::vector<std::pair<PointDof, double>> out;
+  for (const auto& [name, value] : r.table(key)) {
+    const std::optional<double> c = value.value<double>();
+    if (!c || !std::isfinite(*c) || *c == 0.0)
+      r.fail(key, fmt::format("the coefficient of '{}' must be a finite nonzero number", name.str()));
+    out.emplace_back(parse_point_dof(r, key, std::string(name.str())), *c);
+  }
+  if (out.empty()) r.fail(key, "needs at least one DOF, e.g. { \"A.x\" = 1.0 }");
+  return out;
+}
+
+// kn, kt, mu (and n0 when `preload`), checked by the contact law itself.
+contact::JenkinsParameters parse_law(TomlReader& r, bool preload) {
+  contact::JenkinsParameters law;
+  law.kn = r.positive("kn");
+  law.kt = r.positive("kt");
+  law.mu = r.non_negative("mu", 0.0);
+  if (preload) law.n0 = r.non_negative("n0", 0.0);
+  try {
+    contact::validate(law);
+  } catch (const std::invalid_argument& e) {
+    r.fail("kn", e.what());
+  }
+  return law;
+}
+
+HbmContactSpec parse_contact(TomlReader r) {
+  HbmContactSpec c;
+  c.name = r.string("name");
+  c.law = parse_law(r, true);
+  c.tangential = parse_combination(r, "tangential");
+  if (r.has("normal")) c.normal = parse_combination(r, "normal");
+  r.finish();
+  return c;
+}
+
+std::array<double, 2> parse_xy(TomlReader& r, const std::string& key) {
+  const std::vector<double> v = r.number_array(key);
+  if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1])) r.fail(key, "expected [x, y] in metres");
+  return {v[0], v[1]};
+}
+
+DamperSpec parse_damper(TomlReader r) {
+  DamperSpec d;
+  d.mass = r.positive("mass");
+  d.inertia = r.positive("inertia");
+  d.centre = parse_xy(r, "centre");
+  d.left_face_deg = r.number("left_face_deg");
+  d.right_face_deg = r.number("right_face_deg");
+  for (const char* key : {"left_face_deg", "right_face_deg"}) {
+    const double a = std::string(key) == "left_face_deg" ? d.left_face_deg : d.right_face_deg;
+    if (!(a > 0.0 && a < 90.0)) r.fail(key, "must lie in (0, 90) degrees");
+  }
+  d.centrifugal_force = r.positive("centrifugal_force");
+  d.law = parse_law(r, false);
+  int i = 0;
+  std::set<std::string> names;
+  for (const toml::node& n : r.array("points")) {
+    if (!n.is_table()) r.fail("points", "write each point as { name = \"L1\", face = \"left\", point = \"L1\" }");
+    TomlReader p(*n.as_table(), fmt::format("{}.points[{}]", r.path(), i++), r.file());
+    DamperPointSpec s;
+    s.name = p.string("name");
+    if (!names.insert(s.name).second) p.fail("name", fmt::format("a damper point named '{}' exists already", s.name));
+    s.left_face = p.choice("face", {"left", "right"}) == "left";
+    s.point = p.optional_string("point").value_or("");
+    if (p.has("position")) s.position = parse_xy(p, "position");
+    if (s.point.empty() && !s.position) p.fail("point", "give the blade point it touches ('point'), or a 'position' for a rigid platform");
+    p.finish();
+    d.points.push_back(s);
+  }
+  if (d.points.empty()) r.fail("points", "needs at least one contact point");
+  r.finish();
+  return d;
+}
+
+}  // namespace
+
+HbmSpec parse_hbm(TomlReader& r, const fs::path& folder) {
+  HbmSpec s;
+  const std::vector<double> range = r.number_array("frequency_hz");
+  if (range.size() != 2 || !(range[0] > 0.0) || !(range[0] < range[1]) || !std::isfinite(range[1]))
+    r.fail("frequency_hz", "expected [f_min, f_max] with 0 < f_min < f_max");
+  s.sweep.f_min = range[0];
+  s.sweep.f_max = range[1];
+  s.damping = parse_damping(r);
+  const long h = r.optional_integer("harmonics").value_or(1);
+  if (h < 1 || h > 50) r.fail("harmonics", "must lie in [1, 50]");
+  s.harmonics = static_cast<int>(h);
+  const long samples = r.optional_integer("time_samples").value_or(0);
+  if (samples != 0 && (samples < 2 * h + 1 || samples > 100000))
+    r.fail("time_samples", fmt::format("must be 0 (automatic) or lie in [{}, 100000] (at least 2H + 1)", 2 * h + 1));
+  s.time_samples = static_cast<int>(samples);
+  if (r.has("tolerance")) {
+    s.tolerance = r.positive("tolerance");
+    if (s.tolerance >= 1e-2) r.fail("tolerance", "must be below 1e-2 (relative force balance)");
+  }
+  s.forces = parse_forces(r);
+  s.responses = parse_responses(r);
+  s.force_levels = r.number_array("force_levels");
+  if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level [N]");
+  std::set<double> unique;
+  for (double f : s.force_levels) {
+    if (!(f > 0) || !std::isfinite(f)) r.fail("force_levels", "every level must be a positive force [N]");
+    if (!unique.insert(f).second) r.fail("force_levels", fmt::format("level {} N is listed twice", f));
+  }
+  if (const toml::table* t = r.optional_table("ip_oop")) {
+    TomlReader p(*t, r.path() + ".ip_oop", r.file());
+    s.ip_oop.emplace(parse_point_dof(p, "left", p.string("left")), parse_point_dof(p, "right", p.string("right")));
+    p.finish();
+  }
+  if (r.has("static_loads")) {
+    int i = 0;
+    for (const toml::node& n : r.array("static_loads")) {
+      if (!n.is_table()) r.fail("static_loads", "write each load as { dof = \"A.y\", force = 40.0 }");
+      TomlReader l(*n.as_table(), fmt::format("{}.static_loads[{}]", r.path(), i++), r.file());
+      const PointDof dof = parse_point_dof(l, "dof", l.string("dof"));
+      const double f = l.number("force");
+      if (!std::isfinite(f)) l.fail("force", "must be finite");
+      l.finish();
+      s.static_loads.emplace_back(dof, f);
+    }
+  }
+  {
+    TomlReader m(r.table("model"), r.path() + ".model", r.file());
+    s.model = parse_rom(m, folder);
+    if (!s.model.forces.empty() || !s.model.responses.empty())
+      m.fail("forces", "the forces and responses of an hbm analysis are given in [analysis]");
+  }
+  if (r.has("contact")) {
+    int i = 0;
+    for (const toml::node& n : r.array("contact")) {
+      if (!n.is_table()) r.fail("contact", "write each contact as a [[analysis.contact]] table");
+      s.contacts.push_back(parse_contact(TomlReader(*n.as_table(), fmt::format("{}.contact[{}]", r.path(), i++), r.file())));
+    }
+  }
+  if (const toml::table* d = r.optional_table("damper")) s.damper = parse_damper(TomlReader(*d, r.path() + ".damper", r.file()));
+  if (s.contacts.empty() && !s.damper) r.fail("contact", "an hbm analysis needs at least one [[analysis.contact]] or an [analysis.damper]");
+  s.sweep.method = r.choice("sweep", {"grid", "arclength"}, "grid") == "grid" ? HbmSweepSpec::Method::grid : HbmSweepSpec::Method::arclength;
+  if (s.sweep.method == HbmSweepSpec::Method::grid) {
+    s.sweep.step_hz = r.positive("step_hz");
+    if ((s.sweep.f_max - s.sweep.f_min) / s.sweep.step_hz > 1e6) r.fail("step_hz", "more than a million frequencies: choose a larger step");
+  }
+  if (const toml::table* c = r.optional_table("continuation")) {
+    if (s.sweep.method == HbmSweepSpec::Method::grid) r.fail("continuation", "[analysis.continuation] needs sweep = \"arclength\"");
+    TomlReader p(*c, r.path() + ".continuation", r.file());
+    s.sweep.initial_step = p.optional_number("initial_step").value_or(s.sweep.initial_step);
+    s.sweep.max_step = p.optional_number("max_step").value_or(s.sweep.max_step);
+    s.sweep.min_step = p.optional_number("min_step").value_or(s.sweep.min_step);
+    if (!(s.sweep.min_step > 0) || !(s.sweep.initial_step >= s.sweep.min_step) || !(s.sweep.max_step >= s.sweep.initial_step))
+      p.fail("max_step", "need 0 < min_step <= initial_step <= max_step");
+    p.finish();
+  }
+  return s;
+}
+
+}  // namespace bb

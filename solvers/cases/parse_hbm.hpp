@@ -1,0 +1,13 @@
+// The keys of [analysis] for type = "hbm" (see cases/README.md, "Nonlinear forced response").
+#pragma once
+#include <filesystem>
+
+#include "analysis/hbm_spec.hpp"
+#include "cases/toml_reader.hpp"
+
+namespace bb {
+
+// Reads the hbm keys of `r` (the caller reads `type` and finishes `r`). Throws InputError.
+HbmSpec parse_hbm(TomlReader& r, const std::filesystem::path& folder);
+
+}  // namespace bb

@@ -170,7 +170,7 @@ struct ContinuationOptions {
   int easy_iterations = 4;
   int max_corrector_iterations = 25;
   int max_points = 5000;    // hard cap, then failure
-  std::optional<Eigen::VectorXd> initial;  // guess for the first point (e.g. from a static pre-solve)
+  std::optional<Eigen::VectorXd> initial = std::nullopt;  // guess for the first point (e.g. from a static pre-solve)
   std::function<void(const ContinuationProgress&)> progress;  // called per accepted point; may be empty
 };
 

@@ -161,6 +161,7 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   hbm::HbmModel& m = p.model;
   if (spec.damper) {
     p.damper = build_damper(model, *spec.damper, blades);
+    p.centrifugal_force = spec.damper->centrifugal_force;
     const damper::CoupledSystem coupled = damper::assemble_coupled_system(blades.mass, blades.stiffness, *p.damper);
     m.mass = coupled.mass;
     m.stiffness = coupled.stiffness;
@@ -524,7 +525,24 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
     for (const std::string& k : kinds) lcols.insert(lcols.end(), {k + "_hz", k + "_amp_per_n"});
     ResultTable t = make_table("limit_peaks", lcols, peak_limit_rows);
     t.add_text_column("model", {"free (no contacts)", "stuck (contacts as springs kn, kt)"});
+    // Distance of each level's peaks from the stuck limit: zero as Fe -> 0 (eq 3.51).
+    std::vector<std::vector<double>> dev_rows;
+    std::vector<std::string> dev_cols = {"level", "fe_n"};
+    for (const std::string& k : kinds) dev_cols.insert(dev_cols.end(), {k + "_hz", k + "_amp_per_n"});
+    for (size_t l = 0; l < o.levels.size(); ++l) {
+      std::vector<double> row = {static_cast<double>(l + 1), o.levels[l].force};
+      for (size_t k = 0; k < kinds.size(); ++k) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        const bool ok = k < o.levels[l].peaks.size() && o.levels[l].peaks[k].solution.converged;
+        const HbmPeak* pk = ok ? &o.levels[l].peaks[k] : nullptr;
+        const double f = peak_limit_rows[1][1 + 2 * k], a = peak_limit_rows[1][2 + 2 * k];
+        row.push_back(pk ? pk->frequency_hz / f - 1 : nan);
+        row.push_back(pk ? pk->amplitude / o.levels[l].force / a - 1 : nan);
+      }
+      dev_rows.push_back(row);
+    }
     o.tables.emplace("limit_peaks", std::move(t));
+    o.tables.emplace("stuck_limit_deviation", make_table("stuck_limit_deviation", dev_cols, dev_rows));
   }
   if (p.damper_static) {
     const damper::DamperStaticState& s = *p.damper_static;

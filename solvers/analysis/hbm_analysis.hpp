@@ -32,6 +32,7 @@ struct PreparedHbm {
   std::optional<std::pair<Eigen::Index, Eigen::Index>> ip_oop;  // (left, right) DOFs
   std::optional<damper::RigidDamper> damper;
   std::optional<damper::DamperStaticState> damper_static;
+  double centrifugal_force = 0.0;          // CF on the damper [N]
   Eigen::VectorXd linear_frequencies_hz;   // of the linear model without contacts
   int blade_dofs = 0;                      // DOFs of the linear model (the damper's follow)
   CraigBamptonTiming timing;

@@ -16,6 +16,7 @@
 #include "common/errors.hpp"
 #include "reduction/reduced_model_io.hpp"
 #include "report/frf_plots.hpp"
+#include "report/hbm_plots.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
 #include "study/modal_refinement.hpp"
@@ -212,6 +213,20 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
           if (std::find(outputs.begin(), outputs.end(), o) == outputs.end()) outputs.push_back(o);
       for (const std::string& o : outputs) run.plots.push_back(plot_frf(*results.frf, o, out, "frf_" + o));
       if (!results.frf->level_forces.empty()) run.plots.push_back(plot_force_levels(*results.frf, out, "force_levels"));
+    }
+    if (results.hbm) {
+      const HbmOutcome& h = *results.hbm;
+      for (size_t r = 0; r < h.prepared.response_names.size(); ++r)
+        run.plots.push_back(plot_hbm_levels(h, r, false, out, "frf_levels_" + h.prepared.response_names[r]));
+      run.plots.push_back(plot_hbm_levels(h, 0, true, out, "frf_per_newton_" + h.prepared.response_names[0]));
+      fs::path reference;  // the thesis's peaks, when a check compares with them
+      for (const CheckSpec& c : spec.checks)
+        if (c.result == "peaks" && !c.reference.empty() && reference.empty()) reference = c.reference;
+      run.plots.push_back(plot_hbm_performance(h, "hz", reference, out, "performance_frequency"));
+      run.plots.push_back(plot_hbm_performance(h, "amp_per_n", reference, out, "performance_amplitude"));
+      for (const char* kind : {"IP", "OOP", "peak"})
+        if ((std::string(kind) == "peak") != h.prepared.ip_oop.has_value())
+          run.plots.push_back(plot_contact_states(h, kind, out, fmt::format("contact_states_{}", kind)));
     }
     int i = 0;
     for (const CheckSpec& c : spec.checks) run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));

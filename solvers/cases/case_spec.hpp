@@ -122,6 +122,16 @@ struct RomStudySpec {
   SourceLocation at;
 };
 
+// Convergence in the number of harmonics of the nonlinear forced response: peaks at each H
+// against the largest, with the cost of each sweep.
+struct HbmHarmonicsStudySpec {
+  std::vector<int> harmonics;       // H values, the largest is the reference
+  std::vector<double> force_levels; // a subset of the analysis's levels [N]
+  int time_samples = 0;             // AFT samples for every H; 0 = automatic (max(64, 16 (2H + 1)))
+  std::string note;
+  SourceLocation at;
+};
+
 struct CaseSpec {
   std::filesystem::path file;
   std::string name;
@@ -138,6 +148,7 @@ struct CaseSpec {
   std::optional<RefinementStudySpec> study;
   std::optional<ModalRefinementStudySpec> modal_study;
   std::optional<RomStudySpec> rom_study;
+  std::optional<HbmHarmonicsStudySpec> hbm_study;
 };
 
 // Throws InputError naming file, line and key for every malformed or missing entry.

@@ -333,6 +333,29 @@ RefinementStudySpec parse_study(TomlReader r) {
   return s;
 }
 
+HbmHarmonicsStudySpec parse_hbm_study(TomlReader r, const HbmSpec& hbm) {
+  HbmHarmonicsStudySpec s;
+  s.at = r.location();
+  r.choice("kind", {"hbm_harmonics"});
+  for (long h : r.integer_array("harmonics")) {
+    if (h < 1 || h > 50) r.fail("harmonics", "each H must lie in [1, 50]");
+    s.harmonics.push_back(static_cast<int>(h));
+  }
+  if (s.harmonics.size() < 2) r.fail("harmonics", "needs at least two values; the largest is the reference");
+  s.force_levels = r.number_array("force_levels");
+  for (double f : s.force_levels)
+    if (std::find(hbm.force_levels.begin(), hbm.force_levels.end(), f) == hbm.force_levels.end())
+      r.fail("force_levels", fmt::format("{} N is not one of the analysis's force_levels", f));
+  if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level");
+  const long samples = r.optional_integer("time_samples").value_or(0);
+  const int h_max = *std::max_element(s.harmonics.begin(), s.harmonics.end());
+  if (samples != 0 && samples < 2 * h_max + 1) r.fail("time_samples", fmt::format("must be 0 or at least 2 H + 1 = {}", 2 * h_max + 1));
+  s.time_samples = static_cast<int>(samples);
+  s.note = r.optional_string("note").value_or("");
+  r.finish();
+  return s;
+}
+
 RomStudySpec parse_rom_study(TomlReader r) {
   RomStudySpec s;
   s.at = r.location();
@@ -509,6 +532,9 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
         top.fail("study", "a rom_modes study needs an frf analysis with the full model");
       if (spec.rom_study->compare_modes > spec.analysis.frf.full_modes)
         top.fail("study", "compare_modes exceeds the analysis's full_modes");
+    } else if (kind && kind->value<std::string>() == "hbm_harmonics") {
+      if (spec.analysis.type != AnalysisType::hbm) top.fail("study", "an hbm_harmonics study needs an hbm analysis");
+      spec.hbm_study = parse_hbm_study(TomlReader(*study, "study", file), spec.analysis.hbm);
     } else if (kind && kind->value<std::string>() == "modal_refinement") {
       spec.modal_study = parse_modal_study(TomlReader(*study, "study", file));
       const bool solid = spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::hex_blocks;

@@ -20,6 +20,7 @@
 #include "report/plots.hpp"
 #include "report/writers.hpp"
 #include "study/modal_refinement.hpp"
+#include "study/hbm_study.hpp"
 #include "study/rom_study.hpp"
 
 namespace bb {
@@ -235,6 +236,12 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     run.modal_study = run_modal_refinement_study(spec);
     run.study_note = spec.modal_study->note;
     if (options.plots) run.study_plots.push_back(plot_modal_refinement(*run.modal_study, out, "study_modal"));
+  }
+  if (options.study && spec.hbm_study && results.hbm) {
+    run.study_tables.push_back(run_hbm_harmonics_study(spec.analysis.hbm, results.hbm->prepared, *spec.hbm_study));
+    run.study_note = spec.hbm_study->note;
+    write_table_csv(run.study_tables.back(), out / "hbm_harmonics_study.csv");
+    if (options.plots) run.study_plots.push_back(plot_hbm_harmonics_study(run.study_tables.back(), out, "study_harmonics"));
   }
   if (options.study && spec.rom_study) {
     run.study_tables.push_back(run_rom_study(spec, model));

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "checks/checks.hpp"
 #include "report/gnuplot.hpp"
 
@@ -132,6 +135,43 @@ Plot plot_contact_states(const HbmOutcome& hbm, const std::string& kind, const f
     script += fmt::format("{0}'{1}.dat' using 1:{2} with linespoints pt 7 lc rgb '{3}' title '{4} stick', \\\n"
                           "     '{1}.dat' using 1:{5} with linespoints pt 4 dt 2 lc rgb '{3}' title '{4} lift-off'",
                           c ? ", \\\n     " : "", stem, 2 + 2 * c, kColours[c % 8], gnuplot_quote(contacts[c]), 3 + 2 * c);
+  script += '\n';
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_hbm_harmonics_study(const ResultTable& study, const fs::path& out_dir, const std::string& stem) {
+  std::vector<std::string> kinds;
+  for (const std::string& c : study.columns)
+    if (c.ends_with("_amp_error")) kinds.push_back(c.substr(0, c.size() - 10));
+  const int col_h = *study.column_index("harmonics"), col_f = *study.column_index("fe_n"), col_s = *study.column_index("seconds");
+  std::vector<double> levels;
+  for (Eigen::Index r = 0; r < study.values.rows(); ++r)
+    if (std::find(levels.begin(), levels.end(), study.values(r, col_f)) == levels.end()) levels.push_back(study.values(r, col_f));
+  std::vector<std::string> titles;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    out << "# one block per level and peak kind: seconds |amplitude error| (floored at 1e-12) H\n";
+    for (double f : levels)
+      for (const std::string& k : kinds) {
+        const int col_e = *study.column_index(k + "_amp_error");
+        out << "# Fe = " << f << " N, " << k << '\n';
+        for (Eigen::Index r = 0; r < study.values.rows(); ++r) {
+          const double e = study.values(r, col_e);
+          if (study.values(r, col_f) != f || !std::isfinite(e)) continue;
+          out << study.values(r, col_s) << ' ' << std::max(std::abs(e), 1e-12) << ' ' << study.values(r, col_h) << '\n';
+        }
+        out << "\n\n";
+        titles.push_back(fmt::format("Fe = {:g} N, {}", f, k));
+      }
+  }
+  const std::string title = "Harmonic balance: peak amplitude error against the largest H vs cost";
+  std::string script = fmt::format("set title '{}'\nset logscale xy\nset format y '10^{{%L}}'\nset xlabel 'sweep time [s]'\n"
+                                   "set ylabel '|relative amplitude error|'\nset grid\nset key outside right\nplot ",
+                                   gnuplot_quote(title));
+  for (size_t i = 0; i < titles.size(); ++i)
+    script += fmt::format("{0}'{1}.dat' index {2} using 1:2 with linespoints pt 7 lc rgb '{3}' title '{4}', "
+                          "'{1}.dat' index {2} using 1:2:(sprintf('H=%d', $3)) with labels offset 0,1 notitle",
+                          i ? ", \\\n     " : "", stem, i, kColours[i % 8], gnuplot_quote(titles[i]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

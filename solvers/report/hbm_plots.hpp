@@ -7,6 +7,7 @@
 
 #include "analysis/hbm_analysis.hpp"
 #include "report/run_record.hpp"
+#include "results/table.hpp"
 
 namespace bb {
 
@@ -25,5 +26,9 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
 // "peak") against CF / Fe (or Fe).
 Plot plot_contact_states(const HbmOutcome& hbm, const std::string& kind, const std::filesystem::path& out_dir,
                          const std::string& stem);
+
+// Harmonics study (study/hbm_study.hpp): relative error of each peak amplitude against the cost
+// of its sweep, one line per force level and peak kind, labelled by H.
+Plot plot_hbm_harmonics_study(const ResultTable& study, const std::filesystem::path& out_dir, const std::string& stem);
 
 }  // namespace bb

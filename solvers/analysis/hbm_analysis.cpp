@@ -225,6 +225,7 @@ hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, dou
   options.harmonics = harmonics;
   options.aft.samples = spec.time_samples;
   options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
   return hbm::HarmonicBalance(std::move(m), options);
 }
 

@@ -62,6 +62,9 @@ struct HbmSpec {
   int harmonics = 1;
   int time_samples = 0;              // AFT samples per period; 0 = automatic
   double tolerance = 1e-9;           // relative, hbm::HbmOptions
+  // Newton iterations per start (a solve tries up to three starts). On a sweep a converging point
+  // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.
+  int max_iterations = 20;
   HbmSweepSpec sweep;
 };
 

@@ -111,6 +111,10 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder) {
     s.tolerance = r.positive("tolerance");
     if (s.tolerance >= 1e-2) r.fail("tolerance", "must be below 1e-2 (relative force balance)");
   }
+  if (const auto it = r.optional_integer("max_iterations")) {
+    if (*it < 1 || *it > 1000) r.fail("max_iterations", "must lie in [1, 1000]");
+    s.max_iterations = static_cast<int>(*it);
+  }
   s.forces = parse_forces(r);
   s.responses = parse_responses(r);
   s.force_levels = r.number_array("force_levels");

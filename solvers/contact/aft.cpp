@@ -95,8 +95,19 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
 
   const int n = options.samples;
   const Eigen::Index m = u.size();
-  const Eigen::MatrixXd synthesis = synthesis_matrix(harmonics, n);
-  const Eigen::MatrixXd analysis = analysis_matrix(harmonics, n);
+  // A sweep calls this thousands of times with the same H and n: keep the last pair of matrices.
+  thread_local struct {
+    int harmonics = -1, samples = -1;
+    Eigen::MatrixXd synthesis, analysis;
+  } cache;
+  if (cache.harmonics != harmonics || cache.samples != n) {
+    cache.synthesis = synthesis_matrix(harmonics, n);
+    cache.analysis = analysis_matrix(harmonics, n);
+    cache.harmonics = harmonics;
+    cache.samples = n;
+  }
+  const Eigen::MatrixXd& synthesis = cache.synthesis;
+  const Eigen::MatrixXd& analysis = cache.analysis;
 
   AftResult r;
   r.u = synthesis * u;

@@ -157,7 +157,7 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(blades.stiffness, blades.mass, Eigen::EigenvaluesOnly);
     p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
   }
-  const Eigen::MatrixXd blade_damping = damping_matrix(spec.damping, blades);
+  const Eigen::MatrixXd blade_damping = spec.damping_matrix ? *spec.damping_matrix : damping_matrix(spec.damping, blades);
   hbm::HbmModel& m = p.model;
   if (spec.damper) {
     p.damper = build_damper(model, *spec.damper, blades);

@@ -3,6 +3,7 @@
 // contacts between its DOFs or with the ground, optionally a rigid underplatform damper, swept in
 // frequency at several force levels.
 #pragma once
+#include <Eigen/Dense>
 #include <optional>
 #include <string>
 #include <utility>
@@ -52,6 +53,7 @@ struct HbmSweepSpec {
 struct HbmSpec {
   RomSpec model;                     // the linear part: masters / file / matrices
   FrfDamping damping;                // on the linear model's modes (the damper is undamped)
+  std::optional<Eigen::MatrixXd> damping_matrix;  // or C itself, written with matrices in the case
   std::vector<HbmContactSpec> contacts;
   std::optional<DamperSpec> damper;
   std::vector<std::pair<PointDof, double>> static_loads;  // [N], besides the damper's CF

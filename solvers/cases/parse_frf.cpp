@@ -42,8 +42,6 @@ std::vector<FrfForce> parse_forces(TomlReader& r) {
   return out;
 }
 
-namespace {
-
 Eigen::MatrixXd parse_square_matrix(TomlReader& r, const std::string& key, size_t n) {
   const toml::array& rows = r.array(key);
   if (rows.size() != n) r.fail(key, fmt::format("needs {} rows, one per DOF in 'dofs', found {}", n, rows.size()));
@@ -59,6 +57,8 @@ Eigen::MatrixXd parse_square_matrix(TomlReader& r, const std::string& key, size_
   }
   return m;
 }
+
+namespace {
 
 // A lumped or reduced model written in the case: dofs = ["A.x", ...], stiffness and mass as rows.
 ReducedModel parse_matrices(TomlReader& r) {

@@ -99,7 +99,8 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder) {
     r.fail("frequency_hz", "expected [f_min, f_max] with 0 < f_min < f_max");
   s.sweep.f_min = range[0];
   s.sweep.f_max = range[1];
-  s.damping = parse_damping(r);
+  const toml::table& model = r.table("model");
+  if (!model.contains("damping")) s.damping = parse_damping(r);
   const long h = r.optional_integer("harmonics").value_or(1);
   if (h < 1 || h > 50) r.fail("harmonics", "must lie in [1, 50]");
   s.harmonics = static_cast<int>(h);
@@ -142,7 +143,15 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder) {
     }
   }
   {
-    TomlReader m(r.table("model"), r.path() + ".model", r.file());
+    TomlReader m(model, r.path() + ".model", r.file());
+    if (m.has("damping")) {
+      if (!m.has("stiffness")) m.fail("damping", "a damping matrix goes with matrices written in the case ('dofs', 'stiffness', 'mass')");
+      if (r.has("modal_damping") || r.has("rayleigh"))
+        r.fail("modal_damping", "the model gives its damping matrix: leave out modal_damping and rayleigh");
+      s.damping_matrix = parse_square_matrix(m, "damping", m.string_array("dofs").size());
+      if ((*s.damping_matrix - s.damping_matrix->transpose()).cwiseAbs().maxCoeff() > 1e-8 * s.damping_matrix->cwiseAbs().maxCoeff())
+        m.fail("damping", "must be symmetric");
+    }
     s.model = parse_rom(m, folder);
     if (!s.model.forces.empty() || !s.model.responses.empty())
       m.fail("forces", "the forces and responses of an hbm analysis are given in [analysis]");

@@ -112,7 +112,8 @@ void describe_hbm(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const PreparedHbm& p = hbm.prepared;
   std::string levels;
   for (double f : spec.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
-  const std::string damping = spec.damping.kind == FrfDamping::Kind::modal
+  const std::string damping = spec.damping_matrix ? "damping matrix given in the case"
+                              : spec.damping.kind == FrfDamping::Kind::modal
                                   ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
                                   : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
                                                 g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]), g(spec.damping.rayleigh_hz[1]));

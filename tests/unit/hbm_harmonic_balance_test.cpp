@@ -95,6 +95,33 @@ TEST(HbmMultiDof, StuckContactIsTheLinearModelWithNormalAndTangentialSprings) {
   }
 }
 
+TEST(HbmMultiDof, StuckSliderRestsAtItsOffset) {
+  // A static push along the tangential DOF with the slider at rest at u = d: stuck, the tangential
+  // spring acts on u - d, so the static state is K q + kt a_t^T (a_t q - d) + kn ... = f (closed
+  // form), and the stuck starting point of the solver is that same state.
+  HbmModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 1.0e6, .n0 = 50.0}, 1.0);
+  const double d = 2.0e-5;
+  m.contacts[0].tangential_offset = d;
+  m.static_load = Eigen::Vector3d(0.0, 15.0, 0.0);
+  MatrixXd k = m.stiffness;
+  VectorXd fs = m.static_load;
+  const ContactElement& c = m.contacts[0];
+  k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+  fs += c.law.kt * d * c.tangential.transpose() - c.law.n0 * c.normal.transpose();
+  const VectorXd q0 = k.fullPivLu().solve(fs);
+  const HarmonicBalance system(m, {.harmonics = 1});
+  const double omega = 900.0;
+  const HbmSolution s = solve_at_frequency(system, omega);
+  ASSERT_TRUE(s.converged) << s.failure;
+  const VectorXd static_part = system.recover(s.x, omega).col(0);
+  EXPECT_LT((static_part - q0).norm(), 1e-10 * q0.norm());
+  const auto start = system.linearized(omega, true);
+  ASSERT_TRUE(start.has_value());
+  EXPECT_LT((*start - s.x).norm(), 1e-10 * s.x.norm());
+  // The contact carries kt (u - d) statically, less than mu N: it does stick.
+  EXPECT_NEAR(s.contacts[0].tangential[0], c.law.kt * (c.tangential.dot(q0) - d), 1e-8);
+}
+
 TEST(HbmMultiDof, OpeningContactLiftsOffWithoutNaN) {
   // N0 = 0 and no static load: the contact is closed for v > 0 only, i.e. open over part of the cycle.
   const HbmModel m = blade_on_ground({.kn = 5.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 0.0}, 20.0);

@@ -150,7 +150,8 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   PreparedHbm p;
   FreeSystem system;
   if (!spec.model.masters.empty()) system = assemble_free_system(model);
-  const ReducedModel blades = build_reduced_model(model, system, spec.model, &p.timing);
+  p.linear = build_reduced_model(model, system, spec.model, &p.timing);
+  const ReducedModel& blades = p.linear;
   p.blade_dofs = blades.size();
   for (const ReducedDof& d : blades.dofs) p.dof_names.push_back(d.name());
   {

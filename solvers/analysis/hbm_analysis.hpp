@@ -33,6 +33,7 @@ struct PreparedHbm {
   std::optional<damper::RigidDamper> damper;
   std::optional<damper::DamperStaticState> damper_static;
   double centrifugal_force = 0.0;          // CF on the damper [N]
+  ReducedModel linear;                     // the linear model (its recovery matrix when reduced here)
   Eigen::VectorXd linear_frequencies_hz;   // of the linear model without contacts
   int blade_dofs = 0;                      // DOFs of the linear model (the damper's follow)
   CraigBamptonTiming timing;

@@ -190,6 +190,12 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     run.tables.push_back(name + ".csv");
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);
   }
+  if (results.hbm && !spec.analysis.hbm.model.masters.empty()) {
+    const fs::path sidecar = out / "reduced_models" / (spec.analysis.hbm.model.name + ".toml");
+    fs::create_directories(sidecar.parent_path());
+    write_reduced_model(results.hbm->prepared.linear, sidecar);
+    run.tables.push_back("reduced_models/" + spec.analysis.hbm.model.name + ".toml");
+  }
   if (results.frf) {
     // Reduced models built here are written out, so they can be read back (`file = ...`) or used elsewhere.
     for (const RomOutcome& r : results.frf->roms) {

@@ -1,0 +1,208 @@
+// The hbm analysis through the case pipeline (parse_case_file -> build_model -> run_hbm) on lumped
+// models written in a temporary case: the stuck and frictionless limits of a friction oscillator
+// against their closed forms, the energy balance at every peak, the in-phase peak of two identical
+// blades coupled by a contact, and a contact naming an unknown DOF. Units: SI.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <string>
+
+#include "analysis/hbm_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "common/errors.hpp"
+#include "temp_folder.hpp"
+
+namespace bb {
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// m = 1 kg, k = 1e6 N/m, zeta = 0.01 (c = 20 N s/m); a Jenkins contact to the ground with
+// kt = 1e6 N/m and constant normal load n0 = 30 N; mu and the force levels are filled in.
+std::string oscillator_case(const std::string& mu, const std::string& levels, const std::string& range = "[130.0, 260.0]") {
+  return R"(
+[case]
+name = "oscillator"
+[analysis]
+type = "hbm"
+frequency_hz = )" + range + R"(
+step_hz = 0.2
+harmonics = 1
+time_samples = 128
+tolerance = 1e-12
+modal_damping = 0.01
+forces = [{ dof = "A.x", amplitude = 1.0 }]
+force_levels = )" + levels + R"(
+responses = ["A.x"]
+[analysis.model]
+name = "oscillator"
+dofs = ["A.x"]
+stiffness = [[1.0e6]]
+mass = [[1.0]]
+[[analysis.contact]]
+name = "ground"
+tangential = { "A.x" = 1.0 }
+kn = 1.0e6
+kt = 1.0e6
+mu = )" + mu + R"(
+n0 = 30.0
+)";
+}
+
+// Two 1 kg blades, each grounded by k = 1e6 N/m, coupled by kc = 1e5 N/m and by a contact on
+// q_A - q_B (kt = 2e5 N/m, mu = 0.3, n0 = 20 N), forced on B.
+constexpr const char* kBladesCase = R"(
+[case]
+name = "blades"
+[analysis]
+type = "hbm"
+frequency_hz = [140.0, 215.0]
+step_hz = 0.2
+harmonics = 1
+time_samples = 128
+tolerance = 1e-12
+modal_damping = 0.01
+forces = [{ dof = "B.x", amplitude = 1.0 }]
+force_levels = [0.01, 10.0, 1000.0]
+responses = ["B.x", "A.x"]
+ip_oop = { left = "A.x", right = "B.x" }
+[analysis.model]
+name = "blades"
+dofs = ["A.x", "B.x"]
+stiffness = [[1.1e6, -1.0e5], [-1.0e5, 1.1e6]]
+mass = [[1.0, 0.0], [0.0, 1.0]]
+[[analysis.contact]]
+name = "platform"
+tangential = { "A.x" = 1.0, "B.x" = -1.0 }
+kn = 1.0e6
+kt = 2.0e5
+mu = 0.3
+n0 = 20.0
+)";
+
+// Peak of |1 / (k - w^2 m + i w c)| with c = 2 zeta sqrt(k_mode m) (the damping of the mode, here
+// the free one): (frequency [Hz], amplitude per newton).
+std::pair<double, double> linear_peak(double k, double m, double c) {
+  const double zeta = c / (2 * std::sqrt(k * m));
+  return {std::sqrt(k / m) * std::sqrt(1 - 2 * zeta * zeta) / kTwoPi, 1 / (2 * zeta * k * std::sqrt(1 - zeta * zeta))};
+}
+
+double receptance(double k, double m, double c, double hz) {
+  const double w = kTwoPi * hz;
+  return 1 / std::abs(std::complex<double>(k - w * w * m, w * c));
+}
+
+class HbmAnalysis : public test::TempFolderTest {
+ protected:
+  HbmOutcome run(const std::string& text) {
+    const CaseSpec spec = parse_case_file(write(text));
+    return run_hbm(build_model(spec), spec.analysis.hbm);
+  }
+  static double column(const ResultTable& t, const std::string& name, int row) {
+    const std::optional<int> c = t.column_index(name);
+    if (!c) throw std::runtime_error("no column " + name);
+    return t.values(row, *c);
+  }
+};
+
+TEST_F(HbmAnalysis, SmallestLevelIsTheClosedFormStuckOscillator) {
+  // 0.01 N moves the contact by 3.5e-7 m, far below mu n0 / kt = 9e-6 m: the contact is a spring
+  // kt, so the oscillator is linear with k + kt = 2e6 N/m and the same c = 20 N s/m.
+  const HbmOutcome o = run(oscillator_case("0.3", "[0.01]"));
+  ASSERT_EQ(o.levels.size(), 1u);
+  ASSERT_EQ(o.levels[0].peaks.size(), 1u);
+  const HbmPeak& peak = o.levels[0].peaks[0];
+  ASSERT_TRUE(peak.solution.converged);
+  const auto [hz, per_n] = linear_peak(2.0e6, 1.0, 20.0);
+  // The golden-section search ends within ~5e-4 Hz of the peak: 2e-6 in frequency, and
+  // 0.5 (df / (zeta f))^2 ~ 5e-8 below the peak in amplitude.
+  EXPECT_NEAR(peak.frequency_hz / hz - 1, 0.0, 5e-6);
+  EXPECT_NEAR(peak.amplitude / 0.01 / per_n - 1, 0.0, 1e-7);
+  // every frequency of the sweep, not only the peak
+  const HbmLevel& level = o.levels[0];
+  for (size_t i = 0; i < level.frequency_hz.size(); i += 50)
+    EXPECT_NEAR(level.amplitude(static_cast<Eigen::Index>(i), 0) / 0.01 / receptance(2.0e6, 1.0, 20.0, level.frequency_hz[i]) - 1, 0.0, 1e-9)
+        << level.frequency_hz[i] << " Hz";
+  for (const contact::ContactState s : peak.solution.contacts.at(0).state) EXPECT_EQ(s, contact::ContactState::stick);
+}
+
+TEST_F(HbmAnalysis, FrictionlessContactGivesTheFreeLinearOscillatorAtEveryLevel) {
+  // mu = 0: the slider always slips with T = 0, so the response is 1 / |k - w^2 m + i w c|.
+  const HbmOutcome o = run(oscillator_case("0.0", "[0.01, 100.0, 10000.0]", "[140.0, 180.0]"));
+  const auto [hz, per_n] = linear_peak(1.0e6, 1.0, 20.0);
+  for (const HbmLevel& level : o.levels) {
+    ASSERT_EQ(level.peaks.size(), 1u);
+    ASSERT_TRUE(level.peaks[0].solution.converged);
+    EXPECT_NEAR(level.peaks[0].frequency_hz / hz - 1, 0.0, 5e-6) << level.force << " N";
+    EXPECT_NEAR(level.peaks[0].amplitude / level.force / per_n - 1, 0.0, 1e-7) << level.force << " N";
+    for (size_t i = 0; i < level.frequency_hz.size(); i += 20)
+      EXPECT_NEAR(level.amplitude(static_cast<Eigen::Index>(i), 0) / level.force / receptance(1.0e6, 1.0, 20.0, level.frequency_hz[i]) - 1,
+                  0.0, 1e-9)
+          << level.force << " N, " << level.frequency_hz[i] << " Hz";
+    EXPECT_EQ(level.peaks[0].energy.friction, 0.0);
+  }
+}
+
+TEST_F(HbmAnalysis, EnergyBalancesAtEveryPeakFromStuckToGrossSlip) {
+  for (const std::string& text : {oscillator_case("0.3", "[0.01, 1.0, 3.0, 10.0, 100.0, 10000.0]"), std::string(kBladesCase)}) {
+    const HbmOutcome o = run(text);
+    const ResultTable& t = o.tables.at("energy_balance");
+    const int expected = static_cast<int>(o.levels.size()) * (o.prepared.ip_oop ? 2 : 1);
+    ASSERT_EQ(t.values.rows(), expected);
+    for (int r = 0; r < t.values.rows(); ++r) {
+      EXPECT_LT(column(t, "relative_error", r), 1e-6) << "peak " << column(t, "peak", r);
+      EXPECT_GT(column(t, "excitation_j", r), 0.0);
+      EXPECT_GE(column(t, "friction_j", r), -1e-12 * column(t, "excitation_j", r));  // friction dissipates
+    }
+    // levels that slip dissipate in the contact
+    bool slipped = false;
+    for (int r = 0; r < t.values.rows(); ++r) slipped |= column(t, "friction_j", r) > 0.01 * column(t, "excitation_j", r);
+    EXPECT_TRUE(slipped);
+  }
+}
+
+TEST_F(HbmAnalysis, InPhasePeakOfSymmetricBladesIsTheClosedFormAtEveryLevel) {
+  // a_t = (1, -1) is orthogonal to the IP mode (1, 1) and M, C, K are diagonal in (IP, OOP): the IP
+  // component (q_A + q_B) / 2 is (F / 2m) / (w1^2 - w^2 + 2 i zeta w1 w), w1^2 = k / m, at any level.
+  const HbmOutcome o = run(kBladesCase);
+  const double c_ip = 2 * 0.01 * std::sqrt(1.0e6 * 1.0);
+  const auto [ip_hz, per_n] = linear_peak(1.0e6, 1.0, c_ip);
+  ASSERT_EQ(o.levels.size(), 3u);
+  for (const HbmLevel& level : o.levels) {
+    ASSERT_EQ(level.peaks.size(), 2u);
+    const HbmPeak& ip = level.peaks[0];
+    ASSERT_EQ(ip.kind, "IP");
+    ASSERT_TRUE(ip.solution.converged);
+    EXPECT_NEAR(ip.frequency_hz / ip_hz - 1, 0.0, 5e-6) << level.force << " N";
+    EXPECT_NEAR(ip.component / level.force / (0.5 * per_n) - 1, 0.0, 1e-7) << level.force << " N";
+    for (Eigen::Index i = 0; i < level.components.rows(); i += 25)
+      EXPECT_NEAR(level.components(i, 0) / level.force / (0.5 * receptance(1.0e6, 1.0, c_ip, level.frequency_hz[static_cast<size_t>(i)])) - 1, 0.0,
+                  1e-9);
+  }
+  // The OOP peak: stuck at 0.01 N (w^2 = (k + 2 kc + 2 kt) / m), near the free one at 1 kN
+  // ((k + 2 kc) / m), each within the peak's shift by the damping (8e-5 stuck).
+  EXPECT_NEAR(o.levels[0].peaks[1].frequency_hz / (std::sqrt(1.6e6) / kTwoPi) - 1, 0.0, 2e-4);
+  EXPECT_NEAR(o.levels[2].peaks[1].frequency_hz / (std::sqrt(1.2e6) / kTwoPi) - 1, 0.0, 2e-3);
+  EXPECT_GT(o.levels[1].peaks[1].frequency_hz, o.levels[2].peaks[1].frequency_hz);
+  EXPECT_LT(o.levels[1].peaks[1].frequency_hz, o.levels[0].peaks[1].frequency_hz);
+}
+
+TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {
+  std::string text = oscillator_case("0.3", "[1.0]");
+  const std::string from = "tangential = { \"A.x\" = 1.0 }";
+  text.replace(text.find(from), from.size(), "tangential = { \"A.x\" = 1.0, \"Q.x\" = -1.0 }");
+  const CaseSpec spec = parse_case_file(write(text));
+  const Model model = build_model(spec);
+  try {
+    (void)run_hbm(model, spec.analysis.hbm);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Q.x"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ground"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace bb

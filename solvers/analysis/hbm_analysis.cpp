@@ -57,7 +57,7 @@ damper::RigidDamper build_damper(const Model& model, const DamperSpec& spec, con
 Index dof_index(const PreparedHbm& p, const ReducedModel& blades, const PointDof& dof, const std::string& where) {
   if (p.damper && dof.point == "damper" && dof.direction < 2) return p.blade_dofs + dof.direction;
   const auto i = blades.index_of(dof.point, dof.direction);
-  if (!i) throw InputError(fmt::format("'{}': the model has no DOF {}", where, dof.name()));
+  if (!i) throw InputError(fmt::format("{}: the model has no DOF {}", where, dof.name()));
   return *i;
 }
 
@@ -175,7 +175,8 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   m.damping = Eigen::MatrixXd::Zero(n, n);
   m.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) = blade_damping;  // the rigid damper has none of its own
   m.static_load = Eigen::VectorXd::Zero(n);
-  for (const auto& [dof, f] : spec.static_loads) m.static_load[dof_index(p, blades, dof, "analysis.static_loads")] += f;
+  const std::string in_analysis = spec.at.where() + ": 'analysis'";
+  for (const auto& [dof, f] : spec.static_loads) m.static_load[dof_index(p, blades, dof, in_analysis + " static_loads")] += f;
   if (spec.damper) {
     const damper::ContactKinematics kin = damper::contact_kinematics(*p.damper, p.blade_dofs);
     contact::JenkinsParameters law = spec.damper->law;
@@ -195,19 +196,19 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
     for (hbm::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(p.damper_static->q);
   }
   for (const HbmContactSpec& c : spec.contacts) {
-    const std::string where = "analysis.contact '" + c.name + "'";
+    const std::string where = fmt::format("{}: contact '{}'", c.at.where(), c.name);
     m.contacts.push_back({c.law, combination_row(p, blades, c.tangential, n, where),
                           c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where)});
     p.contact_names.push_back(c.name);
   }
   m.harmonic_load = Eigen::VectorXcd::Zero(n);
-  for (const FrfForce& f : spec.forces) m.harmonic_load[dof_index(p, blades, f.dof, "analysis.forces")] += f.amplitude / spec.forces.front().amplitude;
+  for (const FrfForce& f : spec.forces) m.harmonic_load[dof_index(p, blades, f.dof, in_analysis + " forces")] += f.amplitude / spec.forces.front().amplitude;
   for (const PointDof& r : spec.responses) {
-    p.responses.push_back(dof_index(p, blades, r, "analysis.responses"));
+    p.responses.push_back(dof_index(p, blades, r, in_analysis + " responses"));
     p.response_names.push_back(r.name());
   }
   if (spec.ip_oop)
-    p.ip_oop.emplace(dof_index(p, blades, spec.ip_oop->first, "analysis.ip_oop"), dof_index(p, blades, spec.ip_oop->second, "analysis.ip_oop"));
+    p.ip_oop.emplace(dof_index(p, blades, spec.ip_oop->first, in_analysis + " ip_oop"), dof_index(p, blades, spec.ip_oop->second, in_analysis + " ip_oop"));
   try {
     const hbm::HarmonicBalance check(m, {});  // sizes, contact laws and a nonsingular non-contact part
   } catch (const std::invalid_argument& e) {
@@ -374,18 +375,6 @@ double friction_work(const contact::AftResult& a) {
   return contact::cycle_work(a.tangential, contact::analysis_matrix(h, static_cast<int>(a.u.size())) * a.u);
 }
 
-// Largest value of column `col` with a parabola through its neighbours: (frequency, value).
-std::pair<double, double> grid_peak(const Eigen::VectorXd& f, const Eigen::VectorXd& v) {
-  Index k = 0;
-  v.maxCoeff(&k);
-  if (k == 0 || k + 1 == v.size()) return {f[k], v[k]};
-  const double y0 = v[k - 1], y1 = v[k], y2 = v[k + 1], h = f[k + 1] - f[k];
-  const double denom = y0 - 2 * y1 + y2;
-  if (denom >= 0) return {f[k], y1};
-  const double s = 0.5 * (y0 - y2) / denom;
-  return {f[k] + s * h, y1 - 0.25 * (y0 - y2) * s};
-}
-
 }  // namespace
 
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress) {
@@ -508,18 +497,40 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
       rows.push_back(row);
     }
     o.tables.emplace("limits", make_table("limits", cols, rows));
-    // Peaks of the limits, in the columns of `peaks`.
+    // Peaks of the limits, in the columns of `peaks`: the grid's largest point, then golden-section
+    // search on the linear solve between its neighbours.
+    const auto limit_solve = [&](int l, double w) {
+      return l == 0 ? solve_linear(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb), m.mass.topLeftCorner(nb, nb), w,
+                                   m.harmonic_load.head(nb))
+                    : solve_linear(stuck, m.damping, m.mass, w, m.harmonic_load);
+    };
     std::vector<std::vector<double>> peak_limit_rows;
     for (int l = 0; l < 2; ++l) {
       const Eigen::MatrixXd& lim = l == 0 ? o.free_response : o.stuck_response;
       std::vector<double> row = {static_cast<double>(l + 1)};
       for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) {
         const Index col = p.ip_oop ? static_cast<Index>(p.responses.size()) + k : 0;
-        const auto [f, v] = grid_peak(o.limit_frequency_hz, lim.col(col));
-        // amplitude of the right response at the component's peak (nearest grid point)
-        const Index at = std::clamp<Index>(static_cast<Index>(std::lround((f - spec.sweep.f_min) / (spec.sweep.f_max - spec.sweep.f_min) * (n_grid - 1))), 0, n_grid - 1);
-        const Index right = p.ip_oop ? static_cast<Index>(std::find(p.responses.begin(), p.responses.end(), p.ip_oop->second) - p.responses.begin()) : 0;
-        row.insert(row.end(), {f, right < static_cast<Index>(p.responses.size()) ? lim(at, right) : v});
+        const auto value = [&](double f) {
+          const Eigen::VectorXcd z = limit_solve(l, kTwoPi * f);
+          if (p.ip_oop && std::max(p.ip_oop->first, p.ip_oop->second) >= z.size()) return PeakValues{};
+          if (!p.ip_oop && p.responses.front() >= z.size()) return PeakValues{};
+          return peak_values(p, z, k);
+        };
+        Index i = 0;
+        lim.col(col).maxCoeff(&i);
+        double a = o.limit_frequency_hz[std::max<Index>(i - 1, 0)], b = o.limit_frequency_hz[std::min<Index>(i + 1, n_grid - 1)];
+        const double g = (std::sqrt(5.0) - 1) / 2;
+        double c = b - g * (b - a), d = a + g * (b - a);
+        double vc = value(c).component, vd = value(d).component;
+        for (int it = 0; it < 60 && b - a > 1e-12 * b; ++it) {
+          if (vc > vd) {
+            b = d, d = c, vd = vc, c = b - g * (b - a), vc = value(c).component;
+          } else {
+            a = c, c = d, vc = vd, d = a + g * (b - a), vd = value(d).component;
+          }
+        }
+        const double f = 0.5 * (a + b);
+        row.insert(row.end(), {f, value(f).amplitude});
       }
       peak_limit_rows.push_back(row);
     }

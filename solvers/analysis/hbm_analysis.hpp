@@ -1,7 +1,7 @@
 // Nonlinear forced response by harmonic balance (thesis sections 3.3.2.4-3.3.2.7): the linear
 // model of the case (Craig-Bampton reduction, reduced model from files, or lumped matrices) with
-// friction contacts and optionally a rigid underplatform damper, swept in frequency by
-// pseudo-arclength continuation at each force level; peaks (in-phase / out-of-phase when asked),
+// friction contacts and optionally a rigid underplatform damper, swept in frequency (a grid of
+// Newton solves, or pseudo-arclength continuation) at each force level; peaks (in-phase / out-of-phase when asked),
 // contact states and energy balance at each peak, the free and fully stuck linear limits.
 #pragma once
 #include <functional>

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/frf_spec.hpp"
+#include "common/source_location.hpp"
 #include "contact/jenkins_contact.hpp"
 
 namespace bb {
@@ -20,6 +21,7 @@ struct HbmContactSpec {
   std::string name;
   std::vector<std::pair<PointDof, double>> tangential, normal;
   contact::JenkinsParameters law;
+  SourceLocation at;
 };
 
 // One point of the rigid damper: its position and the blade point that carries the platform side.
@@ -68,6 +70,7 @@ struct HbmSpec {
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.
   int max_iterations = 20;
   HbmSweepSpec sweep;
+  SourceLocation at;                 // of [analysis], for errors found when the model is built
 };
 
 }  // namespace bb

@@ -12,18 +12,13 @@
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
 #include "articles/two_blade.hpp"
+#include "common/source_location.hpp"
 #include "linalg/modal_solver.hpp"
 #include "mesh/hex_block.hpp"
 #include "mesh/mapped_quad.hpp"
 #include "model/model.hpp"
 
 namespace bb {
-
-struct SourceLocation {
-  std::filesystem::path file;
-  int line = 0;
-  std::string where() const;  // "file:line"
-};
 
 struct MeshSpec {
   enum class Kind { mapped_quad, csv, hex_blocks, gmsh, two_blade, none } kind = Kind::mapped_quad;  // none: matrices only

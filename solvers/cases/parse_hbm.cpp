@@ -43,6 +43,7 @@ contact::JenkinsParameters parse_law(TomlReader& r, bool preload) {
 
 HbmContactSpec parse_contact(TomlReader r) {
   HbmContactSpec c;
+  c.at = r.location();
   c.name = r.string("name");
   c.law = parse_law(r, true);
   c.tangential = parse_combination(r, "tangential");
@@ -94,6 +95,7 @@ DamperSpec parse_damper(TomlReader r) {
 
 HbmSpec parse_hbm(TomlReader& r, const fs::path& folder) {
   HbmSpec s;
+  s.at = r.location();
   const std::vector<double> range = r.number_array("frequency_hz");
   if (range.size() != 2 || !(range[0] > 0.0) || !(range[0] < range[1]) || !std::isfinite(range[1]))
     r.fail("frequency_hz", "expected [f_min, f_max] with 0 < f_min < f_max");

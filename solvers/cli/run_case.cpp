@@ -117,9 +117,12 @@ void describe_hbm(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
                                   ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
                                   : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
                                                 g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]), g(spec.damping.rayleigh_hz[1]));
-  run.facts.emplace_back("analysis", fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by pseudo-arclength "
-                                                 "continuation; {}", spec.harmonics, spec.time_samples > 0 ? g(spec.time_samples) : "automatic",
-                                                 g(spec.sweep.f_min), g(spec.sweep.f_max), damping));
+  const std::string sweep = spec.sweep.method == HbmSweepSpec::Method::grid
+                                ? fmt::format("a {} Hz grid (Newton from the secant guess)", g(spec.sweep.step_hz))
+                                : "pseudo-arclength continuation";
+  run.facts.emplace_back("analysis", fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by {}; {}", spec.harmonics,
+                                                 spec.time_samples > 0 ? g(spec.time_samples) : "automatic", g(spec.sweep.f_min),
+                                                 g(spec.sweep.f_max), sweep, damping));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
   std::string contacts;
   for (const hbm::ContactElement& c : p.model.contacts)

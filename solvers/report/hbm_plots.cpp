@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "checks/checks.hpp"
+#include "common/errors.hpp"
 #include "report/gnuplot.hpp"
 
 namespace bb {
@@ -63,13 +64,18 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
                           const std::string& stem) {
   const std::vector<std::string> kinds = hbm.prepared.ip_oop ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
   std::vector<std::vector<double>> ref(kinds.size());
-  std::vector<long> ref_keys;
-  if (!reference.empty())
-    for (size_t k = 0; k < kinds.size(); ++k) {
-      const ReferenceColumn c = read_reference_column(reference, "level", kinds[k] + "_" + quantity);
-      ref[k] = c.values;
-      ref_keys = c.keys;
+  std::vector<std::vector<long>> ref_keys(kinds.size());
+  bool any_reference = false;
+  for (size_t k = 0; k < kinds.size() && !reference.empty(); ++k) {
+    try {
+      ReferenceColumn c = read_reference_column(reference, "level", kinds[k] + "_" + quantity);
+      ref[k] = std::move(c.values);
+      ref_keys[k] = std::move(c.keys);
+      any_reference = true;
+    } catch (const InputError&) {
+      // The reference need not give every peak kind or quantity: that curve is left out.
     }
+  }
   {
     std::ofstream out = open_plot_data(out_dir, stem);
     out << "# abscissa, then per peak kind: ours, reference (nan where none)\n";
@@ -80,8 +86,8 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
         const bool ok = k < level.peaks.size() && level.peaks[k].solution.converged;
         const double v = !ok ? std::nan("") : quantity == "hz" ? level.peaks[k].frequency_hz : level.peaks[k].amplitude / level.force;
         double r = std::nan("");
-        for (size_t i = 0; i < ref_keys.size(); ++i)
-          if (ref_keys[i] == static_cast<long>(l + 1)) r = ref[k][i];
+        for (size_t i = 0; i < ref_keys[k].size(); ++i)
+          if (ref_keys[k][i] == static_cast<long>(l + 1)) r = ref[k][i];
         out << ' ' << v << ' ' << r;
       }
       out << '\n';
@@ -97,8 +103,8 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
     std::string upper = kinds[k] == "peak" ? "peak" : kinds[k] == "ip" ? "IP" : "OOP";
     script += fmt::format("{}'{}.dat' using 1:{} with linespoints pt 7 lc rgb '{}' title '{} (bladebench)'", k ? ", \\\n     " : "", stem,
                           2 + 2 * k, kColours[k], upper);
-    if (!reference.empty())
-      script += fmt::format(", \\\n     '{}.dat' using 1:{} with linespoints pt 4 dt 2 lc rgb '{}' title '{} (thesis)'", stem, 3 + 2 * k,
+    if (!ref[k].empty())
+      script += fmt::format(", \\\n     '{}.dat' using 1:{} with linespoints pt 4 dt 2 lc rgb '{}' title '{} (reference)'", stem, 3 + 2 * k,
                             kColours[k], upper);
   }
   script += '\n';

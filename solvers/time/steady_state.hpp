@@ -1,0 +1,67 @@
+// Stepped-sine steady state by direct time integration (thesis section 3.4.1, eqs 3.40-3.42): the
+// model of hbm/harmonic_balance.hpp driven by f_static + Re(F e^{i omega t}) is integrated with
+// time/newmark.hpp, a fixed number of steps per period (dt = k / f of eq 3.42), period after period
+// until the motion repeats, then the harmonics 0..H of chosen DOFs come from a DFT over the last
+// whole periods. Units: SI.
+//
+// Where the thesis runs a fixed number of cycles n (eq 3.41) and so cannot tell a transient from
+// the steady state, the run here stops on a measured criterion (cycle-to-cycle change) and says
+// whether it met it; the final state is returned so the next frequency of a sweep starts from it
+// (the transient between neighbouring frequencies is short, the one from rest is not).
+#pragma once
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hbm/harmonic_balance.hpp"
+#include "time/newmark.hpp"
+
+namespace bb::timeint {
+
+struct SteadyStateOptions {
+  std::vector<Eigen::Index> dofs;  // DOFs tracked for convergence and analysed (at least one)
+  int steps_per_period = 256;      // dt = 2 pi / (omega steps_per_period); >= 2 (harmonics + 1)
+  int harmonics = 1;               // H >= 0: harmonics 0..H extracted
+  // Converged when, over one whole period, max_k |x_j(theta_k) - x_j-1(theta_k)| <= tolerance *
+  // max_k |x_j(theta_k)| for every tracked DOF x (j the period, theta_k its samples): the largest
+  // sample-by-sample change between consecutive periods, relative to the DOF's largest value.
+  double tolerance = 1e-6;
+  int min_cycles = 2;        // periods always integrated
+  int max_cycles = 2000;     // cap; reaching it gives converged == false with the last change
+  int periods_analysed = 1;  // whole periods at the end that enter the DFT (<= min_cycles)
+  // Newmark options; time_step is set from omega and steps_per_period.
+  NewmarkOptions newmark{};
+};
+
+struct SteadyState {
+  double omega = 0.0;  // [rad/s]
+  // Rows follow options.dofs. Real layout of contact/aft.hpp: [c0, a1, b1, ..., aH, bH] with
+  // x(t) = c0 + sum a_h cos(h omega t) + b_h sin(h omega t).
+  Eigen::MatrixXd coefficients;
+  Eigen::MatrixXd amplitude;  // [|c0|, sqrt(a_h^2 + b_h^2)...], H + 1 columns [m]
+  Eigen::MatrixXd phase;      // arg(a_h - i b_h): x_h = A_h cos(h omega t + phase_h) [rad]; 0 for h = 0
+  int cycles = 0;             // periods integrated
+  double change = 0.0;        // last cycle-to-cycle change (relative, as tested)
+  bool converged = false;
+  std::string failure;        // cap reached (with the change) or a failed Newmark step; empty when converged
+  long total_iterations = 0;  // Newton iterations over the run
+  int max_iterations = 0;     // most Newton iterations in one step
+  // Last period: each contact's samples at steps_per_period + 1 instants (start and end included,
+  // so a steady loop closes), the work done over it and the change of mechanical energy.
+  std::vector<std::vector<ContactSample>> contacts;
+  WorkLedger cycle_work;
+  double energy_change = 0.0;  // [J]
+  DynamicState final_state;    // at a whole number of periods: start the next frequency from it
+};
+
+// From `start` (its displacements, velocities and sliders; its time is reset to 0, where the load
+// has the same value for any omega, so a sweep from the final state of the previous frequency sees
+// a continuous load) or, without one, from static_initial_state(model) (friction neglected).
+// Throws std::invalid_argument on invalid inputs; a failed step or static solve is reported in
+// the result (converged == false), never thrown.
+[[nodiscard]] SteadyState steady_state(const hbm::HbmModel& model, double omega_rad_s,
+                                       const SteadyStateOptions& options,
+                                       const std::optional<DynamicState>& start = std::nullopt);
+
+}  // namespace bb::timeint

@@ -4,6 +4,7 @@
 
 #include "analysis/frf_analysis.hpp"
 #include "analysis/hbm_analysis.hpp"
+#include "analysis/time_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "cases/case_spec.hpp"
@@ -17,6 +18,7 @@ struct CaseResults {
   std::optional<ModalResult> modal;
   std::optional<FrfOutcome> frf;
   std::optional<HbmOutcome> hbm;
+  std::optional<TimeOutcome> time;
 };
 
 // `progress` receives the progress lines of long sweeps (none when empty).

@@ -9,6 +9,7 @@
 
 #include "analysis/frf_spec.hpp"
 #include "analysis/hbm_spec.hpp"
+#include "analysis/time_spec.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
 #include "articles/two_blade.hpp"
@@ -56,7 +57,7 @@ struct LoadSpec {
   SourceLocation at;
 };
 
-enum class AnalysisType { static_linear, modal, frf, hbm };
+enum class AnalysisType { static_linear, modal, frf, hbm, time };
 
 struct AnalysisSpec {
   AnalysisType type = AnalysisType::static_linear;
@@ -64,6 +65,7 @@ struct AnalysisSpec {
   ModalOptions modal;
   FrfSpec frf;                        // frf: linear forced response
   HbmSpec hbm;                        // hbm: nonlinear forced response (harmonic balance)
+  TimeSpec time;                      // time: forced response by time integration (stepped sine)
   std::optional<ModePairSpec> pairs;  // modal, frf: in-phase / out-of-phase and type of each mode
   SourceLocation pairs_at;
 };

@@ -8,6 +8,7 @@
 #include "cases/case_spec.hpp"
 #include "cases/parse_frf.hpp"
 #include "cases/parse_hbm.hpp"
+#include "cases/parse_time.hpp"
 #include "cases/toml_reader.hpp"
 #include "common/errors.hpp"
 
@@ -235,7 +236,11 @@ LoadSpec parse_load(TomlReader r) {
 
 AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
   AnalysisSpec a;
-  const std::string type = r.choice("type", {"static", "modal", "frf", "hbm"});
+  const std::string type = r.choice("type", {"static", "modal", "frf", "hbm", "time"});
+  if (type == "time") {
+    a.type = AnalysisType::time;
+    a.time = parse_time(r, folder);
+  }
   if (type == "frf") {
     a.type = AnalysisType::frf;
     a.frf = parse_frf(r, folder);
@@ -261,7 +266,7 @@ AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
     a.modal.tolerance = r.optional_number("tolerance").value_or(a.modal.tolerance);
   }
   if (const toml::table* pairs = r.optional_table("pairs")) {
-    if (a.type == AnalysisType::static_linear || a.type == AnalysisType::hbm) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
+    if (a.type == AnalysisType::static_linear || a.type == AnalysisType::hbm || a.type == AnalysisType::time) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
     TomlReader p(*pairs, r.path() + ".pairs", r.file());
     a.pairs_at = p.location();
     ModePairSpec& spec = a.pairs.emplace();
@@ -515,7 +520,8 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   const FrfSpec& frf = spec.analysis.frf;
   const bool matrices_only = (spec.analysis.type == AnalysisType::frf && !frf.full_model &&
                               std::all_of(frf.roms.begin(), frf.roms.end(), [](const RomSpec& r) { return r.masters.empty(); })) ||
-                             (spec.analysis.type == AnalysisType::hbm && spec.analysis.hbm.model.masters.empty());
+                             (spec.analysis.type == AnalysisType::hbm && spec.analysis.hbm.model.masters.empty()) ||
+                             (spec.analysis.type == AnalysisType::time && spec.analysis.time.system.model.masters.empty());
   if (matrices_only && !top.has("mesh")) {
     for (const char* key : {"material", "section", "sets", "bc", "load"})
       if (top.has(key)) top.fail(key, "the model is given by matrices only (a reduced model from a file or written in the case): it takes no mesh data");

@@ -93,7 +93,7 @@ DamperSpec parse_damper(TomlReader r) {
 
 }  // namespace
 
-HbmSpec parse_hbm(TomlReader& r, const fs::path& folder) {
+HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required) {
   HbmSpec s;
   s.at = r.location();
   const std::vector<double> range = r.number_array("frequency_hz");
@@ -166,7 +166,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder) {
     }
   }
   if (const toml::table* d = r.optional_table("damper")) s.damper = parse_damper(TomlReader(*d, r.path() + ".damper", r.file()));
-  if (s.contacts.empty() && !s.damper) r.fail("contact", "an hbm analysis needs at least one [[analysis.contact]] or an [analysis.damper]");
+  if (contacts_required && s.contacts.empty() && !s.damper) r.fail("contact", "an hbm analysis needs at least one [[analysis.contact]] or an [analysis.damper]");
   s.sweep.method = r.choice("sweep", {"grid", "arclength"}, "grid") == "grid" ? HbmSweepSpec::Method::grid : HbmSweepSpec::Method::arclength;
   if (s.sweep.method == HbmSweepSpec::Method::grid) {
     s.sweep.step_hz = r.positive("step_hz");

@@ -8,6 +8,7 @@
 namespace bb {
 
 // Reads the hbm keys of `r` (the caller reads `type` and finishes `r`). Throws InputError.
-HbmSpec parse_hbm(TomlReader& r, const std::filesystem::path& folder);
+// `contacts_required`: a harmonic balance needs a nonlinearity; a time integration may run a linear model.
+HbmSpec parse_hbm(TomlReader& r, const std::filesystem::path& folder, bool contacts_required = true);
 
 }  // namespace bb

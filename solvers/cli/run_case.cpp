@@ -17,6 +17,7 @@
 #include "reduction/reduced_model_io.hpp"
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
+#include "report/time_plots.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
 #include "study/modal_refinement.hpp"
@@ -147,6 +148,40 @@ void describe_hbm(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   run.facts.emplace_back("sweeps that reached the end / points", fmt::format("{} of {} / {}", reached, hbm.levels.size(), points));
 }
 
+void describe_time(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
+  const PreparedHbm& p = time.prepared;
+  run.facts.emplace_back("analysis", fmt::format("direct time integration ({}), {} steps per period, stepped sine {} to {} Hz every {} Hz, "
+                                                 "each frequency to a cycle-to-cycle change below {} (at most {} periods) from the "
+                                                 "previous one's state; first {} harmonic(s) by DFT over the last period",
+                                                 spec.alpha == 0.0 ? "Newmark average acceleration" : fmt::format("HHT-alpha, alpha = {}", g(spec.alpha)),
+                                                 spec.steps_per_period, g(spec.system.sweep.f_min), g(spec.system.sweep.f_max),
+                                                 g(spec.system.sweep.step_hz), g(spec.steady_tolerance), spec.max_cycles, spec.system.harmonics));
+  std::string levels;
+  for (double f : spec.system.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
+  run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
+  std::string contacts;
+  for (size_t c = 0; c < p.model.contacts.size(); ++c)
+    contacts += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ", p.contact_names[c], g(p.model.contacts[c].law.kn),
+                            g(p.model.contacts[c].law.kt), g(p.model.contacts[c].law.mu));
+  run.facts.emplace_back("contacts", contacts.empty() ? "none (linear model)" : contacts);
+  run.facts.emplace_back("model DOFs", std::to_string(p.model.mass.rows()));
+  long steps = 0, not_steady = 0;
+  double seconds = 0;
+  for (const TimeLevel& l : time.levels) {
+    steps += l.steps;
+    seconds += l.seconds;
+    for (bool s : l.steady) not_steady += s ? 0 : 1;
+  }
+  run.facts.emplace_back("steps / frequencies not steady / time [s]", fmt::format("{} / {} / {:.2f} (per step {:.2f} us)", steps, not_steady,
+                                                                                  seconds, 1e6 * seconds / std::max(1L, steps)));
+  if (spec.compare_harmonics > 0) run.facts.emplace_back("comparison", fmt::format("harmonic balance, H = {}, same grid", spec.compare_harmonics));
+  if (time.record)
+    run.facts.emplace_back("recorded run", fmt::format("{} Hz, Fe = {} N: steady after {} periods ({}), then {} periods recorded{}",
+                                                       g(time.record->frequency_hz), g(time.record->force), time.record->steady.cycles,
+                                                       time.record->steady.converged ? "converged" : time.record->steady.failure,
+                                                       spec.history_cycles, time.record->history.converged ? "" : ": " + time.record->history.failure));
+}
+
 void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
   // Long sweeps report progress on a terminal only (one line, rewritten in place).
   HbmProgress progress;
@@ -168,6 +203,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     describe_frf(spec.analysis.frf, *results.frf, run);
   } else if (results.hbm) {
     describe_hbm(spec.analysis.hbm, *results.hbm, run);
+  } else if (results.time) {
+    describe_time(spec.analysis.time, *results.time, run);
   } else {
     const ModeSelection& sel = spec.analysis.modes;
     run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
@@ -224,6 +261,15 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
           if (std::find(outputs.begin(), outputs.end(), o) == outputs.end()) outputs.push_back(o);
       for (const std::string& o : outputs) run.plots.push_back(plot_frf(*results.frf, o, out, "frf_" + o));
       if (!results.frf->level_forces.empty()) run.plots.push_back(plot_force_levels(*results.frf, out, "force_levels"));
+    }
+    if (results.time) {
+      const TimeOutcome& t = *results.time;
+      for (size_t r = 0; r < t.prepared.response_names.size(); ++r)
+        run.plots.push_back(plot_time_frf(t, r, out, "frf_" + t.prepared.response_names[r]));
+      if (t.record && t.record->history.steps > 0 && !t.prepared.contact_names.empty()) {
+        run.plots.push_back(plot_hysteresis(t, out, "hysteresis"));
+        run.plots.push_back(plot_contact_forces(t, out, "contact_forces"));
+      }
     }
     if (results.hbm) {
       const HbmOutcome& h = *results.hbm;

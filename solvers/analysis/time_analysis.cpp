@@ -1,0 +1,278 @@
+#include "analysis/time_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <numbers>
+
+#include "contact/jenkins_contact.hpp"
+#include "time/newmark.hpp"
+
+namespace bb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::Index;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+ResultTable make_table(const std::string& name, std::vector<std::string> columns, const std::vector<std::vector<double>>& rows) {
+  ResultTable t;
+  t.name = name;
+  t.columns = std::move(columns);
+  t.values.resize(static_cast<Index>(rows.size()), static_cast<Index>(t.columns.size()));
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < rows[i].size(); ++j) t.values(static_cast<Index>(i), static_cast<Index>(j)) = rows[i][j];
+  return t;
+}
+
+std::vector<double> grid(const HbmSweepSpec& s) {
+  const int n = static_cast<int>(std::floor((s.f_max - s.f_min) / s.step_hz + 1e-9)) + 1;
+  std::vector<double> f;
+  for (int i = 0; i < n; ++i) f.push_back(i + 1 == n ? s.f_max : s.f_min + i * s.step_hz);
+  return f;
+}
+
+// The largest value of `v` and its frequency, refined by a parabola through its neighbours.
+std::pair<double, double> grid_peak(const std::vector<double>& f, const Eigen::VectorXd& v) {
+  Index k = 0;
+  if (v.size() == 0 || !v.allFinite()) return {kNan, kNan};
+  v.maxCoeff(&k);
+  if (k == 0 || k + 1 == v.size()) return {f[static_cast<size_t>(k)], v[k]};
+  const double y0 = v[k - 1], y1 = v[k], y2 = v[k + 1], h = f[static_cast<size_t>(k + 1)] - f[static_cast<size_t>(k)];
+  const double denom = y0 - 2 * y1 + y2;
+  if (denom >= 0) return {f[static_cast<size_t>(k)], y1};
+  const double s = 0.5 * (y0 - y2) / denom;
+  return {f[static_cast<size_t>(k)] + s * h, y1 - 0.25 * (y0 - y2) * s};
+}
+
+// The energy a contact's loop encloses over the recorded samples: sum of T du by the trapezoid rule.
+double loop_work(const std::vector<timeint::ContactSample>& s) {
+  double w = 0.0;
+  for (size_t i = 1; i < s.size(); ++i) w += 0.5 * (s[i].tangential + s[i - 1].tangential) * (s[i].u - s[i - 1].u);
+  return w;
+}
+
+}  // namespace
+
+TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress) {
+  const auto t_start = Clock::now();
+  TimeOutcome o;
+  o.prepared = prepare_hbm(model, spec.system);
+  const PreparedHbm& p = o.prepared;
+  // Analysed DOFs: the responses, then the IP/OOP pair where not among them.
+  std::vector<Index> dofs = p.responses;
+  auto slot = [&](Index dof) {
+    const auto it = std::find(dofs.begin(), dofs.end(), dof);
+    if (it != dofs.end()) return static_cast<Index>(it - dofs.begin());
+    dofs.push_back(dof);
+    return static_cast<Index>(dofs.size() - 1);
+  };
+  std::optional<std::pair<Index, Index>> pair;
+  if (p.ip_oop) pair.emplace(slot(p.ip_oop->first), slot(p.ip_oop->second));
+  timeint::SteadyStateOptions options;
+  options.dofs = dofs;
+  options.steps_per_period = spec.steps_per_period;
+  options.harmonics = spec.system.harmonics;
+  options.tolerance = spec.steady_tolerance;
+  options.max_cycles = spec.max_cycles;
+  options.newmark.alpha = spec.alpha;
+  const std::vector<double> frequencies = grid(spec.system.sweep);
+  const auto nf = static_cast<Index>(frequencies.size());
+  const auto nr = static_cast<Index>(p.responses.size());
+
+  for (double force : spec.system.force_levels) {
+    const auto t0 = Clock::now();
+    TimeLevel level;
+    level.force = force;
+    level.frequency_hz = frequencies;
+    level.amplitude = Eigen::MatrixXd::Constant(nf, nr, kNan);
+    if (pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
+    hbm::HbmModel m = p.model;
+    m.harmonic_load *= force;
+    std::optional<timeint::DynamicState> start;
+    for (Index i = 0; i < nf; ++i) {
+      const double omega = kTwoPi * frequencies[static_cast<size_t>(i)];
+      const timeint::SteadyState s = timeint::steady_state(m, omega, options, start);
+      level.cycles.push_back(s.cycles);
+      level.steady.push_back(s.converged);
+      level.steps += static_cast<long>(s.cycles) * spec.steps_per_period;
+      level.newton_iterations += s.total_iterations;
+      level.max_step_iterations = std::max(level.max_step_iterations, s.max_iterations);
+      if (s.coefficients.rows() == static_cast<Index>(dofs.size()) && s.coefficients.allFinite()) {
+        Eigen::VectorXcd z(static_cast<Index>(dofs.size()));
+        for (Index j = 0; j < z.size(); ++j) z[j] = std::complex<double>(s.coefficients(j, 1), -s.coefficients(j, 2));
+        for (Index r = 0; r < nr; ++r) level.amplitude(i, r) = std::abs(z[r]);
+        if (pair) {
+          level.components(i, 0) = std::abs(z[pair->first] + z[pair->second]) / 2;
+          level.components(i, 1) = std::abs(z[pair->second] - z[pair->first]) / 2;
+        }
+        start = s.final_state;  // the next frequency starts from here (also when not yet steady)
+      }
+      if (progress && i % 5 == 0)
+        progress(fmt::format("Fe = {:g} N: {:.3f} Hz, {} cycles{}", force, frequencies[static_cast<size_t>(i)], s.cycles,
+                             s.converged ? "" : " (not steady)"));
+    }
+    if (spec.compare_harmonics > 0) {
+      HbmSpec h = spec.system;
+      h.harmonics = spec.compare_harmonics;
+      h.time_samples = 0;
+      level.hbm = sweep_hbm_level(p, h, force, spec.compare_harmonics);
+    }
+    level.seconds = seconds_since(t0);
+    o.levels.push_back(std::move(level));
+  }
+
+  if (spec.history_hz) {
+    TimeHistoryRecord rec;
+    rec.frequency_hz = *spec.history_hz;
+    rec.force = spec.system.force_levels.front();
+    hbm::HbmModel m = p.model;
+    m.harmonic_load *= rec.force;
+    const double omega = kTwoPi * rec.frequency_hz;
+    rec.steady = timeint::steady_state(m, omega, options);
+    if (rec.steady.cycles > 0) {
+      timeint::NewmarkOptions n = options.newmark;
+      n.time_step = kTwoPi / (omega * spec.steps_per_period);
+      const timeint::NewmarkIntegrator integrator(m, n);
+      timeint::RecordOptions record;
+      record.dofs = p.responses;
+      rec.history = timeint::integrate(integrator, rec.steady.final_state, timeint::harmonic_excitation(m.harmonic_load, omega),
+                                       spec.history_cycles * spec.steps_per_period, record);
+    }
+    o.record = std::move(rec);
+  }
+  o.seconds = seconds_since(t_start);
+
+  // ---- Tables ----
+  const std::vector<std::string> kinds = pair ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
+  std::vector<std::string> frf_cols = {"point", "fe_n", "frequency_hz"};
+  for (const std::string& r : p.response_names) frf_cols.push_back(r + "_amp_m");
+  if (pair) frf_cols.insert(frf_cols.end(), {"ip_component_m", "oop_component_m"});
+  frf_cols.insert(frf_cols.end(), {"cycles", "steady"});
+  const bool compare = spec.compare_harmonics > 0;
+  if (compare)
+    for (const std::string& r : p.response_names) frf_cols.push_back("hbm_" + r + "_amp_m");
+  std::vector<std::vector<double>> frf_rows, peak_rows, hbm_peak_rows, cost_rows;
+  for (size_t l = 0; l < o.levels.size(); ++l) {
+    const TimeLevel& level = o.levels[l];
+    // HBM amplitudes at the grid frequencies (its converged points are the grid's).
+    std::vector<Eigen::VectorXd> hbm_amp(static_cast<size_t>(nf), Eigen::VectorXd::Constant(nr, kNan));
+    if (level.hbm)
+      for (size_t k = 0; k < level.hbm->frequency_hz.size(); ++k)
+        for (Index i = 0; i < nf; ++i)
+          if (std::abs(level.hbm->frequency_hz[k] - frequencies[static_cast<size_t>(i)]) < 1e-9 * frequencies[static_cast<size_t>(i)])
+            hbm_amp[static_cast<size_t>(i)] = level.hbm->amplitude.row(static_cast<Index>(k)).transpose();
+    for (Index i = 0; i < nf; ++i) {
+      std::vector<double> row = {static_cast<double>((l + 1) * 100000 + static_cast<size_t>(i) + 1), level.force, frequencies[static_cast<size_t>(i)]};
+      for (Index r = 0; r < nr; ++r) row.push_back(level.amplitude(i, r));
+      if (pair) row.insert(row.end(), {level.components(i, 0), level.components(i, 1)});
+      row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]), level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
+      if (compare)
+        for (Index r = 0; r < nr; ++r) row.push_back(hbm_amp[static_cast<size_t>(i)][r]);
+      frf_rows.push_back(row);
+    }
+    std::vector<double> prow = {static_cast<double>(l + 1), level.force};
+    for (size_t k = 0; k < kinds.size(); ++k) {
+      const Eigen::VectorXd values = pair ? Eigen::VectorXd(level.components.col(static_cast<Index>(k))) : Eigen::VectorXd(level.amplitude.col(0));
+      const auto [f, v] = grid_peak(frequencies, values);
+      // The right (or first) response at the peak, by the same parabola's abscissa: nearest grid value.
+      const Index right = pair ? pair->second : 0;
+      Index at = 0;
+      if (std::isfinite(f)) at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
+      at = std::clamp<Index>(at, 0, nf - 1);
+      const double amp = right < nr ? level.amplitude(at, right) : v;
+      prow.insert(prow.end(), {f, amp, amp / level.force});
+    }
+    peak_rows.push_back(prow);
+    if (level.hbm) {
+      std::vector<double> hrow = {static_cast<double>(l + 1), level.force};
+      for (const HbmPeak& pk : level.hbm->peaks)
+        hrow.insert(hrow.end(), {pk.solution.converged ? pk.frequency_hz : kNan, pk.solution.converged ? pk.amplitude : kNan,
+                                 pk.solution.converged ? pk.amplitude / level.force : kNan});
+      if (level.hbm->peaks.empty()) hrow.insert(hrow.end(), 3 * kinds.size(), kNan);
+      hbm_peak_rows.push_back(hrow);
+    }
+    long not_steady = 0;
+    for (bool s : level.steady) not_steady += s ? 0 : 1;
+    cost_rows.push_back({static_cast<double>(l + 1), level.force, static_cast<double>(nf), static_cast<double>(level.steps),
+                         static_cast<double>(level.newton_iterations), static_cast<double>(level.max_step_iterations),
+                         static_cast<double>(not_steady), level.seconds, 1e6 * level.seconds / std::max<double>(1.0, static_cast<double>(level.steps))});
+  }
+  o.tables.emplace("frf", make_table("frf", frf_cols, frf_rows));
+  std::vector<std::string> peak_cols = {"level", "fe_n"};
+  for (const std::string& k : kinds)
+    for (const char* c : {"_hz", "_amp_m", "_amp_per_n"}) peak_cols.push_back(k + c);
+  o.tables.emplace("peaks", make_table("peaks", peak_cols, peak_rows));
+  if (compare) o.tables.emplace("peaks_hbm", make_table("peaks_hbm", peak_cols, hbm_peak_rows));
+  o.tables.emplace("time_cost", make_table("time_cost", {"level", "fe_n", "frequencies", "steps", "newton_iterations", "max_step_iterations",
+                                                         "not_steady", "seconds", "us_per_step"},
+                                           cost_rows));
+
+  if (o.record && o.record->history.steps > 0) {
+    const TimeHistoryRecord& rec = *o.record;
+    const timeint::TimeHistory& h = rec.history;
+    std::vector<std::vector<double>> rows;
+    std::vector<std::string> cols = {"instant", "time_s"};
+    for (const std::string& r : p.response_names) cols.push_back(r + "_m");
+    for (size_t i = 0; i < h.time.size(); ++i) {
+      std::vector<double> row = {static_cast<double>(i + 1), h.time[i]};
+      for (Index r = 0; r < nr; ++r) row.push_back(h.displacement(static_cast<Index>(i), r));
+      rows.push_back(row);
+    }
+    o.tables.emplace("history", make_table("history", cols, rows));
+    std::vector<std::vector<double>> summary;
+    for (size_t c = 0; c < h.contacts.size(); ++c) {
+      const std::vector<timeint::ContactSample>& s = h.contacts[c];
+      std::vector<std::vector<double>> loop;
+      std::vector<std::string> states;
+      double stick = 0, slip = 0, open = 0, coulomb = 0, open_force = 0;
+      double su = 0, st = 0, suu = 0, sut = 0, n_stick = 0;
+      const double mu = p.model.contacts[c].law.mu, kt = p.model.contacts[c].law.kt;
+      for (size_t i = 0; i < s.size(); ++i) {
+        loop.push_back({static_cast<double>(i + 1), h.time[i], s[i].u, s[i].tangential, s[i].normal, s[i].slider});
+        states.emplace_back(contact::state_name(s[i].state));
+        if (i == 0) continue;  // the start instant repeats the previous period's end
+        switch (s[i].state) {
+          case contact::ContactState::stick:
+            ++stick;
+            su += s[i].u, st += s[i].tangential, suu += s[i].u * s[i].u, sut += s[i].u * s[i].tangential, ++n_stick;
+            break;
+          case contact::ContactState::lift_off:
+            ++open;
+            open_force = std::max({open_force, std::abs(s[i].tangential), s[i].normal});
+            break;
+          default: ++slip; break;
+        }
+        if (s[i].normal > 0 && mu > 0) coulomb = std::max(coulomb, std::abs(s[i].tangential) / (mu * s[i].normal));
+      }
+      const double n = std::max(1.0, stick + slip + open);
+      const double var = suu - su * su / std::max(1.0, n_stick);
+      // Slope of T against u over the stuck samples: kt when the loop is a line (needs u to vary).
+      const double slope = n_stick >= 2 && var > 1e-30 ? (sut - su * st / n_stick) / var : kNan;
+      const std::string name = "hysteresis_" + p.contact_names[c];
+      ResultTable t = make_table(name, {"instant", "time_s", "relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"}, loop);
+      t.add_text_column("state", states);
+      o.tables.emplace(name, std::move(t));
+      double nmin = std::numeric_limits<double>::infinity(), nmax = 0, nmean = 0;
+      for (size_t i = 1; i < s.size(); ++i) nmin = std::min(nmin, s[i].normal), nmax = std::max(nmax, s[i].normal), nmean += s[i].normal / (n);
+      summary.push_back({static_cast<double>(c + 1), stick / n, slip / n, open / n, slope, slope / kt, coulomb, open_force,
+                         loop_work(s) / spec.history_cycles, nmin, nmean, nmax});
+    }
+    ResultTable t = make_table("hysteresis_summary", {"contact", "stick", "slip", "lift_off", "stick_slope_n_per_m", "stick_slope_over_kt",
+                                                      "max_t_over_mu_n", "max_force_when_open_n", "loop_work_per_cycle_j",
+                                                      "min_normal_n", "mean_normal_n", "max_normal_n"},
+                               summary);
+    t.add_text_column("name", p.contact_names);
+    o.tables.emplace("hysteresis_summary", std::move(t));
+  }
+  return o;
+}
+
+}  // namespace bb

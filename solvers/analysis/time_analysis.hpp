@@ -1,0 +1,50 @@
+// Time-domain forced response (thesis section 3.4): the model of a harmonic-balance analysis
+// (analysis/hbm_analysis.hpp: reduced or lumped model, contacts, rigid damper seated by CF)
+// integrated by Newmark with the implicit predictor-corrector contact (time/newmark.hpp) to the
+// steady state at each frequency of a grid (stepped sine), each frequency starting from the
+// previous one's final state; time histories and hysteresis loops at one frequency; and the
+// harmonic balance at the same frequencies, for cross-validation.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/hbm_analysis.hpp"
+#include "analysis/time_spec.hpp"
+#include "results/table.hpp"
+#include "time/steady_state.hpp"
+
+namespace bb {
+
+struct TimeLevel {
+  double force = 0.0;                // amplitude of the first force [N]
+  std::vector<double> frequency_hz;
+  Eigen::MatrixXd amplitude;         // frequencies x responses, first harmonic [m]
+  Eigen::MatrixXd components;        // frequencies x (IP, OOP) [m] when ip_oop is set
+  std::vector<int> cycles;           // periods integrated per frequency
+  std::vector<bool> steady;          // the cycle-to-cycle criterion was met
+  long steps = 0, newton_iterations = 0;
+  int max_step_iterations = 0;
+  double seconds = 0.0;
+  std::optional<HbmLevel> hbm;       // the harmonic balance at the same grid (compare_harmonics > 0)
+};
+
+struct TimeHistoryRecord {
+  double frequency_hz = 0.0, force = 0.0;
+  timeint::SteadyState steady;       // the steady state reached there
+  timeint::TimeHistory history;      // history_cycles periods after it, every step recorded
+};
+
+struct TimeOutcome {
+  ResultTables tables;
+  PreparedHbm prepared;
+  std::vector<TimeLevel> levels;
+  std::optional<TimeHistoryRecord> record;
+  double seconds = 0.0;
+};
+
+// Throws as prepare_hbm; a frequency that does not reach the steady state, or a Newmark step that
+// fails, is reported in the tables (steady = 0, with the change or the message), never thrown.
+TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress = {});
+
+}  // namespace bb

@@ -1,0 +1,46 @@
+#include "cases/parse_time.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "cases/parse_hbm.hpp"
+
+namespace bb {
+
+TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
+  TimeSpec t;
+  if (const auto n = r.optional_integer("steps_per_period")) {
+    if (*n < 8 || *n > 100000) r.fail("steps_per_period", "must lie in [8, 100000]");
+    t.steps_per_period = static_cast<int>(*n);
+  }
+  if (const auto n = r.optional_integer("max_cycles")) {
+    if (*n < 2 || *n > 1000000) r.fail("max_cycles", "must lie in [2, 1000000]");
+    t.max_cycles = static_cast<int>(*n);
+  }
+  if (r.has("steady_tolerance")) {
+    t.steady_tolerance = r.positive("steady_tolerance");
+    if (t.steady_tolerance >= 0.1) r.fail("steady_tolerance", "must be below 0.1 (relative cycle-to-cycle change)");
+  }
+  if (r.has("alpha")) {
+    t.alpha = r.number("alpha");
+    if (!(t.alpha >= -1.0 / 3.0 && t.alpha <= 0.0)) r.fail("alpha", "HHT-alpha must lie in [-1/3, 0]");
+  }
+  if (r.has("history_hz")) t.history_hz = r.positive("history_hz");
+  if (const auto n = r.optional_integer("history_cycles")) {
+    if (*n < 1 || *n > 10000) r.fail("history_cycles", "must lie in [1, 10000]");
+    t.history_cycles = static_cast<int>(*n);
+  }
+  if (const auto n = r.optional_integer("compare_harmonics")) {
+    if (*n < 0 || *n > 50) r.fail("compare_harmonics", "must lie in [0, 50] (0: no harmonic-balance comparison)");
+    t.compare_harmonics = static_cast<int>(*n);
+  }
+  t.system = parse_hbm(r, folder, false);
+  if (t.system.sweep.method != HbmSweepSpec::Method::grid) r.fail("sweep", "a time-domain analysis steps through a grid: sweep = \"grid\"");
+  if (2 * (t.system.harmonics + 1) > t.steps_per_period)
+    r.fail("steps_per_period", fmt::format("must be at least 2 (H + 1) = {} for the DFT of {} harmonics", 2 * (t.system.harmonics + 1),
+                                           t.system.harmonics));
+  return t;
+}
+
+}  // namespace bb

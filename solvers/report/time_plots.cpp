@@ -1,0 +1,92 @@
+#include "report/time_plots.hpp"
+
+#include <fmt/format.h>
+
+#include "report/gnuplot.hpp"
+
+namespace bb {
+
+namespace fs = std::filesystem;
+
+namespace {
+const char* const kColours[] = {"#1f5fbf", "#bf1f1f", "#2f9f2f", "#9f2fbf", "#bf8f1f", "#1f9fbf", "#7f7f7f", "#000000"};
+}
+
+Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out_dir, const std::string& stem) {
+  const std::string name = time.prepared.response_names.at(response);
+  const auto r = static_cast<Eigen::Index>(response);
+  bool hbm = false;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    for (const TimeLevel& l : time.levels) {
+      out << "# Fe = " << l.force << " N, time integration: frequency_hz amplitude\n";
+      for (size_t i = 0; i < l.frequency_hz.size(); ++i) out << l.frequency_hz[i] << ' ' << l.amplitude(static_cast<Eigen::Index>(i), r) << '\n';
+      out << "\n\n# harmonic balance: frequency_hz amplitude\n";
+      if (l.hbm) {
+        hbm = true;
+        for (size_t i = 0; i < l.hbm->frequency_hz.size(); ++i)
+          out << l.hbm->frequency_hz[i] << ' ' << l.hbm->amplitude(static_cast<Eigen::Index>(i), r) << '\n';
+      } else {
+        out << "nan nan\n";
+      }
+      out << "\n\n";
+    }
+  }
+  const std::string title = fmt::format("Response {}: time integration (points) and harmonic balance (lines)", name);
+  std::string script = fmt::format("set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
+                                   "set ylabel 'amplitude [m]'\nset grid\nset key outside right\nset datafile missing 'nan'\nplot ",
+                                   gnuplot_quote(title));
+  for (size_t i = 0; i < time.levels.size(); ++i) {
+    script += fmt::format("{}'{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title 'Fe = {:g} N, Newmark'", i ? ", \\\n     " : "",
+                          stem, 2 * i, kColours[i % 8], time.levels[i].force);
+    if (hbm)
+      script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N, HBM'", stem, 2 * i + 1, kColours[i % 8],
+                            time.levels[i].force);
+  }
+  script += '\n';
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_hysteresis(const TimeOutcome& time, const fs::path& out_dir, const std::string& stem) {
+  const timeint::TimeHistory& h = time.record->history;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    for (size_t c = 0; c < h.contacts.size(); ++c) {
+      out << "# " << time.prepared.contact_names[c] << ": u [m] T [N]\n";
+      for (const timeint::ContactSample& s : h.contacts[c]) out << s.u << ' ' << s.tangential << '\n';
+      out << "\n\n";
+    }
+  }
+  const std::string title = fmt::format("Hysteresis loops at {:g} Hz, Fe = {:g} N", time.record->frequency_hz, time.record->force);
+  std::string script = fmt::format("set title '{}'\nset xlabel 'relative tangential displacement u [m]'\nset ylabel 'tangential force T [N]'\n"
+                                   "set grid\nset key outside right\nplot ",
+                                   gnuplot_quote(title));
+  for (size_t c = 0; c < h.contacts.size(); ++c)
+    script += fmt::format("{}'{}.dat' index {} using 1:2 with lines lw 2 lc rgb '{}' title '{}'", c ? ", \\\n     " : "", stem, c, kColours[c % 8],
+                          gnuplot_quote(time.prepared.contact_names[c]));
+  script += '\n';
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_contact_forces(const TimeOutcome& time, const fs::path& out_dir, const std::string& stem) {
+  const timeint::TimeHistory& h = time.record->history;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    for (size_t c = 0; c < h.contacts.size(); ++c) {
+      out << "# " << time.prepared.contact_names[c] << ": t [s] N [N] T [N]\n";
+      for (size_t i = 0; i < h.contacts[c].size(); ++i) out << h.time[i] << ' ' << h.contacts[c][i].normal << ' ' << h.contacts[c][i].tangential << '\n';
+      out << "\n\n";
+    }
+  }
+  const std::string title = fmt::format("Contact forces at {:g} Hz, Fe = {:g} N (N solid, T dashed)", time.record->frequency_hz, time.record->force);
+  std::string script = fmt::format("set title '{}'\nset xlabel 'time [s]'\nset ylabel 'force [N]'\nset grid\nset key outside right\nplot ",
+                                   gnuplot_quote(title));
+  for (size_t c = 0; c < h.contacts.size(); ++c)
+    script += fmt::format("{0}'{1}.dat' index {2} using 1:2 with lines lw 2 lc rgb '{3}' title '{4} N', "
+                          "'{1}.dat' index {2} using 1:3 with lines dt 2 lc rgb '{3}' title '{4} T'",
+                          c ? ", \\\n     " : "", stem, c, kColours[c % 8], gnuplot_quote(time.prepared.contact_names[c]));
+  script += '\n';
+  return draw(out_dir, stem, title, script);
+}
+
+}  // namespace bb

@@ -119,6 +119,25 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
         progress(fmt::format("Fe = {:g} N: {:.3f} Hz, {} cycles{}", force, frequencies[static_cast<size_t>(i)], s.cycles,
                              s.converged ? "" : " (not steady)"));
     }
+    {
+      // The linear model (every contact replaced by its springs kn, kt; eq 3.51) by direct solves on the grid.
+      Eigen::MatrixXd k = m.stiffness;
+      for (const hbm::ContactElement& c : m.contacts)
+        k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+      level.linear = Eigen::MatrixXd(nf, nr);
+      if (pair) level.linear_components = Eigen::MatrixXd(nf, 2);
+      for (Index i = 0; i < nf; ++i) {
+        const double w = kTwoPi * frequencies[static_cast<size_t>(i)];
+        const Eigen::MatrixXcd d = k.cast<std::complex<double>>() + std::complex<double>(0.0, w) * m.damping.cast<std::complex<double>>() -
+                                   (w * w) * m.mass.cast<std::complex<double>>();
+        const Eigen::VectorXcd z = d.partialPivLu().solve(m.harmonic_load);
+        for (Index r = 0; r < nr; ++r) level.linear(i, r) = std::abs(z[p.responses[static_cast<size_t>(r)]]);
+        if (pair) {
+          level.linear_components(i, 0) = std::abs(z[p.ip_oop->first] + z[p.ip_oop->second]) / 2;
+          level.linear_components(i, 1) = std::abs(z[p.ip_oop->second] - z[p.ip_oop->first]) / 2;
+        }
+      }
+    }
     if (spec.compare_harmonics > 0) {
       HbmSpec h = spec.system;
       h.harmonics = spec.compare_harmonics;
@@ -157,9 +176,10 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   if (pair) frf_cols.insert(frf_cols.end(), {"ip_component_m", "oop_component_m"});
   frf_cols.insert(frf_cols.end(), {"cycles", "steady"});
   const bool compare = spec.compare_harmonics > 0;
+  for (const std::string& r : p.response_names) frf_cols.push_back("linear_" + r + "_amp_m");
   if (compare)
     for (const std::string& r : p.response_names) frf_cols.push_back("hbm_" + r + "_amp_m");
-  std::vector<std::vector<double>> frf_rows, peak_rows, hbm_peak_rows, cost_rows;
+  std::vector<std::vector<double>> frf_rows, peak_rows, linear_peak_rows, hbm_peak_rows, cost_rows;
   for (size_t l = 0; l < o.levels.size(); ++l) {
     const TimeLevel& level = o.levels[l];
     // HBM amplitudes at the grid frequencies (its converged points are the grid's).
@@ -174,23 +194,30 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
       for (Index r = 0; r < nr; ++r) row.push_back(level.amplitude(i, r));
       if (pair) row.insert(row.end(), {level.components(i, 0), level.components(i, 1)});
       row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]), level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
+      for (Index r = 0; r < nr; ++r) row.push_back(level.linear(i, r));
       if (compare)
         for (Index r = 0; r < nr; ++r) row.push_back(hbm_amp[static_cast<size_t>(i)][r]);
       frf_rows.push_back(row);
     }
-    std::vector<double> prow = {static_cast<double>(l + 1), level.force};
-    for (size_t k = 0; k < kinds.size(); ++k) {
-      const Eigen::VectorXd values = pair ? Eigen::VectorXd(level.components.col(static_cast<Index>(k))) : Eigen::VectorXd(level.amplitude.col(0));
-      const auto [f, v] = grid_peak(frequencies, values);
-      // The right (or first) response at the peak, by the same parabola's abscissa: nearest grid value.
-      const Index right = pair ? pair->second : 0;
-      Index at = 0;
-      if (std::isfinite(f)) at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
-      at = std::clamp<Index>(at, 0, nf - 1);
-      const double amp = right < nr ? level.amplitude(at, right) : v;
-      prow.insert(prow.end(), {f, amp, amp / level.force});
-    }
-    peak_rows.push_back(prow);
+    // Peaks on the grid (parabola through the largest point and its neighbours), the same way for
+    // the time integration and the linear model, so that the two compare like for like.
+    const auto peaks_of = [&](const Eigen::MatrixXd& amplitude, const Eigen::MatrixXd& components) {
+      std::vector<double> prow = {static_cast<double>(l + 1), level.force};
+      for (size_t k = 0; k < kinds.size(); ++k) {
+        const Eigen::VectorXd values = pair ? Eigen::VectorXd(components.col(static_cast<Index>(k))) : Eigen::VectorXd(amplitude.col(0));
+        const auto [f, v] = grid_peak(frequencies, values);
+        const Index right = pair ? pair->second : 0;
+        Index at = 0;
+        if (std::isfinite(f)) at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
+        at = std::clamp<Index>(at, 0, nf - 1);
+        // The right (or first) response: the parabola's value without ip_oop, else the nearest grid value.
+        const double amp = !pair ? v : right < nr ? amplitude(at, right) : v;
+        prow.insert(prow.end(), {f, amp, amp / level.force});
+      }
+      return prow;
+    };
+    peak_rows.push_back(peaks_of(level.amplitude, level.components));
+    linear_peak_rows.push_back(peaks_of(level.linear, level.linear_components));
     if (level.hbm) {
       std::vector<double> hrow = {static_cast<double>(l + 1), level.force};
       for (const HbmPeak& pk : level.hbm->peaks)
@@ -210,6 +237,7 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   for (const std::string& k : kinds)
     for (const char* c : {"_hz", "_amp_m", "_amp_per_n"}) peak_cols.push_back(k + c);
   o.tables.emplace("peaks", make_table("peaks", peak_cols, peak_rows));
+  o.tables.emplace("peaks_linear", make_table("peaks_linear", peak_cols, linear_peak_rows));
   if (compare) o.tables.emplace("peaks_hbm", make_table("peaks_hbm", peak_cols, hbm_peak_rows));
   o.tables.emplace("time_cost", make_table("time_cost", {"level", "fe_n", "frequencies", "steps", "newton_iterations", "max_step_iterations",
                                                          "not_steady", "seconds", "us_per_step"},

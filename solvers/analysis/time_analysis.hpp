@@ -26,6 +26,7 @@ struct TimeLevel {
   long steps = 0, newton_iterations = 0;
   int max_step_iterations = 0;
   double seconds = 0.0;
+  Eigen::MatrixXd linear, linear_components;  // the linear model (contacts as springs kn, kt) on the grid
   std::optional<HbmLevel> hbm;       // the harmonic balance at the same grid (compare_harmonics > 0)
 };
 

@@ -19,8 +19,9 @@ Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out
   {
     std::ofstream out = open_plot_data(out_dir, stem);
     for (const TimeLevel& l : time.levels) {
-      out << "# Fe = " << l.force << " N, time integration: frequency_hz amplitude\n";
-      for (size_t i = 0; i < l.frequency_hz.size(); ++i) out << l.frequency_hz[i] << ' ' << l.amplitude(static_cast<Eigen::Index>(i), r) << '\n';
+      out << "# Fe = " << l.force << " N, time integration: frequency_hz amplitude linear_amplitude\n";
+      for (size_t i = 0; i < l.frequency_hz.size(); ++i)
+        out << l.frequency_hz[i] << ' ' << l.amplitude(static_cast<Eigen::Index>(i), r) << ' ' << l.linear(static_cast<Eigen::Index>(i), r) << '\n';
       out << "\n\n# harmonic balance: frequency_hz amplitude\n";
       if (l.hbm) {
         hbm = true;
@@ -32,7 +33,7 @@ Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out
       out << "\n\n";
     }
   }
-  const std::string title = fmt::format("Response {}: time integration (points) and harmonic balance (lines)", name);
+  const std::string title = fmt::format("Response {}: time integration (points), harmonic balance and linear model (lines)", name);
   std::string script = fmt::format("set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
                                    "set ylabel 'amplitude [m]'\nset grid\nset key outside right\nset datafile missing 'nan'\nplot ",
                                    gnuplot_quote(title));
@@ -42,6 +43,8 @@ Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out
     if (hbm)
       script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N, HBM'", stem, 2 * i + 1, kColours[i % 8],
                             time.levels[i].force);
+    script += fmt::format(", \\\n     '{}.dat' index {} using 1:3 with lines dt 2 lc rgb '{}' title 'Fe = {:g} N, linear (contacts as springs)'", stem,
+                          2 * i, kColours[i % 8], time.levels[i].force);
   }
   script += '\n';
   return draw(out_dir, stem, title, script);

@@ -42,10 +42,9 @@ struct NewmarkOptions {
   double time_step = 0.0;  // dt [s], > 0, finite
   double alpha = 0.0;      // HHT alpha in [-1/3, 0]; 0 = average acceleration
   int max_iterations = 30; // Newton iterations per step
-  // A step has converged when ||R|| <= tolerance * (force_scale + ||b_c||) [N], R the condensed
-  // balance on the contact DOFs, force_scale = ||f_static|| + sum_k (1 + mu_k) N0_k + 1 N... see
-  // NewmarkIntegrator::force_scale(); ||b_c|| keeps the test meaningful when inertia dominates
-  // (small dt), where round-off in R scales with b.
+  // A step has converged when ||R|| <= tolerance * (force_scale + ||b_c||) [N]: R the condensed
+  // balance on the contact DOFs, force_scale() = ||f_static|| + sum_k (1 + mu_k) N0_k, b_c the
+  // condensed right-hand side (inertia included), with which the round-off in R grows at small dt.
   double tolerance = 1e-10;
   int max_backtracks = 20; // halvings of a Newton step
 };

@@ -44,7 +44,7 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
       return w;
     }());
   } else {
-    const StaticState s = static_initial_state(integrator.model());
+    const StaticState s = static_initial_state(integrator.model(), options.initial);
     if (!s.converged) {
       out.failure = "steady state: no static initial state: " + s.failure;
       return out;

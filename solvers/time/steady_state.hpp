@@ -32,6 +32,9 @@ struct SteadyStateOptions {
   int periods_analysed = 1;  // whole periods at the end that enter the DFT (<= min_cycles)
   // Newmark options; time_step is set from omega and steps_per_period.
   NewmarkOptions newmark{};
+  // The static initial state used when no start state is given (a damper held only by friction
+  // needs StaticFriction::stuck_at_offset).
+  StaticOptions initial{};
 };
 
 struct SteadyState {
@@ -57,7 +60,7 @@ struct SteadyState {
 
 // From `start` (its displacements, velocities and sliders; its time is reset to 0, where the load
 // has the same value for any omega, so a sweep from the final state of the previous frequency sees
-// a continuous load) or, without one, from static_initial_state(model) (friction neglected).
+// a continuous load) or, without one, from static_initial_state(model, options.initial).
 // Throws std::invalid_argument on invalid inputs; a failed step or static solve is reported in
 // the result (converged == false), never thrown.
 [[nodiscard]] SteadyState steady_state(const hbm::HbmModel& model, double omega_rad_s,

@@ -19,6 +19,8 @@
 #include "contact/hbm_oscillator.hpp"
 #include "damper/rigid_damper.hpp"
 #include "damper_support.hpp"
+#include "frf/receptance.hpp"
+#include "hbm/harmonic_balance.hpp"
 #include "time/contact_step.hpp"
 #include "time/newmark.hpp"
 #include "time/steady_state.hpp"
@@ -220,6 +222,55 @@ TEST(TimeContact, SlippingLoopHasPlateausAtPlusMinusMuN) {
   EXPECT_GT(stuck, 10);  // the reversals stick before slipping back
   EXPECT_EQ(tmax, limit);
   EXPECT_EQ(tmin, -limit);
+}
+
+Eigen::RowVectorXd unit_row(Eigen::Index n, Eigen::Index i) {
+  Eigen::RowVectorXd r = Eigen::RowVectorXd::Zero(n);
+  r[i] = 1.0;
+  return r;
+}
+
+// The 3-DOF blade of tests/unit/hbm_harmonic_balance_test.cpp: DOF 0 excited, the platform
+// (DOF 1 tangential, DOF 2 normal) on the ground; the normal load varies with q2.
+hbm::HbmModel blade_on_ground(double force) {
+  hbm::HbmModel m;
+  m.stiffness.resize(3, 3);
+  m.stiffness << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
+  m.mass = Eigen::Vector3d(1.0, 0.4, 0.3).asDiagonal();
+  m.damping = modal_damping_matrix(m.stiffness, m.mass, 0.02);
+  m.contacts.push_back({.law = {.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0}, .tangential = unit_row(3, 1),
+                        .normal = unit_row(3, 2)});
+  m.static_load = Eigen::Vector3d::Zero();
+  m.harmonic_load = Eigen::VectorXcd::Zero(3);
+  m.harmonic_load[0] = force;
+  return m;
+}
+
+TEST(TimeContact, MultiDofVariableNormalLoadMatchesHarmonicBalance) {
+  // First harmonics of every DOF against hbm::solve_at_frequency (H = 7), the normal load varying
+  // with the motion (the slip tangent's mu kn coupling at work), stick-slip and micro-slip.
+  for (const double force : {25.0, 100.0}) {
+    const hbm::HbmModel m = blade_on_ground(force);
+    const hbm::HarmonicBalance system(m, {.harmonics = 7, .tolerance = 1e-10});
+    for (const double omega : {1000.0, 1300.0, 1800.0}) {
+      const hbm::HbmSolution h = hbm::solve_at_frequency(system, omega);
+      ASSERT_TRUE(h.converged) << h.failure;
+      const MatrixXd q = system.recover(h.x, omega);
+      const SteadyState s = steady_state(
+          m, omega, {.dofs = {0, 1, 2}, .steps_per_period = 512, .harmonics = 7, .tolerance = 1e-8});
+      ASSERT_TRUE(s.converged) << s.failure;
+      const double e = (s.coefficients.middleCols(1, 2) - q.middleCols(1, 2)).norm() / q.middleCols(1, 2).norm();
+      int slipping = 0;
+      for (const ContactSample& p : s.contacts[0])
+        slipping += p.state == ContactState::slip_positive || p.state == ContactState::slip_negative;
+      std::printf("  F %5.1f N, omega %6.0f: |first harmonics time - HBM| / |HBM| = %.2e, %d of %zu samples slip, "
+                  "%d periods, max %d Newton it.\n",
+                  force, omega, e, slipping, s.contacts[0].size(), s.cycles, s.max_iterations);
+      EXPECT_LT(e, 0.01);
+      EXPECT_NEAR(s.cycle_work.excitation - s.cycle_work.viscous, s.cycle_work.friction + s.cycle_work.normal,
+                  1e-6 * s.cycle_work.excitation);
+    }
+  }
 }
 
 // DOF 0 tangential (platform), DOF 1 normal; contact u = q0, v = q1, N = max(N0 + kn q1, 0).

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <complex>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
@@ -271,6 +272,89 @@ TEST(TimeContact, MultiDofVariableNormalLoadMatchesHarmonicBalance) {
                   1e-6 * s.cycle_work.excitation);
     }
   }
+}
+
+// The blade + rigid damper of tests/unit/hbm_harmonic_balance_test.cpp (zeta 0.01 here): damper DOFs 3 (tangential)
+// and 4 (normal) held only by two contacts (platform and a fixed neighbour), pressed by 40 N.
+hbm::HbmModel blade_with_damper(double force) {
+  hbm::HbmModel m;
+  m.stiffness = MatrixXd::Zero(5, 5);
+  m.stiffness.topLeftCorner(3, 3) << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
+  m.mass = (VectorXd(5) << 1.0, 0.4, 0.3, 0.05, 0.05).finished().asDiagonal();
+  m.damping = MatrixXd::Zero(5, 5);
+  m.damping.topLeftCorner(3, 3) = modal_damping_matrix(m.stiffness.topLeftCorner(3, 3), m.mass.topLeftCorner(3, 3), 0.01);
+  // Unlike the HBM test, the damper gets a little damping of its own (1% of critical on its contact
+  // springs): undamped damper modes make the transient from rest last thousands of periods.
+  m.damping(3, 3) = m.damping(4, 4) = 2.0 * 0.01 * std::sqrt(2.0e6 * 0.05);
+  const contact::JenkinsParameters law{.kn = 2.0e6, .kt = 1.0e6, .mu = 0.4, .n0 = 0.0};
+  m.contacts.push_back({.law = law, .tangential = unit_row(5, 1) - unit_row(5, 3), .normal = unit_row(5, 4) - unit_row(5, 2)});
+  m.contacts.push_back({.law = law, .tangential = unit_row(5, 3), .normal = unit_row(5, 4)});
+  m.static_load = VectorXd::Zero(5);
+  m.static_load[4] = 40.0;
+  m.harmonic_load = Eigen::VectorXcd::Zero(5);
+  m.harmonic_load[1] = std::complex<double>(0.0, -force);  // force sin(omega t) on the platform
+  return m;
+}
+
+TEST(TimeContact, DamperHeldOnlyByFrictionMatchesHarmonicBalance) {
+  // Compared wherever both domains find a periodic response; where either does not, the reason is
+  // printed (the time domain shows why: the damper walks, see the next test).
+  // K is singular without the contacts' tangential springs: the static state needs the contacts
+  // stuck at their offsets (StaticFriction::stuck_at_offset); the free-slip one must say so.
+  const hbm::HbmModel m0 = blade_with_damper(20.0);
+  const StaticState free = static_initial_state(m0);
+  EXPECT_FALSE(free.converged);
+  EXPECT_NE(free.failure.find("stuck_at_offset"), std::string::npos) << free.failure;
+  int compared = 0;
+  for (const double force : {2.0, 20.0, 100.0}) {
+    const hbm::HbmModel m = blade_with_damper(force);
+    const hbm::HarmonicBalance system(m, {.harmonics = 7, .tolerance = 1e-10});
+    for (const double omega : {700.0, 1000.0, 1300.0, 1800.0}) {
+      SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4}, .steps_per_period = 256, .harmonics = 7, .tolerance = 1e-8,
+                             .ignore_drift = true, .max_cycles = 400};
+      opt.initial.friction = StaticFriction::stuck_at_offset;
+      const SteadyState s = steady_state(m, omega, opt);
+      ASSERT_TRUE(s.final_state.displacement.allFinite());
+      if (!s.converged) {  // printed, not hidden: no periodic response within the cap
+        std::printf("  damper F %5.1f N, omega %6.0f: time domain: %s\n", force, omega, s.failure.c_str());
+        continue;
+      }
+      const hbm::HbmSolution h = hbm::solve_at_frequency(system, omega);
+      if (!h.converged) {
+        std::printf("  damper F %5.1f N, omega %6.0f: HBM not converged (%s); time A1(q1) %.4e m, damper drift %.2e "
+                    "m/period\n",
+                    force, omega, h.failure.c_str(), s.amplitude(1, 1), s.drift[3]);
+        continue;
+      }
+      const MatrixXd q = system.recover(h.x, omega);
+      const double e = (s.coefficients.middleCols(1, 2) - q.middleCols(1, 2)).norm() / q.middleCols(1, 2).norm();
+      std::printf("  damper F %5.1f N, omega %6.0f: |first harmonics time - HBM| / |HBM| = %.2e, %d periods, max %d "
+                  "Newton it., damper drift %.2e m/period\n",
+                  force, omega, e, s.cycles, s.max_iterations, s.drift[3]);
+      ++compared;
+      EXPECT_LT(e, 0.01);
+    }
+  }
+  EXPECT_GE(compared, 6);  // measured: the six points of F = 2 and 20 N where neither walks
+}
+
+TEST(TimeContact, WalkingDamperIsReportedAsDriftNotAsASteadyState) {
+  // F = 20 N at 1300 rad/s: the oscillation becomes periodic while the damper's mean position moves
+  // by the same amount every period (ratcheting). Without ignore_drift the run must say so.
+  const hbm::HbmModel m = blade_with_damper(20.0);
+  SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4}, .steps_per_period = 256, .harmonics = 3, .tolerance = 1e-8,
+                         .min_cycles = 2, .max_cycles = 300};
+  opt.initial.friction = StaticFriction::stuck_at_offset;
+  const SteadyState walking = steady_state(m, 1300.0, opt);
+  EXPECT_FALSE(walking.converged);
+  EXPECT_NE(walking.failure.find("drift"), std::string::npos) << walking.failure;
+  opt.ignore_drift = true;
+  const SteadyState periodic = steady_state(m, 1300.0, opt);
+  ASSERT_TRUE(periodic.converged) << periodic.failure;
+  std::printf("  walking damper: drift %.3e m per period (blade DOFs %.1e), oscillation A1(q3) %.3e m\n",
+              periodic.drift[3], periodic.drift.head(3).cwiseAbs().maxCoeff(), periodic.amplitude(3, 1));
+  EXPECT_GT(std::abs(periodic.drift[3]), 1e-3 * periodic.amplitude(3, 1));
+  EXPECT_LT(periodic.drift.head(3).cwiseAbs().maxCoeff(), 1e-6 * std::abs(periodic.drift[3]));
 }
 
 // DOF 0 tangential (platform), DOF 1 normal; contact u = q0, v = q1, N = max(N0 + kn q1, 0).

@@ -36,6 +36,7 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
 
   SteadyState out;
   out.omega = omega;
+  out.drift = VectorXd::Zero(static_cast<Index>(options.dofs.size()));
   DynamicState state;
   if (start) {
     state = integrator.initial_state(start->displacement, start->velocity, 0.0, excitation, [&] {
@@ -44,7 +45,7 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
       return w;
     }());
   } else {
-    const StaticState s = static_initial_state(integrator.model());
+    const StaticState s = static_initial_state(integrator.model(), options.initial);
     if (!s.converged) {
       out.failure = "steady state: no static initial state: " + s.failure;
       return out;
@@ -81,9 +82,15 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
     out.energy_change = integrator.mechanical_energy(state) - energy0;
     if (!periods.empty()) {
       double change = 0.0;
+      out.drift = x.colwise().mean().transpose() - periods.back().colwise().mean().transpose();
       for (Index j = 0; j < nd; ++j) {
+        VectorXd now = x.col(j), before = periods.back().col(j);
+        if (options.ignore_drift) {
+          now.array() -= now.mean();
+          before.array() -= before.mean();
+        }
         const double scale = x.col(j).cwiseAbs().maxCoeff();
-        const double d = (x.col(j) - periods.back().col(j)).cwiseAbs().maxCoeff();
+        const double d = (now - before).cwiseAbs().maxCoeff();
         change = std::max(change, scale > 0.0 ? d / scale : (d > 0.0 ? INFINITY : 0.0));
       }
       out.change = change;
@@ -97,14 +104,20 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
   }
   if (!out.converged)
     out.failure = fmt::format("steady state at omega = {:.9g} rad/s not reached in {} periods: cycle-to-cycle "
-                              "change {:.3e} > tolerance {:.3e}",
-                              omega, out.cycles, out.change, options.tolerance);
+                              "change {:.3e} > tolerance {:.3e} (largest drift of a period mean {:.3e} m per period)",
+                              omega, out.cycles, out.change, options.tolerance, out.drift.cwiseAbs().maxCoeff());
 
   // DFT over the last whole periods: theta_k = 2 pi k / n_t exactly (every period starts at a whole
   // number of periods from t = 0).
   const int h_max = options.harmonics;
   out.coefficients = MatrixXd::Zero(nd, 2 * h_max + 1);
   const double samples = static_cast<double>(n_t) * static_cast<double>(periods.size());
+  if (options.ignore_drift && out.drift.size() == nd) {
+    // Remove the linear trend (drift per period spread over the samples) from the analysed periods.
+    for (size_t p = 0; p < periods.size(); ++p)
+      for (int k = 0; k < n_t; ++k)
+        periods[p].row(k) -= out.drift.transpose() * ((static_cast<double>(p) * n_t + k) / n_t - 0.5 * static_cast<double>(periods.size()));
+  }
   for (const MatrixXd& x : periods) {
     for (int k = 0; k < n_t; ++k) {
       const double theta = 2.0 * std::numbers::pi * k / n_t;

@@ -27,11 +27,20 @@ struct SteadyStateOptions {
   // max_k |x_j(theta_k)| for every tracked DOF x (j the period, theta_k its samples): the largest
   // sample-by-sample change between consecutive periods, relative to the DOF's largest value.
   double tolerance = 1e-6;
+  // A DOF held only by friction (a damper with no spring of its own) can walk: its mean moves by
+  // the same amount every period while the oscillation is periodic (ratcheting; the harmonic
+  // balance, periodic by construction, cannot show it). With ignore_drift the convergence test
+  // compares each period's samples with their period mean removed and the DFT removes the linear
+  // trend; the drift per period is reported either way.
+  bool ignore_drift = false;
   int min_cycles = 2;        // periods always integrated
   int max_cycles = 2000;     // cap; reaching it gives converged == false with the last change
   int periods_analysed = 1;  // whole periods at the end that enter the DFT (<= min_cycles)
   // Newmark options; time_step is set from omega and steps_per_period.
   NewmarkOptions newmark{};
+  // The static initial state used when no start state is given (a damper held only by friction
+  // needs StaticFriction::stuck_at_offset).
+  StaticOptions initial{};
 };
 
 struct SteadyState {
@@ -43,6 +52,7 @@ struct SteadyState {
   Eigen::MatrixXd phase;      // arg(a_h - i b_h): x_h = A_h cos(h omega t + phase_h) [rad]; 0 for h = 0
   int cycles = 0;             // periods integrated
   double change = 0.0;        // last cycle-to-cycle change (relative, as tested)
+  Eigen::VectorXd drift;      // per tracked DOF, change of the period mean over the last period [m]
   bool converged = false;
   std::string failure;        // cap reached (with the change) or a failed Newmark step; empty when converged
   long total_iterations = 0;  // Newton iterations over the run
@@ -57,7 +67,7 @@ struct SteadyState {
 
 // From `start` (its displacements, velocities and sliders; its time is reset to 0, where the load
 // has the same value for any omega, so a sweep from the final state of the previous frequency sees
-// a continuous load) or, without one, from static_initial_state(model) (friction neglected).
+// a continuous load) or, without one, from static_initial_state(model, options.initial).
 // Throws std::invalid_argument on invalid inputs; a failed step or static solve is reported in
 // the result (converged == false), never thrown.
 [[nodiscard]] SteadyState steady_state(const hbm::HbmModel& model, double omega_rad_s,

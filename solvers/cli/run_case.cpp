@@ -173,7 +173,7 @@ void describe_time(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run
     for (bool s : l.steady) not_steady += s ? 0 : 1;
   }
   run.facts.emplace_back("steps / frequencies not steady / time [s]", fmt::format("{} / {} / {:.2f} (per step {:.2f} us)", steps, not_steady,
-                                                                                  seconds, 1e6 * seconds / std::max(1L, steps)));
+                                                                                  seconds, 1e6 * seconds / static_cast<double>(std::max(1L, steps))));
   if (spec.compare_harmonics > 0) run.facts.emplace_back("comparison", fmt::format("harmonic balance, H = {}, same grid", spec.compare_harmonics));
   if (time.record)
     run.facts.emplace_back("recorded run", fmt::format("{} Hz, Fe = {} N: steady after {} periods ({}), then {} periods recorded{}",

@@ -1,0 +1,82 @@
+// Time-domain forced response (thesis section 3.4): one Newmark step of a linear model, one step
+// with the implicit Table XII contact, and one stepped-sine frequency point to the steady state, on
+// the planar blades + rigid damper of tests/extremes/hbm_models.hpp (kn = kt = 1e6 N/m, mu = 0.3,
+// CF = 300 N, Fe = 10 N: stick-slip without lift-off) and on the same blades without contacts.
+// 128 steps per period at the stuck resonance. Measurement only: nothing here asserts a time.
+// Counters: dofs, contact_dofs, iterations (Newton per step), cycles (periods to the steady state).
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+
+#include "../tests/extremes/hbm_models.hpp"
+#include "time/newmark.hpp"
+#include "time/steady_state.hpp"
+
+namespace {
+
+using bb::hbm::HbmModel;
+
+HbmModel friction_model() { return bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2); }
+
+// The same blades and damper with the contacts replaced by their springs: a linear model.
+HbmModel linear_model() {
+  HbmModel m = friction_model();
+  for (const bb::hbm::ContactElement& c : m.contacts)
+    m.stiffness += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+  m.contacts.clear();
+  return m;
+}
+
+void step_benchmark(benchmark::State& state, const HbmModel& model) {
+  const double omega = bb::hbm::models::stuck_resonance(friction_model(), 0);
+  const bb::timeint::NewmarkIntegrator integrator(model, {.time_step = 2 * std::numbers::pi / (omega * 128)});
+  const auto excitation = bb::timeint::harmonic_excitation(model.harmonic_load, omega);
+  // Warm up a few periods from the static state, so the timed steps see the stick-slip cycle.
+  const bb::timeint::StaticState s = bb::timeint::static_initial_state(model);
+  bb::timeint::DynamicState x = integrator.initial_state(s.q, Eigen::VectorXd::Zero(s.q.size()), 0.0, excitation, s.sliders);
+  for (int k = 0; k < 20 * 128; ++k) integrator.step(x, excitation);
+  long iterations = 0, steps = 0;
+  for (auto _ : state) {
+    const bb::timeint::StepReport r = integrator.step(x, excitation);
+    iterations += r.iterations;
+    ++steps;
+    if (!r.converged) {
+      state.SkipWithError(r.failure.c_str());
+      return;
+    }
+  }
+  state.counters["dofs"] = static_cast<double>(model.mass.rows());
+  state.counters["contact_dofs"] = static_cast<double>(integrator.contact_dofs().size());
+  state.counters["iterations"] = static_cast<double>(iterations) / static_cast<double>(std::max(1L, steps));
+}
+
+void BM_NewmarkStepLinear(benchmark::State& state) { step_benchmark(state, linear_model()); }
+BENCHMARK(BM_NewmarkStepLinear)->Unit(benchmark::kMicrosecond);
+
+void BM_NewmarkStepFriction(benchmark::State& state) { step_benchmark(state, friction_model()); }
+BENCHMARK(BM_NewmarkStepFriction)->Unit(benchmark::kMicrosecond);
+
+// One frequency point of a stepped sine: from the steady state 1 % below, to the steady state here.
+void BM_SteadyStateFrequencyPoint(benchmark::State& state) {
+  const HbmModel model = friction_model();
+  const double omega = bb::hbm::models::stuck_resonance(model, 0);
+  bb::timeint::SteadyStateOptions options;
+  options.dofs = {0, 2};
+  options.steps_per_period = 128;
+  options.tolerance = 1e-6;
+  const bb::timeint::SteadyState below = bb::timeint::steady_state(model, 0.99 * omega, options);
+  if (!below.converged) {
+    state.SkipWithError(("no steady state below: " + below.failure).c_str());
+    return;
+  }
+  int cycles = 0;
+  for (auto _ : state) {
+    const bb::timeint::SteadyState s = bb::timeint::steady_state(model, omega, options, below.final_state);
+    cycles = s.cycles;
+    benchmark::DoNotOptimize(s.amplitude);
+  }
+  state.counters["cycles"] = cycles;
+}
+BENCHMARK(BM_SteadyStateFrequencyPoint)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -129,6 +129,15 @@ struct HbmHarmonicsStudySpec {
   SourceLocation at;
 };
 
+// Accuracy vs cost of the time integration: steps per period x steady-state tolerance, each
+// variant's peaks and FRF against the finest variant, with its cost.
+struct TimeStepStudySpec {
+  std::vector<int> steps_per_period;
+  std::vector<double> steady_tolerances;
+  std::string note;
+  SourceLocation at;
+};
+
 struct CaseSpec {
   std::filesystem::path file;
   std::string name;
@@ -146,6 +155,7 @@ struct CaseSpec {
   std::optional<ModalRefinementStudySpec> modal_study;
   std::optional<RomStudySpec> rom_study;
   std::optional<HbmHarmonicsStudySpec> hbm_study;
+  std::optional<TimeStepStudySpec> time_study;
 };
 
 // Throws InputError naming file, line and key for every malformed or missing entry.

@@ -361,6 +361,24 @@ HbmHarmonicsStudySpec parse_hbm_study(TomlReader r, const HbmSpec& hbm) {
   return s;
 }
 
+TimeStepStudySpec parse_time_study(TomlReader r) {
+  TimeStepStudySpec s;
+  s.at = r.location();
+  r.choice("kind", {"time_steps"});
+  for (long n : r.integer_array("steps_per_period")) {
+    if (n < 8 || n > 100000) r.fail("steps_per_period", "each value must lie in [8, 100000]");
+    s.steps_per_period.push_back(static_cast<int>(n));
+  }
+  s.steady_tolerances = r.number_array("steady_tolerances");
+  for (double t : s.steady_tolerances)
+    if (!(t > 0 && t < 0.1)) r.fail("steady_tolerances", "each value must lie in (0, 0.1)");
+  if (s.steps_per_period.empty() || s.steady_tolerances.empty() || s.steps_per_period.size() * s.steady_tolerances.size() < 2)
+    r.fail("steps_per_period", "needs at least two variants; the finest (most steps, smallest tolerance) is the reference");
+  s.note = r.optional_string("note").value_or("");
+  r.finish();
+  return s;
+}
+
 RomStudySpec parse_rom_study(TomlReader r) {
   RomStudySpec s;
   s.at = r.location();
@@ -538,6 +556,9 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
         top.fail("study", "a rom_modes study needs an frf analysis with the full model");
       if (spec.rom_study->compare_modes > spec.analysis.frf.full_modes)
         top.fail("study", "compare_modes exceeds the analysis's full_modes");
+    } else if (kind && kind->value<std::string>() == "time_steps") {
+      if (spec.analysis.type != AnalysisType::time) top.fail("study", "a time_steps study needs a time analysis");
+      spec.time_study = parse_time_study(TomlReader(*study, "study", file));
     } else if (kind && kind->value<std::string>() == "hbm_harmonics") {
       if (spec.analysis.type != AnalysisType::hbm) top.fail("study", "an hbm_harmonics study needs an hbm analysis");
       spec.hbm_study = parse_hbm_study(TomlReader(*study, "study", file), spec.analysis.hbm);

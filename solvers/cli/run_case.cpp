@@ -22,6 +22,7 @@
 #include "report/writers.hpp"
 #include "study/modal_refinement.hpp"
 #include "study/hbm_study.hpp"
+#include "study/time_study.hpp"
 #include "study/rom_study.hpp"
 
 namespace bb {
@@ -298,6 +299,12 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     run.study_note = spec.hbm_study->note;
     write_table_csv(run.study_tables.back(), out / "hbm_harmonics_study.csv");
     if (options.plots) run.study_plots.push_back(plot_hbm_harmonics_study(run.study_tables.back(), out, "study_harmonics"));
+  }
+  if (options.study && spec.time_study) {
+    run.study_tables.push_back(run_time_step_study(model, spec.analysis.time, *spec.time_study));
+    run.study_note = spec.time_study->note;
+    write_table_csv(run.study_tables.back(), out / "time_step_study.csv");
+    if (options.plots) run.study_plots.push_back(plot_time_step_study(run.study_tables.back(), out, "study_time_steps"));
   }
   if (options.study && spec.rom_study) {
     run.study_tables.push_back(run_rom_study(spec, model));

@@ -65,13 +65,11 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
   const std::vector<std::string> kinds = hbm.prepared.ip_oop ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
   std::vector<std::vector<double>> ref(kinds.size());
   std::vector<std::vector<long>> ref_keys(kinds.size());
-  bool any_reference = false;
   for (size_t k = 0; k < kinds.size() && !reference.empty(); ++k) {
     try {
       ReferenceColumn c = read_reference_column(reference, "level", kinds[k] + "_" + quantity);
       ref[k] = std::move(c.values);
       ref_keys[k] = std::move(c.keys);
-      any_reference = true;
     } catch (const InputError&) {
       // The reference need not give every peak kind or quantity: that curve is left out.
     }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "report/gnuplot.hpp"
 
 namespace bb {
@@ -88,6 +90,34 @@ Plot plot_contact_forces(const TimeOutcome& time, const fs::path& out_dir, const
     script += fmt::format("{0}'{1}.dat' index {2} using 1:2 with lines lw 2 lc rgb '{3}' title '{4} N', "
                           "'{1}.dat' index {2} using 1:3 with lines dt 2 lc rgb '{3}' title '{4} T'",
                           c ? ", \\\n     " : "", stem, c, kColours[c % 8], gnuplot_quote(time.prepared.contact_names[c]));
+  script += '\n';
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_time_step_study(const ResultTable& study, const fs::path& out_dir, const std::string& stem) {
+  const int col_n = *study.column_index("steps_per_period"), col_t = *study.column_index("steady_tolerance");
+  const int col_e = *study.column_index("max_amp_error"), col_s = *study.column_index("seconds");
+  std::vector<double> tolerances;
+  for (Eigen::Index r = 0; r < study.values.rows(); ++r)
+    if (std::find(tolerances.begin(), tolerances.end(), study.values(r, col_t)) == tolerances.end()) tolerances.push_back(study.values(r, col_t));
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    out << "# one block per steady-state tolerance: seconds max_amp_error (floored at 1e-12) steps_per_period\n";
+    for (double tol : tolerances) {
+      for (Eigen::Index r = 0; r < study.values.rows(); ++r)
+        if (study.values(r, col_t) == tol)
+          out << study.values(r, col_s) << ' ' << std::max(study.values(r, col_e), 1e-12) << ' ' << study.values(r, col_n) << '\n';
+      out << "\n\n";
+    }
+  }
+  const std::string title = "Time integration: largest FRF amplitude error against the finest variant vs cost";
+  std::string script = fmt::format("set title '{}'\nset logscale xy\nset format y '10^{{%L}}'\nset xlabel 'sweep time [s]'\n"
+                                   "set ylabel 'max |relative amplitude error|'\nset grid\nset key outside right\nplot ",
+                                   gnuplot_quote(title));
+  for (size_t i = 0; i < tolerances.size(); ++i)
+    script += fmt::format("{0}'{1}.dat' index {2} using 1:2 with linespoints pt 7 lc rgb '{3}' title 'steady tolerance {4:g}', "
+                          "'{1}.dat' index {2} using 1:2:(sprintf('%d', $3)) with labels offset 0,1 notitle",
+                          i ? ", \\\n     " : "", stem, i, kColours[i % 8], tolerances[i]);
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

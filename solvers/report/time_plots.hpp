@@ -7,6 +7,7 @@
 
 #include "analysis/time_analysis.hpp"
 #include "report/run_record.hpp"
+#include "results/table.hpp"
 
 namespace bb {
 
@@ -18,5 +19,9 @@ Plot plot_hysteresis(const TimeOutcome& time, const std::filesystem::path& out_d
 
 // Normal and tangential force of every contact against time over the recorded periods.
 Plot plot_contact_forces(const TimeOutcome& time, const std::filesystem::path& out_dir, const std::string& stem);
+
+// Time-step study (study/time_study.hpp): largest amplitude error over the grid against the cost,
+// one line per steady-state tolerance, points labelled by the steps per period.
+Plot plot_time_step_study(const ResultTable& study, const std::filesystem::path& out_dir, const std::string& stem);
 
 }  // namespace bb

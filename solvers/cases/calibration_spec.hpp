@@ -25,6 +25,10 @@ struct CalibrationSpec {
   std::string loss = "none";            // none | huber | cauchy
   double loss_scale = 1.0;              // in units of sigma
   int max_iterations = 50;
+  // Multi-start: the case's values, then starts - 1 points of a Latin hypercube in log space
+  // within the bounds (seeded, so a run repeats); the lowest final cost wins.
+  int starts = 1;
+  unsigned seed = 1;
   SourceLocation at;
 };
 

@@ -9,15 +9,21 @@
 namespace bb {
 
 toml::node* node_at_path(toml::table& root, const std::string& path) {
-  toml::table* table = &root;
+  // Dotted keys; an integer segment indexes an array of tables ("analysis.contact.0.kt").
+  toml::node* node = &root;
   size_t begin = 0;
   while (true) {
     const size_t dot = path.find('.', begin);
     const std::string key = path.substr(begin, dot == std::string::npos ? std::string::npos : dot - begin);
-    toml::node* n = table->get(key);
-    if (!n || dot == std::string::npos) return n;
-    table = n->as_table();
-    if (!table) return nullptr;
+    if (toml::table* t = node->as_table()) {
+      node = t->get(key);
+    } else if (toml::array* a = node->as_array()) {
+      const bool digits = !key.empty() && key.find_first_not_of("0123456789") == std::string::npos;
+      node = digits && std::stoul(key) < a->size() ? a->get(std::stoul(key)) : nullptr;
+    } else {
+      node = nullptr;
+    }
+    if (!node || dot == std::string::npos) return node;
     begin = dot + 1;
   }
 }
@@ -75,6 +81,14 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   }
   c.loss = r.choice("loss", {"none", "huber", "cauchy"}, "none");
   if (r.has("loss_scale")) c.loss_scale = r.positive("loss_scale");
+  if (const auto n = r.optional_integer("starts")) {
+    if (*n < 1 || *n > 100) r.fail("starts", "must lie in [1, 100]");
+    c.starts = static_cast<int>(*n);
+  }
+  if (const auto n = r.optional_integer("seed")) {
+    if (*n < 0 || *n > 4294967295L) r.fail("seed", "must lie in [0, 2^32)");
+    c.seed = static_cast<unsigned>(*n);
+  }
   if (const auto it = r.optional_integer("max_iterations")) {
     if (*it < 1) r.fail("max_iterations", "must be >= 1");
     c.max_iterations = static_cast<int>(*it);

@@ -4,8 +4,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
+#include <random>
 
 #include "analysis/case_results.hpp"
 #include "common/errors.hpp"
@@ -66,18 +69,19 @@ struct CaseResidual {
 
 class Progress : public ceres::IterationCallback {
  public:
-  Progress(bool show, CalibrationOutcome& out) : show_(show), out_(out) {}
+  Progress(bool show, CalibrationOutcome& out, int start, int starts) : show_(show), out_(out), start_(start), starts_(starts) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     out_.history.emplace_back(s.iteration, s.cost);
     if (show_)
-      std::fprintf(stderr, "\r  calibration: iteration %3d  cost %.6e  |gradient| %.3e  step %s   ", s.iteration, s.cost,
-                   s.gradient_max_norm, s.step_is_successful ? "accepted" : "rejected");
+      std::fprintf(stderr, "\r  calibration: start %d of %d, iteration %3d  cost %.6e  |gradient| %.3e  step %s   ", start_, starts_,
+                   s.iteration, s.cost, s.gradient_max_norm, s.step_is_successful ? "accepted" : "rejected");
     return ceres::SOLVER_CONTINUE;
   }
 
  private:
   bool show_;
   CalibrationOutcome& out_;
+  int start_, starts_;
 };
 
 }  // namespace
@@ -96,40 +100,99 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
   for (const CheckEntry& e : out.before)
     if (e.reference == 0.0) throw InputError(fmt::format("{}: fitted entry '{}' has a zero reference", cal->at.where(), e.name));
 
-  std::vector<double> x(n);
-  for (size_t i = 0; i < n; ++i) x[i] = std::log(start[i]);
+  // Start points in log space: the case's values, then a Latin hypercube within the bounds.
+  std::vector<std::vector<double>> starts{start};
+  if (cal->starts > 1) {
+    std::mt19937 rng(cal->seed);
+    const int m = cal->starts - 1;
+    std::vector<std::vector<int>> strata(n);
+    for (size_t i = 0; i < n; ++i) {
+      strata[i].resize(static_cast<size_t>(m));
+      std::iota(strata[i].begin(), strata[i].end(), 0);
+      std::shuffle(strata[i].begin(), strata[i].end(), rng);
+    }
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int k = 0; k < m; ++k) {
+      std::vector<double> p(n);
+      for (size_t i = 0; i < n; ++i) {
+        const double lo = std::log(cal->parameters[i].lower), hi = std::log(cal->parameters[i].upper);
+        p[i] = std::exp(lo + (hi - lo) * (strata[i][static_cast<size_t>(k)] + unit(rng)) / m);
+      }
+      starts.push_back(p);
+    }
+  }
   ceres::NumericDiffOptions diff;
   diff.relative_step_size = 1e-4;  // well above the eigensolver's 1e-10 noise, well below the model's curvature
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<CaseResidual, ceres::CENTRAL>(
-      new CaseResidual{&base, case_file, &*cal, &out.residual_evaluations}, ceres::TAKE_OWNERSHIP, diff);
-  cost->AddParameterBlock(static_cast<int>(n));
-  cost->SetNumResiduals(static_cast<int>(out.before.size()));
-  ceres::LossFunction* loss = nullptr;
-  if (cal->loss == "huber") loss = new ceres::HuberLoss(cal->loss_scale);
-  if (cal->loss == "cauchy") loss = new ceres::CauchyLoss(cal->loss_scale);
-  ceres::Problem problem;
-  problem.AddResidualBlock(cost, loss, x.data());
-  for (size_t i = 0; i < n; ++i) {
-    problem.SetParameterLowerBound(x.data(), static_cast<int>(i), std::log(cal->parameters[i].lower));
-    problem.SetParameterUpperBound(x.data(), static_cast<int>(i), std::log(cal->parameters[i].upper));
-  }
+  // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
+  const auto build = [&](std::vector<double>& x, ceres::Problem& problem) {
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<CaseResidual, ceres::CENTRAL>(
+        new CaseResidual{&base, case_file, &*cal, &out.residual_evaluations}, ceres::TAKE_OWNERSHIP, diff);
+    cost->AddParameterBlock(static_cast<int>(n));
+    cost->SetNumResiduals(static_cast<int>(out.before.size()));
+    ceres::LossFunction* loss = nullptr;
+    if (cal->loss == "huber") loss = new ceres::HuberLoss(cal->loss_scale);
+    if (cal->loss == "cauchy") loss = new ceres::CauchyLoss(cal->loss_scale);
+    problem.AddResidualBlock(cost, loss, x.data());
+    for (size_t i = 0; i < n; ++i) {
+      problem.SetParameterLowerBound(x.data(), static_cast<int>(i), std::log(cal->parameters[i].lower));
+      problem.SetParameterUpperBound(x.data(), static_cast<int>(i), std::log(cal->parameters[i].upper));
+    }
+  };
   ceres::Solver::Options options;
   options.max_num_iterations = cal->max_iterations;
   options.linear_solver_type = ceres::DENSE_QR;
   options.function_tolerance = 1e-10;
   options.parameter_tolerance = 1e-8;
-  Progress progress(show_progress && isatty(STDERR_FILENO), out);
-  options.callbacks.push_back(&progress);
   options.update_state_every_iteration = true;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  if (show_progress && isatty(STDERR_FILENO)) std::fputc('\n', stderr);
-  out.initial_cost = summary.initial_cost;
-  out.final_cost = summary.final_cost;
-  out.converged = summary.termination_type == ceres::CONVERGENCE;
-  out.termination = summary.BriefReport();
-  if (!out.converged) out.warnings.push_back("the fit did not converge: " + summary.message);
-
+  std::vector<double> x;
+  std::string message;
+  std::vector<std::pair<int, double>> best_history;
+  for (size_t s = 0; s < starts.size(); ++s) {
+    std::vector<double> xs(n);
+    for (size_t i = 0; i < n; ++i) xs[i] = std::log(starts[s][i]);
+    ceres::Problem problem;
+    build(xs, problem);
+    CalibrationOutcome trace;
+    Progress progress(show_progress && isatty(STDERR_FILENO), trace, static_cast<int>(s + 1), static_cast<int>(starts.size()));
+    ceres::Solver::Options o = options;
+    o.callbacks.push_back(&progress);
+    ceres::Solver::Summary summary;
+    ceres::Solve(o, &problem, &summary);
+    if (show_progress && isatty(STDERR_FILENO)) std::fputc('\n', stderr);
+    CalibrationStart r;
+    r.start = starts[s];
+    for (double v : xs) r.values.push_back(std::exp(v));
+    r.initial_cost = summary.initial_cost;
+    r.final_cost = summary.final_cost;
+    r.iterations = static_cast<int>(summary.iterations.size());
+    r.converged = summary.termination_type == ceres::CONVERGENCE;
+    out.starts.push_back(r);
+    if (s == 0 || (r.converged && (!out.starts[out.best].converged || r.final_cost < out.starts[out.best].final_cost)) ||
+        (!out.starts[out.best].converged && r.final_cost < out.starts[out.best].final_cost)) {
+      out.best = s;
+      x = xs;
+      message = summary.message;
+      out.termination = summary.BriefReport();
+      best_history = trace.history;
+    }
+  }
+  const CalibrationStart& chosen = out.starts[out.best];
+  out.history = best_history;
+  out.initial_cost = out.starts.front().initial_cost;
+  out.final_cost = chosen.final_cost;
+  out.converged = chosen.converged;
+  if (!out.converged) out.warnings.push_back("the fit did not converge: " + message);
+  if (starts.size() > 1)
+    for (size_t s = 0; s < out.starts.size(); ++s)
+      if (s != out.best && out.starts[s].converged && out.starts[s].final_cost < 1.5 * chosen.final_cost + 1e-12) {
+        bool same = true;
+        for (size_t i = 0; i < n; ++i) same = same && std::abs(std::log(out.starts[s].values[i] / chosen.values[i])) < 0.05;
+        if (!same)
+          out.warnings.push_back(fmt::format("start {} reaches nearly the same cost ({:.6g}) at other values: the minimum is not unique",
+                                             s + 1, out.starts[s].final_cost));
+      }
+  ceres::Problem problem;
+  build(x, problem);  // at the chosen optimum, for the covariance
   out.values.resize(n);
   for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
   out.std_devs.assign(n, NAN);

@@ -12,7 +12,17 @@
 
 namespace bb {
 
+// One start of a multi-start fit.
+struct CalibrationStart {
+  std::vector<double> start, values;  // parameter values at the start and at its end
+  double initial_cost = 0.0, final_cost = 0.0;
+  int iterations = 0;
+  bool converged = false;
+};
+
 struct CalibrationOutcome {
+  std::vector<CalibrationStart> starts;  // every start, in order (the first from the case's values)
+  size_t best = 0;                       // the start whose result is reported
   CalibrationSpec spec;
   std::vector<double> values;           // identified values, in spec.parameters order
   std::vector<double> std_devs;         // 1-sigma, from the covariance at the optimum (NaN if unavailable)

@@ -44,11 +44,24 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     out << "iteration,cost\n";
     for (const auto& [it, cost] : o.history) out << fmt::format("{},{:.10g}\n", it, cost);
   }
-  {
+  fs::remove(out_dir / "calibrated.toml");  // a failed fit must not leave an earlier one looking current
+  if (o.converged) {
     std::ofstream out = open_out(out_dir / "calibrated.toml");
     out << fmt::format("# {} with the values identified by `bladebench calibrate` (comments are not kept).\n",
                        case_file.string());
     out << o.calibrated << '\n';
+  }
+  {
+    std::ofstream out = open_out(out_dir / "starts.csv");
+    out << "start,converged,initial_cost,final_cost,iterations";
+    for (const auto& p : o.spec.parameters) out << ",start_" << p.path << ",value_" << p.path;
+    out << '\n';
+    for (size_t s = 0; s < o.starts.size(); ++s) {
+      const CalibrationStart& r = o.starts[s];
+      out << fmt::format("{},{},{:.10g},{:.10g},{}", s + 1, r.converged ? 1 : 0, r.initial_cost, r.final_cost, r.iterations);
+      for (size_t i = 0; i < r.values.size(); ++i) out << fmt::format(",{:.10g},{:.10g}", r.start[i], r.values[i]);
+      out << '\n';
+    }
   }
   std::ofstream md = open_out(out_dir / "report.md");
   md << fmt::format("# Calibration of `{}`\n\n", case_file.string());
@@ -59,6 +72,15 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   md << "| fitted check | sigma (relative) |\n|---|---|\n";
   for (const std::string& name : o.spec.fit_checks) md << fmt::format("| {} | {:g} |\n", name, uncertainty_of(o.spec, name));
   md << '\n';
+  if (o.starts.size() > 1) {
+    md << fmt::format("## Starts\n\n{} starts (the case's values, then a Latin hypercube in log space, seed {}); start {} is reported.\n\n",
+                      o.starts.size(), o.spec.seed, o.best + 1);
+    md << "| start | converged | cost at start | final cost | iterations |\n|---|---|---|---|---|\n";
+    for (size_t s = 0; s < o.starts.size(); ++s)
+      md << fmt::format("| {} | {} | {:.6g} | {:.6g} | {} |\n", s + 1, o.starts[s].converged ? "yes" : "no", o.starts[s].initial_cost,
+                        o.starts[s].final_cost, o.starts[s].iterations);
+    md << "\nValues at every start and end: `starts.csv`.\n\n";
+  }
   md << "## Parameters\n\n| parameter | start | identified | std (1 sigma) | lower | upper |\n|---|---|---|---|---|---|\n";
   for (size_t i = 0; i < o.values.size(); ++i) {
     const auto& p = o.spec.parameters[i];
@@ -88,7 +110,8 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     md << fmt::format("| {} | {:.6g} | {:.6g} | {:+.3f}% | {:.6g} | {:+.3f}% |\n", a.name, a.reference, b.computed,
                       100 * (b.computed / b.reference - 1), a.computed, 100 * (a.computed / a.reference - 1));
   }
-  md << fmt::format("\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `calibrated.toml`.\n", o.termination);
+  md << fmt::format("\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`{}.\n", o.termination,
+                    o.converged ? ", `calibrated.toml`" : " (no `calibrated.toml`: the fit did not converge)");
   if (!md) throw std::runtime_error("failed writing the calibration report");
 }
 

@@ -2,6 +2,7 @@
 // frequencies are computed by the solver itself at known parameter values.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -101,6 +102,25 @@ TEST_F(CalibrationRoundTrip, StiffnessAndDensityTogetherAreFlaggedAsNotIdentifia
   bool flagged = false;
   for (const auto& w : o.warnings) flagged = flagged || w.find("correlate") != std::string::npos || w.find("rank deficient") != std::string::npos;
   EXPECT_TRUE(flagged);
+}
+
+TEST_F(CalibrationRoundTrip, EveryStartOfALatinHypercubeIsReportedAndTheBestWins) {
+  const fs::path c = write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  std::ofstream(c, std::ios::app) << "starts = 4\nseed = 11\n";
+  const CalibrationOutcome o = calibrate_case(c, false);
+  ASSERT_EQ(o.starts.size(), 4u);
+  EXPECT_DOUBLE_EQ(o.starts[0].start[0], 1.5e11);  // the case's value first
+  for (size_t s = 1; s < 4; ++s) {
+    // One start per quarter of [log 1e11, log 3e11]: a Latin hypercube in one dimension.
+    const double q = std::log(o.starts[s].start[0] / 1e11) / std::log(3.0) * 3;
+    EXPECT_GE(q, 0.0);
+    EXPECT_LT(q, 3.0);
+    for (size_t t = 1; t < s; ++t)
+      EXPECT_NE(std::floor(q), std::floor(std::log(o.starts[t].start[0] / 1e11) / std::log(3.0) * 3));
+  }
+  for (const CalibrationStart& r : o.starts) EXPECT_GE(r.final_cost, o.starts[o.best].final_cost);
+  ASSERT_TRUE(o.converged);
+  EXPECT_NEAR(o.values[0] / 2.1e11, 1.0, 1e-6);
 }
 
 TEST_F(CalibrationRoundTrip, ParameterOutsideItsBoundsIsAnInputError) {

@@ -25,6 +25,9 @@ struct CalibrationSpec {
   std::string loss = "none";            // none | huber | cauchy
   double loss_scale = 1.0;              // in units of sigma
   int max_iterations = 50;
+  // Converged when the cost changes by less than this relative amount in a step (Ceres's
+  // function_tolerance); models with solver noise (peaks of a nonlinear sweep) need a looser one.
+  double function_tolerance = 1e-10;
   // Multi-start: the case's values, then starts - 1 points of a Latin hypercube in log space
   // within the bounds (seeded, so a run repeats); the lowest final cost wins.
   int starts = 1;

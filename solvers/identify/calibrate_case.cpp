@@ -58,6 +58,8 @@ struct CaseResidual {
     try {
       const auto entries = fitted_entries(*base, file, *cal, values);
       ++*evaluations;
+      for (const CheckEntry& e : entries)
+        if (!std::isfinite(e.computed)) return false;  // a peak or mode not found there: Ceres shrinks the step
       for (size_t k = 0; k < entries.size(); ++k)
         residuals[k] = (entries[k].computed / entries[k].reference - 1.0) / uncertainty_of(*cal, entries[k].group);
       return true;
@@ -141,7 +143,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
   ceres::Solver::Options options;
   options.max_num_iterations = cal->max_iterations;
   options.linear_solver_type = ceres::DENSE_QR;
-  options.function_tolerance = 1e-10;
+  options.function_tolerance = cal->function_tolerance;
   options.parameter_tolerance = 1e-8;
   options.update_state_every_iteration = true;
   std::vector<double> x;
@@ -205,6 +207,11 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
     Eigen::MatrixXd c(n, n);
     covariance.GetCovarianceBlock(x.data(), x.data(), c.data());
     out.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    // Birge ratio: when the fit is worse than the stated uncertainties allow (reduced chi-square
+    // above 1, e.g. outliers or an imperfect model), the covariance is scaled up by it.
+    const double dof = static_cast<double>(out.before.size()) - static_cast<double>(n);
+    out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
+    if (out.reduced_chi_square > 1.0) c *= out.reduced_chi_square;
     for (size_t i = 0; i < n; ++i) {
       const auto ii = static_cast<Eigen::Index>(i);
       out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log-space sigma -> value sigma

@@ -3,6 +3,7 @@
 // data of chosen checks, with the parameter covariance at the optimum.
 #pragma once
 #include <Eigen/Dense>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,7 +26,9 @@ struct CalibrationOutcome {
   size_t best = 0;                       // the start whose result is reported
   CalibrationSpec spec;
   std::vector<double> values;           // identified values, in spec.parameters order
-  std::vector<double> std_devs;         // 1-sigma, from the covariance at the optimum (NaN if unavailable)
+  std::vector<double> std_devs;         // 1-sigma, from the covariance at the optimum (NaN if unavailable),
+                                        // scaled by reduced_chi_square when that exceeds 1
+  double reduced_chi_square = NAN;      // 2 cost / (residuals - parameters) at the optimum (with the loss)
   Eigen::MatrixXd correlation;          // empty if the covariance could not be computed
   std::vector<std::string> warnings;    // identifiability and convergence warnings
   std::vector<std::pair<int, double>> history;  // (iteration, cost)

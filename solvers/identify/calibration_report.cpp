@@ -69,6 +69,8 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
                     o.converged ? "Converged" : "**Not converged**", wall_seconds, o.residual_evaluations, o.initial_cost,
                     o.final_cost, 100 * rms_relative(o.before), 100 * rms_relative(o.after));
   md << "Residuals: (computed / reference - 1) / sigma per entry of the fitted checks. Loss: " << o.spec.loss << ".\n\n";
+  md << fmt::format("Reduced chi-square at the optimum: {:.3g}{}.\n\n", o.reduced_chi_square,
+                    o.reduced_chi_square > 1 ? " (above 1: the standard deviations below are scaled up by its square root)" : "");
   md << "| fitted check | sigma (relative) |\n|---|---|\n";
   for (const std::string& name : o.spec.fit_checks) md << fmt::format("| {} | {:g} |\n", name, uncertainty_of(o.spec, name));
   md << '\n';

@@ -360,15 +360,6 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
 
 namespace {
 
-ResultTable make_table(const std::string& name, std::vector<std::string> columns, const std::vector<std::vector<double>>& rows) {
-  ResultTable t;
-  t.name = name;
-  t.columns = std::move(columns);
-  t.values.resize(static_cast<Index>(rows.size()), static_cast<Index>(t.columns.size()));
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (size_t j = 0; j < rows[i].size(); ++j) t.values(static_cast<Index>(i), static_cast<Index>(j)) = rows[i][j];
-  return t;
-}
 
 // Energy the contact dissipates per cycle: T against u, u's coefficients from its samples (exact:
 // u holds H harmonics and the AFT takes at least 2H + 1 samples).
@@ -434,15 +425,15 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   for (const std::string& k : kinds)
     for (const char* s : {"_hz", "_amp_m", "_amp_per_n"}) peak_columns.push_back(k + s);
   peak_columns.push_back("reached_end");
-  o.tables.emplace("peaks", make_table("peaks", peak_columns, peak_rows));
-  o.tables.emplace("energy_balance", make_table("energy_balance", {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j", "friction_j",
+  o.tables.emplace("peaks", table_from_rows("peaks", peak_columns, peak_rows));
+  o.tables.emplace("energy_balance", table_from_rows("energy_balance", {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j", "friction_j",
                                                                    "normal_j", "relative_error"}, energy_rows));
-  ResultTable states = make_table("contact_states", {"key", "fe_n", "frequency_hz", "stick", "slip", "lift_off", "mean_normal_n",
+  ResultTable states = table_from_rows("contact_states", {"key", "fe_n", "frequency_hz", "stick", "slip", "lift_off", "mean_normal_n",
                                                      "min_normal_n", "max_normal_n", "friction_work_j"}, state_rows);
   states.add_text_column("peak", state_peaks);
   states.add_text_column("contact", state_contacts);
   o.tables.emplace("contact_states", std::move(states));
-  o.tables.emplace("sweep_cost", make_table("sweep_cost", {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
+  o.tables.emplace("sweep_cost", table_from_rows("sweep_cost", {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
                                                            "turning_points", "jumps", "reached_end", "seconds"}, cost_rows));
   // One FRF table per level: the path points in order.
   for (const HbmLevel& level : o.levels) {
@@ -459,7 +450,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
       rows.push_back(row);
     }
     const std::string name = hbm_frf_table_name(level.force);
-    o.tables.emplace(name, make_table(name, cols, rows));
+    o.tables.emplace(name, table_from_rows(name, cols, rows));
   }
   // Linear limits per newton of the first force: the linear model alone (no damper or contacts)
   // and every contact stuck (kn on the normal, kt on the tangential direction, eq 3.51).
@@ -498,7 +489,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
         for (Index r = 0; r < nr; ++r) row.push_back((*lim)(i, r));
       rows.push_back(row);
     }
-    o.tables.emplace("limits", make_table("limits", cols, rows));
+    o.tables.emplace("limits", table_from_rows("limits", cols, rows));
     // Peaks of the limits, in the columns of `peaks`: the grid's largest point, then golden-section
     // search on the linear solve between its neighbours.
     const auto limit_solve = [&](int l, double w) {
@@ -538,7 +529,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
     }
     std::vector<std::string> lcols = {"limit"};
     for (const std::string& k : kinds) lcols.insert(lcols.end(), {k + "_hz", k + "_amp_per_n"});
-    ResultTable t = make_table("limit_peaks", lcols, peak_limit_rows);
+    ResultTable t = table_from_rows("limit_peaks", lcols, peak_limit_rows);
     t.add_text_column("model", {"free (no contacts)", "stuck (contacts as springs kn, kt)"});
     // Distance of each level's peaks from the stuck limit: zero as Fe -> 0 (eq 3.51).
     std::vector<std::vector<double>> dev_rows;
@@ -557,7 +548,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
       dev_rows.push_back(row);
     }
     o.tables.emplace("limit_peaks", std::move(t));
-    o.tables.emplace("stuck_limit_deviation", make_table("stuck_limit_deviation", dev_cols, dev_rows));
+    o.tables.emplace("stuck_limit_deviation", table_from_rows("stuck_limit_deviation", dev_cols, dev_rows));
   }
   if (p.damper_static) {
     const damper::DamperStaticState& s = *p.damper_static;
@@ -565,7 +556,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
     for (size_t c = 0; c < p.damper->contacts.size(); ++c)
       rows.push_back({static_cast<double>(c + 1), s.normal_preload[static_cast<Index>(c)], s.normal_displacement[static_cast<Index>(c)],
                       s.open[c] ? 1.0 : 0.0});
-    ResultTable t = make_table("damper_static", {"contact", "normal_preload_n", "normal_displacement_m", "open"}, rows);
+    ResultTable t = table_from_rows("damper_static", {"contact", "normal_preload_n", "normal_displacement_m", "open"}, rows);
     std::vector<std::string> names;
     for (const auto& c : p.damper->contacts) names.push_back(c.name);
     t.add_text_column("name", names);

@@ -22,15 +22,6 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-ResultTable make_table(const std::string& name, std::vector<std::string> columns, const std::vector<std::vector<double>>& rows) {
-  ResultTable t;
-  t.name = name;
-  t.columns = std::move(columns);
-  t.values.resize(static_cast<Index>(rows.size()), static_cast<Index>(t.columns.size()));
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (size_t j = 0; j < rows[i].size(); ++j) t.values(static_cast<Index>(i), static_cast<Index>(j)) = rows[i][j];
-  return t;
-}
 
 std::vector<double> grid(const HbmSweepSpec& s) {
   const int n = static_cast<int>(std::floor((s.f_max - s.f_min) / s.step_hz + 1e-9)) + 1;
@@ -232,14 +223,14 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
                          static_cast<double>(level.newton_iterations), static_cast<double>(level.max_step_iterations),
                          static_cast<double>(not_steady), level.seconds, 1e6 * level.seconds / std::max<double>(1.0, static_cast<double>(level.steps))});
   }
-  o.tables.emplace("frf", make_table("frf", frf_cols, frf_rows));
+  o.tables.emplace("frf", table_from_rows("frf", frf_cols, frf_rows));
   std::vector<std::string> peak_cols = {"level", "fe_n"};
   for (const std::string& k : kinds)
     for (const char* c : {"_hz", "_amp_m", "_amp_per_n"}) peak_cols.push_back(k + c);
-  o.tables.emplace("peaks", make_table("peaks", peak_cols, peak_rows));
-  o.tables.emplace("peaks_linear", make_table("peaks_linear", peak_cols, linear_peak_rows));
-  if (compare) o.tables.emplace("peaks_hbm", make_table("peaks_hbm", peak_cols, hbm_peak_rows));
-  o.tables.emplace("time_cost", make_table("time_cost", {"level", "fe_n", "frequencies", "steps", "newton_iterations", "max_step_iterations",
+  o.tables.emplace("peaks", table_from_rows("peaks", peak_cols, peak_rows));
+  o.tables.emplace("peaks_linear", table_from_rows("peaks_linear", peak_cols, linear_peak_rows));
+  if (compare) o.tables.emplace("peaks_hbm", table_from_rows("peaks_hbm", peak_cols, hbm_peak_rows));
+  o.tables.emplace("time_cost", table_from_rows("time_cost", {"level", "fe_n", "frequencies", "steps", "newton_iterations", "max_step_iterations",
                                                          "not_steady", "seconds", "us_per_step"},
                                            cost_rows));
 
@@ -254,7 +245,7 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
       for (Index r = 0; r < nr; ++r) row.push_back(h.displacement(static_cast<Index>(i), r));
       rows.push_back(row);
     }
-    o.tables.emplace("history", make_table("history", cols, rows));
+    o.tables.emplace("history", table_from_rows("history", cols, rows));
     std::vector<std::vector<double>> summary;
     for (size_t c = 0; c < h.contacts.size(); ++c) {
       const std::vector<timeint::ContactSample>& s = h.contacts[c];
@@ -285,7 +276,7 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
       // Slope of T against u over the stuck samples: kt when the loop is a line (needs u to vary).
       const double slope = n_stick >= 2 && var > 1e-30 ? (sut - su * st / n_stick) / var : kNan;
       const std::string name = "hysteresis_" + p.contact_names[c];
-      ResultTable t = make_table(name, {"instant", "time_s", "relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"}, loop);
+      ResultTable t = table_from_rows(name, {"instant", "time_s", "relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"}, loop);
       t.add_text_column("state", states);
       o.tables.emplace(name, std::move(t));
       double nmin = std::numeric_limits<double>::infinity(), nmax = 0, nmean = 0;
@@ -293,7 +284,7 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
       summary.push_back({static_cast<double>(c + 1), stick / n, slip / n, open / n, slope, slope / kt, coulomb, open_force,
                          loop_work(s) / spec.history_cycles, nmin, nmean, nmax});
     }
-    ResultTable t = make_table("hysteresis_summary", {"contact", "stick", "slip", "lift_off", "stick_slope_n_per_m", "stick_slope_over_kt",
+    ResultTable t = table_from_rows("hysteresis_summary", {"contact", "stick", "slip", "lift_off", "stick_slope_n_per_m", "stick_slope_over_kt",
                                                       "max_t_over_mu_n", "max_force_when_open_n", "loop_work_per_cycle_j",
                                                       "min_normal_n", "mean_normal_n", "max_normal_n"},
                                summary);

@@ -65,28 +65,20 @@ Eigen::VectorXd minimum_norm_solve(const Eigen::MatrixXd& a, const Eigen::Vector
 
 }  // namespace
 
-HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options) : model_(std::move(model)), options_(options) {
-  const Index n = model_.mass.rows();
-  const auto fail = [](const std::string& what) { throw std::invalid_argument("harmonic balance: " + what); };
-  if (n == 0 || model_.mass.cols() != n || model_.stiffness.rows() != n || model_.stiffness.cols() != n)
+void validate_model(HbmModel& m, const std::string& who) {
+  const Index n = m.mass.rows();
+  const auto fail = [&who](const std::string& what) { throw std::invalid_argument(fmt::format("{}: {}", who, what)); };
+  if (n == 0 || m.mass.cols() != n || m.stiffness.rows() != n || m.stiffness.cols() != n)
     fail("M and K must be square and of the same non-zero size");
-  if (model_.damping.size() > 0 && (model_.damping.rows() != n || model_.damping.cols() != n))
-    fail("C must be empty or of the size of M");
-  if (!all_finite(model_.mass) || !all_finite(model_.stiffness) || !all_finite(model_.damping))
-    fail("M, C and K must be finite");
-  if (model_.static_load.size() == 0) model_.static_load = Eigen::VectorXd::Zero(n);
-  if (model_.harmonic_load.size() == 0) model_.harmonic_load = Eigen::VectorXcd::Zero(n);
-  if (model_.static_load.size() != n || model_.harmonic_load.size() != n)
-    fail(fmt::format("loads must have {} entries (one per DOF)", n));
-  if (!model_.static_load.allFinite() || !model_.harmonic_load.allFinite()) fail("loads must be finite");
-  if (model_.contacts.empty()) fail("at least one contact element is required (use the linear FRF otherwise)");
-  if (options_.harmonics < 1) fail("at least one harmonic");
-  if (options_.max_iterations < 1 || options_.max_backtracks < 0 || !(options_.tolerance > 0.0))
-    fail("max_iterations >= 1, max_backtracks >= 0 and tolerance > 0");
-
-  std::vector<bool> touched(static_cast<size_t>(n), false);
-  for (size_t k = 0; k < model_.contacts.size(); ++k) {
-    const ContactElement& e = model_.contacts[k];
+  if (m.damping.size() == 0) m.damping = Eigen::MatrixXd::Zero(n, n);
+  if (m.damping.rows() != n || m.damping.cols() != n) fail("C must be empty or of the size of M");
+  if (!all_finite(m.mass) || !all_finite(m.stiffness) || !all_finite(m.damping)) fail("M, C and K must be finite");
+  if (m.static_load.size() == 0) m.static_load = Eigen::VectorXd::Zero(n);
+  if (m.harmonic_load.size() == 0) m.harmonic_load = Eigen::VectorXcd::Zero(n);
+  if (m.static_load.size() != n || m.harmonic_load.size() != n) fail(fmt::format("loads must have {} entries (one per DOF)", n));
+  if (!m.static_load.allFinite() || !m.harmonic_load.allFinite()) fail("loads must be finite");
+  for (size_t k = 0; k < m.contacts.size(); ++k) {
+    const ContactElement& e = m.contacts[k];
     try {
       contact::validate(e.law);
     } catch (const std::invalid_argument& error) {
@@ -96,6 +88,20 @@ HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options) : model_(st
       fail(fmt::format("contact {}: a_t and a_n must have {} entries (one per DOF)", k, n));
     if (!e.tangential.allFinite() || !e.normal.allFinite() || !std::isfinite(e.tangential_offset))
       fail(fmt::format("contact {}: a_t, a_n and the tangential offset must be finite", k));
+  }
+}
+
+HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options) : model_(std::move(model)), options_(options) {
+  const Index n = model_.mass.rows();
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("harmonic balance: " + what); };
+  validate_model(model_, "harmonic balance");
+  if (model_.contacts.empty()) fail("at least one contact element is required (use the linear FRF otherwise)");
+  if (options_.harmonics < 1) fail("at least one harmonic");
+  if (options_.max_iterations < 1 || options_.max_backtracks < 0 || !(options_.tolerance > 0.0))
+    fail("max_iterations >= 1, max_backtracks >= 0 and tolerance > 0");
+
+  std::vector<bool> touched(static_cast<size_t>(n), false);
+  for (const ContactElement& e : model_.contacts) {
     for (Index i = 0; i < n; ++i)
       if (e.tangential[i] != 0.0 || e.normal[i] != 0.0) touched[static_cast<size_t>(i)] = true;
   }

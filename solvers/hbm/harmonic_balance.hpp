@@ -54,6 +54,11 @@ struct HbmModel {
   Eigen::VectorXcd harmonic_load;            // n [N], complex amplitude at harmonic 1; empty = none
 };
 
+// Fills an empty C and empty loads with zeros, then checks sizes, finiteness and every contact
+// law of `model` (contacts may be empty). Throws std::invalid_argument, the message prefixed by
+// `who`. Shared by the harmonic balance and the time integration (time/newmark.hpp).
+void validate_model(HbmModel& model, const std::string& who);
+
 struct HbmOptions {
   int harmonics = 1;  // H >= 1
   // AFT options; samples = 0 picks max(64, 16 (2H + 1)) as contact/hbm_oscillator does.

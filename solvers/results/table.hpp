@@ -26,4 +26,7 @@ struct ResultTable {
 
 using ResultTables = std::map<std::string, ResultTable>;
 
+// A table from rows of numbers, each as long as `columns` (the first is the key).
+ResultTable table_from_rows(const std::string& name, std::vector<std::string> columns, const std::vector<std::vector<double>>& rows);
+
 }  // namespace bb

@@ -29,37 +29,6 @@ VectorXd select(const VectorXd& v, const std::vector<Index>& rows) {
   return out;
 }
 
-bool all_finite(const MatrixXd& a) { return a.size() == 0 || a.allFinite(); }
-
-// Checks sizes and values, fills empty C and loads with zeros. Shared by the integrator and the
-// static solve.
-void validate_model(hbm::HbmModel& m, const char* who) {
-  const Index n = m.mass.rows();
-  const auto fail = [who](const std::string& what) { throw std::invalid_argument(fmt::format("{}: {}", who, what)); };
-  if (n == 0 || m.mass.cols() != n || m.stiffness.rows() != n || m.stiffness.cols() != n)
-    fail("M and K must be square and of the same non-zero size");
-  if (m.damping.size() == 0) m.damping = MatrixXd::Zero(n, n);
-  if (m.damping.rows() != n || m.damping.cols() != n) fail("C must be empty or of the size of M");
-  if (!all_finite(m.mass) || !all_finite(m.stiffness) || !all_finite(m.damping)) fail("M, C and K must be finite");
-  if (m.static_load.size() == 0) m.static_load = VectorXd::Zero(n);
-  if (m.harmonic_load.size() == 0) m.harmonic_load = Eigen::VectorXcd::Zero(n);
-  if (m.static_load.size() != n || m.harmonic_load.size() != n)
-    fail(fmt::format("loads must have {} entries (one per DOF)", n));
-  if (!m.static_load.allFinite() || !m.harmonic_load.allFinite()) fail("loads must be finite");
-  for (size_t k = 0; k < m.contacts.size(); ++k) {
-    const hbm::ContactElement& e = m.contacts[k];
-    try {
-      contact::validate(e.law);
-    } catch (const std::invalid_argument& error) {
-      fail(fmt::format("contact {}: {}", k, error.what()));
-    }
-    if (e.tangential.size() != n || e.normal.size() != n)
-      fail(fmt::format("contact {}: a_t and a_n must have {} entries (one per DOF)", k, n));
-    if (!e.tangential.allFinite() || !e.normal.allFinite() || !std::isfinite(e.tangential_offset))
-      fail(fmt::format("contact {}: a_t, a_n and the tangential offset must be finite", k));
-  }
-}
-
 double model_force_scale(const hbm::HbmModel& m) {
   double s = m.static_load.norm();
   for (const hbm::ContactElement& c : m.contacts) s += (1.0 + c.law.mu) * c.law.n0;
@@ -116,7 +85,7 @@ Excitation no_excitation(Index dofs) {
 
 NewmarkIntegrator::NewmarkIntegrator(hbm::HbmModel model, NewmarkOptions options)
     : model_(std::move(model)), options_(options) {
-  validate_model(model_, "Newmark");
+  hbm::validate_model(model_, "Newmark");
   const auto fail = [](const std::string& what) { throw std::invalid_argument("Newmark: " + what); };
   const double dt = options_.time_step, alpha = options_.alpha;
   if (!(std::isfinite(dt) && dt > 0.0)) fail(fmt::format("time step must be finite and > 0 (got {})", dt));
@@ -327,7 +296,7 @@ TimeHistory integrate(const NewmarkIntegrator& integrator, const DynamicState& s
 
 StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions& options) {
   hbm::HbmModel m = input;
-  validate_model(m, "static initial state");
+  hbm::validate_model(m, "static initial state");
   if (options.max_iterations < 1 || options.max_backtracks < 0 || !(options.tolerance > 0.0))
     throw std::invalid_argument("static initial state: max_iterations >= 1, max_backtracks >= 0 and tolerance > 0");
   const Index n = m.mass.rows();

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <complex>
 
+#include "../unit/damper_support.hpp"
 #include "contact/jenkins_contact.hpp"
 #include "damper/rigid_damper.hpp"
 #include "frf/receptance.hpp"
@@ -19,10 +20,10 @@ inline Eigen::RowVectorXd unit_row(Eigen::Index n, Eigen::Index i) {
   return r;
 }
 
-// The blade of tests/unit/hbm_harmonic_balance_test.cpp: DOF 0 root (excited, no contact), 1 platform
+// A blade of three DOFs (also the model of tests/unit/hbm_harmonic_balance_test.cpp): DOF 0 root (excited, no contact), 1 platform
 // tangential (u = q1), 2 platform normal (v = q2, a push along +q2 presses). Modal damping zeta on
 // every mode; `static_push` is an extra static force on DOF 2 [N].
-inline HbmModel blade_on_ground(const contact::JenkinsParameters& law, double force, double zeta,
+inline HbmModel blade_on_ground(const contact::JenkinsParameters& law, double force, double zeta = 0.01,
                                 double static_push = 0.0) {
   HbmModel m;
   m.stiffness.resize(3, 3);
@@ -45,15 +46,7 @@ inline HbmModel blade_on_ground(const contact::JenkinsParameters& law, double fo
 // acts on blade 1 along x. Modal damping zeta on the blades only: the damper has no stiffness of
 // its own (K_cc singular, closed by the contacts), and every DOF is a contact DOF.
 inline damper::RigidDamper planar_damper() {
-  const Eigen::Vector2d c(-4e-3, 1.5e-3), t(std::cos(40.0 * EIGEN_PI / 180.0), std::sin(40.0 * EIGEN_PI / 180.0));
-  damper::AsymmetricDamperGeometry g;
-  g.mass = 0.04;
-  g.inertia = 1.5e-6;
-  g.beta_left_deg = 40.0;
-  g.beta_right_deg = 55.0;
-  g.l1 = c + 0.5e-3 * t;
-  g.l2 = c + 3.5e-3 * t;
-  g.r = Eigen::Vector2d(3.5e-3, 2.5e-3);
+  damper::AsymmetricDamperGeometry g = damper::test::asymmetric_geometry();
   g.l1_x = 0, g.l1_y = 1, g.l2_x = 0, g.l2_y = 1, g.r_x = 2, g.r_y = 3;
   return damper::asymmetric_damper(g);
 }

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "../extremes/hbm_models.hpp"
 #include "contact/hbm_oscillator.hpp"
 #include "frf/receptance.hpp"
 #include "hbm/harmonic_balance.hpp"
@@ -29,21 +30,7 @@ Eigen::RowVectorXd unit_row(Eigen::Index n, Eigen::Index i, double value = 1.0) 
   return r;
 }
 
-// Blade of three DOFs: 0 root (excited, no contact), 1 platform tangential, 2 platform normal. The
-// platform touches the ground: u = q1, v = q2 (a push along +q2 presses). Dense coupled K.
-HbmModel blade_on_ground(const contact::JenkinsParameters& law, double force, double zeta = 0.01,
-                         double static_push = 0.0) {
-  HbmModel m;
-  m.stiffness.resize(3, 3);
-  m.stiffness << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
-  m.mass = Eigen::Vector3d(1.0, 0.4, 0.3).asDiagonal();
-  m.damping = modal_damping_matrix(m.stiffness, m.mass, zeta);
-  m.contacts.push_back({law, unit_row(3, 1), unit_row(3, 2)});
-  m.static_load = Eigen::Vector3d(0.0, 0.0, static_push);
-  m.harmonic_load = VectorXcd::Zero(3);
-  m.harmonic_load[0] = force;
-  return m;
-}
+using models::blade_on_ground;
 
 // Harmonics of all DOFs of the linear model with the contact replaced by springs kn (a_n) and, if
 // stuck, kt (a_t), preload N0 acting on the static term: columns (c0, a1, b1).

@@ -28,6 +28,9 @@ struct CalibrationSpec {
   // Converged when the cost changes by less than this relative amount in a step (Ceres's
   // function_tolerance); models with solver noise (peaks of a nonlinear sweep) need a looser one.
   double function_tolerance = 1e-10;
+  // Relative step of the central differences (in log space). Models whose response is only
+  // piecewise smooth (AFT sampling of friction contacts) need a step that spans their kinks.
+  double derivative_step = 1e-4;
   // Multi-start: the case's values, then starts - 1 points of a Latin hypercube in log space
   // within the bounds (seeded, so a run repeats); the lowest final cost wins.
   int starts = 1;

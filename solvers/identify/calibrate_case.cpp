@@ -124,7 +124,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
     }
   }
   ceres::NumericDiffOptions diff;
-  diff.relative_step_size = 1e-4;  // well above the eigensolver's 1e-10 noise, well below the model's curvature
+  diff.relative_step_size = cal->derivative_step;  // default 1e-4: above the eigensolver's 1e-10 noise, below the model's curvature
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
   const auto build = [&](std::vector<double>& x, ceres::Problem& problem) {
     auto* cost = new ceres::DynamicNumericDiffCostFunction<CaseResidual, ceres::CENTRAL>(

@@ -68,13 +68,6 @@ Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& bla
   return row;
 }
 
-Eigen::VectorXcd solve_linear(const Eigen::MatrixXd& k, const Eigen::MatrixXd& c, const Eigen::MatrixXd& m, double omega,
-                              const Eigen::VectorXcd& f) {
-  const Eigen::MatrixXcd d = k.cast<std::complex<double>>() + std::complex<double>(0.0, omega) * c.cast<std::complex<double>>() -
-                             (omega * omega) * m.cast<std::complex<double>>();
-  return d.partialPivLu().solve(f);
-}
-
 // First-harmonic complex amplitude of each model DOF (Re(Z e^{i theta}) = a cos + b sin).
 Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega) {
   const Eigen::MatrixXd q = system.recover(x, omega);
@@ -144,6 +137,20 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
 }  // namespace
 
 std::string hbm_frf_table_name(double force) { return fmt::format("frf_{:g}", force); }
+
+std::vector<double> sweep_grid_hz(const HbmSweepSpec& s) {
+  const int n = static_cast<int>(std::floor((s.f_max - s.f_min) / s.step_hz + 1e-9)) + 1;
+  std::vector<double> f;
+  for (int i = 0; i < n; ++i) f.push_back(i + 1 == n ? s.f_max : s.f_min + i * s.step_hz);
+  return f;
+}
+
+Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model) {
+  Eigen::MatrixXd k = model.stiffness;
+  for (const hbm::ContactElement& c : model.contacts)
+    k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+  return k;
+}
 
 PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   const auto t0 = Clock::now();
@@ -300,13 +307,14 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     path = hbm::continue_in_frequency(system, c);
   } else {
     // Grid: every frequency solved from the secant extrapolation of the last two converged points.
-    const int n = static_cast<int>(std::floor((spec.sweep.f_max - spec.sweep.f_min) / spec.sweep.step_hz + 1e-9)) + 1;
+    const std::vector<double> grid = sweep_grid_hz(spec.sweep);
+    const int n = static_cast<int>(grid.size());
     path.points.push_back({first.omega, first.x, first.residual, first.iterations, 0.0, 1.0});
     path.corrector_iterations = first.iterations;
     std::vector<double> failed;
     std::string last_failure;
     for (int i = 1; i < n; ++i) {
-      const double omega = i + 1 == n ? omega_end : kTwoPi * (spec.sweep.f_min + i * spec.sweep.step_hz);
+      const double omega = kTwoPi * grid[static_cast<size_t>(i)];
       const auto& pts = path.points;
       Eigen::VectorXd guess = pts.back().x;
       if (pts.size() >= 2) {
@@ -457,9 +465,13 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   {
     const hbm::HbmModel& m = p.model;
     const Index nb = p.blade_dofs;
-    Eigen::MatrixXd stuck = m.stiffness;
-    for (const hbm::ContactElement& c : m.contacts)
-      stuck += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+    const Eigen::MatrixXd stuck = stuck_stiffness(m);
+    // Limit 0: the linear model alone (the damper's DOFs left out); 1: every contact stuck.
+    const auto limit_solve = [&](int l, double w) {
+      return l == 0 ? direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb), m.mass.topLeftCorner(nb, nb), w,
+                                      m.harmonic_load.head(nb))
+                    : direct_response(stuck, m.damping, m.mass, w, m.harmonic_load);
+    };
     const int n_grid = 2001;
     o.limit_frequency_hz = Eigen::VectorXd::LinSpaced(n_grid, spec.sweep.f_min, spec.sweep.f_max);
     const Index nr = static_cast<Index>(p.responses.size()) + (p.ip_oop ? 2 : 0);
@@ -472,10 +484,8 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
     };
     for (Index i = 0; i < n_grid; ++i) {
       const double w = kTwoPi * o.limit_frequency_hz[i];
-      outputs(solve_linear(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb), m.mass.topLeftCorner(nb, nb), w,
-                           m.harmonic_load.head(nb)),
-              o.free_response, i);
-      outputs(solve_linear(stuck, m.damping, m.mass, w, m.harmonic_load), o.stuck_response, i);
+      outputs(limit_solve(0, w), o.free_response, i);
+      outputs(limit_solve(1, w), o.stuck_response, i);
     }
     std::vector<std::string> cols = {"point", "frequency_hz"};
     for (const char* limit : {"free", "stuck"}) {
@@ -492,11 +502,6 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
     o.tables.emplace("limits", table_from_rows("limits", cols, rows));
     // Peaks of the limits, in the columns of `peaks`: the grid's largest point, then golden-section
     // search on the linear solve between its neighbours.
-    const auto limit_solve = [&](int l, double w) {
-      return l == 0 ? solve_linear(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb), m.mass.topLeftCorner(nb, nb), w,
-                                   m.harmonic_load.head(nb))
-                    : solve_linear(stuck, m.damping, m.mass, w, m.harmonic_load);
-    };
     std::vector<std::vector<double>> peak_limit_rows;
     for (int l = 0; l < 2; ++l) {
       const Eigen::MatrixXd& lim = l == 0 ? o.free_response : o.stuck_response;

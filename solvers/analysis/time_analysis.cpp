@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "contact/jenkins_contact.hpp"
+#include "frf/receptance.hpp"
 #include "time/newmark.hpp"
 
 namespace bb {
@@ -22,13 +23,6 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-
-std::vector<double> grid(const HbmSweepSpec& s) {
-  const int n = static_cast<int>(std::floor((s.f_max - s.f_min) / s.step_hz + 1e-9)) + 1;
-  std::vector<double> f;
-  for (int i = 0; i < n; ++i) f.push_back(i + 1 == n ? s.f_max : s.f_min + i * s.step_hz);
-  return f;
-}
 
 // The largest value of `v` and its frequency, refined by a parabola through its neighbours.
 std::pair<double, double> grid_peak(const std::vector<double>& f, const Eigen::VectorXd& v) {
@@ -74,7 +68,7 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   options.tolerance = spec.steady_tolerance;
   options.max_cycles = spec.max_cycles;
   options.newmark.alpha = spec.alpha;
-  const std::vector<double> frequencies = grid(spec.system.sweep);
+  const std::vector<double> frequencies = sweep_grid_hz(spec.system.sweep);
   const auto nf = static_cast<Index>(frequencies.size());
   const auto nr = static_cast<Index>(p.responses.size());
 
@@ -112,16 +106,12 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
     }
     {
       // The linear model (every contact replaced by its springs kn, kt; eq 3.51) by direct solves on the grid.
-      Eigen::MatrixXd k = m.stiffness;
-      for (const hbm::ContactElement& c : m.contacts)
-        k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+      const Eigen::MatrixXd k = stuck_stiffness(m);
       level.linear = Eigen::MatrixXd(nf, nr);
       if (pair) level.linear_components = Eigen::MatrixXd(nf, 2);
       for (Index i = 0; i < nf; ++i) {
         const double w = kTwoPi * frequencies[static_cast<size_t>(i)];
-        const Eigen::MatrixXcd d = k.cast<std::complex<double>>() + std::complex<double>(0.0, w) * m.damping.cast<std::complex<double>>() -
-                                   (w * w) * m.mass.cast<std::complex<double>>();
-        const Eigen::VectorXcd z = d.partialPivLu().solve(m.harmonic_load);
+        const Eigen::VectorXcd z = direct_response(k, m.damping, m.mass, w, m.harmonic_load);
         for (Index r = 0; r < nr; ++r) level.linear(i, r) = std::abs(z[p.responses[static_cast<size_t>(r)]]);
         if (pair) {
           level.linear_components(i, 0) = std::abs(z[p.ip_oop->first] + z[p.ip_oop->second]) / 2;

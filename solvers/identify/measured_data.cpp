@@ -1,0 +1,285 @@
+// Measured curves from CSV with units in the header (see measured_data.hpp for the format).
+#include "identify/measured_data.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+
+#include "common/csv_reader.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+using enum Dimension;
+
+struct ColumnSpec {
+  const char* name;
+  std::vector<Dimension> dims;  // accepted dimensions
+  bool required = false;
+  bool positive = false;
+  const char* sigma_of = nullptr;  // a sigma takes the dimension of this column
+};
+
+const std::vector<ColumnSpec>& column_specs(DataKind kind) {
+  static const std::vector<ColumnSpec> peaks = {{"force", {force}, true},
+                                                {"frequency", {frequency}, true},
+                                                {"amplitude", {length, compliance}, true, true},
+                                                {"amplitude_sigma", {length, compliance}, false, true, "amplitude"},
+                                                {"frequency_sigma", {frequency}, false, true, "frequency"}};
+  static const std::vector<ColumnSpec> frf = {{"frequency", {frequency}, true},
+                                              {"amplitude", {length, compliance}, true, true},
+                                              {"phase", {angle}},
+                                              {"amplitude_sigma", {length, compliance}, false, true, "amplitude"},
+                                              {"phase_sigma", {angle}, false, true, "phase"}};
+  static const std::vector<ColumnSpec> hysteresis = {{"relative_displacement", {length}, true},
+                                                     {"tangential_force", {force}, true},
+                                                     {"force_sigma", {force}, false, true, "tangential_force"}};
+  return kind == DataKind::peaks ? peaks : kind == DataKind::frf ? frf : hysteresis;
+}
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> cells;
+  for (size_t start = 0;;) {
+    const size_t comma = line.find(',', start);
+    cells.push_back(trim(line.substr(start, comma - start)));
+    if (comma == std::string_view::npos) return cells;
+    start = comma + 1;
+  }
+}
+
+std::string dims_text(const std::vector<Dimension>& dims) {
+  std::string text = dimension_name(dims[0]);
+  for (size_t i = 1; i < dims.size(); ++i) text += fmt::format(" or {}", dimension_name(dims[i]));
+  return text;
+}
+
+std::string join_names(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
+struct Column {
+  const ColumnSpec* spec;
+  std::string name;
+  Unit unit;
+  std::vector<double> written;  // values as written, for messages in the file's own unit
+};
+
+}  // namespace
+
+const char* dimension_name(Dimension d) {
+  switch (d) {
+    case length: return "length";
+    case force: return "force";
+    case frequency: return "frequency";
+    case angle: return "angle";
+    case compliance: return "compliance";
+    case stiffness: return "stiffness";
+    case time: return "time";
+    case dimensionless: return "dimensionless";
+  }
+  return "?";
+}
+
+const char* data_kind_name(DataKind k) {
+  switch (k) {
+    case DataKind::peaks: return "peaks";
+    case DataKind::frf: return "frf";
+    case DataKind::hysteresis: return "hysteresis";
+  }
+  return "?";
+}
+
+std::optional<Unit> parse_unit(std::string_view symbol) {
+  constexpr double pi = std::numbers::pi;
+  struct Known { std::string_view symbol; Dimension dimension; double to_si; };
+  static constexpr Known table[] = {
+      {"m", length, 1.0},          {"mm", length, 1e-3},        {"um", length, 1e-6},
+      {"nm", length, 1e-9},        {"N", force, 1.0},           {"kN", force, 1e3},
+      {"mN", force, 1e-3},         {"Hz", frequency, 1.0},      {"kHz", frequency, 1e3},
+      {"rad/s", frequency, 1.0 / (2.0 * pi)},                   {"rpm", frequency, 1.0 / 60.0},
+      {"deg", angle, pi / 180.0},  {"rad", angle, 1.0},         {"m/N", compliance, 1.0},
+      {"mm/N", compliance, 1e-3},  {"um/N", compliance, 1e-6},  {"nm/N", compliance, 1e-9},
+      {"N/m", stiffness, 1.0},     {"N/mm", stiffness, 1e3},    {"N/um", stiffness, 1e6},
+      {"s", time, 1.0},            {"ms", time, 1e-3},          {"-", dimensionless, 1.0},
+      {"1", dimensionless, 1.0}};
+  // The micro sign (U+00B5) and the Greek mu (U+03BC) look alike; both mean "u".
+  std::string_view micro_rest;
+  for (const std::string_view micro : {"\xC2\xB5", "\xCE\xBC"})
+    if (symbol.starts_with(micro)) micro_rest = symbol.substr(micro.size());
+  for (const Known& k : table)
+    if (micro_rest.empty() ? k.symbol == symbol : k.symbol.starts_with('u') && k.symbol.substr(1) == micro_rest)
+      return Unit{std::string(symbol), k.dimension, k.to_si};
+  return std::nullopt;
+}
+
+std::optional<Dimension> column_dimension(std::string_view column) {
+  // Longest suffixes first: "_n_per_m" also ends in "_m", "_m_per_n" in "_n".
+  static constexpr std::pair<std::string_view, Dimension> suffixes[] = {
+      {"_n_per_m", stiffness}, {"_per_n", compliance}, {"_hz", frequency}, {"_deg", angle},
+      {"_rad", angle},         {"_m", length},         {"_n", force},       {"_s", time}};
+  for (const auto& [suffix, dim] : suffixes)
+    if (column.ends_with(suffix)) return dim;
+  return std::nullopt;
+}
+
+double column_to_si(std::string_view column) { return column.ends_with("_deg") ? std::numbers::pi / 180.0 : 1.0; }
+
+const Eigen::VectorXd& MeasuredData::column(const std::string& name) const {
+  const auto it = columns.find(name);
+  if (it == columns.end()) throw std::out_of_range(fmt::format("{}: no column '{}'", file.string(), name));
+  return it->second;
+}
+
+std::string MeasuredData::where(Eigen::Index row) const {
+  return fmt::format("{}:{}", file.string(), lines.at(static_cast<size_t>(row)));
+}
+
+MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
+  const std::string fname = file.string();
+  const auto fail = [&](unsigned line, const std::string& what) {
+    return InputError(fmt::format("{}:{}: {}", fname, line, what));
+  };
+  std::error_code ec;
+  if (fs::is_directory(file, ec)) throw InputError(fname + ": cannot open (it is a directory)");
+  std::unique_ptr<io::LineReader> in;
+  try {
+    in = std::make_unique<io::LineReader>(fname);
+  } catch (const io::error::can_not_open_file&) {
+    throw InputError(fname + ": cannot open");
+  }
+
+  // Next line that is neither blank nor a '#' comment; nullopt at the end of the file.
+  const auto next = [&]() -> std::optional<std::string_view> {
+    while (const char* raw = in->next_line()) {
+      std::string_view line = raw;
+      if (in->get_file_line() == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // UTF-8 BOM
+      line = trim(line);
+      if (!line.empty() && line[0] != '#') return line;
+    }
+    return std::nullopt;
+  };
+
+  const auto& specs = column_specs(kind);
+  const auto header = next();
+  if (!header) throw InputError(fmt::format("{}: no header line (the file is empty or only comments)", fname));
+  const unsigned header_line = in->get_file_line();
+  std::vector<Column> cols;
+  std::vector<std::string> names;
+  for (std::string_view cell : split(*header)) {
+    const auto open = cell.find('[');
+    const std::string name(trim(cell.substr(0, open)));
+    if (name.empty()) throw fail(header_line, fmt::format("header cell '{}' has no column name", cell));
+    if (open == std::string_view::npos || !cell.ends_with(']'))
+      throw fail(header_line, fmt::format("column '{}' has no '[unit]' ('{}'); write it as '{} [<unit>]'", name, cell, name));
+    const std::string_view symbol = trim(cell.substr(open + 1, cell.size() - open - 2));
+    const ColumnSpec* spec = nullptr;
+    for (const auto& s : specs)
+      if (name == s.name) spec = &s;
+    if (!spec) {
+      std::vector<std::string> known;
+      for (const auto& s : specs) known.emplace_back(s.name);
+      throw fail(header_line, fmt::format("unknown column '{}'; a {} file has: {}", name, data_kind_name(kind),
+                                          join_names(known)));
+    }
+    for (const auto& c : cols)
+      if (c.name == name) throw fail(header_line, fmt::format("column '{}' appears twice", name));
+    const auto unit = parse_unit(symbol);
+    if (!unit)
+      throw fail(header_line, fmt::format("column '{}': unknown unit '{}' (known: m mm um µm nm, N kN mN, Hz kHz "
+                                          "rad/s rpm, deg rad, m/N mm/N um/N nm/N, N/m N/mm N/um, s ms)", name, symbol));
+    if (std::find(spec->dims.begin(), spec->dims.end(), unit->dimension) == spec->dims.end())
+      throw fail(header_line, fmt::format("column '{}' has unit '{}' ({}); it needs a {} unit", name, symbol,
+                                          dimension_name(unit->dimension), dims_text(spec->dims)));
+    cols.push_back({spec, name, *unit, {}});
+    names.push_back(name);
+  }
+  const auto find = [&](std::string_view name) -> const Column* {
+    for (const auto& c : cols)
+      if (c.name == name) return &c;
+    return nullptr;
+  };
+  for (const auto& s : specs)
+    if (s.required && !find(s.name))
+      throw fail(header_line, fmt::format("missing column '{} [<{} unit>]'; the file has: {}", s.name, dims_text(s.dims),
+                                          join_names(names)));
+  for (const auto& c : cols) {
+    if (!c.spec->sigma_of) continue;
+    const Column* of = find(c.spec->sigma_of);
+    if (!of) throw fail(header_line, fmt::format("column '{}' needs the column '{}'", c.name, c.spec->sigma_of));
+    if (of->unit.dimension != c.unit.dimension)
+      throw fail(header_line, fmt::format("column '{}' has unit '{}' ({}); it needs a {} unit, like column '{}'", c.name,
+                                          c.unit.symbol, dimension_name(c.unit.dimension),
+                                          dimension_name(of->unit.dimension), of->name));
+  }
+
+  MeasuredData data{file, kind, {}, {}, {}};
+  while (const auto line = next()) {
+    const unsigned at = in->get_file_line();
+    const auto cells = split(*line);
+    if (cells.size() != cols.size())
+      throw fail(at, fmt::format("{} cells where the header (line {}) has {}: {}", cells.size(), header_line,
+                                 cols.size(), join_names(names)));
+    for (size_t j = 0; j < cols.size(); ++j) {
+      std::string_view text = cells[j];
+      const auto bad = [&](const char* why) {
+        return fail(at, fmt::format("column '{}': '{}' {}", cols[j].name, cells[j], why));
+      };
+      if (text.empty()) throw fail(at, fmt::format("column '{}': empty cell", cols[j].name));
+      if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+      double v = 0.0;
+      const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (err == std::errc::result_out_of_range) throw bad("is out of range");
+      if (err != std::errc() || end != text.data() + text.size()) throw bad("is not a number");
+      if (!std::isfinite(v)) throw bad("is not a finite number");
+      if (cols[j].spec->positive && !(v > 0.0)) throw bad("must be positive");
+      cols[j].written.push_back(v);
+    }
+    data.lines.push_back(static_cast<int>(at));
+  }
+
+  const size_t n = data.lines.size();
+  const size_t min_rows = kind == DataKind::hysteresis ? 8 : 1;
+  if (n < min_rows)
+    throw fail(header_line, fmt::format("{} data rows; a {} file needs at least {}{}", n, data_kind_name(kind), min_rows,
+                                        kind == DataKind::hysteresis ? " (one loop, in time order)" : ""));
+  const auto line_of = [&](size_t r) { return static_cast<unsigned>(data.lines[r]); };
+  if (kind == DataKind::frf) {
+    const Column& f = *find("frequency");
+    for (size_t r = 1; r < n; ++r)
+      if (!(f.written[r] > f.written[r - 1]))
+        throw fail(line_of(r), fmt::format("frequency {} {} is not above the previous row's {} {} (rows must be sorted "
+                                           "by increasing frequency, without duplicates)",
+                                           f.written[r], f.unit.symbol, f.written[r - 1], f.unit.symbol));
+  }
+  if (kind == DataKind::peaks) {
+    const Column& f = *find("force");
+    for (size_t r = 1; r < n; ++r)
+      for (size_t q = 0; q < r; ++q)
+        if (f.written[r] == f.written[q])
+          throw fail(line_of(r), fmt::format("column 'force': level {} {} repeats the level of line {} (one row per "
+                                             "force level)", f.written[r], f.unit.symbol, line_of(q)));
+  }
+
+  for (auto& c : cols) {
+    data.columns[c.name] = Eigen::Map<const Eigen::VectorXd>(c.written.data(), static_cast<Eigen::Index>(n)) * c.unit.to_si;
+    data.units[c.name] = c.unit;
+  }
+  return data;
+}
+
+}  // namespace bb

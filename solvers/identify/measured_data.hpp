@@ -1,6 +1,7 @@
 // Measured (or reference) curves to fit, read from CSV files whose header states each column's
 // unit: `frequency [Hz],amplitude [um/N],phase [deg]`. Values are converted to SI on reading.
-// Lines starting with '#' are comments (provenance: rig, date, how the data were produced).
+// Lines starting with '#' are comments (provenance: rig, date, how the data were produced); blank
+// lines are skipped. Line numbers in messages count every physical line of the file (1-based).
 //
 // Data kinds and their columns (any order; unknown columns are refused, so a typo is caught):
 //   peaks       force [force], frequency [frequency], amplitude [length or compliance],
@@ -10,6 +11,8 @@
 //               amplitude_sigma, phase_sigma. Frequencies strictly increasing (no duplicates).
 //   hysteresis  relative_displacement [length], tangential_force [force], optional force_sigma
 //               [force]. Rows in time order over the loop; at least 8 rows.
+// A sigma column needs its column (phase_sigma needs phase; force_sigma's is tangential_force) and
+// must have the same dimension as it. peaks and frf need at least one row.
 // Every cell must be a finite number; amplitudes and sigmas must be positive.
 #pragma once
 #include <Eigen/Dense>
@@ -33,7 +36,7 @@ struct Unit {
 };
 
 // Known symbols: m mm um µm nm | N kN mN | Hz kHz rad/s rpm | deg rad | m/N mm/N um/N µm/N nm/N |
-// N/m N/mm N/um | s ms | - 1. Frequencies are kept in Hz (rad/s and rpm are converted to Hz),
+// N/m N/mm N/um | s ms | - 1 (µ as the micro sign or the Greek mu). Frequencies are kept in Hz (rad/s and rpm are converted to Hz),
 // angles in radians. std::nullopt for an unknown symbol.
 std::optional<Unit> parse_unit(std::string_view symbol);
 

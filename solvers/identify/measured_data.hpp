@@ -36,8 +36,8 @@ struct Unit {
 };
 
 // Known symbols: m mm um µm nm | N kN mN | Hz kHz rad/s rpm | deg rad | m/N mm/N um/N µm/N nm/N |
-// N/m N/mm N/um | s ms | - 1 (µ as the micro sign or the Greek mu). Frequencies are kept in Hz (rad/s and rpm are converted to Hz),
-// angles in radians. std::nullopt for an unknown symbol.
+// N/m N/mm N/um | s ms | - 1 (µ as the micro sign or the Greek mu). Frequencies are kept in Hz
+// (rad/s and rpm are converted to Hz), angles in radians. std::nullopt for an unknown symbol.
 std::optional<Unit> parse_unit(std::string_view symbol);
 
 // Dimension of a result-table column from its name's unit suffix, the project's convention:

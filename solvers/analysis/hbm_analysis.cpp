@@ -351,12 +351,16 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
   }
   const size_t n_points = path.points.size();
   level.amplitude.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
+  level.phase_deg.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
   if (p.ip_oop) level.components.resize(static_cast<Index>(n_points), 2);
   for (size_t i = 0; i < n_points; ++i) {
     const hbm::ContinuationPoint& pt = path.points[i];
     level.frequency_hz.push_back(pt.omega / kTwoPi);
     const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
-    for (size_t r = 0; r < p.responses.size(); ++r) level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
+    for (size_t r = 0; r < p.responses.size(); ++r) {
+      level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
+      level.phase_deg(static_cast<Index>(i), static_cast<Index>(r)) = std::arg(z[p.responses[r]]) * 180.0 / std::numbers::pi;
+    }
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
   }
@@ -447,12 +451,14 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   for (const HbmLevel& level : o.levels) {
     std::vector<std::string> cols = {"point", "frequency_hz"};
     for (const std::string& r : p.response_names) cols.push_back(r + "_amp_m");
+    for (const std::string& r : p.response_names) cols.push_back(r + "_phase_deg");
     if (p.ip_oop) cols.insert(cols.end(), {"ip_component_m", "oop_component_m"});
     cols.insert(cols.end(), {"residual_n", "iterations"});
     std::vector<std::vector<double>> rows;
     for (size_t i = 0; i < level.path.points.size(); ++i) {
       std::vector<double> row = {static_cast<double>(i + 1), level.frequency_hz[i]};
       for (Index r = 0; r < level.amplitude.cols(); ++r) row.push_back(level.amplitude(static_cast<Index>(i), r));
+      for (Index r = 0; r < level.phase_deg.cols(); ++r) row.push_back(level.phase_deg(static_cast<Index>(i), r));
       if (p.ip_oop) row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
       row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});
       rows.push_back(row);

@@ -58,6 +58,7 @@ struct HbmLevel {
   hbm::ContinuationResult path;
   std::vector<double> frequency_hz; // of the path points
   Eigen::MatrixXd amplitude;        // path points x responses, first harmonic [m]
+  Eigen::MatrixXd phase_deg;        // path points x responses, first harmonic's phase to the force
   Eigen::MatrixXd components;       // path points x (IP, OOP) [m] when ip_oop is set
   std::vector<HbmPeak> peaks;
   double seconds = 0.0;

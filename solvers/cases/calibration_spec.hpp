@@ -1,5 +1,6 @@
 // The [calibration] section of a case: which numeric case values to identify, within which
-// bounds, against which checks' reference data.
+// bounds, against which data: the reference values of chosen checks and/or measured curves read
+// from CSV files with units (identify/measured_data.hpp).
 #pragma once
 #include <map>
 #include <optional>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "cases/case_spec.hpp"
+#include "identify/measured_data.hpp"
 
 namespace bb {
 
@@ -17,9 +19,26 @@ struct CalibrationParameter {
   double start = 0.0;   // the value in the case file
 };
 
+// One [[calibration.data]] block: a measured curve and the result table that models it.
+struct CalibrationData {
+  std::string name;                  // label in reports (default: the file's stem)
+  MeasuredData data;                 // read and validated when the case is parsed
+  std::string table;                 // result table holding the computed curve
+  std::map<std::string, std::string> columns;  // data column -> result column
+  // Sigmas when the file has no *_sigma column: relative to each amplitude (peaks, frf), relative
+  // to the peak frequency (peaks), absolute in radians (phase), relative to the largest |force| of
+  // the loop (hysteresis: a relative sigma per point would blow up where the force crosses zero).
+  double amplitude_uncertainty = 0.02;
+  double frequency_uncertainty = 0.001;
+  double phase_uncertainty = 0.035;  // 2 degrees
+  double force_uncertainty = 0.02;
+  SourceLocation at;
+};
+
 struct CalibrationSpec {
   std::vector<CalibrationParameter> parameters;
   std::vector<std::string> fit_checks;  // [[check]] names whose entries become residuals
+  std::vector<CalibrationData> data;    // measured curves whose points become residuals
   double relative_uncertainty = 0.01;   // sigma of each reference value, relative
   std::map<std::string, double> check_uncertainties;  // per-check override of relative_uncertainty
   std::string loss = "none";            // none | huber | cauchy
@@ -35,6 +54,9 @@ struct CalibrationSpec {
   // within the bounds (seeded, so a run repeats); the lowest final cost wins.
   int starts = 1;
   unsigned seed = 1;
+  // An independent model (e.g. the time integration) run with the identified values at the same
+  // parameter paths; its checks must pass for the identification to count (empty: none).
+  std::filesystem::path cross_check;
   SourceLocation at;
 };
 

@@ -1,6 +1,9 @@
 #include <fmt/format.h>
 
+#include <fmt/ranges.h>
+
 #include <algorithm>
+#include <numbers>
 
 #include "cases/calibration_spec.hpp"
 #include "cases/toml_reader.hpp"
@@ -27,6 +30,63 @@ toml::node* node_at_path(toml::table& root, const std::string& path) {
     begin = dot + 1;
   }
 }
+
+namespace {
+
+// The data columns a block may map to result columns, per kind; the first ones are required.
+struct KindColumns {
+  std::vector<std::string> required, optional;
+};
+KindColumns kind_columns(DataKind kind) {
+  switch (kind) {
+    case DataKind::peaks: return {{"force"}, {"frequency", "amplitude"}};
+    case DataKind::frf: return {{"frequency", "amplitude"}, {"phase"}};
+    case DataKind::hysteresis: return {{"relative_displacement", "tangential_force"}, {}};
+  }
+  return {};
+}
+
+CalibrationData parse_data_block(const toml::table& t, const std::string& path, const std::filesystem::path& case_file) {
+  TomlReader r(t, path, case_file);
+  CalibrationData d;
+  d.at = r.location();
+  const std::string kind = r.choice("kind", {"peaks", "frf", "hysteresis"});
+  const DataKind k = kind == "peaks" ? DataKind::peaks : kind == "frf" ? DataKind::frf : DataKind::hysteresis;
+  const std::filesystem::path file = case_file.parent_path() / r.string("file");
+  d.data = read_measured_data(file, k);
+  d.name = r.optional_string("name").value_or(file.stem().string());
+  d.table = r.string("table");
+  const KindColumns allowed = kind_columns(k);
+  for (const auto& [key, value] : r.table("columns")) {
+    const std::string column(key.str());
+    const bool known = std::count(allowed.required.begin(), allowed.required.end(), column) +
+                       std::count(allowed.optional.begin(), allowed.optional.end(), column);
+    if (!known) r.fail("columns", fmt::format("'{}' is not a column of {} data (they are: {}{}{})", column, kind,
+                                              fmt::join(allowed.required, ", "), allowed.optional.empty() ? "" : ", ",
+                                              fmt::join(allowed.optional, ", ")));
+    const std::optional<std::string> result = value.value<std::string>();
+    if (!result || result->empty()) r.fail("columns", fmt::format("'{}' needs the name of a result column", column));
+    if (!d.data.has(column)) r.fail("columns", fmt::format("'{}' is mapped but {} has no such column", column, file.string()));
+    const Unit& unit = d.data.units.at(column);
+    const std::optional<Dimension> dim = column_dimension(*result);
+    if (dim && *dim != unit.dimension)
+      r.fail("columns", fmt::format("{}'s column '{}' is in {} ({}) but result column '{}' holds a {}: the units do not match",
+                                    file.string(), column, unit.symbol, dimension_name(unit.dimension), *result, dimension_name(*dim)));
+    d.columns[column] = *result;
+  }
+  for (const std::string& c : allowed.required)
+    if (!d.columns.count(c)) r.fail("columns", fmt::format("{} data need a result column for '{}'", kind, c));
+  if (k == DataKind::peaks && !d.columns.count("frequency") && !d.columns.count("amplitude"))
+    r.fail("columns", "peaks data need 'frequency', 'amplitude' or both");
+  if (r.has("amplitude_uncertainty")) d.amplitude_uncertainty = r.positive("amplitude_uncertainty");
+  if (r.has("frequency_uncertainty")) d.frequency_uncertainty = r.positive("frequency_uncertainty");
+  if (r.has("phase_uncertainty_deg")) d.phase_uncertainty = r.positive("phase_uncertainty_deg") * std::numbers::pi / 180.0;
+  if (r.has("force_uncertainty")) d.force_uncertainty = r.positive("force_uncertainty");
+  r.finish();
+  return d;
+}
+
+}  // namespace
 
 double uncertainty_of(const CalibrationSpec& c, const std::string& name) {
   const auto it = c.check_uncertainties.find(name);
@@ -60,8 +120,15 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     c.parameters.push_back(param);
   }
   if (c.parameters.empty()) r.fail("parameters", "needs at least one parameter");
-  c.fit_checks = r.string_array("fit_checks");
-  if (c.fit_checks.empty()) r.fail("fit_checks", "needs at least one check name");
+  if (r.has("fit_checks")) c.fit_checks = r.string_array("fit_checks");
+  if (r.has("data")) {
+    int block = 0;
+    for (const toml::node& n : r.array("data")) {
+      if (!n.is_table()) r.fail("data", "write each data set as a [[calibration.data]] table");
+      c.data.push_back(parse_data_block(*n.as_table(), fmt::format("calibration.data[{}]", block++), file));
+    }
+  }
+  if (c.fit_checks.empty() && c.data.empty()) r.fail("fit_checks", "needs at least one check name or a [[calibration.data]] block");
   for (const std::string& name : c.fit_checks) {
     const bool found = std::any_of(spec.checks.begin(), spec.checks.end(), [&](const CheckSpec& k) { return k.name == name; });
     if (!found) r.fail("fit_checks", fmt::format("no [[check]] named '{}'", name));
@@ -96,6 +163,10 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   if (const auto n = r.optional_integer("seed")) {
     if (*n < 0 || *n > 4294967295L) r.fail("seed", "must lie in [0, 2^32)");
     c.seed = static_cast<unsigned>(*n);
+  }
+  if (const auto cross = r.optional_string("cross_check")) {
+    c.cross_check = file.parent_path() / *cross;
+    if (!std::filesystem::is_regular_file(c.cross_check)) r.fail("cross_check", fmt::format("no case file {}", c.cross_check.string()));
   }
   if (const auto it = r.optional_integer("max_iterations")) {
     if (*it < 1) r.fail("max_iterations", "must be >= 1");

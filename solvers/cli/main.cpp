@@ -12,6 +12,8 @@
 #include "cli/run_case.hpp"
 #include "identify/calibrate_case.hpp"
 #include "identify/calibration_report.hpp"
+#include "identify/synthetic_data.hpp"
+#include "analysis/case_results.hpp"
 #include "common/errors.hpp"
 #include "report/calculix_export.hpp"
 #include "report/writers.hpp"
@@ -71,9 +73,29 @@ int main(int argc, char** argv) {
 
   std::string calibrate_case_file, calibrate_out;
   CLI::App* calibrate = app.add_subcommand(
-      "calibrate", "Identify the case's [calibration] parameters against its checks (Ceres least squares)");
+      "calibrate", "Identify the case's [calibration] parameters against its checks and measured data (Ceres least squares)");
   calibrate->add_option("CASE", calibrate_case_file, "Case file with a [calibration] section")->required()->check(CLI::ExistingFile);
   calibrate->add_option("--out", calibrate_out, "Output folder (default reports/<case-name>-calibration)");
+  bool calibrate_no_plots = false;
+  calibrate->add_flag("--no-plots", calibrate_no_plots, "Skip gnuplot figures");
+
+  std::string synth_case_file, synth_table, synth_kind = "frf", synth_out;
+  std::vector<std::string> synth_columns;
+  bb::SyntheticOptions synth;
+  double synth_phase_deg = 0.0;
+  CLI::App* synthesize = app.add_subcommand(
+      "synthesize", "Run a case and write one of its result tables as measured data with noise (round trips, test planning)");
+  synthesize->add_option("CASE", synth_case_file, "Case file run at the parameter values to recover")->required()->check(CLI::ExistingFile);
+  synthesize->add_option("--table", synth_table, "Result table to sample (e.g. frf_30, peaks, hysteresis)")->required();
+  synthesize->add_option("--kind", synth_kind, "Data kind: peaks, frf or hysteresis")->check(CLI::IsMember({"peaks", "frf", "hysteresis"}));
+  synthesize->add_option("--column", synth_columns, "data=result:unit, e.g. amplitude=A.x_amp_m:um (repeat per column)")->required();
+  synthesize->add_option("--noise", synth.noise, "Relative sigma of amplitudes and forces")->check(CLI::NonNegativeNumber);
+  synthesize->add_option("--frequency-noise", synth.frequency_noise, "Relative sigma of peak frequencies")->check(CLI::NonNegativeNumber);
+  synthesize->add_option("--phase-noise-deg", synth_phase_deg, "Sigma of phases [deg]")->check(CLI::NonNegativeNumber);
+  synthesize->add_option("--outliers", synth.outliers, "Rows whose amplitude or force is scaled by 1.3")->check(CLI::NonNegativeNumber);
+  synthesize->add_option("--seed", synth.seed, "Random seed");
+  synthesize->add_option("--every", synth.every, "Keep every n-th row")->check(CLI::PositiveNumber);
+  synthesize->add_option("--out", synth_out, "CSV file to write")->required();
 
   std::string export_case_file, export_out;
   int export_modes = 0;
@@ -97,7 +119,7 @@ int main(int argc, char** argv) {
     try {
       const bb::CalibrationOutcome o = bb::calibrate_case(calibrate_case_file, true);
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      bb::write_calibration_outputs(o, calibrate_case_file, wall, out);
+      bb::write_calibration_outputs(o, calibrate_case_file, wall, out, !calibrate_no_plots);
       std::fprintf(stderr, "%s: %s, cost %.6g -> %.6g in %.1f s -> %s\n", calibrate_case_file.c_str(),
                    o.converged ? "converged" : "NOT converged", o.initial_cost, o.final_cost, wall,
                    (out / "report.md").string().c_str());
@@ -105,7 +127,41 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "  %s = %.8g (start %.8g, std %.3g)\n", o.spec.parameters[i].path.c_str(), o.values[i],
                      o.spec.parameters[i].start, o.std_devs[i]);
       for (const auto& w : o.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
-      return o.converged ? bb::exit_pass : bb::exit_solver_failed;
+      for (const bb::CheckEntry& e : o.cross_check)
+        if (!e.pass)
+          std::fprintf(stderr, "  cross-check FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n", e.name.c_str(),
+                       e.computed, e.reference, e.abs_error, e.tolerance);
+      if (!o.converged) return bb::exit_solver_failed;
+      return o.cross_check_passed() ? bb::exit_pass : bb::exit_check_failed;
+    } catch (const bb::InputError& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return bb::exit_bad_input;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return bb::exit_solver_failed;
+    }
+  }
+
+  if (*synthesize) {
+    try {
+      synth.kind = synth_kind == "peaks" ? bb::DataKind::peaks : synth_kind == "frf" ? bb::DataKind::frf : bb::DataKind::hysteresis;
+      synth.phase_noise = synth_phase_deg * 3.14159265358979323846 / 180.0;
+      for (const std::string& c : synth_columns) {
+        const size_t eq = c.find('='), colon = c.rfind(':');
+        if (eq == std::string::npos || colon == std::string::npos || colon < eq)
+          throw bb::InputError(fmt::format("--column '{}': write data=result:unit", c));
+        synth.columns.push_back({c.substr(0, eq), c.substr(eq + 1, colon - eq - 1), c.substr(colon + 1)});
+      }
+      std::string command = "bladebench";
+      for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+      synth.provenance = "generated by: " + command;
+      const bb::CaseSpec spec = bb::parse_case_file(synth_case_file);
+      const bb::CaseResults results = bb::compute_case_results(spec, bb::build_model(spec));
+      const auto t = results.tables.find(synth_table);
+      if (t == results.tables.end()) throw bb::InputError(fmt::format("{}: the case computes no table '{}'", synth_case_file, synth_table));
+      bb::write_synthetic_data(t->second, synth, synth_out);
+      std::fprintf(stderr, "%s: table %s -> %s\n", synth_case_file.c_str(), synth_table.c_str(), synth_out.c_str());
+      return bb::exit_pass;
     } catch (const bb::InputError& e) {
       std::fprintf(stderr, "error: %s\n", e.what());
       return bb::exit_bad_input;

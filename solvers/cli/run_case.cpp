@@ -13,6 +13,7 @@
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
 #include "analysis/static_analysis.hpp"
+#include "cases/calibration_spec.hpp"
 #include "common/errors.hpp"
 #include "reduction/reduced_model_io.hpp"
 #include "report/frf_plots.hpp"
@@ -336,7 +337,9 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
   run.title = run.case_name;
   outcome.out_dir = options.out_dir.value_or(fs::path("reports") / run.case_name);
   try {
-    const CaseSpec spec = parse_case_file(case_file);
+    const toml::table case_table = read_case_table(case_file);
+    const CaseSpec spec = parse_case_table(case_table, case_file);
+    parse_calibration(case_table, case_file, spec);  // a bad [calibration] or data file fails here too, not only in `calibrate`
     run.case_name = spec.name;
     run.title = spec.title;
     run.description = spec.description;

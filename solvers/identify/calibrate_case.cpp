@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
@@ -18,35 +19,47 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Replaces the number at `path`; it must exist (a cross-check case must hold every fitted value).
 void set_number(toml::table& root, const std::string& path, double value) {
-  const size_t dot = path.rfind('.');
-  toml::table* parent = &root;
-  if (dot != std::string::npos) {
-    toml::node* n = node_at_path(root, path.substr(0, dot));
-    parent = n ? n->as_table() : nullptr;
+  toml::node* n = node_at_path(root, path);
+  if (!n || !n->is_number()) throw InputError(fmt::format("calibration path '{}' is not a number in the case", path));
+  if (toml::value<double>* f = n->as_floating_point()) {
+    *f = value;
+    return;
   }
-  if (!parent) throw InputError(fmt::format("calibration path '{}' does not exist", path));
-  parent->insert_or_assign(path.substr(dot == std::string::npos ? 0 : dot + 1), value);
+  const size_t dot = path.rfind('.');  // an integer: replaced by a float in its parent table
+  toml::node* parent = dot == std::string::npos ? &root : node_at_path(root, path.substr(0, dot));
+  if (!parent || !parent->is_table()) throw InputError(fmt::format("calibration path '{}' is inside an array of numbers", path));
+  parent->as_table()->insert_or_assign(path.substr(dot == std::string::npos ? 0 : dot + 1), value);
 }
 
-// Entries of the fitted checks for a case table with the given parameter values.
-std::vector<CheckEntry> fitted_entries(const toml::table& base, const fs::path& file, const CalibrationSpec& cal,
-                                       const std::vector<double>& values) {
+toml::table with_values(const toml::table& base, const CalibrationSpec& cal, const std::vector<double>& values) {
   toml::table t = base;
   for (size_t i = 0; i < values.size(); ++i) set_number(t, cal.parameters[i].path, values[i]);
-  const CaseSpec spec = parse_case_table(t, file);
-  const Model model = build_model(spec);
-  const CaseResults results = compute_case_results(spec, model);
-  std::vector<CheckEntry> entries;
-  for (const CheckSpec& c : spec.checks) {
-    if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
-    auto e = evaluate_check(c, results.tables);
-    entries.insert(entries.end(), e.begin(), e.end());
-  }
-  return entries;
+  return t;
 }
 
-// r_k = (computed_k / reference_k - 1) / sigma: relative misfit in units of the stated uncertainty.
+// The fitted points of a case table with the given parameter values, and the tables of its curves.
+std::vector<FitPoint> fitted_points(const toml::table& base, const fs::path& file, const CalibrationSpec& cal,
+                                    const std::vector<double>& values, ResultTables* curves = nullptr) {
+  const CaseSpec spec = parse_case_table(with_values(base, cal, values), file);
+  const Model model = build_model(spec);
+  const CaseResults results = compute_case_results(spec, model);
+  std::vector<FitPoint> points;
+  for (const CheckSpec& c : spec.checks) {
+    if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
+    const auto e = check_points(evaluate_check(c, results.tables), cal);
+    points.insert(points.end(), e.begin(), e.end());
+  }
+  for (const CalibrationData& d : cal.data) {
+    const auto e = data_points(d, results.tables);
+    points.insert(points.end(), e.begin(), e.end());
+    if (curves) curves->insert_or_assign(d.table, results.tables.at(d.table));
+  }
+  return points;
+}
+
+// r_k = (computed_k - measured_k) / sigma_k: the misfit in units of the stated uncertainty.
 struct CaseResidual {
   const toml::table* base;
   fs::path file;
@@ -56,12 +69,11 @@ struct CaseResidual {
     std::vector<double> values(cal->parameters.size());
     for (size_t i = 0; i < values.size(); ++i) values[i] = std::exp(log_values[0][i]);
     try {
-      const auto entries = fitted_entries(*base, file, *cal, values);
+      const auto points = fitted_points(*base, file, *cal, values);
       ++*evaluations;
-      for (const CheckEntry& e : entries)
-        if (!std::isfinite(e.computed)) return false;  // a peak or mode not found there: Ceres shrinks the step
-      for (size_t k = 0; k < entries.size(); ++k)
-        residuals[k] = (entries[k].computed / entries[k].reference - 1.0) / uncertainty_of(*cal, entries[k].group);
+      for (const FitPoint& p : points)
+        if (!std::isfinite(p.computed)) return false;  // a peak or mode not found there: Ceres shrinks the step
+      for (size_t k = 0; k < points.size(); ++k) residuals[k] = points[k].residual();
       return true;
     } catch (const std::exception&) {
       return false;  // an impossible geometry or a failed solve: Ceres shrinks the step
@@ -88,6 +100,10 @@ class Progress : public ceres::IterationCallback {
 
 }  // namespace
 
+bool CalibrationOutcome::cross_check_passed() const {
+  return std::all_of(cross_check.begin(), cross_check.end(), [](const CheckEntry& e) { return e.pass; });
+}
+
 CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress) {
   const toml::table base = read_case_table(case_file);
   const CaseSpec spec = parse_case_table(base, case_file);
@@ -98,9 +114,9 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
   const size_t n = cal->parameters.size();
   std::vector<double> start(n);
   for (size_t i = 0; i < n; ++i) start[i] = cal->parameters[i].start;
-  out.before = fitted_entries(base, case_file, *cal, start);
-  for (const CheckEntry& e : out.before)
-    if (e.reference == 0.0) throw InputError(fmt::format("{}: fitted entry '{}' has a zero reference", cal->at.where(), e.name));
+  out.before = fitted_points(base, case_file, *cal, start, &out.curves_before);
+  for (const FitPoint& p : out.before)
+    if (!(p.sigma > 0.0)) throw InputError(fmt::format("{}: fitted entry '{}' has a zero reference or uncertainty", cal->at.where(), p.label));
 
   // Start points in log space: the case's values, then a Latin hypercube within the bounds.
   std::vector<std::vector<double>> starts{start};
@@ -232,9 +248,22 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
       out.warnings.push_back(fmt::format("'{}' ended on a bound ({:.6g}): the optimum may lie outside the stated range",
                                          cal->parameters[i].path, out.values[i]));
   }
-  out.after = fitted_entries(base, case_file, *cal, out.values);
-  out.calibrated = base;
-  for (size_t i = 0; i < n; ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);
+  out.after = fitted_points(base, case_file, *cal, out.values, &out.curves_after);
+  out.calibrated = with_values(base, *cal, out.values);
+  if (!cal->cross_check.empty()) {
+    // The same parameter paths in an independent model (e.g. Newmark instead of the harmonic balance).
+    const auto t0 = std::chrono::steady_clock::now();
+    const toml::table cross_base = read_case_table(cal->cross_check);
+    const CaseSpec cross = parse_case_table(with_values(cross_base, *cal, out.values), cal->cross_check);
+    const CaseResults results = compute_case_results(cross, build_model(cross));
+    for (const CheckSpec& c : cross.checks) {
+      const auto e = evaluate_check(c, results.tables);
+      out.cross_check.insert(out.cross_check.end(), e.begin(), e.end());
+    }
+    out.cross_check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!out.cross_check_passed())
+      out.warnings.push_back(fmt::format("the cross-check {} fails with the identified values", cal->cross_check.string()));
+  }
   return out;
 }
 

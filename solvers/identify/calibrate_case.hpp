@@ -1,6 +1,7 @@
 // Identification of numeric case values (dimensions, stiffnesses, damping ...) by weighted
 // nonlinear least squares (Ceres, trust region, central differences) against the reference
-// data of chosen checks, with the parameter covariance at the optimum.
+// data of chosen checks and measured curves, with the parameter covariance at the optimum and an
+// optional cross-check of the identified values by an independent model.
 #pragma once
 #include <Eigen/Dense>
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include "cases/calibration_spec.hpp"
 #include "checks/checks.hpp"
+#include "identify/fit_points.hpp"
 
 namespace bb {
 
@@ -37,12 +39,17 @@ struct CalibrationOutcome {
   int residual_evaluations = 0;
   bool converged = false;
   std::string termination;              // Ceres's report
-  std::vector<CheckEntry> before;       // fitted check entries at the start values
-  std::vector<CheckEntry> after;        // and at the identified values
+  std::vector<FitPoint> before;         // fitted points at the case's start values
+  std::vector<FitPoint> after;          // and at the identified values
+  ResultTables curves_before, curves_after;  // the result tables the measured curves are fitted to
   toml::table calibrated;               // the case table with the identified values
+  // The cross-check case run with the identified values (spec.cross_check), every check entry.
+  std::vector<CheckEntry> cross_check;
+  double cross_check_seconds = 0.0;
+  bool cross_check_passed() const;
 };
 
-// Throws InputError for a malformed case or [calibration]; a failed fit is reported in the outcome.
+// Throws InputError for a malformed case, [calibration] or data file; a failed fit is reported in the outcome.
 CalibrationOutcome calibrate_case(const std::filesystem::path& case_file, bool show_progress);
 
 }  // namespace bb

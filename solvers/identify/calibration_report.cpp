@@ -2,10 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <numbers>
 #include <fstream>
 #include <stdexcept>
 
+#include "report/gnuplot.hpp"
 #include "report/plots.hpp"
 
 namespace bb {
@@ -19,16 +23,85 @@ std::ofstream open_out(const fs::path& file) {
   return out;
 }
 
-double rms_relative(const std::vector<CheckEntry>& entries) {
+// Root mean square of the residuals (misfit / sigma) of the points of one set, or of all.
+double rms_residual(const std::vector<FitPoint>& points, const std::string& set = {}) {
   double sum = 0.0;
-  for (const CheckEntry& e : entries) sum += std::pow(e.computed / e.reference - 1.0, 2);
-  return entries.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(entries.size()));
+  int n = 0;
+  for (const FitPoint& p : points)
+    if (set.empty() || p.set == set) sum += p.residual() * p.residual(), ++n;
+  return n ? std::sqrt(sum / n) : 0.0;
+}
+
+std::vector<std::string> sets_of(const std::vector<FitPoint>& points) {
+  std::vector<std::string> sets;
+  for (const FitPoint& p : points)
+    if (std::find(sets.begin(), sets.end(), p.set) == sets.end()) sets.push_back(p.set);
+  return sets;
+}
+
+std::string slug(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+
+// The measured points of one quantity of a data set with their computed values at the start and
+// at the identified values, and the computed curves (x column, y column of the fitted table).
+Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const std::string& quantity, const fs::path& out_dir) {
+  const std::string stem = "fit_" + slug(d.name) + "_" + quantity;
+  const bool curve = d.data.kind != DataKind::peaks;
+  const std::string x_col = d.data.kind == DataKind::frf ? "frequency" : d.data.kind == DataKind::hysteresis ? "relative_displacement" : "force";
+  const std::string y_col = quantity == "tangential_force" ? "tangential_force" : quantity;
+  const double y_scale = quantity == "phase" ? 180.0 / std::numbers::pi : 1.0;  // phases plotted in degrees
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    out << "# measured: x y sigma | computed at the start | computed at the identified values\n";
+    for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
+      const FitPoint& a = o.after[k];
+      if (a.set != d.name || a.quantity != quantity) continue;
+      out << a.x << ' ' << a.measured * y_scale << ' ' << a.sigma * y_scale << ' ' << o.before[k].computed * y_scale << ' '
+          << a.computed * y_scale << '\n';
+    }
+    for (const ResultTables* tables : {&o.curves_before, &o.curves_after}) {
+      out << "\n\n";
+      const auto t = tables->find(d.table);
+      if (!curve || t == tables->end()) {
+        out << "nan nan\n";
+        continue;
+      }
+      const auto xi = t->second.column_index(d.columns.at(x_col));
+      const auto yi = t->second.column_index(d.columns.at(y_col));
+      const double y_si = column_to_si(d.columns.at(y_col)) * y_scale;
+      for (Eigen::Index r = 0; xi && yi && r < t->second.values.rows(); ++r)
+        out << t->second.values(r, *xi) * column_to_si(d.columns.at(x_col)) << ' ' << t->second.values(r, *yi) * y_si << '\n';
+    }
+  }
+  const std::string x_label = d.data.kind == DataKind::frf ? "frequency [Hz]" : d.data.kind == DataKind::hysteresis ? "relative displacement [m]"
+                                                                                                                     : "force level [N]";
+  const std::optional<Dimension> y_dim = column_dimension(d.columns.at(y_col));
+  const std::string y_label = quantity == "phase" ? "phase [deg]" : quantity == "frequency" ? "frequency [Hz]"
+                              : quantity == "tangential_force" ? "tangential force [N]"
+                              : y_dim == Dimension::compliance ? "amplitude per newton [m/N]" : "amplitude [m]";
+  const std::string title = fmt::format("{}: {} measured (points, 1 sigma) and computed", d.name, quantity);
+  std::string script = fmt::format("set title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\nset datafile missing 'nan'\n",
+                                   gnuplot_quote(title), x_label, y_label);
+  if (!curve) script += "set logscale x\n";  // force levels span decades
+  if (curve) {
+    script += fmt::format("plot '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.5 lc rgb 'black' title 'measured', \\\n"
+                          "     '{0}.dat' index 1 using 1:2 with lines dt 2 lc rgb '#1f77b4' title 'start values', \\\n"
+                          "     '{0}.dat' index 2 using 1:2 with lines lw 2 lc rgb '#d62728' title 'identified'\n", stem);
+  } else {
+    script += fmt::format("plot '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.6 lc rgb 'black' title 'measured', \\\n"
+                          "     '{0}.dat' index 0 using 1:4 with points pt 6 lc rgb '#1f77b4' title 'start values', \\\n"
+                          "     '{0}.dat' index 0 using 1:5 with points pt 9 ps 1.2 lc rgb '#d62728' title 'identified'\n", stem);
+  }
+  return draw(out_dir, stem, title, script);
 }
 
 }  // namespace
 
 void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case_file, double wall_seconds,
-                               const fs::path& out_dir) {
+                               const fs::path& out_dir, bool plots) {
   fs::create_directories(out_dir);
   fs::remove(out_dir / "report.md");
   {
@@ -63,17 +136,38 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
       out << '\n';
     }
   }
+  {
+    std::ofstream out = open_out(out_dir / "fitted_points.csv");
+    out << "set,point,quantity,x,measured,sigma,computed_start,residual_start,computed_identified,residual_identified\n";
+    for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
+      const FitPoint& a = o.after[k];
+      out << fmt::format("\"{}\",\"{}\",{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g}\n", a.set, a.label, a.quantity, a.x, a.measured,
+                         a.sigma, o.before[k].computed, o.before[k].residual(), a.computed, a.residual());
+    }
+  }
   std::ofstream md = open_out(out_dir / "report.md");
   md << fmt::format("# Calibration of `{}`\n\n", case_file.string());
-  md << fmt::format("{} in {:.1f} s, {} model evaluations. Cost {:.6g} -> {:.6g}; rms relative misfit {:.3f}% -> {:.3f}%.\n\n",
-                    o.converged ? "Converged" : "**Not converged**", wall_seconds, o.residual_evaluations, o.initial_cost,
-                    o.final_cost, 100 * rms_relative(o.before), 100 * rms_relative(o.after));
-  md << "Residuals: (computed / reference - 1) / sigma per entry of the fitted checks. Loss: " << o.spec.loss << ".\n\n";
+  md << fmt::format("{} in {:.1f} s, {} model evaluations ({:.2f} s each on average). Cost {:.6g} -> {:.6g}; rms residual {:.3g} -> {:.3g} sigma.\n\n",
+                    o.converged ? "Converged" : "**Not converged**", wall_seconds, o.residual_evaluations,
+                    wall_seconds / std::max(1, o.residual_evaluations), o.initial_cost, o.final_cost, rms_residual(o.before), rms_residual(o.after));
+  md << "Residuals: (computed - measured) / sigma per fitted point (for a check entry, sigma is relative to the reference). Loss: "
+     << o.spec.loss << ".\n\n";
   md << fmt::format("Reduced chi-square at the optimum: {:.3g}{}.\n\n", o.reduced_chi_square,
                     o.reduced_chi_square > 1 ? " (above 1: the standard deviations below are scaled up by its square root)" : "");
-  md << "| fitted check | sigma (relative) |\n|---|---|\n";
-  for (const std::string& name : o.spec.fit_checks) md << fmt::format("| {} | {:g} |\n", name, uncertainty_of(o.spec, name));
+  md << "| fitted set | points | rms residual at start | rms residual identified |\n|---|---|---|---|\n";
+  for (const std::string& set : sets_of(o.after)) {
+    const auto n = std::count_if(o.after.begin(), o.after.end(), [&](const FitPoint& p) { return p.set == set; });
+    md << fmt::format("| {} | {} | {:.3g} | {:.3g} |\n", set, n, rms_residual(o.before, set), rms_residual(o.after, set));
+  }
   md << '\n';
+  if (!o.spec.fit_checks.empty()) {
+    md << "| fitted check | sigma (relative) |\n|---|---|\n";
+    for (const std::string& name : o.spec.fit_checks) md << fmt::format("| {} | {:g} |\n", name, uncertainty_of(o.spec, name));
+    md << '\n';
+  }
+  for (const CalibrationData& d : o.spec.data)
+    md << fmt::format("Data set `{}`: {} file `{}` ({} rows), fitted to table `{}`.\n\n", d.name, data_kind_name(d.data.kind),
+                      d.data.file.filename().string(), d.data.rows(), d.table);
   if (o.starts.size() > 1) {
     md << fmt::format("## Starts\n\n{} starts (the case's values, then a Latin hypercube in log space, seed {}); start {} is reported.\n\n",
                       o.starts.size(), o.spec.seed, o.best + 1);
@@ -105,14 +199,31 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     md << "\n## Warnings\n\n";
     for (const auto& w : o.warnings) md << "- " << w << '\n';
   }
-  md << "\n## Fitted entries\n\n| entry | reference | start value | error | identified value | error |\n|---|---|---|---|---|---|\n";
-  for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
-    const CheckEntry& b = o.before[k];
-    const CheckEntry& a = o.after[k];
-    md << fmt::format("| {} | {:.6g} | {:.6g} | {:+.3f}% | {:.6g} | {:+.3f}% |\n", a.name, a.reference, b.computed,
-                      100 * (b.computed / b.reference - 1), a.computed, 100 * (a.computed / a.reference - 1));
+  if (!o.cross_check.empty() || !o.spec.cross_check.empty()) {
+    md << fmt::format("\n## Cross-check: `{}` with the identified values\n\n{} ({:.1f} s).\n\n", o.spec.cross_check.filename().string(),
+                      o.cross_check_passed() ? "Every check passes" : "**Some checks fail**", o.cross_check_seconds);
+    md << "| check entry | computed | reference | error | tolerance | pass |\n|---|---|---|---|---|---|\n";
+    for (const CheckEntry& e : o.cross_check)
+      md << fmt::format("| {} | {:.6g} | {:.6g} | {:.3g} | {:.3g} | {} |\n", e.name, e.computed, e.reference, e.abs_error, e.tolerance,
+                        e.pass ? "yes" : "**no**");
   }
-  md << fmt::format("\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`{}.\n", o.termination,
+  if (plots && !o.spec.data.empty()) {
+    md << "\n## Fitted curves over the data\n\n";
+    for (const CalibrationData& d : o.spec.data)
+      for (const auto& [column, result] : d.columns) {
+        if (column == "force" || (column == "frequency" && d.data.kind != DataKind::peaks) || column == "relative_displacement") continue;
+        const Plot p = plot_data_set(o, d, column, out_dir);
+        md << (p.file.empty() ? fmt::format("- {}: not drawn ({})\n", p.title, p.note) : fmt::format("![{}]({})\n\n", p.title, p.file));
+      }
+  }
+  md << "\n## Fitted points\n\n| set | point | measured | sigma | at start | residual | identified | residual |\n|---|---|---|---|---|---|---|---|\n";
+  for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
+    const FitPoint& b = o.before[k];
+    const FitPoint& a = o.after[k];
+    md << fmt::format("| {} | {} | {:.6g} | {:.3g} | {:.6g} | {:+.2f} | {:.6g} | {:+.2f} |\n", a.set, a.label, a.measured, a.sigma, b.computed,
+                      b.residual(), a.computed, a.residual());
+  }
+  md << fmt::format("\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`, `fitted_points.csv`{}.\n", o.termination,
                     o.converged ? ", `calibrated.toml`" : " (no `calibrated.toml`: the fit did not converge)");
   if (!md) throw std::runtime_error("failed writing the calibration report");
 }

@@ -1,5 +1,6 @@
 // Files written by `bladebench calibrate`: identification.csv, convergence.csv,
-// calibrated.toml (the case with the identified values) and report.md.
+// starts.csv, fitted_points.csv, calibrated.toml (the case with the identified values, only when
+// the fit converged), report.md and, for measured curves, plots of the fitted curves over the data.
 #pragma once
 #include <filesystem>
 
@@ -8,6 +9,6 @@
 namespace bb {
 
 void write_calibration_outputs(const CalibrationOutcome& outcome, const std::filesystem::path& case_file,
-                               double wall_seconds, const std::filesystem::path& out_dir);
+                               double wall_seconds, const std::filesystem::path& out_dir, bool plots = true);
 
 }  // namespace bb

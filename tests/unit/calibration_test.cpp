@@ -8,6 +8,7 @@
 
 #include "analysis/case_results.hpp"
 #include "identify/calibrate_case.hpp"
+#include "identify/calibration_report.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -87,7 +88,7 @@ TEST_F(CalibrationRoundTrip, RecoversYoungsModulusFromFrequencies) {
   ASSERT_TRUE(o.converged) << o.termination;
   EXPECT_NEAR(o.values[0] / 2.1e11, 1.0, 1e-6);
   EXPECT_LT(o.final_cost, 1e-8 * o.initial_cost);
-  for (const CheckEntry& e : o.after) EXPECT_NEAR(e.computed / e.reference, 1.0, 1e-7) << e.name;
+  for (const FitPoint& e : o.after) EXPECT_NEAR(e.computed / e.measured, 1.0, 1e-7) << e.label;
   EXPECT_TRUE(std::isfinite(o.std_devs[0]));
 }
 
@@ -121,6 +122,23 @@ TEST_F(CalibrationRoundTrip, EveryStartOfALatinHypercubeIsReportedAndTheBestWins
   for (const CalibrationStart& r : o.starts) EXPECT_GE(r.final_cost, o.starts[o.best].final_cost);
   ASSERT_TRUE(o.converged);
   EXPECT_NEAR(o.values[0] / 2.1e11, 1.0, 1e-6);
+}
+
+TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedCase) {
+  const fs::path c = write_case(1.1e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  std::ofstream(c, std::ios::app) << "max_iterations = 1\n";
+  const CalibrationOutcome o = calibrate_case(c, false);
+  ASSERT_FALSE(o.converged) << o.termination;
+  fs::create_directories(dir_ / "out");
+  std::ofstream(dir_ / "out" / "calibrated.toml") << "stale\n";
+  write_calibration_outputs(o, c, 1.0, dir_ / "out", false);
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "calibrated.toml"));
+  std::ifstream report(dir_ / "out" / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("**Not converged**"), std::string::npos);
+  bool warned = false;
+  for (const auto& w : o.warnings) warned = warned || w.find("did not converge") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 TEST_F(CalibrationRoundTrip, ParameterOutsideItsBoundsIsAnInputError) {

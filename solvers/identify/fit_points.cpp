@@ -1,0 +1,178 @@
+#include "identify/fit_points.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+using Eigen::Index;
+
+double wrap_angle(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
+
+const ResultTable& table_of(const CalibrationData& d, const ResultTables& tables) {
+  const auto it = tables.find(d.table);
+  if (it == tables.end()) throw InputError(fmt::format("{}: calibration data '{}': the case computes no table '{}'", d.at.where(), d.name, d.table));
+  return it->second;
+}
+
+// A result column in SI (a _deg column is turned into radians).
+Eigen::VectorXd result_column(const CalibrationData& d, const ResultTable& t, const std::string& data_column) {
+  const std::string& name = d.columns.at(data_column);
+  const auto c = t.column_index(name);
+  if (!c) throw InputError(fmt::format("{}: calibration data '{}': table '{}' has no column '{}'", d.at.where(), d.name, d.table, name));
+  return t.values.col(*c) * column_to_si(name);
+}
+
+double sigma_of(const MeasuredData& m, const std::string& column, Index row, double fallback) {
+  return m.has(column + "_sigma") ? m.column(column + "_sigma")[row] : fallback;
+}
+
+std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t) {
+  const MeasuredData& m = d.data;
+  const Eigen::VectorXd force = result_column(d, t, "force");
+  std::vector<FitPoint> points;
+  for (Index i = 0; i < m.rows(); ++i) {
+    const double f = m.column("force")[i];
+    Index row = -1;
+    for (Index r = 0; r < force.size(); ++r)
+      if (std::abs(force[r] - f) <= 1e-9 * std::abs(f)) row = r;
+    if (row < 0) throw InputError(fmt::format("{}: force level {:g} N has no row in table '{}' (case {})", m.where(i), f, d.table, d.at.where()));
+    for (const char* q : {"frequency", "amplitude"}) {
+      if (!d.columns.count(q)) continue;
+      const bool is_frequency = std::string(q) == "frequency";
+      const double measured = m.column(q)[i];
+      const double sigma = sigma_of(m, q, i, (is_frequency ? d.frequency_uncertainty : d.amplitude_uncertainty) * measured);
+      points.push_back({d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, result_column(d, t, q)[row], sigma, false});
+    }
+  }
+  return points;
+}
+
+// Linear interpolation of y(x) at xq, x strictly increasing and xq within [x0, xn].
+double interpolate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double xq) {
+  const auto* hi = std::upper_bound(x.data(), x.data() + x.size(), xq);
+  const Index j = std::clamp<Index>(hi - x.data(), 1, x.size() - 1);
+  const double s = (xq - x[j - 1]) / (x[j] - x[j - 1]);
+  return y[j - 1] + s * (y[j] - y[j - 1]);
+}
+
+std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t) {
+  const MeasuredData& m = d.data;
+  const Eigen::VectorXd f = result_column(d, t, "frequency");
+  for (Index r = 1; r < f.size(); ++r)
+    if (!(f[r] > f[r - 1]))
+      throw InputError(fmt::format("{}: calibration data '{}': the frequencies of table '{}' do not increase (row {}); use a grid sweep",
+                                   d.at.where(), d.name, d.table, r + 1));
+  std::vector<FitPoint> points;
+  for (Index i = 0; i < m.rows(); ++i) {
+    const double fq = m.column("frequency")[i];
+    const double slack = f.size() ? 1e-9 * std::abs(f[f.size() - 1]) : 0.0;  // the grid's ends carry rounding
+    if (f.size() < 2 || fq < f[0] - slack || fq > f[f.size() - 1] + slack)
+      throw InputError(fmt::format("{}: frequency {:g} Hz lies outside the computed range [{:g}, {:g}] Hz of table '{}' (case {})", m.where(i), fq,
+                                   f.size() ? f[0] : NAN, f.size() ? f[f.size() - 1] : NAN, d.table, d.at.where()));
+    for (const char* q : {"amplitude", "phase"}) {
+      if (!d.columns.count(q)) continue;
+      const bool phase = std::string(q) == "phase";
+      const double measured = m.column(q)[i];
+      Eigen::VectorXd y = result_column(d, t, q);
+      if (phase)  // unwrap so the interpolation does not cross a 2 pi jump
+        for (Index r = 1; r < y.size(); ++r) y[r] = y[r - 1] + wrap_angle(y[r] - y[r - 1]);
+      const double sigma = sigma_of(m, q, i, phase ? d.phase_uncertainty : d.amplitude_uncertainty * measured);
+      points.push_back({d.name, fmt::format("{} at {:.6g} Hz", q, fq), q, fq, measured, interpolate(f, y, std::clamp(fq, f[0], f[f.size() - 1])),
+                        sigma, phase});
+    }
+  }
+  return points;
+}
+
+// One monotonic run of the computed loop, stored with increasing displacement.
+struct Branch {
+  Eigen::VectorXd u, force;
+  int direction = 0;  // +1 loading (u increasing in time), -1 unloading
+};
+
+std::vector<Branch> branches_of(const Eigen::VectorXd& u, const Eigen::VectorXd& force) {
+  std::vector<Branch> out;
+  Index begin = 0;
+  const auto close = [&](Index end) {
+    if (end - begin < 1) return;
+    const int dir = u[end] > u[begin] ? 1 : -1;
+    std::vector<std::pair<double, double>> pts;
+    for (Index k = begin; k <= end; ++k) pts.emplace_back(u[k], force[k]);
+    if (dir < 0) std::reverse(pts.begin(), pts.end());
+    Branch b;
+    b.direction = dir;
+    b.u.resize(static_cast<Index>(pts.size()));
+    b.force.resize(static_cast<Index>(pts.size()));
+    for (size_t k = 0; k < pts.size(); ++k) b.u[static_cast<Index>(k)] = pts[k].first, b.force[static_cast<Index>(k)] = pts[k].second;
+    out.push_back(std::move(b));
+    begin = end;
+  };
+  for (Index k = 1; k + 1 < u.size(); ++k)
+    if ((u[k] - u[k - 1]) * (u[k + 1] - u[k]) < 0) close(k);
+  close(u.size() - 1);
+  return out;
+}
+
+std::vector<FitPoint> hysteresis_points(const CalibrationData& d, const ResultTable& t) {
+  const MeasuredData& m = d.data;
+  const Eigen::VectorXd u = result_column(d, t, "relative_displacement");
+  const Eigen::VectorXd force = result_column(d, t, "tangential_force");
+  std::vector<Branch> branches = branches_of(u, force);
+  // Strictly increasing displacement inside each branch (a stuck or open stretch may repeat a value).
+  for (Branch& b : branches)
+    for (Index k = 1; k < b.u.size(); ++k) b.u[k] = std::max(b.u[k], std::nextafter(b.u[k - 1], INFINITY));
+  const Eigen::VectorXd& um = m.column("relative_displacement");
+  const Eigen::VectorXd& tm = m.column("tangential_force");
+  const double scale = tm.cwiseAbs().maxCoeff();
+  std::vector<FitPoint> points;
+  const Index n = m.rows();
+  for (Index i = 0; i < n; ++i) {
+    const double du = um[(i + 1) % n] - um[(i + n - 1) % n];  // the loop is periodic
+    const int dir = du >= 0 ? 1 : -1;
+    double computed = NAN, best_gap = INFINITY;
+    for (const Branch& b : branches) {
+      if (b.direction != dir || b.u.size() < 2) continue;
+      const double lo = b.u[0], hi = b.u[b.u.size() - 1];
+      const double gap = um[i] < lo ? lo - um[i] : um[i] > hi ? um[i] - hi : 0.0;
+      if (gap < best_gap) best_gap = gap, computed = interpolate(b.u, b.force, std::clamp(um[i], lo, hi));
+    }
+    if (!std::isfinite(computed))
+      throw InputError(fmt::format("{}: table '{}' has no loop branch moving {} to compare with (case {})", m.where(i), d.table,
+                                   dir > 0 ? "forward" : "backward", d.at.where()));
+    const double sigma = sigma_of(m, "force", i, d.force_uncertainty * scale);
+    points.push_back({d.name, fmt::format("force at {:.4g} m ({})", um[i], dir > 0 ? "loading" : "unloading"), "tangential_force", um[i], tm[i],
+                      computed, sigma, false});
+  }
+  return points;
+}
+
+}  // namespace
+
+double FitPoint::misfit() const { return angle ? wrap_angle(computed - measured) : computed - measured; }
+
+std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal) {
+  std::vector<FitPoint> points;
+  for (const CheckEntry& e : entries)
+    points.push_back({e.group, e.name, "check", static_cast<double>(e.key), e.reference, e.computed,
+                      uncertainty_of(cal, e.group) * std::abs(e.reference), false});
+  return points;
+}
+
+std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables) {
+  const ResultTable& t = table_of(d, tables);
+  switch (d.data.kind) {
+    case DataKind::peaks: return peak_points(d, t);
+    case DataKind::frf: return frf_points(d, t);
+    case DataKind::hysteresis: return hysteresis_points(d, t);
+  }
+  return {};
+}
+
+}  // namespace bb

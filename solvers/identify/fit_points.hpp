@@ -1,0 +1,43 @@
+// The points a calibration fits: each a measured value, the model's value at the same place and a
+// stated uncertainty. They come from the entries of fitted checks (a reference value per entry) and
+// from measured curves (identify/measured_data.hpp) matched to the case's result tables.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cases/calibration_spec.hpp"
+#include "checks/checks.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+struct FitPoint {
+  std::string set;        // check name or data-set name
+  std::string label;      // e.g. "frequency 172.4 Hz: amplitude"
+  std::string quantity;   // the fitted column of the data ("amplitude", "phase", ...), or "check"
+  double x = 0.0;         // abscissa in the data (frequency, force level, displacement), for plots
+  double measured = 0.0;  // SI
+  double computed = 0.0;  // SI
+  double sigma = 0.0;     // 1-sigma of measured, SI, > 0
+  bool angle = false;     // the misfit is wrapped into (-pi, pi]
+
+  double misfit() const;    // computed - measured (wrapped for angles)
+  double residual() const { return misfit() / sigma; }
+};
+
+// Entries of a fitted check: r = (computed / reference - 1) / sigma_rel.
+std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal);
+
+// The points of one measured curve against the case's result tables:
+//   peaks       per data row, the result row whose force column equals the row's force (to 1e-9
+//               relative); frequency and amplitude as mapped.
+//   frf         the mapped result columns interpolated linearly at each measured frequency (the
+//               computed frequencies must increase and cover the data's range).
+//   hysteresis  per measured point, the computed force on the branch of the loop that moves the
+//               same way (the direction from the neighbouring measured points), interpolated at
+//               the measured displacement; clamped to the branch's ends outside its range.
+// Throws InputError (naming the case's data block and the data row) when a table or column is
+// missing or the data lie outside the computed curve.
+std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables);
+
+}  // namespace bb

@@ -69,12 +69,13 @@ double lift_off_fraction_closed_form(const contact::JenkinsParameters& law, doub
 ContactLoopSummary summarise_loop(const contact::JenkinsParameters& law, double tangential_amplitude, const contact::AftResult& a) {
   ContactLoopSummary s;
   const Eigen::Index n = a.u.size();
-  // Loop area by the trapezoid rule in u over the closed sampled loop. T(u) of this law is piecewise
-  // linear in u (stick: slope kt; slip: mu N, linear in u when v is in phase with u), the samples are
-  // exact values of the continuous loop (each step is exact between samples where u is monotone),
-  // so the rule errs only in the intervals holding a stick/slip/lift-off corner: at most
-  // (slope jump) du^2 / 8 each, O(1 / n^2). cycle_work on the DFT coefficients would give this sum
-  // divided by sin(h) / h, h = 2 pi / n (summation by parts), i.e. the same order with a bias.
+  // Loop area by the trapezoid rule in u over the closed sampled loop: what a rig integrates from its
+  // samples. At constant N (and for in-phase u, v) T(u) is piecewise linear in u and the samples are
+  // exact values of the continuous loop (each step is exact where u is monotone between samples), so
+  // the rule errs only in the intervals holding a stick/slip/lift-off corner, by at most
+  // (slope jump) du^2 / 8 each: O(1 / n^2), a bound the verification cases use as tolerance.
+  // cycle_work on the DFT coefficients equals this sum divided by sin(h) / h, h = 2 pi / n
+  // (summation by parts): the same order, plus a bias of h^2 / 6 that has no such bound.
   for (Eigen::Index k = 0; k < n; ++k) {
     const Eigen::Index next = (k + 1) % n;
     s.dissipated_energy += 0.5 * (a.t[k] + a.t[next]) * (a.u[next] - a.u[k]);

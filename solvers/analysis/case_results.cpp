@@ -9,6 +9,9 @@ CaseResults compute_case_results(const CaseSpec& spec, const Model& model, const
   if (spec.analysis.type == AnalysisType::static_linear) {
     out.static_solution = solve_static(model);
     out.tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, out.static_solution->displacements));
+  } else if (spec.analysis.type == AnalysisType::contact_loop) {
+    out.contact_loop = run_contact_loop(spec.analysis.contact_loop);
+    out.tables = out.contact_loop->tables;
   } else if (spec.analysis.type == AnalysisType::time) {
     out.time = run_time(model, spec.analysis.time, progress);
     out.tables = out.time->tables;

@@ -2,6 +2,7 @@
 #pragma once
 #include <optional>
 
+#include "analysis/contact_loop_analysis.hpp"
 #include "analysis/frf_analysis.hpp"
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/time_analysis.hpp"
@@ -19,6 +20,7 @@ struct CaseResults {
   std::optional<FrfOutcome> frf;
   std::optional<HbmOutcome> hbm;
   std::optional<TimeOutcome> time;
+  std::optional<ContactLoopOutcome> contact_loop;
 };
 
 // `progress` receives the progress lines of long sweeps (none when empty).

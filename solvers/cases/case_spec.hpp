@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/contact_loop_spec.hpp"
 #include "analysis/frf_spec.hpp"
 #include "analysis/hbm_spec.hpp"
 #include "analysis/time_spec.hpp"
@@ -57,7 +58,7 @@ struct LoadSpec {
   SourceLocation at;
 };
 
-enum class AnalysisType { static_linear, modal, frf, hbm, time };
+enum class AnalysisType { static_linear, modal, frf, hbm, time, contact_loop };
 
 struct AnalysisSpec {
   AnalysisType type = AnalysisType::static_linear;
@@ -66,6 +67,7 @@ struct AnalysisSpec {
   FrfSpec frf;                        // frf: linear forced response
   HbmSpec hbm;                        // hbm: nonlinear forced response (harmonic balance)
   TimeSpec time;                      // time: forced response by time integration (stepped sine)
+  ContactLoopSpec contact_loop;       // contact_loop: one contact under imposed relative motion (test rig)
   std::optional<ModePairSpec> pairs;  // modal, frf: in-phase / out-of-phase and type of each mode
   SourceLocation pairs_at;
 };

@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include "cases/case_spec.hpp"
+#include "cases/parse_contact_loop.hpp"
 #include "cases/parse_frf.hpp"
 #include "cases/parse_hbm.hpp"
 #include "cases/parse_time.hpp"
@@ -236,7 +237,11 @@ LoadSpec parse_load(TomlReader r) {
 
 AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
   AnalysisSpec a;
-  const std::string type = r.choice("type", {"static", "modal", "frf", "hbm", "time"});
+  const std::string type = r.choice("type", {"static", "modal", "frf", "hbm", "time", "contact_loop"});
+  if (type == "contact_loop") {
+    a.type = AnalysisType::contact_loop;
+    a.contact_loop = parse_contact_loop(r);
+  }
   if (type == "time") {
     a.type = AnalysisType::time;
     a.time = parse_time(r, folder);
@@ -266,7 +271,9 @@ AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
     a.modal.tolerance = r.optional_number("tolerance").value_or(a.modal.tolerance);
   }
   if (const toml::table* pairs = r.optional_table("pairs")) {
-    if (a.type == AnalysisType::static_linear || a.type == AnalysisType::hbm || a.type == AnalysisType::time) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
+    if (a.type == AnalysisType::static_linear || a.type == AnalysisType::hbm || a.type == AnalysisType::time ||
+        a.type == AnalysisType::contact_loop)
+      r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
     TomlReader p(*pairs, r.path() + ".pairs", r.file());
     a.pairs_at = p.location();
     ModePairSpec& spec = a.pairs.emplace();
@@ -540,7 +547,11 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
                               std::all_of(frf.roms.begin(), frf.roms.end(), [](const RomSpec& r) { return r.masters.empty(); })) ||
                              (spec.analysis.type == AnalysisType::hbm && spec.analysis.hbm.model.masters.empty()) ||
                              (spec.analysis.type == AnalysisType::time && spec.analysis.time.system.model.masters.empty());
-  if (matrices_only && !top.has("mesh")) {
+  if (spec.analysis.type == AnalysisType::contact_loop) {
+    for (const char* key : {"material", "mesh", "section", "sets", "bc", "load"})
+      if (top.has(key)) top.fail(key, "a contact_loop analysis drives one contact by an imposed motion: it takes no model data");
+    spec.mesh.kind = MeshSpec::Kind::none;
+  } else if (matrices_only && !top.has("mesh")) {
     for (const char* key : {"material", "section", "sets", "bc", "load"})
       if (top.has(key)) top.fail(key, "the model is given by matrices only (a reduced model from a file or written in the case): it takes no mesh data");
     spec.mesh.kind = MeshSpec::Kind::none;

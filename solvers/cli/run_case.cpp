@@ -16,6 +16,7 @@
 #include "cases/calibration_spec.hpp"
 #include "common/errors.hpp"
 #include "reduction/reduced_model_io.hpp"
+#include "report/contact_loop_plots.hpp"
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
 #include "report/time_plots.hpp"
@@ -50,7 +51,9 @@ void describe_model(const CaseSpec& spec, const Model& model, RunRecord& run) {
       break;
     case MeshSpec::Kind::gmsh: source = fmt::format("Gmsh {}", spec.mesh.gmsh_file.filename().string()); break;
     case MeshSpec::Kind::none:
-      run.facts.emplace_back("model", "no mesh: reduced or lumped models given by their matrices");
+      run.facts.emplace_back("model", spec.analysis.type == AnalysisType::contact_loop
+                                          ? "none: one contact driven by an imposed relative motion (test rig)"
+                                          : "no mesh: reduced or lumped models given by their matrices");
       return;
     case MeshSpec::Kind::two_blade: {
       const TwoBladeDimensions& d = spec.mesh.two_blade;
@@ -184,6 +187,19 @@ void describe_time(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run
                                                        spec.history_cycles, time.record->history.converged ? "" : ": " + time.record->history.failure));
 }
 
+void describe_contact_loop(const ContactLoopSpec& spec, const ContactLoopOutcome& loop, RunRecord& run) {
+  const contact::JenkinsParameters& p = spec.law;
+  run.facts.emplace_back("analysis", fmt::format("friction-contact test rig: one Jenkins contact under u = {} cos(theta) m, "
+                                                 "v = {} cos(theta + {} deg) m (v > 0 presses), {} samples per period, "
+                                                 "AFT march to the periodic steady state",
+                                                 g(spec.tangential_amplitude), g(spec.normal_amplitude), g(spec.normal_phase_deg), spec.samples));
+  run.facts.emplace_back("contact", fmt::format("kn {} N/m, kt {} N/m, mu {}, n0 {} N: slip force mu n0 = {} N, slip displacement "
+                                                "mu n0 / kt = {} m",
+                                                g(p.kn), g(p.kt), g(p.mu), g(p.n0), g(p.mu * p.n0), g(p.mu * p.n0 / p.kt)));
+  run.facts.emplace_back("periods marched / loop closed", fmt::format("{} / {} (slider mismatch {:.3g} m)", loop.aft.periods,
+                                                                      loop.aft.closed ? "yes" : "NO", loop.aft.closure_mismatch));
+}
+
 void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
   // Long sweeps report progress on a terminal only (one line, rewritten in place).
   HbmProgress progress;
@@ -205,6 +221,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     describe_frf(spec.analysis.frf, *results.frf, run);
   } else if (results.hbm) {
     describe_hbm(spec.analysis.hbm, *results.hbm, run);
+  } else if (results.contact_loop) {
+    describe_contact_loop(spec.analysis.contact_loop, *results.contact_loop, run);
   } else if (results.time) {
     describe_time(spec.analysis.time, *results.time, run);
   } else {
@@ -264,6 +282,7 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
       for (const std::string& o : outputs) run.plots.push_back(plot_frf(*results.frf, o, out, "frf_" + o));
       if (!results.frf->level_forces.empty()) run.plots.push_back(plot_force_levels(*results.frf, out, "force_levels"));
     }
+    if (results.contact_loop) run.plots.push_back(plot_contact_loop(*results.contact_loop, out, "hysteresis"));
     if (results.time) {
       const TimeOutcome& t = *results.time;
       for (size_t r = 0; r < t.prepared.response_names.size(); ++r)

@@ -1,0 +1,20 @@
+// What a contact_loop analysis computes: the friction-contact test rig. One Jenkins point contact
+// (contact/jenkins_contact.hpp) driven by an imposed periodic relative motion
+//   u(theta) = U cos(theta),  v(theta) = V cos(theta + phi)   (v > 0 presses),
+// and its steady hysteresis loop T(u). Units: SI, phase in degrees.
+#pragma once
+#include "common/source_location.hpp"
+#include "contact/jenkins_contact.hpp"
+
+namespace bb {
+
+struct ContactLoopSpec {
+  contact::JenkinsParameters law;   // kn, kt, mu, n0, validated by the parser
+  double tangential_amplitude = 0;  // U [m], > 0
+  double normal_amplitude = 0;      // V [m], >= 0; 0 keeps N = n0
+  double normal_phase_deg = 0;      // phi [deg]
+  int samples = 256;                // per period, >= 16
+  SourceLocation at;
+};
+
+}  // namespace bb

@@ -82,7 +82,9 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
   const std::string y_label = quantity == "phase" ? "phase [deg]" : quantity == "frequency" ? "frequency [Hz]"
                               : quantity == "tangential_force" ? "tangential force [N]"
                               : y_dim == Dimension::compliance ? "amplitude per newton [m/N]" : "amplitude [m]";
-  const std::string title = fmt::format("{}: {} measured (points, 1 sigma) and computed", d.name, quantity);
+  std::string shown = quantity;
+  std::replace(shown.begin(), shown.end(), '_', ' ');  // gnuplot would subscript after _
+  const std::string title = fmt::format("{}: {} measured (points, 1 sigma) and computed", d.name, shown);
   std::string script = fmt::format("set title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\nset datafile missing 'nan'\n",
                                    gnuplot_quote(title), x_label, y_label);
   if (!curve) script += "set logscale x\n";  // force levels span decades

@@ -64,7 +64,8 @@ void write_synthetic_data(const ResultTable& table, const SyntheticOptions& o, c
     if (name == "amplitude" || name == "tangential_force")
       for (Index i : outliers) v[i] *= o.outlier_factor;
     sigma_columns.push_back(sigma);
-    sigma_header.push_back(fmt::format("{}_sigma [{}]", name, o.columns[k].unit));
+    // The loop's sigma column is force_sigma (measured_data.hpp).
+    sigma_header.push_back(fmt::format("{}_sigma [{}]", name == "tangential_force" ? "force" : name, o.columns[k].unit));
   }
   std::ofstream out(file);
   if (!out) throw InputError(fmt::format("{}: cannot write", file.string()));

@@ -11,15 +11,23 @@
 //   iterations             Newton iterations of the timed solve (BM_HbmNewtonSolve)
 //   points, corrector_its  accepted points and total corrector iterations of the sweep
 //   unknowns               size of the condensed nonlinear system, 7 (2H + 1)
+//   resolves, newton_its   re-solves and their Newton iterations per central-difference set
+// BM_HbmSensitivityAnalytic and BM_HbmSensitivityCentralDifference price the same four derivatives
+// (kn, kt, mu, N0 of the shared law) of one solution: the implicit function theorem (one
+// factorization of J, one AFT per contact with law derivatives) against 8 warm-started re-solves;
+// their time ratio is the speed-up of hbm/sensitivity.hpp.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "../tests/extremes/hbm_models.hpp"
 #include "contact/aft.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/sensitivity.hpp"
 
 namespace {
 
@@ -89,5 +97,66 @@ void BM_HbmContinuationSweep(benchmark::State& state) {
   state.counters["unknowns"] = static_cast<double>(system.unknowns());
 }
 BENCHMARK(BM_HbmContinuationSweep)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
+
+// The stick-slip point of BM_HbmNewtonSolve, 2 % below the stuck resonance.
+std::optional<bb::hbm::HbmSolution> sensitivity_point(const HarmonicBalance& system, benchmark::State& state) {
+  const double omega = 0.98 * bb::hbm::models::stuck_resonance(system.model(), 0);
+  bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(system, omega);
+  if (!s.converged) {
+    state.SkipWithError(("base solve did not converge: " + s.failure).c_str());
+    return std::nullopt;
+  }
+  return s;
+}
+
+void BM_HbmSensitivityAnalytic(benchmark::State& state) {
+  const HarmonicBalance system = planar_system(static_cast<int>(state.range(0)));
+  const auto base = sensitivity_point(system, state);
+  if (!base) return;
+  std::vector<bb::hbm::ModelDerivative> d;
+  for (const auto p : {bb::contact::law_kn, bb::contact::law_kt, bb::contact::law_mu, bb::contact::law_n0})
+    d.push_back(bb::hbm::law_derivative(system.model(), p));
+  for (auto _ : state) benchmark::DoNotOptimize(bb::hbm::solution_sensitivity(system, *base, d));
+  state.counters["unknowns"] = static_cast<double>(system.unknowns());
+}
+BENCHMARK(BM_HbmSensitivityAnalytic)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
+
+// Relative step 1e-6 on each law parameter, re-solved from the base solution; a HarmonicBalance
+// per perturbed model, as a caller of the solver would have to build.
+void BM_HbmSensitivityCentralDifference(benchmark::State& state) {
+  const int harmonics = static_cast<int>(state.range(0));
+  const HarmonicBalance system = planar_system(harmonics);
+  const auto base = sensitivity_point(system, state);
+  if (!base) return;
+  int iterations = 0;
+  for (auto _ : state) {
+    iterations = 0;
+    Eigen::MatrixXd dx(system.unknowns(), 4);
+    for (int p = 0; p < 4; ++p) {
+      std::array<Eigen::VectorXd, 2> x;
+      for (int side = 0; side < 2; ++side) {
+        bb::hbm::HbmModel m = system.model();
+        for (bb::hbm::ContactElement& c : m.contacts) {
+          double* field = p == 0 ? &c.law.kn : p == 1 ? &c.law.kt : p == 2 ? &c.law.mu : &c.law.n0;
+          *field *= side == 0 ? 1.0 + 1e-6 : 1.0 - 1e-6;
+        }
+        const HarmonicBalance perturbed(std::move(m), system.options());
+        const bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(perturbed, base->omega, base->x);
+        if (!s.converged) {
+          state.SkipWithError(("re-solve did not converge: " + s.failure).c_str());
+          return;
+        }
+        iterations += s.iterations;
+        x[static_cast<size_t>(side)] = s.x;
+      }
+      dx.col(p) = (x[0] - x[1]) / 2e-6;
+    }
+    benchmark::DoNotOptimize(dx);
+  }
+  state.counters["resolves"] = 8;
+  state.counters["newton_its"] = iterations;
+  state.counters["unknowns"] = static_cast<double>(system.unknowns());
+}
+BENCHMARK(BM_HbmSensitivityCentralDifference)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
 
 }  // namespace

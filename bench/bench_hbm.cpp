@@ -11,15 +11,23 @@
 //   iterations             Newton iterations of the timed solve (BM_HbmNewtonSolve)
 //   points, corrector_its  accepted points and total corrector iterations of the sweep
 //   unknowns               size of the condensed nonlinear system, 7 (2H + 1)
+//   resolves, newton_its   re-solves and their Newton iterations per central-difference set
+// BM_HbmSensitivityAnalytic and BM_HbmSensitivityCentralDifference price the same four derivatives
+// (kn, kt, mu, N0 of the shared law) of one solution: the implicit function theorem (one
+// factorization of J, one AFT per contact with law derivatives) against 8 warm-started re-solves;
+// their time ratio is the speed-up of hbm/sensitivity.hpp.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "../tests/extremes/hbm_models.hpp"
 #include "contact/aft.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/sensitivity.hpp"
 
 namespace {
 
@@ -89,5 +97,89 @@ void BM_HbmContinuationSweep(benchmark::State& state) {
   state.counters["unknowns"] = static_cast<double>(system.unknowns());
 }
 BENCHMARK(BM_HbmContinuationSweep)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
+
+// The planar model at Fe = 200 N with the sliders resting at the frictionless static seat (as
+// analysis/hbm_analysis does), 10 % below the stuck resonance, where a good part of the samples
+// slip and none opens (counter slip; tests/unit/hbm_sensitivity_test.cpp checks this point with
+// N0 = 0 against differences). N0 = 10 N on top of CF so that its difference costs re-solves too.
+HarmonicBalance sensitivity_system(int harmonics) {
+  bb::hbm::HbmModel m =
+      bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0}, 200.0, 1e-2);
+  Eigen::MatrixXd k = m.stiffness;
+  for (const bb::hbm::ContactElement& c : m.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
+  const Eigen::VectorXd seat = k.fullPivLu().solve(m.static_load);
+  for (bb::hbm::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(seat);
+  return HarmonicBalance(std::move(m), {.harmonics = harmonics, .tolerance = 1e-12});
+}
+
+// Counter slip = fraction of slipping samples over all contacts.
+std::optional<bb::hbm::HbmSolution> sensitivity_point(const HarmonicBalance& system, benchmark::State& state) {
+  const double omega = 0.9 * bb::hbm::models::stuck_resonance(system.model(), 0);
+  bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(system, omega);
+  if (!s.converged) {
+    state.SkipWithError(("base solve did not converge: " + s.failure).c_str());
+    return std::nullopt;
+  }
+  double slip = 0.0, samples = 0.0;
+  for (const bb::contact::AftResult& r : s.contacts)
+    for (const bb::contact::ContactState c : r.state) {
+      samples += 1.0;
+      if (c == bb::contact::ContactState::slip_positive || c == bb::contact::ContactState::slip_negative) slip += 1.0;
+    }
+  state.counters["slip"] = slip / samples;
+  return s;
+}
+
+void BM_HbmSensitivityAnalytic(benchmark::State& state) {
+  const HarmonicBalance system = sensitivity_system(static_cast<int>(state.range(0)));
+  const auto base = sensitivity_point(system, state);
+  if (!base) return;
+  std::vector<bb::hbm::ModelDerivative> d;
+  for (const auto p : {bb::contact::law_kn, bb::contact::law_kt, bb::contact::law_mu, bb::contact::law_n0})
+    d.push_back(bb::hbm::law_derivative(system.model(), p));
+  for (auto _ : state) benchmark::DoNotOptimize(bb::hbm::solution_sensitivity(system, *base, d));
+  state.counters["unknowns"] = static_cast<double>(system.unknowns());
+}
+BENCHMARK(BM_HbmSensitivityAnalytic)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
+
+// Relative step 1e-6 on each law parameter, re-solved from the base solution; a HarmonicBalance
+// per perturbed model, as a caller of the solver would have to build. Tolerance 1e-12 (that of
+// tests/unit/hbm_sensitivity_test.cpp): at the default 1e-9 a 1e-6 step changes R by less than the
+// target, the warm start is accepted as it is and most differences come out exactly zero.
+void BM_HbmSensitivityCentralDifference(benchmark::State& state) {
+  const int harmonics = static_cast<int>(state.range(0));
+  const HarmonicBalance system = sensitivity_system(harmonics);
+  const auto base = sensitivity_point(system, state);
+  if (!base) return;
+  int iterations = 0;
+  for (auto _ : state) {
+    iterations = 0;
+    Eigen::MatrixXd dx(system.unknowns(), 4);
+    for (int p = 0; p < 4; ++p) {
+      std::array<Eigen::VectorXd, 2> x;
+      for (int side = 0; side < 2; ++side) {
+        bb::hbm::HbmModel m = system.model();
+        for (bb::hbm::ContactElement& c : m.contacts) {
+          double* field = p == 0 ? &c.law.kn : p == 1 ? &c.law.kt : p == 2 ? &c.law.mu : &c.law.n0;
+          *field *= side == 0 ? 1.0 + 1e-6 : 1.0 - 1e-6;
+        }
+        const HarmonicBalance perturbed(std::move(m), system.options());
+        const bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(perturbed, base->omega, base->x);
+        if (!s.converged) {
+          state.SkipWithError(("re-solve did not converge: " + s.failure).c_str());
+          return;
+        }
+        iterations += s.iterations;
+        x[static_cast<size_t>(side)] = s.x;
+      }
+      dx.col(p) = (x[0] - x[1]) / 2e-6;
+    }
+    benchmark::DoNotOptimize(dx);
+  }
+  state.counters["resolves"] = 8;
+  state.counters["newton_its"] = iterations;
+  state.counters["unknowns"] = static_cast<double>(system.unknowns());
+}
+BENCHMARK(BM_HbmSensitivityCentralDifference)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
 
 }  // namespace

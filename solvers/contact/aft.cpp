@@ -79,6 +79,15 @@ Eigen::MatrixXd analysis_matrix(int harmonics, int samples) {
 // piecewise-linear map and hold as long as no sample changes state; a perturbation that moves a
 // stick/slip switch by one sample changes the map by O(1 / n_t), which is the non-smoothness of
 // dry friction, not an error.
+//
+// The law derivatives (options.law_derivatives) follow the same chain with the parameter vector
+// p = (kn, kt, mu, n0) in place of [u; v], the slider's dw/dp carried likewise (w_{k-1} the slider
+// before the step):
+//   N > 0:     dN = v_k dkn + dn0
+//   lift-off:  dT = 0,                                        dw_k/dp = 0
+//   stick:     dT = (u_k - w_{k-1}) dkt - kt dw_{k-1},        dw_k = dw_{k-1}
+//   slip:      dT = s (N dmu + mu dN),                        dw_k = -dT / kt + T / kt^2 dkt
+// so a contact stuck throughout has dT/dmu = 0 exactly and a frictionless one dT/dkt = 0.
 AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const AftOptions& options) {
   validate(p);
@@ -122,6 +131,10 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
   Eigen::MatrixXd dn_rows = Eigen::MatrixXd::Zero(n, 2 * m);
   Eigen::RowVectorXd dw = Eigen::RowVectorXd::Zero(2 * m);
   Eigen::RowVectorXd dn(2 * m);
+  const bool with_law = options.law_derivatives;
+  Eigen::Matrix<double, Eigen::Dynamic, 4> dt_law, dn_law;
+  if (with_law) dt_law = dn_law = Eigen::Matrix<double, Eigen::Dynamic, 4>::Zero(n, 4);
+  Eigen::RowVector4d dw_law = Eigen::RowVector4d::Zero(), dn_p = Eigen::RowVector4d::Zero();
 
   double slider = options.initial_slider;
   const double scale =
@@ -130,6 +143,30 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
     const double start = slider;
     for (int k = 0; k < n; ++k) {
       const JenkinsStep s = jenkins_step(p, slider, r.u[k], r.v[k]);
+      if (with_law) {
+        dn_p.setZero();
+        if (s.normal > 0.0) dn_p << r.v[k], 0.0, 0.0, 1.0;
+        dn_law.row(k) = dn_p;
+        switch (s.state) {
+          case ContactState::lift_off:
+            dt_law.row(k).setZero();
+            dw_law.setZero();
+            break;
+          case ContactState::stick:
+            dt_law.row(k) = -p.kt * dw_law;
+            dt_law(k, law_kt) += r.u[k] - slider;
+            break;
+          case ContactState::slip_positive:
+          case ContactState::slip_negative: {
+            const double sign = s.state == ContactState::slip_positive ? 1.0 : -1.0;
+            dt_law.row(k) = sign * p.mu * dn_p;
+            dt_law(k, law_mu) += sign * s.normal;
+            dw_law = -dt_law.row(k) / p.kt;
+            dw_law[law_kt] += s.tangential / (p.kt * p.kt);
+            break;
+          }
+        }
+      }
       slider = s.slider;
       r.t[k] = s.tangential;
       r.n[k] = s.normal;
@@ -173,6 +210,10 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
   r.dtangential_du = dt.leftCols(m);
   r.dtangential_dv = dt.rightCols(m);
   r.dnormal_dv = (analysis * dn_rows).rightCols(m);
+  if (with_law) {
+    r.dtangential_dlaw = analysis * dt_law;
+    r.dnormal_dlaw = analysis * dn_law;
+  }
   return r;
 }
 

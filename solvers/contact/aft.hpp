@@ -48,7 +48,13 @@ struct AftOptions {
   // carries whatever tangential force it was closed with. 0 means the contact closed with zero
   // tangential force at u = 0, so a stuck contact is the linear spring T = kt u.
   double initial_slider = 0.0;
+  // Also compute AftResult::dtangential_dlaw and dnormal_dlaw (sensitivity analysis, hbm/
+  // sensitivity.hpp). Off by default: the Newton solves do not need them.
+  bool law_derivatives = false;
 };
+
+// Column order of the law-parameter derivatives in AftResult.
+enum LawParameter : Eigen::Index { law_kn = 0, law_kt = 1, law_mu = 2, law_n0 = 3 };
 
 struct AftResult {
   Eigen::VectorXd tangential;  // T coefficients [N], 2H + 1
@@ -57,6 +63,10 @@ struct AftResult {
   // each [N/m]; dN/du is zero. Exact for the discrete march, valid while no sample changes state:
   // see aft.cpp for the chain rule through the slider history.
   Eigen::MatrixXd dtangential_du, dtangential_dv, dnormal_dv;
+  // Derivatives of the same coefficients with respect to the law parameters at fixed (u, v),
+  // (2H+1) x 4, columns (kn, kt, mu, n0) as LawParameter; empty unless options.law_derivatives.
+  // Exact for the discrete march under the same condition (no sample changes state).
+  Eigen::MatrixXd dtangential_dlaw, dnormal_dlaw;
 
   // The last marched period at the samples theta_k: displacements, forces, slider after each
   // sample and the state of Table X at each sample.

@@ -82,6 +82,8 @@ class HarmonicBalance {
   const std::vector<Eigen::Index>& contact_dofs() const { return contact_dofs_; }
   Eigen::Index unknowns() const;  // |c| (2H + 1)
   double force_scale() const { return force_scale_; }
+  // The AFT options every contact evaluation uses (samples resolved from options().aft).
+  const contact::AftOptions& aft_options() const { return aft_; }
 
   // Condensed linear operator L(omega) (real layout, block-diagonal per harmonic) and load b(omega),
   // so that R(x, omega) = L x + g(x) - b. Returns false when some D_h,oo is singular.

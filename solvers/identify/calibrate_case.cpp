@@ -200,14 +200,24 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
   out.final_cost = chosen.final_cost;
   out.converged = chosen.converged;
   if (!out.converged) out.warnings.push_back("the fit did not converge: " + message);
+  // Birge ratio: when the fit is worse than the stated uncertainties allow (reduced chi-square
+  // above 1, e.g. outliers or an imperfect model), the covariance is scaled up by it.
+  const double dof = static_cast<double>(out.before.size()) - static_cast<double>(n);
+  out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
+  // Another start's minimum counts as "as good" when it lies inside the 95 % joint confidence
+  // region of the best one: delta chi-square (scaled like the covariance) below the chi-square
+  // quantile for n parameters.
+  const double chi2_95[] = {3.84, 5.99, 7.81, 9.49, 11.07, 12.59, 14.07, 15.51, 16.92, 18.31};
+  const double quantile = n <= 10 ? chi2_95[n - 1] : static_cast<double>(n) + 2.0 * std::sqrt(2.0 * static_cast<double>(n));
+  const double scale = std::isfinite(out.reduced_chi_square) ? std::max(1.0, out.reduced_chi_square) : 1.0;
   if (starts.size() > 1)
     for (size_t s = 0; s < out.starts.size(); ++s)
-      if (s != out.best && out.starts[s].converged && out.starts[s].final_cost < 1.5 * chosen.final_cost + 1e-12) {
+      if (s != out.best && out.starts[s].converged && 2.0 * (out.starts[s].final_cost - chosen.final_cost) / scale < quantile) {
         bool same = true;
         for (size_t i = 0; i < n; ++i) same = same && std::abs(std::log(out.starts[s].values[i] / chosen.values[i])) < 0.05;
         if (!same)
-          out.warnings.push_back(fmt::format("start {} reaches nearly the same cost ({:.6g}) at other values: the minimum is not unique",
-                                             s + 1, out.starts[s].final_cost));
+          out.warnings.push_back(fmt::format("start {} reaches a cost ({:.6g}) within the 95 % confidence region of the best ({:.6g}) at other "
+                                             "values: the minimum is not unique", s + 1, out.starts[s].final_cost, chosen.final_cost));
       }
   ceres::Problem problem;
   build(x, problem);  // at the chosen optimum, for the covariance
@@ -223,10 +233,6 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
     Eigen::MatrixXd c(n, n);
     covariance.GetCovarianceBlock(x.data(), x.data(), c.data());
     out.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    // Birge ratio: when the fit is worse than the stated uncertainties allow (reduced chi-square
-    // above 1, e.g. outliers or an imperfect model), the covariance is scaled up by it.
-    const double dof = static_cast<double>(out.before.size()) - static_cast<double>(n);
-    out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
     if (out.reduced_chi_square > 1.0) c *= out.reduced_chi_square;
     for (size_t i = 0; i < n; ++i) {
       const auto ii = static_cast<Eigen::Index>(i);

@@ -160,7 +160,7 @@ double FitPoint::misfit() const { return angle ? wrap_angle(computed - measured)
 std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal) {
   std::vector<FitPoint> points;
   for (const CheckEntry& e : entries)
-    points.push_back({e.group, e.name, "check", static_cast<double>(e.key), e.reference, e.computed,
+    points.push_back({e.group, e.name.substr(std::min(e.name.size(), e.group.size() + 2)), "check", static_cast<double>(e.key), e.reference, e.computed,
                       uncertainty_of(cal, e.group) * std::abs(e.reference), false});
   return points;
 }

@@ -90,6 +90,7 @@ parameters = [{ path = "analysis.damper.kt", lower = 1.0e6, upper = 1.0e10 },
               { path = "analysis.damper.mu", lower = 0.05, upper = 2.0 }]
 loss = "huber"
 loss_scale = 2.0
+starts = 3
 max_iterations = 30
 function_tolerance = 1e-5
 derivative_step = 1e-2

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 
 #include "cases/case_spec.hpp"
@@ -39,6 +40,19 @@ void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
 }
 
 int worst(int a, int b) { return std::max(a, b); }
+
+// A subcommand's body: bad input -> exit 2, any other failure -> exit 3, the message on stderr.
+int guarded(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const bb::InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return bb::exit_bad_input;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return bb::exit_solver_failed;
+  }
+}
 
 // Files under a "data" folder are inputs of cases (CSV meshes, reduced-model sidecars), not cases.
 bool in_data_folder(const std::filesystem::path& file, const std::filesystem::path& root) {
@@ -116,7 +130,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     const fs::path out = calibrate_out.empty() ? fs::path("reports") / (fs::path(calibrate_case_file).stem().string() + "-calibration")
                                                : fs::path(calibrate_out);
-    try {
+    return guarded([&] {
       const bb::CalibrationOutcome o = bb::calibrate_case(calibrate_case_file, true);
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       bb::write_calibration_outputs(o, calibrate_case_file, wall, out, !calibrate_no_plots);
@@ -133,17 +147,11 @@ int main(int argc, char** argv) {
                        e.computed, e.reference, e.abs_error, e.tolerance);
       if (!o.converged) return bb::exit_solver_failed;
       return o.cross_check_passed() ? bb::exit_pass : bb::exit_check_failed;
-    } catch (const bb::InputError& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return bb::exit_bad_input;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return bb::exit_solver_failed;
-    }
+    });
   }
 
   if (*synthesize) {
-    try {
+    return guarded([&] {
       synth.kind = synth_kind == "peaks" ? bb::DataKind::peaks : synth_kind == "frf" ? bb::DataKind::frf : bb::DataKind::hysteresis;
       synth.phase_noise = synth_phase_deg * 3.14159265358979323846 / 180.0;
       for (const std::string& c : synth_columns) {
@@ -162,13 +170,7 @@ int main(int argc, char** argv) {
       bb::write_synthetic_data(t->second, synth, synth_out);
       std::fprintf(stderr, "%s: table %s -> %s\n", synth_case_file.c_str(), synth_table.c_str(), synth_out.c_str());
       return bb::exit_pass;
-    } catch (const bb::InputError& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return bb::exit_bad_input;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return bb::exit_solver_failed;
-    }
+    });
   }
 
   if (*export_ccx) {

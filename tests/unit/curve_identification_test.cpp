@@ -16,6 +16,7 @@
 #include "identify/calibrate_case.hpp"
 #include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
+#include "oscillator_case.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -108,31 +109,15 @@ TEST_F(CurveIdentification, PeaksAreMatchedByForceLevel) {
 }
 
 std::string oscillator(double kt, double mu, double zeta, const std::string& data) {
-  return R"([case]
-name = "frf_identification"
-[analysis]
-type = "hbm"
-frequency_hz = [150.0, 240.0]
-step_hz = 0.5
-harmonics = 1
-time_samples = 128
-modal_damping = )" + std::to_string(zeta) + R"(
-forces = [{ dof = "A.x", amplitude = 1.0 }]
-force_levels = [0.3, 10.0]
-responses = ["A.x"]
-[analysis.model]
-name = "oscillator"
-dofs = ["A.x"]
-stiffness = [[1.0e6]]
-mass = [[1.0]]
-[[analysis.contact]]
-name = "ground"
-tangential = { "A.x" = 1.0 }
-kn = 1.0e6
-kt = )" + std::to_string(kt) + R"(
-mu = )" + std::to_string(mu) + R"(
-n0 = 30.0
-)" + data;
+  test::OscillatorCase c;
+  c.kt = std::to_string(kt);
+  c.mu = std::to_string(mu);
+  c.zeta = std::to_string(zeta);
+  c.levels = "[0.3, 10.0]";
+  c.range = "[150.0, 240.0]";
+  c.step = "0.5";
+  c.extra = data;
+  return test::oscillator_case_text(c);
 }
 
 class FrfRoundTrip : public CurveIdentification, public ::testing::WithParamInterface<unsigned> {};

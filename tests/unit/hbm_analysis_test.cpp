@@ -12,6 +12,7 @@
 #include "analysis/hbm_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
+#include "oscillator_case.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -22,33 +23,12 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 // m = 1 kg, k = 1e6 N/m, zeta = 0.01 (c = 20 N s/m); a Jenkins contact to the ground with
 // kt = 1e6 N/m and constant normal load n0 = 30 N; mu and the force levels are filled in.
 std::string oscillator_case(const std::string& mu, const std::string& levels, const std::string& range = "[130.0, 260.0]") {
-  return R"(
-[case]
-name = "oscillator"
-[analysis]
-type = "hbm"
-frequency_hz = )" + range + R"(
-step_hz = 0.2
-harmonics = 1
-time_samples = 128
-tolerance = 1e-12
-modal_damping = 0.01
-forces = [{ dof = "A.x", amplitude = 1.0 }]
-force_levels = )" + levels + R"(
-responses = ["A.x"]
-[analysis.model]
-name = "oscillator"
-dofs = ["A.x"]
-stiffness = [[1.0e6]]
-mass = [[1.0]]
-[[analysis.contact]]
-name = "ground"
-tangential = { "A.x" = 1.0 }
-kn = 1.0e6
-kt = 1.0e6
-mu = )" + mu + R"(
-n0 = 30.0
-)";
+  test::OscillatorCase c;
+  c.mu = mu;
+  c.levels = levels;
+  c.range = range;
+  c.tolerance = "1e-12";
+  return test::oscillator_case_text(c);
 }
 
 // Two 1 kg blades, each grounded by k = 1e6 N/m, coupled by kc = 1e5 N/m and by a contact on

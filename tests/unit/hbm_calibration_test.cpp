@@ -16,6 +16,7 @@
 
 #include "analysis/case_results.hpp"
 #include "identify/calibrate_case.hpp"
+#include "oscillator_case.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -24,31 +25,14 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string oscillator_case(double kt, double mu) {
-  return R"([case]
-name = "friction_identification"
-[analysis]
-type = "hbm"
-frequency_hz = [150.0, 240.0]
-step_hz = 1.0
-harmonics = 1
-time_samples = 256
-modal_damping = 0.01
-forces = [{ dof = "A.x", amplitude = 1.0 }]
-force_levels = [0.3, 3.0, 10.0, 20.0, 40.0, 100.0]
-responses = ["A.x"]
-[analysis.model]
-name = "oscillator"
-dofs = ["A.x"]
-stiffness = [[1.0e6]]
-mass = [[1.0]]
-[[analysis.contact]]
-name = "ground"
-tangential = { "A.x" = 1.0 }
-kn = 1.0e6
-kt = )" + std::to_string(kt) + R"(
-mu = )" + std::to_string(mu) + R"(
-n0 = 30.0
-[[check]]
+  test::OscillatorCase c;
+  c.kt = std::to_string(kt);
+  c.mu = std::to_string(mu);
+  c.levels = "[0.3, 3.0, 10.0, 20.0, 40.0, 100.0]";
+  c.range = "[150.0, 240.0]";
+  c.step = "1.0";
+  c.samples = "256";
+  c.extra = R"([[check]]
 name = "frequencies"
 result = "peaks"
 reference = "peaks.csv"
@@ -75,6 +59,7 @@ max_iterations = 30
 function_tolerance = 1e-4
 derivative_step = 1e-2
 )";
+  return test::oscillator_case_text(c);
 }
 
 class HbmCalibration : public test::TempFolderTest {};

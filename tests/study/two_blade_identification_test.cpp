@@ -30,7 +30,7 @@ type = "hbm"
 frequency_hz = [172.0, 182.0]
 step_hz = 0.05
 harmonics = 1
-time_samples = 64
+time_samples = 256
 modal_damping = 0.01
 forces = [{ dof = "F.x", amplitude = 1.0 }]
 force_levels = [300.0, 150.0, 100.0, 30.0, 5.0]
@@ -90,7 +90,6 @@ parameters = [{ path = "analysis.damper.kt", lower = 1.0e6, upper = 1.0e10 },
               { path = "analysis.damper.mu", lower = 0.05, upper = 2.0 }]
 loss = "huber"
 loss_scale = 2.0
-starts = 3
 max_iterations = 30
 function_tolerance = 1e-5
 derivative_step = 1e-2

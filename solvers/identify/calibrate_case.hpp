@@ -36,7 +36,8 @@ struct CalibrationOutcome {
   std::vector<std::pair<int, double>> history;  // (iteration, cost)
   double initial_cost = 0.0;
   double final_cost = 0.0;
-  int residual_evaluations = 0;
+  int residual_evaluations = 0;         // model runs (a central-difference Jacobian costs 2 n of them)
+  std::string derivatives;              // how the Jacobian was computed ("analytic ..." or "central differences ...")
   bool converged = false;
   std::string termination;              // Ceres's report
   std::vector<FitPoint> before;         // fitted points at the case's start values

@@ -90,7 +90,7 @@ struct CaseResidual {
 };
 
 // The same residuals with the Jacobian from the model's own sensitivities: one model run per
-// evaluation instead of 2 n + 1 (the parameters are log values, so J_kj = (p_j dr_k/dp_j)).
+// evaluation instead of 2 n + 1 (the parameters are log values: J_kj = p_j dr_k/dp_j).
 class AnalyticCaseResidual : public ceres::CostFunction {
  public:
   AnalyticCaseResidual(const toml::table* base, fs::path file, const CalibrationSpec* cal, int* evaluations, int residuals)
@@ -201,7 +201,8 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
   std::string numeric_reason = sensitivity_base ? "" : std::get<std::string>(analytic_base);
   if (sensitivity_base)
     for (const FitPoint& p : out.before)
-      if (p.gradient.size() != n) numeric_reason = fmt::format("table '{}' has no sensitivity columns for '{}'", p.set, p.label);
+      if (p.gradient.size() != n || !std::all_of(p.gradient.begin(), p.gradient.end(), [](double g) { return std::isfinite(g); }))
+        numeric_reason = fmt::format("no finite sensitivities for '{}' of '{}' at the start", p.label, p.set);
   const bool analytic = numeric_reason.empty();
   out.derivatives = analytic ? "analytic (implicit function theorem, hbm/sensitivity.hpp)"
                              : fmt::format("central differences, relative step {:g} ({})", cal->derivative_step,

@@ -66,6 +66,38 @@ ResultTables run(const toml::table& t, const std::filesystem::path& file) {
   return compute_case_results(spec, build_model(spec)).tables;
 }
 
+// Central differences in log p of every table, at two steps. The AFT map is piecewise smooth (a
+// time sample sticks or slips): a step that moves a sample across a switch averages two slopes, so
+// each point is compared with the nearer of the two differences; a switch within 1e-6 of a point is
+// rare (the samples are 2 pi / 256 apart and a switch instant moves O(1) rad per unit log p).
+struct CentralDifferences {
+  // Truncation h^2 |f'''| / 6 (|f'''| ~ 1e4 |z| at a resonance with zeta = 0.01) against the
+  // solver's noise, 1e-12 / h relative.
+  static constexpr double steps[2] = {1e-5, 1e-6};
+  ResultTables up[2], down[2];
+  CentralDifferences(const toml::table& plain, const std::string& path, const std::filesystem::path& file) {
+    for (int k = 0; k < 2; ++k) {
+      toml::table u = plain, d = plain;
+      const double p = node_at_path(u, path)->value<double>().value();
+      *node_at_path(u, path)->as_floating_point() = p * std::exp(steps[k]);
+      *node_at_path(d, path)->as_floating_point() = p * std::exp(-steps[k]);
+      up[k] = run(u, file);
+      down[k] = run(d, file);
+    }
+  }
+  // max over the table's points of min over the steps of |exact - FD|, in the column's unit.
+  double error(const std::string& table, const std::string& q, const Eigen::VectorXd& exact) const {
+    Eigen::VectorXd best = Eigen::VectorXd::Constant(exact.size(), INFINITY);
+    for (int k = 0; k < 2; ++k) {
+      Eigen::VectorXd fd = column(up[k].at(table), q) - column(down[k].at(table), q);
+      if (fd.size() != exact.size()) return INFINITY;
+      if (q.ends_with("_deg")) fd = fd.unaryExpr([](double d) { return std::remainder(d, 360.0); });
+      best = best.cwiseMin((exact - fd / (2 * steps[k])).cwiseAbs());
+    }
+    return best.maxCoeff();
+  }
+};
+
 TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
   const std::vector<std::string> paths = {"analysis.contact.0.kt", "analysis.contact.0.mu", "analysis.contact.0.n0",
                                           "analysis.modal_damping"};
@@ -73,32 +105,83 @@ TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
   const std::filesystem::path file = dir_ / "case.toml";
   const ResultTables analytic = run(toml::parse(oscillator_case("[0.01, 3.0]", list)), file);
   const toml::table plain = toml::parse(oscillator_case("[0.01, 3.0]", ""));
-  // Step in log p: truncation h^2 ~ 1e-8 relative, solver noise 1e-12 / h ~ 1e-8.
-  const double h = 1e-4;
   for (const std::string& path : paths) {
-    toml::table up = plain, down = plain;
-    const double p = node_at_path(up, path)->value<double>().value();
-    *node_at_path(up, path)->as_floating_point() = p * std::exp(h);
-    *node_at_path(down, path)->as_floating_point() = p * std::exp(-h);
-    const ResultTables tu = run(up, file), td = run(down, file);
+    const CentralDifferences fd(plain, path, file);
     for (const char* level : {"frf_0.01", "frf_3"}) {
       const ResultTable& a = analytic.at(level);
       for (const char* q : {"A.x_amp_m", "A.x_phase_deg"}) {
         const Eigen::VectorXd value = column(a, q);
         const Eigen::VectorXd exact = column(a, std::string(q) + "_dlog_" + path);
-        Eigen::VectorXd fd = column(tu.at(level), q) - column(td.at(level), q);
-        if (std::string(q) == "A.x_phase_deg") fd = fd.unaryExpr([](double d) { return std::remainder(d, 360.0); });
-        fd /= 2 * h;
-        ASSERT_EQ(exact.size(), fd.size());
         ASSERT_TRUE(exact.allFinite()) << level << " " << q << " " << path;
         // Relative to the column's scale: |z| itself for the amplitude, one degree for the phase.
         const double scale = std::string(q) == "A.x_amp_m" ? value.cwiseAbs().maxCoeff() : 1.0;
-        const double error = (exact - fd).cwiseAbs().maxCoeff() / scale;
+        const double error = fd.error(level, q, exact) / scale;
         std::printf("  %-9s %-14s d/dlog %-22s max |p d/dp| %.3e, max |analytic - FD| %.2e (relative to %s)\n", level, q, path.c_str(),
                     exact.cwiseAbs().maxCoeff() / scale, error, std::string(q) == "A.x_amp_m" ? "max |z|" : "1 deg");
-        // Stuck: linear, exact to the FD's own error. Stick-slip: a sample of the 256-point AFT that
-        // changes state inside the +-h step makes the FD itself wrong by O(1 / 256) of that sample's force.
-        EXPECT_LT(error, std::string(level) == "frf_0.01" ? 1e-6 : 2e-4) << level << " " << q << " " << path;
+        // The analytic columns are exact; what is left is the differences' own error (measured:
+        // <= 1e-8 of max |z| and <= 8e-7 deg). A wrong term would show at 1e-3 of the derivative.
+        EXPECT_LT(error, q == std::string("A.x_amp_m") ? 1e-6 : 1e-4) << level << " " << q << " " << path;
+      }
+    }
+  }
+}
+
+// The two-blade reduced model with the rigid underplatform damper of cases/thesis/table11_calibrate_contact.toml
+// (three contacts of one law, CF = 300 N), at a slipping (300 N) and a nearly stuck (30 N) level.
+std::string damper_case(const std::string& extra) {
+  return R"([case]
+name = "damper_sensitivity"
+[analysis]
+type = "hbm"
+frequency_hz = [172.0, 188.0]
+step_hz = 0.5
+harmonics = 1
+time_samples = 64
+tolerance = 1e-12
+modal_damping = 0.01
+forces = [{ dof = "F.x", amplitude = 1.0 }]
+force_levels = [300.0, 30.0]
+responses = ["T2.x", "T1.x"]
+)" + extra + R"(
+[analysis.model]
+name = "blades"
+file = ")" + std::string(BB_SOURCE_DIR) + R"(/cases/thesis/data/two_blade_rom/blades.toml"
+[analysis.damper]
+mass = 0.07
+inertia = 4.95e-6
+centre = [0.0415, 0.0345]
+left_face_deg = 45.0
+right_face_deg = 45.0
+centrifugal_force = 300.0
+kn = 1.0e8
+kt = 1.0e8
+mu = 0.5
+points = [{ name = "L1", face = "left", point = "L1", position = [0.025625, 0.034125] },
+          { name = "L2", face = "left", point = "L2", position = [0.031875, 0.040375] },
+          { name = "R", face = "right", point = "R", position = [0.05625, 0.03725] }]
+)";
+}
+
+TEST_F(HbmFrfSensitivity, DamperDlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
+  const std::vector<std::string> paths = {"analysis.damper.kt", "analysis.damper.mu", "analysis.modal_damping"};
+  const std::filesystem::path file = dir_ / "case.toml";
+  const ResultTables analytic =
+      run(toml::parse(damper_case(R"(sensitivities = ["analysis.damper.kt", "analysis.damper.mu", "analysis.modal_damping"])")), file);
+  const toml::table plain = toml::parse(damper_case(""));
+  for (const std::string& path : paths) {
+    const CentralDifferences fd(plain, path, file);
+    for (const char* level : {"frf_300", "frf_30"}) {
+      const ResultTable& a = analytic.at(level);
+      for (const char* q : {"T2.x_amp_m", "T1.x_phase_deg"}) {
+        const bool amplitude = std::string(q).ends_with("_amp_m");
+        const Eigen::VectorXd value = column(a, q);
+        const Eigen::VectorXd exact = column(a, std::string(q) + "_dlog_" + path);
+        ASSERT_TRUE(exact.allFinite()) << level << " " << q << " " << path;
+        const double scale = amplitude ? value.cwiseAbs().maxCoeff() : 1.0;
+        const double error = fd.error(level, q, exact) / scale;
+        std::printf("  %-8s %-15s d/dlog %-22s max |p d/dp| %.3e, max |analytic - FD| %.2e\n", level, q, path.c_str(),
+                    exact.cwiseAbs().maxCoeff() / scale, error);
+        EXPECT_LT(error, amplitude ? 1e-6 : 1e-4) << level << " " << q << " " << path;  // measured <= 2e-9, 4e-7 deg
       }
     }
   }
@@ -151,7 +234,9 @@ n0 = 30.0
 )" + data;
 }
 
-TEST_F(HbmFrfSensitivity, AnalyticJacobianRecoversKtMuAndDampingWithFewerEvaluations) {
+class AnalyticRoundTrip : public HbmFrfSensitivity, public ::testing::WithParamInterface<unsigned> {};
+
+TEST_P(AnalyticRoundTrip, RecoversKtMuAndDampingWithFewerEvaluationsThanCentralDifferences) {
   const double truth[] = {1.5e6, 0.35, 0.01};
   const CaseSpec spec = parse_case_table(toml::parse(round_trip_case(truth[0], truth[1], truth[2], "")), dir_ / "truth.toml");
   const CaseResults r = compute_case_results(spec, build_model(spec));
@@ -164,7 +249,7 @@ TEST_F(HbmFrfSensitivity, AnalyticJacobianRecoversKtMuAndDampingWithFewerEvaluat
   o.columns = {{"frequency", "frequency_hz", "Hz"}, {"amplitude", "A.x_amp_m", "um"}, {"phase", "A.x_phase_deg", "deg"}};
   std::string blocks;
   for (const char* level : {"0.3", "10"}) {
-    o.seed = 3u + static_cast<unsigned>(level[0]);  // FrfRoundTrip's first draw
+    o.seed = GetParam() + static_cast<unsigned>(level[0]);  // as FrfRoundTrip
     write_synthetic_data(r.tables.at(std::string("frf_") + level), o, dir_ / (std::string("frf_") + level + ".csv"));
     blocks += std::string("[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_") + level + ".csv\"\ntable = \"frf_" + level +
               "\"\ncolumns = { frequency = \"frequency_hz\", amplitude = \"A.x_amp_m\", phase = \"A.x_phase_deg\" }\n";
@@ -203,6 +288,8 @@ derivatives = ")") + derivatives + "\"\n";
   }
   EXPECT_LT(out[0].residual_evaluations, out[1].residual_evaluations);
 }
+
+INSTANTIATE_TEST_SUITE_P(NoiseDraws, AnalyticRoundTrip, ::testing::Values(3u, 8u));  // FrfRoundTrip's draws
 
 }  // namespace
 }  // namespace bb

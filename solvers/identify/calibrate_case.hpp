@@ -1,5 +1,6 @@
 // Identification of numeric case values (dimensions, stiffnesses, damping ...) by weighted
-// nonlinear least squares (Ceres, trust region, central differences) against the reference
+// nonlinear least squares (Ceres, trust region; the Jacobian from the model's own sensitivities
+// where an hbm analysis gives them, else central differences) against the reference
 // data of chosen checks and measured curves, with the parameter covariance at the optimum and an
 // optional cross-check of the identified values by an independent model.
 #pragma once

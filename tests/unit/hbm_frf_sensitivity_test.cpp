@@ -2,7 +2,8 @@
 // and the calibration that uses them as its Jacobian ([calibration] derivatives = "auto").
 //   - The dlog columns of the 1-DOF friction oscillator (cases/verification/friction_oscillator_hbm.toml
 //     in a shorter band) agree with central differences of whole re-runs of the case, at a stuck
-//     (0.01 N) and a stick-slip (3 N) level.
+//     (0.01 N) and a stick-slip (3 N) level; so do those of the two-blade model with the rigid
+//     damper (damper.kt, damper.mu, zeta) at a slipping and a nearly stuck level.
 //   - Paths the derivative does not cover are refused with file:line.
 //   - The FRF round trip of curve_identification_test.cpp (same data, seeds and start values)
 //     fitted with analytic derivatives recovers kt, mu and zeta within 2 sigma with fewer model

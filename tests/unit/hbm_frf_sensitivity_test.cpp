@@ -12,12 +12,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "analysis/case_results.hpp"
 #include "common/errors.hpp"
 #include "identify/calibrate_case.hpp"
+#include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
 #include "temp_folder.hpp"
 
@@ -204,6 +206,25 @@ TEST_F(HbmFrfSensitivity, UnsupportedPathsAreRefusedWithTheirLine) {
   rayleigh.replace(rayleigh.find("modal_damping = 0.01"), 20, "rayleigh = { frequency_hz = [100.0, 300.0], zeta = [0.01, 0.01] }");
   const std::filesystem::path file = write(rayleigh);
   EXPECT_THROW((void)parse_case_table(read_case_table(file), file), InputError);
+}
+
+TEST_F(HbmFrfSensitivity, FrfPointGradientsInterpolateTheDlogColumnsInSiOverSigma) {
+  write("frequency [Hz],amplitude [mm],phase [deg]\n10.5,2.0,10\n", "frf.csv");
+  CalibrationData d;
+  d.name = "rig";
+  d.data = read_measured_data(dir_ / "frf.csv", DataKind::frf);
+  d.table = "frf_1";
+  d.columns = {{"frequency", "frequency_hz"}, {"amplitude", "A.x_amp_m"}, {"phase", "A.x_phase_deg"}};
+  ResultTables tables;
+  tables.emplace("frf_1", table_from_rows("frf_1", {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg", "A.x_amp_m_dlog_k", "A.x_phase_deg_dlog_k"},
+                                          {{1, 10.0, 1e-3, 0.0, 2e-3, 30.0}, {2, 11.0, 3e-3, 20.0, 4e-3, 90.0}}));
+  const std::vector<FitPoint> p = data_points(d, tables, {"k"});
+  ASSERT_EQ(p.size(), 2u);
+  ASSERT_EQ(p[0].gradient.size(), 1u);
+  EXPECT_NEAR(p[0].gradient[0], 3e-3 / (0.02 * 2e-3), 1e-9);                       // halfway, over the amplitude's sigma
+  EXPECT_NEAR(p[1].gradient[0], 60.0 * std::numbers::pi / 180.0 / p[1].sigma, 1e-9);  // degrees -> radians
+  EXPECT_TRUE(data_points(d, tables, {"k", "other"})[0].gradient.empty());           // a parameter without columns: none
+  EXPECT_TRUE(data_points(d, tables)[0].gradient.empty());
 }
 
 // The case of curve_identification_test.cpp's FrfRoundTrip.

@@ -7,7 +7,8 @@
 //   - Paths the derivative does not cover are refused with file:line.
 //   - The FRF round trip of curve_identification_test.cpp (same data, seeds and start values)
 //     fitted with analytic derivatives recovers kt, mu and zeta within 2 sigma with fewer model
-//     evaluations than central differences.
+//     evaluations than central differences; with a parameter the analysis cannot differentiate,
+//     "auto" falls back to central differences and says why.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -256,11 +257,10 @@ n0 = 30.0
 )" + data;
 }
 
-class AnalyticRoundTrip : public HbmFrfSensitivity, public ::testing::WithParamInterface<unsigned> {};
-
-TEST_P(AnalyticRoundTrip, RecoversKtMuAndDampingWithFewerEvaluationsThanCentralDifferences) {
-  const double truth[] = {1.5e6, 0.35, 0.01};
-  const CaseSpec spec = parse_case_table(toml::parse(round_trip_case(truth[0], truth[1], truth[2], "")), dir_ / "truth.toml");
+// Synthetic FRF data of the round-trip oscillator at the truth, written beside the case; returns
+// the [[calibration.data]] blocks.
+std::string write_round_trip_data(const std::filesystem::path& dir, unsigned seed) {
+  const CaseSpec spec = parse_case_table(toml::parse(round_trip_case(1.5e6, 0.35, 0.01, "")), dir / "truth.toml");
   const CaseResults r = compute_case_results(spec, build_model(spec));
   SyntheticOptions o;
   o.kind = DataKind::frf;
@@ -271,11 +271,31 @@ TEST_P(AnalyticRoundTrip, RecoversKtMuAndDampingWithFewerEvaluationsThanCentralD
   o.columns = {{"frequency", "frequency_hz", "Hz"}, {"amplitude", "A.x_amp_m", "um"}, {"phase", "A.x_phase_deg", "deg"}};
   std::string blocks;
   for (const char* level : {"0.3", "10"}) {
-    o.seed = GetParam() + static_cast<unsigned>(level[0]);  // as FrfRoundTrip
-    write_synthetic_data(r.tables.at(std::string("frf_") + level), o, dir_ / (std::string("frf_") + level + ".csv"));
+    o.seed = seed + static_cast<unsigned>(level[0]);  // as FrfRoundTrip
+    write_synthetic_data(r.tables.at(std::string("frf_") + level), o, dir / (std::string("frf_") + level + ".csv"));
     blocks += std::string("[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_") + level + ".csv\"\ntable = \"frf_" + level +
               "\"\ncolumns = { frequency = \"frequency_hz\", amplitude = \"A.x_amp_m\", phase = \"A.x_phase_deg\" }\n";
   }
+  return blocks;
+}
+
+TEST_F(HbmFrfSensitivity, AutoFallsBackToCentralDifferencesForAParameterWithoutSensitivity) {
+  const std::string blocks = write_round_trip_data(dir_, 3u);
+  write(round_trip_case(5.0e5, 0.8, 0.03, R"([calibration]
+parameters = [{ path = "analysis.contact.0.kt", lower = 1.0e5, upper = 1.0e7 },
+              { path = "analysis.forces.0.amplitude", lower = 0.5, upper = 2.0 }]
+max_iterations = 1
+)" + blocks));
+  const CalibrationOutcome out = calibrate_case(dir_ / "case.toml", false);
+  EXPECT_EQ(out.derivatives.rfind("central differences", 0), 0u) << out.derivatives;
+  EXPECT_NE(out.derivatives.find("analysis.forces.0.amplitude"), std::string::npos) << out.derivatives;
+}
+
+class AnalyticRoundTrip : public HbmFrfSensitivity, public ::testing::WithParamInterface<unsigned> {};
+
+TEST_P(AnalyticRoundTrip, RecoversKtMuAndDampingWithFewerEvaluationsThanCentralDifferences) {
+  const double truth[] = {1.5e6, 0.35, 0.01};
+  const std::string blocks = write_round_trip_data(dir_, GetParam());
   const auto calibration = [](const char* derivatives) {
     return std::string(R"([calibration]
 parameters = [{ path = "analysis.contact.0.kt", lower = 1.0e5, upper = 1.0e7 },

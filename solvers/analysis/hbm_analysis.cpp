@@ -13,6 +13,7 @@
 #include "analysis/modal_analysis.hpp"
 #include "common/errors.hpp"
 #include "frf/receptance.hpp"
+#include "hbm/sensitivity.hpp"
 
 namespace bb {
 namespace {
@@ -269,6 +270,68 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, doubl
   return direct;
 }
 
+// d(model)/d(log p) for each path of spec.sensitivities (validated by the parser): scaling a unit
+// derivative by the parameter's value turns d/dp into d/d(log p).
+std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec, const hbm::HbmModel& m) {
+  const size_t damper_contacts = p.damper ? p.damper->contacts.size() : 0;
+  std::vector<hbm::ModelDerivative> out;
+  for (const std::string& path : spec.sensitivities) {
+    if (path == "analysis.modal_damping") {  // C = zeta C1: dC/d(log zeta) = C
+      out.push_back(hbm::damping_scale_derivative(m));
+      continue;
+    }
+    const std::string key = path.substr(path.rfind('.') + 1);
+    const bool damper = path.starts_with("analysis.damper.");
+    const size_t first = damper ? 0 : damper_contacts + std::stoul(path.substr(std::string("analysis.contact.").size()));
+    const size_t last = damper ? damper_contacts : first + 1;
+    hbm::ModelDerivative d;
+    d.laws.assign(m.contacts.size(), {});
+    for (size_t k = first; k < last; ++k) {
+      const contact::JenkinsParameters& law = m.contacts[k].law;
+      contact::JenkinsParameters& dl = d.laws[k];
+      if (key == "kn") dl.kn = law.kn;
+      if (key == "kt") dl.kt = law.kt;
+      if (key == "mu") dl.mu = law.mu;
+      if (key == "n0") dl.n0 = law.n0;
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+// Fills level.amplitude_dlog and phase_dlog_deg from the converged path points: with z the
+// first-harmonic amplitude (Z = a1 - i b1), d|z| = Re(conj z dz) / |z| and d arg z = Im(conj z dz) / |z|^2.
+void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const hbm::HarmonicBalance& system, HbmLevel& level) {
+  const std::vector<hbm::ModelDerivative> derivatives = log_derivatives(p, spec, system.model());
+  const Index n_points = static_cast<Index>(level.path.points.size()), n_resp = static_cast<Index>(p.responses.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  level.amplitude_dlog.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
+  level.phase_dlog_deg.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
+  for (Index i = 0; i < n_points; ++i) {
+    const hbm::ContinuationPoint& pt = level.path.points[static_cast<size_t>(i)];
+    hbm::HbmSolution s;
+    s.x = pt.x;
+    s.omega = pt.omega;
+    s.converged = true;  // every point of the path is a converged solve
+    std::vector<Eigen::MatrixXd> dq;
+    try {
+      dq = hbm::response_sensitivity(system, s, derivatives);
+    } catch (const std::exception&) {
+      continue;  // a singular Jacobian (e.g. a free static position): no derivative, NaN
+    }
+    const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
+    for (size_t j = 0; j < dq.size(); ++j)
+      for (Index r = 0; r < n_resp; ++r) {
+        const Index dof = p.responses[static_cast<size_t>(r)];
+        const std::complex<double> zr = z[dof], dz(dq[j](dof, 1), -dq[j](dof, 2));
+        const double a2 = std::norm(zr);
+        if (!(a2 > 0.0)) continue;
+        level.amplitude_dlog[j](i, r) = (std::conj(zr) * dz).real() / std::sqrt(a2);
+        level.phase_dlog_deg[j](i, r) = (std::conj(zr) * dz).imag() / a2 * 180.0 / std::numbers::pi;
+      }
+  }
+}
+
 }  // namespace
 
 HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, const HbmProgress& progress) {
@@ -364,6 +427,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
   }
+  if (!spec.sensitivities.empty()) add_sensitivities(p, spec, system, level);
   if (n_points > 0)
     for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, level, k));
   level.seconds = seconds_since(t0);
@@ -454,6 +518,9 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
     for (const std::string& r : p.response_names) cols.push_back(r + "_phase_deg");
     if (p.ip_oop) cols.insert(cols.end(), {"ip_component_m", "oop_component_m"});
     cols.insert(cols.end(), {"residual_n", "iterations"});
+    for (const std::string& path : spec.sensitivities)
+      for (const char* q : {"_amp_m_dlog_", "_phase_deg_dlog_"})
+        for (const std::string& r : p.response_names) cols.push_back(r + q + path);
     std::vector<std::vector<double>> rows;
     for (size_t i = 0; i < level.path.points.size(); ++i) {
       std::vector<double> row = {static_cast<double>(i + 1), level.frequency_hz[i]};
@@ -461,6 +528,9 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
       for (Index r = 0; r < level.phase_deg.cols(); ++r) row.push_back(level.phase_deg(static_cast<Index>(i), r));
       if (p.ip_oop) row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
       row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});
+      for (size_t j = 0; j < level.amplitude_dlog.size(); ++j)
+        for (const Eigen::MatrixXd* d : {&level.amplitude_dlog[j], &level.phase_dlog_deg[j]})
+          for (Index r = 0; r < d->cols(); ++r) row.push_back((*d)(static_cast<Index>(i), r));
       rows.push_back(row);
     }
     const std::string name = hbm_frf_table_name(level.force);

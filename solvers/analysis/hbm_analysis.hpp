@@ -60,6 +60,9 @@ struct HbmLevel {
   Eigen::MatrixXd amplitude;        // path points x responses, first harmonic [m]
   Eigen::MatrixXd phase_deg;        // path points x responses, first harmonic's phase to the force
   Eigen::MatrixXd components;       // path points x (IP, OOP) [m] when ip_oop is set
+  // Per path of spec.sensitivities: path points x responses, p d|z|/dp [m] and p d phase/dp [deg]
+  // at fixed frequency (hbm/sensitivity.hpp); NaN where the sensitivity is not defined.
+  std::vector<Eigen::MatrixXd> amplitude_dlog, phase_dlog_deg;
   std::vector<HbmPeak> peaks;
   double seconds = 0.0;
 };
@@ -89,6 +92,7 @@ std::vector<double> sweep_grid_hz(const HbmSweepSpec& sweep);
 Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model);
 
 // The name of level `force`'s FRF table, e.g. "frf_300" or "frf_0.5".
+// Its sensitivity columns: "<response>_amp_m_dlog_<path>" and "<response>_phase_deg_dlog_<path>".
 std::string hbm_frf_table_name(double force);
 
 }  // namespace bb

@@ -70,6 +70,10 @@ struct HbmSpec {
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.
   int max_iterations = 20;
   HbmSweepSpec sweep;
+  // Case paths whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp), by
+  // hbm/sensitivity.hpp: "analysis.contact.<i>.{kn,kt,mu,n0}", "analysis.damper.{kt,mu}",
+  // "analysis.modal_damping". Empty = none.
+  std::vector<std::string> sensitivities;
   SourceLocation at;                 // of [analysis], for errors found when the model is built
 };
 

@@ -50,6 +50,10 @@ struct CalibrationSpec {
   // Relative step of the central differences (in log space). Models whose response is only
   // piecewise smooth (AFT sampling of friction contacts) need a step that spans their kinks.
   double derivative_step = 1e-4;
+  // "auto": analytic derivatives when the model gives them (every fitted point from frf data of an
+  // hbm analysis, every parameter a path hbm/sensitivity.hpp differentiates), else central
+  // differences; "numeric": always central differences.
+  std::string derivatives = "auto";
   // Multi-start: the case's values, then starts - 1 points of a Latin hypercube in log space
   // within the bounds (seeded, so a run repeats); the lowest final cost wins.
   int starts = 1;

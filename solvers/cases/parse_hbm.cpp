@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -89,6 +90,36 @@ DamperSpec parse_damper(TomlReader r) {
   if (d.points.empty()) r.fail("points", "needs at least one contact point");
   r.finish();
   return d;
+}
+
+// The paths hbm/sensitivity.hpp differentiates exactly. damper.kn is left out: the damper's seat
+// (the sliders' tangential offsets, from the static pre-solve) moves with kn, which the derivative
+// holds fixed; rayleigh damping and a damping matrix do not scale with one case value.
+void check_sensitivities(TomlReader& r, const HbmSpec& s) {
+  for (const std::string& path : s.sensitivities) {
+    const auto fail = [&](const std::string& why) { r.fail("sensitivities", fmt::format("'{}': {}", path, why)); };
+    const std::string contact = "analysis.contact.", damper = "analysis.damper.";
+    if (path == "analysis.modal_damping") {
+      if (s.damping_matrix || s.damping.kind != FrfDamping::Kind::modal)
+        fail("needs modal damping (modal_damping = zeta); rayleigh damping or a damping matrix has no single scale");
+      if (!(s.damping.zeta > 0.0)) fail("needs modal_damping > 0 (the log-sensitivity of zero damping is zero)");
+    } else if (path.starts_with(damper)) {
+      const std::string key = path.substr(damper.size());
+      if (!s.damper) fail("the analysis has no [analysis.damper]");
+      if (key == "kn") fail("not supported: the damper's static seat moves with kn, which the sensitivity holds fixed");
+      if (key != "kt" && key != "mu") fail("expected analysis.damper.kt or analysis.damper.mu");
+    } else if (path.starts_with(contact)) {
+      const std::string rest = path.substr(contact.size());
+      const size_t dot = rest.find('.');
+      const std::string index = rest.substr(0, dot), key = dot == std::string::npos ? "" : rest.substr(dot + 1);
+      if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos || std::stoul(index) >= s.contacts.size())
+        fail(fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", index, s.contacts.size()));
+      if (key != "kn" && key != "kt" && key != "mu" && key != "n0") fail("expected analysis.contact.<i>.kn, kt, mu or n0");
+    } else {
+      fail("not a supported path (analysis.contact.<i>.{kn,kt,mu,n0}, analysis.damper.{kt,mu}, analysis.modal_damping)");
+    }
+    if (std::count(s.sensitivities.begin(), s.sensitivities.end(), path) > 1) fail("listed twice");
+  }
 }
 
 }  // namespace
@@ -181,6 +212,11 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     if (!(s.sweep.min_step > 0) || !(s.sweep.initial_step >= s.sweep.min_step) || !(s.sweep.max_step >= s.sweep.initial_step))
       p.fail("max_step", "need 0 < min_step <= initial_step <= max_step");
     p.finish();
+  }
+  if (r.has("sensitivities")) {
+    if (!contacts_required) r.fail("sensitivities", "only a harmonic balance analysis computes sensitivities");
+    s.sensitivities = r.string_array("sensitivities");
+    check_sensitivities(r, s);
   }
   return s;
 }

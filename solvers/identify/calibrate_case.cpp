@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <numeric>
 #include <random>
+#include <variant>
 
 #include "analysis/case_results.hpp"
 #include "common/errors.hpp"
@@ -39,9 +40,16 @@ toml::table with_values(const toml::table& base, const CalibrationSpec& cal, con
   return t;
 }
 
-// The fitted points of a case table with the given parameter values, and the tables of its curves.
+std::vector<std::string> parameter_paths(const CalibrationSpec& cal) {
+  std::vector<std::string> paths;
+  for (const CalibrationParameter& p : cal.parameters) paths.push_back(p.path);
+  return paths;
+}
+
+// The fitted points of a case table with the given parameter values, and the tables of its curves;
+// with `gradients`, frf points carry d r / d log p from the tables' sensitivity columns.
 std::vector<FitPoint> fitted_points(const toml::table& base, const fs::path& file, const CalibrationSpec& cal,
-                                    const std::vector<double>& values, ResultTables* curves = nullptr) {
+                                    const std::vector<double>& values, ResultTables* curves = nullptr, bool gradients = false) {
   const CaseSpec spec = parse_case_table(with_values(base, cal, values), file);
   const Model model = build_model(spec);
   const CaseResults results = compute_case_results(spec, model);
@@ -52,7 +60,7 @@ std::vector<FitPoint> fitted_points(const toml::table& base, const fs::path& fil
     points.insert(points.end(), e.begin(), e.end());
   }
   for (const CalibrationData& d : cal.data) {
-    const auto e = data_points(d, results.tables);
+    const auto e = data_points(d, results.tables, gradients ? parameter_paths(cal) : std::vector<std::string>{});
     points.insert(points.end(), e.begin(), e.end());
     if (curves) curves->insert_or_assign(d.table, results.tables.at(d.table));
   }
@@ -80,6 +88,77 @@ struct CaseResidual {
     }
   }
 };
+
+// The same residuals with the Jacobian from the model's own sensitivities: one model run per
+// evaluation instead of 2 n + 1 (the parameters are log values: J_kj = p_j dr_k/dp_j).
+class AnalyticCaseResidual : public ceres::CostFunction {
+ public:
+  AnalyticCaseResidual(const toml::table* base, fs::path file, const CalibrationSpec* cal, int* evaluations, int residuals)
+      : base_(base), file_(std::move(file)), cal_(cal), evaluations_(evaluations) {
+    set_num_residuals(residuals);
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(cal->parameters.size()));
+  }
+
+  bool Evaluate(double const* const* log_values, double* residuals, double** jacobians) const override {
+    const size_t n = cal_->parameters.size();
+    std::vector<double> values(n);
+    for (size_t i = 0; i < n; ++i) values[i] = std::exp(log_values[0][i]);
+    try {
+      const auto points = fitted_points(*base_, file_, *cal_, values, nullptr, true);
+      ++*evaluations_;
+      if (points.size() != static_cast<size_t>(num_residuals())) return false;
+      for (size_t k = 0; k < points.size(); ++k) {
+        const FitPoint& p = points[k];
+        if (!std::isfinite(p.computed)) return false;  // as CaseResidual: Ceres shrinks the step
+        residuals[k] = p.residual();
+        if (!jacobians || !jacobians[0]) continue;
+        if (p.gradient.size() != n) return false;
+        for (size_t j = 0; j < n; ++j) {
+          if (!std::isfinite(p.gradient[j])) return false;  // next to a grid point that has no derivative
+          jacobians[0][k * n + j] = p.gradient[j];
+        }
+      }
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+
+ private:
+  const toml::table* base_;
+  fs::path file_;
+  const CalibrationSpec* cal_;
+  int* evaluations_;
+};
+
+// The case table asking the hbm analysis for the sensitivities to every parameter, when analytic
+// derivatives can serve the whole fit: derivatives = "auto", only frf data, and the analysis
+// accepts every path (parse_hbm checks which ones it differentiates). Otherwise the reason why not.
+std::variant<toml::table, std::string> analytic_case(const toml::table& base, const fs::path& file, const CalibrationSpec& cal) {
+  if (cal.derivatives != "auto") return std::string("derivatives = \"numeric\"");
+  if (!cal.fit_checks.empty()) return std::string("fitted checks have no derivatives");
+  for (const CalibrationData& d : cal.data)
+    if (d.data.kind != DataKind::frf) return fmt::format("data '{}' is not frf data", d.name);
+  toml::table t = base;
+  toml::table* analysis = t["analysis"].as_table();
+  if (!analysis || analysis->get("type") == nullptr || analysis->get("type")->value<std::string>() != "hbm")
+    return std::string("the analysis is not hbm");
+  std::vector<std::string> paths;
+  if (const toml::array* given = analysis->get_as<toml::array>("sensitivities"))
+    for (const toml::node& n : *given)
+      if (const auto v = n.value<std::string>()) paths.push_back(*v);
+  for (const std::string& p : parameter_paths(cal))
+    if (std::find(paths.begin(), paths.end(), p) == paths.end()) paths.push_back(p);
+  toml::array list;
+  for (const std::string& p : paths) list.push_back(p);
+  analysis->insert_or_assign("sensitivities", std::move(list));
+  try {
+    (void)parse_case_table(t, file);
+  } catch (const InputError& e) {
+    return fmt::format("the analysis has no sensitivities for these parameters ({})", e.what());
+  }
+  return t;
+}
 
 class Progress : public ceres::IterationCallback {
  public:
@@ -114,9 +193,20 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
   const size_t n = cal->parameters.size();
   std::vector<double> start(n);
   for (size_t i = 0; i < n; ++i) start[i] = cal->parameters[i].start;
-  out.before = fitted_points(base, case_file, *cal, start, &out.curves_before);
+  const auto analytic_base = analytic_case(base, case_file, *cal);
+  const toml::table* sensitivity_base = std::get_if<toml::table>(&analytic_base);
+  out.before = fitted_points(sensitivity_base ? *sensitivity_base : base, case_file, *cal, start, &out.curves_before, sensitivity_base != nullptr);
   for (const FitPoint& p : out.before)
     if (!(p.sigma > 0.0)) throw InputError(fmt::format("{}: fitted entry '{}' has a zero reference or uncertainty", cal->at.where(), p.label));
+  std::string numeric_reason = sensitivity_base ? "" : std::get<std::string>(analytic_base);
+  if (sensitivity_base)
+    for (const FitPoint& p : out.before)
+      if (p.gradient.size() != n || !std::all_of(p.gradient.begin(), p.gradient.end(), [](double g) { return std::isfinite(g); }))
+        numeric_reason = fmt::format("no finite sensitivities for '{}' of '{}' at the start", p.label, p.set);
+  const bool analytic = numeric_reason.empty();
+  out.derivatives = analytic ? "analytic (implicit function theorem, hbm/sensitivity.hpp)"
+                             : fmt::format("central differences, relative step {:g} ({})", cal->derivative_step,
+                                           cal->derivatives == "numeric" ? "as asked" : numeric_reason);
 
   // Start points in log space: the case's values, then a Latin hypercube within the bounds.
   std::vector<std::vector<double>> starts{start};
@@ -143,10 +233,16 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, bool show_progress)
   diff.relative_step_size = cal->derivative_step;  // default 1e-4: above the eigensolver's 1e-10 noise, below the model's curvature
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
   const auto build = [&](std::vector<double>& x, ceres::Problem& problem) {
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<CaseResidual, ceres::CENTRAL>(
-        new CaseResidual{&base, case_file, &*cal, &out.residual_evaluations}, ceres::TAKE_OWNERSHIP, diff);
-    cost->AddParameterBlock(static_cast<int>(n));
-    cost->SetNumResiduals(static_cast<int>(out.before.size()));
+    ceres::CostFunction* cost = nullptr;
+    if (analytic) {
+      cost = new AnalyticCaseResidual(sensitivity_base, case_file, &*cal, &out.residual_evaluations, static_cast<int>(out.before.size()));
+    } else {
+      auto* numeric = new ceres::DynamicNumericDiffCostFunction<CaseResidual, ceres::CENTRAL>(
+          new CaseResidual{&base, case_file, &*cal, &out.residual_evaluations}, ceres::TAKE_OWNERSHIP, diff);
+      numeric->AddParameterBlock(static_cast<int>(n));
+      numeric->SetNumResiduals(static_cast<int>(out.before.size()));
+      cost = numeric;
+    }
     ceres::LossFunction* loss = nullptr;
     if (cal->loss == "huber") loss = new ceres::HuberLoss(cal->loss_scale);
     if (cal->loss == "cauchy") loss = new ceres::CauchyLoss(cal->loss_scale);

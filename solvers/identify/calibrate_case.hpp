@@ -1,5 +1,6 @@
 // Identification of numeric case values (dimensions, stiffnesses, damping ...) by weighted
-// nonlinear least squares (Ceres, trust region, central differences) against the reference
+// nonlinear least squares (Ceres, trust region; the Jacobian from the model's own sensitivities
+// where an hbm analysis gives them, else central differences) against the reference
 // data of chosen checks and measured curves, with the parameter covariance at the optimum and an
 // optional cross-check of the identified values by an independent model.
 #pragma once
@@ -36,7 +37,8 @@ struct CalibrationOutcome {
   std::vector<std::pair<int, double>> history;  // (iteration, cost)
   double initial_cost = 0.0;
   double final_cost = 0.0;
-  int residual_evaluations = 0;
+  int residual_evaluations = 0;         // model runs (a central-difference Jacobian costs 2 n of them)
+  std::string derivatives;              // how the Jacobian was computed ("analytic ..." or "central differences ...")
   bool converged = false;
   std::string termination;              // Ceres's report
   std::vector<FitPoint> before;         // fitted points at the case's start values

@@ -152,6 +152,7 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   md << fmt::format("{} in {:.1f} s, {} model evaluations ({:.2f} s each on average). Cost {:.6g} -> {:.6g}; rms residual {:.3g} -> {:.3g} sigma.\n\n",
                     o.converged ? "Converged" : "**Not converged**", wall_seconds, o.residual_evaluations,
                     wall_seconds / std::max(1, o.residual_evaluations), o.initial_cost, o.final_cost, rms_residual(o.before), rms_residual(o.after));
+  md << fmt::format("Jacobian: {}.\n\n", o.derivatives);
   md << "Residuals: (computed - measured) / sigma per fitted point (for a check entry, sigma is relative to the reference). Loss: "
      << o.spec.loss << ".\n\n";
   md << fmt::format("Reduced chi-square at the optimum: {:.3g}{}.\n\n", o.reduced_chi_square,

@@ -48,7 +48,7 @@ std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t
       const bool is_frequency = std::string(q) == "frequency";
       const double measured = m.column(q)[i];
       const double sigma = sigma_of(m, q, i, (is_frequency ? d.frequency_uncertainty : d.amplitude_uncertainty) * measured);
-      points.push_back({d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, result_column(d, t, q)[row], sigma, false});
+      points.push_back({d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, result_column(d, t, q)[row], sigma, false, {}});
     }
   }
   return points;
@@ -62,7 +62,20 @@ double interpolate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double xq
   return y[j - 1] + s * (y[j] - y[j - 1]);
 }
 
-std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t) {
+// The log-sensitivity columns of result column `q` in SI, one per parameter; empty unless all exist.
+std::vector<Eigen::VectorXd> dlog_columns(const CalibrationData& d, const ResultTable& t, const std::string& q,
+                                          const std::vector<std::string>& parameters) {
+  const std::string& name = d.columns.at(q);
+  std::vector<Eigen::VectorXd> out;
+  for (const std::string& p : parameters) {
+    const auto c = t.column_index(name + "_dlog_" + p);
+    if (!c) return {};
+    out.push_back(t.values.col(*c) * column_to_si(name));
+  }
+  return out;
+}
+
+std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t, const std::vector<std::string>& parameters) {
   const MeasuredData& m = d.data;
   const Eigen::VectorXd f = result_column(d, t, "frequency");
   for (Index r = 1; r < f.size(); ++r)
@@ -84,8 +97,12 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t)
       if (phase)  // unwrap so the interpolation does not cross a 2 pi jump
         for (Index r = 1; r < y.size(); ++r) y[r] = y[r - 1] + wrap_angle(y[r] - y[r - 1]);
       const double sigma = sigma_of(m, q, i, phase ? d.phase_uncertainty : d.amplitude_uncertainty * measured);
-      points.push_back({d.name, fmt::format("{} at {:.6g} Hz", q, fq), q, fq, measured, interpolate(f, y, std::clamp(fq, f[0], f[f.size() - 1])),
-                        sigma, phase});
+      const double at = std::clamp(fq, f[0], f[f.size() - 1]);
+      // Linear in the table's values, so the interpolated derivative is the derivative of the
+      // interpolation (the unwrapping adds constants only).
+      std::vector<double> gradient;
+      for (const Eigen::VectorXd& dy : dlog_columns(d, t, q, parameters)) gradient.push_back(interpolate(f, dy, at) / sigma);
+      points.push_back({d.name, fmt::format("{} at {:.6g} Hz", q, fq), q, fq, measured, interpolate(f, y, at), sigma, phase, std::move(gradient)});
     }
   }
   return points;
@@ -148,7 +165,7 @@ std::vector<FitPoint> hysteresis_points(const CalibrationData& d, const ResultTa
                                    dir > 0 ? "forward" : "backward", d.at.where()));
     const double sigma = sigma_of(m, "force", i, d.force_uncertainty * scale);
     points.push_back({d.name, fmt::format("force at {:.4g} m ({})", um[i], dir > 0 ? "loading" : "unloading"), "tangential_force", um[i], tm[i],
-                      computed, sigma, false});
+                      computed, sigma, false, {}});
   }
   return points;
 }
@@ -161,15 +178,15 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
   std::vector<FitPoint> points;
   for (const CheckEntry& e : entries)
     points.push_back({e.group, e.name.substr(std::min(e.name.size(), e.group.size() + 2)), "check", static_cast<double>(e.key), e.reference, e.computed,
-                      uncertainty_of(cal, e.group) * std::abs(e.reference), false});
+                      uncertainty_of(cal, e.group) * std::abs(e.reference), false, {}});
   return points;
 }
 
-std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables) {
+std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables, const std::vector<std::string>& parameters) {
   const ResultTable& t = table_of(d, tables);
   switch (d.data.kind) {
     case DataKind::peaks: return peak_points(d, t);
-    case DataKind::frf: return frf_points(d, t);
+    case DataKind::frf: return frf_points(d, t, parameters);
     case DataKind::hysteresis: return hysteresis_points(d, t);
   }
   return {};

@@ -20,6 +20,9 @@ struct FitPoint {
   double computed = 0.0;  // SI
   double sigma = 0.0;     // 1-sigma of measured, SI, > 0
   bool angle = false;     // the misfit is wrapped into (-pi, pi]
+  // d residual / d log p_j per calibration parameter, when the result table carries the model's
+  // log-sensitivity columns (analysis/hbm_analysis.hpp); empty otherwise.
+  std::vector<double> gradient;
 
   double misfit() const;    // computed - measured (wrapped for angles)
   double residual() const { return misfit() / sigma; }
@@ -38,6 +41,9 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
 //               the measured displacement; clamped to the branch's ends outside its range.
 // Throws InputError (naming the case's data block and the data row) when a table or column is
 // missing or the data lie outside the computed curve.
-std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables);
+// `parameters`: case paths; frf points get a gradient when the table has the column
+// "<result column>_dlog_<path>" for every one of them (interpolated like the value).
+std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables,
+                                  const std::vector<std::string>& parameters = {});
 
 }  // namespace bb

@@ -15,6 +15,7 @@
 #include "analysis/case_results.hpp"
 #include "identify/calibrate_case.hpp"
 #include "identify/synthetic_data.hpp"
+#include "../unit/two_blade_rom_case.hpp"
 
 namespace bb {
 namespace {
@@ -22,37 +23,14 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string two_blade_case(double kt, double mu, const std::string& extra) {
-  const fs::path rom = fs::path(BB_SOURCE_DIR) / "cases" / "thesis" / "data" / "two_blade_rom" / "blades.toml";
-  return R"([case]
-name = "two_blade_identification"
-[analysis]
-type = "hbm"
-frequency_hz = [172.0, 182.0]
-step_hz = 0.05
-harmonics = 1
-time_samples = 256
-modal_damping = 0.01
-forces = [{ dof = "F.x", amplitude = 1.0 }]
-force_levels = [300.0, 150.0, 100.0, 30.0, 5.0]
-responses = ["T2.x", "T1.x"]
-ip_oop = { left = "T1.x", right = "T2.x" }
-[analysis.model]
-name = "blades"
-file = ")" + rom.string() + R"("
-[analysis.damper]
-mass = 0.07
-inertia = 4.95e-6
-centre = [0.0415, 0.0345]
-left_face_deg = 45.0
-right_face_deg = 45.0
-centrifugal_force = 300.0
-kn = 1.0e8
-kt = )" + std::to_string(kt) + R"(
-mu = )" + std::to_string(mu) + R"(
-points = [{ name = "L1", face = "left", point = "L1", position = [0.025625, 0.034125] },
-          { name = "L2", face = "left", point = "L2", position = [0.031875, 0.040375] },
-          { name = "R", face = "right", point = "R", position = [0.05625, 0.03725] }]
-)" + extra;
+  test::TwoBladeRomCase c;
+  c.kt = std::to_string(kt);
+  c.mu = std::to_string(mu);
+  c.levels = "[300.0, 150.0, 100.0, 30.0, 5.0]";
+  c.samples = "256";
+  c.ip_oop = true;
+  c.extra = extra;
+  return test::two_blade_rom_case_text(c);
 }
 
 class TwoBladeIdentification : public ::testing::TestWithParam<unsigned> {};

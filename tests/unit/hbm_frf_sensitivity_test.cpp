@@ -22,41 +22,24 @@
 #include "identify/calibrate_case.hpp"
 #include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
+#include "oscillator_case.hpp"
 #include "temp_folder.hpp"
+#include "two_blade_rom_case.hpp"
 
 namespace bb {
 namespace {
 
 class HbmFrfSensitivity : public test::TempFolderTest {};
 
-std::string oscillator_case(const std::string& levels, const std::string& extra) {
-  return R"([case]
-name = "frf_sensitivity"
-[analysis]
-type = "hbm"
-frequency_hz = [150.0, 240.0]
-step_hz = 1.0
-harmonics = 1
-time_samples = 256
-tolerance = 1e-12
-modal_damping = 0.01
-forces = [{ dof = "A.x", amplitude = 1.0 }]
-force_levels = )" + levels + R"(
-responses = ["A.x"]
-)" + extra + R"(
-[analysis.model]
-name = "oscillator"
-dofs = ["A.x"]
-stiffness = [[1.0e6]]
-mass = [[1.0]]
-[[analysis.contact]]
-name = "ground"
-tangential = { "A.x" = 1.0 }
-kn = 1.0e6
-kt = 1.0e6
-mu = 0.3
-n0 = 30.0
-)";
+std::string oscillator_case(const std::string& levels, const std::string& analysis_extra) {
+  test::OscillatorCase c;
+  c.levels = levels;
+  c.range = "[150.0, 240.0]";
+  c.step = "1.0";
+  c.samples = "256";
+  c.tolerance = "1e-12";
+  c.analysis_extra = analysis_extra;
+  return test::oscillator_case_text(c);
 }
 
 Eigen::VectorXd column(const ResultTable& t, const std::string& name) {
@@ -132,38 +115,14 @@ TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
 
 // The two-blade reduced model with the rigid underplatform damper of cases/thesis/table11_calibrate_contact.toml
 // (three contacts of one law, CF = 300 N), at a slipping (300 N) and a nearly stuck (30 N) level.
-std::string damper_case(const std::string& extra) {
-  return R"([case]
-name = "damper_sensitivity"
-[analysis]
-type = "hbm"
-frequency_hz = [172.0, 188.0]
-step_hz = 0.5
-harmonics = 1
-time_samples = 64
-tolerance = 1e-12
-modal_damping = 0.01
-forces = [{ dof = "F.x", amplitude = 1.0 }]
-force_levels = [300.0, 30.0]
-responses = ["T2.x", "T1.x"]
-)" + extra + R"(
-[analysis.model]
-name = "blades"
-file = ")" + std::string(BB_SOURCE_DIR) + R"(/cases/thesis/data/two_blade_rom/blades.toml"
-[analysis.damper]
-mass = 0.07
-inertia = 4.95e-6
-centre = [0.0415, 0.0345]
-left_face_deg = 45.0
-right_face_deg = 45.0
-centrifugal_force = 300.0
-kn = 1.0e8
-kt = 1.0e8
-mu = 0.5
-points = [{ name = "L1", face = "left", point = "L1", position = [0.025625, 0.034125] },
-          { name = "L2", face = "left", point = "L2", position = [0.031875, 0.040375] },
-          { name = "R", face = "right", point = "R", position = [0.05625, 0.03725] }]
-)";
+std::string damper_case(const std::string& analysis_extra) {
+  test::TwoBladeRomCase c;
+  c.levels = "[300.0, 30.0]";
+  c.range = "[172.0, 188.0]";
+  c.step = "0.5";
+  c.tolerance = "1e-12";
+  c.analysis_extra = analysis_extra;
+  return test::two_blade_rom_case_text(c);
 }
 
 TEST_F(HbmFrfSensitivity, DamperDlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
@@ -228,33 +187,17 @@ TEST_F(HbmFrfSensitivity, FrfPointGradientsInterpolateTheDlogColumnsInSiOverSigm
   EXPECT_TRUE(data_points(d, tables)[0].gradient.empty());
 }
 
-// The case of curve_identification_test.cpp's FrfRoundTrip.
+// The round-trip oscillator: two levels, 0.5 Hz grid.
 std::string round_trip_case(double kt, double mu, double zeta, const std::string& data) {
-  return R"([case]
-name = "frf_identification"
-[analysis]
-type = "hbm"
-frequency_hz = [150.0, 240.0]
-step_hz = 0.5
-harmonics = 1
-time_samples = 128
-modal_damping = )" + std::to_string(zeta) + R"(
-forces = [{ dof = "A.x", amplitude = 1.0 }]
-force_levels = [0.3, 10.0]
-responses = ["A.x"]
-[analysis.model]
-name = "oscillator"
-dofs = ["A.x"]
-stiffness = [[1.0e6]]
-mass = [[1.0]]
-[[analysis.contact]]
-name = "ground"
-tangential = { "A.x" = 1.0 }
-kn = 1.0e6
-kt = )" + std::to_string(kt) + R"(
-mu = )" + std::to_string(mu) + R"(
-n0 = 30.0
-)" + data;
+  test::OscillatorCase c;
+  c.kt = std::to_string(kt);
+  c.mu = std::to_string(mu);
+  c.zeta = std::to_string(zeta);
+  c.levels = "[0.3, 10.0]";
+  c.range = "[150.0, 240.0]";
+  c.step = "0.5";
+  c.extra = data;
+  return test::oscillator_case_text(c);
 }
 
 // Synthetic FRF data of the round-trip oscillator at the truth, written beside the case; returns
@@ -331,7 +274,7 @@ derivatives = ")") + derivatives + "\"\n";
   EXPECT_LT(out[0].residual_evaluations, out[1].residual_evaluations);
 }
 
-INSTANTIATE_TEST_SUITE_P(NoiseDraws, AnalyticRoundTrip, ::testing::Values(3u, 8u));  // FrfRoundTrip's draws
+INSTANTIATE_TEST_SUITE_P(NoiseDraws, AnalyticRoundTrip, ::testing::Values(3u, 8u));
 
 }  // namespace
 }  // namespace bb

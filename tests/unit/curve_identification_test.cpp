@@ -17,10 +17,6 @@ namespace {
 
 class CurveIdentification : public test::TempFolderTest {};
 
-ResultTable table(const std::string& name, std::vector<std::string> columns, const std::vector<std::vector<double>>& rows) {
-  return table_from_rows(name, std::move(columns), rows);
-}
-
 TEST_F(CurveIdentification, FrfPointsInterpolateTheComputedCurveAndWrapPhases) {
   write("# example\nfrequency [Hz],amplitude [mm],phase [deg]\n10.5,2.0,179\n11.0,3.0,-179\n", "frf.csv");
   CalibrationData d;
@@ -29,7 +25,7 @@ TEST_F(CurveIdentification, FrfPointsInterpolateTheComputedCurveAndWrapPhases) {
   d.table = "frf_1";
   d.columns = {{"frequency", "frequency_hz"}, {"amplitude", "A.x_amp_m"}, {"phase", "A.x_phase_deg"}};
   ResultTables tables;
-  tables.emplace("frf_1", table("frf_1", {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg"},
+  tables.emplace("frf_1", table_from_rows("frf_1", {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg"},
                                 {{1, 10.0, 1e-3, 170.0}, {2, 11.0, 3e-3, -170.0}, {3, 12.0, 2e-3, -160.0}}));
   const std::vector<FitPoint> p = data_points(d, tables);
   ASSERT_EQ(p.size(), 4u);
@@ -60,7 +56,7 @@ TEST_F(CurveIdentification, HysteresisPointsUseTheBranchMovingTheSameWay) {
     rows.push_back({static_cast<double>(k + 1), std::cos(theta), std::sin(theta) < 0 ? 1.0 : -1.0});
   }
   ResultTables tables;
-  tables.emplace("hysteresis", table("hysteresis", {"instant", "relative_tangential_m", "tangential_force_n"}, rows));
+  tables.emplace("hysteresis", table_from_rows("hysteresis", {"instant", "relative_tangential_m", "tangential_force_n"}, rows));
   std::string csv = "relative_displacement [m],tangential_force [N]\n";
   for (int k = 0; k < 16; ++k) {
     const double theta = 2 * std::numbers::pi * (k + 0.5) / 16.0;
@@ -89,7 +85,7 @@ TEST_F(CurveIdentification, PeaksAreMatchedByForceLevel) {
   d.table = "peaks";
   d.columns = {{"force", "fe_n"}, {"frequency", "peak_hz"}, {"amplitude", "peak_amp_per_n"}};
   ResultTables tables;
-  tables.emplace("peaks", table("peaks", {"level", "fe_n", "peak_hz", "peak_amp_per_n"}, {{1, 0.1, 224.0, 3.6e-5}, {2, 3.0, 171.0, 4.1e-5}}));
+  tables.emplace("peaks", table_from_rows("peaks", {"level", "fe_n", "peak_hz", "peak_amp_per_n"}, {{1, 0.1, 224.0, 3.6e-5}, {2, 3.0, 171.0, 4.1e-5}}));
   const std::vector<FitPoint> p = data_points(d, tables);
   ASSERT_EQ(p.size(), 4u);
   EXPECT_DOUBLE_EQ(p[0].computed, 171.0);

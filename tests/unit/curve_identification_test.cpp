@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "identify/fit_points.hpp"
+#include "data_block.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -19,11 +20,7 @@ class CurveIdentification : public test::TempFolderTest {};
 
 TEST_F(CurveIdentification, FrfPointsInterpolateTheComputedCurveAndWrapPhases) {
   write("# example\nfrequency [Hz],amplitude [mm],phase [deg]\n10.5,2.0,179\n11.0,3.0,-179\n", "frf.csv");
-  CalibrationData d;
-  d.name = "rig";
-  d.data = read_measured_data(dir_ / "frf.csv", DataKind::frf);
-  d.table = "frf_1";
-  d.columns = {{"frequency", "frequency_hz"}, {"amplitude", "A.x_amp_m"}, {"phase", "A.x_phase_deg"}};
+  CalibrationData d = test::frf_block(dir_ / "frf.csv");
   ResultTables tables;
   tables.emplace("frf_1", table_from_rows("frf_1", {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg"},
                                 {{1, 10.0, 1e-3, 170.0}, {2, 11.0, 3e-3, -170.0}, {3, 12.0, 2e-3, -160.0}}));
@@ -63,11 +60,8 @@ TEST_F(CurveIdentification, HysteresisPointsUseTheBranchMovingTheSameWay) {
     csv += std::to_string(0.9 * std::cos(theta)) + ",0.5\n";
   }
   write(csv, "loop.csv");
-  CalibrationData d;
-  d.name = "loop";
-  d.data = read_measured_data(dir_ / "loop.csv", DataKind::hysteresis);
-  d.table = "hysteresis";
-  d.columns = {{"relative_displacement", "relative_tangential_m"}, {"tangential_force", "tangential_force_n"}};
+  const CalibrationData d = test::data_block(dir_ / "loop.csv", DataKind::hysteresis, "hysteresis",
+                                             {{"relative_displacement", "relative_tangential_m"}, {"tangential_force", "tangential_force_n"}});
   const std::vector<FitPoint> p = data_points(d, tables);
   ASSERT_EQ(p.size(), 16u);
   for (int k = 0; k < 16; ++k) {
@@ -79,11 +73,8 @@ TEST_F(CurveIdentification, HysteresisPointsUseTheBranchMovingTheSameWay) {
 
 TEST_F(CurveIdentification, PeaksAreMatchedByForceLevel) {
   write("force [N],frequency [Hz],amplitude [um/N]\n3,170,40\n0.1,225,35\n", "peaks.csv");
-  CalibrationData d;
-  d.name = "peaks";
-  d.data = read_measured_data(dir_ / "peaks.csv", DataKind::peaks);
-  d.table = "peaks";
-  d.columns = {{"force", "fe_n"}, {"frequency", "peak_hz"}, {"amplitude", "peak_amp_per_n"}};
+  CalibrationData d = test::data_block(dir_ / "peaks.csv", DataKind::peaks, "peaks",
+                                       {{"force", "fe_n"}, {"frequency", "peak_hz"}, {"amplitude", "peak_amp_per_n"}});
   ResultTables tables;
   tables.emplace("peaks", table_from_rows("peaks", {"level", "fe_n", "peak_hz", "peak_amp_per_n"}, {{1, 0.1, 224.0, 3.6e-5}, {2, 3.0, 171.0, 4.1e-5}}));
   const std::vector<FitPoint> p = data_points(d, tables);

@@ -22,6 +22,7 @@
 #include "identify/calibrate_case.hpp"
 #include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
+#include "data_block.hpp"
 #include "oscillator_case.hpp"
 #include "temp_folder.hpp"
 #include "two_blade_rom_case.hpp"
@@ -170,11 +171,7 @@ TEST_F(HbmFrfSensitivity, UnsupportedPathsAreRefusedWithTheirLine) {
 
 TEST_F(HbmFrfSensitivity, FrfPointGradientsInterpolateTheDlogColumnsInSiOverSigma) {
   write("frequency [Hz],amplitude [mm],phase [deg]\n10.5,2.0,10\n", "frf.csv");
-  CalibrationData d;
-  d.name = "rig";
-  d.data = read_measured_data(dir_ / "frf.csv", DataKind::frf);
-  d.table = "frf_1";
-  d.columns = {{"frequency", "frequency_hz"}, {"amplitude", "A.x_amp_m"}, {"phase", "A.x_phase_deg"}};
+  const CalibrationData d = test::frf_block(dir_ / "frf.csv");
   ResultTables tables;
   tables.emplace("frf_1", table_from_rows("frf_1", {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg", "A.x_amp_m_dlog_k", "A.x_phase_deg_dlog_k"},
                                           {{1, 10.0, 1e-3, 0.0, 2e-3, 30.0}, {2, 11.0, 3e-3, 20.0, 4e-3, 90.0}}));

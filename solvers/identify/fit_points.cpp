@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "common/errors.hpp"
@@ -36,6 +37,9 @@ double sigma_of(const MeasuredData& m, const std::string& column, Index row, dou
 std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t) {
   const MeasuredData& m = d.data;
   const Eigen::VectorXd force = result_column(d, t, "force");
+  std::map<std::string, Eigen::VectorXd> computed;  // the fitted columns, read once
+  for (const char* q : {"frequency", "amplitude"})
+    if (d.columns.count(q)) computed[q] = result_column(d, t, q);
   std::vector<FitPoint> points;
   for (Index i = 0; i < m.rows(); ++i) {
     const double f = m.column("force")[i];
@@ -48,7 +52,7 @@ std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t
       const bool is_frequency = std::string(q) == "frequency";
       const double measured = m.column(q)[i];
       const double sigma = sigma_of(m, q, i, (is_frequency ? d.frequency_uncertainty : d.amplitude_uncertainty) * measured);
-      points.push_back({d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, result_column(d, t, q)[row], sigma, false, {}});
+      points.push_back({d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, computed.at(q)[row], sigma, false, {}});
     }
   }
   return points;
@@ -82,6 +86,20 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
     if (!(f[r] > f[r - 1]))
       throw InputError(fmt::format("{}: calibration data '{}': the frequencies of table '{}' do not increase (row {}); use a grid sweep",
                                    d.at.where(), d.name, d.table, r + 1));
+  // The fitted columns and their sensitivities, read once for all rows.
+  struct Fitted {
+    Eigen::VectorXd y;
+    std::vector<Eigen::VectorXd> dlog;
+  };
+  std::map<std::string, Fitted> fitted;
+  for (const char* q : {"amplitude", "phase"}) {
+    if (!d.columns.count(q)) continue;
+    Fitted& c = fitted[q];
+    c.y = result_column(d, t, q);
+    if (std::string(q) == "phase")  // unwrap so the interpolation does not cross a 2 pi jump
+      for (Index r = 1; r < c.y.size(); ++r) c.y[r] = c.y[r - 1] + wrap_angle(c.y[r] - c.y[r - 1]);
+    c.dlog = dlog_columns(d, t, q, parameters);
+  }
   std::vector<FitPoint> points;
   for (Index i = 0; i < m.rows(); ++i) {
     const double fq = m.column("frequency")[i];
@@ -93,16 +111,14 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
       if (!d.columns.count(q)) continue;
       const bool phase = std::string(q) == "phase";
       const double measured = m.column(q)[i];
-      Eigen::VectorXd y = result_column(d, t, q);
-      if (phase)  // unwrap so the interpolation does not cross a 2 pi jump
-        for (Index r = 1; r < y.size(); ++r) y[r] = y[r - 1] + wrap_angle(y[r] - y[r - 1]);
+      const Fitted& c = fitted.at(q);
       const double sigma = sigma_of(m, q, i, phase ? d.phase_uncertainty : d.amplitude_uncertainty * measured);
       const double at = std::clamp(fq, f[0], f[f.size() - 1]);
       // Linear in the table's values, so the interpolated derivative is the derivative of the
       // interpolation (the unwrapping adds constants only).
       std::vector<double> gradient;
-      for (const Eigen::VectorXd& dy : dlog_columns(d, t, q, parameters)) gradient.push_back(interpolate(f, dy, at) / sigma);
-      points.push_back({d.name, fmt::format("{} at {:.6g} Hz", q, fq), q, fq, measured, interpolate(f, y, at), sigma, phase, std::move(gradient)});
+      for (const Eigen::VectorXd& dy : c.dlog) gradient.push_back(interpolate(f, dy, at) / sigma);
+      points.push_back({d.name, fmt::format("{} at {:.6g} Hz", q, fq), q, fq, measured, interpolate(f, c.y, at), sigma, phase, std::move(gradient)});
     }
   }
   return points;

@@ -8,6 +8,7 @@
 
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
+#include "linalg/inertia.hpp"
 
 namespace bb {
 
@@ -40,15 +41,17 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   result.n_free_dofs = dofs.n_free;
   const auto t1 = std::chrono::steady_clock::now();
   result.assembly_seconds = system.assembly_seconds;
-  // A band is found from below: double the mode count until the band's top is passed. The
-  // negative shift keeps one Cholesky factor valid; the cost is a few Lanczos restarts.
-  ModalSolution sol = lowest_modes(system.stiffness, system.mass, options);
+  // A band is sized by the Sturm count at its top: exactly the modes below f_max are asked for.
   const double two_pi = 2 * std::numbers::pi;
-  while (selection.band_max_hz && std::sqrt(std::max(sol.eigenvalues.maxCoeff(), 0.0)) / two_pi < *selection.band_max_hz &&
-         options.n_modes < dofs.n_free - 1) {
-    options.n_modes = std::min(2 * options.n_modes, dofs.n_free - 1);
-    sol = lowest_modes(system.stiffness, system.mass, options);
+  if (selection.band_max_hz) {
+    const InertiaCount below = eigenvalues_below(system.stiffness, system.mass, std::pow(two_pi * *selection.band_max_hz, 2),
+                                                 options.ordering);
+    if (!below.ok) throw SolverError(fmt::format("modal band: Sturm count at {} Hz: {}", *selection.band_max_hz, below.message));
+    if (below.negative >= dofs.n_free)
+      throw InputError(fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));
+    options.n_modes = std::max(below.negative, 1);
   }
+  ModalSolution sol = lowest_modes(system.stiffness, system.mass, options);
   if (selection.band_min_hz || selection.band_max_hz) {
     std::vector<Eigen::Index> keep;
     for (Eigen::Index i = 0; i < sol.eigenvalues.size(); ++i) {
@@ -66,6 +69,12 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   }
   result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   result.iterations = sol.iterations;
+  result.lanczos_runs = sol.lanczos_runs;
+  result.sturm_count = sol.sturm_count;
+  result.sturm_frequency_hz = std::sqrt(std::max(sol.sturm_shift, 0.0)) / two_pi;
+  result.sturm_seconds = sol.sturm_seconds;
+  for (Eigen::Index k = 0; k < sol.eigenvalues.size(); ++k)
+    result.rigid_body_modes += sol.eigenvalues[k] < 1e-8 * sol.eigenvalues.maxCoeff() ? 1 : 0;
   result.max_residual = sol.max_residual;
   result.frequencies_hz = sol.eigenvalues.array().max(0.0).sqrt() / (2 * std::numbers::pi);
   result.effective_mass_fraction.resize(sol.shapes.cols(), mesh.dim);

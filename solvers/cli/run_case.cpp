@@ -232,6 +232,14 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
                                                                    : fmt::format("lowest {} modes", sel.lowest)));
     run.facts.emplace_back("free DOFs", std::to_string(modal->n_free_dofs));
     run.facts.emplace_back("Lanczos iterations", std::to_string(modal->iterations));
+    run.facts.emplace_back("completeness (Sturm count of K - sigma M)",
+                           modal->sturm_count < 0
+                               ? std::string("not checked (every mode found is a rigid-body mode)")
+                               : fmt::format("{} modes below {:.6g} Hz, all found ({} Lanczos run{}, count {:.3f} s)", modal->sturm_count,
+                                             modal->sturm_frequency_hz, modal->lanczos_runs, modal->lanczos_runs > 1 ? "s" : "",
+                                             modal->sturm_seconds));
+    if (modal->rigid_body_modes > 0)
+      run.facts.emplace_back("rigid-body modes (free model)", std::to_string(modal->rigid_body_modes));
     run.facts.emplace_back("max eigen-residual (backward error)", fmt::format("{:.3e}", modal->max_residual));
     run.facts.emplace_back("assembly / eigensolve [s]", fmt::format("{:.4f} / {:.4f}", modal->assembly_seconds, modal->solve_seconds));
     if (spec.analysis.pairs) {

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "common/errors.hpp"
+#include "linalg/inertia.hpp"
 #include "linalg/spd_factor.hpp"
 
 namespace bb {
@@ -38,6 +40,77 @@ class ShiftInvertOp {
   SpdFactorization factor_;
 };
 
+// One Lanczos run for the lowest `nev` modes with `ncv` vectors; shapes mass-normalized.
+ModalSolution lanczos_run(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                          const ModalOptions& options, int nev, int ncv) {
+  const double sigma = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
+  ShiftInvertOp op(stiffness, mass, options.ordering);
+  Spectra::SparseSymMatProd<double> bop(mass);
+  Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert>
+      eigs(op, bop, nev, ncv, sigma);
+  eigs.init();
+  const auto found = eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
+                                  Spectra::SortRule::SmallestAlge);
+  if (eigs.info() != Spectra::CompInfo::Successful || found < nev) {
+    throw SolverError(fmt::format("Lanczos found {} of {} modes in {} iterations (tolerance {:.1e})", found, nev,
+                                  eigs.num_iterations(), options.tolerance));
+  }
+  ModalSolution sol;
+  sol.eigenvalues = eigs.eigenvalues();
+  sol.shapes = eigs.eigenvectors();
+  sol.iterations = static_cast<int>(eigs.num_iterations());
+  sol.converged_modes = static_cast<int>(found);
+  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k)
+    sol.shapes.col(k) /= std::sqrt(sol.shapes.col(k).dot(mass * sol.shapes.col(k)));
+  return sol;
+}
+
+double norm1(const Eigen::SparseMatrix<double>& a) {
+  double best = 0.0;
+  for (int c = 0; c < a.outerSize(); ++c) {
+    double sum = 0.0;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it) sum += std::abs(it.value());
+    best = std::max(best, sum);
+  }
+  return best;
+}
+
+// Normwise backward error, meaningful for rigid-body modes too (where K x ~ 0).
+double max_backward_error(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                          const ModalSolution& sol) {
+  const double k_norm = norm1(stiffness), m_norm = norm1(mass);
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k) {
+    const Eigen::VectorXd kx = stiffness * sol.shapes.col(k);
+    const double scale = (k_norm + std::abs(sol.eigenvalues[k]) * m_norm) * sol.shapes.col(k).norm();
+    const double res = (kx - sol.eigenvalues[k] * (mass * sol.shapes.col(k))).norm() / std::max(scale, 1e-300);
+    worst = std::max(worst, res);
+  }
+  return worst;
+}
+
+// The shift at which the Sturm count is taken: just above the n-th eigenvalue, so that a repeated
+// eigenvalue there is counted whole. When the n-th mode is a rigid-body mode (lambda ~ 0, where the
+// count would hinge on rounding), a small fraction of the first elastic eigenvalue found; nullopt
+// when none was found (every computed mode is rigid: nothing to separate).
+std::optional<double> count_shift(const Eigen::VectorXd& eigenvalues, int n, double cluster_tolerance) {
+  const double top = eigenvalues.maxCoeff();
+  if (!(top > 0.0)) return std::nullopt;
+  const double lambda_n = eigenvalues[n - 1];
+  const double rigid = 1e-8 * top;
+  if (std::abs(lambda_n) > rigid) return lambda_n + cluster_tolerance * std::abs(lambda_n);
+  for (Eigen::Index k = n; k < eigenvalues.size(); ++k)
+    if (eigenvalues[k] > rigid) return 1e-3 * eigenvalues[k];
+  return std::nullopt;
+}
+
+ModalSolution first_modes(ModalSolution sol, int count) {
+  sol.eigenvalues.conservativeResize(count);
+  sol.shapes.conservativeResize(Eigen::NoChange, count);
+  sol.converged_modes = count;
+  return sol;
+}
+
 }  // namespace
 
 ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
@@ -47,45 +120,47 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
   if (options.n_modes >= n) {
     throw SolverError(fmt::format("asked for {} modes of a model with only {} free DOFs", options.n_modes, n));
   }
-  const double sigma = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
-  const int ncv = static_cast<int>(std::min<Eigen::Index>(
-      n, options.subspace_size > 0 ? options.subspace_size : std::max(2 * options.n_modes + 1, 20)));
-  ShiftInvertOp op(stiffness, mass, options.ordering);
-  Spectra::SparseSymMatProd<double> bop(mass);
-  Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert>
-      eigs(op, bop, options.n_modes, ncv, sigma);
-  eigs.init();
-  const auto found = eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
-                                  Spectra::SortRule::SmallestAlge);
-  if (eigs.info() != Spectra::CompInfo::Successful || found < options.n_modes) {
-    throw SolverError(fmt::format("Lanczos found {} of {} modes in {} iterations (tolerance {:.1e})", found,
-                                  options.n_modes, eigs.num_iterations(), options.tolerance));
-  }
-  ModalSolution sol;
-  sol.eigenvalues = eigs.eigenvalues();
-  sol.shapes = eigs.eigenvectors();
-  sol.iterations = static_cast<int>(eigs.num_iterations());
-  sol.converged_modes = static_cast<int>(found);
-  // Normwise backward error, meaningful for rigid-body modes too (where K x ~ 0).
-  auto norm1 = [](const Eigen::SparseMatrix<double>& a) {
-    double best = 0.0;
-    for (int c = 0; c < a.outerSize(); ++c) {
-      double sum = 0.0;
-      for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it) sum += std::abs(it.value());
-      best = std::max(best, sum);
-    }
-    return best;
+  const int most = static_cast<int>(n) - 1;  // Spectra needs nev < n
+  auto vectors = [&](int nev, int run) {
+    const int base = options.subspace_size > 0 ? options.subspace_size : std::max(2 * nev + 1, 20);
+    return static_cast<int>(std::min<Eigen::Index>(n, run == 0 ? base : std::max(base, 2 * nev + 1) + 10 * run));
   };
-  const double k_norm = norm1(stiffness), m_norm = norm1(mass);
-  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k) {
-    const double modal_mass = sol.shapes.col(k).dot(mass * sol.shapes.col(k));
-    sol.shapes.col(k) /= std::sqrt(modal_mass);
-    const Eigen::VectorXd kx = stiffness * sol.shapes.col(k);
-    const double scale = (k_norm + std::abs(sol.eigenvalues[k]) * m_norm) * sol.shapes.col(k).norm();
-    const double res = (kx - sol.eigenvalues[k] * (mass * sol.shapes.col(k))).norm() / std::max(scale, 1e-300);
-    sol.max_residual = std::max(sol.max_residual, res);
+  int nev = options.n_modes;
+  double sturm_seconds = 0.0;
+  for (int run = 0;; ++run) {
+    ModalSolution sol = lanczos_run(stiffness, mass, options, nev, vectors(nev, run));
+    sol.lanczos_runs = run + 1;
+    const std::optional<double> cut =
+        options.verify_count ? count_shift(sol.eigenvalues, options.n_modes, options.cluster_tolerance) : std::nullopt;
+    if (!cut) {
+      sol = first_modes(std::move(sol), options.n_modes);
+      sol.max_residual = max_backward_error(stiffness, mass, sol);
+      return sol;
+    }
+    InertiaCount count = eigenvalues_below(stiffness, mass, *cut, options.ordering);
+    double shift = *cut;
+    if (!count.ok) {  // the shift hit an eigenvalue to the last bit: move it a little
+      shift = *cut + options.cluster_tolerance * std::abs(*cut);
+      count = eigenvalues_below(stiffness, mass, shift, options.ordering);
+    }
+    sturm_seconds += count.seconds;
+    if (!count.ok) throw SolverError(fmt::format("modal completeness check at {:.6g} rad^2/s^2: {}", shift, count.message));
+    const auto found = static_cast<int>((sol.eigenvalues.array() <= shift).count());
+    if (found == count.negative || run == options.max_reruns || nev >= most) {
+      if (found != count.negative)
+        throw SolverError(fmt::format("Lanczos found {} eigenvalues below {:.6g} Hz but the Sturm count of K - sigma M "
+                                      "is {} after {} runs: a mode would be missing", found,
+                                      std::sqrt(std::max(shift, 0.0)) / (2 * std::numbers::pi), count.negative, run + 1));
+      sol = first_modes(std::move(sol), std::max(options.n_modes, count.negative));
+      sol.sturm_count = count.negative;
+      sol.sturm_shift = shift;
+      sol.sturm_seconds = sturm_seconds;
+      sol.max_residual = max_backward_error(stiffness, mass, sol);
+      return sol;
+    }
+    // Missed modes (or a cluster that straddles the n-th): ask for all of them, and a margin.
+    nev = std::min(std::max(count.negative, found) + 2, most);
   }
-  return sol;
 }
 
 }  // namespace bb

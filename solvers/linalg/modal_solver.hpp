@@ -16,6 +16,14 @@ struct ModalOptions {
   double tolerance = 1e-10;
   int subspace_size = 0;  // Lanczos vectors; 0 = max(2 n + 1, 20)
   FillOrdering ordering = FillOrdering::amd;
+  // Lanczos can miss one member of a repeated eigenvalue (its start vector has no component in
+  // that direction, up to rounding). The Sturm count of K - sigma M at the cut proves or refutes
+  // completeness; a refuted run is repeated with more vectors until the count agrees.
+  bool verify_count = true;
+  // Eigenvalues within this relative distance of the n-th count as one cluster: a repeated
+  // eigenvalue that straddles the requested count is returned whole.
+  double cluster_tolerance = 1e-6;
+  int max_reruns = 6;
 };
 
 struct ModalSolution {
@@ -24,9 +32,17 @@ struct ModalSolution {
   int iterations = 0;
   int converged_modes = 0;
   double max_residual = 0.0;     // max_k ||K x - w^2 M x|| / ((||K|| + w^2 ||M||) ||x||)
+  // Completeness: eigenvalues below sturm_shift by the inertia of K - sturm_shift M (-1 = not
+  // checked), Lanczos runs needed to find them all, and the cost of the counts.
+  int sturm_count = -1;
+  double sturm_shift = 0.0;      // [rad^2/s^2]
+  int lanczos_runs = 0;
+  double sturm_seconds = 0.0;
 };
 
-// Throws SolverError when Lanczos does not converge or the shifted matrix cannot be factored.
+// The lowest options.n_modes modes, or more when a repeated eigenvalue straddles the n-th (the whole
+// cluster is returned). Throws SolverError when Lanczos does not converge, the shifted matrix cannot
+// be factored, or the Sturm count still disagrees after max_reruns larger runs.
 ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
                            const Eigen::SparseMatrix<double>& mass, const ModalOptions& options);
 

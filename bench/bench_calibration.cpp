@@ -18,7 +18,10 @@
 #include <unistd.h>
 #include <vector>
 
-#include "analysis/case_results.hpp"
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "model/build_model.hpp"
 #include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
 
@@ -73,7 +76,7 @@ const Problem& problem() {
     std::string text = kCase;
     {
       const bb::CaseSpec spec = bb::parse_case_table(toml::parse(text), out.file);
-      const bb::CaseResults r = bb::compute_case_results(spec, bb::build_model(spec));
+      const bb::AnalysisResults r = bb::run_analysis(spec.analysis, bb::build_model(spec.model));
       bb::SyntheticOptions o;
       o.kind = bb::DataKind::frf;
       o.noise = 0.02;
@@ -98,7 +101,7 @@ const Problem& problem() {
 
 std::vector<bb::FitPoint> points(const toml::table& t, const Problem& p, bool gradients) {
   const bb::CaseSpec spec = bb::parse_case_table(t, p.file);
-  const bb::CaseResults r = bb::compute_case_results(spec, bb::build_model(spec));
+  const bb::AnalysisResults r = bb::run_analysis(spec.analysis, bb::build_model(spec.model));
   std::vector<bb::FitPoint> out;
   for (const bb::CalibrationData& d : p.cal.data) {
     const auto e = bb::data_points(d, r.tables, gradients ? p.paths : std::vector<std::string>{});

@@ -13,6 +13,7 @@
 
 #include "analysis/frf_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "model/build_model.hpp"
 #include "frf/sweep.hpp"
 
 namespace {
@@ -29,14 +30,14 @@ const Scene& scene() {
   static const Scene s = [] {
     Scene out;
     out.spec = bb::parse_case_file("cases/thesis/table08_linear_frf.toml");
-    bb::RomSpec modal = out.spec.analysis.frf.roms.front();
+    bb::RomSpec modal = std::get<bb::FrfSpec>(out.spec.analysis).roms.front();
     modal.name = "rom_modal";
     modal.method = bb::RomSpec::Method::modal;
-    out.spec.analysis.frf.roms.push_back(modal);
-    out.model = bb::build_model(out.spec);
+    std::get<bb::FrfSpec>(out.spec.analysis).roms.push_back(modal);
+    out.model = bb::build_model(out.spec.model);
     std::fprintf(stderr, "preparing the Table VIII models (modes, residual flexibility, two reductions)...\n");
-    out.prepared = bb::prepare_frf(out.model, out.spec.analysis.frf, std::nullopt);
-    const bb::FrfSpec& f = out.spec.analysis.frf;
+    out.prepared = bb::prepare_frf(out.model, std::get<bb::FrfSpec>(out.spec.analysis));
+    const bb::FrfSpec& f = std::get<bb::FrfSpec>(out.spec.analysis);
     out.grid = bb::fixed_grid(f.f_min, f.f_max, f.step);
     return out;
   }();

@@ -320,7 +320,7 @@ struct PreparedFrf {
   double full_setup_seconds = 0.0;
 };
 
-std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs) {
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec) {
   auto p = std::make_shared<PreparedFrf>();
   // A model of matrices only has no mesh to assemble.
   FreeSystem system;
@@ -344,7 +344,7 @@ std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec
     ModalOptions options;
     options.ordering = ordering_for_dimension(model.mesh.dim);
     p->full_modal = solve_modal(model, system, lowest, options);
-    if (pairs) p->labels = label_mode_pairs(model, *p->full_modal, *pairs);
+    if (spec.pairs) p->labels = label_mode_pairs(model, *p->full_modal, *spec.pairs);
     p->full = full_response(model, system, spec, *p->full_modal);
     p->full_setup_seconds = seconds_since(t0);
     std::vector<std::string> outputs;
@@ -446,8 +446,8 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
   return o;
 }
 
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs) {
-  return sweep_frf(*prepare_frf(model, spec, pairs), spec);
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec) {
+  return sweep_frf(*prepare_frf(model, spec), spec);
 }
 
 }  // namespace bb

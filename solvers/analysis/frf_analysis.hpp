@@ -54,7 +54,7 @@ Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& mo
 // The models of an analysis made ready to respond (modes, residual flexibility, reductions):
 // the expensive part, done once. Throws as run_frf.
 struct PreparedFrf;
-std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs);
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec);
 const std::vector<FrfCurveSet>& frf_curves(const PreparedFrf& prepared);
 // The outputs of model `curve` (an index into frf_curves) at one frequency, for the spec's forces.
 Eigen::VectorXcd frf_respond(const PreparedFrf& prepared, size_t curve, double frequency_hz);
@@ -63,6 +63,6 @@ FrfOutcome sweep_frf(const PreparedFrf& prepared, const FrfSpec& spec);
 
 // prepare_frf + sweep_frf. Throws InputError for points that are not one-node sets, constrained DOFs, masters that repeat,
 // responses or forces a reduced model does not hold; SolverError from the solvers.
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const std::optional<ModePairSpec>& pairs);
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec);
 
 }  // namespace bb

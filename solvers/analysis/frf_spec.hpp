@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/modal_spec.hpp"
 #include "model/model.hpp"
 #include "reduction/reduced_model.hpp"
 
@@ -61,6 +62,7 @@ struct FrfSpec {
   // that symmetry makes exactly zero.
   double peak_floor = 1e-8;
   double match_tolerance = 0.10;    // a peak names a mode within this relative distance
+  std::optional<ModePairSpec> pairs;  // labels of the full mesh's modes (in-phase / out-of-phase, type)
 };
 
 }  // namespace bb

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <complex>
 #include <numbers>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include "analysis/modal_analysis.hpp"
 #include "common/errors.hpp"
 #include "frf/receptance.hpp"
+#include "frf/sweep.hpp"
 #include "hbm/sensitivity.hpp"
 
 namespace bb {
@@ -106,21 +108,18 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
   hbm::HbmSolution best = solve(pts[static_cast<size_t>(k)].omega);
   const bool interior = k > 0 && k + 1 < static_cast<Index>(pts.size());
   if (interior) {
-    double a = pts[static_cast<size_t>(k - 1)].omega, b = pts[static_cast<size_t>(k + 1)].omega;
+    const double a = pts[static_cast<size_t>(k - 1)].omega, b = pts[static_cast<size_t>(k + 1)].omega;
     if ((pts[static_cast<size_t>(k)].omega - a) * (b - pts[static_cast<size_t>(k)].omega) > 0) {  // no fold here
-      const double g = (std::sqrt(5.0) - 1) / 2;
+      std::map<double, hbm::HbmSolution> solved;
+      const auto component = [&](double omega) -> std::optional<double> {
+        const hbm::HbmSolution& s = solved.emplace(omega, solve(omega)).first->second;
+        return s.converged ? std::optional<double>(value(s).component) : std::nullopt;
+      };
+      const GoldenSearch search = golden_section_maximum(component, a, b, 14);
       double best_value = best.converged ? value(best).component : -1.0;
-      double c = b - g * (b - a), d = a + g * (b - a);
-      hbm::HbmSolution sc = solve(c), sd = solve(d);
-      for (int it = 0; it < 14 && sc.converged && sd.converged; ++it) {
-        const double vc = value(sc).component, vd = value(sd).component;
-        if (vc > best_value) best = sc, best_value = vc;
-        if (vd > best_value) best = sd, best_value = vd;
-        if (vc > vd) {
-          b = d, d = c, sd = sc, c = b - g * (b - a), sc = solve(c);
-        } else {
-          a = c, c = d, sc = sd, d = a + g * (b - a), sd = solve(d);
-        }
+      for (double omega : search.compared) {
+        const hbm::HbmSolution& s = solved.at(omega);
+        if (const double v = value(s).component; v > best_value) best = s, best_value = v;
       }
     }
   }
@@ -139,12 +138,6 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
 
 std::string hbm_frf_table_name(double force) { return fmt::format("frf_{:g}", force); }
 
-std::vector<double> sweep_grid_hz(const HbmSweepSpec& s) {
-  const int n = static_cast<int>(std::floor((s.f_max - s.f_min) / s.step_hz + 1e-9)) + 1;
-  std::vector<double> f;
-  for (int i = 0; i < n; ++i) f.push_back(i + 1 == n ? s.f_max : s.f_min + i * s.step_hz);
-  return f;
-}
 
 Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model) {
   Eigen::MatrixXd k = model.stiffness;
@@ -270,29 +263,30 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, doubl
   return direct;
 }
 
-// d(model)/d(log p) for each path of spec.sensitivities (validated by the parser): scaling a unit
-// derivative by the parameter's value turns d/dp into d/d(log p).
+// d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
+// value turns d/dp into d/d(log p). The damper's contacts come first in the model.
 std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec, const hbm::HbmModel& m) {
   const size_t damper_contacts = p.damper ? p.damper->contacts.size() : 0;
   std::vector<hbm::ModelDerivative> out;
-  for (const std::string& path : spec.sensitivities) {
-    if (path == "analysis.modal_damping") {  // C = zeta C1: dC/d(log zeta) = C
+  for (const HbmParameter& parameter : spec.sensitivities) {
+    if (parameter.kind == HbmParameter::Kind::modal_damping) {  // C = zeta C1: dC/d(log zeta) = C
       out.push_back(hbm::damping_scale_derivative(m));
       continue;
     }
-    const std::string key = path.substr(path.rfind('.') + 1);
-    const bool damper = path.starts_with("analysis.damper.");
-    const size_t first = damper ? 0 : damper_contacts + std::stoul(path.substr(std::string("analysis.contact.").size()));
+    const bool damper = parameter.kind == HbmParameter::Kind::damper_law;
+    const size_t first = damper ? 0 : damper_contacts + parameter.contact;
     const size_t last = damper ? damper_contacts : first + 1;
     hbm::ModelDerivative d;
     d.laws.assign(m.contacts.size(), {});
     for (size_t k = first; k < last; ++k) {
       const contact::JenkinsParameters& law = m.contacts[k].law;
       contact::JenkinsParameters& dl = d.laws[k];
-      if (key == "kn") dl.kn = law.kn;
-      if (key == "kt") dl.kt = law.kt;
-      if (key == "mu") dl.mu = law.mu;
-      if (key == "n0") dl.n0 = law.n0;
+      switch (parameter.law) {
+        case contact::law_kn: dl.kn = law.kn; break;
+        case contact::law_kt: dl.kt = law.kt; break;
+        case contact::law_mu: dl.mu = law.mu; break;
+        case contact::law_n0: dl.n0 = law.n0; break;
+      }
     }
     out.push_back(std::move(d));
   }
@@ -370,7 +364,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     path = hbm::continue_in_frequency(system, c);
   } else {
     // Grid: every frequency solved from the secant extrapolation of the last two converged points.
-    const std::vector<double> grid = sweep_grid_hz(spec.sweep);
+    const std::vector<double> grid = fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz);
     const int n = static_cast<int>(grid.size());
     path.points.push_back({first.omega, first.x, first.residual, first.iterations, 0.0, 1.0});
     path.corrector_iterations = first.iterations;
@@ -518,9 +512,9 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
     for (const std::string& r : p.response_names) cols.push_back(r + "_phase_deg");
     if (p.ip_oop) cols.insert(cols.end(), {"ip_component_m", "oop_component_m"});
     cols.insert(cols.end(), {"residual_n", "iterations"});
-    for (const std::string& path : spec.sensitivities)
+    for (const HbmParameter& parameter : spec.sensitivities)
       for (const char* q : {"_amp_m_dlog_", "_phase_deg_dlog_"})
-        for (const std::string& r : p.response_names) cols.push_back(r + q + path);
+        for (const std::string& r : p.response_names) cols.push_back(r + q + parameter.label);
     std::vector<std::vector<double>> rows;
     for (size_t i = 0; i < level.path.points.size(); ++i) {
       std::vector<double> row = {static_cast<double>(i + 1), level.frequency_hz[i]};
@@ -592,17 +586,9 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
         };
         Index i = 0;
         lim.col(col).maxCoeff(&i);
-        double a = o.limit_frequency_hz[std::max<Index>(i - 1, 0)], b = o.limit_frequency_hz[std::min<Index>(i + 1, n_grid - 1)];
-        const double g = (std::sqrt(5.0) - 1) / 2;
-        double c = b - g * (b - a), d = a + g * (b - a);
-        double vc = value(c).component, vd = value(d).component;
-        for (int it = 0; it < 60 && b - a > 1e-12 * b; ++it) {
-          if (vc > vd) {
-            b = d, d = c, vd = vc, c = b - g * (b - a), vc = value(c).component;
-          } else {
-            a = c, c = d, vc = vd, d = a + g * (b - a), vd = value(d).component;
-          }
-        }
+        const double lo = o.limit_frequency_hz[std::max<Index>(i - 1, 0)], hi = o.limit_frequency_hz[std::min<Index>(i + 1, n_grid - 1)];
+        const GoldenSearch search = golden_section_maximum([&](double f) { return std::optional<double>(value(f).component); }, lo, hi, 60, 1e-12);
+        const double a = search.a, b = search.b;
         const double f = 0.5 * (a + b);
         row.insert(row.end(), {f, value(f).amplitude});
       }

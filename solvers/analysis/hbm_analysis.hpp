@@ -85,8 +85,6 @@ struct HbmOutcome {
 // limits, limit_peaks, damper_static.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
 
-// The frequencies of a grid sweep [Hz]: f_min, f_min + step, ..., and f_max last.
-std::vector<double> sweep_grid_hz(const HbmSweepSpec& sweep);
 
 // K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
 Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model);

@@ -11,6 +11,7 @@
 
 #include "analysis/frf_spec.hpp"
 #include "common/source_location.hpp"
+#include "contact/aft.hpp"
 #include "contact/jenkins_contact.hpp"
 
 namespace bb {
@@ -52,6 +53,16 @@ struct HbmSweepSpec {
   double initial_step = 0.01, max_step = 0.05, min_step = 1e-6;  // arclength, scaled (hbm::ContinuationOptions)
 };
 
+// A parameter of the model whose exact log-sensitivity the analysis adds to its FRF tables
+// (hbm/sensitivity.hpp): one law parameter of one [[analysis.contact]] or of every damper contact,
+// or the modal damping ratio.
+struct HbmParameter {
+  enum class Kind { contact_law, damper_law, modal_damping } kind = Kind::modal_damping;
+  size_t contact = 0;                             // contact_law: index into HbmSpec::contacts
+  contact::LawParameter law = contact::law_kt;  // contact_law, damper_law
+  std::string label;                              // its case path, e.g. "analysis.contact.0.kt": names the columns
+};
+
 struct HbmSpec {
   RomSpec model;                     // the linear part: masters / file / matrices
   FrfDamping damping;                // on the linear model's modes (the damper is undamped)
@@ -70,11 +81,13 @@ struct HbmSpec {
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.
   int max_iterations = 20;
   HbmSweepSpec sweep;
-  // Case paths whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp), by
-  // hbm/sensitivity.hpp: "analysis.contact.<i>.{kn,kt,mu,n0}", "analysis.damper.{kt,mu}",
-  // "analysis.modal_damping". Empty = none.
-  std::vector<std::string> sensitivities;
+  // Parameters whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp). Empty = none.
+  std::vector<HbmParameter> sensitivities;
   SourceLocation at;                 // of [analysis], for errors found when the model is built
 };
+
+// Why the analysis cannot differentiate `parameter` (no such contact, no damper, damping that is not
+// one modal ratio), or nullopt when it can.
+std::optional<std::string> unsupported_sensitivity(const HbmSpec& spec, const HbmParameter& parameter);
 
 }  // namespace bb

@@ -44,8 +44,7 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   // A band is sized by the Sturm count at its top: exactly the modes below f_max are asked for.
   const double two_pi = 2 * std::numbers::pi;
   if (selection.band_max_hz) {
-    const InertiaCount below = eigenvalues_below(system.stiffness, system.mass, std::pow(two_pi * *selection.band_max_hz, 2),
-                                                 options.ordering);
+    const InertiaCount below = eigenvalues_below(system.stiffness, system.mass, std::pow(two_pi * *selection.band_max_hz, 2));
     if (!below.ok) throw SolverError(fmt::format("modal band: Sturm count at {} Hz: {}", *selection.band_max_hz, below.message));
     if (below.negative >= dofs.n_free)
       throw InputError(fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/modal_spec.hpp"
 #include "assembly/dof_map.hpp"
 #include "linalg/modal_solver.hpp"
 #include "model/model.hpp"
@@ -11,12 +12,6 @@
 
 namespace bb {
 
-// Which modes a modal analysis returns.
-struct ModeSelection {
-  int lowest = 6;                      // the lowest n modes, when no band is given
-  std::optional<double> band_min_hz;   // all modes with band_min_hz <= f <= band_max_hz
-  std::optional<double> band_max_hz;
-};
 
 struct ModalResult {
   Eigen::VectorXd frequencies_hz;

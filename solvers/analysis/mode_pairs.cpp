@@ -70,6 +70,16 @@ std::string in_or_out_of_phase(const Eigen::Vector3d& left, const Eigen::Vector3
 
 }  // namespace
 
+void check_mode_pair_sets(const Model& model, const ModePairSpec& spec) {
+  if (model.mesh.dim != 3) throw InputError(fmt::format("{}: [analysis.pairs] needs a solid (3D) mesh", spec.at.where()));
+  for (const std::string* name : {&spec.left, &spec.right, &spec.left_tip, &spec.right_tip})
+    if (!model.node_sets.count(*name)) throw InputError(fmt::format("{}: unknown node set '{}'", spec.at.where(), *name));
+  for (const std::string* name : {&spec.left, &spec.right})
+    if (model.node_sets.at(*name).size() != 1)
+      throw InputError(fmt::format("{}: [analysis.pairs]: set '{}' must hold exactly one node, it holds {}", spec.at.where(),
+                                   *name, model.node_sets.at(*name).size()));
+}
+
 std::vector<ModeLabel> label_mode_pairs(const Model& model, const ModalResult& modal, const ModePairSpec& spec) {
   const Mesh& mesh = model.mesh;
   if (mesh.dim != 3) throw InputError("'analysis.pairs' needs a solid (3D) mesh");

@@ -9,18 +9,16 @@
 #include <vector>
 
 #include "analysis/modal_analysis.hpp"
+#include "analysis/modal_spec.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
 
 namespace bb {
 
-struct ModePairSpec {
-  std::string left;       // single-node set on body 1 (e.g. "T1", the tip centre)
-  std::string right;      // single-node set on body 2 at the corresponding place ("T2")
-  Direction direction = 0;  // component compared for IP / OOP, unless the nodes hardly move along it
-  std::string left_tip;   // node sets of the tip faces (blade axis along y): the mode type
-  std::string right_tip;
-};
+
+// Throws InputError (at spec.at) unless the mesh is 3D, every named set exists and left and right
+// hold one node each.
+void check_mode_pair_sets(const Model& model, const ModePairSpec& spec);
 
 struct ModeLabel {
   std::string pair;  // "IP", "OOP" or "-" (the two reference nodes at rest, or only one moving)

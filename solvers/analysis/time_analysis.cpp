@@ -1,5 +1,7 @@
 #include "analysis/time_analysis.hpp"
 
+#include "frf/sweep.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -23,19 +25,6 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-
-// The largest value of `v` and its frequency, refined by a parabola through its neighbours.
-std::pair<double, double> grid_peak(const std::vector<double>& f, const Eigen::VectorXd& v) {
-  Index k = 0;
-  if (v.size() == 0 || !v.allFinite()) return {kNan, kNan};
-  v.maxCoeff(&k);
-  if (k == 0 || k + 1 == v.size()) return {f[static_cast<size_t>(k)], v[k]};
-  const double y0 = v[k - 1], y1 = v[k], y2 = v[k + 1], h = f[static_cast<size_t>(k + 1)] - f[static_cast<size_t>(k)];
-  const double denom = y0 - 2 * y1 + y2;
-  if (denom >= 0) return {f[static_cast<size_t>(k)], y1};
-  const double s = 0.5 * (y0 - y2) / denom;
-  return {f[static_cast<size_t>(k)] + s * h, y1 - 0.25 * (y0 - y2) * s};
-}
 
 // The energy a contact's loop encloses over the recorded samples: sum of T du by the trapezoid rule.
 double loop_work(const std::vector<timeint::ContactSample>& s) {
@@ -68,7 +57,7 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   options.tolerance = spec.steady_tolerance;
   options.max_cycles = spec.max_cycles;
   options.newmark.alpha = spec.alpha;
-  const std::vector<double> frequencies = sweep_grid_hz(spec.system.sweep);
+  const std::vector<double> frequencies = fixed_grid(spec.system.sweep.f_min, spec.system.sweep.f_max, spec.system.sweep.step_hz);
   const auto nf = static_cast<Index>(frequencies.size());
   const auto nr = static_cast<Index>(p.responses.size());
 
@@ -186,7 +175,8 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
       std::vector<double> prow = {static_cast<double>(l + 1), level.force};
       for (size_t k = 0; k < kinds.size(); ++k) {
         const Eigen::VectorXd values = pair ? Eigen::VectorXd(components.col(static_cast<Index>(k))) : Eigen::VectorXd(amplitude.col(0));
-        const auto [f, v] = grid_peak(frequencies, values);
+        const Peak sample_peak = largest_sample(frequencies, values);
+        const double f = sample_peak.frequency_hz, v = sample_peak.amplitude;
         const Index right = pair ? pair->second : 0;
         Index at = 0;
         if (std::isfinite(f)) at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));

@@ -1,5 +1,7 @@
 #include "assembly/assemble.hpp"
 
+#include "mesh/element_topology.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -107,15 +109,12 @@ std::vector<double> consistent_edge_weights(const Mesh& mesh, const std::vector<
   std::vector<char> in_set(mesh.n_nodes(), 0);
   for (int n : set_nodes) in_set[n] = 1;
   std::set<std::pair<int, int>> edges;
-  for (const auto& b : mesh.blocks) {
-    const int nn = nodes_per_element(b.type);
-    for (Eigen::Index e = 0; e < b.conn.rows(); ++e) {
-      for (int a = 0; a < nn; ++a) {
-        const int p = b.conn(e, a), q = b.conn(e, (a + 1) % nn);
+  for (const auto& b : mesh.blocks)
+    for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
+      for (const auto& [i, j] : topology(b.type).edges) {
+        const int p = b.conn(e, i), q = b.conn(e, j);
         if (in_set[p] && in_set[q]) edges.insert({std::min(p, q), std::max(p, q)});
       }
-    }
-  }
   if (edges.empty())
     throw InputError(fmt::format("load split 'consistent' needs element edges in node set '{}', found none", set_name));
   std::vector<double> w(mesh.n_nodes(), 0.0);

@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <numbers>
 
-#include "cases/calibration_spec.hpp"
-#include "cases/toml_reader.hpp"
+#include "cases/case_parameter.hpp"
+#include "cases/parse_calibration.hpp"
+#include "common/toml_reader.hpp"
 #include "common/errors.hpp"
 
 namespace bb {
@@ -101,7 +102,6 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   TomlReader r(*section->as_table(), "calibration", file);
   CalibrationSpec c;
   c.at = r.location();
-  toml::table copy = root;  // node_at_path needs a mutable table
   int index = 0;
   for (const toml::node& n : r.array("parameters")) {
     if (!n.is_table()) r.fail("parameters", "write each parameter as { path = \"...\", lower = ..., upper = ... }");
@@ -111,9 +111,11 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     param.lower = p.positive("lower");
     param.upper = p.positive("upper");
     if (!(param.lower < param.upper)) p.fail("upper", "must exceed lower");
-    const toml::node* target = node_at_path(copy, param.path);
-    if (!target || !target->is_number()) p.fail("path", fmt::format("'{}' is not a number in the case file", param.path));
-    param.start = target->value<double>().value();
+    try {
+      param.start = parameter_value(spec, parse_parameter_path(param.path));
+    } catch (const std::invalid_argument& e) {
+      p.fail("path", e.what());
+    }
     if (param.start < param.lower || param.start > param.upper)
       p.fail("path", fmt::format("the case value {} of '{}' lies outside [{}, {}]", param.start, param.path, param.lower, param.upper));
     p.finish();

@@ -1,7 +1,7 @@
 // The keys of [analysis] for type = "contact_loop" (see cases/README.md, "Friction-contact test rig").
 #pragma once
 #include "analysis/contact_loop_spec.hpp"
-#include "cases/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace bb {
 

@@ -1,5 +1,7 @@
 #include "cases/parse_frf.hpp"
 
+#include "cases/parse_modal.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -176,6 +178,7 @@ FrfSpec parse_frf(TomlReader& r, const fs::path& folder) {
     }
   }
   if (!s.full_model && s.roms.empty()) r.fail("full_model", "with full_model = false, give at least one [[analysis.rom]]");
+  s.pairs = parse_mode_pairs(r);
   return s;
 }
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "analysis/frf_spec.hpp"
-#include "cases/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace bb {
 

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "cases/case_parameter.hpp"
 #include "cases/parse_frf.hpp"
 
 namespace bb {
@@ -92,34 +93,24 @@ DamperSpec parse_damper(TomlReader r) {
   return d;
 }
 
-// The paths hbm/sensitivity.hpp differentiates exactly. damper.kn is left out: the damper's seat
-// (the sliders' tangential offsets, from the static pre-solve) moves with kn, which the derivative
-// holds fixed; rayleigh damping and a damping matrix do not scale with one case value.
-void check_sensitivities(TomlReader& r, const HbmSpec& s) {
-  for (const std::string& path : s.sensitivities) {
+// The parameters hbm/sensitivity.hpp differentiates exactly (cases/case_parameter.hpp says which):
+// rayleigh damping and a damping matrix do not scale with one case value.
+std::vector<HbmParameter> parse_sensitivities(TomlReader& r, const HbmSpec& s) {
+  std::vector<HbmParameter> out;
+  const std::vector<std::string> paths = r.string_array("sensitivities");
+  for (const std::string& path : paths) {
     const auto fail = [&](const std::string& why) { r.fail("sensitivities", fmt::format("'{}': {}", path, why)); };
-    const std::string contact = "analysis.contact.", damper = "analysis.damper.";
-    if (path == "analysis.modal_damping") {
-      if (s.damping_matrix || s.damping.kind != FrfDamping::Kind::modal)
-        fail("needs modal damping (modal_damping = zeta); rayleigh damping or a damping matrix has no single scale");
-      if (!(s.damping.zeta > 0.0)) fail("needs modal_damping > 0 (the log-sensitivity of zero damping is zero)");
-    } else if (path.starts_with(damper)) {
-      const std::string key = path.substr(damper.size());
-      if (!s.damper) fail("the analysis has no [analysis.damper]");
-      if (key == "kn") fail("not supported: the damper's static seat moves with kn, which the sensitivity holds fixed");
-      if (key != "kt" && key != "mu") fail("expected analysis.damper.kt or analysis.damper.mu");
-    } else if (path.starts_with(contact)) {
-      const std::string rest = path.substr(contact.size());
-      const size_t dot = rest.find('.');
-      const std::string index = rest.substr(0, dot), key = dot == std::string::npos ? "" : rest.substr(dot + 1);
-      if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos || std::stoul(index) >= s.contacts.size())
-        fail(fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", index, s.contacts.size()));
-      if (key != "kn" && key != "kt" && key != "mu" && key != "n0") fail("expected analysis.contact.<i>.kn, kt, mu or n0");
-    } else {
-      fail("not a supported path (analysis.contact.<i>.{kn,kt,mu,n0}, analysis.damper.{kt,mu}, analysis.modal_damping)");
+    std::optional<HbmParameter> parameter;
+    try {
+      parameter = hbm_parameter(parse_parameter_path(path));
+    } catch (const std::invalid_argument&) {
     }
-    if (std::count(s.sensitivities.begin(), s.sensitivities.end(), path) > 1) fail("listed twice");
+    if (!parameter) fail("not a supported path (analysis.contact.<i>.{kn,kt,mu,n0}, analysis.damper.{kt,mu}, analysis.modal_damping)");
+    if (const std::optional<std::string> why = unsupported_sensitivity(s, *parameter)) fail(*why);
+    if (std::count(paths.begin(), paths.end(), path) > 1) fail("listed twice");
+    out.push_back(*parameter);
   }
+  return out;
 }
 
 }  // namespace
@@ -215,8 +206,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   }
   if (r.has("sensitivities")) {
     if (!contacts_required) r.fail("sensitivities", "only a harmonic balance analysis computes sensitivities");
-    s.sensitivities = r.string_array("sensitivities");
-    check_sensitivities(r, s);
+    s.sensitivities = parse_sensitivities(r, s);
   }
   return s;
 }

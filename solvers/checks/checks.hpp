@@ -3,7 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "cases/case_spec.hpp"
+#include <filesystem>
+
+#include "checks/check_spec.hpp"
 #include "results/table.hpp"
 
 namespace bb {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -186,6 +187,39 @@ std::vector<Peak> find_peaks(const std::vector<double>& frequency_hz, const Eige
     peaks.push_back(p);
   }
   return peaks;
+}
+
+Peak largest_sample(const std::vector<double>& frequency_hz, const Eigen::VectorXd& values) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (values.size() == 0 || !values.allFinite()) return {nan, nan, -1};
+  Eigen::Index k = 0;
+  values.maxCoeff(&k);
+  const auto i = static_cast<size_t>(k);
+  Peak p{.frequency_hz = frequency_hz[i], .amplitude = values[k], .index = static_cast<int>(k)};
+  if (k == 0 || k + 1 == values.size() || !(values[k - 1] - 2 * values[k] + values[k + 1] < 0)) return p;
+  const Vertex v = parabola_vertex(frequency_hz[i - 1], frequency_hz[i], frequency_hz[i + 1], values[k - 1], values[k], values[k + 1]);
+  p.frequency_hz = v.x;
+  p.amplitude = v.y;
+  return p;
+}
+
+GoldenSearch golden_section_maximum(const std::function<std::optional<double>(double)>& value, double a, double b,
+                                    int max_iterations, double relative_width) {
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  double c = b - g * (b - a), d = a + g * (b - a);
+  std::optional<double> vc = value(c), vd = value(d);
+  GoldenSearch out;
+  for (int it = 0; it < max_iterations && vc && vd && b - a > relative_width * b; ++it) {
+    out.compared.insert(out.compared.end(), {c, d});
+    if (*vc > *vd) {
+      b = d, d = c, vd = vc, c = b - g * (b - a), vc = value(c);
+    } else {
+      a = c, c = d, vc = vd, d = a + g * (b - a), vd = value(d);
+    }
+  }
+  out.a = a;
+  out.b = b;
+  return out;
 }
 
 }  // namespace bb

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace bb {
@@ -55,5 +56,21 @@ struct Peak {
 // Throws std::invalid_argument on mismatched sizes, non-ascending frequencies or min_prominence < 1.
 std::vector<Peak> find_peaks(const std::vector<double>& frequency_hz, const Eigen::VectorXd& amplitude,
                              double min_prominence = 1.01);
+
+// The largest sample of `values` (any quantity at ascending `frequency_hz`), refined by the parabola
+// through it and its neighbours when it is an interior maximum with negative curvature; NaN when
+// `values` is empty or not finite.
+Peak largest_sample(const std::vector<double>& frequency_hz, const Eigen::VectorXd& values);
+
+// Golden-section search for the maximum of a unimodal function on [a, b]. `value(x)` returns its
+// value, or nullopt where it cannot be evaluated, which ends the search. Ends after max_iterations
+// or once b - a <= relative_width * b. `compared` lists the points whose values decided a step
+// (the two interior points at the start of each iteration), in order: the caller's best estimate.
+struct GoldenSearch {
+  double a = 0.0, b = 0.0;  // the final bracket
+  std::vector<double> compared;
+};
+GoldenSearch golden_section_maximum(const std::function<std::optional<double>(double)>& value, double a, double b,
+                                    int max_iterations, double relative_width = 0.0);
 
 }  // namespace bb

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cases/calibration_spec.hpp"
+#include "identify/calibration_spec.hpp"
 #include "checks/checks.hpp"
 #include "results/table.hpp"
 

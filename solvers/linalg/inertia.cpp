@@ -1,60 +1,71 @@
 #include "linalg/inertia.hpp"
 
-#include <cholmod.h>
+#include <dmumps_c.h>
+#include <fmt/format.h>
 
 #include <chrono>
+#include <vector>
 
 namespace bb {
+namespace {
+
+// MUMPS's control arrays are documented 1-based (ICNTL(7) is icntl[6]).
+constexpr int kUseCommWorld = -987654;
+constexpr int kOrderingAutomatic = 7;
+
+}  // namespace
 
 InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                               double sigma, FillOrdering ordering) {
+                               double sigma) {
   const auto t0 = std::chrono::steady_clock::now();
   InertiaCount out;
   Eigen::SparseMatrix<double> shifted = stiffness - sigma * mass;
   shifted.makeCompressed();
-  cholmod_common common{};
-  cholmod_start(&common);
-  common.print = 0;
-  common.error_handler = nullptr;
-  // LDL^T needs the simplicial factorization (supernodal is LL^T only); no pivoting, which is
-  // what the inertia count needs and what keeps the sparsity of the Cholesky analysis.
-  common.supernodal = CHOLMOD_SIMPLICIAL;
-  common.final_ll = 0;
-  common.nmethods = 1;
-  common.method[0].ordering = ordering == FillOrdering::amd ? CHOLMOD_AMD : CHOLMOD_METIS;
-  cholmod_sparse view{};
-  view.nrow = static_cast<size_t>(shifted.rows());
-  view.ncol = static_cast<size_t>(shifted.cols());
-  view.nzmax = static_cast<size_t>(shifted.nonZeros());
-  view.p = shifted.outerIndexPtr();
-  view.i = shifted.innerIndexPtr();
-  view.x = shifted.valuePtr();
-  view.stype = -1;
-  view.itype = CHOLMOD_INT;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = 1;
-  view.packed = 1;
-  cholmod_factor* factor = cholmod_analyze(&view, &common);
-  if (factor) cholmod_factorize(&view, factor, &common);
-  if (!factor || common.status == CHOLMOD_OUT_OF_MEMORY || common.status < 0) {
-    out.message = "the LDL^T factorization of K - sigma M failed (out of memory?)";
-  } else if (factor->is_super || factor->is_ll) {
-    out.message = "CHOLMOD did not return a simplicial LDL^T factor";
+  // Lower triangle in 1-based coordinates, the input of a symmetric MUMPS factorization.
+  std::vector<MUMPS_INT> rows, cols;
+  std::vector<double> values;
+  rows.reserve(static_cast<size_t>(shifted.nonZeros()));
+  cols.reserve(rows.capacity());
+  values.reserve(rows.capacity());
+  for (int c = 0; c < shifted.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(shifted, c); it; ++it)
+      if (it.row() >= c) {
+        rows.push_back(static_cast<MUMPS_INT>(it.row() + 1));
+        cols.push_back(static_cast<MUMPS_INT>(c + 1));
+        values.push_back(it.value());
+      }
+  // The multifrontal LDL^T of a general symmetric matrix (SYM = 2, with 2x2 pivots): its inertia is
+  // that of K - sigma M, and unlike CHOLMOD's simplicial LDL^T it runs on BLAS-3 fronts.
+  DMUMPS_STRUC_C id{};
+  id.comm_fortran = kUseCommWorld;
+  id.par = 1;
+  id.sym = 2;
+  id.job = -1;
+  dmumps_c(&id);
+  id.icntl[0] = -1;  // no error, diagnostic or global messages
+  id.icntl[1] = -1;
+  id.icntl[2] = -1;
+  id.icntl[3] = 0;
+  id.icntl[6] = kOrderingAutomatic;
+  id.icntl[23] = 1;  // detect null pivots: sigma on an eigenvalue
+  id.n = static_cast<MUMPS_INT>(shifted.rows());
+  id.nnz = static_cast<MUMPS_INT8>(values.size());
+  id.irn = rows.data();
+  id.jcn = cols.data();
+  id.a = values.data();
+  id.job = 4;  // analysis and factorization
+  dmumps_c(&id);
+  if (id.infog[0] < 0) {
+    out.message = fmt::format("the LDL^T factorization of K - sigma M failed (MUMPS INFOG(1) = {}, INFOG(2) = {})", id.infog[0],
+                              id.infog[1]);
   } else {
-    // Simplicial LDL^T: D(j, j) is the first entry of column j of L.
-    const auto* p = static_cast<const int*>(factor->p);
-    const auto* x = static_cast<const double*>(factor->x);
-    for (size_t j = 0; j < factor->n; ++j) {
-      const double d = x[p[j]];
-      out.negative += d < 0.0 ? 1 : 0;
-      out.zero += d == 0.0 ? 1 : 0;
-    }
-    out.ok = factor->minor == factor->n && out.zero == 0;
-    if (!out.ok) out.message = "a zero pivot: the shift is an eigenvalue";
+    out.negative = id.infog[11];  // INFOG(12): negative pivots
+    out.zero = id.infog[27];      // INFOG(28): null pivots found
+    out.ok = out.zero == 0;
+    if (!out.ok) out.message = "a null pivot: the shift is an eigenvalue";
   }
-  if (factor) cholmod_free_factor(&factor, &common);
-  cholmod_finish(&common);
+  id.job = -2;
+  dmumps_c(&id);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

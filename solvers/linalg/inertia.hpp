@@ -5,7 +5,6 @@
 #include <Eigen/Sparse>
 #include <string>
 
-#include "linalg/spd_factor.hpp"
 
 namespace bb {
 
@@ -17,9 +16,9 @@ struct InertiaCount {
   std::string message;
 };
 
-// Negative pivots of the simplicial LDL^T (CHOLMOD, no pivoting) of K - sigma M; K and M symmetric,
+// Negative pivots of the LDL^T (MUMPS, multifrontal, 2x2 pivots) of K - sigma M; K and M symmetric,
 // M positive semi-definite. Only the lower triangles are read.
 InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                               double sigma, FillOrdering ordering);
+                               double sigma);
 
 }  // namespace bb

@@ -137,11 +137,11 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
       sol.max_residual = max_backward_error(stiffness, mass, sol);
       return sol;
     }
-    InertiaCount count = eigenvalues_below(stiffness, mass, *cut, options.ordering);
+    InertiaCount count = eigenvalues_below(stiffness, mass, *cut);
     double shift = *cut;
     if (!count.ok) {  // the shift hit an eigenvalue to the last bit: move it a little
       shift = *cut + options.cluster_tolerance * std::abs(*cut);
-      count = eigenvalues_below(stiffness, mass, shift, options.ordering);
+      count = eigenvalues_below(stiffness, mass, shift);
     }
     sturm_seconds += count.seconds;
     if (!count.ok) throw SolverError(fmt::format("modal completeness check at {:.6g} rad^2/s^2: {}", shift, count.message));

@@ -1,32 +1,14 @@
 #include "mesh/mesh.hpp"
 
+#include "mesh/element_topology.hpp"
+
 namespace bb {
 
-int nodes_per_element(ElementType type) {
-  switch (type) {
-    case ElementType::q4: return 4;
-    case ElementType::cst: return 3;
-    case ElementType::hex8:
-    case ElementType::hex8i: return 8;
-    case ElementType::hex20: return 20;
-  }
-  return 0;
-}
+int nodes_per_element(ElementType type) { return topology(type).nodes; }
 
-int element_dimension(ElementType type) {
-  return type == ElementType::q4 || type == ElementType::cst ? 2 : 3;
-}
+int element_dimension(ElementType type) { return topology(type).dimension; }
 
-std::string_view element_name(ElementType type) {
-  switch (type) {
-    case ElementType::q4: return "q4";
-    case ElementType::cst: return "cst";
-    case ElementType::hex8: return "hex8";
-    case ElementType::hex8i: return "hex8i";
-    case ElementType::hex20: return "hex20";
-  }
-  return "?";
-}
+std::string_view element_name(ElementType type) { return topology(type).name; }
 
 int Mesh::n_elements() const {
   int n = 0;

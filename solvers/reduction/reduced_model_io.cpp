@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cases/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 #include "common/errors.hpp"
 
 namespace bb {

@@ -1,5 +1,7 @@
 #include "report/plots.hpp"
 
+#include "mesh/element_topology.hpp"
+
 #include "report/gnuplot.hpp"
 
 #include <fmt/format.h>
@@ -22,14 +24,12 @@ constexpr int kMaxDrawnElements = 2000;
 
 void write_boundary(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd& xy) {
   std::map<std::pair<int, int>, int> uses;
-  for (const auto& b : mesh.blocks) {
-    const int nn = nodes_per_element(b.type);
+  for (const auto& b : mesh.blocks)
     for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
-      for (int a = 0; a < nn; ++a) {
-        const int p = b.conn(e, a), q = b.conn(e, (a + 1) % nn);
+      for (const auto& [i, j] : topology(b.type).edges) {
+        const int p = b.conn(e, i), q = b.conn(e, j);
         ++uses[{std::min(p, q), std::max(p, q)}];
       }
-  }
   for (const auto& [edge, count] : uses) {
     if (count != 1) continue;
     out << xy(edge.first, 0) << ' ' << xy(edge.first, 1) << '\n' << xy(edge.second, 0) << ' ' << xy(edge.second, 1) << "\n\n";
@@ -59,12 +59,10 @@ namespace {
 
 // Corner-node faces of every solid element that no other element shares (the skin).
 std::vector<std::array<int, 4>> boundary_faces(const Mesh& mesh) {
-  static constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   std::map<std::array<int, 4>, std::pair<int, std::array<int, 4>>> faces;
   for (const auto& b : mesh.blocks) {
-    if (element_dimension(b.type) != 3) continue;
     for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
-      for (const auto& f : kHexFaces) {
+      for (const auto& f : topology(b.type).faces) {
         std::array<int, 4> face{b.conn(e, f[0]), b.conn(e, f[1]), b.conn(e, f[2]), b.conn(e, f[3])};
         std::array<int, 4> key = face;
         std::sort(key.begin(), key.end());

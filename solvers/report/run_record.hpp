@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "cases/case_spec.hpp"
+#include "checks/check_spec.hpp"
 #include "checks/checks.hpp"
 #include "study/modal_refinement.hpp"
 #include "study/refinement.hpp"

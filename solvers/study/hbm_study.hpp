@@ -2,7 +2,7 @@
 // the peaks of chosen force levels at each H against the largest H, with the time of each sweep.
 #pragma once
 #include "analysis/hbm_analysis.hpp"
-#include "cases/case_spec.hpp"
+#include "study/study_spec.hpp"
 #include "results/table.hpp"
 
 namespace bb {

@@ -3,16 +3,16 @@
 #include <cmath>
 
 #include "analysis/modal_analysis.hpp"
+#include "model/build_model.hpp"
 
 namespace bb {
 
-ModalRefinementResult run_modal_refinement_study(const CaseSpec& spec) {
-  const ModalRefinementStudySpec& s = *spec.modal_study;
+ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal_spec, const ModalRefinementStudySpec& s) {
   ModalRefinementResult out;
   out.modes = s.modes;
   for (ElementType element : s.elements) {
     for (int r : s.refinements) {
-      CaseSpec level = spec;
+      ModelSpec level = spec;
       level.mesh.element = element;
       if (level.mesh.kind == MeshSpec::Kind::two_blade) {
         level.mesh.two_blade.refinement = r;
@@ -28,7 +28,7 @@ ModalRefinementResult run_modal_refinement_study(const CaseSpec& spec) {
       const Model model = build_model(level);
       ModeSelection lowest;
       lowest.lowest = s.modes;
-      const ModalResult modal = solve_modal(model, lowest, spec.analysis.modal);
+      const ModalResult modal = solve_modal(model, lowest, modal_spec.options);
       ModalRefinementRow row;
       row.element = element;
       row.refinement = r;

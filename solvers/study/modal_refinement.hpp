@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "cases/case_spec.hpp"
+#include "analysis/modal_spec.hpp"
+#include "model/model_spec.hpp"
+#include "study/study_spec.hpp"
 
 namespace bb {
 
@@ -25,6 +27,6 @@ struct ModalRefinementResult {
   int modes = 0;
 };
 
-ModalRefinementResult run_modal_refinement_study(const CaseSpec& spec);
+ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal, const ModalRefinementStudySpec& study);
 
 }  // namespace bb

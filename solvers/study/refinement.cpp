@@ -3,12 +3,12 @@
 #include <cmath>
 
 #include "analysis/static_analysis.hpp"
+#include "model/build_model.hpp"
 #include "study/timoshenko.hpp"
 
 namespace bb {
 
-RefinementResult run_refinement_study(const CaseSpec& spec) {
-  const RefinementStudySpec& s = *spec.study;
+RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStudySpec& s) {
   RefinementResult out;
   const RectangularBeam beam{s.beam_length, s.beam_height, spec.section.thickness, spec.section.youngs_modulus,
                              spec.section.poisson_ratio, s.shear_coefficient};
@@ -16,7 +16,7 @@ RefinementResult run_refinement_study(const CaseSpec& spec) {
   out.bending_only = euler_bernoulli_tip_deflection(beam, s.beam_load);
 
   for (int level : s.levels) {
-    CaseSpec refined = spec;
+    ModelSpec refined = spec;
     refined.mesh.mapped.nx *= level;
     refined.mesh.mapped.ny *= level;
     for (LoadSpec& l : refined.loads) {

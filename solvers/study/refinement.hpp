@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "cases/case_spec.hpp"
+#include "model/model_spec.hpp"
+#include "study/study_spec.hpp"
 
 namespace bb {
 
@@ -28,6 +29,6 @@ struct RefinementResult {
   double extrapolation_order = 0.0;   // order used for it
 };
 
-RefinementResult run_refinement_study(const CaseSpec& spec);
+RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStudySpec& study);
 
 }  // namespace bb

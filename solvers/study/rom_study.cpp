@@ -9,9 +9,9 @@
 
 namespace bb {
 
-ResultTable run_rom_study(const CaseSpec& spec, const Model& model) {
-  const RomStudySpec& study = *spec.rom_study;
-  FrfSpec frf = spec.analysis.frf;
+ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model) {
+  FrfSpec frf = spec;
+  frf.pairs.reset();  // the study compares frequencies by index: no labels
   frf.force_levels.clear();
   frf.roms.clear();
   std::vector<std::string> set_of_variant;
@@ -24,7 +24,7 @@ ResultTable run_rom_study(const CaseSpec& spec, const Model& model) {
       frf.roms.push_back(rom);
       set_of_variant.push_back(set);
     }
-  const FrfOutcome o = run_frf(model, frf, std::nullopt);
+  const FrfOutcome o = run_frf(model, frf);
   const Eigen::VectorXd& full = o.full_modal->frequencies_hz;
   const ResultTable& full_peaks = o.tables.at("peaks_full");
   const double n_frequencies = static_cast<double>(o.sweep.frequency_hz.size());

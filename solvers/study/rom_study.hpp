@@ -2,7 +2,9 @@
 // modes and master set vs the error of the first natural frequencies and of the FRF peaks, vs
 // reduction time and time per frequency, all against the full mesh of the case.
 #pragma once
-#include "cases/case_spec.hpp"
+#include "analysis/frf_spec.hpp"
+#include "model/model.hpp"
+#include "study/study_spec.hpp"
 #include "results/table.hpp"
 
 namespace bb {
@@ -11,6 +13,6 @@ namespace bb {
 // max_freq_error, rms_freq_error (first compare_modes, by index), peak_freq_error,
 // peak_amp_error (first peak of each response, the worst), reduction_s, solve_us_per_frequency;
 // text column master_set.
-ResultTable run_rom_study(const CaseSpec& spec, const Model& model);
+ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model);
 
 }  // namespace bb

@@ -3,7 +3,7 @@
 // variant against the finest one, with its cost.
 #pragma once
 #include "analysis/time_analysis.hpp"
-#include "cases/case_spec.hpp"
+#include "study/study_spec.hpp"
 #include "results/table.hpp"
 
 namespace bb {

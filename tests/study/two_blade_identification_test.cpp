@@ -16,8 +16,11 @@
 #include <fstream>
 #include <string>
 
-#include "analysis/case_results.hpp"
-#include "identify/calibrate_case.hpp"
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "model/build_model.hpp"
+#include "pipeline/calibrate_case.hpp"
 #include "identify/synthetic_data.hpp"
 #include "../unit/two_blade_rom_case.hpp"
 
@@ -45,7 +48,7 @@ TEST_P(TwoBladeIdentification, KtAndMuComeBackFromNoisyPeaksAndAnFrf) {
   const double truth[] = {1.0e8, 0.5};
   std::ofstream(dir / "truth.toml") << two_blade_case(truth[0], truth[1], "");
   const CaseSpec spec = parse_case_file(dir / "truth.toml");
-  const CaseResults r = compute_case_results(spec, build_model(spec));
+  const AnalysisResults r = run_analysis(spec.analysis, build_model(spec.model));
   SyntheticOptions o;
   o.noise = 0.02;
   o.seed = GetParam();
@@ -77,7 +80,7 @@ function_tolerance = 1e-5
 derivative_step = 1e-2
 )";
   std::ofstream(dir / "case.toml") << two_blade_case(3.0e8, 0.8, calibration + blocks);
-  const CalibrationOutcome out = calibrate_case(dir / "case.toml", false);
+  const CalibrationOutcome out = calibrate_case(dir / "case.toml");
   std::printf("  %s, %d evaluations, reduced chi-square %.3g\n", out.termination.c_str(), out.residual_evaluations, out.reduced_chi_square);
   for (const std::string& w : out.warnings) std::printf("  warning: %s\n", w.c_str());
   ASSERT_TRUE(out.converged) << out.termination;

@@ -6,9 +6,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "analysis/case_results.hpp"
-#include "identify/calibrate_case.hpp"
-#include "identify/calibration_report.hpp"
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "model/build_model.hpp"
+#include "pipeline/calibrate_case.hpp"
+#include "report/calibration_report.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -65,11 +68,11 @@ class CalibrationRoundTrip : public test::TempFolderTest {
     write_values(dir_ / "truth.toml", e_true, rho_true, parameters);
     std::ofstream(dir_ / "reference.csv") << "mode,frequency_hz\n1,1\n2,1\n3,1\n";  // placeholder for parsing
     const CaseSpec truth = parse_case_file(dir_ / "truth.toml");
-    const CaseResults r = compute_case_results(truth, build_model(truth));
+    const AnalysisResults r = run_analysis(truth.analysis, build_model(truth.model));
     std::ofstream ref(dir_ / "reference.csv");
     ref.precision(17);
     ref << "mode,frequency_hz\n";
-    for (Eigen::Index i = 0; i < r.modal->frequencies_hz.size(); ++i) ref << i + 1 << ',' << r.modal->frequencies_hz[i] << '\n';
+    for (Eigen::Index i = 0; i < std::get<ModalResult>(r.outcome).frequencies_hz.size(); ++i) ref << i + 1 << ',' << std::get<ModalResult>(r.outcome).frequencies_hz[i] << '\n';
     ref.close();
     write_values(dir_ / "case.toml", e_start, rho_start, parameters);
     return dir_ / "case.toml";
@@ -84,7 +87,7 @@ class CalibrationRoundTrip : public test::TempFolderTest {
 
 TEST_F(CalibrationRoundTrip, RecoversYoungsModulusFromFrequencies) {
   const fs::path c = write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
-  const CalibrationOutcome o = calibrate_case(c, false);
+  const CalibrationOutcome o = calibrate_case(c);
   ASSERT_TRUE(o.converged) << o.termination;
   EXPECT_NEAR(o.values[0] / 2.1e11, 1.0, 1e-6);
   EXPECT_LT(o.final_cost, 1e-8 * o.initial_cost);
@@ -97,7 +100,7 @@ TEST_F(CalibrationRoundTrip, StiffnessAndDensityTogetherAreFlaggedAsNotIdentifia
   const fs::path c = write_case(1.8e11, 7000.0,
                                 R"({ path = "material.E", lower = 1e11, upper = 3e11 }, { path = "material.rho", lower = 5000.0, upper = 10000.0 })",
                                 2.1e11, 7800.0);
-  const CalibrationOutcome o = calibrate_case(c, false);
+  const CalibrationOutcome o = calibrate_case(c);
   EXPECT_NEAR((o.values[0] / o.values[1]) / (2.1e11 / 7800.0), 1.0, 1e-5);  // the ratio is found
   ASSERT_FALSE(o.warnings.empty());
   bool flagged = false;
@@ -108,7 +111,7 @@ TEST_F(CalibrationRoundTrip, StiffnessAndDensityTogetherAreFlaggedAsNotIdentifia
 TEST_F(CalibrationRoundTrip, EveryStartOfALatinHypercubeIsReportedAndTheBestWins) {
   const fs::path c = write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
   std::ofstream(c, std::ios::app) << "starts = 4\nseed = 11\n";
-  const CalibrationOutcome o = calibrate_case(c, false);
+  const CalibrationOutcome o = calibrate_case(c);
   ASSERT_EQ(o.starts.size(), 4u);
   EXPECT_DOUBLE_EQ(o.starts[0].start[0], 1.5e11);  // the case's value first
   for (size_t s = 1; s < 4; ++s) {
@@ -127,7 +130,7 @@ TEST_F(CalibrationRoundTrip, EveryStartOfALatinHypercubeIsReportedAndTheBestWins
 TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedCase) {
   const fs::path c = write_case(1.1e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
   std::ofstream(c, std::ios::app) << "max_iterations = 1\n";
-  const CalibrationOutcome o = calibrate_case(c, false);
+  const CalibrationOutcome o = calibrate_case(c);
   ASSERT_FALSE(o.converged) << o.termination;
   fs::create_directories(dir_ / "out");
   std::ofstream(dir_ / "out" / "calibrated.toml") << "stale\n";
@@ -143,18 +146,18 @@ TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedC
 
 TEST_F(CalibrationRoundTrip, ParameterOutsideItsBoundsIsAnInputError) {
   const fs::path c = write_case(5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
-  EXPECT_THROW(calibrate_case(c, false), InputError);
+  EXPECT_THROW(calibrate_case(c), InputError);
 }
 
 TEST_F(CalibrationRoundTrip, UnknownParameterPathIsAnInputError) {
   const fs::path c = write_case(2e11, 7800.0, R"({ path = "material.G", lower = 1e10, upper = 1e11 })", 2.1e11, 7800.0);
-  EXPECT_THROW(calibrate_case(c, false), InputError);
+  EXPECT_THROW(calibrate_case(c), InputError);
 }
 
 TEST_F(CalibrationRoundTrip, PerCheckUncertaintyMustNameAFittedCheck) {
   const fs::path c = write_case(2e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
   std::ofstream(c, std::ios::app) << "check_uncertainties = { \"other\" = 0.005 }\n";
-  EXPECT_THROW(calibrate_case(c, false), InputError);
+  EXPECT_THROW(calibrate_case(c), InputError);
 }
 
 TEST_F(CalibrationRoundTrip, PerCheckUncertaintyOverridesTheDefault) {

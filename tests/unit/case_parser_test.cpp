@@ -10,6 +10,7 @@
 
 #include "analysis/static_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "model/build_model.hpp"
 #include "common/errors.hpp"
 #include "temp_folder.hpp"
 
@@ -23,53 +24,53 @@ const fs::path kThesisCases = fs::path(BB_SOURCE_DIR) / "cases" / "thesis";
 TEST(ThesisCases, TableTwoCaseParsesIntoItsStatedValues) {
   const CaseSpec spec = parse_case_file(kThesisCases / "table02_q4_cantilever.toml");
   EXPECT_EQ(spec.name, "table02_q4_cantilever");
-  EXPECT_EQ(spec.section.youngs_modulus, 2.0e11);
-  EXPECT_EQ(spec.section.poisson_ratio, 0.25);
-  EXPECT_EQ(spec.section.density, 8000.0);
-  EXPECT_EQ(spec.section.thickness, 0.01);
-  ASSERT_EQ(spec.mesh.kind, MeshSpec::Kind::mapped_quad);
-  EXPECT_EQ(spec.mesh.element, ElementType::q4);
-  EXPECT_EQ(spec.mesh.mapped.nx, 5);
-  EXPECT_EQ(spec.mesh.mapped.ny, 2);
-  EXPECT_EQ(spec.mesh.mapped.numbering, NodeNumbering::serpentine);
-  EXPECT_EQ(spec.mesh.mapped.corners[2], Eigen::Vector2d(10.0, 2.0));
-  ASSERT_EQ(spec.constraints.size(), 1u);
-  EXPECT_EQ(spec.constraints[0].constraint.set, "clamp");
-  EXPECT_EQ(spec.constraints[0].constraint.directions, (std::vector<Direction>{0, 1}));
-  ASSERT_EQ(spec.loads.size(), 1u);
-  EXPECT_EQ(spec.loads[0].load.total, -1.0e5);
-  EXPECT_EQ(spec.loads[0].load.direction, 1);
-  EXPECT_EQ(spec.loads[0].load.split, LoadSplit::consistent_edge);
-  EXPECT_EQ(spec.analysis.type, AnalysisType::static_linear);
+  EXPECT_EQ(spec.model.section.youngs_modulus, 2.0e11);
+  EXPECT_EQ(spec.model.section.poisson_ratio, 0.25);
+  EXPECT_EQ(spec.model.section.density, 8000.0);
+  EXPECT_EQ(spec.model.section.thickness, 0.01);
+  ASSERT_EQ(spec.model.mesh.kind, MeshSpec::Kind::mapped_quad);
+  EXPECT_EQ(spec.model.mesh.element, ElementType::q4);
+  EXPECT_EQ(spec.model.mesh.mapped.nx, 5);
+  EXPECT_EQ(spec.model.mesh.mapped.ny, 2);
+  EXPECT_EQ(spec.model.mesh.mapped.numbering, NodeNumbering::serpentine);
+  EXPECT_EQ(spec.model.mesh.mapped.corners[2], Eigen::Vector2d(10.0, 2.0));
+  ASSERT_EQ(spec.model.constraints.size(), 1u);
+  EXPECT_EQ(spec.model.constraints[0].constraint.set, "clamp");
+  EXPECT_EQ(spec.model.constraints[0].constraint.directions, (std::vector<Direction>{0, 1}));
+  ASSERT_EQ(spec.model.loads.size(), 1u);
+  EXPECT_EQ(spec.model.loads[0].load.total, -1.0e5);
+  EXPECT_EQ(spec.model.loads[0].load.direction, 1);
+  EXPECT_EQ(spec.model.loads[0].load.split, LoadSplit::consistent_edge);
+  EXPECT_TRUE(std::holds_alternative<StaticSpec>(spec.analysis));
   ASSERT_EQ(spec.checks.size(), 2u);
   EXPECT_EQ(spec.checks[0].abs_tol, 2.0e-5);
   EXPECT_EQ(spec.checks[0].reference.filename(), "table02.csv");
   ASSERT_TRUE(spec.study.has_value());
-  EXPECT_EQ(spec.study->levels.size(), 7u);
-  EXPECT_EQ(spec.study->beam_length, 10.0);
-  EXPECT_EQ(spec.study->beam_height, 2.0);
+  EXPECT_EQ(std::get<RefinementStudySpec>(*spec.study).levels.size(), 7u);
+  EXPECT_EQ(std::get<RefinementStudySpec>(*spec.study).beam_length, 10.0);
+  EXPECT_EQ(std::get<RefinementStudySpec>(*spec.study).beam_height, 2.0);
 }
 
 TEST(ThesisCases, TableFourCaseParsesIntoItsStatedValues) {
   const CaseSpec spec = parse_case_file(kThesisCases / "table04_cst_cantilever.toml");
-  EXPECT_EQ(spec.section.youngs_modulus, 2.2e11);
-  EXPECT_EQ(spec.section.poisson_ratio, 0.3);
-  EXPECT_EQ(spec.section.density, 7730.0);
-  EXPECT_EQ(spec.section.thickness, 0.1);
-  EXPECT_EQ(spec.mesh.element, ElementType::cst);
-  EXPECT_EQ(spec.mesh.mapped.nx, 5);
-  EXPECT_EQ(spec.mesh.mapped.ny, 1);
-  EXPECT_EQ(spec.mesh.mapped.diagonal, TriangleDiagonal::bottom_right_to_top_left);
-  ASSERT_EQ(spec.loads.size(), 1u);
-  EXPECT_EQ(spec.loads[0].load.set, "load_point");
-  EXPECT_EQ(spec.loads[0].load.total, -1.0e4);
-  EXPECT_EQ(spec.loads[0].load.split, LoadSplit::equal);
+  EXPECT_EQ(spec.model.section.youngs_modulus, 2.2e11);
+  EXPECT_EQ(spec.model.section.poisson_ratio, 0.3);
+  EXPECT_EQ(spec.model.section.density, 7730.0);
+  EXPECT_EQ(spec.model.section.thickness, 0.1);
+  EXPECT_EQ(spec.model.mesh.element, ElementType::cst);
+  EXPECT_EQ(spec.model.mesh.mapped.nx, 5);
+  EXPECT_EQ(spec.model.mesh.mapped.ny, 1);
+  EXPECT_EQ(spec.model.mesh.mapped.diagonal, TriangleDiagonal::bottom_right_to_top_left);
+  ASSERT_EQ(spec.model.loads.size(), 1u);
+  EXPECT_EQ(spec.model.loads[0].load.set, "load_point");
+  EXPECT_EQ(spec.model.loads[0].load.total, -1.0e4);
+  EXPECT_EQ(spec.model.loads[0].load.split, LoadSplit::equal);
   ASSERT_TRUE(spec.study.has_value());
-  EXPECT_EQ(spec.study->load_split, LoadSplit::consistent_edge);
+  EXPECT_EQ(std::get<RefinementStudySpec>(*spec.study).load_split, LoadSplit::consistent_edge);
 }
 
 TEST(ThesisCases, TableTwoModelResolvesTheClampAndTipSetsOnTheMesh) {
-  const Model model = build_model(parse_case_file(kThesisCases / "table02_q4_cantilever.toml"));
+  const Model model = build_model(parse_case_file(kThesisCases / "table02_q4_cantilever.toml").model);
   EXPECT_EQ(model.mesh.n_nodes(), 18);
   EXPECT_EQ(model.mesh.n_elements(), 10);
   ASSERT_EQ(model.node_sets.at("clamp").size(), 3u);
@@ -85,7 +86,7 @@ TEST(ThesisCases, TableTwoModelResolvesTheClampAndTipSetsOnTheMesh) {
 }
 
 TEST(ThesisCases, TableFourLoadPointIsTheSingleTopTipNodeSeven) {
-  const Model model = build_model(parse_case_file(kThesisCases / "table04_cst_cantilever.toml"));
+  const Model model = build_model(parse_case_file(kThesisCases / "table04_cst_cantilever.toml").model);
   ASSERT_EQ(model.node_sets.at("load_point").size(), 1u);
   EXPECT_EQ(model.mesh.node_ids[static_cast<size_t>(model.node_sets.at("load_point")[0])], 7);
 }
@@ -159,17 +160,17 @@ TEST_F(CaseFile, MinimalCaseParsesWithTheDocumentedDefaults) {
   const CaseSpec spec = parse_case_file(write(kMinimalCase));
   EXPECT_EQ(spec.name, "minimal");
   EXPECT_EQ(spec.title, "minimal");
-  EXPECT_EQ(spec.mesh.mapped.numbering, NodeNumbering::rows);
-  EXPECT_EQ(spec.mesh.mapped.diagonal, TriangleDiagonal::bottom_left_to_top_right);
-  EXPECT_EQ(spec.mesh.mapped.first_node_id, 1);
-  EXPECT_EQ(spec.mesh.mapped.first_element_id, 1);
-  ASSERT_EQ(spec.sets.size(), 2u);
-  EXPECT_EQ(spec.constraints[0].constraint.value, 0.0);
-  EXPECT_EQ(spec.constraints[0].at.line, 25);
+  EXPECT_EQ(spec.model.mesh.mapped.numbering, NodeNumbering::rows);
+  EXPECT_EQ(spec.model.mesh.mapped.diagonal, TriangleDiagonal::bottom_left_to_top_right);
+  EXPECT_EQ(spec.model.mesh.mapped.first_node_id, 1);
+  EXPECT_EQ(spec.model.mesh.mapped.first_element_id, 1);
+  ASSERT_EQ(spec.model.sets.size(), 2u);
+  EXPECT_EQ(spec.model.constraints[0].constraint.value, 0.0);
+  EXPECT_EQ(spec.model.constraints[0].at.line, 25);
   EXPECT_FALSE(spec.study.has_value());
   EXPECT_TRUE(spec.checks.empty());
   // And it runs: a downward tip load on a cantilever gives a downward tip.
-  const Model model = build_model(spec);
+  const Model model = build_model(spec.model);
   const StaticSolution sol = solve_static(model);
   for (int n : model.node_sets.at("right")) EXPECT_LT(sol.displacements(n, 1), 0.0);
 }
@@ -177,9 +178,9 @@ TEST_F(CaseFile, MinimalCaseParsesWithTheDocumentedDefaults) {
 TEST_F(CaseFile, ModalAnalysisReadsModesAndShift) {
   const CaseSpec spec = parse_case_file(
       write(replace(kMinimalCase, "type = \"static\"", "type = \"modal\"\nmodes = 4\nshift_hz = 2.5")));
-  EXPECT_EQ(spec.analysis.type, AnalysisType::modal);
-  EXPECT_EQ(spec.analysis.modes.lowest, 4);
-  EXPECT_EQ(spec.analysis.modal.shift_frequency_hz, 2.5);
+  EXPECT_TRUE(std::holds_alternative<ModalSpec>(spec.analysis));
+  EXPECT_EQ(std::get<ModalSpec>(spec.analysis).modes.lowest, 4);
+  EXPECT_EQ(std::get<ModalSpec>(spec.analysis).options.shift_frequency_hz, 2.5);
 }
 
 TEST_F(CaseFile, UnknownKeyIsRejectedNamingTheKeyAndItsLine) {
@@ -240,7 +241,7 @@ TEST_F(CaseFile, MissingFileIsAnInputError) {
 TEST_F(CaseFile, ConstraintOnAnUnknownSetIsRejectedWhenBuildingTheModel) {
   const CaseSpec spec = parse_case_file(write(replace(kMinimalCase, "set = \"left\"", "set = \"lefft\"")));
   try {
-    build_model(spec);
+    build_model(spec.model);
     FAIL() << "unknown set must be rejected";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("lefft"), std::string::npos) << e.what();

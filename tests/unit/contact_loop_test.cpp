@@ -147,10 +147,10 @@ TEST(ContactLoop, ClosedFormsAreNotClaimedForAVariableNormalLoad) {
 
 TEST(ContactLoop, VerificationCaseParsesIntoTheRigSpec) {
   const CaseSpec spec = parse_case_file(std::string(BB_SOURCE_DIR) + "/cases/verification/jenkins_loop_lift_off.toml");
-  ASSERT_EQ(spec.analysis.type, AnalysisType::contact_loop);
-  EXPECT_EQ(spec.analysis.contact_loop.normal_amplitude, 2e-6);
-  EXPECT_EQ(spec.analysis.contact_loop.law.kt, 5e7);
-  EXPECT_EQ(spec.mesh.kind, MeshSpec::Kind::none);
+  ASSERT_TRUE(std::holds_alternative<ContactLoopSpec>(spec.analysis));
+  EXPECT_EQ(std::get<ContactLoopSpec>(spec.analysis).normal_amplitude, 2e-6);
+  EXPECT_EQ(std::get<ContactLoopSpec>(spec.analysis).law.kt, 5e7);
+  EXPECT_EQ(spec.model.mesh.kind, MeshSpec::Kind::none);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-#include "cases/calibration_spec.hpp"
+#include "cases/parse_calibration.hpp"
 
 namespace bb::test {
 

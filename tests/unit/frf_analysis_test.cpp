@@ -10,6 +10,7 @@
 #include "analysis/frf_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "model/build_model.hpp"
 #include "frf/receptance.hpp"
 #include "reduction/reduced_model_io.hpp"
 #include "temp_folder.hpp"
@@ -80,10 +81,10 @@ responses = ["mid.y", "tip.y"]
 )";
   const CaseSpec with = parse(analysis + "residual_flexibility = true\n");
   const CaseSpec without = parse(analysis + "residual_flexibility = false\n");
-  const Model model = build_model(with);
+  const Model model = build_model(with.model);
   const FreeSystem s = assemble_free_system(model);
-  const auto full = prepare_frf(model, with.analysis.frf, std::nullopt);
-  const auto truncated = prepare_frf(model, without.analysis.frf, std::nullopt);
+  const auto full = prepare_frf(model, std::get<FrfSpec>(with.analysis));
+  const auto truncated = prepare_frf(model, std::get<FrfSpec>(without.analysis));
   const RayleighCoefficients c = fit_rayleigh(2 * std::numbers::pi * 20.0, 0.02, 2 * std::numbers::pi * 300.0, 0.02);
   for (double f : {5.0, 40.0, 150.0, 390.0}) {
     const auto exact = dense_direct(s, c, f, free_dof(model, s, "mid", 1), free_dof(model, s, "tip", 1));
@@ -113,8 +114,8 @@ name = "m20"
 masters = ["tip", "mid"]
 modes = 20
 )");
-  const Model model = build_model(spec);
-  const FrfOutcome o = run_frf(model, spec.analysis.frf, std::nullopt);
+  const Model model = build_model(spec.model);
+  const FrfOutcome o = run_frf(model, std::get<FrfSpec>(spec.analysis));
   const Eigen::VectorXd& full = o.full_modal->frequencies_hz;
   double previous = INFINITY;
   for (const RomOutcome& rom : o.roms) {
@@ -142,9 +143,9 @@ method = "direct"
 )";
   const CaseSpec ab = parse("modal_damping = 0.02\nfull_modes = 6\nforces = [{ dof = \"tip.y\", amplitude = 1.0 }]\nresponses = [\"mid.x\"]\n" + rom);
   const CaseSpec ba = parse("modal_damping = 0.02\nfull_modes = 6\nforces = [{ dof = \"mid.x\", amplitude = 1.0 }]\nresponses = [\"tip.y\"]\n" + rom);
-  const Model model = build_model(ab);
-  const auto p_ab = prepare_frf(model, ab.analysis.frf, std::nullopt);
-  const auto p_ba = prepare_frf(model, ba.analysis.frf, std::nullopt);
+  const Model model = build_model(ab.model);
+  const auto p_ab = prepare_frf(model, std::get<FrfSpec>(ab.analysis));
+  const auto p_ba = prepare_frf(model, std::get<FrfSpec>(ba.analysis));
   for (size_t curve : {0u, 1u})
     for (double f : {10.0, 85.0, 333.0}) {
       const std::complex<double> h_ab = frf_respond(*p_ab, curve, f)[0], h_ba = frf_respond(*p_ba, curve, f)[0];
@@ -163,11 +164,11 @@ name = "rom"
 method = "direct"
 )";
   const CaseSpec built = parse(analysis + "masters = [\"tip\", \"mid\"]\nmodes = 5\n");
-  const Model model = build_model(built);
-  const FrfOutcome first = run_frf(model, built.analysis.frf, std::nullopt);
+  const Model model = build_model(built.model);
+  const FrfOutcome first = run_frf(model, std::get<FrfSpec>(built.analysis));
   write_reduced_model(first.roms.front().model, dir_ / "rom.toml");
   const CaseSpec read = parse(analysis + "file = \"rom.toml\"\n");
-  const FrfOutcome second = run_frf(model, read.analysis.frf, std::nullopt);
+  const FrfOutcome second = run_frf(model, std::get<FrfSpec>(read.analysis));
   ASSERT_EQ(first.sweep.response.rows(), second.sweep.response.rows());
   EXPECT_EQ((first.sweep.response - second.sweep.response).cwiseAbs().maxCoeff(), 0.0);
 }

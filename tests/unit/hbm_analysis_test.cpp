@@ -11,6 +11,7 @@
 
 #include "analysis/hbm_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "model/build_model.hpp"
 #include "common/errors.hpp"
 #include "oscillator_case.hpp"
 #include "temp_folder.hpp"
@@ -78,7 +79,7 @@ class HbmAnalysis : public test::TempFolderTest {
  protected:
   HbmOutcome run(const std::string& text) {
     const CaseSpec spec = parse_case_file(write(text));
-    return run_hbm(build_model(spec), spec.analysis.hbm);
+    return run_hbm(build_model(spec.model), std::get<HbmSpec>(spec.analysis));
   }
   static double column(const ResultTable& t, const std::string& name, int row) {
     const std::optional<int> c = t.column_index(name);
@@ -174,9 +175,9 @@ TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {
   const std::string from = "tangential = { \"A.x\" = 1.0 }";
   text.replace(text.find(from), from.size(), "tangential = { \"A.x\" = 1.0, \"Q.x\" = -1.0 }");
   const CaseSpec spec = parse_case_file(write(text));
-  const Model model = build_model(spec);
+  const Model model = build_model(spec.model);
   try {
-    (void)run_hbm(model, spec.analysis.hbm);
+    (void)run_hbm(model, std::get<HbmSpec>(spec.analysis));
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("Q.x"), std::string::npos) << e.what();

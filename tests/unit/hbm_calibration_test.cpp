@@ -14,8 +14,11 @@
 #include <random>
 #include <string>
 
-#include "analysis/case_results.hpp"
-#include "identify/calibrate_case.hpp"
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "model/build_model.hpp"
+#include "pipeline/calibrate_case.hpp"
 #include "oscillator_case.hpp"
 #include "temp_folder.hpp"
 
@@ -72,7 +75,7 @@ TEST_P(HbmCalibrationSeeds, FrictionParametersComeBackFromNoisyPeaksWithAnOutlie
   std::ofstream(dir_ / "peaks.csv") << "level,peak_hz,peak_amp_per_n\n1,1,1\n2,1,1\n3,1,1\n4,1,1\n5,1,1\n6,1,1\n";
   std::ofstream(dir_ / "truth.toml") << oscillator_case(kt_true, mu_true);
   const CaseSpec truth = parse_case_file(dir_ / "truth.toml");
-  const CaseResults r = compute_case_results(truth, build_model(truth));
+  const AnalysisResults r = run_analysis(truth.analysis, build_model(truth.model));
   const ResultTable& peaks = r.tables.at("peaks");
   const int f = *peaks.column_index("peak_hz"), a = *peaks.column_index("peak_amp_per_n");
   std::mt19937 rng(GetParam());
@@ -86,7 +89,7 @@ TEST_P(HbmCalibrationSeeds, FrictionParametersComeBackFromNoisyPeaksWithAnOutlie
   }
   data.close();
   std::ofstream(dir_ / "case.toml") << oscillator_case(5.0e5, 0.8);  // wrong by 3x and 2.3x
-  const CalibrationOutcome o = calibrate_case(dir_ / "case.toml", false);
+  const CalibrationOutcome o = calibrate_case(dir_ / "case.toml");
   for (const CalibrationStart& s : o.starts)
     std::printf("  start kt %.4g mu %.4g -> kt %.6g mu %.6g, cost %.4g%s\n", s.start[0], s.start[1], s.values[0], s.values[1], s.final_cost,
                 s.converged ? "" : " (not converged)");

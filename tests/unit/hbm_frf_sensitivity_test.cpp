@@ -17,9 +17,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/case_results.hpp"
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "model/build_model.hpp"
 #include "common/errors.hpp"
-#include "identify/calibrate_case.hpp"
+#include "pipeline/calibrate_case.hpp"
 #include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
 #include "data_block.hpp"
@@ -51,7 +54,7 @@ Eigen::VectorXd column(const ResultTable& t, const std::string& name) {
 
 ResultTables run(const toml::table& t, const std::filesystem::path& file) {
   const CaseSpec spec = parse_case_table(t, file);
-  return compute_case_results(spec, build_model(spec)).tables;
+  return run_analysis(spec.analysis, build_model(spec.model)).tables;
 }
 
 // Central differences in log p of every table, at two steps. The AFT map is piecewise smooth (a
@@ -201,7 +204,7 @@ std::string round_trip_case(double kt, double mu, double zeta, const std::string
 // the [[calibration.data]] blocks.
 std::string write_round_trip_data(const std::filesystem::path& dir, unsigned seed) {
   const CaseSpec spec = parse_case_table(toml::parse(round_trip_case(1.5e6, 0.35, 0.01, "")), dir / "truth.toml");
-  const CaseResults r = compute_case_results(spec, build_model(spec));
+  const AnalysisResults r = run_analysis(spec.analysis, build_model(spec.model));
   SyntheticOptions o;
   o.kind = DataKind::frf;
   o.noise = 0.02;
@@ -226,7 +229,7 @@ parameters = [{ path = "analysis.contact.0.kt", lower = 1.0e5, upper = 1.0e7 },
               { path = "analysis.forces.0.amplitude", lower = 0.5, upper = 2.0 }]
 max_iterations = 1
 )" + blocks));
-  const CalibrationOutcome out = calibrate_case(dir_ / "case.toml", false);
+  const CalibrationOutcome out = calibrate_case(dir_ / "case.toml");
   EXPECT_EQ(out.derivatives.rfind("central differences", 0), 0u) << out.derivatives;
   EXPECT_NE(out.derivatives.find("analysis.forces.0.amplitude"), std::string::npos) << out.derivatives;
 }
@@ -253,7 +256,7 @@ derivatives = ")") + derivatives + "\"\n";
   for (int m = 0; m < 2; ++m) {
     write(round_trip_case(5.0e5, 0.8, 0.03, calibration(modes[m]) + blocks));
     const auto t0 = std::chrono::steady_clock::now();
-    out[m] = calibrate_case(dir_ / "case.toml", false);
+    out[m] = calibrate_case(dir_ / "case.toml");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("  derivatives = %s: %s; %d evaluations, %.2f s, %s\n", modes[m], out[m].derivatives.c_str(), out[m].residual_evaluations,
                 seconds, out[m].termination.c_str());

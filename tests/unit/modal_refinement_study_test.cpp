@@ -1,6 +1,8 @@
 // The modal refinement study (study/modal_refinement) on a small clamped bar.
 #include <gtest/gtest.h>
 
+#include "cases/case_spec.hpp"
+#include "common/errors.hpp"
 #include "study/modal_refinement.hpp"
 #include "temp_folder.hpp"
 
@@ -42,7 +44,7 @@ class ModalRefinementStudy : public test::TempFolderTest {};
 
 TEST_F(ModalRefinementStudy, ErrorsFallWithRefinementAndVanishOnTheFinestHex20Mesh) {
   const CaseSpec spec = parse_case_file(write(kBar));
-  const ModalRefinementResult r = run_modal_refinement_study(spec);
+  const ModalRefinementResult r = run_modal_refinement_study(spec.model, std::get<ModalSpec>(spec.analysis), std::get<ModalRefinementStudySpec>(*spec.study));
   ASSERT_EQ(r.rows.size(), 6u);
   const ModalRefinementRow& ref = r.rows[static_cast<size_t>(r.reference_row)];
   EXPECT_EQ(ref.element, ElementType::hex20);

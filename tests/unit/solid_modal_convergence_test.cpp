@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "analysis/modal_analysis.hpp"
-#include "cases/case_spec.hpp"
+#include "model/build_model.hpp"
 
 namespace bb {
 namespace {

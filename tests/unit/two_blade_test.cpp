@@ -21,6 +21,7 @@
 #include "analysis/mode_pairs.hpp"
 #include "articles/two_blade.hpp"
 #include "cases/case_spec.hpp"
+#include "model/build_model.hpp"
 #include "common/errors.hpp"
 #include "fe/solid.hpp"
 #include "mesh/hex_block.hpp"
@@ -269,7 +270,7 @@ class TwoBladeCase : public test::TempFolderTest {
  protected:
   std::string error_of(const std::string& text) {
     try {
-      build_model(parse_case_file(write(text)));
+      build_model(parse_case_file(write(text)).model);
     } catch (const InputError& e) {
       return e.what();
     }
@@ -279,7 +280,7 @@ class TwoBladeCase : public test::TempFolderTest {
 
 TEST_F(TwoBladeCase, AutomaticNodeSetsSitAtTheNamedPointsAndFaces) {
   const CaseSpec spec = parse_case_file(write(article_case("element = \"hex8\"\n")));
-  const Model model = build_model(spec);
+  const Model model = build_model(spec.model);
   const TwoBladeDimensions d;  // nominal: the points of the reconstruction, worked out by hand
   const std::map<std::string, Vec3> expected = {
       {"T1", {0.0175, 0.2200, 0.025}},       {"T2", {0.0675, 0.2200, 0.025}},
@@ -308,14 +309,14 @@ TEST_F(TwoBladeCase, AutomaticNodeSetsSitAtTheNamedPointsAndFaces) {
 
 TEST_F(TwoBladeCase, IdenticalBladesGiveNearDegeneratePairsInPhaseAndOutOfPhase) {
   const CaseSpec spec = parse_case_file(write(article_case("element = \"hex8i\"\nrefinement = 1\n")));
-  const Model model = build_model(spec);
-  const ModalResult modal = solve_modal(model, spec.analysis.modes, spec.analysis.modal);
+  const Model model = build_model(spec.model);
+  const ModalResult modal = solve_modal(model, std::get<ModalSpec>(spec.analysis).modes, std::get<ModalSpec>(spec.analysis).options);
   ASSERT_EQ(modal.frequencies_hz.size(), 4);
   const Eigen::VectorXd& f = modal.frequencies_hz;
   EXPECT_LT(f[1] / f[0] - 1.0, 0.01);  // first flexure of the two blades
   EXPECT_LT(f[3] / f[2] - 1.0, 0.01);  // second flexure
   EXPECT_GT(f[2] / f[1], 2.0);         // and two distinct pairs
-  const std::vector<ModeLabel> labels = label_mode_pairs(model, modal, *spec.analysis.pairs);
+  const std::vector<ModeLabel> labels = label_mode_pairs(model, modal, *std::get<ModalSpec>(spec.analysis).pairs);
   ASSERT_EQ(labels.size(), 4u);
   for (int pair = 0; pair < 2; ++pair) {
     const std::set<std::string> phases = {labels[2 * pair].pair, labels[2 * pair + 1].pair};
@@ -358,12 +359,12 @@ TEST(TwoBladeDimensions, ValidateNamesTheDimensionThatMakesTheGeometryImpossible
 
 TEST_F(TwoBladeCase, DimensionsTableSetsAnySubsetAndRejectsUnknownNamesAndImpossibleValues) {
   const CaseSpec spec = parse_case_file(write(article_case("element = \"hex20\"\nrefinement = 3\n[mesh.dimensions]\nL_a = 0.15\nw = 0.006\n")));
-  ASSERT_EQ(spec.mesh.kind, MeshSpec::Kind::two_blade);
-  EXPECT_EQ(spec.mesh.two_blade.L_a, 0.15);
-  EXPECT_EQ(spec.mesh.two_blade.w, 0.006);
-  EXPECT_EQ(spec.mesh.two_blade.H_n, TwoBladeDimensions{}.H_n);
-  EXPECT_EQ(spec.mesh.two_blade.refinement, 3);
-  EXPECT_EQ(spec.mesh.element, ElementType::hex20);
+  ASSERT_EQ(spec.model.mesh.kind, MeshSpec::Kind::two_blade);
+  EXPECT_EQ(spec.model.mesh.two_blade.L_a, 0.15);
+  EXPECT_EQ(spec.model.mesh.two_blade.w, 0.006);
+  EXPECT_EQ(spec.model.mesh.two_blade.H_n, TwoBladeDimensions{}.H_n);
+  EXPECT_EQ(spec.model.mesh.two_blade.refinement, 3);
+  EXPECT_EQ(spec.model.mesh.element, ElementType::hex20);
 
   const std::string typo = error_of(article_case("element = \"hex20\"\n[mesh.dimensions]\nL_b = 0.15\n"));
   EXPECT_NE(typo.find("mesh.dimensions.L_b"), std::string::npos) << typo;

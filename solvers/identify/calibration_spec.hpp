@@ -2,18 +2,19 @@
 // bounds, against which data: the reference values of chosen checks and/or measured curves read
 // from CSV files with units (identify/measured_data.hpp).
 #pragma once
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "cases/case_spec.hpp"
+#include "common/source_location.hpp"
 #include "identify/measured_data.hpp"
 
 namespace bb {
 
 struct CalibrationParameter {
-  std::string path;     // dotted path of a number in the case file, e.g. "mesh.dimensions.L_a"
+  std::string path;     // dotted path of a number in the case file, e.g. "mesh.dimensions.L_a" (cases/case_parameter.hpp)
   double lower = 0.0;   // bounds, > 0: parameters are fitted in log space
   double upper = 0.0;
   double start = 0.0;   // the value in the case file
@@ -66,13 +67,5 @@ struct CalibrationSpec {
 
 // Sigma of the entries of fit check `name`.
 double uncertainty_of(const CalibrationSpec& c, const std::string& name);
-
-// Reads [calibration] from a case file's table; std::nullopt when absent. Checks that every
-// path names an existing number inside its bounds and every fit check exists. Throws InputError.
-std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const std::filesystem::path& file,
-                                                 const CaseSpec& spec);
-
-// The number at a dotted path ("a.b.c"), or nullptr.
-toml::node* node_at_path(toml::table& root, const std::string& path);
 
 }  // namespace bb

@@ -1,18 +1,18 @@
-// Identification of numeric case values (dimensions, stiffnesses, damping ...) by weighted
-// nonlinear least squares (Ceres, trust region; the Jacobian from the model's own sensitivities
-// where an hbm analysis gives them, else central differences) against the reference
-// data of chosen checks and measured curves, with the parameter covariance at the optimum and an
-// optional cross-check of the identified values by an independent model.
+// What an identification reports: every start of the multi-start fit, the identified values with
+// their covariance, the fitted points before and after, and the cross-check by an independent model.
 #pragma once
+#include <toml++/toml.h>
+
 #include <Eigen/Dense>
 #include <cmath>
-#include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "cases/calibration_spec.hpp"
 #include "checks/checks.hpp"
+#include "identify/calibration_spec.hpp"
 #include "identify/fit_points.hpp"
+#include "results/table.hpp"
 
 namespace bb {
 
@@ -50,8 +50,5 @@ struct CalibrationOutcome {
   double cross_check_seconds = 0.0;
   bool cross_check_passed() const;
 };
-
-// Throws InputError for a malformed case, [calibration] or data file; a failed fit is reported in the outcome.
-CalibrationOutcome calibrate_case(const std::filesystem::path& case_file, bool show_progress);
 
 }  // namespace bb

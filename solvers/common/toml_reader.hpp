@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cases/case_spec.hpp"
+#include "common/source_location.hpp"
 
 namespace bb {
 

@@ -1,4 +1,4 @@
-#include "cases/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "identify/calibration_report.hpp"
+#include "report/calibration_report.hpp"
 
 #include <fmt/format.h>
 

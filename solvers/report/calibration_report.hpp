@@ -4,7 +4,7 @@
 #pragma once
 #include <filesystem>
 
-#include "identify/calibrate_case.hpp"
+#include "identify/calibration_outcome.hpp"
 
 namespace bb {
 

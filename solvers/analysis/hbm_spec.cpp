@@ -1,0 +1,25 @@
+#include "analysis/hbm_spec.hpp"
+
+#include <fmt/format.h>
+
+namespace bb {
+
+std::optional<std::string> unsupported_sensitivity(const HbmSpec& spec, const HbmParameter& parameter) {
+  switch (parameter.kind) {
+    case HbmParameter::Kind::modal_damping:
+      if (spec.damping_matrix || spec.damping.kind != FrfDamping::Kind::modal)
+        return "needs modal damping (modal_damping = zeta); rayleigh damping or a damping matrix has no single scale";
+      if (!(spec.damping.zeta > 0.0)) return "needs modal_damping > 0 (the log-sensitivity of zero damping is zero)";
+      return std::nullopt;
+    case HbmParameter::Kind::damper_law:
+      if (!spec.damper) return "the analysis has no [analysis.damper]";
+      return std::nullopt;
+    case HbmParameter::Kind::contact_law:
+      if (parameter.contact >= spec.contacts.size())
+        return fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", parameter.contact, spec.contacts.size());
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace bb

@@ -1,0 +1,54 @@
+// The analysis a case asks for, run on its model: result tables in memory (no files), and the
+// analysis's own outcome for the report. One outcome type per analysis type, in the order of
+// AnalysisSpec; OutcomeOf<Spec> names it.
+#pragma once
+#include <functional>
+#include <string>
+#include <variant>
+
+#include "analysis/analysis_spec.hpp"
+#include "analysis/contact_loop_analysis.hpp"
+#include "analysis/frf_analysis.hpp"
+#include "analysis/hbm_analysis.hpp"
+#include "analysis/modal_analysis.hpp"
+#include "analysis/static_analysis.hpp"
+#include "analysis/time_analysis.hpp"
+#include "model/model.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+using AnalysisOutcome = std::variant<StaticSolution, ModalResult, FrfOutcome, HbmOutcome, TimeOutcome, ContactLoopOutcome>;
+
+template <typename Spec>
+struct OutcomeOf;
+template <> struct OutcomeOf<StaticSpec> { using type = StaticSolution; };
+template <> struct OutcomeOf<ModalSpec> { using type = ModalResult; };
+template <> struct OutcomeOf<FrfSpec> { using type = FrfOutcome; };
+template <> struct OutcomeOf<HbmSpec> { using type = HbmOutcome; };
+template <> struct OutcomeOf<TimeSpec> { using type = TimeOutcome; };
+template <> struct OutcomeOf<ContactLoopSpec> { using type = ContactLoopOutcome; };
+static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<AnalysisSpec>, "one outcome per analysis type");
+
+struct AnalysisResults {
+  ResultTables tables;
+  AnalysisOutcome outcome;
+};
+
+// Calls fn(spec, outcome) with the matching alternatives of both.
+template <typename Fn>
+decltype(auto) visit_analysis(const AnalysisSpec& spec, const AnalysisResults& results, Fn&& fn) {
+  return std::visit(
+      [&](const auto& s) -> decltype(auto) {
+        using Spec = std::decay_t<decltype(s)>;
+        return fn(s, std::get<typename OutcomeOf<Spec>::type>(results.outcome));
+      },
+      spec);
+}
+
+// Runs the analysis. `progress` receives the progress lines of long sweeps (none when empty).
+// Throws InputError for a spec the model cannot serve (unknown points, sets), SolverError when a
+// solver fails in a way the analysis does not report in its tables.
+AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress = {});
+
+}  // namespace bb

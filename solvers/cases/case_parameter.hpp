@@ -1,0 +1,54 @@
+// A number of a case that calibration varies (and an hbm analysis differentiates), named in the case
+// file by its dotted path ("analysis.contact.0.kt") and resolved once, by the parser, into a typed
+// reference: calibration then edits the CaseSpec directly instead of rewriting and re-parsing TOML.
+#pragma once
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "analysis/hbm_spec.hpp"
+#include "articles/two_blade.hpp"
+#include "contact/aft.hpp"
+#include "fe/plane_stress.hpp"
+
+namespace bb {
+
+struct CaseSpec;
+
+struct MaterialValue {  // material.E, material.nu, material.rho, section.thickness
+  double fe::PlaneSection::*member = nullptr;
+};
+struct ArticleDimension {  // mesh.dimensions.<name> of the two-blade article
+  double TwoBladeDimensions::*member = nullptr;
+};
+struct ContactLawValue {  // analysis.contact.<i>.<law> (hbm, time); analysis.contact.<law> (contact_loop)
+  std::optional<size_t> contact;
+  contact::LawParameter law = contact::law_kt;
+};
+struct DamperValue {  // analysis.damper.{kn,kt,mu} (law) or analysis.damper.{mass,inertia,centrifugal_force}
+  std::optional<contact::LawParameter> law;
+  double DamperSpec::*member = nullptr;
+};
+struct ModalDampingValue {};  // analysis.modal_damping (frf, hbm, time)
+struct ForceAmplitude {       // analysis.forces.<i>.amplitude (frf, hbm, time)
+  size_t force = 0;
+};
+
+struct CaseParameter {
+  std::string path;  // as written in the case file
+  std::variant<MaterialValue, ArticleDimension, ContactLawValue, DamperValue, ModalDampingValue, ForceAmplitude> target;
+};
+
+// The typed reference of `path`; std::invalid_argument (with the supported paths) when its form is unknown.
+CaseParameter parse_parameter_path(const std::string& path);
+
+// The value in `spec`; std::invalid_argument when the case has no such value (e.g. no contact 3).
+double parameter_value(const CaseSpec& spec, const CaseParameter& parameter);
+// Sets it, then validates what depends on it (article dimensions, contact laws); InputError when
+// the new value makes the case invalid, std::invalid_argument as parameter_value.
+void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double value);
+
+// The same parameter as an hbm sensitivity (hbm/sensitivity.hpp differentiates it), or nullopt.
+std::optional<HbmParameter> hbm_parameter(const CaseParameter& parameter);
+
+}  // namespace bb

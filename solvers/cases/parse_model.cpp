@@ -1,0 +1,265 @@
+// [material], [mesh], [section], [sets], [[bc]], [[load]] -> ModelSpec.
+#include "cases/parse_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "cases/parse_common.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+ElementType parse_element(TomlReader& r) {
+  const std::string e = r.choice("element", {"q4", "cst", "hex8", "hex8i", "hex20"});
+  for (ElementType t : {ElementType::q4, ElementType::cst, ElementType::hex8, ElementType::hex8i, ElementType::hex20})
+    if (element_name(t) == e) return t;
+  r.fail("element", "unreachable");
+}
+
+std::vector<Eigen::Vector3d> parse_points(TomlReader& r, const std::string& key, size_t count) {
+  const toml::array& points = r.array(key);
+  if (points.size() != count) r.fail(key, fmt::format("expected {} points, found {}", count, points.size()));
+  std::vector<Eigen::Vector3d> out;
+  for (size_t i = 0; i < count; ++i) {
+    const toml::array* p = points[i].as_array();
+    if (!p || p->size() != 3 || !(*p)[0].is_number() || !(*p)[1].is_number() || !(*p)[2].is_number())
+      r.fail(key, fmt::format("point {} must be [x, y, z] with three numbers", i + 1));
+    out.emplace_back((*p)[0].value<double>().value(), (*p)[1].value<double>().value(), (*p)[2].value<double>().value());
+    if (!out.back().allFinite()) r.fail(key, "coordinates must be finite");
+  }
+  return out;
+}
+
+int parse_divisions(TomlReader& r, const std::string& key) {
+  const long n = r.integer(key);
+  if (n < 1) r.fail(key, fmt::format("must be >= 1, found {}", n));
+  if (n > 100'000) r.fail(key, fmt::format("{} divisions exceed the limit of 100000", n));
+  return static_cast<int>(n);
+}
+
+HexBlockSpec parse_hex_block(TomlReader r, ElementType element) {
+  HexBlockSpec b;
+  b.element = element;
+  const auto corners = parse_points(r, "corners", 8);
+  std::copy(corners.begin(), corners.end(), b.corners.begin());
+  b.nx = parse_divisions(r, "nx");
+  b.ny = parse_divisions(r, "ny");
+  b.nz = parse_divisions(r, "nz");
+  // Orientation: corners 1-4 must run counterclockwise seen from corner 5's side.
+  const Eigen::Vector3d e1 = b.corners[1] - b.corners[0], e2 = b.corners[3] - b.corners[0], e3 = b.corners[4] - b.corners[0];
+  if (!(e1.cross(e2).dot(e3) > 0)) r.fail("corners", "corners 1-4 must run counterclockwise seen from corners 5-8 (positive volume)");
+  r.finish();
+  return b;
+}
+
+// The generated two-blade article: mesh density in [mesh], any subset of the named dimensions
+// in [mesh.dimensions] (the others keep their documented defaults, articles/two_blade.hpp).
+void parse_two_blade(TomlReader& r, MeshSpec& m) {
+  m.kind = MeshSpec::Kind::two_blade;
+  // Far below every clearance validate() admits (1e-6 m), far above rounding in the corners.
+  m.merge_tolerance = 1e-7;
+  TwoBladeDimensions& d = m.two_blade;
+  auto small_integer = [&r](const std::string& key, long lo, long hi, int fallback) {
+    const auto v = r.optional_integer(key);
+    if (!v) return fallback;
+    if (*v < lo || *v > hi) r.fail(key, fmt::format("must lie in {}..{}, found {}", lo, hi, *v));
+    return static_cast<int>(*v);
+  };
+  d.refinement = small_integer("refinement", 1, 64, d.refinement);
+  d.thickness_divisions = small_integer("thickness_divisions", 1, 1000, d.thickness_divisions);
+  d.airfoil_divisions = small_integer("airfoil_divisions", 1, 1000, d.airfoil_divisions);
+  std::optional<TomlReader> dims;
+  if (const toml::table* table = r.optional_table("dimensions")) {
+    dims.emplace(*table, r.path() + ".dimensions", r.file());
+    for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
+      if (auto v = dims->optional_number(f.name)) d.*f.member = *v;
+    dims->finish();
+  }
+  try {
+    d.validate();
+  } catch (const DimensionError& e) {
+    if (dims && dims->has(e.name())) dims->fail(e.name(), e.what());
+    r.fail(r.has(e.name()) ? e.name() : std::string(), e.what());
+  }
+}
+
+MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
+  MeshSpec m;
+  m.at = r.location();
+  const std::string kind = r.choice("kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "two_blade"});
+  m.element = parse_element(r);
+  if (kind == "two_blade") {
+    if (m.dim() != 3) r.fail("element", "kind 'two_blade' needs a solid element (hex8, hex8i, hex20)");
+    parse_two_blade(r, m);
+    r.finish();
+    return m;
+  }
+  if (kind == "hex_blocks" || kind == "gmsh") {
+    if (m.dim() != 3) r.fail("element", fmt::format("kind '{}' needs a solid element (hex8, hex8i, hex20)", kind));
+    m.merge_tolerance = r.non_negative("merge_tolerance", m.merge_tolerance);
+    if (kind == "gmsh") {
+      m.kind = MeshSpec::Kind::gmsh;
+      m.gmsh_file = folder / r.string("file");
+    } else {
+      m.kind = MeshSpec::Kind::hex_blocks;
+      int index = 0;
+      for (const toml::node& n : r.array("block")) {
+        if (!n.is_table()) r.fail("block", "write blocks as [[mesh.block]] tables");
+        m.blocks.push_back(parse_hex_block(TomlReader(*n.as_table(), fmt::format("mesh.block[{}]", index++), r.file()), m.element));
+      }
+      if (m.blocks.empty()) r.fail("block", "needs at least one [[mesh.block]]");
+    }
+    r.finish();
+    return m;
+  }
+  if (kind == "csv") {
+    m.kind = MeshSpec::Kind::csv;
+    m.nodes_csv = folder / r.string("nodes");
+    m.elements_csv = folder / r.string("elements");
+    r.finish();
+    return m;
+  }
+  m.kind = MeshSpec::Kind::mapped_quad;
+  if (m.dim() != 2) r.fail("element", "a mapped_quad mesh needs q4 or cst elements (solids: kind = \"hex_blocks\")");
+  MappedQuadSpec& q = m.mapped;
+  q.element = m.element;
+  const toml::array& corners = r.array("corners");
+  if (corners.size() != 4) r.fail("corners", fmt::format("expected 4 corner points, found {}", corners.size()));
+  for (size_t i = 0; i < 4; ++i) {
+    const toml::array* p = corners[i].as_array();
+    if (!p || p->size() != 2 || !(*p)[0].is_number() || !(*p)[1].is_number())
+      r.fail("corners", fmt::format("corner {} must be [x, y] with two numbers", i + 1));
+    q.corners[i] = {(*p)[0].value<double>().value(), (*p)[1].value<double>().value()};
+    if (!q.corners[i].allFinite()) r.fail("corners", "coordinates must be finite");
+  }
+  const long nx = r.integer("nx"), ny = r.integer("ny");
+  if (nx < 1) r.fail("nx", fmt::format("must be >= 1, found {}", nx));
+  if (ny < 1) r.fail("ny", fmt::format("must be >= 1, found {}", ny));
+  // DOF numbers are int (CHOLMOD's int interface): keep 3 (nx+1)(ny+1) well inside its range.
+  constexpr long kMaxNodes = 200'000'000;
+  if (nx > kMaxNodes || ny > kMaxNodes || (nx + 1) * (ny + 1) > kMaxNodes)
+    r.fail(nx >= ny ? "nx" : "ny", fmt::format("{} x {} divisions exceed the limit of {} nodes", nx, ny, kMaxNodes));
+  q.nx = static_cast<int>(nx);
+  q.ny = static_cast<int>(ny);
+  const std::string numbering = r.choice("numbering", {"rows", "serpentine"}, "rows");
+  q.numbering = numbering == "rows" ? NodeNumbering::rows : NodeNumbering::serpentine;
+  const std::string diag = r.choice(
+      "diagonal", {"bottom_left_to_top_right", "bottom_right_to_top_left", "alternating"}, "bottom_left_to_top_right");
+  q.diagonal = diag == "bottom_left_to_top_right"   ? TriangleDiagonal::bottom_left_to_top_right
+               : diag == "bottom_right_to_top_left" ? TriangleDiagonal::bottom_right_to_top_left
+                                                    : TriangleDiagonal::alternating;
+  q.first_node_id = r.optional_integer("first_node_id").value_or(1);
+  q.first_element_id = r.optional_integer("first_element_id").value_or(1);
+  // Signed area of the corner polygon: clockwise corners would invert every element.
+  double area2 = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const auto& a = q.corners[i];
+    const auto& b = q.corners[(i + 1) % 4];
+    area2 += a.x() * b.y() - b.x() * a.y();
+  }
+  if (!(area2 > 0)) r.fail("corners", "corners must run counterclockwise and enclose a positive area");
+  r.finish();
+  return m;
+}
+
+NodeSetSpec parse_set(TomlReader r, const std::string& name) {
+  NodeSetSpec s;
+  s.name = name;
+  s.at = r.location();
+  if (r.has("ids")) {
+    s.ids = r.integer_array("ids");
+    if (s.ids.empty()) r.fail("ids", "empty id list");
+  }
+  s.group = r.optional_string("group").value_or("");
+  static const char* axes[] = {"x", "y", "z"};
+  bool predicate = false;
+  for (int a = 0; a < 3; ++a) {
+    if (auto v = r.optional_number(axes[a])) {
+      s.equals[a] = *v;
+      predicate = true;
+    }
+    const std::string range_key = std::string(axes[a]) + "_range";
+    if (r.has(range_key)) {
+      const auto v = r.number_array(range_key);
+      if (v.size() != 2 || v[0] > v[1]) r.fail(range_key, "expected [min, max] with min <= max");
+      s.range[a] = std::make_pair(v[0], v[1]);
+      predicate = true;
+    }
+  }
+  s.tol = r.non_negative("tol", 1e-9);
+  if (static_cast<int>(predicate) + static_cast<int>(!s.ids.empty()) + static_cast<int>(!s.group.empty()) != 1)
+    r.fail("", "a node set needs exactly one of 'ids', 'group' or a coordinate predicate (x, y, z, x_range, ...)");
+  r.finish();
+  return s;
+}
+
+ConstraintSpec parse_constraint(TomlReader r) {
+  ConstraintSpec c;
+  c.at = r.location();
+  c.constraint.set = r.string("set");
+  for (const std::string& d : r.string_array("dofs")) c.constraint.directions.push_back(parse_direction(r, "dofs", d));
+  if (c.constraint.directions.empty()) r.fail("dofs", "empty list");
+  c.constraint.value = r.optional_number("value").value_or(0.0);
+  r.finish();
+  return c;
+}
+
+LoadSpec parse_load(TomlReader r) {
+  LoadSpec l;
+  l.at = r.location();
+  l.load.set = r.string("set");
+  l.load.direction = parse_direction(r, "direction", r.string("direction"));
+  l.load.total = r.number("total");
+  l.load.split = parse_split(r, "split");
+  r.finish();
+  return l;
+}
+
+}  // namespace
+
+// Material, mesh, section, node sets, constraints and loads: the model when it has a mesh.
+ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) {
+  const fs::path& file = top.file();
+  ModelSpec spec;
+  {
+    TomlReader m(top.table("material"), "material", file);
+    spec.section.youngs_modulus = m.positive("E");
+    spec.section.poisson_ratio = m.number("nu");
+    if (!(spec.section.poisson_ratio > -1 && spec.section.poisson_ratio < 0.5))
+      m.fail("nu", fmt::format("must lie in (-1, 0.5), found {}", spec.section.poisson_ratio));
+    spec.section.density = m.non_negative("rho", 0.0);
+    if (needs_mass && !(spec.section.density > 0))
+      m.fail("rho", "must be > 0 for a modal analysis or a forced response");
+    m.finish();
+  }
+  spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder);
+  if (spec.mesh.dim() == 2) {
+    TomlReader s(top.table("section"), "section", file);
+    spec.section.thickness = s.positive("thickness");
+    s.finish();
+  } else if (top.has("section")) {
+    top.fail("section", "a solid mesh takes no [section] (thickness is for plane stress)");
+  }
+  if (const toml::table* sets = top.optional_table("sets")) {
+    for (const auto& [k, v] : *sets) {
+      const std::string name(k.str());
+      if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
+      spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
+      if (spec.mesh.kind == MeshSpec::Kind::two_blade) {
+        const auto reserved = two_blade_set_names();
+        if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
+          throw InputError(fmt::format("{}: 'sets.{}': the two_blade mesh defines this set itself ({}); choose another name",
+                                       spec.sets.back().at.where(), name, fmt::join(reserved, ", ")));
+      }
+    }
+  }
+  for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
+  for_each_table_in_array(top, "load", [&](TomlReader r) { spec.loads.push_back(parse_load(std::move(r))); });
+  return spec;
+}
+
+}  // namespace bb

@@ -1,0 +1,26 @@
+// What a [[check]] compares: result columns against reference columns, row by row on a shared key.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/source_location.hpp"
+
+namespace bb {
+
+struct CheckSpec {
+  std::string name;
+  std::string result;                 // result table, e.g. "nodal_displacements"
+  std::filesystem::path reference;    // CSV, resolved against the case file's folder; or empty when
+  std::string reference_result;       // another result table of the same run is the reference
+  std::string key;                    // key column of the reference, e.g. "node"
+  std::vector<std::pair<std::string, std::string>> compare;  // result column -> reference column
+  std::vector<long> keys;             // compare only these reference rows; empty = every row
+  double abs_tol = 0.0;
+  double rel_tol = 0.0;
+  std::string source;                 // where the reference values come from (for the report)
+  SourceLocation at;
+};
+
+}  // namespace bb

@@ -1,0 +1,257 @@
+#include "identify/least_squares_fit.hpp"
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace bb {
+namespace {
+
+// r_k = (computed_k - measured_k) / sigma_k: the misfit in units of the stated uncertainty.
+struct NumericResidual {
+  const FitEvaluator* evaluate;
+  size_t parameters;
+  int* evaluations;
+  bool operator()(double const* const* log_values, double* residuals) const {
+    std::vector<double> values(parameters);
+    for (size_t i = 0; i < values.size(); ++i) values[i] = std::exp(log_values[0][i]);
+    try {
+      const auto points = (*evaluate)(values, false);
+      ++*evaluations;
+      for (const FitPoint& p : points)
+        if (!std::isfinite(p.computed)) return false;  // a peak or mode not found there: Ceres shrinks the step
+      for (size_t k = 0; k < points.size(); ++k) residuals[k] = points[k].residual();
+      return true;
+    } catch (const std::exception&) {
+      return false;  // an impossible geometry or a failed solve: Ceres shrinks the step
+    }
+  }
+};
+
+// The same residuals with the Jacobian from the model's own sensitivities: one model run per
+// evaluation instead of 2 n + 1 (the parameters are log values: J_kj = p_j dr_k/dp_j).
+class AnalyticResidual : public ceres::CostFunction {
+ public:
+  AnalyticResidual(const FitEvaluator* evaluate, size_t parameters, int* evaluations, int residuals)
+      : evaluate_(evaluate), evaluations_(evaluations) {
+    set_num_residuals(residuals);
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(parameters));
+  }
+
+  bool Evaluate(double const* const* log_values, double* residuals, double** jacobians) const override {
+    const size_t n = static_cast<size_t>(parameter_block_sizes()[0]);
+    std::vector<double> values(n);
+    for (size_t i = 0; i < n; ++i) values[i] = std::exp(log_values[0][i]);
+    try {
+      const auto points = (*evaluate_)(values, true);
+      ++*evaluations_;
+      if (points.size() != static_cast<size_t>(num_residuals())) return false;
+      for (size_t k = 0; k < points.size(); ++k) {
+        const FitPoint& p = points[k];
+        if (!std::isfinite(p.computed)) return false;  // as NumericResidual: Ceres shrinks the step
+        residuals[k] = p.residual();
+        if (!jacobians || !jacobians[0]) continue;
+        if (p.gradient.size() != n) return false;
+        for (size_t j = 0; j < n; ++j) {
+          if (!std::isfinite(p.gradient[j])) return false;  // next to a grid point that has no derivative
+          jacobians[0][k * n + j] = p.gradient[j];
+        }
+      }
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+
+ private:
+  const FitEvaluator* evaluate_;
+  int* evaluations_;
+};
+
+class IterationTrace : public ceres::IterationCallback {
+ public:
+  IterationTrace(const FitProgress& progress, std::vector<std::pair<int, double>>& history, int start, int starts)
+      : progress_(progress), history_(history), start_(start), starts_(starts) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    history_.emplace_back(s.iteration, s.cost);
+    if (progress_) progress_({start_, starts_, s.iteration, s.cost, s.gradient_max_norm, s.step_is_successful});
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const FitProgress& progress_;
+  std::vector<std::pair<int, double>>& history_;
+  int start_, starts_;
+};
+
+// The spec's values, then starts - 1 points of a Latin hypercube in log space within the bounds.
+std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
+  const size_t n = cal.parameters.size();
+  std::vector<double> first(n);
+  for (size_t i = 0; i < n; ++i) first[i] = cal.parameters[i].start;
+  std::vector<std::vector<double>> starts{first};
+  if (cal.starts <= 1) return starts;
+  std::mt19937 rng(cal.seed);
+  const int m = cal.starts - 1;
+  std::vector<std::vector<int>> strata(n);
+  for (size_t i = 0; i < n; ++i) {
+    strata[i].resize(static_cast<size_t>(m));
+    std::iota(strata[i].begin(), strata[i].end(), 0);
+    std::shuffle(strata[i].begin(), strata[i].end(), rng);
+  }
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < m; ++k) {
+    std::vector<double> p(n);
+    for (size_t i = 0; i < n; ++i) {
+      const double lo = std::log(cal.parameters[i].lower), hi = std::log(cal.parameters[i].upper);
+      p[i] = std::exp(lo + (hi - lo) * (strata[i][static_cast<size_t>(k)] + unit(rng)) / m);
+    }
+    starts.push_back(p);
+  }
+  return starts;
+}
+
+// The covariance at the optimum x (log values) as standard deviations and correlations, with the
+// Birge ratio: a fit worse than the stated uncertainties allow (reduced chi-square above 1, e.g.
+// outliers or an imperfect model) scales the covariance up by it.
+void add_covariance(ceres::Problem& problem, std::vector<double>& x, const CalibrationSpec& cal, CalibrationOutcome& out) {
+  const size_t n = x.size();
+  out.std_devs.assign(n, NAN);
+  ceres::Covariance::Options cov_options;
+  cov_options.algorithm_type = ceres::DENSE_SVD;
+  cov_options.null_space_rank = -1;  // report rank deficiency instead of failing
+  ceres::Covariance covariance(cov_options);
+  std::vector<std::pair<const double*, const double*>> blocks{{x.data(), x.data()}};
+  if (!covariance.Compute(blocks, &problem)) {
+    out.warnings.push_back("the covariance could not be computed: the problem is rank deficient at the optimum");
+    return;
+  }
+  Eigen::MatrixXd c(n, n);
+  covariance.GetCovarianceBlock(x.data(), x.data(), c.data());
+  out.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  if (out.reduced_chi_square > 1.0) c *= out.reduced_chi_square;
+  for (size_t i = 0; i < n; ++i) {
+    const auto ii = static_cast<Eigen::Index>(i);
+    out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log-space sigma -> value sigma
+    for (size_t j = 0; j < n; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      out.correlation(ii, jj) = c(ii, jj) / std::sqrt(c(ii, ii) * c(jj, jj));
+      if (j > i && std::abs(out.correlation(ii, jj)) > 0.95)
+        out.warnings.push_back(fmt::format("'{}' and '{}' correlate at {:.3f}: the data cannot separate them",
+                                           cal.parameters[i].path, cal.parameters[j].path, out.correlation(ii, jj)));
+    }
+  }
+}
+
+// Another start's minimum counts as "as good" when it lies inside the 95 % joint confidence region
+// of the best one: delta chi-square (scaled like the covariance) below the chi-square quantile for
+// n parameters.
+void warn_other_minima(CalibrationOutcome& out, size_t n) {
+  const CalibrationStart& chosen = out.starts[out.best];
+  const double chi2_95[] = {3.84, 5.99, 7.81, 9.49, 11.07, 12.59, 14.07, 15.51, 16.92, 18.31};
+  const double quantile = n <= 10 ? chi2_95[n - 1] : static_cast<double>(n) + 2.0 * std::sqrt(2.0 * static_cast<double>(n));
+  const double scale = std::isfinite(out.reduced_chi_square) ? std::max(1.0, out.reduced_chi_square) : 1.0;
+  for (size_t s = 0; s < out.starts.size(); ++s) {
+    if (s == out.best || !out.starts[s].converged || 2.0 * (out.starts[s].final_cost - chosen.final_cost) / scale >= quantile) continue;
+    bool same = true;
+    for (size_t i = 0; i < n; ++i) same = same && std::abs(std::log(out.starts[s].values[i] / chosen.values[i])) < 0.05;
+    if (!same)
+      out.warnings.push_back(fmt::format("start {} reaches a cost ({:.6g}) within the 95 % confidence region of the best ({:.6g}) at other "
+                                         "values: the minimum is not unique", s + 1, out.starts[s].final_cost, chosen.final_cost));
+  }
+}
+
+}  // namespace
+
+CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator& evaluate, bool analytic, int residuals,
+                                  const FitProgress& progress) {
+  CalibrationOutcome out;
+  out.spec = cal;
+  const size_t n = cal.parameters.size();
+  const std::vector<std::vector<double>> starts = start_points(cal);
+  ceres::NumericDiffOptions diff;
+  diff.relative_step_size = cal.derivative_step;  // default 1e-4: above the eigensolver's 1e-10 noise, below the model's curvature
+  // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
+  const auto build = [&](std::vector<double>& x, ceres::Problem& problem) {
+    ceres::CostFunction* cost = nullptr;
+    if (analytic) {
+      cost = new AnalyticResidual(&evaluate, n, &out.residual_evaluations, residuals);
+    } else {
+      auto* numeric = new ceres::DynamicNumericDiffCostFunction<NumericResidual, ceres::CENTRAL>(
+          new NumericResidual{&evaluate, n, &out.residual_evaluations}, ceres::TAKE_OWNERSHIP, diff);
+      numeric->AddParameterBlock(static_cast<int>(n));
+      numeric->SetNumResiduals(residuals);
+      cost = numeric;
+    }
+    ceres::LossFunction* loss = nullptr;
+    if (cal.loss == "huber") loss = new ceres::HuberLoss(cal.loss_scale);
+    if (cal.loss == "cauchy") loss = new ceres::CauchyLoss(cal.loss_scale);
+    problem.AddResidualBlock(cost, loss, x.data());
+    for (size_t i = 0; i < n; ++i) {
+      problem.SetParameterLowerBound(x.data(), static_cast<int>(i), std::log(cal.parameters[i].lower));
+      problem.SetParameterUpperBound(x.data(), static_cast<int>(i), std::log(cal.parameters[i].upper));
+    }
+  };
+  ceres::Solver::Options options;
+  options.max_num_iterations = cal.max_iterations;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.function_tolerance = cal.function_tolerance;
+  options.parameter_tolerance = 1e-8;
+  options.update_state_every_iteration = true;
+  std::vector<double> x;
+  std::string message;
+  for (size_t s = 0; s < starts.size(); ++s) {
+    std::vector<double> xs(n);
+    for (size_t i = 0; i < n; ++i) xs[i] = std::log(starts[s][i]);
+    ceres::Problem problem;
+    build(xs, problem);
+    std::vector<std::pair<int, double>> history;
+    IterationTrace trace(progress, history, static_cast<int>(s + 1), static_cast<int>(starts.size()));
+    ceres::Solver::Options o = options;
+    o.callbacks.push_back(&trace);
+    ceres::Solver::Summary summary;
+    ceres::Solve(o, &problem, &summary);
+    CalibrationStart r;
+    r.start = starts[s];
+    for (double v : xs) r.values.push_back(std::exp(v));
+    r.initial_cost = summary.initial_cost;
+    r.final_cost = summary.final_cost;
+    r.iterations = static_cast<int>(summary.iterations.size());
+    r.converged = summary.termination_type == ceres::CONVERGENCE;
+    out.starts.push_back(r);
+    if (s == 0 || (r.converged && (!out.starts[out.best].converged || r.final_cost < out.starts[out.best].final_cost)) ||
+        (!out.starts[out.best].converged && r.final_cost < out.starts[out.best].final_cost)) {
+      out.best = s;
+      x = xs;
+      message = summary.message;
+      out.termination = summary.BriefReport();
+      out.history = history;
+    }
+  }
+  const CalibrationStart& chosen = out.starts[out.best];
+  out.initial_cost = out.starts.front().initial_cost;
+  out.final_cost = chosen.final_cost;
+  out.converged = chosen.converged;
+  if (!out.converged) out.warnings.push_back("the fit did not converge: " + message);
+  const double dof = static_cast<double>(residuals) - static_cast<double>(n);
+  out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
+  if (starts.size() > 1) warn_other_minima(out, n);
+  ceres::Problem problem;
+  build(x, problem);  // at the chosen optimum, for the covariance
+  out.values.resize(n);
+  for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
+  add_covariance(problem, x, cal, out);
+  for (size_t i = 0; i < n; ++i) {
+    const double span = std::log(cal.parameters[i].upper / cal.parameters[i].lower);
+    if (std::abs(x[i] - std::log(cal.parameters[i].lower)) < 1e-3 * span || std::abs(x[i] - std::log(cal.parameters[i].upper)) < 1e-3 * span)
+      out.warnings.push_back(fmt::format("'{}' ended on a bound ({:.6g}): the optimum may lie outside the stated range",
+                                         cal.parameters[i].path, out.values[i]));
+  }
+  return out;
+}
+
+}  // namespace bb

@@ -1,0 +1,160 @@
+#include "model/build_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/errors.hpp"
+#include "mesh/csv_mesh.hpp"
+#include "mesh/gmsh_import.hpp"
+#include "mesh/hex_block.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+void require_file(const fs::path& file, const SourceLocation& at) {
+  if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: file not found: {}", at.where(), file.string()));
+}
+
+// Merged mesh of the two-blade article and the node sets it defines itself (the names of
+// two_blade_set_names()): every master point must be a node, since the thesis's reduced
+// models and forces sit on nodes.
+Mesh build_two_blade(const MeshSpec& spec, std::map<std::string, std::vector<int>>& sets) {
+  const TwoBladeArticle article = two_blade_article(spec.two_blade, spec.element);
+  Mesh mesh;
+  try {
+    std::vector<Mesh> parts;
+    for (const HexBlockSpec& b : article.blocks) parts.push_back(generate_hex_block(b));
+    mesh = merge_meshes(parts, spec.merge_tolerance);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("{}: two_blade mesh: {}", spec.at.where(), e.what()));
+  }
+  constexpr double kOnNode = 1e-6;  // [m] farther than this, the point has no node
+  for (const auto& [name, point] : article.points) {
+    int best = -1;
+    double best_distance = INFINITY;
+    for (int n = 0; n < mesh.n_nodes(); ++n) {
+      const double distance = (mesh.coords.row(n).transpose() - point).norm();
+      if (distance < best_distance) {
+        best_distance = distance;
+        best = n;
+      }
+    }
+    if (best_distance > kOnNode)
+      throw InputError(fmt::format("{}: two_blade mesh: point {} ({:.6g}, {:.6g}, {:.6g}) has no node (nearest {:.3g} m away)",
+                                   spec.at.where(), name, point.x(), point.y(), point.z(), best_distance));
+    sets[name] = {best};
+  }
+  constexpr double kOnFace = 1e-9;  // [m]
+  auto select = [&](const std::string& name, auto&& on) {
+    std::vector<int>& nodes = sets[name];
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+      if (on(mesh.coords(n, 0), mesh.coords(n, 1))) nodes.push_back(n);
+    if (nodes.empty()) throw InputError(fmt::format("{}: two_blade mesh: set '{}' matches no node", spec.at.where(), name));
+  };
+  select("fixture_base", [&](double, double y) { return std::abs(y - article.fixture_base_y) <= kOnFace; });
+  select("fixture_left", [&](double x, double) { return std::abs(x - article.fixture_left_x) <= kOnFace; });
+  select("fixture_right", [&](double x, double) { return std::abs(x - article.fixture_right_x) <= kOnFace; });
+  for (size_t b = 0; b < 2; ++b) {
+    const TipFace& tip = article.tips[b];
+    select(fmt::format("tip{}", b + 1), [&](double x, double y) {
+      return std::abs(y - tip.y) <= kOnFace && x >= tip.x_min - kOnFace && x <= tip.x_max + kOnFace;
+    });
+  }
+  return mesh;
+}
+
+}  // namespace
+
+std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set, const NodeGroups* groups) {
+  std::vector<int> nodes;
+  if (!set.group.empty()) {
+    auto it = groups ? groups->find(set.group) : NodeGroups::const_iterator{};
+    if (!groups || it == groups->end()) {
+      std::string known;
+      if (groups)
+        for (const auto& [name, members] : *groups) known += (known.empty() ? "" : ", ") + name;
+      throw InputError(fmt::format("{}: node set '{}': the mesh has no physical group '{}'{}", set.at.where(), set.name,
+                                   set.group, known.empty() ? "" : " (groups: " + known + ")"));
+    }
+    nodes = it->second;
+  } else if (!set.ids.empty()) {
+    for (long id : set.ids) {
+      const int n = mesh.index_of(id);
+      if (n < 0) throw InputError(fmt::format("{}: node set '{}' names node {}, which is not in the mesh", set.at.where(), set.name, id));
+      nodes.push_back(n);
+    }
+  } else {
+    if (mesh.dim == 2 && (set.equals[2] || set.range[2]))
+      throw InputError(fmt::format("{}: node set '{}': a z predicate on a plane (2D) mesh", set.at.where(), set.name));
+    for (int n = 0; n < mesh.n_nodes(); ++n) {
+      bool match = true;
+      for (int a = 0; a < 3 && match; ++a) {
+        const double c = a < mesh.dim ? mesh.coords(n, a) : 0.0;
+        if (set.equals[a] && std::abs(c - *set.equals[a]) > set.tol) match = false;
+        if (set.range[a] && (c < set.range[a]->first - set.tol || c > set.range[a]->second + set.tol)) match = false;
+      }
+      if (match) nodes.push_back(n);
+    }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  if (nodes.empty()) throw InputError(fmt::format("{}: node set '{}' matches no node", set.at.where(), set.name));
+  return nodes;
+}
+
+Model build_model(const ModelSpec& spec) {
+  Model model;
+  NodeGroups groups;
+  switch (spec.mesh.kind) {
+    case MeshSpec::Kind::csv:
+      require_file(spec.mesh.nodes_csv, spec.mesh.at);
+      require_file(spec.mesh.elements_csv, spec.mesh.at);
+      model.mesh = read_csv_mesh(spec.mesh.nodes_csv, spec.mesh.elements_csv, spec.mesh.element);
+      break;
+    case MeshSpec::Kind::mapped_quad: model.mesh = generate_mapped_quad(spec.mesh.mapped); break;
+    case MeshSpec::Kind::hex_blocks: {
+      std::vector<Mesh> parts;
+      for (const HexBlockSpec& b : spec.mesh.blocks) parts.push_back(generate_hex_block(b));
+      model.mesh = parts.size() == 1 ? std::move(parts.front()) : merge_meshes(parts, spec.mesh.merge_tolerance);
+      break;
+    }
+    case MeshSpec::Kind::two_blade: model.mesh = build_two_blade(spec.mesh, model.node_sets); break;
+    case MeshSpec::Kind::none: return model;  // the analysis brings its own matrices
+    case MeshSpec::Kind::gmsh: {
+      require_file(spec.mesh.gmsh_file, spec.mesh.at);
+      const ElementType linear = spec.mesh.element == ElementType::hex20 ? ElementType::hex8 : spec.mesh.element;
+      GmshMesh g = read_gmsh_msh41(spec.mesh.gmsh_file, linear);
+      for (const auto& b : g.mesh.blocks)
+        if (b.type != spec.mesh.element)
+          throw InputError(fmt::format("{}: the Gmsh file holds {} elements, the case says mesh.element = \"{}\"",
+                                       spec.mesh.at.where(), element_name(b.type), element_name(spec.mesh.element)));
+      model.mesh = std::move(g.mesh);
+      groups = std::move(g.node_groups);
+      break;
+    }
+  }
+  model.section = spec.section;
+  for (const NodeSetSpec& s : spec.sets) model.node_sets[s.name] = select_nodes(model.mesh, s, &groups);
+  auto require_set = [&](const std::string& name, const SourceLocation& at) {
+    if (!model.node_sets.count(name)) throw InputError(fmt::format("{}: unknown node set '{}'", at.where(), name));
+  };
+  for (const ConstraintSpec& c : spec.constraints) {
+    require_set(c.constraint.set, c.at);
+    for (Direction d : c.constraint.directions)
+      if (d >= model.mesh.dim) throw InputError(fmt::format("{}: direction z on a 2D mesh", c.at.where()));
+    model.constraints.push_back(c.constraint);
+  }
+  for (const LoadSpec& l : spec.loads) {
+    require_set(l.load.set, l.at);
+    if (l.load.direction >= model.mesh.dim) throw InputError(fmt::format("{}: direction z on a 2D mesh", l.at.where()));
+    model.loads.push_back(l.load);
+  }
+  return model;
+}
+
+}  // namespace bb

@@ -1,0 +1,63 @@
+// What a case says about its model, validated by the parser: how the mesh is made or read, the
+// material, node sets, constraints and loads. model/build_model turns it into a Model.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "articles/two_blade.hpp"
+#include "common/source_location.hpp"
+#include "mesh/hex_block.hpp"
+#include "mesh/mapped_quad.hpp"
+#include "model/model.hpp"
+
+namespace bb {
+
+struct MeshSpec {
+  enum class Kind { mapped_quad, csv, hex_blocks, gmsh, two_blade, none } kind = Kind::mapped_quad;  // none: matrices only
+  MappedQuadSpec mapped;
+  std::filesystem::path nodes_csv;     // csv: columns id,x,y[,z]
+  std::filesystem::path elements_csv;  // csv: columns id,n1..nN
+  std::vector<HexBlockSpec> blocks;    // hex_blocks: merged at coincident nodes
+  double merge_tolerance = 1e-9;       // [m]
+  std::filesystem::path gmsh_file;     // gmsh: .msh 4.1 ASCII
+  TwoBladeDimensions two_blade;        // two_blade: the thesis's test article, validated
+  ElementType element = ElementType::q4;
+  SourceLocation at;
+
+  int dim() const { return element_dimension(element); }
+};
+
+struct NodeSetSpec {
+  std::string name;
+  std::vector<long> ids;  // explicit ids, or empty
+  std::string group;      // a Gmsh physical group name, or empty
+  // Coordinate predicate: every given axis must match (|x - value| <= tol, or within a range).
+  std::array<std::optional<double>, 3> equals;
+  std::array<std::optional<std::pair<double, double>>, 3> range;
+  double tol = 1e-9;
+  SourceLocation at;
+};
+
+struct ConstraintSpec {
+  Constraint constraint;
+  SourceLocation at;
+};
+
+struct LoadSpec {
+  NodalLoad load;
+  SourceLocation at;
+};
+
+struct ModelSpec {
+  MeshSpec mesh;
+  fe::PlaneSection section;  // E, nu, rho (and the thickness of plane meshes)
+  std::vector<NodeSetSpec> sets;
+  std::vector<ConstraintSpec> constraints;
+  std::vector<LoadSpec> loads;
+};
+
+}  // namespace bb

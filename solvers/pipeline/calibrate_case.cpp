@@ -1,0 +1,170 @@
+#include "pipeline/calibrate_case.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <variant>
+
+#include "analysis/hbm_analysis.hpp"
+#include "analysis/run_analysis.hpp"
+#include "cases/case_parameter.hpp"
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "common/errors.hpp"
+#include "model/build_model.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The parsed case and what each fitted value sets in it.
+struct CalibratedCase {
+  CaseSpec spec;
+  std::vector<CaseParameter> parameters;  // in CalibrationSpec::parameters order
+};
+
+CalibratedCase with_parameters(CaseSpec spec, const CalibrationSpec& cal) {
+  CalibratedCase c{std::move(spec), {}};
+  for (const CalibrationParameter& p : cal.parameters) c.parameters.push_back(parse_parameter_path(p.path));
+  return c;
+}
+
+// The case with the given values; InputError when a value makes it invalid or the case lacks one.
+CaseSpec with_values(const CalibratedCase& base, const std::vector<double>& values) {
+  CaseSpec spec = base.spec;
+  for (size_t i = 0; i < values.size(); ++i) {
+    try {
+      set_parameter_value(spec, base.parameters[i], values[i]);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("{}: calibration path {}", base.spec.file.string(), e.what()));
+    }
+  }
+  return spec;
+}
+
+std::vector<std::string> parameter_paths(const CalibrationSpec& cal) {
+  std::vector<std::string> paths;
+  for (const CalibrationParameter& p : cal.parameters) paths.push_back(p.path);
+  return paths;
+}
+
+// The fitted points of the case with the given parameter values, and the tables of its curves;
+// with `gradients`, frf points carry d r / d log p from the tables' sensitivity columns.
+std::vector<FitPoint> fitted_points(const CalibratedCase& base, const CalibrationSpec& cal, const std::vector<double>& values,
+                                    ResultTables* curves = nullptr, bool gradients = false) {
+  const CaseSpec spec = with_values(base, values);
+  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model));
+  std::vector<FitPoint> points;
+  for (const CheckSpec& c : spec.checks) {
+    if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
+    const auto e = check_points(evaluate_check(c, results.tables), cal);
+    points.insert(points.end(), e.begin(), e.end());
+  }
+  for (const CalibrationData& d : cal.data) {
+    const auto e = data_points(d, results.tables, gradients ? parameter_paths(cal) : std::vector<std::string>{});
+    points.insert(points.end(), e.begin(), e.end());
+    if (curves) curves->insert_or_assign(d.table, results.tables.at(d.table));
+  }
+  return points;
+}
+
+// The case asking its hbm analysis for the sensitivities to every parameter, when analytic
+// derivatives can serve the whole fit: derivatives = "auto", only frf data, and the analysis
+// differentiates every parameter. Otherwise the reason why not.
+std::variant<CalibratedCase, std::string> analytic_case(const CalibratedCase& base, const CalibrationSpec& cal) {
+  if (cal.derivatives != "auto") return std::string("derivatives = \"numeric\"");
+  if (!cal.fit_checks.empty()) return std::string("fitted checks have no derivatives");
+  for (const CalibrationData& d : cal.data)
+    if (d.data.kind != DataKind::frf) return fmt::format("data '{}' is not frf data", d.name);
+  CalibratedCase out = base;
+  HbmSpec* hbm = std::get_if<HbmSpec>(&out.spec.analysis);
+  if (!hbm) return std::string("the analysis is not hbm");
+  for (const CaseParameter& p : base.parameters) {
+    const std::optional<HbmParameter> h = hbm_parameter(p);
+    if (!h) return fmt::format("the analysis has no sensitivities for these parameters ('{}' is not differentiated)", p.path);
+    if (const std::optional<std::string> why = unsupported_sensitivity(*hbm, *h))
+      return fmt::format("the analysis has no sensitivities for these parameters ('{}': {})", p.path, *why);
+    const auto same = [&](const HbmParameter& q) { return q.label == h->label; };
+    if (std::none_of(hbm->sensitivities.begin(), hbm->sensitivities.end(), same)) hbm->sensitivities.push_back(*h);
+  }
+  return out;
+}
+
+// Replaces the number at `path` of a case table (for the calibrated copy of the case file).
+void set_number(toml::table& root, const std::string& path, double value) {
+  toml::node* n = node_at_path(root, path);
+  if (!n || !n->is_number()) throw InputError(fmt::format("calibration path '{}' is not a number in the case", path));
+  if (toml::value<double>* f = n->as_floating_point()) {
+    *f = value;
+    return;
+  }
+  const size_t dot = path.rfind('.');  // an integer: replaced by a float in its parent table
+  toml::node* parent = dot == std::string::npos ? &root : node_at_path(root, path.substr(0, dot));
+  if (!parent || !parent->is_table()) throw InputError(fmt::format("calibration path '{}' is inside an array of numbers", path));
+  parent->as_table()->insert_or_assign(path.substr(dot == std::string::npos ? 0 : dot + 1), value);
+}
+
+// The same parameter paths in an independent model (e.g. Newmark instead of the harmonic balance).
+void cross_check(const CalibrationSpec& cal, CalibrationOutcome& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const CalibratedCase cross = with_parameters(parse_case_file(cal.cross_check), cal);
+  const CaseSpec spec = with_values(cross, out.values);
+  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model));
+  for (const CheckSpec& c : spec.checks) {
+    const auto e = evaluate_check(c, results.tables);
+    out.cross_check.insert(out.cross_check.end(), e.begin(), e.end());
+  }
+  out.cross_check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!out.cross_check_passed())
+    out.warnings.push_back(fmt::format("the cross-check {} fails with the identified values", cal.cross_check.string()));
+}
+
+}  // namespace
+
+bool CalibrationOutcome::cross_check_passed() const {
+  return std::all_of(cross_check.begin(), cross_check.end(), [](const CheckEntry& e) { return e.pass; });
+}
+
+CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& progress) {
+  const toml::table table = read_case_table(case_file);
+  CaseSpec spec = parse_case_table(table, case_file);
+  const std::optional<CalibrationSpec> cal = parse_calibration(table, case_file, spec);
+  if (!cal) throw InputError(fmt::format("{}: no [calibration] section", case_file.string()));
+  const CalibratedCase base = with_parameters(std::move(spec), *cal);
+  std::vector<double> start;
+  for (const CalibrationParameter& p : cal->parameters) start.push_back(p.start);
+  const auto analytic_base = analytic_case(base, *cal);
+  const CalibratedCase* sensitivity_base = std::get_if<CalibratedCase>(&analytic_base);
+  ResultTables curves_before;
+  const std::vector<FitPoint> before = fitted_points(sensitivity_base ? *sensitivity_base : base, *cal, start, &curves_before,
+                                                     sensitivity_base != nullptr);
+  for (const FitPoint& p : before)
+    if (!(p.sigma > 0.0)) throw InputError(fmt::format("{}: fitted entry '{}' has a zero reference or uncertainty", cal->at.where(), p.label));
+  std::string numeric_reason = sensitivity_base ? "" : std::get<std::string>(analytic_base);
+  if (sensitivity_base)
+    for (const FitPoint& p : before)
+      if (p.gradient.size() != cal->parameters.size() ||
+          !std::all_of(p.gradient.begin(), p.gradient.end(), [](double g) { return std::isfinite(g); }))
+        numeric_reason = fmt::format("no finite sensitivities for '{}' of '{}' at the start", p.label, p.set);
+  const bool analytic = numeric_reason.empty();
+  const CalibratedCase& model = analytic ? *sensitivity_base : base;
+  const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
+    return fitted_points(model, *cal, values, nullptr, gradients);
+  };
+  CalibrationOutcome out = fit_parameters(*cal, evaluate, analytic, static_cast<int>(before.size()), progress);
+  out.before = before;
+  out.curves_before = std::move(curves_before);
+  out.derivatives = analytic ? "analytic (implicit function theorem, hbm/sensitivity.hpp)"
+                             : fmt::format("central differences, relative step {:g} ({})", cal->derivative_step,
+                                           cal->derivatives == "numeric" ? "as asked" : numeric_reason);
+  out.after = fitted_points(base, *cal, out.values, &out.curves_after);
+  out.calibrated = table;
+  for (size_t i = 0; i < out.values.size(); ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);
+  if (!cal->cross_check.empty()) cross_check(*cal, out);
+  return out;
+}
+
+}  // namespace bb

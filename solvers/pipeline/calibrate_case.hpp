@@ -1,0 +1,19 @@
+// Identification of numeric case values (dimensions, stiffnesses, damping ...) by weighted
+// nonlinear least squares (identify/least_squares_fit.hpp; the Jacobian from the model's own
+// sensitivities where an hbm analysis gives them, else central differences) against the reference
+// data of chosen checks and measured curves, with an optional cross-check of the identified values
+// by an independent model. Each evaluation edits the parsed case (cases/case_parameter.hpp) and
+// reruns its model and analysis.
+#pragma once
+#include <filesystem>
+
+#include "identify/calibration_outcome.hpp"
+#include "identify/least_squares_fit.hpp"
+
+namespace bb {
+
+// Throws InputError for a malformed case, [calibration] or data file; a failed fit is reported in
+// the outcome. `progress` receives every trust-region iteration (none when empty).
+CalibrationOutcome calibrate_case(const std::filesystem::path& case_file, const FitProgress& progress = {});
+
+}  // namespace bb

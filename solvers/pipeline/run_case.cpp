@@ -1,0 +1,109 @@
+#include "pipeline/run_case.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include <unistd.h>
+
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "checks/checks.hpp"
+#include "common/errors.hpp"
+#include "model/build_model.hpp"
+#include "pipeline/run_study.hpp"
+#include "report/analysis_files.hpp"
+#include "report/analysis_plots.hpp"
+#include "report/describe_analysis.hpp"
+#include "report/plots.hpp"
+#include "report/writers.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
+  // Long sweeps report progress on a terminal only (one line, rewritten in place).
+  HbmProgress progress;
+  if (isatty(STDERR_FILENO)) progress = [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
+  const AnalysisResults results = run_analysis(spec.analysis, model, progress);
+  if (progress) std::fputs("\r\033[K", stderr);
+  describe_analysis(spec.analysis, results, run);
+  for (const CheckSpec& c : spec.checks) {
+    auto entries = evaluate_check(c, results.tables);
+    run.checks.insert(run.checks.end(), entries.begin(), entries.end());
+  }
+  fs::create_directories(out);
+  for (const auto& [name, table] : results.tables) {
+    write_table_csv(table, out / (name + ".csv"));
+    run.tables.push_back(name + ".csv");
+    if (!table.text_columns.empty()) run.listed_tables.push_back(table);
+  }
+  write_analysis_files(spec.analysis, results, out, run);
+  if (options.plots) {
+    plot_analysis(spec.analysis, results, model, spec.checks, out, run);
+    int i = 0;
+    for (const CheckSpec& c : spec.checks) run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
+  }
+  if (options.study && spec.study) run_study(*spec.study, spec, model, results, out, options.plots, run);
+  bool all_pass = true;
+  for (const CheckEntry& e : run.checks) all_pass = all_pass && e.pass;
+  run.status = run.checks.empty() ? RunStatus::no_checks : (all_pass ? RunStatus::pass : RunStatus::fail);
+}
+
+}  // namespace
+
+RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RunOutcome outcome;
+  RunRecord& run = outcome.record;
+  run.case_file = case_file;
+  run.case_name = case_file.stem().string();
+  run.title = run.case_name;
+  outcome.out_dir = options.out_dir.value_or(fs::path("reports") / run.case_name);
+  try {
+    const toml::table case_table = read_case_table(case_file);
+    const CaseSpec spec = parse_case_table(case_table, case_file);
+    parse_calibration(case_table, case_file, spec);  // a bad [calibration] or data file fails here too, not only in `calibrate`
+    run.case_name = spec.name;
+    run.title = spec.title;
+    run.description = spec.description;
+    run.check_specs = spec.checks;
+    outcome.out_dir = options.out_dir.value_or(fs::path("reports") / spec.name);
+    fs::create_directories(outcome.out_dir);
+    fs::remove(outcome.out_dir / "summary.json");  // a stale success must not survive a failed rerun
+    const Model model = build_model(spec.model);
+    describe_model(spec.model, std::holds_alternative<ContactLoopSpec>(spec.analysis), model, run);
+    try {
+      analyse(spec, model, outcome.out_dir, options, run);
+    } catch (const InputError& e) {
+      // Errors found by the solvers concern the model as a whole: name the case they came from.
+      const std::string what = e.what();
+      throw InputError(what.starts_with(case_file.string()) ? what : fmt::format("{}: {}", case_file.string(), what));
+    }
+  } catch (const InputError& e) {
+    run.status = RunStatus::bad_input;
+    run.message = e.what();
+  } catch (const SolverError& e) {
+    run.status = RunStatus::solver_failed;
+    run.message = e.what();
+  } catch (const std::exception& e) {
+    run.status = RunStatus::solver_failed;
+    run.message = fmt::format("internal error: {}", e.what());
+  }
+  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  try {
+    fs::create_directories(outcome.out_dir);
+    write_report_md(run, outcome.out_dir / "report.md");
+    write_summary_json(run, outcome.out_dir / "summary.json");
+  } catch (const std::exception& e) {
+    run.status = RunStatus::solver_failed;
+    run.message = fmt::format("could not write the report: {}", e.what());
+  }
+  return outcome;
+}
+
+}  // namespace bb

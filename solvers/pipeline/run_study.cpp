@@ -1,0 +1,69 @@
+#include "pipeline/run_study.hpp"
+
+#include "report/frf_plots.hpp"
+#include "report/hbm_plots.hpp"
+#include "report/plots.hpp"
+#include "report/time_plots.hpp"
+#include "report/writers.hpp"
+#include "study/hbm_study.hpp"
+#include "study/modal_refinement.hpp"
+#include "study/refinement.hpp"
+#include "study/rom_study.hpp"
+#include "study/time_study.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct StudyRun {
+  const CaseSpec& spec;
+  const Model& model;
+  const AnalysisResults& results;
+  const fs::path& out;
+  bool plots;
+  RunRecord& run;
+
+  void operator()(const RefinementStudySpec& s) const {
+    run.study = run_refinement_study(spec.model, s);
+    run.study_note = s.note;
+    if (!plots) return;
+    run.study_plots.push_back(plot_refinement_error(*run.study, out, "study_error"));
+    run.study_plots.push_back(plot_refinement_cost(*run.study, out, "study_cost"));
+  }
+  void operator()(const ModalRefinementStudySpec& s) const {
+    run.modal_study = run_modal_refinement_study(spec.model, std::get<ModalSpec>(spec.analysis), s);
+    run.study_note = s.note;
+    if (plots) run.study_plots.push_back(plot_modal_refinement(*run.modal_study, out, "study_modal"));
+  }
+  void operator()(const RomStudySpec& s) const {
+    table(run_rom_study(std::get<FrfSpec>(spec.analysis), s, model), s.note, "rom_study", "study_rom", plot_rom_study);
+  }
+  void operator()(const HbmHarmonicsStudySpec& s) const {
+    const HbmOutcome& hbm = std::get<HbmOutcome>(results.outcome);
+    table(run_hbm_harmonics_study(std::get<HbmSpec>(spec.analysis), hbm.prepared, s), s.note, "hbm_harmonics_study",
+          "study_harmonics", plot_hbm_harmonics_study);
+  }
+  void operator()(const TimeStepStudySpec& s) const {
+    table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s), s.note, "time_step_study", "study_time_steps",
+          plot_time_step_study);
+  }
+
+  // A study whose result is one table: listed in the report, written as CSV, drawn.
+  template <typename Plot>
+  void table(ResultTable t, const std::string& note, const std::string& name, const std::string& plot_name, Plot plot) const {
+    run.study_tables.push_back(std::move(t));
+    run.study_note = note;
+    write_table_csv(run.study_tables.back(), out / (name + ".csv"));
+    if (plots) run.study_plots.push_back(plot(run.study_tables.back(), out, plot_name));
+  }
+};
+
+}  // namespace
+
+void run_study(const StudySpec& study, const CaseSpec& spec, const Model& model, const AnalysisResults& results,
+               const fs::path& out, bool plots, RunRecord& run) {
+  std::visit(StudyRun{spec, model, results, out, plots, run}, study);
+}
+
+}  // namespace bb

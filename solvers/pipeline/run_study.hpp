@@ -1,0 +1,15 @@
+// The case's [study] (accuracy vs cost), run after its analysis with --study: results into the
+// run record, tables as CSV, plots.
+#pragma once
+#include <filesystem>
+
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "report/run_record.hpp"
+
+namespace bb {
+
+void run_study(const StudySpec& study, const CaseSpec& spec, const Model& model, const AnalysisResults& results,
+               const std::filesystem::path& out, bool plots, RunRecord& run);
+
+}  // namespace bb

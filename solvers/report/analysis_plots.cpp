@@ -1,0 +1,80 @@
+#include "report/analysis_plots.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+
+#include "report/contact_loop_plots.hpp"
+#include "report/frf_plots.hpp"
+#include "report/hbm_plots.hpp"
+#include "report/plots.hpp"
+#include "report/time_plots.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct PlotTarget {
+  const Model& model;
+  const std::vector<CheckSpec>& checks;
+  const fs::path& out;
+  RunRecord& run;
+};
+
+void plots(const StaticSpec&, const StaticSolution& s, const PlotTarget& t) {
+  t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, s.displacements, t.out, "deformed", "Deformed mesh"));
+}
+
+void plots(const ModalSpec&, const ModalResult& modal, const PlotTarget& t) {
+  for (size_t k = 0; k < std::min<size_t>(4, modal.shapes.size()); ++k)
+    t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, modal.shapes[k], t.out, fmt::format("mode{}", k + 1),
+                                             fmt::format("Mode {}: {:.4f} Hz", k + 1, modal.frequencies_hz[static_cast<Eigen::Index>(k)])));
+}
+
+void plots(const FrfSpec&, const FrfOutcome& frf, const PlotTarget& t) {
+  std::vector<std::string> outputs;  // each response once, in order of appearance
+  for (const FrfCurveSet& c : frf.curves)
+    for (const std::string& o : c.outputs)
+      if (std::find(outputs.begin(), outputs.end(), o) == outputs.end()) outputs.push_back(o);
+  for (const std::string& o : outputs) t.run.plots.push_back(plot_frf(frf, o, t.out, "frf_" + o));
+  if (!frf.level_forces.empty()) t.run.plots.push_back(plot_force_levels(frf, t.out, "force_levels"));
+}
+
+void plots(const ContactLoopSpec&, const ContactLoopOutcome& loop, const PlotTarget& t) {
+  t.run.plots.push_back(plot_contact_loop(loop, t.out, "hysteresis"));
+}
+
+void plots(const TimeSpec&, const TimeOutcome& time, const PlotTarget& t) {
+  for (size_t r = 0; r < time.prepared.response_names.size(); ++r)
+    t.run.plots.push_back(plot_time_frf(time, r, t.out, "frf_" + time.prepared.response_names[r]));
+  if (time.record && time.record->history.steps > 0 && !time.prepared.contact_names.empty()) {
+    t.run.plots.push_back(plot_hysteresis(time, t.out, "hysteresis"));
+    t.run.plots.push_back(plot_contact_forces(time, t.out, "contact_forces"));
+  }
+}
+
+void plots(const HbmSpec&, const HbmOutcome& h, const PlotTarget& t) {
+  for (size_t r = 0; r < h.prepared.response_names.size(); ++r)
+    t.run.plots.push_back(plot_hbm_levels(h, r, false, t.out, "frf_levels_" + h.prepared.response_names[r]));
+  t.run.plots.push_back(plot_hbm_levels(h, 0, true, t.out, "frf_per_newton_" + h.prepared.response_names[0]));
+  fs::path reference;  // the thesis's peaks, when a check compares with them
+  for (const CheckSpec& c : t.checks)
+    if (c.result == "peaks" && !c.reference.empty() && reference.empty()) reference = c.reference;
+  t.run.plots.push_back(plot_hbm_performance(h, "hz", reference, t.out, "performance_frequency"));
+  t.run.plots.push_back(plot_hbm_performance(h, "amp_per_n", reference, t.out, "performance_amplitude"));
+  for (const char* kind : {"IP", "OOP", "peak"})
+    if ((std::string(kind) == "peak") != h.prepared.ip_oop.has_value())
+      t.run.plots.push_back(plot_contact_states(h, kind, t.out, fmt::format("contact_states_{}", kind)));
+}
+
+}  // namespace
+
+void plot_analysis(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model,
+                   const std::vector<CheckSpec>& checks, const fs::path& out, RunRecord& run) {
+  const PlotTarget target{model, checks, out, run};
+  visit_analysis(spec, results, [&](const auto& s, const auto& outcome) { plots(s, outcome, target); });
+}
+
+}  // namespace bb

@@ -125,6 +125,17 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
   }
   peak.solution = best;
   peak.frequency_hz = best.omega / kTwoPi;
+  const double below = pts[static_cast<size_t>(std::max<Index>(k - 1, 0))].omega / kTwoPi;
+  const double above = pts[static_cast<size_t>(std::min<Index>(k + 1, static_cast<Index>(pts.size()) - 1))].omega / kTwoPi;
+  for (double f : level.failed_hz)
+    if (f > std::min(below, above) && f < std::max(below, above)) {
+      peak.trusted = false;
+      peak.doubt = fmt::format("the sweep did not converge at {:.4f} Hz, next to the maximum at {:.4f} Hz", f, peak.frequency_hz);
+    }
+  if (!level.path.converged && k + 1 == static_cast<Index>(pts.size())) {
+    peak.trusted = false;
+    peak.doubt = fmt::format("the maximum is the last point before the sweep stopped ({})", level.path.failure);
+  }
   if (best.converged) {
     const PeakValues v = value(best);
     peak.component = v.component;
@@ -395,6 +406,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
       report(omega, i, s.iterations);
       if (!s.converged) {
         failed.push_back(omega / kTwoPi);
+        level.failed_hz.push_back(omega / kTwoPi);
         last_failure = s.failure;
         ++path.rejected_steps;
         continue;
@@ -447,6 +459,14 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   const auto t0 = Clock::now();
   for (double f : spec.force_levels) o.levels.push_back(sweep_hbm_level(p, spec, f, spec.harmonics, progress));
   o.sweep_seconds = seconds_since(t0);
+  for (const HbmLevel& level : o.levels) {
+    if (level.path.points.empty())
+      throw SolverError(fmt::format("harmonic balance at Fe = {:g} N found no solution: {}", level.force, level.path.failure));
+    for (const HbmPeak& pk : level.peaks)
+      if (!pk.solution.converged)
+        throw SolverError(fmt::format("harmonic balance at Fe = {:g} N: the {} peak's solve did not converge ({}); no peak is reported",
+                                      level.force, pk.kind, pk.solution.failure));
+  }
 
   const double cf = spec.damper ? spec.damper->centrifugal_force : 0.0;
   // peaks, energy balance, contact states, cost
@@ -484,6 +504,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
       }
     }
     row.push_back(level.path.converged ? 1.0 : 0.0);
+    for (const HbmPeak& pk : level.peaks) row.push_back(pk.trusted ? 1.0 : 0.0);
     peak_rows.push_back(row);
     cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()), static_cast<double>(level.path.corrector_iterations),
                          static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
@@ -495,6 +516,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   for (const std::string& k : kinds)
     for (const char* s : {"_hz", "_amp_m", "_amp_per_n"}) peak_columns.push_back(k + s);
   peak_columns.push_back("reached_end");
+  for (const std::string& k : kinds) peak_columns.push_back(k + "_trusted");
   o.tables.emplace("peaks", table_from_rows("peaks", peak_columns, peak_rows));
   o.tables.emplace("energy_balance", table_from_rows("energy_balance", {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j", "friction_j",
                                                                    "normal_j", "relative_error"}, energy_rows));

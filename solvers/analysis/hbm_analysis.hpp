@@ -51,6 +51,11 @@ struct HbmPeak {
   double component = 0.0;   // the in-phase / out-of-phase component that peaks there [m]
   hbm::HbmSolution solution;
   hbm::CycleEnergy energy;
+  // False when the path did not converge next to the peak (a rejected grid frequency between its
+  // neighbours, or the last point of a sweep that stopped): the maximum may be an artefact of the
+  // failure, not the resonance. `doubt` says why.
+  bool trusted = true;
+  std::string doubt;
 };
 
 struct HbmLevel {
@@ -64,6 +69,7 @@ struct HbmLevel {
   // at fixed frequency (hbm/sensitivity.hpp); NaN where the sensitivity is not defined.
   std::vector<Eigen::MatrixXd> amplitude_dlog, phase_dlog_deg;
   std::vector<HbmPeak> peaks;
+  std::vector<double> failed_hz;    // grid frequencies that did not converge
   double seconds = 0.0;
 };
 
@@ -82,7 +88,8 @@ struct HbmOutcome {
 };
 
 // prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost,
-// limits, limit_peaks, damper_static.
+// limits, limit_peaks, damper_static. Throws SolverError when a level finds no solution at all or a
+// peak's refinement does not converge: a peak is never reported at a failed solve.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
 
 

@@ -37,6 +37,7 @@ void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
                bb::status_name(r.status).c_str(), r.checks.size(), failed_count(r), r.wall_seconds,
                (o.out_dir / "report.md").string().c_str());
   if (!r.message.empty()) std::fprintf(stderr, "  error: %s\n", r.message.c_str());
+  for (const std::string& w : r.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
   for (const bb::CheckEntry& e : r.checks)
     if (!e.pass)
       std::fprintf(stderr, "  FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n", e.name.c_str(),

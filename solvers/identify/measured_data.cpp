@@ -44,22 +44,6 @@ const std::vector<ColumnSpec>& column_specs(DataKind kind) {
   return kind == DataKind::peaks ? peaks : kind == DataKind::frf ? frf : hysteresis;
 }
 
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> cells;
-  for (size_t start = 0;;) {
-    const size_t comma = line.find(',', start);
-    cells.push_back(trim(line.substr(start, comma - start)));
-    if (comma == std::string_view::npos) return cells;
-    start = comma + 1;
-  }
-}
-
 std::string dims_text(const std::vector<Dimension>& dims) {
   std::string text = dimension_name(dims[0]);
   for (size_t i = 1; i < dims.size(); ++i) text += fmt::format(" or {}", dimension_name(dims[i]));
@@ -154,33 +138,16 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
   const auto fail = [&](unsigned line, const std::string& what) {
     return InputError(fmt::format("{}:{}: {}", fname, line, what));
   };
-  std::error_code ec;
-  if (fs::is_directory(file, ec)) throw InputError(fname + ": cannot open (it is a directory)");
-  std::unique_ptr<io::LineReader> in;
-  try {
-    in = std::make_unique<io::LineReader>(fname);
-  } catch (const io::error::can_not_open_file&) {
-    throw InputError(fname + ": cannot open");
-  }
-
-  // Next line that is neither blank nor a '#' comment; nullopt at the end of the file.
-  const auto next = [&]() -> std::optional<std::string_view> {
-    while (const char* raw = in->next_line()) {
-      std::string_view line = raw;
-      if (in->get_file_line() == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // UTF-8 BOM
-      line = trim(line);
-      if (!line.empty() && line[0] != '#') return line;
-    }
-    return std::nullopt;
-  };
+  LineSource in(file);
+  const auto next = [&] { return in.next_content(); };
 
   const auto& specs = column_specs(kind);
   const auto header = next();
   if (!header) throw InputError(fmt::format("{}: no header line (the file is empty or only comments)", fname));
-  const unsigned header_line = in->get_file_line();
+  const unsigned header_line = in.line_number();
   std::vector<Column> cols;
   std::vector<std::string> names;
-  for (std::string_view cell : split(*header)) {
+  for (std::string_view cell : split_csv(*header)) {
     const auto open = cell.find('[');
     const std::string name(trim(cell.substr(0, open)));
     if (name.empty()) throw fail(header_line, fmt::format("header cell '{}' has no column name", cell));
@@ -229,8 +196,8 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
 
   MeasuredData data{file, kind, {}, {}, {}};
   while (const auto line = next()) {
-    const unsigned at = in->get_file_line();
-    const auto cells = split(*line);
+    const unsigned at = in.line_number();
+    const auto cells = split_csv(*line);
     if (cells.size() != cols.size())
       throw fail(at, fmt::format("{} cells where the header (line {}) has {}: {}", cells.size(), header_line,
                                  cols.size(), join_names(names)));

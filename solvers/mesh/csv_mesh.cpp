@@ -2,11 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <tuple>
 #include <unordered_set>
 #include <vector>
@@ -26,23 +25,6 @@ void with_csv_errors(const fs::path& file, Fn fn) {
   } catch (const io::error::base& e) {
     throw InputError(fmt::format("{}: {}", file.string(), e.what()));
   }
-}
-
-// fccp's has_column() only knows the requested columns, so the header is read here.
-bool header_has_column(const fs::path& file, const std::string& column) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) {
-      const auto first = cell.find_first_not_of(" \t\r"), last = cell.find_last_not_of(" \t\r");
-      if (first != std::string::npos && cell.substr(first, last - first + 1) == column) return true;
-    }
-    return false;
-  }
-  return false;
 }
 
 // Shoelace area of the element polygon; <= 0 means clockwise or degenerate.
@@ -144,7 +126,7 @@ Mesh read_csv_mesh(const fs::path& nodes_csv, const fs::path& elements_csv, Elem
 
   const int nn = nodes_per_element(element);
   const std::string extra = fmt::format("n{}", nn + 1);
-  if (header_has_column(elements_csv, extra))
+  if (const auto header = read_csv_header(elements_csv); std::find(header.begin(), header.end(), extra) != header.end())
     throw InputError(fmt::format("{}: column '{}' found, but element \"{}\" takes {} nodes (check mesh.element)",
                                  elements_csv.string(), extra, element_name(element), nn));
   ElementBlock block;

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/csv_reader.hpp"
 #include "common/toml_reader.hpp"
 #include "common/errors.hpp"
 
@@ -46,37 +47,6 @@ void write_matrix_market(const Eigen::MatrixXd& a, const fs::path& file, const s
 }
 
 // ---------------------------------------------------------------- reading: shared helpers
-
-// One file read as numbered lines; every error it raises starts with "file:line:".
-class LineSource {
- public:
-  explicit LineSource(fs::path file) : file_(std::move(file)), in_(file_) {}
-  bool is_open() const { return static_cast<bool>(in_); }
-  // Next line, or false at the end of the file.
-  bool next(std::string& line) {
-    if (!std::getline(in_, line)) return false;
-    ++line_number_;
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // files written on Windows
-    return true;
-  }
-  int line_number() const { return line_number_; }
-  const fs::path& file() const { return file_; }
-  [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(fmt::format("{}:{}: {}", file_.string(), line_number_, message));
-  }
-
- private:
-  fs::path file_;
-  std::ifstream in_;
-  int line_number_ = 0;
-};
-
-std::string_view trim(std::string_view s) {
-  const auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
-  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 std::vector<std::string_view> split_whitespace(std::string_view s) {
   std::vector<std::string_view> out;
@@ -122,7 +92,7 @@ std::string lower(std::string_view s) {
 // math.nist.gov/MatrixMarket/formats.html). Symmetric files hold the lower triangle only.
 Eigen::MatrixXd read_matrix_market(const fs::path& file, Eigen::Index n) {
   LineSource src(file);
-  std::string line;
+  std::string_view line;
   if (!src.next(line)) src.fail("empty file; expected a '%%MatrixMarket matrix ...' header");
   const std::vector<std::string_view> header = split_whitespace(line);
   const bool banner = header.size() == 5 && header[0] == "%%MatrixMarket" && lower(header[1]) == "matrix";
@@ -139,12 +109,10 @@ Eigen::MatrixXd read_matrix_market(const fs::path& file, Eigen::Index n) {
   const bool symmetric = symmetry == "symmetric";
 
   // Comments ('%') and blank lines may precede the size line.
-  auto next_data_line = [&](std::string& out) {
-    while (src.next(out)) {
-      const std::string_view t = trim(out);
-      if (!t.empty() && t.front() != '%') return true;
-    }
-    return false;
+  auto next_data_line = [&](std::string_view& out) {
+    const std::optional<std::string_view> content = src.next_content('%');
+    if (content) out = *content;
+    return content.has_value();
   };
   if (!next_data_line(line)) src.fail("missing the size line");
   const std::vector<std::string_view> size = split_whitespace(line);
@@ -194,22 +162,16 @@ Eigen::MatrixXd read_csv_matrix(const fs::path& file, Eigen::Index n) {
   LineSource src(file);
   Eigen::MatrixXd a(n, n);
   Eigen::Index row = 0;
-  std::string line;
+  std::string_view line;
   while (src.next(line)) {
-    std::string_view content(line);
-    content = trim(content.substr(0, content.find('#')));
+    const std::string_view content = trim(line.substr(0, line.find('#')));
     if (content.empty()) continue;
     if (row == n) src.fail(fmt::format("more than {} rows (the sidecar names {} DOFs)", n, n));
     Eigen::Index col = 0;
-    size_t start = 0;
-    while (true) {
-      const size_t comma = content.find(',', start);
-      const std::string_view field = trim(content.substr(start, comma == std::string_view::npos ? comma : comma - start));
+    for (std::string_view field : split_csv(content)) {
       if (col == n) src.fail(fmt::format("more than {} values in the row (the sidecar names {} DOFs)", n, n));
       a(row, col) = parse_value(field, src, fmt::format("column {}", col + 1));
       ++col;
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
     }
     if (col != n) src.fail(fmt::format("found {} values in the row, expected {} (one per DOF)", col, n));
     ++row;

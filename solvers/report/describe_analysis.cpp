@@ -83,6 +83,9 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
     if (!l.path.converged) run.facts.emplace_back(fmt::format("sweep at Fe = {} N stopped", g(l.force)), l.path.failure);
   }
   run.facts.emplace_back("sweeps that reached the end / points", fmt::format("{} of {} / {}", reached, hbm.levels.size(), points));
+  for (const HbmLevel& l : hbm.levels)
+    for (const HbmPeak& pk : l.peaks)
+      if (!pk.trusted) run.warnings.push_back(fmt::format("{} peak at Fe = {} N ({:.4f} Hz) is doubtful: {}", pk.kind, g(l.force), pk.frequency_hz, pk.doubt));
 }
 
 void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
@@ -109,6 +112,9 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
     seconds += l.seconds;
     for (bool s : l.steady) not_steady += s ? 0 : 1;
   }
+  if (not_steady > 0)
+    run.warnings.push_back(fmt::format("{} frequencies did not reach the steady state within {} periods: their amplitudes are not the "
+                                       "steady response", not_steady, spec.max_cycles));
   run.facts.emplace_back("steps / frequencies not steady / time [s]", fmt::format("{} / {} / {:.2f} (per step {:.2f} us)", steps, not_steady,
                                                                                   seconds, 1e6 * seconds / static_cast<double>(std::max(1L, steps))));
   if (spec.compare_harmonics > 0) run.facts.emplace_back("comparison", fmt::format("harmonic balance, H = {}, same grid", spec.compare_harmonics));

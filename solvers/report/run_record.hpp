@@ -30,6 +30,7 @@ struct RunRecord {
   std::string description;
   RunStatus status = RunStatus::bad_input;
   std::string message;  // error message for bad_input / solver_failed
+  std::vector<std::string> warnings;  // results to read with care (e.g. a peak next to a failed solve)
   double wall_seconds = 0.0;
   std::vector<std::pair<std::string, std::string>> facts;  // inputs and solver statistics
   std::vector<CheckSpec> check_specs;

@@ -135,6 +135,7 @@ void write_summary_json(const RunRecord& run, const std::filesystem::path& file)
   j["status"] = status_name(run.status);
   j["wall_time_s"] = run.wall_seconds;
   if (!run.message.empty()) j["message"] = run.message;
+  if (!run.warnings.empty()) j["warnings"] = run.warnings;
   j["checks"] = nlohmann::json::array();
   for (const CheckEntry& c : run.checks) {
     j["checks"].push_back({{"name", c.name},
@@ -160,6 +161,7 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
   out << fmt::format("Case `{}` (`{}`): **{}** in {:.3f} s.\n\n", run.case_name, run.case_file.string(),
                      status_name(run.status), run.wall_seconds);
   if (!run.message.empty()) out << fmt::format("> {}\n\n", run.message);
+  for (const std::string& w : run.warnings) out << fmt::format("> **Warning:** {}\n\n", w);
   if (!run.description.empty()) out << run.description << "\n\n";
   if (!run.facts.empty()) {
     out << "## Inputs and solver\n\n| item | value |\n|---|---|\n";

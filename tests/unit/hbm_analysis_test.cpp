@@ -14,6 +14,7 @@
 #include "model/build_model.hpp"
 #include "common/errors.hpp"
 #include "oscillator_case.hpp"
+#include "pipeline/run_case.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -183,6 +184,30 @@ TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {
     EXPECT_NE(std::string(e.what()).find("Q.x"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("ground"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace bb
+
+namespace bb {
+namespace {
+
+class HbmSolverFailure : public test::TempFolderTest {};
+
+// A sweep that cannot even start (one Newton iteration allowed, a strongly slipping first point)
+// must fail the run (exit 3, "solver_failed") with the reason, never pass with empty tables or NaN
+// peaks.
+TEST_F(HbmSolverFailure, ASweepWithNoSolutionFailsTheRunWithItsReason) {
+  test::OscillatorCase c;
+  c.levels = "[200.0]";
+  c.range = "[150.0, 170.0]";
+  c.analysis_extra = "max_iterations = 1\n";
+  c.extra = "[[check]]\nname = \"peak\"\nresult = \"peaks\"\nreference_result = \"peaks\"\nkey = \"level\"\n"
+            "compare = { peak_hz = \"peak_hz\" }\nrel_tol = 1e-9\n";
+  const RunOutcome o = run_case(write(test::oscillator_case_text(c)), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
+  EXPECT_NE(o.record.message.find("found no solution"), std::string::npos) << o.record.message;
+  EXPECT_EQ(exit_code(o.record.status), exit_solver_failed);
 }
 
 }  // namespace

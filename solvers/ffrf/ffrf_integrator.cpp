@@ -45,7 +45,10 @@ detail::Switches switches_of(const FfrfOptions& o) {
 // Cumulative works by the trapezoidal rule over the steps, and the energy checks of a run.
 class Ledger {
  public:
-  Ledger(const detail::Dynamics& d, const FfrfOptions& o) : d_(d), o_(o) {}
+  // energy_scale: the run's natural energy (rigid rotation at the largest speed, gravity over the
+  // body size), the floor of the growth check so that round-off at the quiet start cannot trip it.
+  Ledger(const detail::Dynamics& d, const FfrfOptions& o, double energy_scale)
+      : d_(d), o_(o), scale_(energy_scale) {}
 
   void start(const detail::StepState& s, const detail::Snapshot& snap, double torque) {
     e0_ = snap.kinetic + snap.strain;
@@ -136,6 +139,22 @@ Eigen::VectorXd initial_coordinates(const detail::Dynamics& d, const RotationPro
   return solver.solve(load);
 }
 
+// 1/2 (J0 + J_rotor) Omega_max^2 + m |g| size; a free rotor's Omega_max is bounded by
+// |Omega0| + integral |tau| dt / J, sampled at the steps.
+double energy_scale(const detail::Dynamics& d, const RotationProfile& rotation, const FfrfOptions& o, int steps) {
+  const auto& mp = d.body().mass_properties;
+  const double j = mp.axis_inertia + o.rotor_inertia;
+  double w_max = 0.0;
+  if (rotation.prescribed()) {
+    w_max = rotation.max_speed(o.end_time);
+  } else {
+    double impulse = 0.0;
+    for (int n = 0; n < steps; ++n) impulse += std::abs(rotation.torque(n * o.time_step)) * o.time_step;
+    w_max = std::abs(rotation.initial_speed()) + impulse / j;
+  }
+  return 0.5 * j * w_max * w_max + mp.mass * o.gravity.norm() * d.body().size;
+}
+
 void record(FfrfHistory& h, const Eigen::MatrixXd& rows, const detail::StepState& s, double alpha,
             const detail::Snapshot& snap, const Ledger& ledger, double torque) {
   h.time.push_back(s.t);
@@ -173,7 +192,7 @@ FfrfHistory run(Stepper& stepper, const detail::Dynamics& d, const RotationProfi
   const int samples = steps / o.output_stride + 1 + (steps % o.output_stride != 0 ? 1 : 0);
   h.displacement.resize(samples, static_cast<Eigen::Index>(o.output_dofs.size()));
   detail::StepState s = stepper.start(initial_coordinates(d, rotation, o), Eigen::VectorXd::Zero(p.n()));
-  Ledger ledger(d, o);
+  Ledger ledger(d, o, energy_scale(d, rotation, o, steps));
   detail::Snapshot snap = d.snapshot(s.theta, s.omega, s.q, s.v);
   double torque = 0.0, alpha = 0.0;
   std::tie(torque, alpha) = torque_and_alpha(stepper, s, rotation);

@@ -30,20 +30,45 @@ DenseOperators dense_operators(const ProjectedBody& body, const RotatingModesOpt
           body.geometric_stiffness.to_dense()};
 }
 
-RotatingModes modes_at(const DenseOperators& ops, double speed, const RotatingModesOptions& o) {
-  const Eigen::Index n = ops.m.rows();
+// Eigenvalues of M s^2 + C s + K_eff = 0. First the symmetric problem K_eff psi = lambda M psi
+// (accurate, any sign of lambda); in its coordinates z the equations read z'' + C~ z' + Lambda z = 0,
+// C~ = Psi^T C Psi skew, and with the state x = [W z; z'], W = diag(sqrt|lambda|), the first-order
+// matrix [0 W; -Lambda W^-1 -C~] has entries of the size of the frequencies rather than of their
+// squares: the small eigenvalues keep their relative accuracy next to the large ones.
+Eigen::VectorXcd state_space_eigenvalues(const DenseOperators& ops, double speed, const RotatingModesOptions& o) {
   const double s = o.stiffening ? 1.0 : 0.0, w2 = speed * speed;
   const Eigen::MatrixXd k_eff = ops.k + (s * w2) * ops.ks - w2 * ops.mp;
-  const Eigen::LLT<Eigen::MatrixXd> m_llt(ops.m);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> sym(k_eff, ops.m);
+  if (sym.info() != Eigen::Success) throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
+  const Eigen::VectorXd lambda = sym.eigenvalues();
+  const Eigen::Index n = lambda.size();
+  Eigen::VectorXcd out(2 * n);
+  if (!o.coriolis || speed == 0.0) {  // s = +-sqrt(-lambda): purely imaginary or a real pair
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double r = std::sqrt(std::abs(lambda[i]));
+      out[2 * i] = lambda[i] >= 0.0 ? std::complex<double>(0.0, r) : std::complex<double>(r, 0.0);
+      out[2 * i + 1] = -out[2 * i];
+    }
+    return out;
+  }
+  const Eigen::MatrixXd& psi = sym.eigenvectors();
+  const Eigen::MatrixXd c = psi.transpose() * ((2.0 * speed) * ops.g) * psi;
+  const double w_floor = 1e-12 * std::sqrt(lambda.cwiseAbs().maxCoeff());
+  Eigen::VectorXd w(n);
+  for (Eigen::Index i = 0; i < n; ++i) w[i] = std::max(std::sqrt(std::abs(lambda[i])), w_floor);
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  a.topRightCorner(n, n).setIdentity();
-  a.bottomLeftCorner(n, n) = -m_llt.solve(k_eff);
-  if (o.coriolis) a.bottomRightCorner(n, n) = -m_llt.solve((2.0 * speed) * ops.g);
+  a.topRightCorner(n, n) = w.asDiagonal();
+  a.bottomLeftCorner(n, n) = (-lambda.cwiseQuotient(w)).asDiagonal();
+  a.bottomRightCorner(n, n) = -c;
   const Eigen::EigenSolver<Eigen::MatrixXd> eig(a, false);
   if (eig.info() != Eigen::Success) throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
-  const Eigen::VectorXcd lambda = eig.eigenvalues();
+  return eig.eigenvalues();
+}
+
+RotatingModes modes_at(const DenseOperators& ops, double speed, const RotatingModesOptions& o) {
+  const Eigen::VectorXcd lambda = state_space_eigenvalues(ops, speed, o);
   const double scale = lambda.cwiseAbs().maxCoeff();
-  const double tol = 1e-9 * scale;
+  const double tol = 1e-12 * scale;
   // One eigenvalue per mode: Im > 0 for an oscillation, the non-negative one of a real pair.
   std::vector<std::pair<double, double>> modes;  // (omega, growth)
   double max_growth = 0.0;
@@ -63,7 +88,7 @@ RotatingModes modes_at(const DenseOperators& ops, double speed, const RotatingMo
     r.growth_rates[i] = modes[static_cast<size_t>(i)].second;
   }
   r.max_growth_rate = max_growth;
-  r.stable = max_growth <= 1e-8 * scale;
+  r.stable = max_growth <= 1e-9 * scale;
   return r;
 }
 

@@ -50,8 +50,8 @@ CoordinateMatrix combine(const std::vector<Term>& terms);
 void combine_into(const std::vector<Term>& terms, CoordinateMatrix& out);
 
 // LU factorization of a square CoordinateMatrix: Eigen::SparseLU (COLAMD; the symbolic analysis of
-// the first call is kept, so one solver serves matrices of one pattern only) or dense partial-pivoting LU. The effective matrices of
-// the FFRF equations are not symmetric (the Coriolis and Euler terms are skew), so the project's
+// the first call is kept, so one solver serves matrices of one pattern only) or dense partial-pivoting LU. The
+// effective matrices of the FFRF equations are not symmetric (the Coriolis and Euler terms are skew), so the project's
 // Cholesky helper (linalg/spd_factor) does not apply here.
 class CoordinateSolver {
  public:

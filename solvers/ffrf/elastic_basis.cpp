@@ -142,12 +142,14 @@ Eigen::VectorXd load_in_basis(const ElasticBasis& basis, const Eigen::VectorXd& 
   return basis.kind == BasisKind::nodal ? free_load : Eigen::VectorXd(basis.shapes.transpose() * free_load);
 }
 
-Eigen::MatrixXd recovery_rows(const RotatingBody& body, const ElasticBasis& basis, const std::vector<int>& global_dofs) {
+Eigen::MatrixXd recovery_rows(const RotatingBody& body, const ElasticBasis& basis,
+                              const std::vector<int>& global_dofs) {
   Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(global_dofs.size()), basis.size());
   for (size_t i = 0; i < global_dofs.size(); ++i) {
     const int g = global_dofs[i];
     if (g < 0 || g >= body.dofs.n_global())
-      throw InputError(fmt::format("output DOF {} is outside 0..{} (node * dim + direction)", g, body.dofs.n_global() - 1));
+      throw InputError(
+          fmt::format("output DOF {} is outside 0..{} (node * dim + direction)", g, body.dofs.n_global() - 1));
     const int eq = body.dofs.equation[static_cast<size_t>(g)];
     if (eq < 0) continue;  // constrained: clamped to the rotor, zero
     const Eigen::Index r = static_cast<Eigen::Index>(i);

@@ -24,7 +24,9 @@ struct ElasticBasisOptions {
   // modal: append the static responses K^-1 f_c, K^-1 f_alpha and K^-1 of the gravity loads
   // (Craig's "modal truncation augmentation"), M-orthonormalized against the modes. The centrifugal
   // deflection is mostly a stretch that the low bending modes cannot represent; with these shapes
-  // the mean (quasi-static) response is exact for a constant speed without stiffening.
+  // K q = f is solved exactly in the basis for each of these loads, and the spin-softened,
+  // stiffened static deflection to the accuracy of a Rayleigh-Ritz approximation
+  // (tests/unit/ffrf_elastic_basis_test.cpp measures both).
   bool static_correction = true;
 };
 
@@ -66,6 +68,7 @@ Eigen::VectorXd load_in_basis(const ElasticBasis& basis, const Eigen::VectorXd& 
 
 // Rows of q = Phi eta for the given global DOFs (a constrained DOF gives a zero row): recovery of
 // a few nodal displacements per time step without forming q.
-Eigen::MatrixXd recovery_rows(const RotatingBody& body, const ElasticBasis& basis, const std::vector<int>& global_dofs);
+Eigen::MatrixXd recovery_rows(const RotatingBody& body, const ElasticBasis& basis,
+                              const std::vector<int>& global_dofs);
 
 }  // namespace bb::ffrf

@@ -69,12 +69,18 @@ Snapshot Dynamics::snapshot(double theta, double omega, const Eigen::VectorXd& q
   return s;
 }
 
+double Dynamics::momentum(double omega, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  return omega * axis_inertia(q, h(q)) + v.dot(coupling(q));
+}
+
 CoordinateMatrix Dynamics::static_operator(double omega, double alpha) const {
   return combine({{1.0, &p_.stiffness}, {-omega * omega, &softening_}, {alpha, &p_.gyroscopic}});
 }
 
 Eigen::VectorXd Dynamics::static_load(double theta, double omega, double alpha) const {
-  return omega * omega * p_.centrifugal_load + alpha * p_.euler_load + gravity_load(theta);
+  Eigen::VectorXd f = omega * omega * p_.centrifugal_load + alpha * p_.euler_load;
+  if (!gravity_.isZero()) f += gravity_load(theta);
+  return f;
 }
 
 }  // namespace bb::ffrf::detail

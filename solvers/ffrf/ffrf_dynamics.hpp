@@ -56,6 +56,7 @@ class Dynamics {
   Eigen::VectorXd damping_force(const Eigen::VectorXd& v) const;      // C v
 
   Snapshot snapshot(double theta, double omega, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+  double momentum(double omega, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;  // H
 
   // Static operator and load at a speed (steady state in the rotating frame):
   // (K + s Omega^2 K_s1 - Omega^2 M_p + alpha G) q = Omega^2 f_c + alpha f_alpha + F_g R^T g.

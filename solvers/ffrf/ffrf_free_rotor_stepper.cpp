@@ -18,8 +18,9 @@ namespace bb::ffrf::detail {
 namespace {
 
 // Bordered solve of [j_tt, j_tq^T; j_qt, J_qq] [x_t; x_q] = [b_t; b_q] with a factorized J_qq.
-std::pair<double, Eigen::VectorXd> bordered_solve(const CoordinateSolver& jqq, double j_tt, const Eigen::VectorXd& j_tq,
-                                                  const Eigen::VectorXd& j_qt, double b_t, const Eigen::VectorXd& b_q) {
+std::pair<double, Eigen::VectorXd> bordered_solve(const CoordinateSolver& jqq, double j_tt,
+                                                  const Eigen::VectorXd& j_tq, const Eigen::VectorXd& j_qt, double b_t,
+                                                  const Eigen::VectorXd& b_q) {
   const Eigen::VectorXd y1 = jqq.solve(b_q), y2 = jqq.solve(j_qt);
   const double x_t = (b_t - j_tq.dot(y1)) / (j_tt - j_tq.dot(y2));
   return {x_t, y1 - y2 * x_t};
@@ -77,80 +78,98 @@ std::pair<double, Eigen::VectorXd> FreeRotorStepper::true_accelerations(const St
   return bordered_solve(mass_solver_, j, c, c, -f_theta, -f_q);
 }
 
-void FreeRotorStepper::step(StepState& s) {
-  const double t1 = s.t + dt_, dt2 = dt_ * dt_, b = ga_.beta, g = ga_.gamma;
+// Residual of the balance at the accelerations (a_theta, a_q) from the predictors `pred`.
+FreeRotorStepper::Trial FreeRotorStepper::evaluate(const StepState& pred, double a_theta,
+                                                   const Eigen::VectorXd& a_q) const {
+  const double b = ga_.beta * dt_ * dt_, g = ga_.gamma * dt_;
   const double am = 1.0 - ga_.alpha_m, af = 1.0 - ga_.alpha_f;
-  StepState pred = s;  // predictors (accelerations excluded)
-  pred.t = t1;
+  Trial tr;
+  tr.state = pred;
+  tr.state.theta = pred.theta + b * a_theta;
+  tr.state.omega = pred.omega + g * a_theta;
+  tr.state.q = pred.q + b * a_q;
+  tr.state.v = pred.v + g * a_q;
+  tr.state.alpha = a_theta;
+  tr.state.a = a_q;
+  double scale_theta = 0.0, scale_q = 0.0;
+  forces(tr.state, tr.f_theta, tr.f_q, &scale_theta, &scale_q);
+  tr.hq = d_.h(tr.state.q);
+  tr.c = d_.coupling(tr.state.q);
+  tr.j = d_.axis_inertia(tr.state.q, tr.hq);
+  tr.i_theta = tr.j * a_theta + tr.c.dot(a_q);
+  tr.i_q = d_.body().mass * a_q + tr.c * a_theta;
+  tr.r_theta = am * tr.i_theta + ga_.alpha_m * i_theta_ + af * tr.f_theta + ga_.alpha_f * f_theta_;
+  tr.r_q = am * tr.i_q + ga_.alpha_m * i_q_ + af * tr.f_q + ga_.alpha_f * f_q_;
+  // Convergence is measured against the size of the terms of each equation (theta: N m, q: N).
+  scale_theta = am * (std::abs(tr.j * a_theta) + std::abs(tr.c.dot(a_q))) + af * scale_theta +
+                ga_.alpha_m * std::abs(i_theta_) + ga_.alpha_f * std::abs(f_theta_) + 1e-300;
+  scale_q = am * tr.i_q.norm() + af * scale_q + ga_.alpha_m * i_q_.norm() + ga_.alpha_f * f_q_.norm() + 1e-300;
+  tr.relative_residual = std::max(std::abs(tr.r_theta) / scale_theta, tr.r_q.norm() / scale_q);
+  return tr;
+}
+
+// One Newton correction of (a_theta, a_q) with the exact Jacobian dR/d(a_theta, a_q), by bordering.
+void FreeRotorStepper::newton_update(const Trial& tr, int iteration, double& a_theta, Eigen::VectorXd& a_q) {
+  const double b = ga_.beta * dt_ * dt_, g = ga_.gamma * dt_;
+  const double am = 1.0 - ga_.alpha_m, af = 1.0 - ga_.alpha_f;
+  const ProjectedBody& p = d_.body();
+  const Switches& sw = d_.switches();
+  const StepState& x = tr.state;
+  const bool refactor = jqq_.size() == 0 || p.mass.is_dense() || iteration == 0 ||
+                        iteration == options_.max_newton_iterations / 2;
+  if (refactor) {
+    combine_into({{am + af * g * sw.rayleigh_mass, &p.mass},
+                  {af * (g * sw.rayleigh_stiffness + b), &p.stiffness},
+                  {-af * b * x.omega * x.omega, &d_.softening()},
+                  {af * g * 2.0 * x.omega * d_.coriolis() + am * b * a_theta, &p.gyroscopic}},
+                 jqq_);
+    if (!jacobian_.factorize(jqq_))
+      throw SolverError(
+          fmt::format("FFRF free rotor: Jacobian singular at t = {:.6g} s: {}", x.t, jacobian_.message()));
+    ++counters_.factorizations;
+  }
+  const Eigen::VectorXd gv = p.gyroscopic * x.v;
+  const Eigen::VectorXd j_qt = am * tr.c + af * (g * (2.0 * d_.coriolis() * gv - 2.0 * x.omega * tr.hq) -
+                                                 b * d_.gravity_load_derivative(x.theta));
+  const Eigen::VectorXd j_tq =
+      am * (tr.c + b * (2.0 * a_theta * tr.hq - p.gyroscopic * a_q)) +
+      af * (g * 2.0 * x.omega * tr.hq +
+            b * (2.0 * x.omega * (d_.softening() * x.v) - d_.gravity_moment_gradient(x.theta)));
+  const double j_tt = am * tr.j + af * (g * 2.0 * x.v.dot(tr.hq) - b * d_.gravity_moment(x.theta, x.q, 1));
+  const auto [d_theta, d_q] = bordered_solve(jacobian_, j_tt, j_tq, j_qt, -tr.r_theta, -tr.r_q);
+  a_theta += d_theta;
+  a_q += d_q;
+}
+
+void FreeRotorStepper::step(StepState& s) {
+  const double dt2 = dt_ * dt_, b = ga_.beta, g = ga_.gamma;
+  StepState pred = s;  // predictors: the trial accelerations add beta dt^2 a and gamma dt a
+  pred.t = s.t + dt_;
   pred.theta = s.theta + dt_ * s.omega + dt2 * (0.5 - b) * s.alpha;
   pred.omega = s.omega + dt_ * (1.0 - g) * s.alpha;
   pred.q = s.q + dt_ * s.v + (dt2 * (0.5 - b)) * s.a;
   pred.v = s.v + (dt_ * (1.0 - g)) * s.a;
-  double a_theta = s.alpha;
+  double a_theta = s.alpha;  // the previous accelerations start the iteration
   Eigen::VectorXd a_q = s.a;
-  const ProjectedBody& p = d_.body();
-  const Switches& sw = d_.switches();
-  StepState trial = pred;
-  double rel = 0.0;
-  for (int k = 0; k <= options_.max_newton_iterations; ++k) {
-    trial.theta = pred.theta + b * dt2 * a_theta;
-    trial.omega = pred.omega + g * dt_ * a_theta;
-    trial.q = pred.q + (b * dt2) * a_q;
-    trial.v = pred.v + (g * dt_) * a_q;
-    double f_theta = 0.0, scale_theta = 0.0, scale_q = 0.0;
-    Eigen::VectorXd f_q;
-    forces(trial, f_theta, f_q, &scale_theta, &scale_q);
-    const Eigen::VectorXd hq = d_.h(trial.q), c = d_.coupling(trial.q);
-    const double j = d_.axis_inertia(trial.q, hq);
-    const double i_theta = j * a_theta + c.dot(a_q);
-    const Eigen::VectorXd i_q = p.mass * a_q + c * a_theta;
-    const double r_theta = am * i_theta + ga_.alpha_m * i_theta_ + af * f_theta + ga_.alpha_f * f_theta_;
-    const Eigen::VectorXd r_q = am * i_q + ga_.alpha_m * i_q_ + af * f_q + ga_.alpha_f * f_q_;
-    scale_theta = am * std::abs(j * a_theta) + am * std::abs(c.dot(a_q)) + af * scale_theta +
-                  ga_.alpha_m * std::abs(i_theta_) + ga_.alpha_f * std::abs(f_theta_) + 1e-300;
-    scale_q = am * i_q.norm() + af * scale_q + ga_.alpha_m * i_q_.norm() + ga_.alpha_f * f_q_.norm() + 1e-300;
-    rel = std::max(std::abs(r_theta) / scale_theta, r_q.norm() / scale_q);
-    if (rel <= options_.newton_tolerance) {
+  for (int k = 0;; ++k) {
+    const Trial tr = evaluate(pred, a_theta, a_q);
+    if (tr.relative_residual <= options_.newton_tolerance) {
       counters_.iterations += k;
       counters_.max_iterations = std::max(counters_.max_iterations, k);
-      counters_.max_residual = std::max(counters_.max_residual, rel);
-      s = trial;
-      s.alpha = a_theta;
-      s.a = a_q;
-      i_theta_ = i_theta;
-      i_q_ = i_q;
-      f_theta_ = f_theta;
-      f_q_ = f_q;
+      counters_.max_residual = std::max(counters_.max_residual, tr.relative_residual);
+      s = tr.state;
+      i_theta_ = tr.i_theta;
+      i_q_ = tr.i_q;
+      f_theta_ = tr.f_theta;
+      f_q_ = tr.f_q;
       return;
     }
-    if (k == options_.max_newton_iterations) break;
-    // Jacobian d R / d(a_theta, a_q).
-    const bool refactor = jqq_.size() == 0 || p.mass.is_dense() || k == 0 || k == options_.max_newton_iterations / 2;
-    if (refactor) {
-      combine_into({{am + af * g * dt_ * sw.rayleigh_mass, &p.mass},
-                    {af * (g * dt_ * sw.rayleigh_stiffness + b * dt2), &p.stiffness},
-                    {-af * b * dt2 * trial.omega * trial.omega, &d_.softening()},
-                    {af * g * dt_ * 2.0 * trial.omega * d_.coriolis() + am * b * dt2 * a_theta, &p.gyroscopic}},
-                   jqq_);
-      if (!jacobian_.factorize(jqq_))
-        throw SolverError(fmt::format("FFRF free rotor: Jacobian singular at t = {:.6g} s: {}", t1, jacobian_.message()));
-      ++counters_.factorizations;
-    }
-    const Eigen::VectorXd gv = p.gyroscopic * trial.v;
-    const Eigen::VectorXd j_qt = am * c + af * (g * dt_ * (2.0 * d_.coriolis() * gv - 2.0 * trial.omega * hq) -
-                                                b * dt2 * d_.gravity_load_derivative(trial.theta));
-    const Eigen::VectorXd j_tq =
-        am * (c + b * dt2 * (2.0 * a_theta * hq - p.gyroscopic * a_q)) +
-        af * (g * dt_ * 2.0 * trial.omega * hq +
-              b * dt2 * (2.0 * trial.omega * (d_.softening() * trial.v) - d_.gravity_moment_gradient(trial.theta)));
-    const double j_tt = am * j + af * (g * dt_ * 2.0 * trial.v.dot(hq) - b * dt2 * d_.gravity_moment(trial.theta, trial.q, 1));
-    const auto [d_theta, d_q] = bordered_solve(jacobian_, j_tt, j_tq, j_qt, -r_theta, -r_q);
-    a_theta += d_theta;
-    a_q += d_q;
+    if (k == options_.max_newton_iterations)
+      throw SolverError(fmt::format("FFRF free rotor: Newton did not converge at t = {:.6g} s (Omega = {:.6g} rad/s): "
+                                    "relative residual {:.3e} > {:.1e} after {} iterations; reduce the time step",
+                                    pred.t, tr.state.omega, tr.relative_residual, options_.newton_tolerance, k));
+    newton_update(tr, k, a_theta, a_q);
   }
-  throw SolverError(fmt::format("FFRF free rotor: Newton did not converge at t = {:.6g} s (Omega = {:.6g} rad/s): "
-                                "relative residual {:.3e} > {:.1e} after {} iterations; reduce the time step",
-                                t1, trial.omega, rel, options_.newton_tolerance, options_.max_newton_iterations));
 }
 
 }  // namespace bb::ffrf::detail

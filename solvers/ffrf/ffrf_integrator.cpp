@@ -12,6 +12,9 @@
 namespace bb::ffrf {
 namespace {
 
+// Steps between two energy and divergence checks when no output is due.
+constexpr int kCheckInterval = 16;
+
 void validate(const ProjectedBody& body, const RotationProfile& rotation, const FfrfOptions& o) {
   if (!(o.time_step > 0.0) || !std::isfinite(o.time_step))
     throw InputError(fmt::format("FFRF integrator: time_step must be > 0 s, got {}", o.time_step));
@@ -42,38 +45,60 @@ detail::Switches switches_of(const FfrfOptions& o) {
           o.external_load};
 }
 
-// Cumulative works by the trapezoidal rule over the steps, and the energy checks of a run.
+// Cumulative works by the trapezoidal rule over the steps, and the energy checks of a run. The
+// per-step part is cheap (no matrix product unless the speed varies); the energies need a full
+// snapshot, taken at the check instants (every output sample and every kCheckInterval steps).
 class Ledger {
  public:
   // energy_scale: the run's natural energy (rigid rotation at the largest speed, gravity over the
   // body size), the floor of the growth check so that round-off at the quiet start cannot trip it.
-  Ledger(const detail::Dynamics& d, const FfrfOptions& o, double energy_scale)
-      : d_(d), o_(o), scale_(energy_scale) {}
+  Ledger(const detail::Dynamics& d, const FfrfOptions& o, double energy_scale, bool prescribed, bool constant_speed)
+      : d_(d), o_(o), scale_(energy_scale), prescribed_(prescribed), constant_speed_(constant_speed) {}
 
   void start(const detail::StepState& s, const detail::Snapshot& snap, double torque) {
     e0_ = snap.kinetic + snap.strain;
     v0_ = snap.gravity_potential;
-    remember(s, snap, torque);
+    h0_ = h_ = snap.momentum;
+    q_g_ = snap.gravity_moment;
+    t_ = s.t;
+    omega_ = s.omega;
+    tau_ = torque;
+    p_ext_ = power_external(s);
+    p_damp_ = power_damping(s);
   }
 
-  // Prescribed rotation: integral tau Omega = integral Omega dH - integral Q_g Omega (tau = dH/dt - Q_g).
-  // Free rotor: tau(t) is known, trapezoid of tau Omega.
-  void advance(const detail::StepState& s, const detail::Snapshot& snap, double torque, bool prescribed) {
+  // Prescribed rotation: integral tau Omega = integral Omega dH - integral Q_g Omega (tau = dH/dt - Q_g),
+  // with H needed at every step only when Omega varies. Free rotor: trapezoid of tau(t) Omega.
+  void advance(const detail::StepState& s, double torque) {
     const double dt = s.t - t_;
-    if (prescribed) {
-      driving += 0.5 * (omega_ + s.omega) * (snap.momentum - h_) -
-                 0.5 * dt * (q_g_ * omega_ + snap.gravity_moment * s.omega);
+    if (prescribed_) {
+      const double q_g = o_.gravity.isZero() ? 0.0 : d_.gravity_moment(s.theta, s.q);
+      moment_work_ += 0.5 * dt * (q_g_ * omega_ + q_g * s.omega);
+      q_g_ = q_g;
+      if (!constant_speed_) {
+        const double h = d_.momentum(s.omega, s.q, s.v);
+        omega_dh_ += 0.5 * (omega_ + s.omega) * (h - h_);
+        h_ = h;
+      }
     } else {
       driving += 0.5 * dt * (tau_ * omega_ + torque * s.omega);
     }
-    gravity = v0_ - snap.gravity_potential;
-    const double p_ext = d_.loaded() ? d_.external_load(s.t).dot(s.v) : 0.0;
-    const double p_damp = d_.damped() ? d_.damping().form(s.v, s.v) : 0.0;
+    const double p_ext = power_external(s), p_damp = power_damping(s);
     external += 0.5 * dt * (p_ext_ + p_ext);
     damping += 0.5 * dt * (p_damp_ + p_damp);
-    remember(s, snap, torque);
     p_ext_ = p_ext;
     p_damp_ = p_damp;
+    t_ = s.t;
+    omega_ = s.omega;
+    tau_ = torque;
+  }
+
+  // Completes the works at a snapshot of the current state (constant speed: Omega (H - H0), exact).
+  void sync(const detail::Snapshot& snap) {
+    gravity = v0_ - snap.gravity_potential;
+    if (!prescribed_) return;
+    if (constant_speed_) omega_dh_ = omega_ * (snap.momentum - h0_);
+    driving = omega_dh_ - moment_work_;
   }
 
   // SolverError when the state is not finite, the deflection exceeds the bound, or T + U grew
@@ -99,13 +124,10 @@ class Ledger {
   double driving = 0.0, gravity = 0.0, external = 0.0, damping = 0.0;
 
  private:
-  void remember(const detail::StepState& s, const detail::Snapshot& snap, double torque) {
-    t_ = s.t;
-    omega_ = s.omega;
-    h_ = snap.momentum;
-    q_g_ = snap.gravity_moment;
-    tau_ = torque;
+  double power_external(const detail::StepState& s) const {
+    return d_.loaded() ? d_.external_load(s.t).dot(s.v) : 0.0;
   }
+  double power_damping(const detail::StepState& s) const { return d_.damped() ? d_.damping().form(s.v, s.v) : 0.0; }
 
   [[noreturn]] void fail(const detail::StepState& s, const std::string& why) const {
     std::string hint;
@@ -119,8 +141,10 @@ class Ledger {
 
   const detail::Dynamics& d_;
   const FfrfOptions& o_;
-  double e0_ = 0.0, v0_ = 0.0, scale_ = 0.0;
-  double t_ = 0.0, omega_ = 0.0, h_ = 0.0, q_g_ = 0.0, tau_ = 0.0, p_ext_ = 0.0, p_damp_ = 0.0;
+  double scale_ = 0.0;
+  bool prescribed_ = true, constant_speed_ = false;
+  double e0_ = 0.0, v0_ = 0.0, h0_ = 0.0, h_ = 0.0, q_g_ = 0.0, t_ = 0.0, omega_ = 0.0, tau_ = 0.0;
+  double moment_work_ = 0.0, omega_dh_ = 0.0, p_ext_ = 0.0, p_damp_ = 0.0;
 };
 
 Eigen::VectorXd initial_coordinates(const detail::Dynamics& d, const RotationProfile& rotation, const FfrfOptions& o) {
@@ -192,7 +216,8 @@ FfrfHistory run(Stepper& stepper, const detail::Dynamics& d, const RotationProfi
   const int samples = steps / o.output_stride + 1 + (steps % o.output_stride != 0 ? 1 : 0);
   h.displacement.resize(samples, static_cast<Eigen::Index>(o.output_dofs.size()));
   detail::StepState s = stepper.start(initial_coordinates(d, rotation, o), Eigen::VectorXd::Zero(p.n()));
-  Ledger ledger(d, o, energy_scale(d, rotation, o, steps));
+  Ledger ledger(d, o, energy_scale(d, rotation, o, steps), rotation.prescribed(),
+                rotation.kind() == RotationProfile::Kind::constant_speed);
   detail::Snapshot snap = d.snapshot(s.theta, s.omega, s.q, s.v);
   double torque = 0.0, alpha = 0.0;
   std::tie(torque, alpha) = torque_and_alpha(stepper, s, rotation);
@@ -201,11 +226,13 @@ FfrfHistory run(Stepper& stepper, const detail::Dynamics& d, const RotationProfi
   record(h, rows, s, alpha, snap, ledger, torque);
   for (int n = 1; n <= steps; ++n) {
     stepper.step(s);
+    ledger.advance(s, rotation.prescribed() ? 0.0 : rotation.torque(s.t));
+    const bool output = n % o.output_stride == 0 || n == steps;
+    if (!output && n % kCheckInterval != 0) continue;
     snap = d.snapshot(s.theta, s.omega, s.q, s.v);
-    const double applied = rotation.prescribed() ? 0.0 : rotation.torque(s.t);
-    ledger.advance(s, snap, applied, rotation.prescribed());
+    ledger.sync(snap);
     ledger.check(s, snap);
-    if (n % o.output_stride == 0 || n == steps) {
+    if (output) {
       std::tie(torque, alpha) = torque_and_alpha(stepper, s, rotation);
       record(h, rows, s, alpha, snap, ledger, torque);
     }

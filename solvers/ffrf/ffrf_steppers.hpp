@@ -40,7 +40,8 @@ class PrescribedStepper {
 
  private:
   Eigen::VectorXd residual(double t, double omega, double alpha, double theta, const Eigen::VectorXd& q,
-                           const Eigen::VectorXd& v) const;
+                           const Eigen::VectorXd& v);
+  void update_operators(double omega, double alpha);
   Eigen::VectorXd solve_effective(double omega, double alpha, const Eigen::VectorXd& b);
   void effective_matrix(double omega, double alpha, CoordinateMatrix& out) const;
 
@@ -53,6 +54,9 @@ class PrescribedStepper {
   Eigen::VectorXd ma_;  // M a at the held state
   CoordinateSolver mass_solver_, effective_;
   CoordinateMatrix current_;
+  CoordinateMatrix k_, c_;  // K(Omega, alpha), C(Omega) of the last update_operators
+  bool operators_ready_ = false;
+  double operators_omega_ = 0.0, operators_alpha_ = 0.0;
   bool factored_ = false;
   double factored_omega_ = 0.0, factored_alpha_ = 0.0;
   StepCounters counters_;
@@ -69,6 +73,13 @@ class FreeRotorStepper {
   const StepCounters& counters() const { return counters_; }
 
  private:
+  struct Trial {  // one Newton iterate: end-of-step state, inertia, forces and residual
+    StepState state;
+    Eigen::VectorXd hq, c, i_q, f_q, r_q;
+    double j = 0.0, i_theta = 0.0, f_theta = 0.0, r_theta = 0.0, relative_residual = 0.0;
+  };
+  Trial evaluate(const StepState& pred, double a_theta, const Eigen::VectorXd& a_q) const;
+  void newton_update(const Trial& tr, int iteration, double& a_theta, Eigen::VectorXd& a_q);
   void forces(const StepState& s, double& f_theta, Eigen::VectorXd& f_q, double* scale_theta = nullptr,
               double* scale_q = nullptr) const;
 

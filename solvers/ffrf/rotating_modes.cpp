@@ -39,7 +39,8 @@ Eigen::VectorXcd state_space_eigenvalues(const DenseOperators& ops, double speed
   const double s = o.stiffening ? 1.0 : 0.0, w2 = speed * speed;
   const Eigen::MatrixXd k_eff = ops.k + (s * w2) * ops.ks - w2 * ops.mp;
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> sym(k_eff, ops.m);
-  if (sym.info() != Eigen::Success) throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
+  if (sym.info() != Eigen::Success)
+    throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
   const Eigen::VectorXd lambda = sym.eigenvalues();
   const Eigen::Index n = lambda.size();
   Eigen::VectorXcd out(2 * n);
@@ -61,7 +62,8 @@ Eigen::VectorXcd state_space_eigenvalues(const DenseOperators& ops, double speed
   a.bottomLeftCorner(n, n) = (-lambda.cwiseQuotient(w)).asDiagonal();
   a.bottomRightCorner(n, n) = -c;
   const Eigen::EigenSolver<Eigen::MatrixXd> eig(a, false);
-  if (eig.info() != Eigen::Success) throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
+  if (eig.info() != Eigen::Success)
+    throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
   return eig.eigenvalues();
 }
 
@@ -157,7 +159,8 @@ double divergence_speed(const ProjectedBody& body, bool stiffening) {
   // K phi = lambda (M_p - s K_s1) phi with K > 0: the largest mu of L^-1 (M_p - s K_s1) L^-T
   // (K = L L^T) gives the lowest positive lambda = Omega^2 = 1 / mu.
   const Eigen::MatrixXd k = body.stiffness.to_dense();
-  const Eigen::MatrixXd soft = body.projected_mass.to_dense() - (stiffening ? 1.0 : 0.0) * body.geometric_stiffness.to_dense();
+  const Eigen::MatrixXd soft =
+      body.projected_mass.to_dense() - (stiffening ? 1.0 : 0.0) * body.geometric_stiffness.to_dense();
   const Eigen::LLT<Eigen::MatrixXd> llt(k);
   if (llt.info() != Eigen::Success) throw SolverError("divergence speed: stiffness not positive definite");
   const Eigen::MatrixXd li = llt.matrixL().solve(Eigen::MatrixXd::Identity(k.rows(), k.cols()));
@@ -183,10 +186,11 @@ StaticDeflection centrifugal_deflection(const RotatingBody& body, double speed, 
   const double d_max = d.size() ? d.cwiseAbs().maxCoeff() : 0.0;
   const long negative = d.size() ? (d.array() <= 1e-13 * d_max).count() : -1;
   if (negative != 0)
-    throw SolverError(fmt::format("static centrifugal deflection at Omega = {:.6g} rad/s: K{} - Omega^2 M_p is not "
-                                  "positive definite ({} non-positive pivots); the speed is at or above the "
-                                  "divergence speed of the spin-softened model, which has no stable steady state there",
-                                  speed, o.stiffening ? " + Omega^2 K_sigma1" : "", negative));
+    throw SolverError(
+        fmt::format("static centrifugal deflection at Omega = {:.6g} rad/s: K{} - Omega^2 M_p is not "
+                    "positive definite ({} non-positive pivots); the speed is at or above the "
+                    "divergence speed of the spin-softened model, which has no stable steady state there",
+                    speed, o.stiffening ? " + Omega^2 K_sigma1" : "", negative));
   StaticDeflection out;
   out.speed = speed;
   out.displacement = ldlt.solve(load);

@@ -77,6 +77,7 @@ struct StaticDeflection {
 // (K + s_st Omega^2 K_s1 - Omega^2 M_p) u = Omega^2 f_c + F_g R(theta)^T g on the full model.
 // Throws SolverError naming the speed when the operator is not positive definite (at or above the
 // divergence speed: no stable steady state).
-StaticDeflection centrifugal_deflection(const RotatingBody& body, double speed, const StaticDeflectionOptions& options = {});
+StaticDeflection centrifugal_deflection(const RotatingBody& body, double speed,
+                                        const StaticDeflectionOptions& options = {});
 
 }  // namespace bb::ffrf

@@ -58,13 +58,15 @@ struct ExactConstantSpeed {
   double w;
   VectorXd at(double t) const {
     const Eigen::VectorXcd modal = (lambda * t).array().exp().matrix().cwiseProduct(x_h0);
-    const Eigen::VectorXcd x = xs.cast<std::complex<double>>() + xp * std::exp(std::complex<double>(0.0, w * t)) + v * modal;
+    const Eigen::VectorXcd x =
+        xs.cast<std::complex<double>>() + xp * std::exp(std::complex<double>(0.0, w * t)) + v * modal;
     return x.real();
   }
 };
 
 ExactConstantSpeed exact_constant_speed(const ffrf::ProjectedBody& p, double w, const Eigen::Vector2d& g) {
-  const MatrixXd m = p.mass.to_dense(), k = p.stiffness.to_dense() + w * w * (p.geometric_stiffness.to_dense() - p.projected_mass.to_dense());
+  const MatrixXd m = p.mass.to_dense(),
+                 k = p.stiffness.to_dense() + w * w * (p.geometric_stiffness.to_dense() - p.projected_mass.to_dense());
   const MatrixXd gy = p.gyroscopic.to_dense();
   const auto n = m.rows();
   MatrixXd a = MatrixXd::Zero(2 * n, 2 * n);
@@ -81,7 +83,8 @@ ExactConstantSpeed exact_constant_speed(const ffrf::ProjectedBody& p, double w, 
   ExactConstantSpeed e;
   e.w = w;
   e.xs = -a.fullPivLu().solve(b0);
-  const Eigen::MatrixXcd shifted = std::complex<double>(0, w) * Eigen::MatrixXcd::Identity(2 * n, 2 * n) - a.cast<std::complex<double>>();
+  const Eigen::MatrixXcd shifted =
+      std::complex<double>(0, w) * Eigen::MatrixXcd::Identity(2 * n, 2 * n) - a.cast<std::complex<double>>();
   e.xp = shifted.fullPivLu().solve(bc);
   const Eigen::EigenSolver<MatrixXd> eig(a);
   e.v = eig.eigenvectors();
@@ -147,7 +150,8 @@ TEST(FfrfIntegrator, SteadyStateStartIsAnEquilibriumAtConstantSpeed) {
     const ffrf::FfrfHistory h = ffrf::integrate(*s.projected, ffrf::RotationProfile::constant_speed(speed), o);
     const ffrf::StaticDeflection st = ffrf::centrifugal_deflection(*s.body, speed);
     const VectorXd q = ffrf::to_free_dofs(*s.basis, h.final_coordinates);
-    EXPECT_LT((q - st.displacement).norm(), (modal ? 1e-3 : 1e-10) * st.displacement.norm()) << (modal ? "modal" : "nodal");
+    EXPECT_LT((q - st.displacement).norm(), (modal ? 1e-3 : 1e-10) * st.displacement.norm())
+        << (modal ? "modal" : "nodal");
     EXPECT_EQ(h.factorizations, 1);
   }
 }
@@ -217,6 +221,12 @@ TEST(FfrfIntegrator, PrescribedSpinUpBalancesEnergyWithDrivingAndGravityWork) {
       w_max = std::max({w_max, std::abs(h.driving_work[i]), std::abs(h.gravity_work[i])});
     }
     const double err = h.energy_balance_error() / t_max;
+    // The reported driving torque integrates to the driving work (trapezoid over the samples).
+    double torque_work = 0.0;
+    for (size_t i = 1; i < h.time.size(); ++i)
+      torque_work += 0.5 * (h.time[i] - h.time[i - 1]) *
+                     (h.driving_torque[i] * h.speed[i] + h.driving_torque[i - 1] * h.speed[i - 1]);
+    EXPECT_NEAR(torque_work / h.driving_work.back(), 1.0, per_period == 80 ? 1e-4 : 1e-2);
     std::printf("  %2d steps per period: energy balance error %.3e of max T (%.4g J); driving work %.4g J, largest "
                 "work %.3g J; observed order %.2f\n",
                 per_period, err, t_max, h.driving_work.back(), w_max, previous > 0 ? std::log2(previous / err) : 0.0);
@@ -250,7 +260,8 @@ TEST(FfrfIntegrator, FreeRotorBalancesEnergyAndAngularMomentumUnderATorque) {
     double t_max = 0.0, coast_drift = 0.0;
     for (size_t i = 0; i < h.time.size(); ++i) {
       t_max = std::max(t_max, h.kinetic_energy[i]);
-      if (h.time[i] >= t1) coast_drift = std::max(coast_drift, std::abs(h.angular_momentum[i] - h.angular_momentum.back()));
+      if (h.time[i] >= t1)
+        coast_drift = std::max(coast_drift, std::abs(h.angular_momentum[i] - h.angular_momentum.back()));
     }
     const double e_err = h.energy_balance_error() / t_max;
     std::printf("  %s basis: Omega_end %.3f rad/s; energy balance error %.2e of max T; Delta H %.9f vs impulse %.9f "
@@ -313,7 +324,8 @@ TEST(FfrfIntegrator, ModalBasisReproducesTheNodalSpinUpWithMeasuredErrorAndSpeed
   const auto t2 = clock::now();
   const double err = (hm.displacement - hn.displacement).cwiseAbs().colwise().maxCoeff().cwiseQuotient(
                          hn.displacement.cwiseAbs().colwise().maxCoeff()).maxCoeff();
-  const double tn = std::chrono::duration<double>(t1 - t0).count(), tm = std::chrono::duration<double>(t2 - t1).count();
+  const double tn = std::chrono::duration<double>(t1 - t0).count(),
+               tm = std::chrono::duration<double>(t2 - t1).count();
   std::printf("  %d steps: nodal (%d DOFs) %.3f s, %d factorizations, %ld corrections; modal (%d coordinates) %.3f s "
               "(speed-up %.1f); max tip error %.2e of the peak\n",
               hn.steps, nodal.body->n_free(), tn, hn.factorizations, hn.solve_iterations, modal.basis->size(), tm,
@@ -353,8 +365,6 @@ TEST(FfrfIntegrator, InvalidOptionsAreInputErrorsThatSayWhatToChange) {
   o = ok;
   o.output_dofs = {100000};
   expect_error(o, "output DOF");
-  EXPECT_THROW((void)ffrf::make_elastic_basis(*s.body, test::modal_basis(s.body->n_free() + 1)), InputError);
-  EXPECT_THROW((void)ffrf::make_elastic_basis(*s.body, test::modal_basis(0)), InputError);
   EXPECT_THROW((void)ffrf::RotationProfile::spin_up(6.0, 0.0), InputError);
 }
 

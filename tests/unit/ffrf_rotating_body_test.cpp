@@ -106,7 +106,8 @@ TEST_P(RotatingBar, ElongationWithSpinSofteningConvergesToTheClosedForm) {
     const Model model = bar_model(bar, GetParam(), nx);
     const ffrf::RotatingBody body = ffrf::build_rotating_body(model);
     const ffrf::StaticDeflection s = ffrf::centrifugal_deflection(body, bar.omega, {.stiffening = false});
-    const double err = axial_error(model, body, s.displacement, bar, [&](double x) { return elongation_softening(bar, x); });
+    const double err =
+        axial_error(model, body, s.displacement, bar, [&](double x) { return elongation_softening(bar, x); });
     if (previous > 0.0) {
       const double order = std::log2(previous / err);
       std::printf("  %s nx %2d: max nodal error %.3e relative, observed order %.2f\n",

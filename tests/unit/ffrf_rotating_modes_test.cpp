@@ -61,9 +61,10 @@ TEST(FfrfRotatingModes, CantileverFlapAndChordFrequenciesMatchSouthwellValues) {
     // Square section: the in-plane (chord, y) mode is softened below the flap (z) mode.
     const double chord = m.frequencies_hz[0] * kTwoPi / unit, flap = m.frequencies_hz[1] * kTwoPi / unit;
     const double chord_ref = std::sqrt(ref.flap * ref.flap - ref.speed * ref.speed);
-    std::printf("  Omega_bar %4.1f: flap %.4f (published %.4f, %+.3f %%), chord %.4f (sqrt(flap^2 - Omega^2) %.4f, "
-                "%+.3f %%)\n",
-                ref.speed, flap, ref.flap, 100 * (flap / ref.flap - 1), chord, chord_ref, 100 * (chord / chord_ref - 1));
+    std::printf(
+        "  Omega_bar %4.1f: flap %.4f (published %.4f, %+.3f %%), chord %.4f (sqrt(flap^2 - Omega^2) %.4f, "
+        "%+.3f %%)\n",
+        ref.speed, flap, ref.flap, 100 * (flap / ref.flap - 1), chord, chord_ref, 100 * (chord / chord_ref - 1));
     EXPECT_NEAR(flap / ref.flap, 1.0, 2e-3) << "Omega_bar " << ref.speed;
     EXPECT_NEAR(chord / chord_ref, 1.0, 3e-3) << "Omega_bar " << ref.speed;
     EXPECT_TRUE(m.stable);
@@ -75,7 +76,8 @@ TEST(FfrfRotatingModes, CampbellAtRestEqualsTheNonRotatingModalSolver) {
   b.width = 0.03;  // separate the two bending directions
   b.nx = 30;
   for (const bool modal : {true, false}) {
-    const test::FfrfSetup s = test::ffrf_setup(test::beam_model(b), modal ? test::modal_basis(12) : ffrf::ElasticBasisOptions{});
+    const test::FfrfSetup s =
+        test::ffrf_setup(test::beam_model(b), modal ? test::modal_basis(12) : ffrf::ElasticBasisOptions{});
     const ffrf::CampbellDiagram c = ffrf::campbell_diagram(*s.projected, {0.0, 50.0}, {.n_modes = 6});
     const ModalSolution ref = lowest_modes(s.body->stiffness, s.body->mass, {.n_modes = 6});
     for (int k = 0; k < 6; ++k) {
@@ -137,7 +139,8 @@ TEST(FfrfRotatingModes, ModalBasisMatchesTheFullModelForTheLowestRotatingModes) 
     const ffrf::ProjectedBody p = ffrf::project(body, basis);
     const ffrf::RotatingModes m = ffrf::rotating_modes(p, speed, {.n_modes = 4, .coriolis = false});
     double worst = 0.0;
-    for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(m.frequencies_hz[k] * kTwoPi / std::sqrt(full.eigenvalues[k]) - 1));
+    for (int k = 0; k < 4; ++k)
+      worst = std::max(worst, std::abs(m.frequencies_hz[k] * kTwoPi / std::sqrt(full.eigenvalues[k]) - 1));
     std::printf("  %2d modes + %d static shapes: worst relative error of the 4 lowest rotating frequencies %.2e\n",
                 n_modes, basis.static_shapes, worst);
     if (n_modes == 24) {

@@ -68,8 +68,8 @@ std::vector<double> reference_tip_lag(const std::vector<double>& times, int elem
     Eigen::Vector4d fe = Eigen::Vector4d::Zero();
     for (int g = 0; g < 4; ++g) {
       const double s = 0.5 * (gp[g] + 1.0), x = (e + s) * h, w = 0.5 * h * gw[g];
-      const Eigen::Vector4d nn(1 - 3 * s * s + 2 * s * s * s, h * (s - 2 * s * s + s * s * s), 3 * s * s - 2 * s * s * s,
-                               h * (s * s * s - s * s));
+      const Eigen::Vector4d nn(1 - 3 * s * s + 2 * s * s * s, h * (s - 2 * s * s + s * s * s),
+                               3 * s * s - 2 * s * s * s, h * (s * s * s - s * s));
       const Eigen::Vector4d dn = Eigen::Vector4d(-6 * s + 6 * s * s, h * (1 - 4 * s + 3 * s * s), 6 * s - 6 * s * s,
                                                  h * (3 * s * s - 2 * s)) / h;
       ge += w * 0.5 * kRhoA * (kL * kL - x * x) * dn * dn.transpose();  // T at unit speed
@@ -126,7 +126,8 @@ SpinUpRun run_solid(const test::FfrfSetup& s, const Model& model, double dt, dou
   for (int node : model.node_sets.at("tip")) o.output_dofs.push_back(node * 3 + 1);
   SpinUpRun r{{}, {}, ffrf::integrate(*s.projected, ffrf::RotationProfile::spin_up(kOs, kTs), o)};
   r.time = r.history.time;
-  for (Eigen::Index i = 0; i < r.history.displacement.rows(); ++i) r.tip.push_back(r.history.displacement.row(i).mean());
+  for (Eigen::Index i = 0; i < r.history.displacement.rows(); ++i)
+    r.tip.push_back(r.history.displacement.row(i).mean());
   return r;
 }
 

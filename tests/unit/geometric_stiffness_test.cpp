@@ -238,8 +238,8 @@ TEST(GeometricStiffness, UniformTensionGivesTheDiscreteTautStringSpectrum) {
       } else {
         EXPECT_NEAR(got, exact, 1e-3 * exact) << element_name(type) << " mode " << n;  // measured 5e-4
       }
-      std::printf("  %-5s string mode %d: lambda %.8e, continuum %.8e (rel %.2e)\n", std::string(element_name(type)).c_str(),
-                  n, got, exact, got / exact - 1.0);
+      std::printf("  %-5s string mode %d: lambda %.8e, continuum %.8e (rel %.2e)\n",
+                  std::string(element_name(type)).c_str(), n, got, exact, got / exact - 1.0);
     }
   }
 }

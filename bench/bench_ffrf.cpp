@@ -131,7 +131,7 @@ double blade_time_step(const bb::Model& model, const bb::ffrf::RotationAxis& axi
   const bb::ffrf::RotatingBody body = bb::ffrf::build_rotating_body(model, axis);
   const bb::ffrf::ElasticBasis basis = bb::ffrf::make_elastic_basis(body, modal(8));
   const bb::ffrf::ProjectedBody p = bb::ffrf::project(body, basis);
-  return 1.0 / (40.0 * bb::ffrf::rotating_modes(p, 300.0, {.n_modes = 1}).frequencies_hz[0]);
+  return bb::ffrf::time_step_resolving(p, 300.0);
 }
 
 void blade_benchmark(benchmark::State& state, bb::Model model, double simulated) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
@@ -126,6 +127,12 @@ Eigen::VectorXd expand_to_global(const RotatingBody& body, const Eigen::VectorXd
   Eigen::VectorXd all = Eigen::VectorXd::Zero(body.dofs.n_global());
   for (int i = 0; i < body.dofs.n_free; ++i) all[body.dofs.free_dofs[static_cast<size_t>(i)]] = free_values[i];
   return all;
+}
+
+Eigen::VectorXd restrict_to_free(const RotatingBody& body, const Eigen::VectorXd& global_values) {
+  if (global_values.size() != body.dofs.n_global())
+    throw std::invalid_argument("restrict_to_free: vector size is not the number of nodal DOFs");
+  return free_rows(global_values, body.dofs);
 }
 
 }  // namespace bb::ffrf

@@ -71,7 +71,9 @@ Eigen::MatrixXd axis_rotation(const RotatingBody& body, double theta);
 // d/dtheta and d2/dtheta2 of axis_rotation.
 Eigen::MatrixXd axis_rotation_derivative(const RotatingBody& body, double theta, int order);
 
-// All-DOF displacement (constrained DOFs zero) from free-DOF values.
+// All-DOF displacement (constrained DOFs zero) from free-DOF values, and the free rows of an
+// all-DOF vector (e.g. assembly/assemble's load_vector(model), for FfrfOptions::external_load).
 Eigen::VectorXd expand_to_global(const RotatingBody& body, const Eigen::VectorXd& free_values);
+Eigen::VectorXd restrict_to_free(const RotatingBody& body, const Eigen::VectorXd& global_values);
 
 }  // namespace bb::ffrf

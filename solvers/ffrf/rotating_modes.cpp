@@ -155,6 +155,21 @@ std::vector<EngineOrderCrossing> engine_order_crossings(const ProjectedBody& bod
   return out;
 }
 
+double time_step_resolving(const ProjectedBody& body, double speed, int mode, int steps_per_period,
+                           const RotatingModesOptions& options) {
+  if (mode < 1 || steps_per_period < 1)
+    throw InputError("time_step_resolving: mode and steps_per_period must be >= 1");
+  RotatingModesOptions o = options;
+  o.n_modes = std::max(o.n_modes, mode);
+  const RotatingModes m = rotating_modes(body, speed, o);
+  const auto k = static_cast<Eigen::Index>(mode - 1);
+  if (k >= m.frequencies_hz.size() || !(m.frequencies_hz[k] > 0.0))
+    throw SolverError(fmt::format("time_step_resolving: mode {} at {} rad/s has no positive frequency (diverging, "
+                                  "or beyond the basis)",
+                                  mode, speed));
+  return 1.0 / (steps_per_period * m.frequencies_hz[k]);
+}
+
 double divergence_speed(const ProjectedBody& body, bool stiffening) {
   // K phi = lambda (M_p - s K_s1) phi with K > 0: the largest mu of L^-1 (M_p - s K_s1) L^-T
   // (K = L L^T) gives the lowest positive lambda = Omega^2 = 1 / mu.

@@ -59,6 +59,11 @@ std::vector<EngineOrderCrossing> engine_order_crossings(const ProjectedBody& bod
                                                         const std::vector<int>& engine_orders,
                                                         const RotatingModesOptions& options = {});
 
+// Time step resolving the `mode`-th lowest rotating mode at `speed` with `steps_per_period` steps:
+// the generalized-alpha period error is (omega dt)^2 / 12, 0.2 % at 40 steps per period.
+double time_step_resolving(const ProjectedBody& body, double speed, int mode = 1, int steps_per_period = 40,
+                           const RotatingModesOptions& options = {});
+
 // Lowest speed at which K + s_st Omega^2 K_s1 - Omega^2 M_p becomes singular (the static
 // divergence), in the basis's coordinates; +infinity when it never does (stiffening dominates).
 double divergence_speed(const ProjectedBody& body, bool stiffening);

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "assembly/assemble.hpp"
 #include "common/errors.hpp"
 #include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"
@@ -278,6 +279,36 @@ TEST(FfrfIntegrator, FreeRotorBalancesEnergyAndAngularMomentumUnderATorque) {
 
 // With a hub far heavier than the blade, a free rotor spinning at Omega0 without torque keeps
 // Omega0 to O(J_blade / J_hub): its deflection history must approach the prescribed constant speed.
+// Damping and an external load in the body frame enter the ledger: T + U change = driving + gravity
+// + external work - damping work, with the load from the model's nodal loads (assembly/load_vector).
+TEST(FfrfIntegrator, DampedRunWithAnExternalLoadBalancesEnergy) {
+  const test::BeamSpec b = offset_beam();
+  Model model = offset_model(b, 0.05);
+  model.loads = {{"tip", 1, 50.0, LoadSplit::equal}};
+  const test::FfrfSetup s = test::ffrf_setup(model, test::modal_basis(8));
+  const double f1 = s.basis->frequencies_hz[0];
+  const Eigen::VectorXd tip_load = ffrf::restrict_to_free(*s.body, load_vector(s.model));
+  ffrf::FfrfOptions o;
+  o.time_step = 1.0 / (80 * f1);
+  o.end_time = 20.0 / f1;
+  o.rho_infinity = 1.0;
+  o.rayleigh_mass = 0.02 * 2 * kPi * f1;  // about 1 % of critical at f1
+  o.gravity = Eigen::Vector3d(0.0, -9.81, 0.0);
+  o.external_load = [&](double t) { return Eigen::VectorXd(std::sin(2 * kPi * 1.3 * f1 * t) * tip_load); };
+  const ffrf::FfrfHistory h =
+      ffrf::integrate(*s.projected, ffrf::RotationProfile::spin_up(0.4 * 2 * kPi * f1, 10.0 / f1), o);
+  double t_max = 0.0;
+  for (double t : h.kinetic_energy) t_max = std::max(t_max, t);
+  std::printf("  damping work %.4g J, external work %.4g J, driving work %.4g J; balance error %.2e of max T\n",
+              h.damping_work.back(), h.external_work.back(), h.driving_work.back(),
+              h.energy_balance_error() / t_max);
+  EXPECT_GT(h.damping_work.back(), 0.0);
+  EXPECT_GT(std::abs(h.external_work.back()), 0.0);
+  EXPECT_LT(h.energy_balance_error(), 1e-5 * t_max);
+  // ... and small against the damping and external works themselves (a wrong sign would be 100 %).
+  EXPECT_LT(h.energy_balance_error(), 0.02 * (h.damping_work.back() + std::abs(h.external_work.back())));
+}
+
 TEST(FfrfIntegrator, FreeRotorWithAHeavyHubMatchesThePrescribedConstantSpeed) {
   const test::BeamSpec b = offset_beam();
   const Model model = offset_model(b, 0.05);
@@ -366,6 +397,30 @@ TEST(FfrfIntegrator, InvalidOptionsAreInputErrorsThatSayWhatToChange) {
   o.output_dofs = {100000};
   expect_error(o, "output DOF");
   EXPECT_THROW((void)ffrf::RotationProfile::spin_up(6.0, 0.0), InputError);
+}
+
+// The justification of the default rho_inf = 0.9 (ffrf_integrator.hpp): a mode resolved by 20 steps
+// per period loses 1.385e-5 of its amplitude per period (spectral radius of Chung & Hulbert's
+// amplification matrix at omega dt = 2 pi / 20, computed separately). One mode at rest under a
+// suddenly applied gravity load: the oscillation energy about the static state, T + U - W_g - E_eq,
+// must decay as that radius to the power 2 n.
+TEST(FfrfIntegrator, DefaultRhoInfinityBarelyDampsResolvedModes) {
+  const test::FfrfSetup s = test::ffrf_setup(offset_model(offset_beam(), 0.05), test::modal_basis(1, false));
+  const double f1 = s.basis->frequencies_hz[0];
+  const int periods = 200;
+  ffrf::FfrfOptions o;
+  o.time_step = 1.0 / (20 * f1);
+  o.end_time = periods / f1;
+  o.gravity = Eigen::Vector3d(0.0, -9.81e3, 0.0);
+  const ffrf::FfrfHistory h = ffrf::integrate(*s.projected, ffrf::RotationProfile::constant_speed(0.0), o);
+  // Static state: K q_s = f, equilibrium energy U_s - f q_s = -f q_s / 2; the start (q = 0) has 0.
+  const double f = (s.projected->gravity_load * Eigen::Vector2d(0.0, -9.81e3))[0];
+  const double q_s = f / s.projected->stiffness.dense()(0, 0);
+  const double e_eq = -0.5 * f * q_s;
+  const double e_end = h.kinetic_energy.back() + h.strain_energy.back() - h.gravity_work.back() - e_eq;
+  const double ratio = std::sqrt(e_end / (0 - e_eq)), expected = std::pow(1.0 - 1.385e-5, periods);
+  std::printf("  amplitude after %d periods at 20 steps per period: %.6f (predicted %.6f)\n", periods, ratio, expected);
+  EXPECT_NEAR(ratio, expected, 5e-5);  // the loss itself is 2.8e-3; measured difference 2e-5
 }
 
 TEST(FfrfIntegrator, GeneralizedAlphaParametersAreChungHulberts) {

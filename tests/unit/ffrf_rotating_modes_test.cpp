@@ -187,6 +187,15 @@ TEST(FfrfRotatingModes, AreInvariantUnderARigidRotationOfBodyAndAxis) {
               1e-12 * plain.body->mass_properties.axis_inertia);
 }
 
+TEST(FfrfRotatingModes, TimeStepResolvesTheRequestedRotatingMode) {
+  const test::BeamSpec b = southwell_beam();
+  const test::FfrfSetup s = test::ffrf_setup(test::beam_model(b), test::modal_basis(8));
+  const double speed = 4.0 * frequency_unit(b);
+  const ffrf::RotatingModes m = ffrf::rotating_modes(*s.projected, speed, {.n_modes = 3});
+  EXPECT_DOUBLE_EQ(ffrf::time_step_resolving(*s.projected, speed), 1.0 / (40.0 * m.frequencies_hz[0]));
+  EXPECT_DOUBLE_EQ(ffrf::time_step_resolving(*s.projected, speed, 3, 20), 1.0 / (20.0 * m.frequencies_hz[2]));
+}
+
 TEST(FfrfRotatingModes, LargeNodalBasisAsksForAModalOne) {
   test::BeamSpec b = southwell_beam();
   const test::FfrfSetup s = test::ffrf_setup(test::beam_model(b));

@@ -67,6 +67,8 @@ struct FfrfOptions {
   bool start_from_steady_state = false;
   // External load in the body frame on the free DOFs [N], as a function of time; empty = none.
   std::function<Eigen::VectorXd(double)> external_load;
+  // Spin-up of the 480-DOF beam: every_change 3000 factorizations, with_correction 5 (and ~4
+  // corrections per step), 35 % less time (bench/bench_ffrf.cpp).
   FactorizationReuse factorization = FactorizationReuse::with_correction;
   // Divergence, checked at every output sample and every 16 steps: the run stops with SolverError
   // when the mass-weighted RMS elastic displacement sqrt(q^T M q / m) exceeds this fraction of the

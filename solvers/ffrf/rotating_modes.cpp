@@ -22,6 +22,10 @@ struct DenseOperators {
 
 DenseOperators dense_operators(const ProjectedBody& body, const RotatingModesOptions& o) {
   if (o.n_modes < 1) throw InputError(fmt::format("rotating modes: n_modes must be >= 1, got {}", o.n_modes));
+  if (o.n_modes > body.n())
+    throw InputError(fmt::format("rotating modes: {} modes asked from an elastic basis of {} coordinates; ask for "
+                                 "fewer modes or enlarge the basis",
+                                 o.n_modes, body.n()));
   if (!body.mass.is_dense() && body.n() > o.max_dense_size)
     throw InputError(fmt::format("rotating modes of a nodal basis of {} coordinates need a dense {}x{} state-space "
                                  "eigenproblem; use a modal elastic basis (BasisKind::modal) or raise max_dense_size",

@@ -21,7 +21,10 @@
 namespace bb::ffrf {
 
 struct RotatingModesOptions {
-  int n_modes = 6;          // lowest modes reported per speed
+  // Lowest modes reported per speed, at most the basis size. In a modal basis only the modes well
+  // below its highest mode at rest are converged (its top Ritz values, those of the static shapes
+  // in particular, are not): ask for fewer than ElasticBasis::mode_numbers holds.
+  int n_modes = 6;
   bool stiffening = true;   // s_st Omega^2 K_s1
   bool coriolis = true;     // 2 Omega G
   int max_dense_size = 800; // a nodal basis larger than this must be replaced by a modal one

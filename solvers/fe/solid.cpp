@@ -313,6 +313,16 @@ Matrix60 hex20_consistent_mass(const Hex20Coords& xyz, const SolidMaterial& mate
   return hex_consistent_mass(hex20_table(), xyz, material, "hex20");
 }
 
+void hex8_shape_functions(const Eigen::Vector3d& natural, Eigen::Matrix<double, 8, 1>& n,
+                          Eigen::Matrix<double, 3, 8>& dn) {
+  hex8_shape(natural[0], natural[1], natural[2], n, dn);
+}
+
+void hex20_shape_functions(const Eigen::Vector3d& natural, Eigen::Matrix<double, 20, 1>& n,
+                           Eigen::Matrix<double, 3, 20>& dn) {
+  hex20_shape(natural[0], natural[1], natural[2], n, dn);
+}
+
 double hex8_volume(const Hex8Coords& xyz) { return hex_volume(hex8_table(), xyz, "hex8"); }
 
 double hex20_volume(const Hex20Coords& xyz) { return hex_volume(hex20_table(), xyz, "hex20"); }

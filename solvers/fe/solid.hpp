@@ -36,6 +36,13 @@ Matrix24 hex8_consistent_mass(const Hex8Coords& xyz, const SolidMaterial& materi
 Matrix60 hex20_stiffness(const Hex20Coords& xyz, const SolidMaterial& material);
 Matrix60 hex20_consistent_mass(const Hex20Coords& xyz, const SolidMaterial& material);
 
+// Shape functions N_a and their natural derivatives (rows d/dxi, d/deta, d/dzeta) at a natural
+// point, node order as above: for other element formulas of fe/ (fe/initial_stress).
+void hex8_shape_functions(const Eigen::Vector3d& natural, Eigen::Matrix<double, 8, 1>& n,
+                          Eigen::Matrix<double, 3, 8>& dn);
+void hex20_shape_functions(const Eigen::Vector3d& natural, Eigen::Matrix<double, 20, 1>& n,
+                           Eigen::Matrix<double, 3, 20>& dn);
+
 // Element volume (Gauss-integrated), for checks and mass reports.
 double hex8_volume(const Hex8Coords& xyz);
 double hex20_volume(const Hex20Coords& xyz);

@@ -8,12 +8,13 @@
 #include "analysis/frf_spec.hpp"
 #include "analysis/hbm_spec.hpp"
 #include "analysis/modal_spec.hpp"
+#include "analysis/rotating_spec.hpp"
 #include "analysis/static_spec.hpp"
 #include "analysis/time_spec.hpp"
 
 namespace bb {
 
-using AnalysisSpec = std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec>;
+using AnalysisSpec = std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec>;
 
 // The case file's name of each type (`type = "..."` in [analysis]).
 constexpr std::string_view analysis_type_name(const StaticSpec&) { return "static"; }
@@ -22,6 +23,7 @@ constexpr std::string_view analysis_type_name(const FrfSpec&) { return "frf"; }
 constexpr std::string_view analysis_type_name(const HbmSpec&) { return "hbm"; }
 constexpr std::string_view analysis_type_name(const TimeSpec&) { return "time"; }
 constexpr std::string_view analysis_type_name(const ContactLoopSpec&) { return "contact_loop"; }
+constexpr std::string_view analysis_type_name(const RotatingSpec&) { return "rotating"; }
 inline std::string_view analysis_type_name(const AnalysisSpec& a) {
   return std::visit([](const auto& s) { return analysis_type_name(s); }, a);
 }

@@ -48,6 +48,12 @@ AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress
   return {std::move(tables), std::move(o)};
 }
 
+AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgress&) {
+  RotatingOutcome o = run_rotating(model, spec);
+  ResultTables tables = o.tables;
+  return {std::move(tables), std::move(o)};
+}
+
 }  // namespace
 
 AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress) {

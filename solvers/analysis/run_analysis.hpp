@@ -11,6 +11,7 @@
 #include "analysis/frf_analysis.hpp"
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
+#include "analysis/rotating_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "analysis/time_analysis.hpp"
 #include "model/model.hpp"
@@ -18,7 +19,8 @@
 
 namespace bb {
 
-using AnalysisOutcome = std::variant<StaticSolution, ModalResult, FrfOutcome, HbmOutcome, TimeOutcome, ContactLoopOutcome>;
+using AnalysisOutcome =
+    std::variant<StaticSolution, ModalResult, FrfOutcome, HbmOutcome, TimeOutcome, ContactLoopOutcome, RotatingOutcome>;
 
 template <typename Spec>
 struct OutcomeOf;
@@ -28,6 +30,7 @@ template <> struct OutcomeOf<FrfSpec> { using type = FrfOutcome; };
 template <> struct OutcomeOf<HbmSpec> { using type = HbmOutcome; };
 template <> struct OutcomeOf<TimeSpec> { using type = TimeOutcome; };
 template <> struct OutcomeOf<ContactLoopSpec> { using type = ContactLoopOutcome; };
+template <> struct OutcomeOf<RotatingSpec> { using type = RotatingOutcome; };
 static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<AnalysisSpec>, "one outcome per analysis type");
 
 struct AnalysisResults {

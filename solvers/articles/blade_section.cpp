@@ -55,7 +55,7 @@ void add_grid(PlanePattern& p, const std::vector<double>& xs, const std::vector<
 
 PlanePattern plane_pattern(const TwoBladeDimensions& d, const BladeSectionDivisions& n, bool corners) {
   const auto y = d.levels();
-  const double x0 = d.x_n0(), x1 = d.x_n1(), xc = d.x_c(), half = 0.5 * d.w;
+  const double x0 = d.x_n0(), x1 = d.x_n1, xc = d.x_c(), half = 0.5 * d.w;
   const double p0 = xc - 0.5 * d.B_p, p1 = xc + 0.5 * d.B_p;  // platform edges
   PlanePattern p;
   for (const auto& [x, yy] : {std::pair{0.0, y[2]}, {d.B_r, y[2]}, {d.B_r, y[3]}, {x1, y[3]}}) p.nodes.at(x, yy);
@@ -146,6 +146,11 @@ std::vector<int> nodes_where(const Mesh& mesh, const std::function<bool(const Ei
 }
 
 }  // namespace
+
+std::span<const char* const> blade_section_set_names() {
+  static const char* const names[] = {"root", "tip", "mid", "airfoil"};
+  return names;
+}
 
 BladeSectionDivisions blade_section_divisions(ElementType element) {
   BladeSectionDivisions d;

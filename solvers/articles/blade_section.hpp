@@ -10,6 +10,7 @@
 // Frame: x across the blade, y radial (root at y = 0, tip at y = Y8), z through the thickness.
 #pragma once
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct BladeSection {
   // face nearest to mid-airfoil), "airfoil" (every node with y >= Y7).
   std::map<std::string, std::vector<int>> sets;
 };
+
+// Names of the node sets blade_section defines itself.
+std::span<const char* const> blade_section_set_names();
 
 // element: q4, cst or hex8. Node ids 1-4 are the Presams nodes of Fig. 2.19 (0, 0), (B_r, 0),
 // (B_r, H_r), (x_n1, H_r) in plane meshes. Throws DimensionError for impossible dimensions,

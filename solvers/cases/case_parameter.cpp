@@ -46,7 +46,8 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
       return spec.model.section.*v.member;
     }
     double& operator()(const ArticleDimension& v) {
-      if (spec.model.mesh.kind != MeshSpec::Kind::two_blade) absent(p, "the mesh is not a two_blade article");
+      if (spec.model.mesh.kind != MeshSpec::Kind::two_blade && spec.model.mesh.kind != MeshSpec::Kind::blade_section)
+        absent(p, "the mesh is not a two_blade article or its blade_section");
       return spec.model.mesh.two_blade.*v.member;
     }
     double& operator()(const ContactLawValue& v) {

@@ -13,6 +13,7 @@
 #include "cases/parse_hbm.hpp"
 #include "cases/parse_modal.hpp"
 #include "cases/parse_model.hpp"
+#include "cases/parse_rotating.hpp"
 #include "cases/parse_study.hpp"
 #include "cases/parse_time.hpp"
 #include "common/errors.hpp"
@@ -35,6 +36,7 @@ constexpr AnalysisParser kAnalysisParsers[] = {
     {"hbm", [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_hbm(r, folder); }},
     {"time", [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_time(r, folder); }},
     {"contact_loop", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_contact_loop(r); }},
+    {"rotating", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_rotating(r); }},
 };
 static_assert(std::size(kAnalysisParsers) == std::variant_size_v<AnalysisSpec>, "one parser per analysis type");
 
@@ -66,6 +68,7 @@ ModelNeed model_need(const FrfSpec& s) {
 ModelNeed model_need(const HbmSpec& s) { return s.model.masters.empty() ? ModelNeed::matrices : ModelNeed::mesh; }
 ModelNeed model_need(const TimeSpec& s) { return model_need(s.system); }
 ModelNeed model_need(const ContactLoopSpec&) { return ModelNeed::nothing; }
+ModelNeed model_need(const RotatingSpec&) { return ModelNeed::mesh; }
 
 CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   CheckSpec c;

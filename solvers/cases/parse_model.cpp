@@ -56,22 +56,9 @@ HexBlockSpec parse_hex_block(TomlReader r, ElementType element) {
   return b;
 }
 
-// The generated two-blade article: mesh density in [mesh], any subset of the named dimensions
-// in [mesh.dimensions] (the others keep their documented defaults, articles/two_blade.hpp).
-void parse_two_blade(TomlReader& r, MeshSpec& m) {
-  m.kind = MeshSpec::Kind::two_blade;
-  // Far below every clearance validate() admits (1e-6 m), far above rounding in the corners.
-  m.merge_tolerance = 1e-7;
-  TwoBladeDimensions& d = m.two_blade;
-  auto small_integer = [&r](const std::string& key, long lo, long hi, int fallback) {
-    const auto v = r.optional_integer(key);
-    if (!v) return fallback;
-    if (*v < lo || *v > hi) r.fail(key, fmt::format("must lie in {}..{}, found {}", lo, hi, *v));
-    return static_cast<int>(*v);
-  };
-  d.refinement = small_integer("refinement", 1, 64, d.refinement);
-  d.thickness_divisions = small_integer("thickness_divisions", 1, 1000, d.thickness_divisions);
-  d.airfoil_divisions = small_integer("airfoil_divisions", 1, 1000, d.airfoil_divisions);
+// [mesh.dimensions] of the two-blade article (the blade_section uses its blade): any subset of the
+// named dimensions, the others keep their documented defaults (articles/two_blade.hpp).
+void parse_dimensions(TomlReader& r, TwoBladeDimensions& d) {
   std::optional<TomlReader> dims;
   if (const toml::table* table = r.optional_table("dimensions")) {
     dims.emplace(*table, r.path() + ".dimensions", r.file());
@@ -87,11 +74,55 @@ void parse_two_blade(TomlReader& r, MeshSpec& m) {
   }
 }
 
+int small_integer(TomlReader& r, const std::string& key, long lo, long hi, int fallback) {
+  const auto v = r.optional_integer(key);
+  if (!v) return fallback;
+  if (*v < lo || *v > hi) r.fail(key, fmt::format("must lie in {}..{}, found {}", lo, hi, *v));
+  return static_cast<int>(*v);
+}
+
+// The generated two-blade article: mesh density in [mesh], dimensions in [mesh.dimensions].
+void parse_two_blade(TomlReader& r, MeshSpec& m) {
+  m.kind = MeshSpec::Kind::two_blade;
+  // Far below every clearance validate() admits (1e-6 m), far above rounding in the corners.
+  m.merge_tolerance = 1e-7;
+  TwoBladeDimensions& d = m.two_blade;
+  d.refinement = small_integer(r, "refinement", 1, 64, d.refinement);
+  d.thickness_divisions = small_integer(r, "thickness_divisions", 1, 1000, d.thickness_divisions);
+  d.airfoil_divisions = small_integer(r, "airfoil_divisions", 1, 1000, d.airfoil_divisions);
+  parse_dimensions(r, d);
+}
+
+// The chapter-2 blade: the thesis's divisions for the element type unless [mesh.divisions] says
+// otherwise, dimensions in [mesh.dimensions].
+void parse_blade_section(TomlReader& r, MeshSpec& m) {
+  m.kind = MeshSpec::Kind::blade_section;
+  if (m.element != ElementType::q4 && m.element != ElementType::cst && m.element != ElementType::hex8)
+    r.fail("element", "kind 'blade_section' is meshed with q4, cst or hex8 (the thesis's three meshes)");
+  BladeSectionDivisions& n = m.blade_divisions;
+  n = blade_section_divisions(m.element);
+  if (const toml::table* table = r.optional_table("divisions")) {
+    TomlReader t(*table, r.path() + ".divisions", r.file());
+    for (auto [key, member] : {std::pair{"root_side_columns", &BladeSectionDivisions::root_side_columns},
+                               {"root_rows", &BladeSectionDivisions::root_rows}, {"neck_rows", &BladeSectionDivisions::neck_rows},
+                               {"lip_rows", &BladeSectionDivisions::lip_rows}, {"airfoil_columns", &BladeSectionDivisions::airfoil_columns},
+                               {"airfoil_rows", &BladeSectionDivisions::airfoil_rows}, {"layers", &BladeSectionDivisions::layers}})
+      n.*member = small_integer(t, key, 1, 1000, n.*member);
+    t.finish();
+  }
+  parse_dimensions(r, m.two_blade);
+}
+
 MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
   MeshSpec m;
   m.at = r.location();
-  const std::string kind = r.choice("kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "two_blade"});
+  const std::string kind = r.choice("kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "two_blade", "blade_section"});
   m.element = parse_element(r);
+  if (kind == "blade_section") {
+    parse_blade_section(r, m);
+    r.finish();
+    return m;
+  }
   if (kind == "two_blade") {
     if (m.dim() != 3) r.fail("element", "kind 'two_blade' needs a solid element (hex8, hex8i, hex20)");
     parse_two_blade(r, m);
@@ -249,11 +280,12 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
       const std::string name(k.str());
       if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
       spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
-      if (spec.mesh.kind == MeshSpec::Kind::two_blade) {
-        const auto reserved = two_blade_set_names();
+      if (spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::blade_section) {
+        const auto reserved = spec.mesh.kind == MeshSpec::Kind::two_blade ? two_blade_set_names() : blade_section_set_names();
         if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
-          throw InputError(fmt::format("{}: 'sets.{}': the two_blade mesh defines this set itself ({}); choose another name",
-                                       spec.sets.back().at.where(), name, fmt::join(reserved, ", ")));
+          throw InputError(fmt::format("{}: 'sets.{}': the {} mesh defines this set itself ({}); choose another name",
+                                       spec.sets.back().at.where(), name,
+                                       spec.mesh.kind == MeshSpec::Kind::two_blade ? "two_blade" : "blade_section", fmt::join(reserved, ", ")));
       }
     }
   }

@@ -124,6 +124,12 @@ Model build_model(const ModelSpec& spec) {
       break;
     }
     case MeshSpec::Kind::two_blade: model.mesh = build_two_blade(spec.mesh, model.node_sets); break;
+    case MeshSpec::Kind::blade_section: {
+      BladeSection b = blade_section(spec.mesh.two_blade, spec.mesh.blade_divisions, spec.mesh.element);
+      model.mesh = std::move(b.mesh);
+      model.node_sets = std::move(b.sets);
+      break;
+    }
     case MeshSpec::Kind::none: return model;  // the analysis brings its own matrices
     case MeshSpec::Kind::gmsh: {
       require_file(spec.mesh.gmsh_file, spec.mesh.at);

@@ -28,6 +28,7 @@ void files(const StaticSpec&, const StaticSolution&, const fs::path&, RunRecord&
 void files(const ModalSpec&, const ModalResult&, const fs::path&, RunRecord&) {}
 void files(const TimeSpec&, const TimeOutcome&, const fs::path&, RunRecord&) {}
 void files(const ContactLoopSpec&, const ContactLoopOutcome&, const fs::path&, RunRecord&) {}
+void files(const RotatingSpec&, const RotatingOutcome&, const fs::path&, RunRecord&) {}
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
 #include "report/plots.hpp"
+#include "report/rotating_plots.hpp"
 #include "report/time_plots.hpp"
 
 namespace bb {
@@ -67,6 +68,13 @@ void plots(const HbmSpec&, const HbmOutcome& h, const PlotTarget& t) {
   for (const char* kind : {"IP", "OOP", "peak"})
     if ((std::string(kind) == "peak") != h.prepared.ip_oop.has_value())
       t.run.plots.push_back(plot_contact_states(h, kind, t.out, fmt::format("contact_states_{}", kind)));
+}
+
+void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget& t) {
+  for (size_t s = 0; s < o.history_sets.size(); ++s)
+    for (int d = 0; d < o.dim; ++d)
+      t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, fmt::format("history_{}_u{}", o.history_sets[s], "xyz"[d])));
+  t.run.plots.push_back(plot_campbell(o, spec.engine_orders, t.out, "campbell"));
 }
 
 }  // namespace

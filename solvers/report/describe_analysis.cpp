@@ -172,6 +172,33 @@ void describe(const ModalSpec& spec, const ModalResult& modal, RunRecord& run) {
   }
 }
 
+void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run) {
+  run.facts.emplace_back("analysis", fmt::format("rotating body, floating frame of reference: {} for {} s; axis through ({}, {}, {}) m along "
+                                                 "({}, {}, {}); gravity ({}, {}, {}) m/s^2; geometric stiffening {}, Coriolis {}",
+                                                 o.profile, g(spec.end_time), g(spec.axis_point.x()), g(spec.axis_point.y()),
+                                                 g(spec.axis_point.z()), g(spec.axis_direction.x()), g(spec.axis_direction.y()),
+                                                 g(spec.axis_direction.z()), g(spec.gravity.x()), g(spec.gravity.y()), g(spec.gravity.z()),
+                                                 spec.stiffening ? "on" : "off", spec.coriolis ? "on" : "off"));
+  run.facts.emplace_back("elastic coordinates", spec.modal_basis ? fmt::format("{} of {} free DOFs: {} fixed-interface modes at rest + "
+                                                                               "static shapes (centrifugal, Euler, gravity)",
+                                                                               o.basis_size, o.free_dofs, spec.basis_modes)
+                                                                 : fmt::format("every free DOF ({})", o.free_dofs));
+  run.facts.emplace_back("time integration", fmt::format("generalized-alpha, rho_inf = {}, dt = {:.4g} s ({}), {} steps, {} factorizations",
+                                                         g(spec.rho_infinity), o.time_step,
+                                                         spec.time_step > 0 ? "as given" : "40 steps per period of the lowest rotating mode",
+                                                         o.history.steps, o.history.factorizations));
+  run.facts.emplace_back("setup / integration / Campbell [s]", fmt::format("{:.3f} / {:.3f} / {:.3f} ({:.2f} us per step)", o.setup_seconds,
+                                                                           o.run_seconds, o.campbell_seconds,
+                                                                           1e6 * o.run_seconds / std::max(1, o.history.steps)));
+  std::string modes;
+  for (Eigen::Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m)
+    modes += fmt::format("{}{:.2f}", m ? ", " : "", o.modes_at_speed.frequencies_hz[m]);
+  run.facts.emplace_back(fmt::format("rotating modes at {} rad/s [Hz]", g(o.modes_at_speed.speed)), modes);
+  if (!o.modes_at_speed.stable)
+    run.warnings.push_back(fmt::format("the linearized model is unstable at {} rad/s (growth rate {:.3g} 1/s): the centrifugal softening "
+                                       "exceeds the stiffness", g(o.modes_at_speed.speed), o.modes_at_speed.max_growth_rate));
+}
+
 }  // namespace
 
 void describe_model(const ModelSpec& spec, bool driven_contact, const Model& model, RunRecord& run) {
@@ -194,6 +221,14 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
       run.facts.emplace_back("model", driven_contact ? "none: one contact driven by an imposed relative motion (test rig)"
                                           : "no mesh: reduced or lumped models given by their matrices");
       return;
+    case MeshSpec::Kind::blade_section: {
+      const BladeSectionDivisions& n = spec.mesh.blade_divisions;
+      source = fmt::format("chapter-2 blade (the two-blade article's blade in its plane{}): root {} x {}, neck {} rows, lip {} rows, airfoil "
+                           "{} x {}{}", spec.mesh.element == ElementType::hex8 ? ", extruded, damper-face corners left out" : "",
+                           2 * n.root_side_columns + n.airfoil_columns + 2, n.root_rows, n.neck_rows, n.lip_rows, n.airfoil_columns,
+                           n.airfoil_rows, spec.mesh.element == ElementType::hex8 ? fmt::format(", {} layers through t", n.layers) : "");
+      break;
+    }
     case MeshSpec::Kind::two_blade: {
       const TwoBladeDimensions& d = spec.mesh.two_blade;
       source = fmt::format("two-blade article (2 blades, 2 wedges, fixture), refinement {}, {} divisions through t, "

@@ -1,0 +1,298 @@
+#include "analysis/rotating_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <numbers>
+
+#include "common/errors.hpp"
+#include "ffrf/elastic_basis.hpp"
+#include "ffrf/rotating_body.hpp"
+#include "ffrf/rotation_profile.hpp"
+#include "linalg/spd_factor.hpp"
+
+namespace bb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::Index;
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+const char* axis_name(int d) { return d == 0 ? "x" : d == 1 ? "y" : "z"; }
+
+ffrf::RotationProfile profile_of(const RotatingSpec& s) {
+  switch (s.profile) {
+    case RotatingSpec::Profile::constant: return ffrf::RotationProfile::constant_speed(s.speed);
+    case RotatingSpec::Profile::spin_up: return ffrf::RotationProfile::spin_up(s.speed, s.spin_up_time);
+    case RotatingSpec::Profile::torque: {
+      const double tau = s.torque;
+      return ffrf::RotationProfile::free([tau](double) { return tau; }, s.initial_speed, 0.0,
+                                         fmt::format("constant torque {:g} N m", tau));
+    }
+  }
+  throw std::logic_error("unknown rotation profile");
+}
+
+// The speed at which the steady state is taken: the constant speed, or the spin-up's final one.
+double steady_speed(const RotatingSpec& s) { return s.profile == RotatingSpec::Profile::torque ? s.initial_speed : s.speed; }
+
+// Global DOFs of every node of every history set, set after set, node after node, x y (z).
+std::vector<int> history_dofs(const Model& model, const RotatingSpec& spec) {
+  std::vector<int> dofs;
+  for (const std::string& name : spec.histories) {
+    const auto it = model.node_sets.find(name);
+    if (it == model.node_sets.end())
+      throw InputError(fmt::format("{}: 'analysis.histories': no node set '{}'", spec.at.where(), name));
+    for (int n : it->second)
+      for (int d = 0; d < model.mesh.dim; ++d) dofs.push_back(n * model.mesh.dim + d);
+  }
+  return dofs;
+}
+
+// Mean over the set's nodes of each direction: samples x (sets * dim).
+Eigen::MatrixXd set_means(const Model& model, const RotatingSpec& spec, const Eigen::MatrixXd& per_dof) {
+  const int dim = model.mesh.dim;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(per_dof.rows(), static_cast<Index>(spec.histories.size() * dim));
+  Index column = 0;
+  for (size_t s = 0; s < spec.histories.size(); ++s) {
+    const auto& nodes = model.node_sets.at(spec.histories[s]);
+    for (size_t n = 0; n < nodes.size(); ++n)
+      for (int d = 0; d < dim; ++d) out.col(static_cast<Index>(s) * dim + d) += per_dof.col(column++) / static_cast<double>(nodes.size());
+  }
+  return out;
+}
+
+// The same means of a free-DOF static displacement.
+Eigen::VectorXd static_means(const Model& model, const RotatingSpec& spec, const ffrf::RotatingBody& body,
+                             const Eigen::VectorXd& free_values) {
+  const Eigen::VectorXd all = ffrf::expand_to_global(body, free_values);
+  const std::vector<int> dofs = history_dofs(model, spec);
+  Eigen::MatrixXd row(1, static_cast<Index>(dofs.size()));
+  for (size_t i = 0; i < dofs.size(); ++i) row(0, static_cast<Index>(i)) = all[dofs[i]];
+  return set_means(model, spec, row).row(0).transpose();
+}
+
+void add_history_table(RotatingOutcome& o, const RotatingSpec& spec, const Eigen::MatrixXd& means) {
+  std::vector<std::string> cols = {"sample", "time_s", "theta_rad", "omega_rad_s"};
+  for (const std::string& s : spec.histories)
+    for (int d = 0; d < o.dim; ++d) cols.push_back(fmt::format("{}.u{}_m", s, axis_name(d)));
+  const ffrf::FfrfHistory& h = o.history;
+  std::vector<std::vector<double>> rows;
+  double next = 0.0;
+  for (size_t i = 0; i < h.time.size(); ++i) {
+    if (h.time[i] + 1e-12 < next && i + 1 < h.time.size()) continue;
+    next = h.time[i] + spec.history_interval;
+    std::vector<double> row = {static_cast<double>(rows.size() + 1), h.time[i], h.angle[i], h.speed[i]};
+    for (Index c = 0; c < means.cols(); ++c) row.push_back(means(static_cast<Index>(i), c));
+    rows.push_back(std::move(row));
+  }
+  o.tables.emplace("histories", table_from_rows("histories", cols, rows));
+}
+
+// Samples of the steady phase: the whole run at constant speed, after the ramp of a spin-up.
+Index steady_start(const ffrf::FfrfHistory& h, const RotatingSpec& spec) {
+  if (spec.profile != RotatingSpec::Profile::spin_up) return 0;
+  const auto it = std::lower_bound(h.time.begin(), h.time.end(), spec.spin_up_time);
+  return static_cast<Index>(it - h.time.begin());
+}
+
+// deflection: per set, the mean over the steady phase, half its peak-to-peak range, the static
+// solution of the same model (spin softening, and stiffening when on) and the linear one K u = Omega^2 f_c.
+void add_deflection_table(RotatingOutcome& o, const Model& model, const RotatingSpec& spec, const ffrf::RotatingBody& body,
+                          const Eigen::MatrixXd& means) {
+  const double speed = steady_speed(spec);
+  const ffrf::StaticDeflection full = ffrf::centrifugal_deflection(body, speed, {.stiffening = spec.stiffening});
+  SpdFactorization k;
+  if (!k.factorize(body.stiffness).ok) throw SolverError("rotating analysis: K could not be factorized for the linear deflection");
+  const Eigen::VectorXd linear = k.solve(Eigen::VectorXd(speed * speed * body.centrifugal_load));
+  const Eigen::VectorXd s_full = static_means(model, spec, body, full.displacement);
+  const Eigen::VectorXd s_linear = static_means(model, spec, body, linear);
+  const Index first = std::min<Index>(steady_start(o.history, spec), std::max<Index>(means.rows() - 1, 0));
+  const Eigen::MatrixXd steady = means.bottomRows(means.rows() - first);
+  std::vector<std::string> cols = {"set_number"};
+  for (const char* q : {"mean", "static", "linear", "amplitude"})
+    for (int d = 0; d < o.dim; ++d) cols.push_back(fmt::format("{}_u{}_m", q, axis_name(d)));
+  std::vector<std::vector<double>> rows;
+  for (size_t s = 0; s < spec.histories.size(); ++s) {
+    std::vector<double> row = {static_cast<double>(s + 1)};
+    const Index c0 = static_cast<Index>(s) * o.dim;
+    for (int d = 0; d < o.dim; ++d) row.push_back(steady.rows() > 0 ? steady.col(c0 + d).mean() : kNan);
+    for (int d = 0; d < o.dim; ++d) row.push_back(s_full[c0 + d]);
+    for (int d = 0; d < o.dim; ++d) row.push_back(s_linear[c0 + d]);
+    for (int d = 0; d < o.dim; ++d)
+      row.push_back(steady.rows() > 0 ? 0.5 * (steady.col(c0 + d).maxCoeff() - steady.col(c0 + d).minCoeff()) : kNan);
+    rows.push_back(std::move(row));
+  }
+  ResultTable t = table_from_rows("deflection", cols, rows);
+  t.add_text_column("set", spec.histories);
+  o.tables.emplace("deflection", std::move(t));
+}
+
+// oscillation: for each mode at the run's speed, the spectral peak of the history component that
+// carries it most within +-3 % of the mode's frequency (the free vibration a sudden start leaves).
+void add_oscillation_table(RotatingOutcome& o, const RotatingSpec& spec, const Eigen::MatrixXd& means) {
+  const Index first = steady_start(o.history, spec);
+  const Index n = means.rows() - first;
+  if (n < 64 || o.history.time.size() < 2) return;
+  const double dt = (o.history.time.back() - o.history.time[static_cast<size_t>(first)]) / static_cast<double>(n - 1);
+  std::vector<std::vector<double>> rows;
+  std::vector<std::string> where, component;
+  for (Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m) {
+    const double f = o.modes_at_speed.frequencies_hz[m];
+    if (!(f > 0.0)) continue;
+    SpectralPeak best{kNan, 0.0};
+    Index best_column = 0;
+    for (Index c = 0; c < means.cols(); ++c) {
+      const SpectralPeak p = spectral_peak(means.col(c).tail(n), dt, 0.97 * f, 1.03 * f);
+      if (std::isfinite(p.frequency_hz) && p.amplitude > best.amplitude) best = p, best_column = c;
+    }
+    rows.push_back({static_cast<double>(m + 1), f, best.frequency_hz, best.amplitude});
+    where.push_back(spec.histories[static_cast<size_t>(best_column / o.dim)]);
+    component.push_back(fmt::format("u{}", axis_name(static_cast<int>(best_column % o.dim))));
+  }
+  ResultTable t = table_from_rows("oscillation", {"mode", "modal_hz", "measured_hz", "amplitude_m"}, rows);
+  t.add_text_column("set", where);
+  t.add_text_column("component", component);
+  o.tables.emplace("oscillation", std::move(t));
+}
+
+void add_energy_table(RotatingOutcome& o) {
+  const ffrf::FfrfHistory& h = o.history;
+  if (h.time.empty()) return;
+  const double scale = std::max(*std::max_element(h.kinetic_energy.begin(), h.kinetic_energy.end()), 1e-300);
+  const double error = h.energy_balance_error();
+  o.tables.emplace("energy", table_from_rows("energy", {"run", "max_kinetic_j", "final_strain_j", "driving_work_j", "gravity_work_j",
+                                                        "balance_error_j", "relative_error", "final_angular_momentum"},
+                                             {{1.0, scale, h.strain_energy.back(), h.driving_work.back(), h.gravity_work.back(),
+                                               error, error / scale, h.angular_momentum.back()}}));
+}
+
+void add_campbell_tables(RotatingOutcome& o, const ffrf::ProjectedBody& projected, const RotatingSpec& spec,
+                         const ffrf::RotatingModesOptions& options) {
+  std::vector<double> speeds = spec.campbell_speeds;
+  if (speeds.empty())
+    for (int i = 0; i <= 10; ++i) speeds.push_back(steady_speed(spec) * i / 10.0);
+  o.campbell = ffrf::campbell_diagram(projected, speeds, options);
+  o.crossings = ffrf::engine_order_crossings(projected, o.campbell, spec.engine_orders, options);
+  std::vector<std::vector<double>> rows;
+  for (Index i = 0; i < o.campbell.frequencies_hz.rows(); ++i)
+    for (Index m = 0; m < o.campbell.frequencies_hz.cols(); ++m)
+      rows.push_back({static_cast<double>(rows.size() + 1), o.campbell.speeds[static_cast<size_t>(i)], static_cast<double>(m + 1),
+                      o.campbell.frequencies_hz(i, m)});
+  o.tables.emplace("campbell", table_from_rows("campbell", {"point", "omega_rad_s", "mode", "frequency_hz"}, rows));
+  std::vector<std::vector<double>> crossing_rows;
+  for (const ffrf::EngineOrderCrossing& c : o.crossings)
+    crossing_rows.push_back({static_cast<double>(crossing_rows.size() + 1), static_cast<double>(c.engine_order), static_cast<double>(c.mode),
+                             c.speed, c.speed * 60.0 / kTwoPi, c.frequency_hz});
+  o.tables.emplace("crossings", table_from_rows("crossings", {"crossing", "engine_order", "mode", "speed_rad_s", "speed_rpm", "frequency_hz"},
+                                                crossing_rows));
+  const ffrf::RotatingModes rest = ffrf::rotating_modes(projected, 0.0, options);
+  std::vector<std::vector<double>> mode_rows;
+  for (Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m)
+    mode_rows.push_back({static_cast<double>(m + 1), m < rest.frequencies_hz.size() ? rest.frequencies_hz[m] : kNan,
+                         o.modes_at_speed.frequencies_hz[m], o.modes_at_speed.growth_rates[m]});
+  o.tables.emplace("rotating_modes", table_from_rows("rotating_modes", {"mode", "rest_hz", "frequency_hz", "growth_rate_1_s"}, mode_rows));
+}
+
+}  // namespace
+
+SpectralPeak spectral_peak(const Eigen::VectorXd& signal, double dt, double f_lo, double f_hi) {
+  const Index n = signal.size();
+  const Eigen::VectorXd x = signal.array() - signal.mean();
+  Eigen::VectorXd window(n);
+  for (Index i = 0; i < n; ++i) window[i] = 0.5 - 0.5 * std::cos(kTwoPi * static_cast<double>(i) / static_cast<double>(n - 1));
+  const Eigen::VectorXd xw = x.cwiseProduct(window);
+  // Frequency grid 4x finer than the record's resolution 1 / (n dt).
+  const double df = 0.25 / (static_cast<double>(n) * dt);
+  const int points = std::max(3, static_cast<int>(std::ceil((f_hi - f_lo) / df)) + 1);
+  Eigen::VectorXd power(points);
+  for (int k = 0; k < points; ++k) {
+    const double w = kTwoPi * (f_lo + k * df) * dt;
+    // Goertzel's recurrence: |sum x_i e^{-i w i}|^2 in one pass.
+    double s1 = 0.0, s2 = 0.0;
+    const double c = 2 * std::cos(w);
+    for (Index i = 0; i < n; ++i) {
+      const double s0 = xw[i] + c * s1 - s2;
+      s2 = s1;
+      s1 = s0;
+    }
+    power[k] = s1 * s1 + s2 * s2 - c * s1 * s2;
+  }
+  Index k = 0;
+  power.maxCoeff(&k);
+  if (k == 0 || k + 1 == points) return {kNan, 0.0};
+  const double y0 = std::sqrt(power[k - 1]), y1 = std::sqrt(power[k]), y2 = std::sqrt(power[k + 1]);
+  const double shift = 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2);
+  // A sinusoid of amplitude A gives |sum| = A n / 4 under the Hann window.
+  return {f_lo + (static_cast<double>(k) + shift) * df, 4.0 * (y1 - 0.25 * (y0 - y2) * shift) / static_cast<double>(n)};
+}
+
+RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
+  RotatingOutcome o;
+  o.dim = model.mesh.dim;
+  o.history_sets = spec.histories;
+  const auto t0 = Clock::now();
+  const std::vector<int> dofs = history_dofs(model, spec);
+  const ffrf::RotatingBody body = ffrf::build_rotating_body(model, {spec.axis_direction, spec.axis_point});
+  const ffrf::ElasticBasis basis = [&] {
+    try {
+      return ffrf::make_elastic_basis(body, spec.modal_basis ? ffrf::ElasticBasisOptions{ffrf::BasisKind::modal, spec.basis_modes, {}, true}
+                                                             : ffrf::ElasticBasisOptions{});
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: 'analysis.basis_modes': {}", spec.at.where(), e.what()));
+    }
+  }();
+  const ffrf::ProjectedBody projected = ffrf::project(body, basis);
+  // The rotating modes always come from a modal basis (dense eigenproblem), large enough that the
+  // reported ones are converged.
+  const int modal_size = std::min(std::max(spec.basis_modes, 2 * spec.campbell_modes + 4), body.n_free() - 1);
+  const ffrf::ElasticBasis modal = ffrf::make_elastic_basis(body, {ffrf::BasisKind::modal, modal_size, {}, true});
+  const ffrf::ProjectedBody modal_body = ffrf::project(body, modal);
+  const ffrf::RotatingModesOptions mode_options{.n_modes = spec.campbell_modes, .stiffening = spec.stiffening, .coriolis = spec.coriolis};
+  o.free_dofs = body.n_free();
+  o.basis_size = basis.size();
+  o.modes_at_speed = ffrf::rotating_modes(modal_body, steady_speed(spec), mode_options);
+  o.time_step = spec.time_step > 0 ? spec.time_step : ffrf::time_step_resolving(modal_body, steady_speed(spec), 1, 40, mode_options);
+  o.setup_seconds = seconds_since(t0);
+
+  const ffrf::RotationProfile profile = profile_of(spec);
+  o.profile = profile.describe();
+  ffrf::FfrfOptions options;
+  options.time_step = o.time_step;
+  options.end_time = spec.end_time;
+  options.rho_infinity = spec.rho_infinity;
+  options.stiffening = spec.stiffening;
+  options.coriolis = spec.coriolis;
+  options.rotor_inertia = spec.rotor_inertia;
+  options.gravity = spec.gravity;
+  options.output_dofs = dofs;
+  const auto t1 = Clock::now();
+  o.history = ffrf::integrate(projected, profile, options);
+  o.run_seconds = seconds_since(t1);
+
+  const Eigen::MatrixXd means = set_means(model, spec, o.history.displacement);
+  add_history_table(o, spec, means);
+  add_deflection_table(o, model, spec, body, means);
+  add_energy_table(o);
+  const auto t2 = Clock::now();
+  add_campbell_tables(o, modal_body, spec, mode_options);
+  o.campbell_seconds = seconds_since(t2);
+  add_oscillation_table(o, spec, means);
+  const double steps = std::max(1.0, static_cast<double>(o.history.steps));
+  o.tables.emplace("rotating_cost",
+                   table_from_rows("rotating_cost", {"run", "free_dofs", "basis_size", "time_step_s", "steps", "factorizations", "setup_s",
+                                                     "integration_s", "campbell_s", "us_per_step"},
+                                   {{1.0, static_cast<double>(o.free_dofs), static_cast<double>(o.basis_size), o.time_step,
+                                     static_cast<double>(o.history.steps), static_cast<double>(o.history.factorizations), o.setup_seconds,
+                                     o.run_seconds, o.campbell_seconds, 1e6 * o.run_seconds / steps}}));
+  return o;
+}
+
+}  // namespace bb

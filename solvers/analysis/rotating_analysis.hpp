@@ -1,0 +1,43 @@
+// The rotating analysis (analysis/rotating_spec.hpp) on a model: the floating-frame time run of
+// ffrf/, the steady centrifugal deflection, the modes at the run's speed and the Campbell diagram,
+// as result tables. Units: SI, frequencies in Hz.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "analysis/rotating_spec.hpp"
+#include "ffrf/ffrf_integrator.hpp"
+#include "ffrf/rotating_modes.hpp"
+#include "model/model.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+struct RotatingOutcome {
+  ResultTables tables;
+  ffrf::FfrfHistory history;
+  std::vector<std::string> history_sets;  // in spec.histories order
+  int dim = 2;
+  ffrf::CampbellDiagram campbell;
+  std::vector<ffrf::EngineOrderCrossing> crossings;
+  ffrf::RotatingModes modes_at_speed;  // at the run's (final) speed
+  int free_dofs = 0, basis_size = 0;
+  double time_step = 0.0;
+  double setup_seconds = 0.0, run_seconds = 0.0, campbell_seconds = 0.0;
+  std::string profile;                 // description of the rotor's motion
+};
+
+// Throws InputError for a history set the model lacks or a basis the body cannot hold, SolverError
+// when the run diverges (energy blow-up, spin-softening divergence: the message names the time).
+RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec);
+
+// The dominant frequency of `signal` (sampled every dt) within [f_lo, f_hi]: the local maximum of
+// its Hann-windowed spectrum, refined by a parabola; NaN when the maximum sits on the window's edge
+// (no peak in the band). The amplitude is the sinusoid's [same unit as the signal].
+struct SpectralPeak {
+  double frequency_hz = 0.0;
+  double amplitude = 0.0;
+};
+SpectralPeak spectral_peak(const Eigen::VectorXd& signal, double dt, double f_lo, double f_hi);
+
+}  // namespace bb

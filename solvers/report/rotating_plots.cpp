@@ -1,0 +1,63 @@
+#include "report/rotating_plots.hpp"
+
+#include <fmt/format.h>
+
+
+#include "report/gnuplot.hpp"
+
+namespace bb {
+
+namespace fs = std::filesystem;
+
+Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, const fs::path& out_dir, const std::string& stem) {
+  const char axis = "xyz"[direction];
+  const std::string name = o.history_sets.at(set);
+  const ResultTable& h = o.tables.at("histories");
+  const auto column = h.column_index(fmt::format("{}.u{}_m", name, axis));
+  const ResultTable& d = o.tables.at("deflection");
+  const auto static_column = d.column_index(fmt::format("static_u{}_m", axis));
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    out << "# time_s u_m\n";
+    for (Eigen::Index i = 0; i < h.values.rows(); ++i) out << h.values(i, 1) << ' ' << h.values(i, *column) << '\n';
+  }
+  const double steady = d.values(static_cast<Eigen::Index>(set), *static_column);
+  const std::string title = fmt::format("Node set '{}': {} displacement in the rotating frame ({})", name, axis, o.profile);
+  const std::string script = fmt::format(
+      "set title '{}'\nset xlabel 'time [s]'\nset ylabel 'u_{} [m]'\nset grid\nset key bottom right\n"
+      "plot '{}.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_{}', {:.12g} with lines dt 2 lc rgb '#bf1f1f' title 'steady "
+      "centrifugal deflection'\n",
+      gnuplot_quote(title), axis, stem, axis, steady);
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_campbell(const RotatingOutcome& o, const std::vector<int>& engine_orders, const fs::path& out_dir, const std::string& stem) {
+  const ffrf::CampbellDiagram& c = o.campbell;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    for (Eigen::Index m = 0; m < c.frequencies_hz.cols(); ++m) {
+      out << "# mode " << m + 1 << ": omega_rad_s frequency_hz\n";
+      for (size_t i = 0; i < c.speeds.size(); ++i) out << c.speeds[i] << ' ' << c.frequencies_hz(static_cast<Eigen::Index>(i), m) << '\n';
+      out << "\n\n";
+    }
+    out << "# engine-order crossings: speed_rad_s frequency_hz engine_order\n";
+    for (const ffrf::EngineOrderCrossing& x : o.crossings) out << x.speed << ' ' << x.frequency_hz << ' ' << x.engine_order << '\n';
+    if (o.crossings.empty()) out << "nan nan nan\n";
+  }
+  const double top = c.speeds.empty() ? 1.0 : c.speeds.back();
+  const std::string title = "Campbell diagram: rotating modes (lines) and engine-order lines (dashed)";
+  std::string script = fmt::format("set title '{}'\nset xlabel 'speed [rad/s]'\nset ylabel 'frequency [Hz]'\nset grid\nset key outside right\n"
+                                   "set xrange [0:{:.12g}]\nset yrange [0:*]\nset datafile missing 'nan'\nplot ",
+                                   gnuplot_quote(title), top);
+  for (Eigen::Index m = 0; m < c.frequencies_hz.cols(); ++m)
+    script += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints pt 7 ps 0.4 title 'mode {}'", m ? ", \\\n     " : "", stem, m, m + 1);
+  script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points pt 6 ps 1.2 lc rgb 'black' title 'crossings'", stem,
+                        c.frequencies_hz.cols());
+  // Engine-order lines f = EO Omega / 2 pi.
+  for (int eo : engine_orders)
+    script += fmt::format(", \\\n     {} * x / (2 * pi) with lines dt 2 lc rgb '#7f7f7f' notitle", eo);
+  script += '\n';
+  return draw(out_dir, stem, title, script);
+}
+
+}  // namespace bb

@@ -11,7 +11,7 @@
 
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
-#include "time/newmark.hpp"
+#include "timeint/newmark.hpp"
 
 namespace bb {
 namespace {

@@ -47,7 +47,8 @@ TEST(DampedNewton, BacktrackingTamesAFullStepThatOvershoots) {
   ASSERT_TRUE(damped.converged) << damped.failure;
   EXPECT_NEAR(damped.x[0], 0.0, 1e-12);
   // Without halvings the first full step is rejected and the iteration stops, at the start.
-  const DampedNewtonResult full = damped_newton(arctangent, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12, .max_backtracks = 0});
+  const DampedNewtonResult full =
+      damped_newton(arctangent, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12, .max_backtracks = 0});
   EXPECT_FALSE(full.converged);
   EXPECT_EQ(full.status, NewtonStatus::line_search_failed);
   EXPECT_EQ(full.iterations, 0);
@@ -100,7 +101,8 @@ TEST(DampedNewton, SingularAndInvalidSystemsAreReportedNotThrownAndNeverNaN) {
   };
   for (const NewtonStepSolve how : {NewtonStepSolve::full_pivot_lu, NewtonStepSolve::partial_pivot_lu,
                                     NewtonStepSolve::minimum_norm}) {
-    const DampedNewtonResult r = damped_newton(inconsistent, VectorXd::Zero(2), {.tolerance = 1e-12, .step_solve = how});
+    const DampedNewtonResult r =
+        damped_newton(inconsistent, VectorXd::Zero(2), {.tolerance = 1e-12, .step_solve = how});
     EXPECT_FALSE(r.converged);
     EXPECT_NE(r.status, NewtonStatus::converged);
     if (how == NewtonStepSolve::full_pivot_lu) {
@@ -125,7 +127,8 @@ TEST(DampedNewton, SingularAndInvalidSystemsAreReportedNotThrownAndNeverNaN) {
 }
 
 TEST(DampedNewton, IterationCapIsReportedWithTheResidual) {
-  const DampedNewtonResult r = damped_newton(arctangent, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12, .max_iterations = 2});
+  const DampedNewtonResult r =
+      damped_newton(arctangent, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12, .max_iterations = 2});
   EXPECT_FALSE(r.converged);
   EXPECT_EQ(r.status, NewtonStatus::iteration_limit);
   EXPECT_EQ(r.iterations, 2);

@@ -1,4 +1,4 @@
-// Time integration with friction contacts (timeint/contact_step, timeint/newmark, timeint/static_state, timeint/steady_state):
+// Time integration with friction contacts (timeint/contact_step, newmark, static_state, steady_state):
 // the transitions of thesis Table XII from references/thesis/table12.csv, the friction oscillator's
 // steady state against harmonic balance, the energy balance of a cycle, the shapes of stuck,
 // slipping and separated hysteresis loops, a stiff contact at a step set by accuracy, the static

@@ -9,8 +9,9 @@
 #include <numbers>
 
 #include "../tests/extremes/hbm_models.hpp"
-#include "time/newmark.hpp"
-#include "time/steady_state.hpp"
+#include "timeint/newmark.hpp"
+#include "timeint/static_state.hpp"
+#include "timeint/steady_state.hpp"
 
 namespace {
 

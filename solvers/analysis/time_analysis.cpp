@@ -13,7 +13,7 @@
 
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
-#include "time/newmark.hpp"
+#include "timeint/newmark.hpp"
 
 namespace bb {
 namespace {
@@ -33,113 +33,133 @@ double loop_work(const std::vector<timeint::ContactSample>& s) {
   return w;
 }
 
-}  // namespace
-
-TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress) {
-  const auto t_start = Clock::now();
-  TimeOutcome o;
-  o.prepared = prepare_hbm(model, spec.system);
-  const PreparedHbm& p = o.prepared;
-  // Analysed DOFs: the responses, then the IP/OOP pair where not among them.
-  std::vector<Index> dofs = p.responses;
-  auto slot = [&](Index dof) {
-    const auto it = std::find(dofs.begin(), dofs.end(), dof);
-    if (it != dofs.end()) return static_cast<Index>(it - dofs.begin());
-    dofs.push_back(dof);
-    return static_cast<Index>(dofs.size() - 1);
-  };
+// The DOFs the steady states track: the responses, then the IP/OOP pair where not among them
+// (`pair`: their positions in `dofs`).
+struct TrackedDofs {
+  std::vector<Index> dofs;
   std::optional<std::pair<Index, Index>> pair;
-  if (p.ip_oop) pair.emplace(slot(p.ip_oop->first), slot(p.ip_oop->second));
-  timeint::SteadyStateOptions options;
-  options.dofs = dofs;
-  options.steps_per_period = spec.steps_per_period;
-  options.harmonics = spec.system.harmonics;
-  options.tolerance = spec.steady_tolerance;
-  options.max_cycles = spec.max_cycles;
-  options.newmark.alpha = spec.alpha;
-  const std::vector<double> frequencies = fixed_grid(spec.system.sweep.f_min, spec.system.sweep.f_max, spec.system.sweep.step_hz);
+};
+
+TrackedDofs tracked_dofs(const PreparedHbm& p) {
+  TrackedDofs t{p.responses, std::nullopt};
+  auto slot = [&](Index dof) {
+    const auto it = std::find(t.dofs.begin(), t.dofs.end(), dof);
+    if (it != t.dofs.end()) return static_cast<Index>(it - t.dofs.begin());
+    t.dofs.push_back(dof);
+    return static_cast<Index>(t.dofs.size() - 1);
+  };
+  if (p.ip_oop) t.pair.emplace(slot(p.ip_oop->first), slot(p.ip_oop->second));
+  return t;
+}
+
+// The stepped sine of one force level: the steady state at each grid frequency, each starting from
+// the previous one's final state.
+void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const hbm::HbmModel& m,
+                  const timeint::SteadyStateOptions& options, const TrackedDofs& tracked, const HbmProgress& progress) {
+  const std::vector<double>& frequencies = level.frequency_hz;
   const auto nf = static_cast<Index>(frequencies.size());
   const auto nr = static_cast<Index>(p.responses.size());
-
-  for (double force : spec.system.force_levels) {
-    const auto t0 = Clock::now();
-    TimeLevel level;
-    level.force = force;
-    level.frequency_hz = frequencies;
-    level.amplitude = Eigen::MatrixXd::Constant(nf, nr, kNan);
-    if (pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
-    hbm::HbmModel m = p.model;
-    m.harmonic_load *= force;
-    std::optional<timeint::DynamicState> start;
-    for (Index i = 0; i < nf; ++i) {
-      const double omega = kTwoPi * frequencies[static_cast<size_t>(i)];
-      const timeint::SteadyState s = timeint::steady_state(m, omega, options, start);
-      level.cycles.push_back(s.cycles);
-      level.steady.push_back(s.converged);
-      level.steps += static_cast<long>(s.cycles) * spec.steps_per_period;
-      level.newton_iterations += s.total_iterations;
-      level.max_step_iterations = std::max(level.max_step_iterations, s.max_iterations);
-      if (s.coefficients.rows() == static_cast<Index>(dofs.size()) && s.coefficients.allFinite()) {
-        Eigen::VectorXcd z(static_cast<Index>(dofs.size()));
-        for (Index j = 0; j < z.size(); ++j) z[j] = std::complex<double>(s.coefficients(j, 1), -s.coefficients(j, 2));
-        for (Index r = 0; r < nr; ++r) level.amplitude(i, r) = std::abs(z[r]);
-        if (pair) {
-          level.components(i, 0) = std::abs(z[pair->first] + z[pair->second]) / 2;
-          level.components(i, 1) = std::abs(z[pair->second] - z[pair->first]) / 2;
-        }
-        start = s.final_state;  // the next frequency starts from here (also when not yet steady)
+  const std::vector<Index>& dofs = tracked.dofs;
+  const auto& pair = tracked.pair;
+  const double force = level.force;
+  std::optional<timeint::DynamicState> start;
+  for (Index i = 0; i < nf; ++i) {
+    const double omega = kTwoPi * frequencies[static_cast<size_t>(i)];
+    const timeint::SteadyState s = timeint::steady_state(m, omega, options, start);
+    level.cycles.push_back(s.cycles);
+    level.steady.push_back(s.converged);
+    level.steps += static_cast<long>(s.cycles) * spec.steps_per_period;
+    level.newton_iterations += s.total_iterations;
+    level.max_step_iterations = std::max(level.max_step_iterations, s.max_iterations);
+    if (s.coefficients.rows() == static_cast<Index>(dofs.size()) && s.coefficients.allFinite()) {
+      Eigen::VectorXcd z(static_cast<Index>(dofs.size()));
+      for (Index j = 0; j < z.size(); ++j) z[j] = std::complex<double>(s.coefficients(j, 1), -s.coefficients(j, 2));
+      for (Index r = 0; r < nr; ++r) level.amplitude(i, r) = std::abs(z[r]);
+      if (pair) {
+        level.components(i, 0) = std::abs(z[pair->first] + z[pair->second]) / 2;
+        level.components(i, 1) = std::abs(z[pair->second] - z[pair->first]) / 2;
       }
-      if (progress && i % 5 == 0)
-        progress(fmt::format("Fe = {:g} N: {:.3f} Hz, {} cycles{}", force, frequencies[static_cast<size_t>(i)], s.cycles,
-                             s.converged ? "" : " (not steady)"));
+      start = s.final_state;  // the next frequency starts from here (also when not yet steady)
     }
-    {
-      // The linear model (every contact replaced by its springs kn, kt; eq 3.51) by direct solves on the grid.
-      const Eigen::MatrixXd k = stuck_stiffness(m);
-      level.linear = Eigen::MatrixXd(nf, nr);
-      if (pair) level.linear_components = Eigen::MatrixXd(nf, 2);
-      for (Index i = 0; i < nf; ++i) {
-        const double w = kTwoPi * frequencies[static_cast<size_t>(i)];
-        const Eigen::VectorXcd z = direct_response(k, m.damping, m.mass, w, m.harmonic_load);
-        for (Index r = 0; r < nr; ++r) level.linear(i, r) = std::abs(z[p.responses[static_cast<size_t>(r)]]);
-        if (pair) {
-          level.linear_components(i, 0) = std::abs(z[p.ip_oop->first] + z[p.ip_oop->second]) / 2;
-          level.linear_components(i, 1) = std::abs(z[p.ip_oop->second] - z[p.ip_oop->first]) / 2;
-        }
-      }
-    }
-    if (spec.compare_harmonics > 0) {
-      HbmSpec h = spec.system;
-      h.harmonics = spec.compare_harmonics;
-      h.time_samples = 0;
-      level.hbm = sweep_hbm_level(p, h, force, spec.compare_harmonics);
-    }
-    level.seconds = seconds_since(t0);
-    o.levels.push_back(std::move(level));
+    if (progress && i % 5 == 0)
+      progress(fmt::format("Fe = {:g} N: {:.3f} Hz, {} cycles{}", force, frequencies[static_cast<size_t>(i)], s.cycles,
+                           s.converged ? "" : " (not steady)"));
   }
+}
 
-  if (spec.history_hz) {
-    TimeHistoryRecord rec;
-    rec.frequency_hz = *spec.history_hz;
-    rec.force = spec.system.force_levels.front();
-    hbm::HbmModel m = p.model;
-    m.harmonic_load *= rec.force;
-    const double omega = kTwoPi * rec.frequency_hz;
-    rec.steady = timeint::steady_state(m, omega, options);
-    if (rec.steady.cycles > 0) {
-      timeint::NewmarkOptions n = options.newmark;
-      n.time_step = kTwoPi / (omega * spec.steps_per_period);
-      const timeint::NewmarkIntegrator integrator(m, n);
-      timeint::RecordOptions record;
-      record.dofs = p.responses;
-      rec.history = timeint::integrate(integrator, rec.steady.final_state, timeint::harmonic_excitation(m.harmonic_load, omega),
-                                       spec.history_cycles * spec.steps_per_period, record);
+// The linear model (every contact replaced by its springs kn, kt; eq 3.51) by direct solves on the grid.
+void linear_on_grid(TimeLevel& level, const PreparedHbm& p, const hbm::HbmModel& m, bool pair) {
+  const std::vector<double>& frequencies = level.frequency_hz;
+  const auto nf = static_cast<Index>(frequencies.size());
+  const auto nr = static_cast<Index>(p.responses.size());
+  const Eigen::MatrixXd k = stuck_stiffness(m);
+  level.linear = Eigen::MatrixXd(nf, nr);
+  if (pair) level.linear_components = Eigen::MatrixXd(nf, 2);
+  for (Index i = 0; i < nf; ++i) {
+    const double w = kTwoPi * frequencies[static_cast<size_t>(i)];
+    const Eigen::VectorXcd z = direct_response(k, m.damping, m.mass, w, m.harmonic_load);
+    for (Index r = 0; r < nr; ++r) level.linear(i, r) = std::abs(z[p.responses[static_cast<size_t>(r)]]);
+    if (pair) {
+      level.linear_components(i, 0) = std::abs(z[p.ip_oop->first] + z[p.ip_oop->second]) / 2;
+      level.linear_components(i, 1) = std::abs(z[p.ip_oop->second] - z[p.ip_oop->first]) / 2;
     }
-    o.record = std::move(rec);
   }
-  o.seconds = seconds_since(t_start);
+}
 
-  // ---- Tables ----
+// One force level: the stepped sine, the linear model and (when asked) the harmonic balance on the grid.
+TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint::SteadyStateOptions& options,
+                      const TrackedDofs& tracked, const std::vector<double>& frequencies, double force,
+                      const HbmProgress& progress) {
+  const auto t0 = Clock::now();
+  const auto nf = static_cast<Index>(frequencies.size());
+  const auto nr = static_cast<Index>(p.responses.size());
+  TimeLevel level;
+  level.force = force;
+  level.frequency_hz = frequencies;
+  level.amplitude = Eigen::MatrixXd::Constant(nf, nr, kNan);
+  if (tracked.pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
+  hbm::HbmModel m = p.model;
+  m.harmonic_load *= force;
+  stepped_sine(level, p, spec, m, options, tracked, progress);
+  linear_on_grid(level, p, m, tracked.pair.has_value());
+  if (spec.compare_harmonics > 0) {
+    HbmSpec h = spec.system;
+    h.harmonics = spec.compare_harmonics;
+    h.time_samples = 0;
+    level.hbm = sweep_hbm_level(p, h, force, spec.compare_harmonics);
+  }
+  level.seconds = seconds_since(t0);
+  return level;
+}
+
+// The steady state at history_hz and history_cycles periods after it, every step recorded.
+TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec, const timeint::SteadyStateOptions& options) {
+  TimeHistoryRecord rec;
+  rec.frequency_hz = *spec.history_hz;
+  rec.force = spec.system.force_levels.front();
+  hbm::HbmModel m = p.model;
+  m.harmonic_load *= rec.force;
+  const double omega = kTwoPi * rec.frequency_hz;
+  rec.steady = timeint::steady_state(m, omega, options);
+  if (rec.steady.cycles > 0) {
+    timeint::NewmarkOptions n = options.newmark;
+    n.time_step = kTwoPi / (omega * spec.steps_per_period);
+    const timeint::NewmarkIntegrator integrator(m, n);
+    timeint::RecordOptions record;
+    record.dofs = p.responses;
+    rec.history = timeint::integrate(integrator, rec.steady.final_state, timeint::harmonic_excitation(m.harmonic_load, omega),
+                                     spec.history_cycles * spec.steps_per_period, record);
+  }
+  return rec;
+}
+
+// The tables of the sweeps: frf (every grid point), peaks (time integration, linear model, and
+// harmonic balance when compared) and time_cost.
+void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<double>& frequencies,
+                      const std::optional<std::pair<Index, Index>>& pair) {
+  const PreparedHbm& p = o.prepared;
+  const auto nf = static_cast<Index>(frequencies.size());
+  const auto nr = static_cast<Index>(p.responses.size());
   const std::vector<std::string> kinds = pair ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
   std::vector<std::string> frf_cols = {"point", "fe_n", "frequency_hz"};
   for (const std::string& r : p.response_names) frf_cols.push_back(r + "_amp_m");
@@ -214,6 +234,12 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
                                                          "not_steady", "seconds", "us_per_step"},
                                            cost_rows));
 
+}
+
+// The tables of the recorded history: history, one hysteresis loop per contact, hysteresis_summary.
+void add_history_tables(TimeOutcome& o, const TimeSpec& spec) {
+  const PreparedHbm& p = o.prepared;
+  const auto nr = static_cast<Index>(p.responses.size());
   if (o.record && o.record->history.steps > 0) {
     const TimeHistoryRecord& rec = *o.record;
     const timeint::TimeHistory& h = rec.history;
@@ -271,6 +297,30 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
     t.add_text_column("name", p.contact_names);
     o.tables.emplace("hysteresis_summary", std::move(t));
   }
+}
+
+}  // namespace
+
+TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress) {
+  const auto t_start = Clock::now();
+  TimeOutcome o;
+  o.prepared = prepare_hbm(model, spec.system);
+  const PreparedHbm& p = o.prepared;
+  const TrackedDofs tracked = tracked_dofs(p);
+  timeint::SteadyStateOptions options;
+  options.dofs = tracked.dofs;
+  options.steps_per_period = spec.steps_per_period;
+  options.harmonics = spec.system.harmonics;
+  options.tolerance = spec.steady_tolerance;
+  options.max_cycles = spec.max_cycles;
+  options.newmark.alpha = spec.alpha;
+  const std::vector<double> frequencies = fixed_grid(spec.system.sweep.f_min, spec.system.sweep.f_max, spec.system.sweep.step_hz);
+  for (double force : spec.system.force_levels)
+    o.levels.push_back(sweep_level(p, spec, options, tracked, frequencies, force, progress));
+  if (spec.history_hz) o.record = record_history(p, spec, options);
+  o.seconds = seconds_since(t_start);
+  add_sweep_tables(o, spec, frequencies, tracked.pair);
+  add_history_tables(o, spec);
   return o;
 }
 

@@ -1,6 +1,6 @@
 // Time-domain forced response (thesis section 3.4): the model of a harmonic-balance analysis
 // (analysis/hbm_analysis.hpp: reduced or lumped model, contacts, rigid damper seated by CF)
-// integrated by Newmark with the implicit predictor-corrector contact (time/newmark.hpp) to the
+// integrated by Newmark with the implicit predictor-corrector contact (timeint/newmark.hpp) to the
 // steady state at each frequency of a grid (stepped sine), each frequency starting from the
 // previous one's final state; time histories and hysteresis loops at one frequency; and the
 // harmonic balance at the same frequencies, for cross-validation.
@@ -12,7 +12,7 @@
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/time_spec.hpp"
 #include "results/table.hpp"
-#include "time/steady_state.hpp"
+#include "timeint/steady_state.hpp"
 
 namespace bb {
 

@@ -82,11 +82,7 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
   const Index n = model.mass.rows(), m = contact::harmonic_size(harmonics);
   const std::vector<Index>& c = s.contact_dofs();
   const Index nc = static_cast<Index>(c.size());
-  std::vector<Index> o;
-  for (Index i = 0, next = 0; i < n; ++i) {
-    if (next < nc && c[static_cast<size_t>(next)] == i) ++next;
-    else o.push_back(i);
-  }
+  const std::vector<Index>& o = s.other_dofs();
   const Index no = static_cast<Index>(o.size()), np = static_cast<Index>(derivatives.size());
 
   const auto linear = s.condense(omega);

@@ -1,4 +1,4 @@
-// Exact parameter sensitivities of a converged harmonic-balance solution (hbm/harmonic_balance.hpp)
+// Exact parameter sensitivities of a converged harmonic-balance solution (hbm/fixed_frequency.hpp)
 // by the implicit function theorem. Units: SI (a derivative carries the unit of its quantity over
 // that of the parameter).
 //
@@ -21,7 +21,8 @@
 
 #include "contact/aft.hpp"
 #include "contact/jenkins_contact.hpp"
-#include "hbm/harmonic_balance.hpp"
+#include "hbm/condensed_balance.hpp"
+#include "hbm/fixed_frequency.hpp"
 
 namespace bb::hbm {
 

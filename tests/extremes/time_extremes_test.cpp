@@ -9,7 +9,8 @@
 #include <numbers>
 
 #include "hbm_models.hpp"
-#include "time/newmark.hpp"
+#include "timeint/newmark.hpp"
+#include "timeint/static_state.hpp"
 
 namespace bb::timeint {
 namespace {

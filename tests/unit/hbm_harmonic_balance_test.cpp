@@ -1,6 +1,6 @@
 // Multi-DOF harmonic balance with friction contacts (hbm/harmonic_balance): linear limits of a
 // frictionless and a stuck contact against direct solves, lift-off, energy balance per cycle, the
-// 1-DOF oscillator of contact/, convergence in H, frequency continuation through folds, and a
+// 1-DOF friction oscillator's own balance, convergence in H, frequency continuation through folds, and a
 // matrix of extreme parameters. Units: SI.
 #include <gtest/gtest.h>
 
@@ -13,8 +13,9 @@
 #include <vector>
 
 #include "../extremes/hbm_models.hpp"
-#include "contact/hbm_oscillator.hpp"
+#include "contact/aft.hpp"
 #include "frf/receptance.hpp"
+#include "friction_oscillator.hpp"
 #include "hbm/harmonic_balance.hpp"
 
 namespace bb::hbm {
@@ -201,25 +202,35 @@ TEST(HbmMultiDof, CycleEnergyOfExcitationEqualsViscousPlusContactDissipation) {
 }
 
 TEST(HbmMultiDof, SingleDofAgreesWithTheFrictionOscillator) {
-  const contact::FrictionOscillator o{.mass = 1.0, .damping = 20.0, .stiffness = 1.0e6, .force = 30.0,
-                                      .contact = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0}};
-  HbmModel m;
-  m.mass = MatrixXd::Constant(1, 1, o.mass);
-  m.damping = MatrixXd::Constant(1, 1, o.damping);
-  m.stiffness = MatrixXd::Constant(1, 1, o.stiffness);
-  m.contacts.push_back({o.contact, unit_row(1, 0), Eigen::RowVectorXd::Zero(1)});
-  m.harmonic_load = VectorXcd::Constant(1, o.force);
-  const HarmonicBalance system(m, {.harmonics = 5, .tolerance = 1e-12});
+  // The condensed multi-DOF balance on one DOF must be the friction oscillator's own balance,
+  // written out here: R1(x) = A(w) x + T(x) - F e_a1, A = k for the static term and
+  // [[k - m h^2 w^2, c h w], [-c h w, k - m h^2 w^2]] for harmonic h, T the AFT of the contact at
+  // v = 0. The Newton correction of R1 at the solution, -(A + dT/du)^-1 R1, bounds (to first order)
+  // the distance to that balance's exact solution.
+  const test::FrictionOscillator o{.mass = 1.0, .damping = 20.0, .stiffness = 1.0e6, .force = 30.0,
+                                   .contact = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0}};
+  const HarmonicBalance system(o.model(), {.harmonics = 5, .tolerance = 1e-12});
+  const Eigen::Index m = contact::harmonic_size(5);
   double worst = 0.0;
   for (const double omega : {900.0, 1050.0, 1150.0, 1250.0, 1400.0}) {
-    const contact::HbmSolution ref = contact::solve_friction_oscillator(o, omega, {.harmonics = 5, .tolerance = 1e-12});
     const HbmSolution s = solve_at_frequency(system, omega);
-    ASSERT_TRUE(ref.converged && s.converged);
-    const double e = (s.x - ref.x).norm() / ref.x.norm();
+    ASSERT_TRUE(s.converged) << s.failure;
+    MatrixXd a = MatrixXd::Zero(m, m);
+    a(0, 0) = o.stiffness;
+    for (int h = 1; h <= 5; ++h) {
+      const Eigen::Index i = 2 * h - 1;
+      a(i, i) = a(i + 1, i + 1) = o.stiffness - o.mass * h * h * omega * omega;
+      a(i, i + 1) = o.damping * h * omega;
+      a(i + 1, i) = -o.damping * h * omega;
+    }
+    const contact::AftResult t = contact::aft_jenkins(o.contact, s.x, VectorXd::Zero(m), system.aft_options());
+    VectorXd r = a * s.x + t.tangential;
+    r[1] -= o.force;
+    const double e = (a + t.dtangential_du).fullPivLu().solve(r).norm() / s.x.norm();
     worst = std::max(worst, e);
     EXPECT_LT(e, 1e-8) << omega;
   }
-  std::printf("  1-DOF vs solve_friction_oscillator: worst relative difference %.2e\n", worst);
+  std::printf("  1-DOF vs the friction oscillator's balance: worst relative Newton correction %.2e\n", worst);
 }
 
 // Peak over time of q1(t) from its harmonics.

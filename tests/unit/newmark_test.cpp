@@ -1,4 +1,4 @@
-// Implicit Newmark / HHT-alpha integration of linear models (time/newmark): second-order
+// Implicit Newmark / HHT-alpha integration of linear models (timeint/newmark): second-order
 // convergence against the exact forced response of a 1-DOF oscillator, the period elongation of
 // the average-acceleration rule, energy conservation (alpha = 0) and dissipation (alpha < 0), and
 // the condensation onto contact DOFs agreeing with the uncondensed solve. Units: SI.
@@ -10,7 +10,8 @@
 #include <numbers>
 #include <vector>
 
-#include "time/newmark.hpp"
+#include "timeint/newmark.hpp"
+#include "timeint/static_state.hpp"
 
 namespace bb::timeint {
 namespace {

@@ -1,9 +1,9 @@
 // Implicit direct time integration of a small dense model with point friction contacts: thesis
-// section 3.4 (eqs 3.36, 3.43, 3.49), the model description of hbm/harmonic_balance.hpp. Units: SI.
+// section 3.4 (eqs 3.36, 3.43), the friction system of hbm/friction_system.hpp. Units: SI.
 //
 //   M q'' + C q' + K q + sum_k (a_t,k^T T_k + a_n,k^T N_k) = f_static + f(t),
 //
-// T_k, N_k the Table XII slider of contact k (time/contact_step.hpp, = contact::jenkins_step).
+// T_k, N_k the Table XII slider of contact k (timeint/contact_step.hpp, = contact::jenkins_step).
 //
 // Scheme: Newmark with the HHT-alpha modification (Hilber, Hughes, Taylor 1977): alpha in
 // [-1/3, 0], beta = (1 - alpha)^2 / 4, gamma = 1/2 - alpha; the balance is written at
@@ -17,11 +17,12 @@
 //   K_eff q + (1 + alpha) g(q) = b,   K_eff = M / (beta dt^2) + (1 + alpha) (gamma / (beta dt) C + K),
 // g the generalized contact force. K_eff is factorized once (constructor, one dt). g touches only
 // the contact DOFs c (any nonzero entry of some a_t or a_n); the other DOFs o are condensed exactly,
-// S = K_eff,cc - K_eff,co K_eff,oo^-1 K_eff,oc (the time-domain counterpart of the per-harmonic
-// condensation of hbm/), and Newton's method runs on the |c| contact DOFs with the consistent
-// tangent of the slider (contact_tangent): the law is piecewise linear, so once the states are
-// right the next iterate is exact, and the step size is set by accuracy only. Each Newton step is
-// backtracked (Armijo on ||R||) so that a state switch cannot make the iteration cycle.
+// S = K_eff,cc - K_eff,co K_eff,oo^-1 K_eff,oc (the condensation of hbm/friction_system.hpp, which
+// the harmonic balance applies per harmonic), and Newton's method (linalg/damped_newton.hpp) runs
+// on the |c| contact DOFs with the consistent tangent of the slider (contact_tangent): the law is
+// piecewise linear, so once the states are right the next iterate is exact, and the step size is
+// set by accuracy only. Each Newton step is backtracked (Armijo on ||R||) so that a state switch
+// cannot make the iteration cycle.
 //
 // The slider is advanced from its converged position at the start of the step (return mapping), so
 // a step is exact for contact motion that is monotone within the step; stick-slip transitions
@@ -31,11 +32,12 @@
 #pragma once
 #include <Eigen/Dense>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "hbm/harmonic_balance.hpp"
-#include "time/contact_step.hpp"
+#include "hbm/friction_system.hpp"
+#include "timeint/contact_step.hpp"
 
 namespace bb::timeint {
 
@@ -95,7 +97,7 @@ class NewmarkIntegrator {
 
   const hbm::HbmModel& model() const { return model_; }
   const NewmarkOptions& options() const { return options_; }
-  const std::vector<Eigen::Index>& contact_dofs() const { return contact_dofs_; }
+  const std::vector<Eigen::Index>& contact_dofs() const { return system_.contact_dofs(); }
   double force_scale() const { return force_scale_; }
   double beta() const { return beta_; }
   double gamma() const { return gamma_; }
@@ -119,10 +121,9 @@ class NewmarkIntegrator {
   hbm::HbmModel model_;
   NewmarkOptions options_;
   double beta_ = 0.25, gamma_ = 0.5;
-  std::vector<Eigen::Index> contact_dofs_, other_dofs_;
-  std::vector<hbm::ContactElement> contacts_c_;  // the contacts with rows restricted to the contact DOFs
-  Eigen::PartialPivLU<Eigen::MatrixXd> mass_lu_, keff_oo_lu_;
-  Eigen::MatrixXd keff_, keff_co_, koo_inv_koc_, schur_;  // S = K_eff,cc - K_eff,co K_eff,oo^-1 K_eff,oc
+  hbm::FrictionSystem system_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> mass_lu_;
+  std::optional<hbm::Condensation<double>> keff_;  // K_eff condensed onto the contact DOFs
   double force_scale_ = 0.0;
 };
 
@@ -149,39 +150,5 @@ struct TimeHistory {
 // `steps` steps from `start`. Stops at the first step that fails, with its message.
 [[nodiscard]] TimeHistory integrate(const NewmarkIntegrator& integrator, const DynamicState& start,
                                     const Excitation& excitation, int steps, const RecordOptions& record = {});
-
-// ---- Static initial condition, eq 3.49 ----
-
-enum class StaticFriction {
-  // Friction neglected in the static state, as damper::solve_damper_static does: only the normal
-  // springs N = max(N0 + kn v, 0) act, the contacts settle with no tangential load and every slider
-  // starts at its u (closed with zero tangential force). K must hold the model tangentially.
-  free_slip,
-  // Every contact stuck at its tangential offset: T = kt (a_t q - offset), so a model held only by
-  // friction is statically determinate; sliders start at 0 (the offset).
-  stuck_at_offset,
-};
-
-struct StaticOptions {
-  StaticFriction friction = StaticFriction::free_slip;
-  int max_iterations = 50;
-  double tolerance = 1e-10;  // ||K q + g - f_static|| <= tolerance * (||f_static|| + sum (1 + mu) N0 + 1 N)
-  int max_backtracks = 30;
-};
-
-struct StaticState {
-  Eigen::VectorXd q;              // [m]; zero on failure
-  std::vector<double> sliders;    // per contact, for initial_state
-  std::vector<ContactSample> contacts;
-  int iterations = 0;
-  double residual = 0.0;
-  bool converged = false;
-  std::string failure;
-};
-
-// Newton (semismooth on the max of the normal law) with backtracking on K q + g(q) = f_static,
-// the full model (static problems are solved once). Never throws on non-convergence; throws
-// std::invalid_argument on invalid models.
-[[nodiscard]] StaticState static_initial_state(const hbm::HbmModel& model, const StaticOptions& options = {});
 
 }  // namespace bb::timeint

@@ -1,6 +1,6 @@
-// Harmonic balance of a one-DOF friction oscillator (contact/hbm_oscillator) against brute-force
-// time integration run to steady state, the linear limits of a stuck and a frictionless contact,
-// and the energy balance of the converged harmonics. Units: SI.
+// The general harmonic balance (hbm/harmonic_balance.hpp) on the one-DOF friction oscillator
+// (friction_oscillator.hpp) against brute-force time integration run to steady state, the energy
+// balance of the converged harmonics, and the damped Newton's robustness to poor starts. Units: SI.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,11 +11,16 @@
 #include <vector>
 
 #include "contact/aft.hpp"
-#include "contact/hbm_oscillator.hpp"
 #include "contact/jenkins_contact.hpp"
+#include "friction_oscillator.hpp"
+#include "hbm/harmonic_balance.hpp"
 
-namespace bb::contact {
+namespace bb::hbm {
 namespace {
+
+using contact::ContactState;
+using test::FrictionOscillator;
+using test::first_harmonic_amplitude;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -35,7 +40,7 @@ Eigen::Vector2d time_integration_first_harmonic(const FrictionOscillator& o, dou
                                                 int steps_per_period) {
   const double dt = 2.0 * kPi / (omega * steps_per_period);
   const auto acceleration = [&](double t, double x, double v, double slider) {
-    const double contact = jenkins_step(o.contact, slider, x, 0.0).tangential;
+    const double contact = contact::jenkins_step(o.contact, slider, x, 0.0).tangential;
     return (o.force * std::cos(omega * t) - o.damping * v - o.stiffness * x - contact) / o.mass;
   };
   double x = 0.0, v = 0.0, slider = 0.0;
@@ -51,7 +56,7 @@ Eigen::Vector2d time_integration_first_harmonic(const FrictionOscillator& o, dou
     const double k4x = v + dt * k3v, k4v = acceleration(t + dt, x + dt * k3x, v + dt * k3v, slider);
     x += dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
     v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-    slider = jenkins_step(o.contact, slider, x, 0.0).slider;
+    slider = contact::jenkins_step(o.contact, slider, x, 0.0).slider;
   }
   return harmonic * (2.0 / (static_cast<double>(averaged) * steps_per_period));
 }
@@ -68,14 +73,14 @@ TEST(HbmFrictionOscillator, FirstHarmonicMatchesTimeIntegrationAndImprovesWithHa
       ti_step_error = std::abs(time_integration_first_harmonic(o, omega, 600, 20, 4000).norm() - amplitude) / amplitude;
     std::vector<double> errors;
     for (int harmonics : {1, 3, 5}) {
-      const HbmSolution s = solve_friction_oscillator(o, omega, {.harmonics = harmonics});
+      const HbmSolution s = solve_at_frequency(HarmonicBalance(o.model(), {.harmonics = harmonics}), omega);
       ASSERT_TRUE(s.converged) << "w / wn = " << ratio << ", H = " << harmonics << ": " << s.failure;
-      ASSERT_TRUE(std::any_of(s.contact.state.begin(), s.contact.state.end(),
+      ASSERT_TRUE(std::any_of(s.contacts[0].state.begin(), s.contacts[0].state.end(),
                               [](ContactState c) { return c == ContactState::slip_positive; }))
           << "w / wn = " << ratio << ": the point of the test is a slipping contact";
-      errors.push_back(std::abs(s.first_harmonic_amplitude() - amplitude) / amplitude);
+      errors.push_back(std::abs(first_harmonic_amplitude(s) - amplitude) / amplitude);
       std::printf("[ HBM vs TI ] w/wn %.2f H %d: HBM %.6e m (%d Newton it), TI %.6e m, rel. diff %.1e\n", ratio,
-                  harmonics, s.first_harmonic_amplitude(), s.iterations, amplitude, errors.back());
+                  harmonics, first_harmonic_amplitude(s), s.iterations, amplitude, errors.back());
     }
     EXPECT_LT(errors[0], 0.01) << "H = 1, w / wn = " << ratio;
     EXPECT_LT(errors[2], 5e-4) << "H = 5, w / wn = " << ratio;
@@ -94,11 +99,11 @@ TEST(HbmFrictionOscillator, ConvergedHarmonicsBalanceInputAndDissipatedEnergy) {
   // signs of every term of R are right, and friction must dissipate (W > 0).
   const FrictionOscillator o = oscillator(20.0);
   const double omega = 1030.0;
-  const HbmSolution s = solve_friction_oscillator(o, omega, {.harmonics = 5});
+  const HbmSolution s = solve_at_frequency(HarmonicBalance(o.model(), {.harmonics = 5}), omega);
   ASSERT_TRUE(s.converged) << s.failure;
   Eigen::VectorXd excitation = Eigen::VectorXd::Zero(s.x.size());
   excitation[1] = o.force;
-  const double input = cycle_work(excitation, s.x), friction = cycle_work(s.contact.tangential, s.x);
+  const double input = contact::cycle_work(excitation, s.x), friction = contact::cycle_work(s.contacts[0].tangential, s.x);
   double viscous = 0.0;
   for (int h = 1; h <= 5; ++h) viscous += kPi * o.damping * omega * h * h * (s.x[2 * h - 1] * s.x[2 * h - 1] + s.x[2 * h] * s.x[2 * h]);
   EXPECT_GT(friction, 0.0);
@@ -109,14 +114,16 @@ TEST(HbmFrictionOscillator, ConvergedHarmonicsBalanceInputAndDissipatedEnergy) {
 TEST(HbmFrictionOscillator, LineSearchReachesTheSameSolutionFromPoorStarts) {
   const FrictionOscillator o = oscillator(20.0);
   const double omega = 1060.0;
-  const HbmSolution reference = solve_friction_oscillator(o, omega, {.harmonics = 3});
+  const HarmonicBalance system(o.model(), {.harmonics = 3});
+  const HbmSolution reference = solve_at_frequency(system, omega);
   ASSERT_TRUE(reference.converged);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(7);
   Eigen::VectorXd far = 30.0 * reference.x;  // deep in gross slip, 30 times too large
   far[0] = 1e-3;                             // and offset
   for (const Eigen::VectorXd& start : {zero, far}) {
-    const HbmSolution s = solve_friction_oscillator(o, omega, {.harmonics = 3}, start);
+    const HbmSolution s = solve_at_frequency(system, omega, start);
     ASSERT_TRUE(s.converged) << s.failure;
+    EXPECT_EQ(s.start, HbmStart::initial) << "converged only from a fallback start";
     EXPECT_LT((s.x - reference.x).norm(), 1e-6 * reference.x.norm());
   }
 }
@@ -127,12 +134,13 @@ TEST(HbmFrictionOscillator, NonConvergenceIsReportedNotThrown) {
   far[1] = 1e-2;
   HbmOptions options{.harmonics = 1};
   options.max_iterations = 1;
-  const HbmSolution s = solve_friction_oscillator(o, 1060.0, options, far);
+  const HarmonicBalance system(o.model(), options);
+  const HbmSolution s = solve_at_frequency(system, 1060.0, far);
   EXPECT_FALSE(s.converged);
   EXPECT_FALSE(s.failure.empty());
   EXPECT_GT(s.residual, 0.0);
-  EXPECT_THROW((void)solve_friction_oscillator(o, -1.0), std::invalid_argument);
+  EXPECT_THROW((void)solve_at_frequency(system, -1.0), std::invalid_argument);
 }
 
 }  // namespace
-}  // namespace bb::contact
+}  // namespace bb::hbm

@@ -1,4 +1,4 @@
-#include "time/newmark.hpp"
+#include "timeint/newmark.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,9 @@
 #include <cmath>
 #include <complex>
 #include <stdexcept>
+#include <utility>
 
-#include "common/errors.hpp"
+#include "linalg/damped_newton.hpp"
 
 namespace bb::timeint {
 namespace {
@@ -16,17 +17,9 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-MatrixXd select(const MatrixXd& a, const std::vector<Index>& rows, const std::vector<Index>& cols) {
-  MatrixXd out(static_cast<Index>(rows.size()), static_cast<Index>(cols.size()));
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (size_t j = 0; j < cols.size(); ++j) out(static_cast<Index>(i), static_cast<Index>(j)) = a(rows[i], cols[j]);
-  return out;
-}
-
-VectorXd select(const VectorXd& v, const std::vector<Index>& rows) {
-  VectorXd out(static_cast<Index>(rows.size()));
-  for (size_t i = 0; i < rows.size(); ++i) out[static_cast<Index>(i)] = v[rows[i]];
-  return out;
+hbm::HbmModel validated(hbm::HbmModel model) {
+  hbm::validate_model(model, "Newmark");
+  return model;
 }
 
 double model_force_scale(const hbm::HbmModel& m) {
@@ -36,7 +29,7 @@ double model_force_scale(const hbm::HbmModel& m) {
 }
 
 // Generalized contact force sum_k a_t^T T + a_n^T N and its Jacobian over the columns of the rows
-// given (restricted or full), for the sliders `before` and displacements x.
+// given (restricted to the contact DOFs), for the sliders `before` and displacements x.
 struct ContactEval {
   std::vector<ContactSample> samples;
   VectorXd force;
@@ -44,21 +37,19 @@ struct ContactEval {
 };
 
 ContactEval evaluate_contacts(const std::vector<hbm::ContactElement>& contacts, const std::vector<double>& before,
-                              const VectorXd& x, bool with_jacobian) {
+                              const VectorXd& x) {
   ContactEval e;
   const Index n = x.size();
   e.force = VectorXd::Zero(n);
-  if (with_jacobian) e.jacobian = MatrixXd::Zero(n, n);
+  e.jacobian = MatrixXd::Zero(n, n);
   e.samples.reserve(contacts.size());
   for (size_t k = 0; k < contacts.size(); ++k) {
     const hbm::ContactElement& c = contacts[k];
     const ContactSample s = contact_step(c, before[k], x);
     e.force += c.tangential.transpose() * s.tangential + c.normal.transpose() * s.normal;
-    if (with_jacobian) {
-      const ContactTangent d = contact_tangent(c, s);
-      e.jacobian += c.tangential.transpose() * (d.dt_du * c.tangential + d.dt_dv * c.normal) +
-                    d.dn_dv * c.normal.transpose() * c.normal;
-    }
+    const ContactTangent d = contact_tangent(c, s);
+    e.jacobian += c.tangential.transpose() * (d.dt_du * c.tangential + d.dt_dv * c.normal) +
+                  d.dn_dv * c.normal.transpose() * c.normal;
     e.samples.push_back(s);
   }
   return e;
@@ -84,8 +75,7 @@ Excitation no_excitation(Index dofs) {
 }
 
 NewmarkIntegrator::NewmarkIntegrator(hbm::HbmModel model, NewmarkOptions options)
-    : model_(std::move(model)), options_(options) {
-  hbm::validate_model(model_, "Newmark");
+    : model_(validated(std::move(model))), options_(options), system_(model_) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("Newmark: " + what); };
   const double dt = options_.time_step, alpha = options_.alpha;
   if (!(std::isfinite(dt) && dt > 0.0)) fail(fmt::format("time step must be finite and > 0 (got {})", dt));
@@ -95,37 +85,14 @@ NewmarkIntegrator::NewmarkIntegrator(hbm::HbmModel model, NewmarkOptions options
   beta_ = 0.25 * (1.0 - alpha) * (1.0 - alpha);
   gamma_ = 0.5 - alpha;
 
-  const Index n = model_.mass.rows();
   mass_lu_.compute(model_.mass);
   if (!(std::abs(mass_lu_.determinant()) > 0.0) || !std::isfinite(mass_lu_.rcond()) || mass_lu_.rcond() < 1e-14)
     fail("M must be invertible (every DOF needs mass for the initial acceleration)");
 
-  std::vector<bool> touched(static_cast<size_t>(n), false);
-  for (const hbm::ContactElement& e : model_.contacts)
-    for (Index i = 0; i < n; ++i)
-      if (e.tangential[i] != 0.0 || e.normal[i] != 0.0) touched[static_cast<size_t>(i)] = true;
-  for (Index i = 0; i < n; ++i) (touched[static_cast<size_t>(i)] ? contact_dofs_ : other_dofs_).push_back(i);
-
-  keff_ = model_.mass / (beta_ * dt * dt) + (1.0 + alpha) * (gamma_ / (beta_ * dt) * model_.damping + model_.stiffness);
-  if (!other_dofs_.empty()) {
-    keff_oo_lu_.compute(select(keff_, other_dofs_, other_dofs_));
-    if (!(keff_oo_lu_.rcond() > 1e-14)) fail("effective stiffness of the non-contact DOFs is singular");
-  }
-  if (!contact_dofs_.empty()) {
-    const MatrixXd kcc = select(keff_, contact_dofs_, contact_dofs_);
-    keff_co_ = select(keff_, contact_dofs_, other_dofs_);
-    if (!other_dofs_.empty()) {
-      koo_inv_koc_ = keff_oo_lu_.solve(select(keff_, other_dofs_, contact_dofs_));
-      schur_ = kcc - keff_co_ * koo_inv_koc_;
-    } else {
-      schur_ = kcc;
-    }
-    contacts_c_ = model_.contacts;
-    for (hbm::ContactElement& r : contacts_c_) {
-      r.tangential = select(VectorXd(r.tangential.transpose()), contact_dofs_).transpose();
-      r.normal = select(VectorXd(r.normal.transpose()), contact_dofs_).transpose();
-    }
-  }
+  const MatrixXd keff =
+      model_.mass / (beta_ * dt * dt) + (1.0 + alpha) * (gamma_ / (beta_ * dt) * model_.damping + model_.stiffness);
+  keff_.emplace(system_.condense(keff));
+  if (!(keff_->rcond() > 1e-14)) fail("effective stiffness of the non-contact DOFs is singular");
   force_scale_ = model_force_scale(model_);
 }
 
@@ -173,55 +140,39 @@ StepReport NewmarkIntegrator::step(DynamicState& state, const Excitation& excita
 
   StepReport report;
   VectorXd q(q0.size());
-  const VectorXd y_o = other_dofs_.empty() ? VectorXd() : VectorXd(keff_oo_lu_.solve(select(b, other_dofs_)));
-  if (contact_dofs_.empty()) {
-    for (size_t i = 0; i < other_dofs_.size(); ++i) q[other_dofs_[i]] = y_o[static_cast<Index>(i)];
+  const hbm::Condensation<double>::Load load = keff_->condense(b);
+  const std::vector<Index>& c = system_.contact_dofs();
+  const std::vector<Index>& o = system_.other_dofs();
+  if (c.empty()) {
+    q(o) = load.other;
     report.converged = true;
   } else {
-    const VectorXd b_c = other_dofs_.empty() ? select(b, contact_dofs_) : VectorXd(select(b, contact_dofs_) - keff_co_ * y_o);
-    const double tolerance = options_.tolerance * (force_scale_ + b_c.norm());
+    const double tolerance = options_.tolerance * (force_scale_ + load.contact.norm());
     const std::vector<double> before = sliders_of(state.contacts);
-    const auto residual = [&](const VectorXd& x, bool jac) {
-      ContactEval e = evaluate_contacts(contacts_c_, before, x, jac);
-      e.force = schur_ * x + (1.0 + alpha) * e.force - b_c;
-      if (jac) e.jacobian = schur_ + (1.0 + alpha) * e.jacobian;
-      return e;
+    // S x + (1 + alpha) g(x) = b_c on the contact DOFs, with its consistent tangent.
+    const auto balance = [&](const VectorXd& x) {
+      ContactEval e = evaluate_contacts(system_.contacts_on_c(), before, x);
+      linalg::NewtonPoint p;
+      p.residual = keff_->reduced() * x + (1.0 + alpha) * e.force - load.contact;
+      p.jacobian = keff_->reduced() + (1.0 + alpha) * e.jacobian;
+      return p;
     };
-    VectorXd x = select(qt, contact_dofs_);
-    ContactEval e = residual(x, true);
-    double r = e.force.norm();
-    while (!(r <= tolerance) && report.iterations < options_.max_iterations) {
-      ++report.iterations;
-      const VectorXd dx = e.jacobian.partialPivLu().solve(-e.force);
-      double lambda = 1.0;
-      bool accepted = false;
-      for (int k = 0; k <= options_.max_backtracks; ++k, lambda *= 0.5) {
-        const VectorXd trial = x + lambda * dx;
-        ContactEval et = residual(trial, true);
-        const double rt = et.force.norm();
-        if (std::isfinite(rt) && rt <= (1.0 - 1e-4 * lambda) * r) {
-          x = trial;
-          e = std::move(et);
-          r = rt;
-          accepted = true;
-          break;
-        }
-      }
-      if (!accepted) break;
-    }
-    report.residual = r;
-    report.converged = r <= tolerance;
+    const linalg::DampedNewtonResult r = linalg::damped_newton(
+        balance, VectorXd(qt(c)),
+        {.tolerance = tolerance, .max_iterations = options_.max_iterations, .max_backtracks = options_.max_backtracks,
+         .step_solve = linalg::NewtonStepSolve::partial_pivot_lu});
+    // The iteration that failed (line search, non-finite step) is counted.
+    report.iterations = r.iterations + (r.converged || r.status == linalg::NewtonStatus::iteration_limit ? 0 : 1);
+    report.residual = r.residual;
+    report.converged = r.converged;
     if (!report.converged) {
       report.failure = fmt::format("Newmark step to t = {:.9g} s did not converge: |R| = {:.3e} N after {} Newton "
                                    "iterations (tolerance {:.3e} N)",
-                                   t1, r, report.iterations, tolerance);
+                                   t1, r.residual, report.iterations, tolerance);
       return report;
     }
-    for (size_t i = 0; i < contact_dofs_.size(); ++i) q[contact_dofs_[i]] = x[static_cast<Index>(i)];
-    if (!other_dofs_.empty()) {
-      const VectorXd xo = y_o - koo_inv_koc_ * x;
-      for (size_t i = 0; i < other_dofs_.size(); ++i) q[other_dofs_[i]] = xo[static_cast<Index>(i)];
-    }
+    q(c) = r.x;
+    if (!o.empty()) q(o) = keff_->recover(load, r.x);
   }
   if (!q.allFinite()) {
     report.converged = false;
@@ -292,84 +243,6 @@ TimeHistory integrate(const NewmarkIntegrator& integrator, const DynamicState& s
   }
   h.displacement.conservativeResize(h.steps + 1, Eigen::NoChange);
   return h;
-}
-
-StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions& options) {
-  hbm::HbmModel m = input;
-  hbm::validate_model(m, "static initial state");
-  if (options.max_iterations < 1 || options.max_backtracks < 0 || !(options.tolerance > 0.0))
-    throw std::invalid_argument("static initial state: max_iterations >= 1, max_backtracks >= 0 and tolerance > 0");
-  const Index n = m.mass.rows();
-  const bool stuck = options.friction == StaticFriction::stuck_at_offset;
-  const double tolerance = options.tolerance * (model_force_scale(m) + 1.0);
-
-  const auto evaluate = [&](const VectorXd& q, VectorXd& r, MatrixXd& j) {
-    r = m.stiffness * q - m.static_load;
-    j = m.stiffness;
-    for (const hbm::ContactElement& c : m.contacts) {
-      const double v = c.normal.dot(q);
-      const double normal = std::max(c.law.n0 + c.law.kn * v, 0.0);
-      r += c.normal.transpose() * normal;
-      // Semismooth choice at N0 + kn v == 0: closed, so a contact that just touches is stiff.
-      if (c.law.n0 + c.law.kn * v >= 0.0) j += c.law.kn * c.normal.transpose() * c.normal;
-      if (stuck) {
-        r += c.tangential.transpose() * (c.law.kt * (c.tangential.dot(q) - c.tangential_offset));
-        j += c.law.kt * c.tangential.transpose() * c.tangential;
-      }
-    }
-  };
-
-  StaticState s;
-  VectorXd q = VectorXd::Zero(n), r;
-  MatrixXd j;
-  evaluate(q, r, j);
-  double norm = r.norm();
-  while (!(norm <= tolerance) && s.iterations < options.max_iterations) {
-    ++s.iterations;
-    const Eigen::FullPivLU<MatrixXd> lu(j);
-    if (!lu.isInvertible()) {
-      s.failure = fmt::format(
-          "static initial state: singular tangent at iteration {} (|R| = {:.3e} N): the model is not held in some "
-          "direction{}",
-          s.iterations, norm, stuck ? "" : " with friction neglected; try StaticFriction::stuck_at_offset");
-      break;
-    }
-    const VectorXd dq = lu.solve(-r);
-    double lambda = 1.0;
-    bool accepted = false;
-    for (int k = 0; k <= options.max_backtracks; ++k, lambda *= 0.5) {
-      const VectorXd trial = q + lambda * dq;
-      VectorXd rt;
-      MatrixXd jt;
-      evaluate(trial, rt, jt);
-      if (std::isfinite(rt.norm()) && rt.norm() <= (1.0 - 1e-4 * lambda) * norm) {
-        q = trial;
-        r = rt;
-        j = jt;
-        norm = rt.norm();
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) break;
-  }
-  s.residual = norm;
-  s.converged = norm <= tolerance;
-  if (!s.converged) {
-    if (s.failure.empty())
-      s.failure = fmt::format("static initial state did not converge: |R| = {:.3e} N after {} iterations (tolerance "
-                              "{:.3e} N)",
-                              norm, s.iterations, tolerance);
-    s.q = VectorXd::Zero(n);
-  } else {
-    s.q = q;
-  }
-  for (const hbm::ContactElement& c : m.contacts) {
-    const double w = stuck ? 0.0 : c.tangential.dot(s.q) - c.tangential_offset;
-    s.sliders.push_back(w);
-    s.contacts.push_back(contact_step(c, w, s.q));
-  }
-  return s;
 }
 
 }  // namespace bb::timeint

@@ -1,4 +1,4 @@
-#include "time/contact_step.hpp"
+#include "timeint/contact_step.hpp"
 
 namespace bb::timeint {
 

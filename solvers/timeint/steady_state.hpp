@@ -1,6 +1,6 @@
 // Stepped-sine steady state by direct time integration (thesis section 3.4.1, eqs 3.40-3.42): the
-// model of hbm/harmonic_balance.hpp driven by f_static + Re(F e^{i omega t}) is integrated with
-// time/newmark.hpp, a fixed number of steps per period (dt = k / f of eq 3.42), period after period
+// model of hbm/friction_system.hpp driven by f_static + Re(F e^{i omega t}) is integrated with
+// timeint/newmark.hpp, a fixed number of steps per period (dt = k / f of eq 3.42), period after period
 // until the motion repeats, then the harmonics 0..H of chosen DOFs come from a DFT over the last
 // whole periods. Units: SI.
 //
@@ -14,8 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "hbm/harmonic_balance.hpp"
-#include "time/newmark.hpp"
+#include "hbm/friction_system.hpp"
+#include "timeint/newmark.hpp"
+#include "timeint/static_state.hpp"
 
 namespace bb::timeint {
 

@@ -10,7 +10,7 @@
 //   negative slip  : s*(1) = u + mu N / kt,       T = -mu N
 //   separation     : s*(1) = u,                   T = N = 0
 // with N = max(N0 + kn v, 0) (eq 3.45 plus the preload N0 of contact/). Here u = a_t . q -
-// tangential_offset and v = a_n . q, the conventions of hbm/harmonic_balance.hpp: T and N resist
+// tangential_offset and v = a_n . q, the conventions of hbm/friction_system.hpp: T and N resist
 // u and v, so the contact acts on the model DOFs with -(a_t^T T + a_n^T N).
 //
 // Why this is an implicit (backward) update: the slider is advanced from its converged position at
@@ -21,7 +21,7 @@
 #include <Eigen/Dense>
 
 #include "contact/jenkins_contact.hpp"
-#include "hbm/harmonic_balance.hpp"
+#include "hbm/friction_system.hpp"
 
 namespace bb::timeint {
 

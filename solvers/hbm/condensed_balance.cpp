@@ -1,0 +1,203 @@
+#include "hbm/condensed_balance.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <complex>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "common/errors.hpp"
+
+namespace bb::hbm {
+
+namespace {
+
+using Index = Eigen::Index;
+using Complex = std::complex<double>;
+
+// A partial-pivoting LU is singular for our purposes when its reciprocal condition estimate is
+// below this: the solve would amplify rounding by more than ~1e13.
+constexpr double kSingularRcond = 1e-13;
+
+HbmModel validated(HbmModel model) {
+  validate_model(model, "harmonic balance");
+  return model;
+}
+
+// D_h = K + i h w C - (h w)^2 M.
+Eigen::MatrixXcd dynamic_stiffness(const HbmModel& m, double hw) {
+  const Index n = m.mass.rows();
+  Eigen::MatrixXcd d(n, n);
+  const bool damped = m.damping.size() > 0;
+  for (Index i = 0; i < n; ++i)
+    for (Index j = 0; j < n; ++j)
+      d(i, j) = Complex(m.stiffness(i, j) - hw * hw * m.mass(i, j), damped ? hw * m.damping(i, j) : 0.0);
+  return d;
+}
+
+// The loads of harmonic h on all DOFs: f_static at h = 0, F at h = 1, none above.
+Eigen::VectorXcd harmonic_load(const HbmModel& m, int h) {
+  if (h == 0) return m.static_load.cast<Complex>();
+  if (h == 1) return m.harmonic_load;
+  return Eigen::VectorXcd::Zero(m.mass.rows());
+}
+
+}  // namespace
+
+HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options)
+    : model_(validated(std::move(model))), options_(options), system_(model_) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("harmonic balance: " + what); };
+  if (model_.contacts.empty()) fail("at least one contact element is required (use the linear FRF otherwise)");
+  if (options_.harmonics < 1) fail("at least one harmonic");
+  if (options_.max_iterations < 1 || options_.max_backtracks < 0 || !(options_.tolerance > 0.0))
+    fail("max_iterations >= 1, max_backtracks >= 0 and tolerance > 0");
+  if (contact_dofs().empty()) fail("every contact has zero a_t and a_n: no contact DOF");
+
+  // The static condensation needs K_oo invertible: the model with its contact DOFs clamped must be
+  // held. We do not add ground springs to make it so; the model must be fixed instead.
+  if (!other_dofs().empty()) {
+    const Eigen::MatrixXd koo = model_.stiffness(other_dofs(), other_dofs());
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(koo);
+    if (lu.rank() < koo.rows() || lu.rcond() < kSingularRcond)
+      fail(fmt::format("K restricted to the {} non-contact DOFs is singular (rank {}): the model with its contact DOFs "
+                       "clamped has a rigid-body mode. Constrain it (boundary conditions) or list those DOFs in a "
+                       "contact; no ground spring is added",
+                       koo.rows(), lu.rank()));
+  }
+
+  aft_ = options_.aft;
+  if (aft_.samples == 0) aft_.samples = std::max(64, 16 * (2 * options_.harmonics + 1));
+  if (aft_.samples < 2 * options_.harmonics + 1) fail("aft.samples must be >= 2H + 1");
+
+  double preload = 0.0;
+  for (const ContactElement& e : model_.contacts) preload += (1.0 + e.law.mu) * e.law.n0;
+  force_scale_ = model_.static_load.norm() + model_.harmonic_load.norm() + preload;
+}
+
+Index HarmonicBalance::unknowns() const {
+  return static_cast<Index>(contact_dofs().size()) * contact::harmonic_size(options_.harmonics);
+}
+
+std::optional<HarmonicBalance::Linear> HarmonicBalance::condense(double omega) const {
+  const Index nc = static_cast<Index>(contact_dofs().size());
+  Linear linear{Eigen::MatrixXd::Zero(unknowns(), unknowns()), Eigen::VectorXd::Zero(unknowns())};
+  for (int h = 0; h <= options_.harmonics; ++h) {
+    const Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
+    if (!(d.rcond() >= kSingularRcond)) return std::nullopt;
+    const Eigen::MatrixXcd& reduced = d.reduced();
+    const Eigen::VectorXcd load =
+        h <= 1 ? d.condense(harmonic_load(model_, h)).contact : Eigen::VectorXcd(Eigen::VectorXcd::Zero(nc));
+    if (h == 0) {
+      linear.operator_.topLeftCorner(nc, nc) = reduced.real();
+      linear.load.head(nc) = load.real();
+      continue;
+    }
+    // (A + iB)(a - ib) = (Aa + Bb) + i(Ba - Ab) = F: rows a: [A B], rows b: [-B A], load (Re F, -Im F).
+    const Index a = (2 * h - 1) * nc, b = 2 * h * nc;
+    linear.operator_.block(a, a, nc, nc) = reduced.real();
+    linear.operator_.block(a, b, nc, nc) = reduced.imag();
+    linear.operator_.block(b, a, nc, nc) = -reduced.imag();
+    linear.operator_.block(b, b, nc, nc) = reduced.real();
+    linear.load.segment(a, nc) = load.real();
+    linear.load.segment(b, nc) = -load.imag();
+  }
+  if (!linear.operator_.allFinite() || !linear.load.allFinite()) return std::nullopt;
+  return linear;
+}
+
+HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::VectorXd& x) const {
+  const Index nc = static_cast<Index>(contact_dofs().size());
+  const Index m = contact::harmonic_size(options_.harmonics);
+  // Column j of the nc x m matrix is harmonic coefficient j of every contact DOF.
+  const Eigen::Map<const Eigen::MatrixXd> coefficients(x.data(), nc, m);
+  ContactForces out{Eigen::VectorXd::Zero(unknowns()), Eigen::MatrixXd::Zero(unknowns(), unknowns()), {}, true};
+  Eigen::Map<Eigen::MatrixXd> force(out.force.data(), nc, m);
+  for (const ContactElement& element : system_.contacts_on_c()) {
+    const Eigen::RowVectorXd& at = element.tangential;
+    const Eigen::RowVectorXd& an = element.normal;
+    Eigen::VectorXd u = (at * coefficients).transpose();
+    const Eigen::VectorXd v = (an * coefficients).transpose();
+    u[0] -= element.tangential_offset;
+    contact::AftResult r = contact::aft_jenkins(element.law, u, v, aft_);
+    out.closed = out.closed && r.closed;
+    // g = a_t^T T + a_n^T N, per coefficient.
+    force += at.transpose() * r.tangential.transpose() + an.transpose() * r.normal.transpose();
+    // dg_(j,i)/dx_(l,p) = at_i (dT/du_jl at_p + dT/dv_jl an_p) + an_i dN/dv_jl an_p.
+    const Eigen::MatrixXd tt = at.transpose() * at, tn = at.transpose() * an, nn = an.transpose() * an;
+    for (Index j = 0; j < m; ++j)
+      for (Index l = 0; l < m; ++l) {
+        const double tu = r.dtangential_du(j, l), tv = r.dtangential_dv(j, l), nv = r.dnormal_dv(j, l);
+        if (tu == 0.0 && tv == 0.0 && nv == 0.0) continue;
+        out.jacobian.block(j * nc, l * nc, nc, nc) += tu * tt + tv * tn + nv * nn;
+      }
+    out.contacts.push_back(std::move(r));
+  }
+  return out;
+}
+
+HarmonicBalance::Residual HarmonicBalance::residual(const Linear& linear, const Eigen::VectorXd& x) const {
+  Residual r;
+  if (!x.allFinite()) return r;
+  r.forces = contact_forces(x);
+  r.residual = linear.operator_ * x + r.forces.force - linear.load;
+  r.ok = r.residual.allFinite() && r.forces.closed;
+  if (r.ok) r.norm = r.residual.norm();
+  return r;
+}
+
+Eigen::MatrixXd HarmonicBalance::recover(const Eigen::VectorXd& x, double omega) const {
+  const Index n = model_.mass.rows(), nc = static_cast<Index>(contact_dofs().size());
+  const Index m = contact::harmonic_size(options_.harmonics);
+  if (x.size() != unknowns()) throw std::invalid_argument("harmonic balance: x has the wrong size");
+  Eigen::MatrixXd q = Eigen::MatrixXd::Zero(n, m);
+  const Eigen::Map<const Eigen::MatrixXd> xc(x.data(), nc, m);
+  for (Index i = 0; i < nc; ++i) q.row(contact_dofs()[static_cast<size_t>(i)]) = xc.row(i);
+  if (other_dofs().empty()) return q;
+  for (int h = 0; h <= options_.harmonics; ++h) {
+    const Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
+    if (!(d.rcond() >= kSingularRcond))
+      throw SolverError(fmt::format("harmonic balance: D_oo singular at harmonic {}, omega = {} rad/s", h, omega));
+    const Eigen::VectorXcd qc = h == 0 ? Eigen::VectorXcd(xc.col(0).cast<Complex>())
+                                       : Eigen::VectorXcd(xc.col(2 * h - 1).cast<Complex>() -
+                                                          Complex(0.0, 1.0) * xc.col(2 * h).cast<Complex>());
+    const Eigen::VectorXcd qo = d.recover(d.condense(harmonic_load(model_, h)), qc);
+    for (size_t i = 0; i < other_dofs().size(); ++i) {
+      const Index dof = other_dofs()[i];
+      if (h == 0) q(dof, 0) = qo[static_cast<Index>(i)].real();
+      else {
+        q(dof, 2 * h - 1) = qo[static_cast<Index>(i)].real();
+        q(dof, 2 * h) = -qo[static_cast<Index>(i)].imag();
+      }
+    }
+  }
+  return q;
+}
+
+std::optional<Eigen::VectorXd> HarmonicBalance::linearized(double omega, bool stuck) const {
+  const auto linear = condense(omega);
+  if (!linear) return std::nullopt;
+  const Index nc = static_cast<Index>(contact_dofs().size());
+  const Index m = contact::harmonic_size(options_.harmonics);
+  Eigen::MatrixXd springs = Eigen::MatrixXd::Zero(nc, nc);
+  Eigen::VectorXd preload = Eigen::VectorXd::Zero(nc);
+  for (const ContactElement& element : system_.contacts_on_c()) {
+    const contact::JenkinsParameters& law = element.law;
+    springs += law.kn * element.normal.transpose() * element.normal;
+    preload += law.n0 * element.normal.transpose();
+    if (stuck) {
+      springs += law.kt * element.tangential.transpose() * element.tangential;
+      preload -= law.kt * element.tangential_offset * element.tangential.transpose();
+    }
+  }
+  Eigen::MatrixXd a = linear->operator_;
+  for (Index j = 0; j < m; ++j) a.block(j * nc, j * nc, nc, nc) += springs;
+  Eigen::VectorXd b = linear->load;
+  b.head(nc) -= preload;
+  const Eigen::VectorXd x = a.fullPivLu().solve(b);
+  if (!x.allFinite()) return std::nullopt;
+  return x;
+}
+
+}  // namespace bb::hbm

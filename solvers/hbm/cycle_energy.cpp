@@ -1,0 +1,39 @@
+#include "hbm/cycle_energy.hpp"
+
+#include <numbers>
+
+#include "contact/aft.hpp"
+
+namespace bb::hbm {
+
+CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) {
+  using Eigen::Index;
+  const Eigen::MatrixXd q = s.recover(solution.x, solution.omega);
+  const HbmModel& model = s.model();
+  const Index n = q.rows();
+  const int harmonics = s.options().harmonics;
+  CycleEnergy e;
+  // Excitation: harmonic 1 only, f = Re F cos - Im F sin.
+  for (Index i = 0; i < n; ++i) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(q.cols()), qi = q.row(i).transpose();
+    f[1] = model.harmonic_load[i].real();
+    f[2] = -model.harmonic_load[i].imag();
+    e.excitation += contact::cycle_work(f, qi);
+  }
+  // Viscous: integral over a period of q'^T C q' = pi h^2 w (a^T C a + b^T C b) per harmonic.
+  if (model.damping.size() > 0)
+    for (int h = 1; h <= harmonics; ++h) {
+      const Eigen::VectorXd a = q.col(2 * h - 1), b = q.col(2 * h);
+      e.viscous += std::numbers::pi * h * h * solution.omega * (a.dot(model.damping * a) + b.dot(model.damping * b));
+    }
+  for (size_t k = 0; k < solution.contacts.size() && k < model.contacts.size(); ++k) {
+    const contact::AftResult& r = solution.contacts[k];
+    const Eigen::VectorXd u = (model.contacts[k].tangential * q).transpose();
+    const Eigen::VectorXd v = (model.contacts[k].normal * q).transpose();
+    e.friction += contact::cycle_work(r.tangential, u);
+    e.normal += contact::cycle_work(r.normal, v);
+  }
+  return e;
+}
+
+}  // namespace bb::hbm

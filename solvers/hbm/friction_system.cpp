@@ -1,0 +1,88 @@
+#include "hbm/friction_system.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace bb::hbm {
+
+using Index = Eigen::Index;
+
+void validate_model(HbmModel& m, const std::string& who) {
+  const Index n = m.mass.rows();
+  const auto fail = [&who](const std::string& what) { throw std::invalid_argument(fmt::format("{}: {}", who, what)); };
+  if (n == 0 || m.mass.cols() != n || m.stiffness.rows() != n || m.stiffness.cols() != n)
+    fail("M and K must be square and of the same non-zero size");
+  if (m.damping.size() == 0) m.damping = Eigen::MatrixXd::Zero(n, n);
+  if (m.damping.rows() != n || m.damping.cols() != n) fail("C must be empty or of the size of M");
+  if (!m.mass.allFinite() || !m.stiffness.allFinite() || !m.damping.allFinite()) fail("M, C and K must be finite");
+  if (m.static_load.size() == 0) m.static_load = Eigen::VectorXd::Zero(n);
+  if (m.harmonic_load.size() == 0) m.harmonic_load = Eigen::VectorXcd::Zero(n);
+  if (m.static_load.size() != n || m.harmonic_load.size() != n) fail(fmt::format("loads must have {} entries (one per DOF)", n));
+  if (!m.static_load.allFinite() || !m.harmonic_load.allFinite()) fail("loads must be finite");
+  for (size_t k = 0; k < m.contacts.size(); ++k) {
+    const ContactElement& e = m.contacts[k];
+    try {
+      contact::validate(e.law);
+    } catch (const std::invalid_argument& error) {
+      fail(fmt::format("contact {}: {}", k, error.what()));
+    }
+    if (e.tangential.size() != n || e.normal.size() != n)
+      fail(fmt::format("contact {}: a_t and a_n must have {} entries (one per DOF)", k, n));
+    if (!e.tangential.allFinite() || !e.normal.allFinite() || !std::isfinite(e.tangential_offset))
+      fail(fmt::format("contact {}: a_t, a_n and the tangential offset must be finite", k));
+  }
+}
+
+template <class Scalar>
+Condensation<Scalar>::Condensation(const Matrix& a, const std::vector<Index>& contact_dofs,
+                                   const std::vector<Index>& other_dofs)
+    : contact_dofs_(contact_dofs), other_dofs_(other_dofs), other_(static_cast<Index>(other_dofs.size())) {
+  const Matrix a_cc = a(contact_dofs_, contact_dofs_);
+  if (other_ == 0) {
+    reduced_ = a_cc;
+    return;
+  }
+  a_co_ = a(contact_dofs_, other_dofs_);
+  lu_oo_.compute(a(other_dofs_, other_dofs_));
+  static_modes_ = lu_oo_.solve(Matrix(a(other_dofs_, contact_dofs_)));
+  reduced_ = a_cc - a_co_ * static_modes_;
+}
+
+template <class Scalar>
+typename Condensation<Scalar>::Load Condensation<Scalar>::condense(const Vector& f) const {
+  Load load;
+  if (other_ == 0) {
+    load.contact = f(contact_dofs_);
+    return load;
+  }
+  load.other = lu_oo_.solve(Vector(f(other_dofs_)));
+  load.contact = Vector(f(contact_dofs_)) - a_co_ * load.other;
+  return load;
+}
+
+template <class Scalar>
+typename Condensation<Scalar>::Vector Condensation<Scalar>::recover(const Load& load, const Vector& x_c) const {
+  if (other_ == 0) return Vector();
+  return load.other - static_modes_ * x_c;
+}
+
+template class Condensation<double>;
+template class Condensation<std::complex<double>>;
+
+FrictionSystem::FrictionSystem(const HbmModel& model) {
+  const Index n = model.mass.rows();
+  std::vector<bool> touched(static_cast<size_t>(n), false);
+  for (const ContactElement& e : model.contacts)
+    for (Index i = 0; i < n; ++i)
+      if (e.tangential[i] != 0.0 || e.normal[i] != 0.0) touched[static_cast<size_t>(i)] = true;
+  for (Index i = 0; i < n; ++i) (touched[static_cast<size_t>(i)] ? contact_dofs_ : other_dofs_).push_back(i);
+  contacts_on_c_ = model.contacts;
+  for (ContactElement& e : contacts_on_c_) {
+    e.tangential = Eigen::RowVectorXd(e.tangential(contact_dofs_));
+    e.normal = Eigen::RowVectorXd(e.normal(contact_dofs_));
+  }
+}
+
+}  // namespace bb::hbm

@@ -1,0 +1,111 @@
+// The friction system both the harmonic balance (hbm/) and the time integration (timeint/) solve:
+// a small linear model (dense M, C, K) with point Jenkins friction contacts of variable normal load
+// (contact/jenkins_contact.hpp), and its exact condensation onto the DOFs the contacts touch.
+// Units: SI.
+//
+// Equation of motion, q the model DOFs:
+//   M q'' + C q' + K q + sum_k (a_t,k^T T_k + a_n,k^T N_k) = f_static + f(t),
+// u_k = a_t,k . q and v_k = a_n,k . q the relative tangential and normal displacements of contact k
+// (v > 0 presses, as in contact/), T_k and N_k the Jenkins forces of contact k (N_k = max(N0 + kn v,
+// 0) includes the preload N0). Sign convention: T and N are the forces that RESIST u and v, so the
+// contact acts on the DOFs with -a_t^T T - a_n^T N (action = reaction: a contact joining DOF i with
+// +1 and DOF j with -1 pushes them apart with N and drags them together with T). A contact with
+// only +1 on one DOF ties that DOF to the ground.
+//
+// Condensation. The DOFs touched by any a_t or a_n are the contact DOFs c, the rest o. No contact
+// force acts on o, so any linear operator A of the model (the dynamic stiffness D_h of harmonic h,
+// thesis eqs 3.22-3.27; Newmark's effective stiffness K_eff) is condensed exactly onto c by the
+// Schur complement
+//   S = A_cc - A_co A_oo^-1 A_oc,   S x_c + g(x_c) = f_c - A_co y_o,   y_o = A_oo^-1 f_o,
+// and o is recovered as x_o = y_o - (A_oo^-1 A_oc) x_c. Requirement: A_oo invertible (the model with
+// its contact DOFs clamped is held); each solver checks rcond() against its own threshold.
+#pragma once
+#include <Eigen/Dense>
+#include <complex>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "contact/jenkins_contact.hpp"
+
+namespace bb::hbm {
+
+// One point contact. Both rows have one entry per model DOF; zero entries leave a DOF untouched.
+struct ContactElement {
+  contact::JenkinsParameters law;  // kn, kt, mu, N0 (validated by contact::validate)
+  Eigen::RowVectorXd tangential;   // a_t: u = a_t . q
+  Eigen::RowVectorXd normal;       // a_n: v = a_n . q
+  // The slider's rest position: u = a_t . q - tangential_offset enters the law, so a contact that
+  // closed at a static seat (e.g. a damper pressed in by CF with no friction) carries no tangential
+  // force there and a stuck contact stays continuous with one that starts to slip.
+  double tangential_offset = 0.0;  // [m]
+};
+
+struct HbmModel {
+  Eigen::MatrixXd mass, damping, stiffness;  // n x n, dense; damping may be empty (C = 0)
+  std::vector<ContactElement> contacts;      // at least one for the harmonic balance
+  Eigen::VectorXd static_load;               // n [N]; empty = none (e.g. centrifugal force on the damper)
+  Eigen::VectorXcd harmonic_load;            // n [N], complex amplitude at harmonic 1; empty = none
+};
+
+// Fills an empty C and empty loads with zeros, then checks sizes, finiteness and every contact
+// law of `model` (contacts may be empty). Throws std::invalid_argument, the message prefixed by
+// `who`. Shared by the harmonic balance and the time integration.
+void validate_model(HbmModel& model, const std::string& who);
+
+// One linear operator A condensed onto c (formulas above), A_oo factorized once (partial-pivoting
+// LU). Scalar: double (time domain) or std::complex<double> (one harmonic).
+template <class Scalar>
+class Condensation {
+ public:
+  using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+
+  Condensation(const Matrix& a, const std::vector<Eigen::Index>& contact_dofs,
+               const std::vector<Eigen::Index>& other_dofs);
+
+  // Reciprocal condition estimate of A_oo's LU; +inf when there is no o. Valid results need it
+  // above the caller's singularity threshold.
+  double rcond() const { return other_ > 0 ? lu_oo_.rcond() : std::numeric_limits<double>::infinity(); }
+  const Matrix& reduced() const { return reduced_; }  // S, |c| x |c|
+
+  // A right-hand side f (all DOFs) split for the condensed solve.
+  struct Load {
+    Vector contact;  // f_c - A_co y_o
+    Vector other;    // y_o = A_oo^-1 f_o
+  };
+  Load condense(const Vector& f) const;
+  // x_o from x_c (the condensed solution) and the load it was solved with.
+  Vector recover(const Load& load, const Vector& x_c) const;
+
+ private:
+  std::vector<Eigen::Index> contact_dofs_, other_dofs_;
+  Eigen::Index other_ = 0;
+  Eigen::PartialPivLU<Matrix> lu_oo_;
+  Matrix a_co_, static_modes_, reduced_;  // A_co, A_oo^-1 A_oc, S
+};
+
+extern template class Condensation<double>;
+extern template class Condensation<std::complex<double>>;
+
+// The contact/other split of a validated model and the contact rows restricted to c.
+class FrictionSystem {
+ public:
+  explicit FrictionSystem(const HbmModel& model);
+
+  const std::vector<Eigen::Index>& contact_dofs() const { return contact_dofs_; }  // c, ascending
+  const std::vector<Eigen::Index>& other_dofs() const { return other_dofs_; }      // o, ascending
+  // The model's contacts with a_t and a_n restricted to c (entry i belongs to contact_dofs()[i]).
+  const std::vector<ContactElement>& contacts_on_c() const { return contacts_on_c_; }
+
+  template <class Scalar>
+  Condensation<Scalar> condense(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& a) const {
+    return Condensation<Scalar>(a, contact_dofs_, other_dofs_);
+  }
+
+ private:
+  std::vector<Eigen::Index> contact_dofs_, other_dofs_;
+  std::vector<ContactElement> contacts_on_c_;
+};
+
+}  // namespace bb::hbm

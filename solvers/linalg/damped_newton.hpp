@@ -1,0 +1,90 @@
+// Damped Newton's method for R(x) = 0: the one Newton loop of the nonlinear solvers (harmonic
+// balance at fixed frequency and its continuation corrector, the Newmark step, the static initial
+// state). Units: those of the caller's x and R.
+//
+// Each iteration solves J dx = -R, then backtracks x + a dx, a = 1, 1/2, 1/4, ..., until the merit
+// (||R|| unless the caller gives its own) drops by the Armijo factor (1 - armijo a) (Nocedal &
+// Wright, Numerical Optimization, 2nd ed., section 3.1). Our residuals are only piecewise smooth
+// (stick/slip and contact/lift-off switches): a full step can cross a switch and land further from
+// the solution than it started, which backtracking catches. Where backtracking fails because the
+// exact Jacobian points across a kink, optional Levenberg-Marquardt steps (Nocedal & Wright section
+// 10.3) along a blend of the Newton and steepest-descent directions can still reduce the merit.
+//
+// Contract: never throws on non-convergence (converged == false, a status and a message with |R|),
+// never returns a non-finite x or residual.
+#pragma once
+#include <Eigen/Dense>
+#include <any>
+#include <functional>
+#include <string>
+
+namespace bb::linalg {
+
+// What the caller's system returns at one x.
+struct NewtonPoint {
+  Eigen::VectorXd residual;  // R(x)
+  Eigen::MatrixXd jacobian;  // dR/dx, residual.size() rows, x.size() columns (may be left empty when !valid)
+  // false: R cannot be used at x (e.g. a slider loop that did not close); such a point is never
+  // accepted, and a start point that is not valid ends the iteration at once.
+  bool valid = true;
+  std::any data;  // anything computed with R (e.g. the contact time histories), handed back with the final point
+};
+
+using NewtonSystem = std::function<NewtonPoint(const Eigen::VectorXd& x)>;
+
+// How J dx = -R is solved.
+enum class NewtonStepSolve {
+  // Complete orthogonal decomposition (rank threshold 1e-13): the minimum-norm step, which puts no
+  // component along a null space of J (a direction that leaves R unchanged) where a pivoted LU
+  // would put an arbitrary one.
+  minimum_norm,
+  partial_pivot_lu,  // fastest; J assumed invertible (a singular J gives a non-finite step)
+  full_pivot_lu,     // rank-revealing: J not invertible stops the iteration as singular
+};
+
+struct DampedNewtonOptions {
+  // Converged when merit <= tolerance (units of R) unless `converged` is given. 0 asks for R = 0.
+  double tolerance = 0.0;
+  int max_iterations = 50;  // accepted Newton steps before the iteration stops as not converged
+  int max_backtracks = 30;  // halvings of a step (max_backtracks + 1 trials) before the line search fails
+  double armijo = 1e-4;     // sufficient-decrease constant of the backtracking test
+  NewtonStepSolve step_solve = NewtonStepSolve::minimum_norm;
+  // After a failed line search, try Levenberg-Marquardt steps (J^T J + lambda s I) dx = -J^T R,
+  // s = max diag(J^T J), lambda = 1e-8, 1e-7, ..., 1e2, the first that lowers the merit accepted.
+  bool levenberg_marquardt = false;
+  // The merit that backtracking reduces and the tolerance tests; empty: ||R||. It is evaluated
+  // only at valid points.
+  std::function<double(const NewtonPoint&)> merit = {};
+  // The convergence test at a valid point; empty: merit <= tolerance.
+  std::function<bool(const NewtonPoint&)> converged = {};
+};
+
+enum class NewtonStatus {
+  converged,
+  invalid_point,       // the start point was not valid, or its merit not finite
+  iteration_limit,     // max_iterations steps accepted without convergence
+  singular_jacobian,   // the step solve failed (non-finite step, or J not invertible for full_pivot_lu)
+  line_search_failed,  // no trial step (nor Levenberg-Marquardt step, when enabled) reduced the merit
+};
+
+struct DampedNewtonResult {
+  Eigen::VectorXd x;  // the last accepted iterate (the start when none was), always finite
+  NewtonPoint at;     // the system at x (its data included)
+  // Merit at x (||R|| unless the caller gave its own); +inf when x was not a valid point.
+  double residual = 0.0;
+  // Newton steps accepted (a Levenberg-Marquardt step counts as one); an attempt that failed
+  // (line search, singular step) is not counted: callers that report it add one.
+  int iterations = 0;
+  bool converged = false;
+  NewtonStatus status = NewtonStatus::invalid_point;
+  std::string failure;  // empty when converged, else what stopped the iteration and |R|
+};
+
+// From x0. `system` is called once per trial point (and once at x0).
+[[nodiscard]] DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0,
+                                               const DampedNewtonOptions& options);
+// From x0 already evaluated (`at_x0` = system(x0)), for callers that compare several starts.
+[[nodiscard]] DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0, NewtonPoint at_x0,
+                                               const DampedNewtonOptions& options);
+
+}  // namespace bb::linalg

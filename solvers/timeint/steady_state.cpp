@@ -1,0 +1,172 @@
+#include "timeint/steady_state.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <stdexcept>
+#include <utility>
+
+namespace bb::timeint {
+
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+void validate(double omega, const SteadyStateOptions& options) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("steady state: " + what); };
+  if (!(std::isfinite(omega) && omega > 0.0)) fail(fmt::format("omega must be finite and > 0 (got {})", omega));
+  if (options.dofs.empty()) fail("at least one DOF to track");
+  if (options.harmonics < 0 || options.steps_per_period < 2 * (options.harmonics + 1))
+    fail("harmonics >= 0 and steps_per_period >= 2 (harmonics + 1)");
+  if (!(options.tolerance > 0.0) || options.min_cycles < 2 || options.max_cycles < options.min_cycles ||
+      options.periods_analysed < 1 || options.periods_analysed > options.min_cycles)
+    fail("tolerance > 0, 2 <= min_cycles <= max_cycles, 1 <= periods_analysed <= min_cycles");
+}
+
+// The state at t = 0: from `start` (displacements, velocities, sliders) or the static initial
+// state; nullopt (with out.failure set) when the static solve fails.
+std::optional<DynamicState> initial_state(const NewmarkIntegrator& integrator, const Excitation& excitation,
+                                          const SteadyStateOptions& options, const std::optional<DynamicState>& start,
+                                          SteadyState& out) {
+  if (start) {
+    std::vector<double> sliders;
+    for (const ContactSample& c : start->contacts) sliders.push_back(c.slider);
+    return integrator.initial_state(start->displacement, start->velocity, 0.0, excitation, sliders);
+  }
+  const StaticState s = static_initial_state(integrator.model(), options.initial);
+  if (!s.converged) {
+    out.failure = "steady state: no static initial state: " + s.failure;
+    return std::nullopt;
+  }
+  return integrator.initial_state(s.q, VectorXd::Zero(integrator.model().mass.rows()), 0.0, excitation, s.sliders);
+}
+
+// The largest sample-by-sample change between two periods relative to the DOF's largest value,
+// over the tracked DOFs (columns), period means removed when drift is ignored.
+double period_change(const MatrixXd& x, const MatrixXd& previous, bool ignore_drift) {
+  double change = 0.0;
+  for (Index j = 0; j < x.cols(); ++j) {
+    VectorXd now = x.col(j), before = previous.col(j);
+    if (ignore_drift) {
+      now.array() -= now.mean();
+      before.array() -= before.mean();
+    }
+    const double scale = x.col(j).cwiseAbs().maxCoeff();
+    const double d = (now - before).cwiseAbs().maxCoeff();
+    change = std::max(change, scale > 0.0 ? d / scale : (d > 0.0 ? INFINITY : 0.0));
+  }
+  return change;
+}
+
+// DFT over the last whole periods: theta_k = 2 pi k / n_t exactly (every period starts at a whole
+// number of periods from t = 0). Fills coefficients, amplitude and phase.
+void analyse(std::deque<MatrixXd>& periods, const SteadyStateOptions& options, SteadyState& out) {
+  const int n_t = options.steps_per_period, h_max = options.harmonics;
+  const Index nd = static_cast<Index>(options.dofs.size());
+  out.coefficients = MatrixXd::Zero(nd, 2 * h_max + 1);
+  const double samples = static_cast<double>(n_t) * static_cast<double>(periods.size());
+  if (options.ignore_drift && out.drift.size() == nd) {
+    // Remove the linear trend (drift per period spread over the samples) from the analysed periods.
+    for (size_t p = 0; p < periods.size(); ++p)
+      for (int k = 0; k < n_t; ++k)
+        periods[p].row(k) -= out.drift.transpose() * ((static_cast<double>(p) * n_t + k) / n_t - 0.5 * static_cast<double>(periods.size()));
+  }
+  for (const MatrixXd& x : periods) {
+    for (int k = 0; k < n_t; ++k) {
+      const double theta = 2.0 * std::numbers::pi * k / n_t;
+      for (Index j = 0; j < nd; ++j) {
+        out.coefficients(j, 0) += x(k, j) / samples;
+        for (int h = 1; h <= h_max; ++h) {
+          out.coefficients(j, 2 * h - 1) += 2.0 * x(k, j) * std::cos(h * theta) / samples;
+          out.coefficients(j, 2 * h) += 2.0 * x(k, j) * std::sin(h * theta) / samples;
+        }
+      }
+    }
+  }
+  out.amplitude = MatrixXd::Zero(nd, h_max + 1);
+  out.phase = MatrixXd::Zero(nd, h_max + 1);
+  for (Index j = 0; j < nd; ++j) {
+    out.amplitude(j, 0) = std::abs(out.coefficients(j, 0));
+    for (int h = 1; h <= h_max; ++h) {
+      const double a = out.coefficients(j, 2 * h - 1), b = out.coefficients(j, 2 * h);
+      out.amplitude(j, h) = std::hypot(a, b);
+      out.phase(j, h) = std::atan2(-b, a);
+    }
+  }
+}
+
+}  // namespace
+
+SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyStateOptions& options,
+                         const std::optional<DynamicState>& start) {
+  validate(omega, options);
+  const int n_t = options.steps_per_period;
+  NewmarkOptions nm = options.newmark;
+  nm.time_step = 2.0 * std::numbers::pi / (omega * n_t);
+  const NewmarkIntegrator integrator(model, nm);
+  const Index n = integrator.model().mass.rows();
+  for (const Index i : options.dofs)
+    if (i < 0 || i >= n) throw std::invalid_argument(fmt::format("steady state: tracked DOF {} is not in [0, {})", i, n));
+  const Excitation excitation = harmonic_excitation(integrator.model().harmonic_load, omega);
+
+  SteadyState out;
+  out.omega = omega;
+  out.drift = VectorXd::Zero(static_cast<Index>(options.dofs.size()));
+  std::optional<DynamicState> initial = initial_state(integrator, excitation, options, start, out);
+  if (!initial) return out;
+  DynamicState state = std::move(*initial);
+
+  const Index nd = static_cast<Index>(options.dofs.size());
+  std::deque<MatrixXd> periods;  // the last periods_analysed + 1 periods, n_t x nd samples each
+  std::vector<std::vector<ContactSample>> loop;
+  while (out.cycles < options.max_cycles) {
+    MatrixXd x(n_t, nd);
+    loop.assign(state.contacts.size(), {});
+    const WorkLedger work0 = state.work;
+    const double energy0 = integrator.mechanical_energy(state);
+    for (int k = 0; k < n_t; ++k) {
+      for (Index j = 0; j < nd; ++j) x(k, j) = state.displacement[options.dofs[static_cast<size_t>(j)]];
+      for (size_t c = 0; c < state.contacts.size(); ++c) loop[c].push_back(state.contacts[c]);
+      const StepReport r = integrator.step(state, excitation);
+      if (!r.converged) {
+        out.failure = fmt::format("steady state at omega = {:.9g} rad/s, period {}: {}", omega, out.cycles + 1, r.failure);
+        out.final_state = state;
+        return out;
+      }
+      out.total_iterations += r.iterations;
+      out.max_iterations = std::max(out.max_iterations, r.iterations);
+    }
+    for (size_t c = 0; c < state.contacts.size(); ++c) loop[c].push_back(state.contacts[c]);
+    ++out.cycles;
+    out.cycle_work = {.excitation = state.work.excitation - work0.excitation,
+                      .viscous = state.work.viscous - work0.viscous,
+                      .friction = state.work.friction - work0.friction,
+                      .normal = state.work.normal - work0.normal};
+    out.energy_change = integrator.mechanical_energy(state) - energy0;
+    if (!periods.empty()) {
+      out.drift = x.colwise().mean().transpose() - periods.back().colwise().mean().transpose();
+      out.change = period_change(x, periods.back(), options.ignore_drift);
+    }
+    periods.push_back(std::move(x));
+    if (static_cast<int>(periods.size()) > options.periods_analysed) periods.pop_front();
+    if (out.cycles >= options.min_cycles && out.change <= options.tolerance) {
+      out.converged = true;
+      break;
+    }
+  }
+  if (!out.converged)
+    out.failure = fmt::format("steady state at omega = {:.9g} rad/s not reached in {} periods: cycle-to-cycle "
+                              "change {:.3e} > tolerance {:.3e} (largest drift of a period mean {:.3e} m per period)",
+                              omega, out.cycles, out.change, options.tolerance, out.drift.cwiseAbs().maxCoeff());
+  analyse(periods, options, out);
+  out.contacts = std::move(loop);
+  out.final_state = state;
+  return out;
+}
+
+}  // namespace bb::timeint

@@ -9,6 +9,8 @@
 #include <limits>
 #include <numbers>
 
+#include <unsupported/Eigen/FFT>
+
 #include "common/errors.hpp"
 #include "ffrf/elastic_basis.hpp"
 #include "ffrf/rotating_body.hpp"
@@ -142,17 +144,27 @@ void add_oscillation_table(RotatingOutcome& o, const RotatingSpec& spec, const E
   const Index n = means.rows() - first;
   if (n < 64 || o.history.time.size() < 2) return;
   const double dt = (o.history.time.back() - o.history.time[static_cast<size_t>(first)]) / static_cast<double>(n - 1);
+  std::vector<AmplitudeSpectrum> spectra;
+  for (Index c = 0; c < means.cols(); ++c) spectra.emplace_back(means.col(c).tail(n), dt);
+  // A mode counts as excited when its peak stands above a millionth of the largest motion recorded.
+  double largest = 0.0;
+  for (Index c = 0; c < means.cols(); ++c) largest = std::max(largest, means.col(c).tail(n).array().abs().maxCoeff());
   std::vector<std::vector<double>> rows;
   std::vector<std::string> where, component;
-  for (Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m) {
-    const double f = o.modes_at_speed.frequencies_hz[m];
+  const Eigen::VectorXd& modes = o.modes_at_speed.frequencies_hz;
+  for (Index m = 0; m < modes.size(); ++m) {
+    const double f = modes[m];
     if (!(f > 0.0)) continue;
+    // Search within +-3 %, and never past halfway to a neighbouring mode (each peak is one mode's).
+    const double lo = m > 0 ? std::max(0.97 * f, 0.5 * (f + modes[m - 1])) : 0.97 * f;
+    const double hi = m + 1 < modes.size() ? std::min(1.03 * f, 0.5 * (f + modes[m + 1])) : 1.03 * f;
     SpectralPeak best{kNan, 0.0};
     Index best_column = 0;
     for (Index c = 0; c < means.cols(); ++c) {
-      const SpectralPeak p = spectral_peak(means.col(c).tail(n), dt, 0.97 * f, 1.03 * f);
+      const SpectralPeak p = spectra[static_cast<size_t>(c)].peak(lo, hi);
       if (std::isfinite(p.frequency_hz) && p.amplitude > best.amplitude) best = p, best_column = c;
     }
+    if (!(best.amplitude > 1e-6 * largest)) best = {kNan, best.amplitude};
     rows.push_back({static_cast<double>(m + 1), f, best.frequency_hz, best.amplitude});
     where.push_back(spec.histories[static_cast<size_t>(best_column / o.dim)]);
     component.push_back(fmt::format("u{}", axis_name(static_cast<int>(best_column % o.dim))));
@@ -163,15 +175,18 @@ void add_oscillation_table(RotatingOutcome& o, const RotatingSpec& spec, const E
   o.tables.emplace("oscillation", std::move(t));
 }
 
+// energy: the work-energy balance of the run, relative to the largest strain energy (the elastic
+// energy scale; the rotor's 1/2 J Omega^2 would hide any error in the elastic motion).
 void add_energy_table(RotatingOutcome& o) {
   const ffrf::FfrfHistory& h = o.history;
   if (h.time.empty()) return;
-  const double scale = std::max(*std::max_element(h.kinetic_energy.begin(), h.kinetic_energy.end()), 1e-300);
+  const double kinetic = *std::max_element(h.kinetic_energy.begin(), h.kinetic_energy.end());
+  const double strain = std::max(*std::max_element(h.strain_energy.begin(), h.strain_energy.end()), 1e-300);
   const double error = h.energy_balance_error();
-  o.tables.emplace("energy", table_from_rows("energy", {"run", "max_kinetic_j", "final_strain_j", "driving_work_j", "gravity_work_j",
+  o.tables.emplace("energy", table_from_rows("energy", {"run", "max_kinetic_j", "max_strain_j", "driving_work_j", "gravity_work_j",
                                                         "balance_error_j", "relative_error", "final_angular_momentum"},
-                                             {{1.0, scale, h.strain_energy.back(), h.driving_work.back(), h.gravity_work.back(),
-                                               error, error / scale, h.angular_momentum.back()}}));
+                                             {{1.0, kinetic, strain, h.driving_work.back(), h.gravity_work.back(), error, error / strain,
+                                               h.angular_momentum.back()}}));
 }
 
 void add_campbell_tables(RotatingOutcome& o, const ffrf::ProjectedBody& projected, const RotatingSpec& spec,
@@ -201,37 +216,78 @@ void add_campbell_tables(RotatingOutcome& o, const ffrf::ProjectedBody& projecte
   o.tables.emplace("rotating_modes", table_from_rows("rotating_modes", {"mode", "rest_hz", "frequency_hz", "growth_rate_1_s"}, mode_rows));
 }
 
+// stiffening: the run as specified and with the stiffening switched, each to its end or to the
+// time its divergence stops it; per variant the largest |u| of every history component, and the
+// speed at which its static operator turns singular (the spin-softening divergence).
+void add_stiffening_table(RotatingOutcome& o, const Model& model, const RotatingSpec& spec, const ffrf::ProjectedBody& projected,
+                          const ffrf::RotationProfile& profile, const ffrf::FfrfOptions& options) {
+  std::vector<std::string> cols = {"variant", "stiffening", "diverged", "end_time_s", "divergence_speed_rad_s"};
+  for (const std::string& s : spec.histories)
+    for (int d = 0; d < o.dim; ++d) cols.push_back(fmt::format("max_abs_{}.u{}_m", s, axis_name(d)));
+  std::vector<std::vector<double>> rows;
+  std::vector<std::string> notes;
+  for (const bool stiffening : {spec.stiffening, !spec.stiffening}) {
+    const double divergence = ffrf::divergence_speed(projected, stiffening);
+    std::vector<double> row = {static_cast<double>(rows.size() + 1), stiffening ? 1.0 : 0.0};
+    Eigen::MatrixXd means;
+    if (stiffening == spec.stiffening) {
+      means = o.set_histories;
+      row.insert(row.end(), {0.0, o.history.time.back()});
+      notes.emplace_back("reached the end");
+    } else {
+      ffrf::FfrfOptions other = options;
+      other.stiffening = stiffening;
+      try {
+        const ffrf::FfrfHistory h = ffrf::integrate(projected, profile, other);
+        means = set_means(model, spec, h.displacement);
+        row.insert(row.end(), {0.0, h.time.back()});
+        notes.emplace_back("reached the end");
+      } catch (const ffrf::DivergenceError& e) {
+        // The divergence is the finding: when it stopped the run.
+        row.insert(row.end(), {1.0, e.time()});
+        notes.emplace_back(e.what());
+      }
+    }
+    row.push_back(std::isfinite(divergence) ? divergence : kNan);
+    for (Index c = 0; c < static_cast<Index>(spec.histories.size()) * o.dim; ++c)
+      row.push_back(means.rows() > 0 ? means.col(c).cwiseAbs().maxCoeff() : kNan);
+    rows.push_back(std::move(row));
+  }
+  ResultTable t = table_from_rows("stiffening", cols, rows);
+  t.add_text_column("outcome", notes);
+  o.tables.emplace("stiffening", std::move(t));
+}
+
 }  // namespace
 
-SpectralPeak spectral_peak(const Eigen::VectorXd& signal, double dt, double f_lo, double f_hi) {
+AmplitudeSpectrum::AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt) {
   const Index n = signal.size();
-  const Eigen::VectorXd x = signal.array() - signal.mean();
-  Eigen::VectorXd window(n);
-  for (Index i = 0; i < n; ++i) window[i] = 0.5 - 0.5 * std::cos(kTwoPi * static_cast<double>(i) / static_cast<double>(n - 1));
-  const Eigen::VectorXd xw = x.cwiseProduct(window);
-  // Frequency grid 4x finer than the record's resolution 1 / (n dt).
-  const double df = 0.25 / (static_cast<double>(n) * dt);
-  const int points = std::max(3, static_cast<int>(std::ceil((f_hi - f_lo) / df)) + 1);
-  Eigen::VectorXd power(points);
-  for (int k = 0; k < points; ++k) {
-    const double w = kTwoPi * (f_lo + k * df) * dt;
-    // Goertzel's recurrence: |sum x_i e^{-i w i}|^2 in one pass.
-    double s1 = 0.0, s2 = 0.0;
-    const double c = 2 * std::cos(w);
-    for (Index i = 0; i < n; ++i) {
-      const double s0 = xw[i] + c * s1 - s2;
-      s2 = s1;
-      s1 = s0;
-    }
-    power[k] = s1 * s1 + s2 * s2 - c * s1 * s2;
-  }
+  Index padded = 1;
+  while (padded < 4 * n) padded *= 2;  // 4x zero padding: bins a quarter of the record's resolution
+  std::vector<double> x(static_cast<size_t>(padded), 0.0);
+  const double mean = signal.mean();
+  for (Index i = 0; i < n; ++i)
+    x[static_cast<size_t>(i)] = (signal[i] - mean) * (0.5 - 0.5 * std::cos(kTwoPi * static_cast<double>(i) / static_cast<double>(n - 1)));
+  std::vector<std::complex<double>> spectrum;
+  Eigen::FFT<double> fft;
+  fft.fwd(spectrum, x);
+  amplitude_.resize(padded / 2);
+  // A sinusoid of amplitude A gives |X| = A n / 4 under the Hann window.
+  for (Index k = 0; k < padded / 2; ++k) amplitude_[k] = 4.0 * std::abs(spectrum[static_cast<size_t>(k)]) / static_cast<double>(n);
+  df_ = 1.0 / (static_cast<double>(padded) * dt);
+}
+
+SpectralPeak AmplitudeSpectrum::peak(double f_lo, double f_hi) const {
+  const Index lo = std::max<Index>(static_cast<Index>(std::ceil(f_lo / df_)), 1);
+  const Index hi = std::min<Index>(static_cast<Index>(std::floor(f_hi / df_)), amplitude_.size() - 2);
+  if (hi - lo < 2) return {kNan, 0.0};
   Index k = 0;
-  power.maxCoeff(&k);
-  if (k == 0 || k + 1 == points) return {kNan, 0.0};
-  const double y0 = std::sqrt(power[k - 1]), y1 = std::sqrt(power[k]), y2 = std::sqrt(power[k + 1]);
+  amplitude_.segment(lo, hi - lo + 1).maxCoeff(&k);
+  k += lo;
+  if (k == lo || k == hi) return {kNan, 0.0};
+  const double y0 = amplitude_[k - 1], y1 = amplitude_[k], y2 = amplitude_[k + 1];
   const double shift = 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2);
-  // A sinusoid of amplitude A gives |sum| = A n / 4 under the Hann window.
-  return {f_lo + (static_cast<double>(k) + shift) * df, 4.0 * (y1 - 0.25 * (y0 - y2) * shift) / static_cast<double>(n)};
+  return {(static_cast<double>(k) + shift) * df_, y1 - 0.25 * (y0 - y2) * shift};
 }
 
 RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
@@ -277,7 +333,8 @@ RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
   o.history = ffrf::integrate(projected, profile, options);
   o.run_seconds = seconds_since(t1);
 
-  const Eigen::MatrixXd means = set_means(model, spec, o.history.displacement);
+  o.set_histories = set_means(model, spec, o.history.displacement);
+  const Eigen::MatrixXd& means = o.set_histories;
   add_history_table(o, spec, means);
   add_deflection_table(o, model, spec, body, means);
   add_energy_table(o);
@@ -285,6 +342,7 @@ RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
   add_campbell_tables(o, modal_body, spec, mode_options);
   o.campbell_seconds = seconds_since(t2);
   add_oscillation_table(o, spec, means);
+  if (spec.compare_stiffening) add_stiffening_table(o, model, spec, projected, profile, options);
   const double steps = std::max(1.0, static_cast<double>(o.history.steps));
   o.tables.emplace("rotating_cost",
                    table_from_rows("rotating_cost", {"run", "free_dofs", "basis_size", "time_step_s", "steps", "factorizations", "setup_s",

@@ -17,6 +17,7 @@ struct RotatingOutcome {
   ResultTables tables;
   ffrf::FfrfHistory history;
   std::vector<std::string> history_sets;  // in spec.histories order
+  Eigen::MatrixXd set_histories;          // every step x (sets * dim): the sets' mean displacements [m]
   int dim = 2;
   ffrf::CampbellDiagram campbell;
   std::vector<ffrf::EngineOrderCrossing> crossings;
@@ -31,13 +32,22 @@ struct RotatingOutcome {
 // when the run diverges (energy blow-up, spin-softening divergence: the message names the time).
 RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec);
 
-// The dominant frequency of `signal` (sampled every dt) within [f_lo, f_hi]: the local maximum of
-// its Hann-windowed spectrum, refined by a parabola; NaN when the maximum sits on the window's edge
-// (no peak in the band). The amplitude is the sinusoid's [same unit as the signal].
+// The amplitude spectrum of a sampled signal (mean removed, Hann window, zero-padded FFT), and its
+// dominant peak in a band: the local maximum refined by a parabola; NaN when the maximum sits on the
+// band's edge (no peak inside). Amplitudes are those of sinusoids [the signal's unit].
 struct SpectralPeak {
   double frequency_hz = 0.0;
   double amplitude = 0.0;
 };
-SpectralPeak spectral_peak(const Eigen::VectorXd& signal, double dt, double f_lo, double f_hi);
+class AmplitudeSpectrum {
+ public:
+  AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt);
+  SpectralPeak peak(double f_lo, double f_hi) const;
+  double resolution_hz() const { return df_; }
+
+ private:
+  Eigen::VectorXd amplitude_;  // per bin
+  double df_ = 0.0;            // bin width [Hz]
+};
 
 }  // namespace bb

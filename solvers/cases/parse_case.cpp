@@ -79,6 +79,15 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
     r.fail("reference", "give either 'reference' (a CSV file) or 'reference_result' (a result table of this run)");
   if (r.has("reference")) c.reference = folder / r.string("reference");
   else c.reference_result = r.string("reference_result");
+  if (r.has("reference_case")) {
+    if (c.reference_result.empty()) r.fail("reference_case", "names the case whose result table 'reference_result' is compared with");
+    c.reference_case = folder / r.string("reference_case");
+    if (!fs::is_regular_file(c.reference_case)) r.fail("reference_case", fmt::format("no case file {}", c.reference_case.string()));
+  }
+  const std::string expect = r.choice("expect", {"equal", "at_most", "at_least"}, "equal");
+  c.relation = expect == "at_most" ? CheckSpec::Relation::at_most
+               : expect == "at_least" ? CheckSpec::Relation::at_least
+                                      : CheckSpec::Relation::equal;
   c.key = r.string("key");
   TomlReader compare(r.table("compare"), r.path() + ".compare", r.file());
   for (const auto& [k, v] : r.table("compare")) {

@@ -98,6 +98,7 @@ RotatingSpec parse_rotating(TomlReader& r) {
   }
   s.stiffening = r.boolean("stiffening", s.stiffening);
   s.coriolis = r.boolean("coriolis", s.coriolis);
+  s.compare_stiffening = r.boolean("compare_stiffening", s.compare_stiffening);
   s.modal_basis = r.choice("elastic_coordinates", {"modal", "nodal"}, "modal") == "modal";
   if (const auto m = r.optional_integer("basis_modes")) {
     if (*m < 1 || *m > 2000) r.fail("basis_modes", "must lie in [1, 2000]");

@@ -13,7 +13,11 @@ struct CheckSpec {
   std::string name;
   std::string result;                 // result table, e.g. "nodal_displacements"
   std::filesystem::path reference;    // CSV, resolved against the case file's folder; or empty when
-  std::string reference_result;       // another result table of the same run is the reference
+  std::string reference_result;       // another result table of the same run is the reference,
+  std::filesystem::path reference_case;  // or of this other case's run (its analysis only, not its checks)
+  // How computed compares with reference: equal within the tolerance, or one-sided (at most /
+  // at least the reference, give or take the tolerance), e.g. "this mesh is stiffer than that one".
+  enum class Relation { equal, at_most, at_least } relation = Relation::equal;
   std::string key;                    // key column of the reference, e.g. "node"
   std::vector<std::pair<std::string, std::string>> compare;  // result column -> reference column
   std::vector<long> keys;             // compare only these reference rows; empty = every row

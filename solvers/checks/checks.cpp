@@ -67,12 +67,22 @@ ReferenceColumn result_reference_column(const ResultTables& results, const std::
 }
 
 std::string reference_name(const CheckSpec& check) {
+  if (!check.reference_case.empty()) return fmt::format("result {} of {}", check.reference_result, check.reference_case.filename().string());
   return check.reference_result.empty() ? check.reference.string() : "result " + check.reference_result;
 }
 
 }  // namespace
 
-std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results) {
+const char* relation_symbol(CheckSpec::Relation relation) {
+  switch (relation) {
+    case CheckSpec::Relation::equal: return "=";
+    case CheckSpec::Relation::at_most: return "<=";
+    case CheckSpec::Relation::at_least: return ">=";
+  }
+  return "?";
+}
+
+std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results, const ResultTables* reference_results) {
   auto table_it = results.find(check.result);
   if (table_it == results.end())
     throw InputError(fmt::format("{}: check '{}' asks for result '{}', which this analysis does not produce",
@@ -91,7 +101,8 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
     ReferenceColumn ref;
     try {
       ref = check.reference_result.empty() ? read_reference_column(check.reference, check.key, reference_column)
-                                           : result_reference_column(results, check.reference_result, check.key, reference_column);
+                                           : result_reference_column(reference_results ? *reference_results : results,
+                                                                     check.reference_result, check.key, reference_column);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: check '{}': {}", check.at.where(), check.name, e.what()));
     }
@@ -116,7 +127,13 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
       e.rel_error = e.reference != 0.0 ? e.abs_error / std::abs(e.reference)
                                        : (e.abs_error == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
       e.tolerance = check.abs_tol + check.rel_tol * std::abs(e.reference);
-      e.pass = std::isfinite(e.computed) && e.abs_error <= e.tolerance;
+      e.relation = check.relation;
+      switch (check.relation) {
+        case CheckSpec::Relation::equal: e.pass = e.abs_error <= e.tolerance; break;
+        case CheckSpec::Relation::at_most: e.pass = e.computed <= e.reference + e.tolerance; break;
+        case CheckSpec::Relation::at_least: e.pass = e.computed >= e.reference - e.tolerance; break;
+      }
+      e.pass = e.pass && std::isfinite(e.computed);
       entries.push_back(e);
     }
   }

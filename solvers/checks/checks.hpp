@@ -20,6 +20,7 @@ struct CheckEntry {
   double abs_error = 0.0;
   double rel_error = 0.0;  // abs_error / |reference|, infinity for a zero reference with a nonzero error
   double tolerance = 0.0;  // abs_tol + rel_tol * |reference|
+  CheckSpec::Relation relation = CheckSpec::Relation::equal;
   bool pass = false;
 };
 
@@ -33,7 +34,12 @@ struct ReferenceColumn {
 ReferenceColumn read_reference_column(const std::filesystem::path& file, const std::string& key_column,
                                       const std::string& value_column);
 
-// Throws InputError when the reference names a row the results do not have.
-std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results);
+// Throws InputError when the reference names a row the results do not have. A reference_result is
+// looked up in `reference_results` when given (the run of check.reference_case), else in `results`.
+std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results,
+                                       const ResultTables* reference_results = nullptr);
+
+// "=", "<=" or ">=": how an entry's computed value must relate to its reference.
+const char* relation_symbol(CheckSpec::Relation relation);
 
 }  // namespace bb

@@ -40,8 +40,8 @@ void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
   for (const std::string& w : r.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
   for (const bb::CheckEntry& e : r.checks)
     if (!e.pass)
-      std::fprintf(stderr, "  FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n", e.name.c_str(),
-                   e.computed, e.reference, e.abs_error, e.tolerance);
+      std::fprintf(stderr, "  FAIL %s: computed %.9g, expected %s reference %.9g (tolerance %.3g, |error| %.3g)\n", e.name.c_str(),
+                   e.computed, bb::relation_symbol(e.relation), e.reference, e.tolerance, e.abs_error);
 }
 
 // A subcommand's body: bad input -> exit 2, any other failure -> exit 3, the message on stderr.

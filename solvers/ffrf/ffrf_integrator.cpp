@@ -135,8 +135,8 @@ class Ledger {
       hint = " Geometric stiffening is off: above the lowest natural frequency of the motions in the plane of "
              "rotation the spin-softened model has no stable equilibrium, the divergence of the linear FFRF model "
              "described by Kane, Ryan & Banerjee (1987).";
-    throw SolverError(fmt::format("FFRF run diverged at t = {:.6g} s (Omega = {:.6g} rad/s): {}.{}", s.t, s.omega,
-                                  why, hint));
+    throw DivergenceError(fmt::format("FFRF run diverged at t = {:.6g} s (Omega = {:.6g} rad/s): {}.{}", s.t, s.omega, why, hint),
+                          s.t, s.omega);
   }
 
   const detail::Dynamics& d_;

@@ -24,6 +24,7 @@
 // factorization per run). Free rotation: Newton per step on the accelerations (exact Jacobian;
 // nodal basis: modified Newton with one factorization per step).
 #pragma once
+#include "common/errors.hpp"
 #include <Eigen/Dense>
 #include <functional>
 #include <vector>
@@ -105,8 +106,21 @@ struct FfrfHistory {
   double energy_balance_error() const;
 };
 
+// A run that blew up (energy growth, a deflection beyond the small-deformation model, a non-finite
+// value): a SolverError that also says when, for callers that report the divergence as a finding.
+class DivergenceError : public SolverError {
+ public:
+  DivergenceError(const std::string& message, double time, double speed) : SolverError(message), time_(time), speed_(speed) {}
+  double time() const { return time_; }    // [s]
+  double speed() const { return speed_; }  // Omega then [rad/s]
+
+ private:
+  double time_, speed_;
+};
+
 // Integrates from t = 0 to end_time. Throws InputError for invalid options (message says what to
-// change) and SolverError when the run diverges or a step does not converge (message names the time).
+// change), DivergenceError when the run diverges and SolverError when a step does not converge
+// (messages name the time).
 [[nodiscard]] FfrfHistory integrate(const ProjectedBody& body, const RotationProfile& rotation,
                                     const FfrfOptions& options);
 

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <map>
 
 #include <unistd.h>
 
@@ -32,8 +33,18 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
   const AnalysisResults results = run_analysis(spec.analysis, model, progress);
   if (progress) std::fputs("\r\033[K", stderr);
   describe_analysis(spec.analysis, results, run);
+  std::map<fs::path, AnalysisResults> other_cases;  // runs of the cases some checks compare with
   for (const CheckSpec& c : spec.checks) {
-    auto entries = evaluate_check(c, results.tables);
+    const ResultTables* reference = nullptr;
+    if (!c.reference_case.empty()) {
+      auto it = other_cases.find(c.reference_case);
+      if (it == other_cases.end()) {
+        const CaseSpec other = parse_case_file(c.reference_case);
+        it = other_cases.emplace(c.reference_case, run_analysis(other.analysis, build_model(other.model))).first;
+      }
+      reference = &it->second.tables;
+    }
+    auto entries = evaluate_check(c, results.tables, reference);
     run.checks.insert(run.checks.end(), entries.begin(), entries.end());
   }
   fs::create_directories(out);

@@ -72,8 +72,13 @@ void plots(const HbmSpec&, const HbmOutcome& h, const PlotTarget& t) {
 
 void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget& t) {
   for (size_t s = 0; s < o.history_sets.size(); ++s)
-    for (int d = 0; d < o.dim; ++d)
-      t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, fmt::format("history_{}_u{}", o.history_sets[s], "xyz"[d])));
+    for (int d = 0; d < std::min(o.dim, 2); ++d) {  // x and y, as the thesis (the z motion of a blade turning about z is nil)
+      const std::string stem = fmt::format("history_{}_u{}", o.history_sets[s], "xyz"[d]);
+      t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem));
+      // The first few periods of the first rotating mode, where the oscillation can be seen.
+      const double f1 = o.modes_at_speed.frequencies_hz.size() > 0 ? o.modes_at_speed.frequencies_hz[0] : 0.0;
+      if (f1 > 0 && spec.end_time > 20.0 / f1) t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem + "_zoom", 20.0 / f1));
+    }
   t.run.plots.push_back(plot_campbell(o, spec.engine_orders, t.out, "campbell"));
 }
 

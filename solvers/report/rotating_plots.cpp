@@ -9,25 +9,34 @@ namespace bb {
 
 namespace fs = std::filesystem;
 
-Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, const fs::path& out_dir, const std::string& stem) {
+Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, const fs::path& out_dir, const std::string& stem,
+                           double zoom) {
   const char axis = "xyz"[direction];
   const std::string name = o.history_sets.at(set);
-  const ResultTable& h = o.tables.at("histories");
-  const auto column = h.column_index(fmt::format("{}.u{}_m", name, axis));
   const ResultTable& d = o.tables.at("deflection");
   const auto static_column = d.column_index(fmt::format("static_u{}_m", axis));
   {
+    // The whole run from histories.csv's rows; a zoom from every step.
     std::ofstream out = open_plot_data(out_dir, stem);
     out << "# time_s u_m\n";
-    for (Eigen::Index i = 0; i < h.values.rows(); ++i) out << h.values(i, 1) << ' ' << h.values(i, *column) << '\n';
+    if (zoom > 0) {
+      const Eigen::Index c = static_cast<Eigen::Index>(set) * o.dim + direction;
+      for (size_t i = 0; i < o.history.time.size() && o.history.time[i] <= zoom; ++i)
+        out << o.history.time[i] << ' ' << o.set_histories(static_cast<Eigen::Index>(i), c) << '\n';
+    } else {
+      const ResultTable& h = o.tables.at("histories");
+      const auto column = h.column_index(fmt::format("{}.u{}_m", name, axis));
+      for (Eigen::Index i = 0; i < h.values.rows(); ++i) out << h.values(i, 1) << ' ' << h.values(i, *column) << '\n';
+    }
   }
   const double steady = d.values(static_cast<Eigen::Index>(set), *static_column);
-  const std::string title = fmt::format("Node set '{}': {} displacement in the rotating frame ({})", name, axis, o.profile);
+  const std::string title = fmt::format("Node set '{}': {} displacement in the rotating frame ({}){}", name, axis, o.profile,
+                                        zoom > 0 ? fmt::format(", first {:g} s", zoom) : "");
   const std::string script = fmt::format(
-      "set title '{}'\nset xlabel 'time [s]'\nset ylabel 'u_{} [m]'\nset grid\nset key bottom right\n"
+      "set title '{}'\nset xlabel 'time [s]'\nset ylabel 'u_{} [m]'\nset grid\nset key bottom right\n{}"
       "plot '{}.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_{}', {:.12g} with lines dt 2 lc rgb '#bf1f1f' title 'steady "
       "centrifugal deflection'\n",
-      gnuplot_quote(title), axis, stem, axis, steady);
+      gnuplot_quote(title), axis, zoom > 0 ? fmt::format("set xrange [0:{:g}]\n", zoom) : "", stem, axis, steady);
   return draw(out_dir, stem, title, script);
 }
 
@@ -45,10 +54,14 @@ Plot plot_campbell(const RotatingOutcome& o, const std::vector<int>& engine_orde
     if (o.crossings.empty()) out << "nan nan nan\n";
   }
   const double top = c.speeds.empty() ? 1.0 : c.speeds.back();
+  // Up to the third mode (or the highest engine-order line, if higher): the crossings a designer reads.
+  double f_top = 0.0;
+  for (int eo : engine_orders) f_top = std::max(f_top, eo * top / (2 * 3.141592653589793));
+  if (c.frequencies_hz.size() > 0) f_top = std::max(f_top, c.frequencies_hz.col(std::min<Eigen::Index>(2, c.frequencies_hz.cols() - 1)).maxCoeff());
   const std::string title = "Campbell diagram: rotating modes (lines) and engine-order lines (dashed)";
   std::string script = fmt::format("set title '{}'\nset xlabel 'speed [rad/s]'\nset ylabel 'frequency [Hz]'\nset grid\nset key outside right\n"
-                                   "set xrange [0:{:.12g}]\nset yrange [0:*]\nset datafile missing 'nan'\nplot ",
-                                   gnuplot_quote(title), top);
+                                   "set xrange [0:{:.12g}]\nset yrange [0:{:.12g}]\nset datafile missing 'nan'\nplot ",
+                                   gnuplot_quote(title), top, 1.15 * f_top);
   for (Eigen::Index m = 0; m < c.frequencies_hz.cols(); ++m)
     script += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints pt 7 ps 0.4 title 'mode {}'", m ? ", \\\n     " : "", stem, m, m + 1);
   script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points pt 6 ps 1.2 lc rgb 'black' title 'crossings'", stem,

@@ -169,9 +169,10 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     out << '\n';
   }
   if (!run.check_specs.empty()) {
-    out << "## Checks\n\nAn entry passes when |computed - reference| <= abs_tol + rel_tol * |reference|.\n\n";
-    out << "| check | reference file | source | abs_tol | rel_tol | entries | failed | max abs error | max rel error |\n"
-           "|---|---|---|---|---|---|---|---|---|\n";
+    out << "## Checks\n\nAn entry passes when |computed - reference| <= abs_tol + rel_tol * |reference| (expect `=`), or, one-sided,\n"
+           "when computed <= reference + tolerance (`<=`) or computed >= reference - tolerance (`>=`).\n\n";
+    out << "| check | reference | expect | source | abs_tol | rel_tol | entries | failed | max abs error | max rel error |\n"
+           "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CheckSpec& spec : run.check_specs) {
       int n = 0, failed = 0;
       double max_abs = 0.0, max_rel = 0.0;
@@ -182,9 +183,13 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
         max_abs = std::max(max_abs, e.abs_error);
         if (std::isfinite(e.rel_error) && e.reference != 0.0) max_rel = std::max(max_rel, e.rel_error);
       }
-      out << fmt::format("| {} | `{}` | {} | {} | {} | {} | {} | {} | {} |\n", spec.name,
-                         spec.reference_result.empty() ? spec.reference.filename().string() : "result " + spec.reference_result, spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol),
-                         sci(spec.rel_tol), n, failed, sci(max_abs), sci(max_rel));
+      const std::string reference = !spec.reference_case.empty()   ? fmt::format("result {} of {}", spec.reference_result,
+                                                                              spec.reference_case.filename().string())
+                                    : spec.reference_result.empty() ? spec.reference.filename().string()
+                                                                    : "result " + spec.reference_result;
+      out << fmt::format("| {} | `{}` | {} | {} | {} | {} | {} | {} | {} | {} |\n", spec.name, reference, relation_symbol(spec.relation),
+                         spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol), sci(spec.rel_tol), n, failed, sci(max_abs),
+                         sci(max_rel));
     }
     out << "\n<details><summary>Every entry</summary>\n\n";
     out << "| entry | computed | reference | abs error | rel error | tolerance | pass |\n|---|---|---|---|---|---|---|\n";

@@ -1,0 +1,9 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'history_mid_uy_zoom.svg'
+set title 'Node set ''mid'': y displacement in the rotating frame (constant speed 300 rad/s), first 0.104054 s'
+set xlabel 'time [s]'
+set ylabel 'u_y [m]'
+set grid
+set key bottom right
+set xrange [0:0.104054]
+plot 'history_mid_uy_zoom.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_y', 7.48270297268e-06 with lines dt 2 lc rgb '#bf1f1f' title 'steady centrifugal deflection'

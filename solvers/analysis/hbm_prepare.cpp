@@ -1,0 +1,155 @@
+// The model of an hbm analysis assembled once: the linear model (Craig-Bampton, file or matrices),
+// the damper and its static pre-solve, the contacts, loads and responses as model DOFs.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <stdexcept>
+
+#include "analysis/frf_analysis.hpp"
+#include "analysis/hbm_analysis.hpp"
+#include "analysis/modal_analysis.hpp"
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::Index;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Coordinates of a one-node set.
+std::array<double, 2> point_position(const Model& model, const std::string& point) {
+  const auto it = model.node_sets.find(point);
+  if (it == model.node_sets.end() || it->second.size() != 1)
+    throw InputError(fmt::format("'analysis.damper': '{}' is not a one-node set of the mesh; give the point's 'position'", point));
+  const auto x = model.mesh.coords.row(it->second.front());
+  return {x[0], x[1]};
+}
+
+damper::RigidDamper build_damper(const Model& model, const DamperSpec& spec, const ReducedModel& blades) {
+  damper::RigidDamper d;
+  d.mass = spec.mass;
+  d.inertia = spec.inertia;
+  for (const DamperPointSpec& p : spec.points) {
+    damper::DamperContact c;
+    c.name = p.name;
+    const std::array<double, 2> at = p.position ? *p.position : point_position(model, p.point);
+    c.position = Eigen::Vector2d(at[0] - spec.centre[0], at[1] - spec.centre[1]);
+    c.normal = p.left_face ? damper::left_face_normal(spec.left_face_deg) : damper::right_face_normal(spec.right_face_deg);
+    if (!p.point.empty()) std::tie(c.blade_x, c.blade_y) = damper::platform_dofs(blades, p.point);
+    d.contacts.push_back(c);
+  }
+  try {
+    damper::validate(d, blades.size());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("'analysis.damper': {}", e.what()));
+  }
+  return d;
+}
+
+// Model DOF of a named DOF: the linear model's, or "damper.x" / "damper.y" after them.
+Index dof_index(const PreparedHbm& p, const ReducedModel& blades, const PointDof& dof, const std::string& where) {
+  if (p.damper && dof.point == "damper" && dof.direction < 2) return p.blade_dofs + dof.direction;
+  const auto i = blades.index_of(dof.point, dof.direction);
+  if (!i) throw InputError(fmt::format("{}: the model has no DOF {}", where, dof.name()));
+  return *i;
+}
+
+Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& blades, const std::vector<std::pair<PointDof, double>>& terms,
+                                   Index n, const std::string& where) {
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n);
+  for (const auto& [dof, c] : terms) row[dof_index(p, blades, dof, where)] += c;
+  return row;
+}
+
+}  // namespace
+
+Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model) {
+  Eigen::MatrixXd k = model.stiffness;
+  for (const hbm::ContactElement& c : model.contacts)
+    k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+  return k;
+}
+
+PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
+  const auto t0 = Clock::now();
+  PreparedHbm p;
+  FreeSystem system;
+  if (!spec.model.masters.empty()) system = assemble_free_system(model);
+  p.linear = build_reduced_model(model, system, spec.model, &p.timing);
+  const ReducedModel& blades = p.linear;
+  p.blade_dofs = blades.size();
+  for (const ReducedDof& d : blades.dofs) p.dof_names.push_back(d.name());
+  {
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(blades.stiffness, blades.mass, Eigen::EigenvaluesOnly);
+    p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
+  }
+  const Eigen::MatrixXd blade_damping = spec.damping_matrix ? *spec.damping_matrix : damping_matrix(spec.damping, blades);
+  hbm::HbmModel& m = p.model;
+  if (spec.damper) {
+    p.damper = build_damper(model, *spec.damper, blades);
+    p.centrifugal_force = spec.damper->centrifugal_force;
+    const damper::CoupledSystem coupled = damper::assemble_coupled_system(blades.mass, blades.stiffness, *p.damper);
+    m.mass = coupled.mass;
+    m.stiffness = coupled.stiffness;
+    for (const char* n : {"damper.x", "damper.y", "damper.theta"}) p.dof_names.push_back(n);
+  } else {
+    m.mass = blades.mass;
+    m.stiffness = blades.stiffness;
+  }
+  const Index n = m.mass.rows();
+  m.damping = Eigen::MatrixXd::Zero(n, n);
+  m.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) = blade_damping;  // the rigid damper has none of its own
+  m.static_load = Eigen::VectorXd::Zero(n);
+  const std::string in_analysis = spec.at.where() + ": 'analysis'";
+  for (const auto& [dof, f] : spec.static_loads) m.static_load[dof_index(p, blades, dof, in_analysis + " static_loads")] += f;
+  if (spec.damper) {
+    const damper::ContactKinematics kin = damper::contact_kinematics(*p.damper, p.blade_dofs);
+    contact::JenkinsParameters law = spec.damper->law;
+    law.n0 = 0.0;  // contacts just touch at q = 0; CF loads them through the static balance
+    for (size_t c = 0; c < p.damper->contacts.size(); ++c) {
+      m.contacts.push_back({law, kin.tangential.row(static_cast<Index>(c)), kin.normal.row(static_cast<Index>(c))});
+      p.contact_names.push_back(p.damper->contacts[c].name);
+    }
+    m.static_load += damper::centrifugal_load(p.blade_dofs, spec.damper->centrifugal_force);
+    damper::DamperStaticOptions options;
+    options.kn = law.kn;
+    p.damper_static = damper::solve_damper_static(blades.stiffness, *p.damper, m.static_load, options);
+    if (!p.damper_static->converged)
+      throw InputError(fmt::format("'analysis.damper': the static pre-solve (CF = {} N) has no equilibrium: {}",
+                                   spec.damper->centrifugal_force, p.damper_static->failure));
+    // The damper seats without friction (eq 3.49): each slider rests where its contact came to rest.
+    for (hbm::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(p.damper_static->q);
+  }
+  for (const HbmContactSpec& c : spec.contacts) {
+    const std::string where = fmt::format("{}: contact '{}'", c.at.where(), c.name);
+    m.contacts.push_back({c.law, combination_row(p, blades, c.tangential, n, where),
+                          c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where)});
+    p.contact_names.push_back(c.name);
+  }
+  m.harmonic_load = Eigen::VectorXcd::Zero(n);
+  for (const FrfForce& f : spec.forces) m.harmonic_load[dof_index(p, blades, f.dof, in_analysis + " forces")] += f.amplitude / spec.forces.front().amplitude;
+  for (const PointDof& r : spec.responses) {
+    p.responses.push_back(dof_index(p, blades, r, in_analysis + " responses"));
+    p.response_names.push_back(r.name());
+  }
+  if (spec.ip_oop)
+    p.ip_oop.emplace(dof_index(p, blades, spec.ip_oop->first, in_analysis + " ip_oop"), dof_index(p, blades, spec.ip_oop->second, in_analysis + " ip_oop"));
+  if (!m.contacts.empty()) {  // a time integration may run the linear model alone
+    try {
+      const hbm::HarmonicBalance check(m, {});  // sizes, contact laws and a nonsingular non-contact part
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("'analysis': {}", e.what()));
+    }
+  }
+  p.setup_seconds = seconds_since(t0);
+  return p;
+}
+
+}  // namespace bb

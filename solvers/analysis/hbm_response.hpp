@@ -1,0 +1,22 @@
+// Quantities of a harmonic-balance solution that the sweep, the peaks and the tables share: the
+// first harmonic of every model DOF and the in-phase / out-of-phase components of a peak.
+#pragma once
+#include <Eigen/Dense>
+
+#include "analysis/hbm_analysis.hpp"
+#include "hbm/harmonic_balance.hpp"
+
+namespace bb {
+
+// First-harmonic complex amplitude of each model DOF (Re(Z e^{i theta}) = a cos + b sin).
+Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega);
+
+// What a peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) measures in a response
+// z: the component that peaks, and the amplitude of the right (or first) response.
+struct PeakValues {
+  double component = 0.0;
+  double amplitude = 0.0;
+};
+PeakValues peak_values(const PreparedHbm& p, const Eigen::VectorXcd& z, int kind);
+
+}  // namespace bb

@@ -1,0 +1,306 @@
+// One force level of an hbm analysis: the sweep in frequency (a grid of Newton solves, or
+// pseudo-arclength continuation), the peaks refined by golden-section search, the sensitivities.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <map>
+#include <numbers>
+#include <optional>
+
+#include "analysis/hbm_analysis.hpp"
+#include "analysis/hbm_response.hpp"
+#include "frf/sweep.hpp"
+#include "hbm/sensitivity.hpp"
+
+namespace bb {
+
+Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega) {
+  const Eigen::MatrixXd q = system.recover(x, omega);
+  return q.col(1).cast<std::complex<double>>() - std::complex<double>(0.0, 1.0) * q.col(2).cast<std::complex<double>>();
+}
+
+
+PeakValues peak_values(const PreparedHbm& p, const Eigen::VectorXcd& z, int kind) {
+  if (!p.ip_oop) return {std::abs(z[p.responses.front()]), std::abs(z[p.responses.front()])};
+  const auto [l, r] = *p.ip_oop;
+  const double c = kind == 0 ? std::abs(z[l] + z[r]) / 2 : std::abs(z[r] - z[l]) / 2;
+  return {c, std::abs(z[r])};
+}
+
+std::string hbm_frf_table_name(double force) { return fmt::format("frf_{:g}", force); }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::Index;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
+// by golden-section search between the path's neighbours of the largest point (where the path does
+// not fold there), each trial a Newton solve from the nearest path point.
+HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, const HbmLevel& level, int kind) {
+  const auto& pts = level.path.points;
+  const Eigen::VectorXd values = p.ip_oop ? level.components.col(kind) : level.amplitude.col(0);
+  Index k = 0;
+  values.maxCoeff(&k);
+  HbmPeak peak;
+  peak.kind = p.ip_oop ? (kind == 0 ? "IP" : "OOP") : "peak";
+  auto solve = [&](double omega) {
+    size_t nearest = 0;
+    for (size_t i = 1; i < pts.size(); ++i)
+      if (std::abs(pts[i].omega - omega) < std::abs(pts[nearest].omega - omega)) nearest = i;
+    return hbm::solve_at_frequency(system, omega, pts[nearest].x);
+  };
+  auto value = [&](const hbm::HbmSolution& s) { return peak_values(p, first_harmonic(system, s.x, s.omega), kind); };
+  hbm::HbmSolution best = solve(pts[static_cast<size_t>(k)].omega);
+  const bool interior = k > 0 && k + 1 < static_cast<Index>(pts.size());
+  if (interior) {
+    const double a = pts[static_cast<size_t>(k - 1)].omega, b = pts[static_cast<size_t>(k + 1)].omega;
+    if ((pts[static_cast<size_t>(k)].omega - a) * (b - pts[static_cast<size_t>(k)].omega) > 0) {  // no fold here
+      std::map<double, hbm::HbmSolution> solved;
+      const auto component = [&](double omega) -> std::optional<double> {
+        const hbm::HbmSolution& s = solved.emplace(omega, solve(omega)).first->second;
+        return s.converged ? std::optional<double>(value(s).component) : std::nullopt;
+      };
+      const GoldenSearch search = golden_section_maximum(component, a, b, 14);
+      double best_value = best.converged ? value(best).component : -1.0;
+      for (double omega : search.compared) {
+        const hbm::HbmSolution& s = solved.at(omega);
+        if (const double v = value(s).component; v > best_value) best = s, best_value = v;
+      }
+    }
+  }
+  peak.solution = best;
+  peak.frequency_hz = best.omega / kTwoPi;
+  const double below = pts[static_cast<size_t>(std::max<Index>(k - 1, 0))].omega / kTwoPi;
+  const double above = pts[static_cast<size_t>(std::min<Index>(k + 1, static_cast<Index>(pts.size()) - 1))].omega / kTwoPi;
+  for (double f : level.failed_hz)
+    if (f > std::min(below, above) && f < std::max(below, above)) {
+      peak.trusted = false;
+      peak.doubt = fmt::format("the sweep did not converge at {:.4f} Hz, next to the maximum at {:.4f} Hz", f, peak.frequency_hz);
+    }
+  if (!level.path.converged && k + 1 == static_cast<Index>(pts.size())) {
+    peak.trusted = false;
+    peak.doubt = fmt::format("the maximum is the last point before the sweep stopped ({})", level.path.failure);
+  }
+  if (best.converged) {
+    const PeakValues v = value(best);
+    peak.component = v.component;
+    peak.amplitude = v.amplitude;
+    peak.energy = hbm::cycle_energy(system, best);
+  }
+  return peak;
+}
+
+hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics) {
+  hbm::HbmModel m = p.model;
+  m.harmonic_load *= force;
+  hbm::HbmOptions options;
+  options.harmonics = harmonics;
+  options.aft.samples = spec.time_samples;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  return hbm::HarmonicBalance(std::move(m), options);
+}
+
+// The first frequency's solution. Direct Newton from the static pre-solve (or the linear limits)
+// first; when that fails, a homotopy in the force: from 1/64 of it, each converged fraction the
+// start of the next, the increment halved on failure.
+hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, double omega,
+                                const std::optional<Eigen::VectorXd>& initial) {
+  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics);
+  hbm::HbmSolution direct = hbm::solve_at_frequency(system, omega, initial);
+  if (direct.converged) return direct;
+  double done = 1.0 / 64, step = 1.0 / 64;
+  hbm::HbmSolution at = hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics), omega, initial);
+  int total = direct.iterations + at.iterations;
+  while (at.converged && done < 1.0 && step >= 1.0 / 4096) {
+    const double next = std::min(1.0, done + step);
+    hbm::HbmSolution trial = hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics), omega, at.x);
+    total += trial.iterations;
+    if (trial.converged) {
+      at = std::move(trial), done = next, step *= 2;
+    } else {
+      step /= 2;
+    }
+  }
+  if (at.converged && done == 1.0) {
+    at.iterations = total;
+    return at;
+  }
+  direct.failure += fmt::format("; force homotopy reached {:.4g} of the force", at.converged ? done : 0.0);
+  return direct;
+}
+
+// d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
+// value turns d/dp into d/d(log p). The damper's contacts come first in the model.
+std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec, const hbm::HbmModel& m) {
+  const size_t damper_contacts = p.damper ? p.damper->contacts.size() : 0;
+  std::vector<hbm::ModelDerivative> out;
+  for (const HbmParameter& parameter : spec.sensitivities) {
+    if (parameter.kind == HbmParameter::Kind::modal_damping) {  // C = zeta C1: dC/d(log zeta) = C
+      out.push_back(hbm::damping_scale_derivative(m));
+      continue;
+    }
+    const bool damper = parameter.kind == HbmParameter::Kind::damper_law;
+    const size_t first = damper ? 0 : damper_contacts + parameter.contact;
+    const size_t last = damper ? damper_contacts : first + 1;
+    hbm::ModelDerivative d;
+    d.laws.assign(m.contacts.size(), {});
+    for (size_t k = first; k < last; ++k) {
+      const contact::JenkinsParameters& law = m.contacts[k].law;
+      contact::JenkinsParameters& dl = d.laws[k];
+      switch (parameter.law) {
+        case contact::law_kn: dl.kn = law.kn; break;
+        case contact::law_kt: dl.kt = law.kt; break;
+        case contact::law_mu: dl.mu = law.mu; break;
+        case contact::law_n0: dl.n0 = law.n0; break;
+      }
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+// Fills level.amplitude_dlog and phase_dlog_deg from the converged path points: with z the
+// first-harmonic amplitude (Z = a1 - i b1), d|z| = Re(conj z dz) / |z| and d arg z = Im(conj z dz) / |z|^2.
+void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const hbm::HarmonicBalance& system, HbmLevel& level) {
+  const std::vector<hbm::ModelDerivative> derivatives = log_derivatives(p, spec, system.model());
+  const Index n_points = static_cast<Index>(level.path.points.size()), n_resp = static_cast<Index>(p.responses.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  level.amplitude_dlog.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
+  level.phase_dlog_deg.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
+  for (Index i = 0; i < n_points; ++i) {
+    const hbm::ContinuationPoint& pt = level.path.points[static_cast<size_t>(i)];
+    hbm::HbmSolution s;
+    s.x = pt.x;
+    s.omega = pt.omega;
+    s.converged = true;  // every point of the path is a converged solve
+    std::vector<Eigen::MatrixXd> dq;
+    try {
+      dq = hbm::response_sensitivity(system, s, derivatives);
+    } catch (const std::exception&) {
+      continue;  // a singular Jacobian (e.g. a free static position): no derivative, NaN
+    }
+    const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
+    for (size_t j = 0; j < dq.size(); ++j)
+      for (Index r = 0; r < n_resp; ++r) {
+        const Index dof = p.responses[static_cast<size_t>(r)];
+        const std::complex<double> zr = z[dof], dz(dq[j](dof, 1), -dq[j](dof, 2));
+        const double a2 = std::norm(zr);
+        if (!(a2 > 0.0)) continue;
+        level.amplitude_dlog[j](i, r) = (std::conj(zr) * dz).real() / std::sqrt(a2);
+        level.phase_dlog_deg[j](i, r) = (std::conj(zr) * dz).imag() / a2 * 180.0 / std::numbers::pi;
+      }
+  }
+}
+
+}  // namespace
+
+HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, const HbmProgress& progress) {
+  const auto t0 = Clock::now();
+  HbmLevel level;
+  level.force = force;
+  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics);
+  const double omega_start = kTwoPi * spec.sweep.f_min, omega_end = kTwoPi * spec.sweep.f_max;
+  std::optional<Eigen::VectorXd> initial;
+  if (p.damper_static) {
+    // Start from the static pre-solve: the damper seated by CF, the vibration of the stuck limit.
+    initial = system.linearized(omega_start, true);
+    if (initial) {
+      const auto& dofs = system.contact_dofs();
+      for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
+    }
+  }
+  const hbm::HbmSolution first = first_solution(p, spec, force, harmonics, omega_start, initial);
+  hbm::ContinuationResult& path = level.path;
+  auto report = [&](double omega, int point, int iterations) {
+    if (progress && point % 25 == 0)
+      progress(fmt::format("Fe = {:g} N, H = {}: {:.3f} Hz, point {}, {} iterations", force, harmonics, omega / kTwoPi, point, iterations));
+  };
+  if (!first.converged) {
+    path.failure = "first point: " + first.failure;
+  } else if (spec.sweep.method == HbmSweepSpec::Method::arclength) {
+    hbm::ContinuationOptions c;
+    c.omega_start = omega_start;
+    c.omega_end = omega_end;
+    c.initial_step = spec.sweep.initial_step;
+    c.max_step = spec.sweep.max_step;
+    c.min_step = spec.sweep.min_step;
+    c.max_points = 20000;
+    c.initial = first.x;
+    c.progress = [&](const hbm::ContinuationProgress& s) { report(s.omega, s.point, s.iterations); };
+    path = hbm::continue_in_frequency(system, c);
+  } else {
+    // Grid: every frequency solved from the secant extrapolation of the last two converged points.
+    const std::vector<double> grid = fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz);
+    const int n = static_cast<int>(grid.size());
+    path.points.push_back({first.omega, first.x, first.residual, first.iterations, 0.0, 1.0});
+    path.corrector_iterations = first.iterations;
+    std::vector<double> failed;
+    std::string last_failure;
+    for (int i = 1; i < n; ++i) {
+      const double omega = kTwoPi * grid[static_cast<size_t>(i)];
+      const auto& pts = path.points;
+      Eigen::VectorXd guess = pts.back().x;
+      if (pts.size() >= 2) {
+        const auto& a = pts[pts.size() - 2];
+        const auto& b = pts.back();
+        guess += (b.x - a.x) * ((omega - b.omega) / (b.omega - a.omega));
+      }
+      hbm::HbmSolution s = hbm::solve_at_frequency(system, omega, guess);
+      path.corrector_iterations += s.iterations;
+      if (!s.converged) {
+        // Approach it in smaller steps from the last converged point (a kink between the two).
+        Eigen::VectorXd x = pts.back().x;
+        const double w0 = pts.back().omega;
+        for (int k = 1; k <= 8; ++k) {
+          s = hbm::solve_at_frequency(system, w0 + (omega - w0) * k / 8.0, x);
+          path.corrector_iterations += s.iterations;
+          if (!s.converged) break;
+          x = s.x;
+        }
+      }
+      report(omega, i, s.iterations);
+      if (!s.converged) {
+        failed.push_back(omega / kTwoPi);
+        level.failed_hz.push_back(omega / kTwoPi);
+        last_failure = s.failure;
+        ++path.rejected_steps;
+        continue;
+      }
+      path.points.push_back({omega, std::move(s.x), s.residual, s.iterations, 0.0, 1.0});
+    }
+    path.converged = failed.empty();
+    if (!failed.empty())
+      path.failure = fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})", failed.size(), n,
+                                 failed.front(), failed.back(), last_failure);
+  }
+  const size_t n_points = path.points.size();
+  level.amplitude.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
+  level.phase_deg.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
+  if (p.ip_oop) level.components.resize(static_cast<Index>(n_points), 2);
+  for (size_t i = 0; i < n_points; ++i) {
+    const hbm::ContinuationPoint& pt = path.points[i];
+    level.frequency_hz.push_back(pt.omega / kTwoPi);
+    const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
+    for (size_t r = 0; r < p.responses.size(); ++r) {
+      level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
+      level.phase_deg(static_cast<Index>(i), static_cast<Index>(r)) = std::arg(z[p.responses[r]]) * 180.0 / std::numbers::pi;
+    }
+    if (p.ip_oop)
+      for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
+  }
+  if (!spec.sensitivities.empty()) add_sensitivities(p, spec, system, level);
+  if (n_points > 0)
+    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, level, k));
+  level.seconds = seconds_since(t0);
+  return level;
+}
+
+}  // namespace bb

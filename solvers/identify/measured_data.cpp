@@ -44,6 +44,22 @@ const std::vector<ColumnSpec>& column_specs(DataKind kind) {
   return kind == DataKind::peaks ? peaks : kind == DataKind::frf ? frf : hysteresis;
 }
 
+// Appends the number in `cell` to `values`, or says what is wrong with it (empty when nothing).
+// from_chars is locale-independent: a "," decimal-comma locale must not change what a file means.
+std::string cell_problem(std::string_view cell, bool positive, std::vector<double>& values) {
+  if (cell.empty()) return "empty cell";
+  std::string_view text = cell;
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+  double v = 0.0;
+  const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (err == std::errc::result_out_of_range) return fmt::format("'{}' is out of range", cell);
+  if (err != std::errc() || end != text.data() + text.size()) return fmt::format("'{}' is not a number", cell);
+  if (!std::isfinite(v)) return fmt::format("'{}' is not a finite number", cell);
+  if (positive && !(v > 0.0)) return fmt::format("'{}' must be positive", cell);
+  values.push_back(v);
+  return {};
+}
+
 std::string dims_text(const std::vector<Dimension>& dims) {
   std::string text = dimension_name(dims[0]);
   for (size_t i = 1; i < dims.size(); ++i) text += fmt::format(" or {}", dimension_name(dims[i]));
@@ -202,19 +218,8 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
       throw fail(at, fmt::format("{} cells where the header (line {}) has {}: {}", cells.size(), header_line,
                                  cols.size(), join_names(names)));
     for (size_t j = 0; j < cols.size(); ++j) {
-      std::string_view text = cells[j];
-      const auto bad = [&](const char* why) {
-        return fail(at, fmt::format("column '{}': '{}' {}", cols[j].name, cells[j], why));
-      };
-      if (text.empty()) throw fail(at, fmt::format("column '{}': empty cell", cols[j].name));
-      if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
-      double v = 0.0;
-      const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), v);
-      if (err == std::errc::result_out_of_range) throw bad("is out of range");
-      if (err != std::errc() || end != text.data() + text.size()) throw bad("is not a number");
-      if (!std::isfinite(v)) throw bad("is not a finite number");
-      if (cols[j].spec->positive && !(v > 0.0)) throw bad("must be positive");
-      cols[j].written.push_back(v);
+      const std::string why = cell_problem(cells[j], cols[j].spec->positive, cols[j].written);
+      if (!why.empty()) throw fail(at, fmt::format("column '{}': {}", cols[j].name, why));
     }
     data.lines.push_back(static_cast<int>(at));
   }

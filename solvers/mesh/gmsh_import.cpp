@@ -310,18 +310,19 @@ void read_elements(MshLexer& lex, std::vector<RawBlock>& blocks) {
   lex.expect("$EndElements");
 }
 
-}  // namespace
-
-GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_hex) {
-  if (linear_hex != ElementType::hex8 && linear_hex != ElementType::hex8i)
-    throw std::invalid_argument("read_gmsh_msh41: linear_hex must be hex8 or hex8i");
-  MshLexer lex(file);
-
-  bool have_format = false, have_entities = false;
+// Every section of the file, checked for order ($MeshFormat first, $Nodes before $Elements);
+// sections the reader does not use are skipped.
+struct RawFile {
+  bool have_entities = false;
   std::map<EntityKey, std::string> names;
   std::map<EntityKey, std::vector<int>> physicals;
   RawNodes nodes;
   std::vector<RawBlock> blocks;
+};
+
+RawFile read_sections(MshLexer& lex) {
+  RawFile f;
+  bool have_format = false;
   while (const auto token = lex.try_next()) {
     const std::string_view header = *token;
     if (header.empty() || header.front() != '$') lex.fail(fmt::format("expected a section header, found '{}'", header));
@@ -332,20 +333,36 @@ GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_h
       read_mesh_format(lex);
       have_format = true;
     } else if (name == "PhysicalNames") {
-      read_physical_names(lex, names);
+      read_physical_names(lex, f.names);
     } else if (name == "Entities") {
-      read_entities(lex, physicals);
-      have_entities = true;
+      read_entities(lex, f.physicals);
+      f.have_entities = true;
     } else if (name == "Nodes") {
-      read_nodes(lex, nodes);
+      read_nodes(lex, f.nodes);
     } else if (name == "Elements") {
-      if (nodes.tags.empty()) lex.fail("$Elements before $Nodes");
-      read_elements(lex, blocks);
+      if (f.nodes.tags.empty()) lex.fail("$Elements before $Nodes");
+      read_elements(lex, f.blocks);
     } else {
       lex.skip_section(name);  // $PartitionedEntities, $Periodic, $NodeData, comments, ...
     }
   }
   if (!have_format) lex.fail(1, "empty file (not a Gmsh mesh?)");
+  return f;
+}
+
+}  // namespace
+
+GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_hex) {
+  if (linear_hex != ElementType::hex8 && linear_hex != ElementType::hex8i)
+    throw std::invalid_argument("read_gmsh_msh41: linear_hex must be hex8 or hex8i");
+  MshLexer lex(file);
+
+  RawFile f = read_sections(lex);
+  const auto& names = f.names;
+  const auto& physicals = f.physicals;
+  const RawNodes& nodes = f.nodes;
+  const std::vector<RawBlock>& blocks = f.blocks;
+  const bool have_entities = f.have_entities;
 
   int dim = 0;
   for (const RawBlock& b : blocks) dim = std::max(dim, b.entity_dim);

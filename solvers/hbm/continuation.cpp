@@ -127,7 +127,7 @@ Corrected correct(const HarmonicBalance& s, const ScaledPath& path, const Vector
   // The augmented residual (R, g) with g = t . (y - y_p); its data is ||R||.
   const auto augmented = [&](const VectorXd& y) {
     PathPoint a = path.at(y);
-    linalg::NewtonPoint p;
+    NewtonPoint p;
     p.valid = a.ok;
     p.data = a.norm;
     if (a.residual.size() == m) {
@@ -142,17 +142,17 @@ Corrected correct(const HarmonicBalance& s, const ScaledPath& path, const Vector
     }
     return p;
   };
-  const auto norm_of = [](const linalg::NewtonPoint& p) { return std::any_cast<double>(p.data); };
-  linalg::DampedNewtonOptions options;
+  const auto norm_of = [](const NewtonPoint& p) { return std::any_cast<double>(p.data); };
+  DampedNewtonOptions options;
   options.tolerance = target;
   options.max_iterations = max_iterations;
   options.max_backtracks = s.options().max_backtracks;
-  options.step_solve = linalg::NewtonStepSolve::minimum_norm;
-  options.merit = [&](const linalg::NewtonPoint& p) { return std::hypot(norm_of(p) / r_ref, p.residual[m]); };
-  options.converged = [&](const linalg::NewtonPoint& p) {
+  options.step_solve = NewtonStepSolve::minimum_norm;
+  options.merit = [&](const NewtonPoint& p) { return std::hypot(norm_of(p) / r_ref, p.residual[m]); };
+  options.converged = [&](const NewtonPoint& p) {
     return norm_of(p) <= target && std::abs(p.residual[m]) <= 1e-6 * step;
   };
-  linalg::DampedNewtonResult r = linalg::damped_newton(augmented, predicted, options);
+  DampedNewtonResult r = damped_newton(augmented, predicted, options);
   Corrected c;
   c.y = std::move(r.x);
   c.norm = norm_of(r.at);

@@ -15,8 +15,6 @@ namespace bb::hbm {
 
 namespace {
 
-using linalg::NewtonPoint;
-using linalg::NewtonStatus;
 
 // R, its Jacobian L + dg/dx and (as data) the AFT of every contact at x.
 NewtonPoint balance_at(const HarmonicBalance& s, const HarmonicBalance::Linear& linear, const Eigen::VectorXd& x) {
@@ -37,12 +35,12 @@ double norm_of(const NewtonPoint& p) {
 HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& linear, double omega, Eigen::VectorXd x,
                    NewtonPoint at) {
   const double target = s.residual_tolerance();
-  const linalg::DampedNewtonOptions options{.tolerance = target,
+  const DampedNewtonOptions options{.tolerance = target,
                                             .max_iterations = s.options().max_iterations,
                                             .max_backtracks = s.options().max_backtracks,
-                                            .step_solve = linalg::NewtonStepSolve::minimum_norm,
+                                            .step_solve = NewtonStepSolve::minimum_norm,
                                             .levenberg_marquardt = true};
-  linalg::DampedNewtonResult r = linalg::damped_newton(
+  DampedNewtonResult r = damped_newton(
       [&](const Eigen::VectorXd& y) { return balance_at(s, linear, y); }, std::move(x), std::move(at), options);
   HbmSolution out;
   out.omega = omega;

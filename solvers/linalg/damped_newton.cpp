@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-namespace bb::linalg {
+namespace bb {
 
 namespace {
 
@@ -138,4 +138,4 @@ DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0,
   return out;
 }
 
-}  // namespace bb::linalg
+}  // namespace bb

@@ -18,7 +18,7 @@
 #include <functional>
 #include <string>
 
-namespace bb::linalg {
+namespace bb {
 
 // What the caller's system returns at one x.
 struct NewtonPoint {
@@ -87,4 +87,4 @@ struct DampedNewtonResult {
 [[nodiscard]] DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0, NewtonPoint at_x0,
                                                const DampedNewtonOptions& options);
 
-}  // namespace bb::linalg
+}  // namespace bb

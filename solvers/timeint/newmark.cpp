@@ -152,17 +152,17 @@ StepReport NewmarkIntegrator::step(DynamicState& state, const Excitation& excita
     // S x + (1 + alpha) g(x) = b_c on the contact DOFs, with its consistent tangent.
     const auto balance = [&](const VectorXd& x) {
       ContactEval e = evaluate_contacts(system_.contacts_on_c(), before, x);
-      linalg::NewtonPoint p;
+      NewtonPoint p;
       p.residual = keff_->reduced() * x + (1.0 + alpha) * e.force - load.contact;
       p.jacobian = keff_->reduced() + (1.0 + alpha) * e.jacobian;
       return p;
     };
-    const linalg::DampedNewtonResult r = linalg::damped_newton(
+    const DampedNewtonResult r = damped_newton(
         balance, VectorXd(qt(c)),
         {.tolerance = tolerance, .max_iterations = options_.max_iterations, .max_backtracks = options_.max_backtracks,
-         .step_solve = linalg::NewtonStepSolve::partial_pivot_lu});
+         .step_solve = NewtonStepSolve::partial_pivot_lu});
     // The iteration that failed (line search, non-finite step) is counted.
-    report.iterations = r.iterations + (r.converged || r.status == linalg::NewtonStatus::iteration_limit ? 0 : 1);
+    report.iterations = r.iterations + (r.converged || r.status == NewtonStatus::iteration_limit ? 0 : 1);
     report.residual = r.residual;
     report.converged = r.converged;
     if (!report.converged) {

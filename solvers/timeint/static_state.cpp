@@ -26,7 +26,7 @@ StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions
   const double tolerance = options.tolerance * (scale + 1.0);
 
   const auto balance = [&](const VectorXd& q) {
-    linalg::NewtonPoint p;
+    NewtonPoint p;
     p.residual = m.stiffness * q - m.static_load;
     p.jacobian = m.stiffness;
     for (const hbm::ContactElement& c : m.contacts) {
@@ -42,17 +42,17 @@ StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions
     }
     return p;
   };
-  const linalg::DampedNewtonResult r = linalg::damped_newton(
+  const DampedNewtonResult r = damped_newton(
       balance, VectorXd::Zero(n),
       {.tolerance = tolerance, .max_iterations = options.max_iterations, .max_backtracks = options.max_backtracks,
-       .step_solve = linalg::NewtonStepSolve::full_pivot_lu});
+       .step_solve = NewtonStepSolve::full_pivot_lu});
 
   StaticState s;
   // The iteration that failed (singular tangent, line search) is counted.
-  s.iterations = r.iterations + (r.converged || r.status == linalg::NewtonStatus::iteration_limit ? 0 : 1);
+  s.iterations = r.iterations + (r.converged || r.status == NewtonStatus::iteration_limit ? 0 : 1);
   s.residual = r.residual;
   s.converged = r.converged;
-  if (r.status == linalg::NewtonStatus::singular_jacobian)
+  if (r.status == NewtonStatus::singular_jacobian)
     s.failure = fmt::format(
         "static initial state: singular tangent at iteration {} (|R| = {:.3e} N): the model is not held in some "
         "direction{}",

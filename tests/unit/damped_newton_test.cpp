@@ -10,7 +10,7 @@
 
 #include "linalg/damped_newton.hpp"
 
-namespace bb::linalg {
+namespace bb {
 namespace {
 
 using Eigen::MatrixXd;
@@ -159,4 +159,4 @@ TEST(DampedNewton, CallersMeritConvergenceTestAndDataAreUsed) {
 }
 
 }  // namespace
-}  // namespace bb::linalg
+}  // namespace bb

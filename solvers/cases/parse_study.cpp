@@ -133,6 +133,20 @@ ModalRefinementStudySpec parse_modal_study(TomlReader r) {
   return s;
 }
 
+RotatingFidelityStudySpec parse_rotating_fidelity_study(TomlReader r) {
+  RotatingFidelityStudySpec s;
+  s.at = r.location();
+  r.choice("kind", {"rotating_fidelity"});
+  for (long m : r.integer_array("basis_modes")) {
+    if (m < 1 || m > 500) r.fail("basis_modes", "each basis size must lie in [1, 500]");
+    s.basis_modes.push_back(static_cast<int>(m));
+  }
+  if (s.basis_modes.empty()) r.fail("basis_modes", "needs at least one modal basis size");
+  s.note = r.optional_string("note").value_or("");
+  r.finish();
+  return s;
+}
+
 }  // namespace
 
 StudySpec parse_study(TomlReader& top, const ModelSpec& model, const AnalysisSpec& analysis) {
@@ -155,6 +169,10 @@ StudySpec parse_study(TomlReader& top, const ModelSpec& model, const AnalysisSpe
     const HbmSpec* hbm = std::get_if<HbmSpec>(&analysis);
     if (!hbm) top.fail("study", "an hbm_harmonics study needs an hbm analysis");
     return parse_hbm_study(TomlReader(study, "study", file), *hbm);
+  }
+  if (k == "rotating_fidelity") {
+    if (!std::holds_alternative<RotatingSpec>(analysis)) top.fail("study", "a rotating_fidelity study needs a rotating analysis");
+    return parse_rotating_fidelity_study(TomlReader(study, "study", file));
   }
   if (k == "modal_refinement") {
     ModalRefinementStudySpec s = parse_modal_study(TomlReader(study, "study", file));

@@ -3,12 +3,14 @@
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
 #include "report/plots.hpp"
+#include "report/rotating_plots.hpp"
 #include "report/time_plots.hpp"
 #include "report/writers.hpp"
 #include "study/hbm_study.hpp"
 #include "study/modal_refinement.hpp"
 #include "study/refinement.hpp"
 #include "study/rom_study.hpp"
+#include "study/rotating_fidelity.hpp"
 #include "study/time_study.hpp"
 
 namespace bb {
@@ -47,6 +49,11 @@ struct StudyRun {
   void operator()(const TimeStepStudySpec& s) const {
     table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s), s.note, "time_step_study", "study_time_steps",
           plot_time_step_study);
+  }
+
+  void operator()(const RotatingFidelityStudySpec& s) const {
+    table(run_rotating_fidelity_study(model, std::get<RotatingSpec>(spec.analysis), s), s.note, "rotating_fidelity_study",
+          "study_rotating_fidelity", plot_rotating_fidelity);
   }
 
   // A study whose result is one table: listed in the report, written as CSV, drawn.

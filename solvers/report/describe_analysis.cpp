@@ -194,6 +194,11 @@ void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run
   for (Eigen::Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m)
     modes += fmt::format("{}{:.2f}", m ? ", " : "", o.modes_at_speed.frequencies_hz[m]);
   run.facts.emplace_back(fmt::format("rotating modes at {} rad/s [Hz]", g(o.modes_at_speed.speed)), modes);
+  std::string crossings;
+  for (const ffrf::EngineOrderCrossing& c : o.crossings)
+    crossings += fmt::format("{}EO {} x mode {} at {:.4g} rad/s ({:.0f} rpm, {:.2f} Hz)", crossings.empty() ? "" : "; ", c.engine_order, c.mode,
+                             c.speed, c.speed * 60.0 / (2 * 3.141592653589793), c.frequency_hz);
+  run.facts.emplace_back("engine-order crossings (Campbell)", crossings.empty() ? std::string("none in the speed range") : crossings);
   if (!o.modes_at_speed.stable)
     run.warnings.push_back(fmt::format("the linearized model is unstable at {} rad/s (growth rate {:.3g} 1/s): the centrifugal softening "
                                        "exceeds the stiffness", g(o.modes_at_speed.speed), o.modes_at_speed.max_growth_rate));

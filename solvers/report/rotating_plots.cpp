@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 
 #include "report/gnuplot.hpp"
 
@@ -70,6 +73,30 @@ Plot plot_campbell(const RotatingOutcome& o, const std::vector<int>& engine_orde
   for (int eo : engine_orders)
     script += fmt::format(", \\\n     {} * x / (2 * pi) with lines dt 2 lc rgb '#7f7f7f' notitle", eo);
   script += '\n';
+  return draw(out_dir, stem, title, script);
+}
+
+Plot plot_rotating_fidelity(const ResultTable& study, const fs::path& out_dir, const std::string& stem) {
+  const auto col = [&](const char* name) { return *study.column_index(name); };
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    out << "# seconds error (floored at 1e-12) level: one block per error kind (mean, motion, frequency)\n";
+    for (const char* kind : {"mean_error", "motion_error", "frequency_error"}) {
+      for (Eigen::Index r = 0; r < study.values.rows(); ++r) {
+        const double e = study.values(r, col(kind));
+        if (std::isfinite(e)) out << study.values(r, col("seconds")) << ' ' << std::max(e, 1e-12) << ' ' << study.values(r, col("level")) << '\n';
+      }
+      out << "\n\n";
+    }
+  }
+  const std::string title = "Rotating scene: error of each model level against the finest vs cost (labels: level)";
+  const std::string script = fmt::format(
+      "set title '{0}'\nset logscale xy\nset format y '10^{{%L}}'\nset xlabel 'wall time [s]'\nset ylabel 'relative error'\nset grid\n"
+      "set key outside right\nset datafile missing 'nan'\n"
+      "plot '{1}.dat' index 0 using 1:2 with points pt 7 title 'steady deflection', '{1}.dat' index 0 using 1:2:(sprintf('%d', $3)) with "
+      "labels offset 0,1 notitle, \\\n     '{1}.dat' index 1 using 1:2 with points pt 5 title 'largest motion', \\\n"
+      "     '{1}.dat' index 2 using 1:2 with points pt 9 title 'first rotating frequency'\n",
+      gnuplot_quote(title), stem);
   return draw(out_dir, stem, title, script);
 }
 

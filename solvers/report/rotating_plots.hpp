@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/rotating_analysis.hpp"
+#include "results/table.hpp"
 #include "report/run_record.hpp"
 
 namespace bb {
@@ -17,5 +18,8 @@ Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, 
                            const std::string& stem, double zoom = 0.0);
 Plot plot_campbell(const RotatingOutcome& o, const std::vector<int>& engine_orders, const std::filesystem::path& out_dir,
                    const std::string& stem);
+
+// The rotating fidelity study: each level's errors against its cost, log-log, labelled.
+Plot plot_rotating_fidelity(const ResultTable& study, const std::filesystem::path& out_dir, const std::string& stem);
 
 }  // namespace bb

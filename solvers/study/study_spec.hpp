@@ -65,6 +65,16 @@ struct TimeStepStudySpec {
   SourceLocation at;
 };
 
-using StudySpec = std::variant<RefinementStudySpec, ModalRefinementStudySpec, RomStudySpec, HbmHarmonicsStudySpec, TimeStepStudySpec>;
+// Accuracy vs cost of a rotating scene's model levels: (1) the static centrifugal deflection with the
+// pre-stressed rotating modes (no time run), (2) the floating frame without geometric stiffening,
+// (3) with stiffening in modal bases of `basis_modes` modes, against (4) the finest: every free DOF.
+struct RotatingFidelityStudySpec {
+  std::vector<int> basis_modes;  // modal basis sizes tried with stiffening
+  std::string note;
+  SourceLocation at;
+};
+
+using StudySpec = std::variant<RefinementStudySpec, ModalRefinementStudySpec, RomStudySpec, HbmHarmonicsStudySpec, TimeStepStudySpec,
+                               RotatingFidelityStudySpec>;
 
 }  // namespace bb

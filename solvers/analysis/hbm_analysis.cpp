@@ -88,6 +88,7 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     }
     row.push_back(level.path.converged ? 1.0 : 0.0);
     for (const HbmPeak& pk : level.peaks) row.push_back(pk.trusted ? 1.0 : 0.0);
+    for (const HbmPeak& pk : level.peaks) row.push_back(pk.sampling_error);
     peak_rows.push_back(row);
     cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()), static_cast<double>(level.path.corrector_iterations),
                          static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
@@ -100,6 +101,7 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     for (const char* s : {"_hz", "_amp_m", "_amp_per_n"}) peak_columns.push_back(k + s);
   peak_columns.push_back("reached_end");
   for (const std::string& k : kinds) peak_columns.push_back(k + "_trusted");
+  for (const std::string& k : kinds) peak_columns.push_back(k + "_aft_error");
   o.tables.emplace("peaks", table_from_rows("peaks", peak_columns, peak_rows));
   o.tables.emplace("energy_balance", table_from_rows("energy_balance", {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j", "friction_j",
                                                                    "normal_j", "relative_error"}, energy_rows));

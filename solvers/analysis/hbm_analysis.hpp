@@ -56,6 +56,10 @@ struct HbmPeak {
   // failure, not the resonance. `doubt` says why.
   bool trusted = true;
   std::string doubt;
+  // |g_2N(x) - g_N(x)| / force scale: the contact forces of the peak's motion with twice the AFT
+  // samples against those the solve used, as a residual of the balance (hbm::HarmonicBalance::
+  // force_scale, the solve's convergence measure): the time-sampling error the solution carries.
+  double sampling_error = 0.0;
 };
 
 struct HbmLevel {

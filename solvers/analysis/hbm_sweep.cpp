@@ -93,6 +93,14 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
     peak.component = v.component;
     peak.amplitude = v.amplitude;
     peak.energy = hbm::cycle_energy(system, best);
+    // The AFT's sampling error at the peak: the contact forces of the same motion sampled twice as
+    // finely (exact for a stuck contact; a kink between samples of a stick-slip loop is not), as the
+    // residual it leaves in the balance, relative to the balance's force scale (the solve's own measure).
+    hbm::HbmOptions finer = system.options();
+    finer.aft.samples = 2 * system.aft_options().samples;
+    const hbm::HarmonicBalance twice(system.model(), finer);
+    const Eigen::VectorXd g = system.contact_forces(best.x).force;
+    peak.sampling_error = (twice.contact_forces(best.x).force - g).norm() / std::max(system.force_scale(), 1e-300);
   }
   return peak;
 }

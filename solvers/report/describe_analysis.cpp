@@ -86,6 +86,15 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   for (const HbmLevel& l : hbm.levels)
     for (const HbmPeak& pk : l.peaks)
       if (!pk.trusted) run.warnings.push_back(fmt::format("{} peak at Fe = {} N ({:.4f} Hz) is doubtful: {}", pk.kind, g(l.force), pk.frequency_hz, pk.doubt));
+  double worst = 0.0;
+  std::string where;
+  for (const HbmLevel& l : hbm.levels)
+    for (const HbmPeak& pk : l.peaks)
+      if (pk.sampling_error > worst) worst = pk.sampling_error, where = fmt::format("{} peak at Fe = {} N", pk.kind, g(l.force));
+  run.facts.emplace_back("AFT sampling error at the peaks (contact-force change with twice the samples, relative to the force scale)",
+                         worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (every peak stuck)"));
+  if (worst > 1e-3)
+    run.warnings.push_back(fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples", worst, where));
 }
 
 void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {

@@ -208,6 +208,30 @@ void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const hbm::Har
   }
 }
 
+// Traces the branch by pseudo-arclength from the path's last point past grid[i] to grid[i + 1] (or
+// the last grid point), through a fold if there is one, and appends the traced points. Returns the
+// grid index reached (the sweep resumes after it), or i when the continuation failed too.
+int bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<double>& grid, int i,
+                        hbm::ContinuationResult& path) {
+  const int target = std::min(i + 1, static_cast<int>(grid.size()) - 1);
+  hbm::ContinuationOptions c;
+  c.omega_start = path.points.back().omega;
+  c.omega_end = kTwoPi * grid[static_cast<size_t>(target)];
+  c.initial = path.points.back().x;
+  c.initial_step = 0.01 * (c.omega_end - c.omega_start) / c.omega_start;  // a hundredth of the gap, scaled
+  c.max_step = 0.25 * (c.omega_end - c.omega_start) / c.omega_start;
+  c.min_step = 1e-4 * c.initial_step;
+  c.max_points = 2000;
+  const hbm::ContinuationResult bridge = hbm::continue_in_frequency(system, c);
+  path.corrector_iterations += bridge.corrector_iterations;
+  path.rejected_steps += bridge.rejected_steps;
+  if (!bridge.converged || bridge.points.size() < 2) return i;
+  path.turning_points += bridge.turning_points;
+  path.jumps += bridge.jumps;
+  path.points.insert(path.points.end(), bridge.points.begin() + 1, bridge.points.end());
+  return target;
+}
+
 }  // namespace
 
 HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, const HbmProgress& progress) {
@@ -276,6 +300,12 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
       }
       report(omega, i, s.iterations);
       if (!s.converged) {
+        // A fold (the branch turns back) or a kink the grid cannot step over: trace the branch by
+        // arclength from the last converged point to the next grid frequency, through the fold.
+        if (const int reached = bridge_by_arclength(system, grid, i, path); reached > i) {
+          i = reached;
+          continue;
+        }
         failed.push_back(omega / kTwoPi);
         level.failed_hz.push_back(omega / kTwoPi);
         last_failure = s.failure;

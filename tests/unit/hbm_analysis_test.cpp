@@ -171,6 +171,27 @@ TEST_F(HbmAnalysis, InPhasePeakOfSymmetricBladesIsTheClosedFormAtEveryLevel) {
   EXPECT_LT(o.levels[1].peaks[1].frequency_hz, o.levels[0].peaks[1].frequency_hz);
 }
 
+// With two Newton iterations per start, the 10 Hz grid steps near the slipping resonance cannot be
+// taken; the sweep bridges each by arclength to the next grid frequency instead of recording a
+// failure, and finds the peak of a sweep whose Newton is allowed enough iterations.
+TEST_F(HbmAnalysis, GridStepsNewtonCannotTakeAreBridgedByArclength) {
+  test::OscillatorCase c;
+  c.levels = "[20.0]";
+  c.step = "10.0";
+  const HbmOutcome reference = run(test::oscillator_case_text(c));
+  c.analysis_extra = "max_iterations = 2\n";
+  const HbmOutcome bridged = run(test::oscillator_case_text(c));
+  const HbmLevel& a = reference.levels[0];
+  const HbmLevel& b = bridged.levels[0];
+  EXPECT_TRUE(a.failed_hz.empty());
+  EXPECT_TRUE(b.failed_hz.empty());
+  EXPECT_GT(b.path.points.size(), 2 * a.path.points.size());  // the bridges' own points
+  ASSERT_EQ(b.peaks.size(), 1u);
+  EXPECT_TRUE(b.peaks[0].trusted) << b.peaks[0].doubt;
+  EXPECT_NEAR(b.peaks[0].frequency_hz, a.peaks[0].frequency_hz, 1e-5 * a.peaks[0].frequency_hz);
+  EXPECT_NEAR(b.peaks[0].amplitude, a.peaks[0].amplitude, 1e-6 * a.peaks[0].amplitude);
+}
+
 TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {
   std::string text = oscillator_case("0.3", "[1.0]");
   const std::string from = "tangential = { \"A.x\" = 1.0 }";

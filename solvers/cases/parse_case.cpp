@@ -30,7 +30,9 @@ struct AnalysisParser {
   AnalysisSpec (*parse)(TomlReader& r, const fs::path& folder);
 };
 constexpr AnalysisParser kAnalysisParsers[] = {
-    {"static", [](TomlReader&, const fs::path&) -> AnalysisSpec { return StaticSpec{}; }},
+    {"static", [](TomlReader& r, const fs::path&) -> AnalysisSpec {
+       return StaticSpec{.integration_point_stresses = r.boolean("integration_point_stresses", false)};
+     }},
     {"modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_modal(r); }},
     {"frf", [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_frf(r, folder); }},
     {"hbm", [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_hbm(r, folder); }},

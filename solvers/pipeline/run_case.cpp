@@ -32,7 +32,7 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
   if (isatty(STDERR_FILENO)) progress = [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
   const AnalysisResults results = run_analysis(spec.analysis, model, progress);
   if (progress) std::fputs("\r\033[K", stderr);
-  describe_analysis(spec.analysis, results, run);
+  describe_analysis(spec.analysis, results, model, run);
   std::map<fs::path, AnalysisResults> other_cases;  // runs of the cases some checks compare with
   for (const CheckSpec& c : spec.checks) {
     const ResultTables* reference = nullptr;

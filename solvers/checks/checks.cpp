@@ -84,9 +84,12 @@ const char* relation_symbol(CheckSpec::Relation relation) {
 
 std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results, const ResultTables* reference_results) {
   auto table_it = results.find(check.result);
-  if (table_it == results.end())
-    throw InputError(fmt::format("{}: check '{}' asks for result '{}', which this analysis does not produce",
-                                 check.at.where(), check.name, check.result));
+  if (table_it == results.end()) {
+    std::vector<std::string> produced;
+    for (const auto& [name, table] : results) produced.push_back(name);
+    throw InputError(fmt::format("{}: check '{}' asks for result '{}', which this analysis does not produce (it produces: {})",
+                                 check.at.where(), check.name, check.result, fmt::join(produced, ", ")));
+  }
   const ResultTable& table = table_it->second;
   std::vector<CheckEntry> entries;
   for (const auto& [result_column, reference_column] : check.compare) {

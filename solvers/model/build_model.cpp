@@ -165,10 +165,11 @@ Model build_model(const ModelSpec& spec) {
     const auto set = model.node_sets.find(l.load.set);
     if (set == model.node_sets.end()) throw InputError(fmt::format("{}: '{}': unknown node set '{}'", l.at.where(), l.key, l.load.set));
     if (boundary_facets_within(model.mesh, set->second).empty())
-      throw InputError(fmt::format("{}: '{}': node set '{}' holds no boundary {} of the mesh (a {} is loaded when all its nodes lie "
-                                   "in the set{})", l.at.where(), l.key, l.load.set, model.mesh.dim == 2 ? "edge" : "face",
-                                   model.mesh.dim == 2 ? "an element edge on the boundary" : "an element face on the boundary",
-                                   model.mesh.dim == 3 ? ", a hex20 face's mid-edge nodes too" : ""));
+      throw InputError(fmt::format("{}: '{}': node set '{}' holds no boundary {} of the mesh ({})", l.at.where(), l.key, l.load.set,
+                                   model.mesh.dim == 2 ? "edge" : "face",
+                                   model.mesh.dim == 2 ? "an element edge on the boundary is loaded when both its nodes lie in the set"
+                                                       : "an element face on the boundary is loaded when all its nodes lie in the set, "
+                                                         "a hex20 face's mid-edge nodes too"));
     model.surface_loads.push_back(l.load);
   }
   for (const BodyLoadSpec& l : spec.body_loads) model.body_loads.push_back(l.load);

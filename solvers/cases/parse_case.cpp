@@ -90,7 +90,24 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   c.relation = expect == "at_most" ? CheckSpec::Relation::at_most
                : expect == "at_least" ? CheckSpec::Relation::at_least
                                       : CheckSpec::Relation::equal;
+  const std::string match = r.choice("match", {"key", "mac", "label"}, "key");
+  c.match = match == "mac" ? CheckSpec::Match::mac : match == "label" ? CheckSpec::Match::label : CheckSpec::Match::key;
+  if (c.match == CheckSpec::Match::mac && c.reference_case.empty())
+    r.fail("match", "\"mac\" pairs this run's modes with the modes of another case's run by shape: give reference_case (and "
+                    "reference_result = \"frequencies\")");
+  if (r.has("min_mac")) {
+    if (c.match != CheckSpec::Match::mac) r.fail("min_mac", "applies to match = \"mac\" only");
+    c.min_mac = r.number("min_mac");
+    if (!(c.min_mac > 0 && c.min_mac <= 1)) r.fail("min_mac", fmt::format("must lie in (0, 1], found {}", c.min_mac));
+  }
+  if (r.has("labels")) {
+    if (c.match != CheckSpec::Match::label) r.fail("labels", "applies to match = \"label\" only");
+    c.labels = r.string_array("labels");
+  }
+  if (c.match == CheckSpec::Match::label && c.labels.empty())
+    r.fail("match", "\"label\" pairs rows by text columns: give labels = [\"type\", ...]");
   c.key = r.string("key");
+  if (c.match == CheckSpec::Match::mac && c.key != "mode") r.fail("key", "match = \"mac\" pairs modes: the key is \"mode\"");
   TomlReader compare(r.table("compare"), r.path() + ".compare", r.file());
   for (const auto& [k, v] : r.table("compare")) {
     const std::string result_column(k.str());

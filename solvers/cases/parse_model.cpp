@@ -130,7 +130,8 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
     return m;
   }
   if (kind == "hex_blocks" || kind == "gmsh") {
-    if (m.dim() != 3) r.fail("element", fmt::format("kind '{}' needs a solid element (hex8, hex8i, hex20)", kind));
+    // Gmsh files hold plane meshes too (3-node triangles, 4-node quadrilaterals); blocks are solids.
+    if (kind == "hex_blocks" && m.dim() != 3) r.fail("element", "kind 'hex_blocks' needs a solid element (hex8, hex8i, hex20)");
     m.merge_tolerance = r.non_negative("merge_tolerance", m.merge_tolerance);
     if (kind == "gmsh") {
       m.kind = MeshSpec::Kind::gmsh;

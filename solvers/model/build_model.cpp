@@ -134,7 +134,8 @@ Model build_model(const ModelSpec& spec) {
     case MeshSpec::Kind::none: return model;  // the analysis brings its own matrices
     case MeshSpec::Kind::gmsh: {
       require_file(spec.mesh.gmsh_file, spec.mesh.at);
-      const ElementType linear = spec.mesh.element == ElementType::hex20 ? ElementType::hex8 : spec.mesh.element;
+      // Which element an 8-node Gmsh hexahedron becomes (plane meshes: triangles and quads map by type).
+      const ElementType linear = spec.mesh.element == ElementType::hex8i ? ElementType::hex8i : ElementType::hex8;
       GmshMesh g = read_gmsh_msh41(spec.mesh.gmsh_file, linear);
       for (const auto& b : g.mesh.blocks)
         if (b.type != spec.mesh.element)

@@ -33,7 +33,7 @@ Eigen::VectorXd nodal_von_mises(const StressField& field) {
 
 void plots(const StaticSpec&, const StaticOutcome& s, const PlotTarget& t) {
   t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, s.solution.displacements, t.out, "deformed", "Deformed mesh"));
-  t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(s.stresses), "von Mises [Pa]", t.out, "von_mises",
+  t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(s.stresses), "Pa", t.out, "von_mises",
                                            t.model.mesh.dim == 2 ? "von Mises stress (nodal averages)"
                                                                  : "von Mises stress on the surface (nodal averages)"));
 }
@@ -44,7 +44,7 @@ void plots(const ModalSpec&, const ModalOutcome& outcome, const PlotTarget& t) {
     t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, modal.shapes[k], t.out, fmt::format("mode{}", k + 1),
                                              fmt::format("Mode {}: {:.4f} Hz", k + 1, modal.frequencies_hz[static_cast<Eigen::Index>(k)])));
   for (const ModeStresses& m : outcome.stresses)
-    t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(m.field), "von Mises [Pa per unit modal coordinate]", t.out,
+    t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(m.field), "Pa per unit modal coordinate", t.out,
                                              fmt::format("von_mises_mode{}", m.mode),
                                              fmt::format("Mode {}: von Mises stress of the mass-normalized shape", m.mode)));
 }

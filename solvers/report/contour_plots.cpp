@@ -73,7 +73,7 @@ void write_skin(std::ofstream& out, const Mesh& mesh, const Eigen::VectorXd& val
 
 }  // namespace
 
-Plot plot_nodal_contour(const Mesh& mesh, const Eigen::VectorXd& values, const std::string& label, const fs::path& out_dir,
+Plot plot_nodal_contour(const Mesh& mesh, const Eigen::VectorXd& values, const std::string& unit, const fs::path& out_dir,
                         const std::string& stem, const std::string& title) {
   {
     std::ofstream out = open_plot_data(out_dir, stem);
@@ -81,14 +81,19 @@ Plot plot_nodal_contour(const Mesh& mesh, const Eigen::VectorXd& values, const s
     if (mesh.dim == 2) write_plane(out, mesh, values);
     else write_skin(out, mesh, values);
   }
-  const std::string view = mesh.dim == 2 ? "set view map\nset size ratio -1\nunset ztics\nunset zlabel\n"
-                                         : "set view 60, 30\nset view equal xyz\nset xyplane 0\nset zlabel 'z [m]'\n"
-                                           "set pm3d depthorder\n";
+  std::string view = mesh.dim == 2 ? "set view map\nset size ratio -1\nunset ztics\nunset zlabel\n"
+                                   : "set view 55, 35, 1.4\nset view equal xyz\nset xyplane 0\nset zlabel 'z [m]' rotate parallel\n"
+                                     "set pm3d depthorder\n";
+  if (mesh.dim == 3) {
+    // A thin part in z (a plate) would stack its z tic labels on top of each other.
+    const Eigen::RowVectorXd extent = mesh.coords.colwise().maxCoeff() - mesh.coords.colwise().minCoeff();
+    if (extent[2] < 0.1 * std::max(extent[0], extent[1])) view += "unset ztics\nunset zlabel\n";
+  }
   const std::string script = fmt::format(
-      "set title '{}'\n{}set xlabel 'x [m]'\nset ylabel 'y [m]'\nset pm3d corners2color mean\nset style fill solid noborder\n"
-      "set palette rgbformulae 22,13,-31\nset cblabel '{}'\nset format cb '%.3g'\nunset key\n"
+      "set title '{} [{}]'\n{}set xlabel 'x [m]'\nset ylabel 'y [m]'\nset pm3d corners2color mean\nset style fill solid noborder\n"
+      "set palette rgbformulae 22,13,-31\nset format cb '%.3g'\nunset key\n"
       "splot '{}.dat' using 1:2:3:4 with pm3d\n",
-      gnuplot_quote(title), view, gnuplot_quote(label), stem);
+      gnuplot_quote(title), gnuplot_quote(unit), view, stem);
   return draw(out_dir, stem, title, script);
 }
 

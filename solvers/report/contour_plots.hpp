@@ -11,8 +11,8 @@
 
 namespace bb {
 
-// `values`: one per node. `label`: the colour bar's, e.g. "von Mises [Pa]".
-Plot plot_nodal_contour(const Mesh& mesh, const Eigen::VectorXd& values, const std::string& label,
+// `values`: one per node. `unit`: shown after the title, e.g. "Pa".
+Plot plot_nodal_contour(const Mesh& mesh, const Eigen::VectorXd& values, const std::string& unit,
                         const std::filesystem::path& out_dir, const std::string& stem, const std::string& title);
 
 }  // namespace bb

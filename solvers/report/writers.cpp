@@ -183,7 +183,10 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
         max_abs = std::max(max_abs, e.abs_error);
         if (std::isfinite(e.rel_error) && e.reference != 0.0) max_rel = std::max(max_rel, e.rel_error);
       }
-      const std::string reference = !spec.reference_case.empty()   ? fmt::format("result {} of {}", spec.reference_result,
+      const std::string reference = !spec.reference_case.empty() && spec.reference_result.empty()
+                                        ? fmt::format("{}, numbered by the modes of {}", spec.reference.filename().string(),
+                                                      spec.reference_case.filename().string())
+                                    : !spec.reference_case.empty() ? fmt::format("result {} of {}", spec.reference_result,
                                                                               spec.reference_case.filename().string())
                                     : spec.reference_result.empty() ? spec.reference.filename().string()
                                                                     : "result " + spec.reference_result;

@@ -95,6 +95,8 @@ void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget&
       if (f1 > 0 && spec.end_time > 20.0 / f1) t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem + "_zoom", 20.0 / f1));
     }
   t.run.plots.push_back(plot_campbell(o, spec.engine_orders, t.out, "campbell"));
+  t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(o.steady_stresses), "Pa", t.out, "steady_von_mises",
+                                           "von Mises stress of the steady centrifugal deflection (nodal averages)"));
 }
 
 }  // namespace

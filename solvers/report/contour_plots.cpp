@@ -81,9 +81,19 @@ Plot plot_nodal_contour(const Mesh& mesh, const Eigen::VectorXd& values, const s
     if (mesh.dim == 2) write_plane(out, mesh, values);
     else write_skin(out, mesh, values);
   }
-  std::string view = mesh.dim == 2 ? "set view map\nset size ratio -1\nunset ztics\nunset zlabel\n"
+  std::string view = mesh.dim == 2 ? "set view map\nset size ratio -1\nunset ztics\nunset zlabel\nset format x '%.3g'\n"
+                                     "set format y '%.3g'\nset xtics nomirror rotate by 90 right\nset ytics nomirror\n"
                                    : "set view 55, 35, 1.4\nset view equal xyz\nset xyplane 0\nset zlabel 'z [m]' rotate parallel\n"
                                      "set pm3d depthorder\n";
+  if (mesh.dim == 2) {
+    // Two or three x tics: a slender part (a blade standing up) would crowd its narrow axis.
+    const double width = mesh.coords.col(0).maxCoeff() - mesh.coords.col(0).minCoeff();
+    if (width > 0) {
+      const double raw = width / 2, decade = std::pow(10.0, std::floor(std::log10(raw)));
+      const double m = raw / decade, step = (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * decade;
+      view += fmt::format("set xtics {}\n", step);
+    }
+  }
   if (mesh.dim == 3) {
     // A thin part in z (a plate) would stack its z tic labels on top of each other.
     const Eigen::RowVectorXd extent = mesh.coords.colwise().maxCoeff() - mesh.coords.colwise().minCoeff();

@@ -20,7 +20,21 @@
 # ccx is timed three times: with OMP_NUM_THREADS=THREADS alone (its SPOOLES solver then also runs
 # on THREADS threads), with CCX_NPROC_EQUATION_SOLVER=1 as well (SPOOLES on one thread, the rest
 # on THREADS), and on the deck without its *STEP (input phase only, subtracted for the solve ratio).
-# Exit code: 0 every frequency agrees within TOL, 1 some do not, 2 a run failed.
+#
+# Element correspondence (what "the same mesh" means for each element):
+#   hex8  -> C3D8   the same element (trilinear, 2x2x2 Gauss, consistent mass): frequencies must agree
+#   hex20 -> C3D20  the same element (serendipity, 3x3x3 Gauss, consistent mass): must agree
+#   hex8i -> C3D8I  the same stiffness (Wilson's incompatible modes with Taylor's correction: static
+#                   answers agree), NOT the same inertia: C3D8I keeps the nine incompatible-mode
+#                   amplitudes as unknowns of the eigenproblem and gives them mass; hex8i condenses
+#                   them out of the stiffness and gives them none (as OptiStruct's 8-node solid).
+#                   The frequencies then differ by a discretization error that vanishes like h^2
+#                   (several % on coarse meshes; tests/unit/hex8i_inertia_test.cpp reproduces
+#                   C3D8I's numbers from that one difference). For hex8i the table is shown and
+#                   marked "different element", and it does not make the verdict fail.
+# Rigid-body modes (both frequencies below 1e-4 of the case's highest) are reported as such, 0 Hz,
+# and agree; a mode rigid in one program and not in the other disagrees.
+# Exit code: 0 every frequency of the same elements agrees within TOL, 1 some do not, 2 a run failed.
 set -euo pipefail
 
 cd "$(dirname "$0")/.."
@@ -50,7 +64,7 @@ while (($#)); do
           -e "s#^reference = \"../../#reference = \"$PWD/#" "$BAR" > "$copy"
       bars+=("$copy")
       shift 4 ;;
-    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,37p' "$0"; exit 0 ;;
     *) cases+=("$1"); shift ;;
   esac
 done
@@ -146,28 +160,60 @@ for case_file in "${cases[@]}"; do
   echo
   echo "\`$case_file\`: $elements, $nodes nodes, $dofs free DOFs; $modes modes asked of ccx."
   echo
+  # The element types of the deck: hex8i (C3D8I) is not the same element in a frequency analysis.
+  types=$(grep -o 'TYPE=C3D[0-9A-Z]*' "$dir/ccx/$name.inp" | sed 's/TYPE=//' | sort -u | tr '\n' ' ')
+  same=1
+  case " $types " in *" C3D8I "*) same=0 ;; esac
+  if ((same)); then
+    echo "Elements: $types- the same formulation in both programs; the frequencies must agree within $TOL."
+  else
+    echo "Elements: $types- hex8i and C3D8I share their stiffness but not their inertia (C3D8I gives the"
+    echo "incompatible modes mass and keeps them in the eigenproblem): the differences below are that"
+    echo "difference of formulation, not of the solvers, and do not count in the verdict."
+  fi
+  echo
   status=0
-  awk -v tol="$TOL" -v nb="$n_bb" -v bb="$(echo "$bb_f" | tr '\n' ' ')" -v cx="$(echo "$ccx_f" | tr '\n' ' ')" '
+  awk -v tol="$TOL" -v nb="$n_bb" -v same="$same" -v bb="$(echo "$bb_f" | tr '\n' ' ')" -v cx="$(echo "$ccx_f" | tr '\n' ' ')" '
     function abs(x) { return x < 0 ? -x : x }
     BEGIN {
       split(bb, b, " "); nc = split(cx, c, " ")
       if (nc < nb) { printf "ccx returned %d modes, bladebench %d\n", nc, nb; exit 2 }
+      top = 0
+      for (i = 1; i <= nb; ++i) if (b[i] > top) top = b[i]
+      rigid = 1e-4 * top   # the modal solver calls a mode rigid below 1e-8 of the largest eigenvalue
       best = -1
       for (o = 0; o + nb <= nc; ++o) {
-        s = 0; for (i = 1; i <= nb; ++i) s += abs(c[i + o] - b[i]) / b[i]
+        s = 0; for (i = 1; i <= nb; ++i) s += abs(c[i + o] - b[i]) / (b[i] > rigid ? b[i] : top)
         if (best < 0 || s < best) { best = s; off = o }
       }
       if (off > 0) printf "bladebench mode 1 aligned with ccx mode %d.\n\n", off + 1
       print "| mode | bladebench [Hz] | CalculiX [Hz] | rel. difference |"
       print "|---:|---:|---:|---:|"
-      worst = 0
+      worst = 0; rigid_modes = 0; mismatch = 0
       for (i = 1; i <= nb; ++i) {
+        if (b[i] <= rigid && c[i + off] <= rigid) {
+          ++rigid_modes
+          printf "| %d | 0 (rigid-body mode) | 0 (rigid-body mode) | - |\n", i
+          continue
+        }
+        if (b[i] <= rigid || c[i + off] <= rigid) {
+          ++mismatch
+          printf "| %d | %.10g | %.7g | rigid in one program only |\n", i, b[i], c[i + off]
+          continue
+        }
         d = (b[i] - c[i + off]) / c[i + off]
         if (abs(d) > worst) worst = abs(d)
         printf "| %d | %.10g | %.7g | %+.2e |\n", i, b[i], c[i + off], d
       }
-      printf "\nmax |rel. difference| = %.2e, tolerance %g: %s\n", worst, tol, worst <= tol ? "AGREE" : "DISAGREE"
-      exit worst <= tol ? 0 : 1
+      if (rigid_modes > 0) printf "\n%d rigid-body mode(s) (0 Hz) in both programs.\n", rigid_modes
+      ok = worst <= tol && mismatch == 0
+      if (same) {
+        printf "\nmax |rel. difference| = %.2e, tolerance %g: %s\n", worst, tol, ok ? "AGREE" : "DISAGREE"
+        exit ok ? 0 : 1
+      }
+      printf "\nmax |rel. difference| = %.2e: DIFFERENT ELEMENT (hex8i vs C3D8I inertia), not a verdict%s\n", worst,
+             mismatch ? "; but a rigid-body mode in one program only: DISAGREE" : ""
+      exit mismatch ? 1 : 0
     }' || status=$?
   ((status == 2)) && die "mode counts do not match"
   ((status > overall)) && overall=$status

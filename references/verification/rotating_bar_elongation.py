@@ -10,6 +10,9 @@ Omega, axial displacement u(x) in the rotating frame:
       u(x) = rho Omega^2 / (2 E) (L^2 x - x^3 / 3);
   with spin softening (the load follows the deformed position):  E u'' + rho Omega^2 (x + u) = 0,
       u(0) = 0, u'(L) = 0:  u(x) = sin(k x) / (k cos(k L)) - x,  k = Omega sqrt(rho / E).
+The axial stress of the softened steady state (what stiffens a blade), sigma = E u' =
+E (cos(k x) / cos(k L) - 1), goes to rotating_bar_stress.csv, keyed by the node ids of the case's
+q4 64 x 2 mesh (rows numbering: node 66 at (0, 0.01), node 98 at (0.5, 0.01)).
 """
 import math
 import os
@@ -36,3 +39,17 @@ with open(os.path.join(HERE, "rotating_bar_elongation.csv"), "w") as out:
     for number, x in ((1, L), (2, L / 2)):
         out.write(f"{number},{x:.17g},{linear(x):.17g},{softened(x):.17g}\n")
 print(open(os.path.join(HERE, "rotating_bar_elongation.csv")).read())
+
+
+def softened_stress(x):
+    return E * (math.cos(K * x) / math.cos(K * L) - 1)
+
+
+with open(os.path.join(HERE, "rotating_bar_stress.csv"), "w") as out:
+    out.write("# Bar spinning about one end (see rotating_bar_elongation.csv): the axial stress of the steady state\n")
+    out.write("# with spin softening, sigma = E u' = E (cos(k x) / cos(k L) - 1), k = Omega sqrt(rho / E) [Pa].\n")
+    out.write("# Written by rotating_bar_elongation.py. Key: node id of the case's q4 64 x 2 mesh (mid-height nodes).\n")
+    out.write("node,x_m,sxx\n")
+    for node, x in ((66, 0.0), (98, L / 2)):
+        out.write(f"{node},{x:.17g},{softened_stress(x):.17g}\n")
+print(open(os.path.join(HERE, "rotating_bar_stress.csv")).read())

@@ -6,6 +6,7 @@
 
 #include "analysis/modal_spec.hpp"
 #include "assembly/dof_map.hpp"
+#include "assembly/stress_recovery.hpp"
 #include "linalg/modal_solver.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
@@ -47,6 +48,16 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
 
 // The lowest options.n_modes modes.
 ModalResult solve_modal(const Model& model, const ModalOptions& options);
+
+// A modal analysis's run: the modes, and the stresses of the modes the spec asks for.
+struct ModeStresses {
+  int mode = 0;  // 1-based
+  StressField field;
+};
+struct ModalOutcome {
+  ModalResult modal;
+  std::vector<ModeStresses> stresses;
+};
 
 ResultTable frequency_table(const Eigen::VectorXd& frequencies_hz);
 ResultTable participation_table(const ModalResult& result);

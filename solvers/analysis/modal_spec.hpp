@@ -3,6 +3,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/source_location.hpp"
 #include "linalg/modal_solver.hpp"
@@ -30,6 +31,10 @@ struct ModalSpec {
   ModeSelection modes;
   ModalOptions options;
   std::optional<ModePairSpec> pairs;
+  // Modes (1-based) whose stresses are recovered and written (nodal_stresses_mode<k>.csv): the
+  // stress per unit modal coordinate of the mass-normalized shape, for where a mode strains the
+  // part most (gauges, fatigue). Empty: none, the recovery costs one pass over the mesh per mode.
+  std::vector<int> stress_modes;
 };
 
 }  // namespace bb

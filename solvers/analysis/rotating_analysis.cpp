@@ -11,6 +11,7 @@
 
 #include <unsupported/Eigen/FFT>
 
+#include "analysis/stress_tables.hpp"
 #include "common/errors.hpp"
 #include "ffrf/elastic_basis.hpp"
 #include "ffrf/rotating_body.hpp"
@@ -135,6 +136,12 @@ void add_deflection_table(RotatingOutcome& o, const Model& model, const Rotating
   ResultTable t = table_from_rows("deflection", cols, rows);
   t.add_text_column("set", spec.histories);
   o.tables.emplace("deflection", std::move(t));
+  // The stresses of the steady deflection (the centrifugal stresses in the rotating frame, those
+  // that stiffen the blade): the same recovery as a static analysis's.
+  const Eigen::VectorXd all = ffrf::expand_to_global(body, full.displacement);
+  const Eigen::MatrixXd nodal = Eigen::Map<const Eigen::MatrixXd>(all.data(), o.dim, model.mesh.n_nodes()).transpose();
+  o.steady_stresses = recover_stresses(model.mesh, model.section, nodal);
+  o.tables.emplace("steady_stresses", nodal_stress_table("steady_stresses", model.mesh, o.steady_stresses));
 }
 
 // oscillation: for each mode at the run's speed, the spectral peak of the history component that

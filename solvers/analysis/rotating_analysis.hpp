@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/rotating_spec.hpp"
+#include "assembly/stress_recovery.hpp"
 #include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"
 #include "model/model.hpp"
@@ -26,6 +27,7 @@ struct RotatingOutcome {
   double time_step = 0.0;
   double setup_seconds = 0.0, run_seconds = 0.0, campbell_seconds = 0.0;
   std::string profile;                 // description of the rotor's motion
+  StressField steady_stresses;         // of the steady deflection at the run's (final) speed [Pa]
 };
 
 // Throws InputError for a history set the model lacks or a basis the body cannot hold, SolverError

@@ -2,25 +2,37 @@
 
 #include "analysis/mode_pairs.hpp"
 
+#include <fmt/format.h>
+
+#include "analysis/stress_tables.hpp"
+#include "common/errors.hpp"
+
 namespace bb {
 namespace {
 
-AnalysisResults run(const StaticSpec&, const Model& model, const HbmProgress&) {
-  StaticSolution s = solve_static(model);
+AnalysisResults run(const StaticSpec& spec, const Model& model, const HbmProgress&) {
   ResultTables tables;
-  tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, s.displacements));
-  return {std::move(tables), std::move(s)};
+  StaticOutcome o = run_static(model, spec, tables);
+  return {std::move(tables), std::move(o)};
 }
 
 AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress&) {
   if (spec.pairs) check_mode_pair_sets(model, *spec.pairs);
-  ModalResult modal = solve_modal(model, spec.modes, spec.options);
+  ModalOutcome o{solve_modal(model, spec.modes, spec.options), {}};
+  const ModalResult& modal = o.modal;
   ResultTable frequencies = frequency_table(modal.frequencies_hz);
   if (spec.pairs) add_mode_labels(frequencies, label_mode_pairs(model, modal, *spec.pairs));
   ResultTables tables;
   tables.emplace("frequencies", std::move(frequencies));
   tables.emplace("modal_participation", participation_table(modal));
-  return {std::move(tables), std::move(modal)};
+  for (int k : spec.stress_modes) {
+    if (k > static_cast<int>(modal.shapes.size()))
+      throw InputError(fmt::format("'analysis.stress_modes': mode {} asked, the analysis found {} modes", k, modal.shapes.size()));
+    o.stresses.push_back({k, recover_stresses(model.mesh, model.section, modal.shapes[static_cast<size_t>(k - 1)])});
+    const std::string name = fmt::format("nodal_stresses_mode{}", k);
+    tables.emplace(name, nodal_stress_table(name, model.mesh, o.stresses.back().field));
+  }
+  return {std::move(tables), std::move(o)};
 }
 
 AnalysisResults run(const FrfSpec& spec, const Model& model, const HbmProgress&) {

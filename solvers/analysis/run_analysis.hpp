@@ -20,12 +20,12 @@
 namespace bb {
 
 using AnalysisOutcome =
-    std::variant<StaticSolution, ModalResult, FrfOutcome, HbmOutcome, TimeOutcome, ContactLoopOutcome, RotatingOutcome>;
+    std::variant<StaticOutcome, ModalOutcome, FrfOutcome, HbmOutcome, TimeOutcome, ContactLoopOutcome, RotatingOutcome>;
 
 template <typename Spec>
 struct OutcomeOf;
-template <> struct OutcomeOf<StaticSpec> { using type = StaticSolution; };
-template <> struct OutcomeOf<ModalSpec> { using type = ModalResult; };
+template <> struct OutcomeOf<StaticSpec> { using type = StaticOutcome; };
+template <> struct OutcomeOf<ModalSpec> { using type = ModalOutcome; };
 template <> struct OutcomeOf<FrfSpec> { using type = FrfOutcome; };
 template <> struct OutcomeOf<HbmSpec> { using type = HbmOutcome; };
 template <> struct OutcomeOf<TimeSpec> { using type = TimeOutcome; };

@@ -4,6 +4,7 @@
 
 #include <chrono>
 
+#include "analysis/stress_tables.hpp"
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
 #include "linalg/spd_factor.hpp"
@@ -60,6 +61,19 @@ StaticSolution solve_static(const Model& model) {
   sol.reactions = Eigen::Map<const Eigen::MatrixXd>(r.data(), mesh.dim, mesh.n_nodes()).transpose();
   sol.loads = f;
   return sol;
+}
+
+StaticOutcome run_static(const Model& model, const StaticSpec& spec, ResultTables& tables) {
+  StaticOutcome o;
+  o.solution = solve_static(model);
+  o.stresses = recover_stresses(model.mesh, model.section, o.solution.displacements,
+                                {.integration_points = spec.integration_point_stresses});
+  tables.emplace("nodal_displacements", nodal_displacement_table(model.mesh, o.solution.displacements));
+  tables.emplace("nodal_stresses", nodal_stress_table("nodal_stresses", model.mesh, o.stresses));
+  tables.emplace("nodal_strains", nodal_strain_table("nodal_strains", model.mesh, o.stresses, model.section));
+  if (o.stresses.points)
+    tables.emplace("integration_point_stresses", integration_point_stress_table("integration_point_stresses", o.stresses));
+  return o;
 }
 
 ResultTable nodal_displacement_table(const Mesh& mesh, const Eigen::MatrixXd& displacements) {

@@ -2,6 +2,8 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include "analysis/static_spec.hpp"
+#include "assembly/stress_recovery.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
 
@@ -20,6 +22,16 @@ struct StaticSolution {
 
 // Throws InputError when the model is singular (names the DOF of the zero pivot).
 StaticSolution solve_static(const Model& model);
+
+// A static analysis's run: the solution and its stresses.
+struct StaticOutcome {
+  StaticSolution solution;
+  StressField stresses;
+};
+
+// Solves, recovers the stresses and fills `tables` with nodal_displacements, nodal_stresses,
+// nodal_strains and (spec.integration_point_stresses) integration_point_stresses.
+StaticOutcome run_static(const Model& model, const StaticSpec& spec, ResultTables& tables);
 
 ResultTable nodal_displacement_table(const Mesh& mesh, const Eigen::MatrixXd& displacements);
 

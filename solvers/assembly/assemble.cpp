@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <set>
 #include <stdexcept>
 
 #include "assembly/sparsity.hpp"
@@ -99,53 +98,6 @@ Partitioned partition(const SparseMatrix& a, const DofMap& dofs) {
   p.ff = slice(dofs.free_dofs, dofs.n_free);
   p.fc = slice(dofs.constrained_dofs, n_con);
   return p;
-}
-
-namespace {
-
-// Weights summing to 1: half the length of each element edge whose both nodes lie in the set.
-std::vector<double> consistent_edge_weights(const Mesh& mesh, const std::vector<int>& set_nodes,
-                                            const std::string& set_name) {
-  std::vector<char> in_set(mesh.n_nodes(), 0);
-  for (int n : set_nodes) in_set[n] = 1;
-  std::set<std::pair<int, int>> edges;
-  for (const auto& b : mesh.blocks)
-    for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
-      for (const auto& [i, j] : topology(b.type).edges) {
-        const int p = b.conn(e, i), q = b.conn(e, j);
-        if (in_set[p] && in_set[q]) edges.insert({std::min(p, q), std::max(p, q)});
-      }
-  if (edges.empty())
-    throw InputError(fmt::format("load split 'consistent' needs element edges in node set '{}', found none", set_name));
-  std::vector<double> w(mesh.n_nodes(), 0.0);
-  double total = 0.0;
-  for (auto [p, q] : edges) {
-    const double len = (mesh.coords.row(p) - mesh.coords.row(q)).norm();
-    w[p] += 0.5 * len;
-    w[q] += 0.5 * len;
-    total += len;
-  }
-  for (double& v : w) v /= total;
-  return w;
-}
-
-}  // namespace
-
-Eigen::VectorXd load_vector(const Model& model) {
-  const Mesh& mesh = model.mesh;
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.n_nodes() * mesh.dim);
-  for (const NodalLoad& load : model.loads) {
-    auto set = model.node_sets.find(load.set);
-    if (set == model.node_sets.end()) throw InputError(fmt::format("load on unknown node set '{}'", load.set));
-    const auto& nodes = set->second;
-    if (load.split == LoadSplit::equal) {
-      for (int n : nodes) f[n * mesh.dim + load.direction] += load.total / static_cast<double>(nodes.size());
-    } else {
-      const std::vector<double> w = consistent_edge_weights(mesh, nodes, load.set);
-      for (int n : nodes) f[n * mesh.dim + load.direction] += load.total * w[n];
-    }
-  }
-  return f;
 }
 
 }  // namespace bb

@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 
 #include "assembly/dof_map.hpp"
+#include "assembly/load_vector.hpp"
 #include "model/model.hpp"
 
 namespace bb {
@@ -29,9 +30,5 @@ struct Partitioned {
   SparseMatrix fc;
 };
 Partitioned partition(const SparseMatrix& a, const DofMap& dofs);
-
-// Nodal load vector over all global DOFs. Throws InputError for unknown sets or a
-// consistent split over a set that holds no element edge.
-Eigen::VectorXd load_vector(const Model& model);
 
 }  // namespace bb

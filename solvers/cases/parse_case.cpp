@@ -30,7 +30,9 @@ struct AnalysisParser {
   AnalysisSpec (*parse)(TomlReader& r, const fs::path& folder);
 };
 constexpr AnalysisParser kAnalysisParsers[] = {
-    {"static", [](TomlReader&, const fs::path&) -> AnalysisSpec { return StaticSpec{}; }},
+    {"static", [](TomlReader& r, const fs::path&) -> AnalysisSpec {
+       return StaticSpec{.integration_point_stresses = r.boolean("integration_point_stresses", false)};
+     }},
     {"modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_modal(r); }},
     {"frf", [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_frf(r, folder); }},
     {"hbm", [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_hbm(r, folder); }},
@@ -79,8 +81,14 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
     r.fail("reference", "give either 'reference' (a CSV file) or 'reference_result' (a result table of this run)");
   if (r.has("reference")) c.reference = folder / r.string("reference");
   else c.reference_result = r.string("reference_result");
+  const std::string match = r.choice("match", {"key", "mac", "label"}, "key");
+  c.match = match == "mac" ? CheckSpec::Match::mac : match == "label" ? CheckSpec::Match::label : CheckSpec::Match::key;
   if (r.has("reference_case")) {
-    if (c.reference_result.empty()) r.fail("reference_case", "names the case whose result table 'reference_result' is compared with");
+    // With match = "mac" a reference file may be keyed by the other case's modes (e.g. published
+    // values numbered as on the benchmark's own mesh): its run pairs them with this run's modes.
+    if (c.reference_result.empty() && c.match != CheckSpec::Match::mac)
+      r.fail("reference_case", "names the case whose result table 'reference_result' is compared with (or, with match = \"mac\", "
+                               "whose modes the keys of 'reference' number)");
     c.reference_case = folder / r.string("reference_case");
     if (!fs::is_regular_file(c.reference_case)) r.fail("reference_case", fmt::format("no case file {}", c.reference_case.string()));
   }
@@ -88,7 +96,22 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   c.relation = expect == "at_most" ? CheckSpec::Relation::at_most
                : expect == "at_least" ? CheckSpec::Relation::at_least
                                       : CheckSpec::Relation::equal;
+  if (c.match == CheckSpec::Match::mac && c.reference_case.empty())
+    r.fail("match", "\"mac\" pairs this run's modes with the modes of another case's run by shape: give reference_case (and "
+                    "reference_result = \"frequencies\")");
+  if (r.has("min_mac")) {
+    if (c.match != CheckSpec::Match::mac) r.fail("min_mac", "applies to match = \"mac\" only");
+    c.min_mac = r.number("min_mac");
+    if (!(c.min_mac > 0 && c.min_mac <= 1)) r.fail("min_mac", fmt::format("must lie in (0, 1], found {}", c.min_mac));
+  }
+  if (r.has("labels")) {
+    if (c.match != CheckSpec::Match::label) r.fail("labels", "applies to match = \"label\" only");
+    c.labels = r.string_array("labels");
+  }
+  if (c.match == CheckSpec::Match::label && c.labels.empty())
+    r.fail("match", "\"label\" pairs rows by text columns: give labels = [\"type\", ...]");
   c.key = r.string("key");
+  if (c.match == CheckSpec::Match::mac && c.key != "mode") r.fail("key", "match = \"mac\" pairs modes: the key is \"mode\"");
   TomlReader compare(r.table("compare"), r.path() + ".compare", r.file());
   for (const auto& [k, v] : r.table("compare")) {
     const std::string result_column(k.str());

@@ -2,6 +2,8 @@
 
 #include "cases/parse_common.hpp"
 
+#include <algorithm>
+
 namespace bb {
 
 ModalSpec parse_modal(TomlReader& r) {
@@ -20,6 +22,15 @@ ModalSpec parse_modal(TomlReader& r) {
   a.options.shift_frequency_hz = r.optional_number("shift_hz").value_or(a.options.shift_frequency_hz);
   a.options.tolerance = r.optional_number("tolerance").value_or(a.options.tolerance);
   a.pairs = parse_mode_pairs(r);
+  if (r.has("stress_modes")) {
+    for (long k : r.integer_array("stress_modes")) {
+      if (k < 1 || k > a.modes.lowest)
+        r.fail("stress_modes", fmt::format("mode {} is not among the {} modes asked for", k, a.modes.lowest));
+      if (std::find(a.stress_modes.begin(), a.stress_modes.end(), static_cast<int>(k)) != a.stress_modes.end())
+        r.fail("stress_modes", fmt::format("mode {} is listed twice", k));
+      a.stress_modes.push_back(static_cast<int>(k));
+    }
+  }
   return a;
 }
 

@@ -130,7 +130,8 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
     return m;
   }
   if (kind == "hex_blocks" || kind == "gmsh") {
-    if (m.dim() != 3) r.fail("element", fmt::format("kind '{}' needs a solid element (hex8, hex8i, hex20)", kind));
+    // Gmsh files hold plane meshes too (3-node triangles, 4-node quadrilaterals); blocks are solids.
+    if (kind == "hex_blocks" && m.dim() != 3) r.fail("element", "kind 'hex_blocks' needs a solid element (hex8, hex8i, hex20)");
     m.merge_tolerance = r.non_negative("merge_tolerance", m.merge_tolerance);
     if (kind == "gmsh") {
       m.kind = MeshSpec::Kind::gmsh;
@@ -239,15 +240,70 @@ ConstraintSpec parse_constraint(TomlReader r) {
   return c;
 }
 
-LoadSpec parse_load(TomlReader r) {
-  LoadSpec l;
-  l.at = r.location();
-  l.load.set = r.string("set");
-  l.load.direction = parse_direction(r, "direction", r.string("direction"));
-  l.load.total = r.number("total");
-  l.load.split = parse_split(r, "split");
+// A vector of `dim` numbers (a plane mesh's vectors have x, y only).
+Eigen::Vector3d parse_vector(TomlReader& r, const std::string& key, int dim) {
+  const std::vector<double> v = r.number_array(key);
+  if (static_cast<int>(v.size()) != dim)
+    r.fail(key, fmt::format("expected {} components ({}) on a {}D mesh, found {}", dim, dim == 2 ? "x, y" : "x, y, z", dim, v.size()));
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  for (int d = 0; d < dim; ++d) out[d] = v[static_cast<size_t>(d)];
+  return out;
+}
+
+// [[load]]: a nodal force (type "nodal", the default), a distributed load on boundary edges / faces
+// ("pressure", "traction") or a body load ("gravity", "centrifugal").
+void parse_load(TomlReader r, int dim, ModelSpec& spec) {
+  const std::string type = r.choice("type", {"nodal", "pressure", "traction", "gravity", "centrifugal"}, "nodal");
+  if (type == "nodal") {
+    LoadSpec l;
+    l.at = r.location();
+    l.load.set = r.string("set");
+    l.load.direction = parse_direction(r, "direction", r.string("direction"));
+    l.load.total = r.number("total");
+    l.load.split = parse_split(r, "split");
+    r.finish();
+    spec.loads.push_back(l);
+    return;
+  }
+  if (type == "pressure" || type == "traction") {
+    // The facets are named by the set of their nodes: `edges` on a plane mesh, `faces` on a solid.
+    const std::string key = dim == 2 ? "edges" : "faces";
+    const std::string other = dim == 2 ? "faces" : "edges";
+    if (r.has(other))
+      r.fail(other, dim == 2 ? "a plane (2D) mesh has no element faces to load: a distributed load acts on its edges (edges = \"set\")"
+                             : "a line load on the edges of a solid is not supported: load its faces (faces = \"set\")");
+    SurfaceLoadSpec l;
+    l.at = r.location(key);
+    l.key = r.path() + "." + key;
+    l.load.set = r.string(key);
+    if (type == "pressure") {
+      l.load.kind = SurfaceLoad::Kind::pressure;
+      l.load.pressure = r.number("pressure");
+    } else {
+      l.load.kind = SurfaceLoad::Kind::traction;
+      l.load.traction = parse_vector(r, "traction", dim);
+    }
+    r.finish();
+    spec.surface_loads.push_back(l);
+    return;
+  }
+  BodyLoadSpec l;
+  l.at = r.location("type");
+  if (type == "gravity") {
+    l.load.kind = BodyLoad::Kind::gravity;
+    l.load.acceleration = parse_vector(r, "acceleration", dim);
+  } else {
+    l.load.kind = BodyLoad::Kind::centrifugal;
+    l.load.speed = r.positive("speed");
+    const std::vector<double> axis = r.number_array("axis");
+    if (axis.size() != 3) r.fail("axis", fmt::format("expected a direction [x, y, z], found {} components", axis.size()));
+    const Eigen::Vector3d a(axis[0], axis[1], axis[2]);
+    if (!(a.norm() > 0)) r.fail("axis", "the axis direction must not be zero");
+    l.load.axis = a.normalized();
+    if (r.has("origin")) l.load.origin = parse_vector(r, "origin", dim);
+  }
   r.finish();
-  return l;
+  spec.body_loads.push_back(l);
 }
 
 }  // namespace
@@ -290,7 +346,10 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
     }
   }
   for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
-  for_each_table_in_array(top, "load", [&](TomlReader r) { spec.loads.push_back(parse_load(std::move(r))); });
+  for_each_table_in_array(top, "load", [&](TomlReader r) { parse_load(std::move(r), spec.mesh.dim(), spec); });
+  if (!spec.body_loads.empty() && !(spec.section.density > 0))
+    throw InputError(fmt::format("{}: a {} load acts through the mass: 'material.rho' must be > 0", spec.body_loads.front().at.where(),
+                                 spec.body_loads.front().load.kind == BodyLoad::Kind::gravity ? "gravity" : "centrifugal"));
   return spec;
 }
 

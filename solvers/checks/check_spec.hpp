@@ -18,6 +18,12 @@ struct CheckSpec {
   // How computed compares with reference: equal within the tolerance, or one-sided (at most /
   // at least the reference, give or take the tolerance), e.g. "this mesh is stiffer than that one".
   enum class Relation { equal, at_most, at_least } relation = Relation::equal;
+  // Which computed row a reference row is compared with: the row of the same key; the mode of the
+  // same shape (checks/mode_matching: MAC against the reference case's modes, a pairing below
+  // min_mac fails); or the k-th row with the same text labels (e.g. the 2nd "torsion" mode).
+  enum class Match { key, mac, label } match = Match::key;
+  double min_mac = 0.9;
+  std::vector<std::string> labels;    // match = label: the text columns that must agree
   std::string key;                    // key column of the reference, e.g. "node"
   std::vector<std::pair<std::string, std::string>> compare;  // result column -> reference column
   std::vector<long> keys;             // compare only these reference rows; empty = every row

@@ -4,6 +4,8 @@
 #include <vector>
 
 #include <filesystem>
+#include <map>
+#include <utility>
 
 #include "checks/check_spec.hpp"
 #include "results/table.hpp"
@@ -11,10 +13,11 @@
 namespace bb {
 
 struct CheckEntry {
-  std::string name;        // "<check name>: <column> <key> <id>"
+  std::string name;        // "<check name>: <column> <key> <id>" (and the matched row, when matched)
   std::string group;       // the check's name
   std::string column;      // the compared result column
-  long key = 0;            // the row's key (node id, mode number)
+  long key = 0;            // the reference row's key (node id, mode number)
+  long computed_key = 0;   // the computed row's key: `key`, or the row a match pairs it with
   double computed = 0.0;
   double reference = 0.0;
   double abs_error = 0.0;
@@ -34,10 +37,24 @@ struct ReferenceColumn {
 ReferenceColumn read_reference_column(const std::filesystem::path& file, const std::string& key_column,
                                       const std::string& value_column);
 
+// Reads the text labels of `label_column` by `key_column` ('#' lines are comments); an empty cell is
+// the label "". Throws InputError naming the file and line.
+std::vector<std::pair<long, std::string>> read_reference_labels(const std::filesystem::path& file, const std::string& key_column,
+                                                                const std::string& label_column);
+
+// The computed row of each reference row when a check does not pair them by key (match = mac: from
+// checks/mode_matching; a reference key absent from `computed_key` has no partner and fails).
+struct RowMatch {
+  std::map<long, long> computed_key;
+  std::map<long, std::string> note;  // shown in the entry's name, e.g. "MAC 0.998"
+};
+
 // Throws InputError when the reference names a row the results do not have. A reference_result is
 // looked up in `reference_results` when given (the run of check.reference_case), else in `results`.
+// `match` pairs the rows of a check with match = mac; match = label is resolved here from the text
+// columns of the two tables (or of the reference file).
 std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results,
-                                       const ResultTables* reference_results = nullptr);
+                                       const ResultTables* reference_results = nullptr, const RowMatch* match = nullptr);
 
 // "=", "<=" or ">=": how an entry's computed value must relate to its reference.
 const char* relation_symbol(CheckSpec::Relation relation);

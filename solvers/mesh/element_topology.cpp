@@ -30,4 +30,25 @@ const ElementTopology& topology(ElementType type) {
   return kQ4;  // unreachable: every enumerator is handled above (-Wswitch)
 }
 
+int facet_count(ElementType type) {
+  const ElementTopology& t = topology(type);
+  return static_cast<int>(t.dimension == 2 ? t.edges.size() : t.faces.size());
+}
+
+std::vector<int> facet_nodes(ElementType type, int facet) {
+  const ElementTopology& t = topology(type);
+  const auto f = static_cast<size_t>(facet);
+  if (t.dimension == 2) return {t.edges[f][0], t.edges[f][1]};  // the plane elements are linear
+  const auto& c = t.faces[f];
+  std::vector<int> nodes(c.begin(), c.end());
+  if (t.nodes > t.corners)
+    for (size_t i = 0; i < 4; ++i) {
+      const int a = c[i], b = c[(i + 1) % 4];
+      for (size_t k = 0; k < t.edges.size(); ++k)
+        if ((t.edges[k][0] == a && t.edges[k][1] == b) || (t.edges[k][0] == b && t.edges[k][1] == a))
+          nodes.push_back(t.corners + static_cast<int>(k));
+    }
+  return nodes;
+}
+
 }  // namespace bb

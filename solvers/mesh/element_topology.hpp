@@ -5,6 +5,7 @@
 #include <array>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -22,5 +23,12 @@ struct ElementTopology {
 };
 
 const ElementTopology& topology(ElementType type);
+
+// The facets of an element (2D: its edges, 3D: its faces) and their local nodes: the corners in the
+// order of `edges` / `faces` (a face counterclockwise seen from outside), then for a quadratic element
+// the mid-edge nodes of the facet's edges in the same order (a-b, b-c, c-d, d-a): hex20 faces are
+// 8-node serendipity quadrilaterals.
+int facet_count(ElementType type);
+std::vector<int> facet_nodes(ElementType type, int facet);
 
 }  // namespace bb

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "mesh/boundary.hpp"
 #include "mesh/csv_mesh.hpp"
 #include "mesh/gmsh_import.hpp"
 #include "mesh/hex_block.hpp"
@@ -133,7 +134,8 @@ Model build_model(const ModelSpec& spec) {
     case MeshSpec::Kind::none: return model;  // the analysis brings its own matrices
     case MeshSpec::Kind::gmsh: {
       require_file(spec.mesh.gmsh_file, spec.mesh.at);
-      const ElementType linear = spec.mesh.element == ElementType::hex20 ? ElementType::hex8 : spec.mesh.element;
+      // Which element an 8-node Gmsh hexahedron becomes (plane meshes: triangles and quads map by type).
+      const ElementType linear = spec.mesh.element == ElementType::hex8i ? ElementType::hex8i : ElementType::hex8;
       GmshMesh g = read_gmsh_msh41(spec.mesh.gmsh_file, linear);
       for (const auto& b : g.mesh.blocks)
         if (b.type != spec.mesh.element)
@@ -160,6 +162,18 @@ Model build_model(const ModelSpec& spec) {
     if (l.load.direction >= model.mesh.dim) throw InputError(fmt::format("{}: direction z on a 2D mesh", l.at.where()));
     model.loads.push_back(l.load);
   }
+  for (const SurfaceLoadSpec& l : spec.surface_loads) {
+    const auto set = model.node_sets.find(l.load.set);
+    if (set == model.node_sets.end()) throw InputError(fmt::format("{}: '{}': unknown node set '{}'", l.at.where(), l.key, l.load.set));
+    if (boundary_facets_within(model.mesh, set->second).empty())
+      throw InputError(fmt::format("{}: '{}': node set '{}' holds no boundary {} of the mesh ({})", l.at.where(), l.key, l.load.set,
+                                   model.mesh.dim == 2 ? "edge" : "face",
+                                   model.mesh.dim == 2 ? "an element edge on the boundary is loaded when both its nodes lie in the set"
+                                                       : "an element face on the boundary is loaded when all its nodes lie in the set, "
+                                                         "a hex20 face's mid-edge nodes too"));
+    model.surface_loads.push_back(l.load);
+  }
+  for (const BodyLoadSpec& l : spec.body_loads) model.body_loads.push_back(l.load);
   return model;
 }
 

@@ -31,12 +31,38 @@ struct NodalLoad {
   LoadSplit split = LoadSplit::equal;
 };
 
+// A distributed load on the boundary facets (2D: element edges, 3D: element faces) whose nodes all
+// lie in a node set, integrated with the element's shape functions (fe/surface_load.hpp): a plane
+// element's edge carries it over its length times the thickness, a hex20 face over its 8 nodes.
+struct SurfaceLoad {
+  enum class Kind { pressure, traction };
+  std::string set;
+  Kind kind = Kind::pressure;
+  double pressure = 0.0;                               // [Pa], > 0 pushes into the body (along -n, n outward)
+  Eigen::Vector3d traction = Eigen::Vector3d::Zero();  // [Pa], force per area in global axes (2D: x, y)
+};
+
+// A load on every element per unit mass, consistent with the element mass (f_e = M_e b, exact for
+// an acceleration linear in x on isoparametric elements): gravity, or the centrifugal acceleration
+// Omega^2 P (x - origin), P = I - a a^T, of a rotation at a fixed speed about an axis (a pure load:
+// no spin softening or stress stiffening, as a static analysis of a spinning part without them).
+struct BodyLoad {
+  enum class Kind { gravity, centrifugal };
+  Kind kind = Kind::gravity;
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // gravity [m/s^2]
+  double speed = 0.0;                                      // centrifugal: Omega [rad/s]
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();          // unit vector
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();         // a point of the axis [m] (2D: z = 0)
+};
+
 struct Model {
   Mesh mesh;
   fe::PlaneSection section;
   std::map<std::string, std::vector<int>> node_sets;  // internal node indices, sorted
   std::vector<Constraint> constraints;
   std::vector<NodalLoad> loads;
+  std::vector<SurfaceLoad> surface_loads;
+  std::vector<BodyLoad> body_loads;
 };
 
 }  // namespace bb

@@ -54,12 +54,25 @@ struct LoadSpec {
   SourceLocation at;
 };
 
+struct SurfaceLoadSpec {
+  SurfaceLoad load;
+  SourceLocation at;  // of the key naming the set
+  std::string key;    // that key's path, e.g. "load[2].faces", for messages
+};
+
+struct BodyLoadSpec {
+  BodyLoad load;
+  SourceLocation at;
+};
+
 struct ModelSpec {
   MeshSpec mesh;
   fe::PlaneSection section;  // E, nu, rho (and the thickness of plane meshes)
   std::vector<NodeSetSpec> sets;
   std::vector<ConstraintSpec> constraints;
   std::vector<LoadSpec> loads;
+  std::vector<SurfaceLoadSpec> surface_loads;
+  std::vector<BodyLoadSpec> body_loads;
 };
 
 }  // namespace bb

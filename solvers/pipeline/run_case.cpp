@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
 #include "checks/checks.hpp"
+#include "checks/mode_matching.hpp"
 #include "common/errors.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/run_study.hpp"
@@ -32,23 +34,60 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
   if (isatty(STDERR_FILENO)) progress = [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
   const AnalysisResults results = run_analysis(spec.analysis, model, progress);
   if (progress) std::fputs("\r\033[K", stderr);
-  describe_analysis(spec.analysis, results, run);
-  std::map<fs::path, AnalysisResults> other_cases;  // runs of the cases some checks compare with
-  for (const CheckSpec& c : spec.checks) {
-    const ResultTables* reference = nullptr;
-    if (!c.reference_case.empty()) {
-      auto it = other_cases.find(c.reference_case);
-      if (it == other_cases.end()) {
-        const CaseSpec other = parse_case_file(c.reference_case);
-        it = other_cases.emplace(c.reference_case, run_analysis(other.analysis, build_model(other.model))).first;
-      }
-      reference = &it->second.tables;
+  describe_analysis(spec.analysis, results, model, run);
+  // Runs of the cases some checks compare with (their analyses only), each run once.
+  struct OtherRun {
+    Model model;
+    AnalysisResults results;
+  };
+  std::map<fs::path, OtherRun> other_cases;
+  auto other_run = [&](const fs::path& file) -> const OtherRun& {
+    auto it = other_cases.find(file);
+    if (it == other_cases.end()) {
+      const CaseSpec other = parse_case_file(file);
+      Model other_model = build_model(other.model);
+      AnalysisResults other_results = run_analysis(other.analysis, other_model);
+      it = other_cases.emplace(file, OtherRun{std::move(other_model), std::move(other_results)}).first;
     }
-    auto entries = evaluate_check(c, results.tables, reference);
+    return it->second;
+  };
+  // Mode pairings by shape (match = "mac"): one per reference case, written as mac_<case>.csv.
+  ResultTables tables = results.tables;
+  std::map<fs::path, ModeMatch> mode_matches;
+  for (const CheckSpec& c : spec.checks) {
+    if (c.match != CheckSpec::Match::mac || mode_matches.count(c.reference_case)) continue;
+    const OtherRun& other = other_run(c.reference_case);
+    const auto* mine = std::get_if<ModalOutcome>(&results.outcome);
+    const auto* theirs = std::get_if<ModalOutcome>(&other.results.outcome);
+    if (!mine || !theirs)
+      throw InputError(fmt::format("{}: check '{}': match = \"mac\" pairs the modes of two modal analyses; {} is not one", c.at.where(),
+                                   c.name, !mine ? "this case" : c.reference_case.filename().string()));
+    const ModeMatch m = match_modes_by_shape(model.mesh, mine->modal, other.model.mesh, theirs->modal);
+    const std::string name = "mac_" + c.reference_case.stem().string();
+    tables.emplace(name, mode_match_table(name, m, mine->modal, theirs->modal));
+    run.facts.emplace_back(fmt::format("modes paired by shape with {}", c.reference_case.filename().string()),
+                           fmt::format("MAC over the {} nodes the meshes share ({}.csv)", m.common_nodes, name));
+    mode_matches.emplace(c.reference_case, m);
+  }
+  for (const CheckSpec& c : spec.checks) {
+    const ResultTables* reference = c.reference_case.empty() ? nullptr : &other_run(c.reference_case).results.tables;
+    std::optional<RowMatch> pairing;
+    if (c.match == CheckSpec::Match::mac) {
+      const ModeMatch& m = mode_matches.at(c.reference_case);
+      pairing.emplace();
+      for (size_t j = 0; j < m.computed_of_reference.size(); ++j) {
+        const long ref_mode = static_cast<long>(j) + 1;
+        const int k = m.computed_of_reference[j];
+        if (k >= 0 && m.match_mac[j] >= c.min_mac) pairing->computed_key[ref_mode] = k + 1;
+        pairing->note[ref_mode] = k >= 0 ? fmt::format("MAC {:.4f}{}", m.match_mac[j], m.match_mac[j] >= c.min_mac ? "" : fmt::format(" < {}", c.min_mac))
+                                         : std::string("no mode left to pair");
+      }
+    }
+    auto entries = evaluate_check(c, tables, reference, pairing ? &*pairing : nullptr);
     run.checks.insert(run.checks.end(), entries.begin(), entries.end());
   }
   fs::create_directories(out);
-  for (const auto& [name, table] : results.tables) {
+  for (const auto& [name, table] : tables) {
     write_table_csv(table, out / (name + ".csv"));
     run.tables.push_back(name + ".csv");
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);

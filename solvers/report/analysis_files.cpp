@@ -24,8 +24,8 @@ void files(const FrfSpec&, const FrfOutcome& frf, const fs::path& out, RunRecord
 }
 
 // The other analyses build no reduced model.
-void files(const StaticSpec&, const StaticSolution&, const fs::path&, RunRecord&) {}
-void files(const ModalSpec&, const ModalResult&, const fs::path&, RunRecord&) {}
+void files(const StaticSpec&, const StaticOutcome&, const fs::path&, RunRecord&) {}
+void files(const ModalSpec&, const ModalOutcome&, const fs::path&, RunRecord&) {}
 void files(const TimeSpec&, const TimeOutcome&, const fs::path&, RunRecord&) {}
 void files(const ContactLoopSpec&, const ContactLoopOutcome&, const fs::path&, RunRecord&) {}
 void files(const RotatingSpec&, const RotatingOutcome&, const fs::path&, RunRecord&) {}

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "report/contact_loop_plots.hpp"
+#include "report/contour_plots.hpp"
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
 #include "report/plots.hpp"
@@ -24,14 +25,28 @@ struct PlotTarget {
   RunRecord& run;
 };
 
-void plots(const StaticSpec&, const StaticSolution& s, const PlotTarget& t) {
-  t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, s.displacements, t.out, "deformed", "Deformed mesh"));
+Eigen::VectorXd nodal_von_mises(const StressField& field) {
+  Eigen::VectorXd v(field.nodal.rows());
+  for (Eigen::Index n = 0; n < v.size(); ++n) v[n] = von_mises(field.nodal.row(n));
+  return v;
 }
 
-void plots(const ModalSpec&, const ModalResult& modal, const PlotTarget& t) {
+void plots(const StaticSpec&, const StaticOutcome& s, const PlotTarget& t) {
+  t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, s.solution.displacements, t.out, "deformed", "Deformed mesh"));
+  t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(s.stresses), "Pa", t.out, "von_mises",
+                                           t.model.mesh.dim == 2 ? "von Mises stress (nodal averages)"
+                                                                 : "von Mises stress on the surface (nodal averages)"));
+}
+
+void plots(const ModalSpec&, const ModalOutcome& outcome, const PlotTarget& t) {
+  const ModalResult& modal = outcome.modal;
   for (size_t k = 0; k < std::min<size_t>(4, modal.shapes.size()); ++k)
     t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, modal.shapes[k], t.out, fmt::format("mode{}", k + 1),
                                              fmt::format("Mode {}: {:.4f} Hz", k + 1, modal.frequencies_hz[static_cast<Eigen::Index>(k)])));
+  for (const ModeStresses& m : outcome.stresses)
+    t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(m.field), "Pa per unit modal coordinate", t.out,
+                                             fmt::format("von_mises_mode{}", m.mode),
+                                             fmt::format("Mode {}: von Mises stress of the mass-normalized shape", m.mode)));
 }
 
 void plots(const FrfSpec&, const FrfOutcome& frf, const PlotTarget& t) {
@@ -80,6 +95,8 @@ void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget&
       if (f1 > 0 && spec.end_time > 20.0 / f1) t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem + "_zoom", 20.0 / f1));
     }
   t.run.plots.push_back(plot_campbell(o, spec.engine_orders, t.out, "campbell"));
+  t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(o.steady_stresses), "Pa", t.out, "steady_von_mises",
+                                           "von Mises stress of the steady centrifugal deflection (nodal averages)"));
 }
 
 }  // namespace

@@ -147,17 +147,42 @@ void describe(const ContactLoopSpec& spec, const ContactLoopOutcome& loop, RunRe
                                                                       loop.aft.closed ? "yes" : "NO", loop.aft.closure_mismatch));
 }
 
-void describe(const StaticSpec&, const StaticSolution& sol, RunRecord& run) {
+// The largest von Mises stress of a field and where it is: "3.21e+08 Pa at node 17".
+std::string peak_von_mises(const Mesh& mesh, const StressField& field) {
+  Eigen::Index node = 0;
+  double peak = -1.0;
+  for (Eigen::Index n = 0; n < field.nodal.rows(); ++n)
+    if (const double v = von_mises(field.nodal.row(n)); v > peak) {
+      peak = v;
+      node = n;
+    }
+  return fmt::format("{:.4g} Pa at node {} (elements there disagree by {:.3g} Pa)", peak, mesh.node_ids[static_cast<size_t>(node)],
+                     field.scatter[node]);
+}
+
+void describe(const StaticSpec&, const StaticOutcome& outcome, const Model& model, RunRecord& run) {
+  const StaticSolution& sol = outcome.solution;
   run.facts.emplace_back("analysis", "linear static, sparse Cholesky (CHOLMOD)");
   run.facts.emplace_back("free DOFs", std::to_string(sol.n_free_dofs));
   run.facts.emplace_back("pivot ratio (rcond estimate)", fmt::format("{:.3e}", sol.pivot_ratio));
   run.facts.emplace_back("relative residual ||Ku - f|| / ||f||", fmt::format("{:.3e}", sol.relative_residual));
   const double applied = sol.loads.sum(), reacted = sol.reactions.sum();
   run.facts.emplace_back("force balance |sum f + sum R| [N]", fmt::format("{:.3e}", std::abs(applied + reacted)));
-  run.facts.emplace_back("assembly / factor+solve [s]", fmt::format("{:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds));
+  const int dim = static_cast<int>(sol.displacements.cols());
+  std::string resultant;
+  for (int d = 0; d < dim; ++d) {
+    double sum = 0.0;
+    for (Eigen::Index i = d; i < sol.loads.size(); i += dim) sum += sol.loads[i];
+    resultant += fmt::format("{}{} = {:.6g}", d ? ", " : "", "xyz"[d], sum);
+  }
+  run.facts.emplace_back("resultant of the applied loads [N]", resultant);
+  run.facts.emplace_back("assembly / factor+solve / stress recovery [s]",
+                         fmt::format("{:.4f} / {:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds, outcome.stresses.seconds));
+  run.facts.emplace_back("largest nodal von Mises stress", peak_von_mises(model.mesh, outcome.stresses));
 }
 
-void describe(const ModalSpec& spec, const ModalResult& modal, RunRecord& run) {
+void describe(const ModalSpec& spec, const ModalOutcome& outcome, const Model& model, RunRecord& run) {
+  const ModalResult& modal = outcome.modal;
   const ModeSelection& sel = spec.modes;
   run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
                                                  sel.band_max_hz ? fmt::format("all modes in [{}, {}] Hz", sel.band_min_hz.value_or(0.0), *sel.band_max_hz)
@@ -179,6 +204,9 @@ void describe(const ModalSpec& spec, const ModalResult& modal, RunRecord& run) {
     run.facts.emplace_back("mode labels", fmt::format("pair: sign of '{}' vs '{}' along {}; type: motion of tip face '{}' "
                                                       "(else '{}')", p.left, p.right, "xyz"[p.direction], p.right_tip, p.left_tip));
   }
+  for (const ModeStresses& m : outcome.stresses)
+    run.facts.emplace_back(fmt::format("mode {}: largest von Mises stress per unit modal coordinate (shape normalized to unit modal mass)", m.mode),
+                           peak_von_mises(model.mesh, m.field));
 }
 
 void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run) {
@@ -265,10 +293,29 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
     run.facts.emplace_back(fmt::format("load on '{}'", l.set),
                            fmt::format("{} N along {}, split {}", g(l.total), "xyz"[l.direction],
                                        l.split == LoadSplit::equal ? "equally" : "consistently over the edge"));
+  auto vec = [&](const Eigen::Vector3d& v) {
+    return mesh.dim == 2 ? fmt::format("({}, {})", g(v.x()), g(v.y())) : fmt::format("({}, {}, {})", g(v.x()), g(v.y()), g(v.z()));
+  };
+  const char* facets = mesh.dim == 2 ? "boundary edges" : "boundary faces";
+  for (const SurfaceLoad& l : model.surface_loads)
+    run.facts.emplace_back(fmt::format("{} on '{}'", l.kind == SurfaceLoad::Kind::pressure ? "pressure" : "traction", l.set),
+                           l.kind == SurfaceLoad::Kind::pressure
+                               ? fmt::format("{} Pa normal to the {} of the set (> 0 pushes into the body), consistent nodal forces", g(l.pressure), facets)
+                               : fmt::format("{} Pa on the {} of the set, consistent nodal forces", vec(l.traction), facets));
+  for (const BodyLoad& l : model.body_loads)
+    run.facts.emplace_back(l.kind == BodyLoad::Kind::gravity ? "gravity" : "centrifugal load",
+                           l.kind == BodyLoad::Kind::gravity
+                               ? fmt::format("{} m/s^2 on every element, through its consistent mass", vec(l.acceleration))
+                               : fmt::format("{} rad/s about the axis ({}, {}, {}) through {} m, through the consistent mass (no spin "
+                                             "softening, no stress stiffening)", g(l.speed), g(l.axis.x()), g(l.axis.y()), g(l.axis.z()),
+                                             vec(l.origin)));
 }
 
-void describe_analysis(const AnalysisSpec& spec, const AnalysisResults& results, RunRecord& run) {
-  visit_analysis(spec, results, [&](const auto& s, const auto& outcome) { describe(s, outcome, run); });
+void describe_analysis(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model, RunRecord& run) {
+  visit_analysis(spec, results, [&](const auto& s, const auto& outcome) {
+    if constexpr (requires { describe(s, outcome, model, run); }) describe(s, outcome, model, run);  // facts that name nodes
+    else describe(s, outcome, run);
+  });
 }
 
 }  // namespace bb

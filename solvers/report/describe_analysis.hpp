@@ -10,6 +10,6 @@ namespace bb {
 // `driven_contact`: the analysis has no model of its own (a contact driven by an imposed motion).
 void describe_model(const ModelSpec& spec, bool driven_contact, const Model& model, RunRecord& run);
 
-void describe_analysis(const AnalysisSpec& spec, const AnalysisResults& results, RunRecord& run);
+void describe_analysis(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model, RunRecord& run);
 
 }  // namespace bb

@@ -1,5 +1,6 @@
 #include "report/plots.hpp"
 
+#include "mesh/boundary.hpp"
 #include "mesh/element_topology.hpp"
 
 #include "report/gnuplot.hpp"
@@ -59,20 +60,8 @@ namespace {
 
 // Corner-node faces of every solid element that no other element shares (the skin).
 std::vector<std::array<int, 4>> boundary_faces(const Mesh& mesh) {
-  std::map<std::array<int, 4>, std::pair<int, std::array<int, 4>>> faces;
-  for (const auto& b : mesh.blocks) {
-    for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
-      for (const auto& f : topology(b.type).faces) {
-        std::array<int, 4> face{b.conn(e, f[0]), b.conn(e, f[1]), b.conn(e, f[2]), b.conn(e, f[3])};
-        std::array<int, 4> key = face;
-        std::sort(key.begin(), key.end());
-        auto [it, fresh] = faces.try_emplace(key, 0, face);
-        ++it->second.first;
-      }
-  }
   std::vector<std::array<int, 4>> out;
-  for (const auto& [key, value] : faces)
-    if (value.first == 1) out.push_back(value.second);
+  for (const Facet& f : boundary_facets(mesh)) out.push_back({f.nodes[0], f.nodes[1], f.nodes[2], f.nodes[3]});
   return out;
 }
 

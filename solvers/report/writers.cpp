@@ -183,11 +183,17 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
         max_abs = std::max(max_abs, e.abs_error);
         if (std::isfinite(e.rel_error) && e.reference != 0.0) max_rel = std::max(max_rel, e.rel_error);
       }
-      const std::string reference = !spec.reference_case.empty()   ? fmt::format("result {} of {}", spec.reference_result,
+      const std::string reference = !spec.reference_case.empty() && spec.reference_result.empty()
+                                        ? fmt::format("{}, numbered by the modes of {}", spec.reference.filename().string(),
+                                                      spec.reference_case.filename().string())
+                                    : !spec.reference_case.empty() ? fmt::format("result {} of {}", spec.reference_result,
                                                                               spec.reference_case.filename().string())
                                     : spec.reference_result.empty() ? spec.reference.filename().string()
                                                                     : "result " + spec.reference_result;
-      out << fmt::format("| {} | `{}` | {} | {} | {} | {} | {} | {} | {} | {} |\n", spec.name, reference, relation_symbol(spec.relation),
+      const std::string paired = spec.match == CheckSpec::Match::mac     ? fmt::format(", modes paired by shape (MAC >= {})", spec.min_mac)
+                                 : spec.match == CheckSpec::Match::label ? fmt::format(", rows paired by label ({})", fmt::join(spec.labels, ", "))
+                                                                         : "";
+      out << fmt::format("| {} | `{}`{} | {} | {} | {} | {} | {} | {} | {} | {} |\n", spec.name, reference, paired, relation_symbol(spec.relation),
                          spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol), sci(spec.rel_tol), n, failed, sci(max_abs),
                          sci(max_rel));
     }

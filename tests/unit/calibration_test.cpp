@@ -72,7 +72,7 @@ class CalibrationRoundTrip : public test::TempFolderTest {
     std::ofstream ref(dir_ / "reference.csv");
     ref.precision(17);
     ref << "mode,frequency_hz\n";
-    for (Eigen::Index i = 0; i < std::get<ModalResult>(r.outcome).frequencies_hz.size(); ++i) ref << i + 1 << ',' << std::get<ModalResult>(r.outcome).frequencies_hz[i] << '\n';
+    for (Eigen::Index i = 0; i < std::get<ModalOutcome>(r.outcome).modal.frequencies_hz.size(); ++i) ref << i + 1 << ',' << std::get<ModalOutcome>(r.outcome).modal.frequencies_hz[i] << '\n';
     ref.close();
     write_values(dir_ / "case.toml", e_start, rho_start, parameters);
     return dir_ / "case.toml";

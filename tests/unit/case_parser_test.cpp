@@ -9,6 +9,7 @@
 #include <string>
 
 #include "analysis/static_analysis.hpp"
+#include "assembly/load_vector.hpp"
 #include "cases/case_spec.hpp"
 #include "model/build_model.hpp"
 #include "common/errors.hpp"
@@ -181,6 +182,55 @@ TEST_F(CaseFile, ModalAnalysisReadsModesAndShift) {
   EXPECT_TRUE(std::holds_alternative<ModalSpec>(spec.analysis));
   EXPECT_EQ(std::get<ModalSpec>(spec.analysis).modes.lowest, 4);
   EXPECT_EQ(std::get<ModalSpec>(spec.analysis).options.shift_frequency_hz, 2.5);
+}
+
+// The [[load]] forms besides the nodal total: each reaches the model as its typed load, and the
+// static run applies them (the resultant of each is its closed form).
+TEST_F(CaseFile, DistributedAndBodyLoadsParseIntoTheirTypedLoads) {
+  const std::string loads = R"([[load]]
+type = "pressure"
+edges = "right"
+pressure = -2.0e6
+
+[[load]]
+type = "traction"
+edges = "right"
+traction = [0.0, 5.0e5]
+
+[[load]]
+type = "gravity"
+acceleration = [0.0, -9.81]
+
+[[load]]
+type = "centrifugal"
+speed = 100.0
+axis = [0.0, 0.0, 1.0]
+origin = [-1.0, 0.5]
+)";
+  const CaseSpec spec = parse_case_file(write(replace(kMinimalCase, "[analysis]", loads + "\n[analysis]")));
+  ASSERT_EQ(spec.model.loads.size(), 1u);  // the nodal total is unchanged
+  ASSERT_EQ(spec.model.surface_loads.size(), 2u);
+  EXPECT_EQ(spec.model.surface_loads[0].load.kind, SurfaceLoad::Kind::pressure);
+  EXPECT_EQ(spec.model.surface_loads[0].load.pressure, -2.0e6);
+  EXPECT_EQ(spec.model.surface_loads[0].key, "load[1].edges");
+  EXPECT_EQ(spec.model.surface_loads[1].load.traction, Eigen::Vector3d(0.0, 5.0e5, 0.0));
+  ASSERT_EQ(spec.model.body_loads.size(), 2u);
+  EXPECT_EQ(spec.model.body_loads[0].load.acceleration, Eigen::Vector3d(0.0, -9.81, 0.0));
+  EXPECT_EQ(spec.model.body_loads[1].load.kind, BodyLoad::Kind::centrifugal);
+  EXPECT_EQ(spec.model.body_loads[1].load.origin, Eigen::Vector3d(-1.0, 0.5, 0.0));
+  const Model model = build_model(spec.model);
+  const Eigen::VectorXd f = load_vector(model);
+  double fx = 0, fy = 0;
+  for (Eigen::Index i = 0; i < f.size(); i += 2) {
+    fx += f[i];
+    fy += f[i + 1];
+  }
+  // Edge x = 2, height 1, thickness 0.1: the pull 2e6 Pa gives +2e5 N along x, the traction +5e4 N
+  // along y; the 2 x 1 x 0.1 m plate of 7800 kg/m^3 weighs 1560 kg x 9.81; spinning about (-1, 0.5)
+  // its centroid (1, 0.5) lies 2 m off the axis: 1560 kg x 100^2 x 2 m along +x.
+  const double mass = 7800.0 * 2.0 * 1.0 * 0.1;
+  EXPECT_NEAR(fx, 2e5 + mass * 1e4 * 2.0, 1e-6 * mass * 1e4);
+  EXPECT_NEAR(fy, -1000.0 + 5e4 - mass * 9.81, 1e-6 * mass * 9.81);
 }
 
 TEST_F(CaseFile, UnknownKeyIsRejectedNamingTheKeyAndItsLine) {

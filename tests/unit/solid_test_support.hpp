@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fe/solid.hpp"
+#include "mesh/mesh.hpp"
 
 namespace bb::test {
 
@@ -214,6 +215,26 @@ inline Eigen::VectorXd solve_with_prescribed(const Eigen::MatrixXd& k, const Eig
   Eigen::VectorXd u = prescribed;
   for (Eigen::Index r = 0; r < nf; ++r) u[free_dofs[static_cast<size_t>(r)]] = uf[r];
   return u;
+}
+
+// The grid as a bb::Mesh of one block (node ids 1..n, element ids 1..m), for tests of the mesh-level
+// code (assembly, loads, stress recovery).
+inline Mesh mesh_from_grid(const HexGrid& grid, ElementType type) {
+  Mesh mesh;
+  mesh.dim = 3;
+  mesh.coords = grid.coords;
+  for (Eigen::Index a = 0; a < grid.coords.rows(); ++a) mesh.node_ids.push_back(a + 1);
+  mesh.rebuild_index();
+  ElementBlock block;
+  block.type = type;
+  const int nodes = nodes_per_element(type);
+  block.conn.resize(static_cast<Eigen::Index>(grid.elements.size()), nodes);
+  for (size_t e = 0; e < grid.elements.size(); ++e) {
+    for (int a = 0; a < nodes; ++a) block.conn(static_cast<Eigen::Index>(e), a) = grid.elements[e][static_cast<size_t>(a)];
+    block.ids.push_back(static_cast<long>(e) + 1);
+  }
+  mesh.blocks.push_back(std::move(block));
+  return mesh;
 }
 
 }  // namespace bb::test

@@ -60,6 +60,77 @@ Eigen::MatrixXd analysis_matrix(int harmonics, int samples) {
   return p;
 }
 
+namespace {
+
+// The checks of aft_jenkins's inputs; returns the number of harmonics of u and v.
+int checked_harmonics(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                      const AftOptions& options) {
+  validate(p);
+  if (u.size() != v.size())
+    throw std::invalid_argument(fmt::format("AFT: {} tangential and {} normal coefficients", u.size(), v.size()));
+  const int harmonics = harmonics_of(u.size());
+  if (!u.allFinite() || !v.allFinite()) throw std::invalid_argument("AFT: a displacement coefficient is not finite");
+  require_samples(harmonics, options.samples);
+  if (options.max_periods < 2)
+    throw std::invalid_argument(fmt::format("AFT: max_periods must be >= 2 (got {})", options.max_periods));
+  if (!(options.closure_tolerance >= 0.0) || !std::isfinite(options.closure_tolerance))
+    throw std::invalid_argument("AFT: closure_tolerance must be finite and >= 0");
+  if (!std::isfinite(options.initial_slider)) throw std::invalid_argument("AFT: initial_slider must be finite");
+  return harmonics;
+}
+
+// One sample of the chain rule below for the coefficients [u; v]: the row dT_k (from the row dN_k
+// and the synthesis row phi_k) and the slider's row dw, updated from w_{k-1}'s to w_k's.
+void coefficient_derivative_step(const JenkinsParameters& p, const JenkinsStep& s, const Eigen::RowVectorXd& phi,
+                                 const Eigen::RowVectorXd& dn, Eigen::RowVectorXd& dt, Eigen::RowVectorXd& dw) {
+  const Eigen::Index m = phi.size();
+  switch (s.state) {
+    case ContactState::lift_off:
+      dt.setZero();
+      dw.setZero();
+      dw.head(m) = phi;
+      break;
+    case ContactState::stick:
+      dt = -p.kt * dw;
+      dt.head(m) += p.kt * phi;
+      break;
+    case ContactState::slip_positive:
+    case ContactState::slip_negative: {
+      const double sign = s.state == ContactState::slip_positive ? 1.0 : -1.0;
+      dt = sign * p.mu * dn;
+      dw = -dt / p.kt;
+      dw.head(m) += phi;
+      break;
+    }
+  }
+}
+
+// The same for the law's parameters (kt, mu, kn, n0); `elongation` is u_k - w_{k-1}.
+void law_derivative_step(const JenkinsParameters& p, const JenkinsStep& s, double elongation,
+                         const Eigen::RowVector4d& dn, Eigen::RowVector4d& dt, Eigen::RowVector4d& dw) {
+  switch (s.state) {
+    case ContactState::lift_off:
+      dt.setZero();
+      dw.setZero();
+      break;
+    case ContactState::stick:
+      dt = -p.kt * dw;
+      dt[law_kt] += elongation;
+      break;
+    case ContactState::slip_positive:
+    case ContactState::slip_negative: {
+      const double sign = s.state == ContactState::slip_positive ? 1.0 : -1.0;
+      dt = sign * p.mu * dn;
+      dt[law_mu] += sign * s.normal;
+      dw = -dt / p.kt;
+      dw[law_kt] += s.tangential / (p.kt * p.kt);
+      break;
+    }
+  }
+}
+
+}  // namespace
+
 // The march and its derivative. At sample k, with the slider w_{k-1} left by the previous sample,
 // jenkins_step gives (all quantities at sample k; e_k is row k of the synthesis matrix, so
 // du_k = e_k du and dv_k = e_k dv):
@@ -90,17 +161,7 @@ Eigen::MatrixXd analysis_matrix(int harmonics, int samples) {
 // so a contact stuck throughout has dT/dmu = 0 exactly and a frictionless one dT/dkt = 0.
 AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const AftOptions& options) {
-  validate(p);
-  if (u.size() != v.size())
-    throw std::invalid_argument(fmt::format("AFT: {} tangential and {} normal coefficients", u.size(), v.size()));
-  const int harmonics = harmonics_of(u.size());
-  if (!u.allFinite() || !v.allFinite()) throw std::invalid_argument("AFT: a displacement coefficient is not finite");
-  require_samples(harmonics, options.samples);
-  if (options.max_periods < 2)
-    throw std::invalid_argument(fmt::format("AFT: max_periods must be >= 2 (got {})", options.max_periods));
-  if (!(options.closure_tolerance >= 0.0) || !std::isfinite(options.closure_tolerance))
-    throw std::invalid_argument("AFT: closure_tolerance must be finite and >= 0");
-  if (!std::isfinite(options.initial_slider)) throw std::invalid_argument("AFT: initial_slider must be finite");
+  const int harmonics = checked_harmonics(p, u, v, options);
 
   const int n = options.samples;
   const Eigen::Index m = u.size();
@@ -130,7 +191,7 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
   Eigen::MatrixXd dt_rows = Eigen::MatrixXd::Zero(n, 2 * m);
   Eigen::MatrixXd dn_rows = Eigen::MatrixXd::Zero(n, 2 * m);
   Eigen::RowVectorXd dw = Eigen::RowVectorXd::Zero(2 * m);
-  Eigen::RowVectorXd dn(2 * m);
+  Eigen::RowVectorXd dn(2 * m), dt(2 * m);
   const bool with_law = options.law_derivatives;
   Eigen::Matrix<double, Eigen::Dynamic, 4> dt_law, dn_law;
   if (with_law) dt_law = dn_law = Eigen::Matrix<double, Eigen::Dynamic, 4>::Zero(n, 4);
@@ -147,25 +208,9 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
         dn_p.setZero();
         if (s.normal > 0.0) dn_p << r.v[k], 0.0, 0.0, 1.0;
         dn_law.row(k) = dn_p;
-        switch (s.state) {
-          case ContactState::lift_off:
-            dt_law.row(k).setZero();
-            dw_law.setZero();
-            break;
-          case ContactState::stick:
-            dt_law.row(k) = -p.kt * dw_law;
-            dt_law(k, law_kt) += r.u[k] - slider;
-            break;
-          case ContactState::slip_positive:
-          case ContactState::slip_negative: {
-            const double sign = s.state == ContactState::slip_positive ? 1.0 : -1.0;
-            dt_law.row(k) = sign * p.mu * dn_p;
-            dt_law(k, law_mu) += sign * s.normal;
-            dw_law = -dt_law.row(k) / p.kt;
-            dw_law[law_kt] += s.tangential / (p.kt * p.kt);
-            break;
-          }
-        }
+        Eigen::RowVector4d dt_p = Eigen::RowVector4d::Zero();
+        law_derivative_step(p, s, r.u[k] - slider, dn_p, dt_p, dw_law);
+        dt_law.row(k) = dt_p;
       }
       slider = s.slider;
       r.t[k] = s.tangential;
@@ -176,25 +221,8 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
       dn.setZero();
       if (s.normal > 0.0) dn.tail(m) = p.kn * synthesis.row(k);
       dn_rows.row(k) = dn;
-      switch (s.state) {
-        case ContactState::lift_off:
-          dt_rows.row(k).setZero();
-          dw.setZero();
-          dw.head(m) = synthesis.row(k);
-          break;
-        case ContactState::stick:
-          dt_rows.row(k) = -p.kt * dw;
-          dt_rows.row(k).head(m) += p.kt * synthesis.row(k);
-          break;
-        case ContactState::slip_positive:
-        case ContactState::slip_negative: {
-          const double sign = s.state == ContactState::slip_positive ? 1.0 : -1.0;
-          dt_rows.row(k) = sign * p.mu * dn;
-          dw = -dt_rows.row(k) / p.kt;
-          dw.head(m) += synthesis.row(k);
-          break;
-        }
-      }
+      coefficient_derivative_step(p, s, synthesis.row(k), dn, dt, dw);
+      dt_rows.row(k) = dt;
     }
     r.periods = period;
     r.closure_mismatch = std::abs(slider - start);
@@ -206,9 +234,9 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
 
   r.tangential = analysis * r.t;
   r.normal = analysis * r.n;
-  const Eigen::MatrixXd dt = analysis * dt_rows;
-  r.dtangential_du = dt.leftCols(m);
-  r.dtangential_dv = dt.rightCols(m);
+  const Eigen::MatrixXd dt_coefficients = analysis * dt_rows;
+  r.dtangential_du = dt_coefficients.leftCols(m);
+  r.dtangential_dv = dt_coefficients.rightCols(m);
   r.dnormal_dv = (analysis * dn_rows).rightCols(m);
   if (with_law) {
     r.dtangential_dlaw = analysis * dt_law;

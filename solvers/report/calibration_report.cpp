@@ -100,12 +100,8 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
   return draw(out_dir, stem, title, script);
 }
 
-}  // namespace
-
-void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case_file, double wall_seconds,
-                               const fs::path& out_dir, bool plots) {
-  fs::create_directories(out_dir);
-  fs::remove(out_dir / "report.md");
+// The machine-readable outputs; calibrated.toml only for a converged fit.
+void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_file, const fs::path& out_dir) {
   {
     std::ofstream out = open_out(out_dir / "identification.csv");
     out << "parameter,start,value,std,lower,upper\n";
@@ -147,6 +143,15 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
                          a.sigma, o.before[k].computed, o.before[k].residual(), a.computed, a.residual());
     }
   }
+}
+
+}  // namespace
+
+void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case_file, double wall_seconds,
+                               const fs::path& out_dir, bool plots) {
+  fs::create_directories(out_dir);
+  fs::remove(out_dir / "report.md");
+  write_calibration_files(o, case_file, out_dir);
   std::ofstream md = open_out(out_dir / "report.md");
   md << fmt::format("# Calibration of `{}`\n\n", case_file.string());
   md << fmt::format("{} in {:.1f} s, {} model evaluations ({:.2f} s each on average). Cost {:.6g} -> {:.6g}; rms residual {:.3g} -> {:.3g} sigma.\n\n",

@@ -10,20 +10,20 @@
 // Measurement only: nothing here asserts a time. Counter max_difference: the largest
 // |J_analytic - J_central| over all entries, in units of the largest |J| entry.
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
-#include "model/build_model.hpp"
 #include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
+#include "model/build_model.hpp"
 
 namespace {
 
@@ -82,11 +82,13 @@ const Problem& problem() {
       o.noise = 0.02;
       o.phase_noise = 0.02;
       o.every = 6;
-      o.columns = {{"frequency", "frequency_hz", "Hz"}, {"amplitude", "A.x_amp_m", "um"}, {"phase", "A.x_phase_deg", "deg"}};
+      o.columns = {
+          {"frequency", "frequency_hz", "Hz"}, {"amplitude", "A.x_amp_m", "um"}, {"phase", "A.x_phase_deg", "deg"}};
       for (const std::string level : {"0.3", "10"}) {
         bb::write_synthetic_data(r.tables.at("frf_" + level), o, dir / ("frf_" + level + ".csv"));
-        text += "[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_" + level + ".csv\"\ntable = \"frf_" + level +
-                "\"\ncolumns = { frequency = \"frequency_hz\", amplitude = \"A.x_amp_m\", phase = \"A.x_phase_deg\" }\n";
+        text +=
+            "[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_" + level + ".csv\"\ntable = \"frf_" + level +
+            "\"\ncolumns = { frequency = \"frequency_hz\", amplitude = \"A.x_amp_m\", phase = \"A.x_phase_deg\" }\n";
       }
     }
     std::ofstream(out.file) << text;
@@ -119,7 +121,8 @@ Eigen::MatrixXd analytic_jacobian(const Problem& p) {
   const std::vector<bb::FitPoint> pts = points(t, p, true);
   Eigen::MatrixXd j(static_cast<Eigen::Index>(pts.size()), static_cast<Eigen::Index>(p.paths.size()));
   for (size_t k = 0; k < pts.size(); ++k)
-    for (size_t i = 0; i < p.paths.size(); ++i) j(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = pts[k].gradient.at(i);
+    for (size_t i = 0; i < p.paths.size(); ++i)
+      j(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = pts[k].gradient.at(i);
   return j;
 }
 
@@ -136,7 +139,8 @@ Eigen::MatrixXd central_jacobian(const Problem& p) {
     }
     if (j.size() == 0) j.resize(static_cast<Eigen::Index>(side[0].size()), static_cast<Eigen::Index>(p.paths.size()));
     for (size_t k = 0; k < side[0].size(); ++k)
-      j(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = (side[0][k].residual() - side[1][k].residual()) / (2 * h);
+      j(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) =
+          (side[0][k].residual() - side[1][k].residual()) / (2 * h);
   }
   return j;
 }

@@ -60,8 +60,9 @@ bb::Mesh solid_blade_mesh() {
   const auto x = columns();
   auto block = [](double x0, double x1, double y0, double y1, int nx, int ny) {
     bb::HexBlockSpec s;
-    s.corners = {Eigen::Vector3d(x0, y0, 0), Eigen::Vector3d(x1, y0, 0), Eigen::Vector3d(x1, y1, 0),
-                 Eigen::Vector3d(x0, y1, 0), Eigen::Vector3d(x0, y0, kThickness), Eigen::Vector3d(x1, y0, kThickness),
+    s.corners = {Eigen::Vector3d(x0, y0, 0),          Eigen::Vector3d(x1, y0, 0),
+                 Eigen::Vector3d(x1, y1, 0),          Eigen::Vector3d(x0, y1, 0),
+                 Eigen::Vector3d(x0, y0, kThickness), Eigen::Vector3d(x1, y0, kThickness),
                  Eigen::Vector3d(x1, y1, kThickness), Eigen::Vector3d(x0, y1, kThickness)};
     s.nx = nx;
     s.ny = ny;
@@ -183,8 +184,8 @@ void BM_FfrfSpinUpBeam(benchmark::State& state) {
   model.constraints = {{"root", {0, 1, 2}, 0.0}};
   bb::ffrf::FfrfOptions o;
   o.output_stride = 10;
-  o.factorization = state.range(0) == 0 ? bb::ffrf::FactorizationReuse::every_change
-                                        : bb::ffrf::FactorizationReuse::with_correction;
+  o.factorization =
+      state.range(0) == 0 ? bb::ffrf::FactorizationReuse::every_change : bb::ffrf::FactorizationReuse::with_correction;
   run(state, model, state.range(0) == 2 ? modal(12) : bb::ffrf::ElasticBasisOptions{},
       bb::ffrf::RotationProfile::spin_up(6.0, 15.0), 25.0, 0.005, o, {});
 }

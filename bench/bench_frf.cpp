@@ -13,8 +13,8 @@
 
 #include "analysis/frf_analysis.hpp"
 #include "cases/case_spec.hpp"
-#include "model/build_model.hpp"
 #include "frf/sweep.hpp"
+#include "model/build_model.hpp"
 
 namespace {
 

@@ -85,7 +85,8 @@ void BM_HbmContinuationSweep(benchmark::State& state) {
   const double omega = bb::hbm::models::stuck_resonance(system.model(), 0);
   bb::hbm::ContinuationResult last;
   for (auto _ : state) {
-    last = bb::hbm::continue_in_frequency(system, {.omega_start = 0.8 * omega, .omega_end = 1.2 * omega, .progress = {}});
+    last =
+        bb::hbm::continue_in_frequency(system, {.omega_start = 0.8 * omega, .omega_end = 1.2 * omega, .progress = {}});
     if (!last.converged) {
       state.SkipWithError(("continuation stopped: " + last.failure).c_str());
       return;

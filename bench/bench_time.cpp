@@ -17,7 +17,9 @@ namespace {
 
 using bb::hbm::HbmModel;
 
-HbmModel friction_model() { return bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2); }
+HbmModel friction_model() {
+  return bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2);
+}
 
 // The same blades and damper with the contacts replaced by their springs: a linear model.
 HbmModel linear_model() {
@@ -34,7 +36,8 @@ void step_benchmark(benchmark::State& state, const HbmModel& model) {
   const auto excitation = bb::timeint::harmonic_excitation(model.harmonic_load, omega);
   // Warm up a few periods from the static state, so the timed steps see the stick-slip cycle.
   const bb::timeint::StaticState s = bb::timeint::static_initial_state(model);
-  bb::timeint::DynamicState x = integrator.initial_state(s.q, Eigen::VectorXd::Zero(s.q.size()), 0.0, excitation, s.sliders);
+  bb::timeint::DynamicState x =
+      integrator.initial_state(s.q, Eigen::VectorXd::Zero(s.q.size()), 0.0, excitation, s.sliders);
   for (int k = 0; k < 20 * 128; ++k) integrator.step(x, excitation);
   long iterations = 0, steps = 0;
   for (auto _ : state) {

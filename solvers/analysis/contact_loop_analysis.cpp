@@ -37,8 +37,10 @@ double stick_slope(const contact::AftResult& a) {
   };
   for (Eigen::Index i = 1; i <= n; ++i) {
     const Eigen::Index k = (start + i) % n;  // start == n (stuck throughout): one run of every sample
-    if (a.state[static_cast<size_t>(k)] == ContactState::stick) run.push_back(k);
-    else close_run();
+    if (a.state[static_cast<size_t>(k)] == ContactState::stick)
+      run.push_back(k);
+    else
+      close_run();
   }
   close_run();
   const double scale = a.u.cwiseAbs().maxCoeff();
@@ -66,7 +68,8 @@ double lift_off_fraction_closed_form(const contact::JenkinsParameters& law, doub
   return std::acos(law.n0 / reach) / std::numbers::pi;
 }
 
-ContactLoopSummary summarise_loop(const contact::JenkinsParameters& law, double tangential_amplitude, const contact::AftResult& a) {
+ContactLoopSummary summarise_loop(const contact::JenkinsParameters& law, double tangential_amplitude,
+                                  const contact::AftResult& a) {
   ContactLoopSummary s;
   const Eigen::Index n = a.u.size();
   // Loop area by the trapezoid rule in u over the closed sampled loop: what a rig integrates from its
@@ -106,7 +109,8 @@ ContactLoopSummary summarise_loop(const contact::JenkinsParameters& law, double 
 }
 
 ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
-  if (!(spec.tangential_amplitude > 0.0) || !(spec.normal_amplitude >= 0.0) || !std::isfinite(spec.normal_phase_deg) || spec.samples < 16)
+  if (!(spec.tangential_amplitude > 0.0) || !(spec.normal_amplitude >= 0.0) || !std::isfinite(spec.normal_phase_deg) ||
+      spec.samples < 16)
     throw std::invalid_argument("contact_loop: need U > 0, V >= 0, a finite phase and at least 16 samples");
   const double phi = spec.normal_phase_deg * std::numbers::pi / 180.0;
   // H = 1 coefficients [c0, a1, b1]: V cos(theta + phi) = V cos(phi) cos(theta) - V sin(phi) sin(theta).
@@ -123,11 +127,13 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
   std::vector<std::vector<double>> rows;
   std::vector<std::string> states;
   for (Eigen::Index k = 0; k < a.u.size(); ++k) {
-    rows.push_back({static_cast<double>(k + 1), 360.0 * static_cast<double>(k) / spec.samples, a.u[k], a.v[k], a.t[k], a.n[k], a.w[k]});
+    rows.push_back({static_cast<double>(k + 1), 360.0 * static_cast<double>(k) / spec.samples, a.u[k], a.v[k], a.t[k],
+                    a.n[k], a.w[k]});
     states.emplace_back(contact::state_name(a.state[static_cast<size_t>(k)]));
   }
-  ResultTable h = table_from_rows("hysteresis", {"instant", "phase_deg", "relative_tangential_m", "relative_normal_m", "tangential_force_n",
-                                                 "normal_force_n", "slider_m"},
+  ResultTable h = table_from_rows("hysteresis",
+                                  {"instant", "phase_deg", "relative_tangential_m", "relative_normal_m",
+                                   "tangential_force_n", "normal_force_n", "slider_m"},
                                   rows);
   h.add_text_column("state", std::move(states));
   o.tables.emplace("hysteresis", std::move(h));
@@ -136,18 +142,19 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
   const bool constant_normal = spec.normal_amplitude == 0.0 || spec.law.kn == 0.0;
   const JenkinsLoopClosedForm cf = constant_normal ? jenkins_loop_closed_form(spec.law, spec.tangential_amplitude)
                                                    : JenkinsLoopClosedForm{kNan, kNan, kNan};
-  o.tables.emplace("loop_summary",
-                   table_from_rows("loop_summary",
-                                   {"loop", "dissipated_energy_j", "closed_form_energy_j", "max_tangential_force_n", "stick_slope_n_per_m",
-                                    "stick_fraction", "slip_fraction", "lift_off_fraction", "closed_form_lift_off_fraction",
-                                    "equivalent_stiffness_n_per_m", "equivalent_damping_n_per_m", "closed_form_stiffness_n_per_m",
-                                    "closed_form_damping_n_per_m", "max_t_over_mu_n", "max_force_when_open_n", "min_normal_n",
-                                    "max_normal_n", "periods", "closed"},
-                                   {{1.0, s.dissipated_energy, cf.energy, s.max_tangential_force, s.stick_slope, s.stick_fraction,
-                                     s.slip_fraction, s.lift_off_fraction, lift_off_fraction_closed_form(spec.law, spec.normal_amplitude),
-                                     s.equivalent_stiffness, s.equivalent_damping, cf.stiffness, cf.damping, s.max_t_over_mu_n,
-                                     s.max_force_when_open, s.min_normal, s.max_normal, static_cast<double>(a.periods),
-                                     a.closed ? 1.0 : 0.0}}));
+  o.tables.emplace(
+      "loop_summary",
+      table_from_rows(
+          "loop_summary",
+          {"loop", "dissipated_energy_j", "closed_form_energy_j", "max_tangential_force_n", "stick_slope_n_per_m",
+           "stick_fraction", "slip_fraction", "lift_off_fraction", "closed_form_lift_off_fraction",
+           "equivalent_stiffness_n_per_m", "equivalent_damping_n_per_m", "closed_form_stiffness_n_per_m",
+           "closed_form_damping_n_per_m", "max_t_over_mu_n", "max_force_when_open_n", "min_normal_n", "max_normal_n",
+           "periods", "closed"},
+          {{1.0, s.dissipated_energy, cf.energy, s.max_tangential_force, s.stick_slope, s.stick_fraction,
+            s.slip_fraction, s.lift_off_fraction, lift_off_fraction_closed_form(spec.law, spec.normal_amplitude),
+            s.equivalent_stiffness, s.equivalent_damping, cf.stiffness, cf.damping, s.max_t_over_mu_n,
+            s.max_force_when_open, s.min_normal, s.max_normal, static_cast<double>(a.periods), a.closed ? 1.0 : 0.0}}));
   return o;
 }
 

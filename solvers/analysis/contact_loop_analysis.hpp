@@ -34,10 +34,10 @@ struct ContactLoopSummary {
   double max_tangential_force = 0.0;  // max |T| [N]
   double stick_slope = 0.0;           // slope of T(u) within the stick segments [N/m]; NaN without one
   double stick_fraction = 0.0, slip_fraction = 0.0, lift_off_fraction = 0.0;  // of the samples
-  double equivalent_stiffness = 0.0;  // a1 / U [N/m]
-  double equivalent_damping = 0.0;    // -b1 / U [N/m]
-  double max_t_over_mu_n = 0.0;       // over the closed samples: 1 where it slips
-  double max_force_when_open = 0.0;   // max(|T|, N) over the lift-off samples [N]
+  double equivalent_stiffness = 0.0;                                          // a1 / U [N/m]
+  double equivalent_damping = 0.0;                                            // -b1 / U [N/m]
+  double max_t_over_mu_n = 0.0;               // over the closed samples: 1 where it slips
+  double max_force_when_open = 0.0;           // max(|T|, N) over the lift-off samples [N]
   double min_normal = 0.0, max_normal = 0.0;  // [N]
 };
 

@@ -22,16 +22,19 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 int node_of_point(const Model& model, const std::string& point) {
   const auto it = model.node_sets.find(point);
-  if (it == model.node_sets.end()) throw InputError(fmt::format("'analysis': point '{}' is not a node set of the model", point));
+  if (it == model.node_sets.end())
+    throw InputError(fmt::format("'analysis': point '{}' is not a node set of the model", point));
   if (it->second.size() != 1)
-    throw InputError(fmt::format("'analysis': point '{}' must be a set of exactly one node, it has {}", point, it->second.size()));
+    throw InputError(
+        fmt::format("'analysis': point '{}' must be a set of exactly one node, it has {}", point, it->second.size()));
   return it->second.front();
 }
 
 int free_index(const Model& model, const FreeSystem& system, const PointDof& dof) {
   const int global = node_of_point(model, dof.point) * model.mesh.dim + dof.direction;
   const int eq = system.dofs.equation[static_cast<size_t>(global)];
-  if (eq < 0) throw InputError(fmt::format("'analysis': {} is constrained; a force or response needs a free DOF", dof.name()));
+  if (eq < 0)
+    throw InputError(fmt::format("'analysis': {} is constrained; a force or response needs a free DOF", dof.name()));
   return eq;
 }
 
@@ -53,7 +56,8 @@ struct FullResponse {
   Eigen::VectorXcd at(double omega) const { return receptance.at(omega) * force.cast<std::complex<double>>(); }
 };
 
-FullResponse full_response(const Model& model, const FreeSystem& system, const FrfSpec& spec, const ModalResult& modal) {
+FullResponse full_response(const Model& model, const FreeSystem& system, const FrfSpec& spec,
+                           const ModalResult& modal) {
   FullResponse r;
   const auto n_modes = static_cast<Eigen::Index>(modal.shapes.size());
   const auto n_out = static_cast<Eigen::Index>(spec.responses.size());
@@ -69,23 +73,29 @@ FullResponse full_response(const Model& model, const FreeSystem& system, const F
   r.receptance.shapes_out.resize(n_out, n_modes);
   r.receptance.shapes_in.resize(n_in, n_modes);
   r.force.resize(n_in);
-  for (Eigen::Index i = 0; i < n_out; ++i) r.receptance.shapes_out.row(i) = shapes_at(spec.responses[static_cast<size_t>(i)]);
+  for (Eigen::Index i = 0; i < n_out; ++i)
+    r.receptance.shapes_out.row(i) = shapes_at(spec.responses[static_cast<size_t>(i)]);
   for (Eigen::Index j = 0; j < n_in; ++j) {
     r.receptance.shapes_in.row(j) = shapes_at(spec.forces[static_cast<size_t>(j)].dof);
     r.force[j] = spec.forces[static_cast<size_t>(j)].amplitude;
   }
   if (spec.residual_flexibility) {
     if (r.receptance.omega.size() > 0 && r.receptance.omega.minCoeff() <= 0.0)
-      throw InputError("'analysis.residual_flexibility': the model has rigid-body modes; constrain it or set it to false");
+      throw InputError(
+          "'analysis.residual_flexibility': the model has rigid-body modes; constrain it or set it to false");
     SpdFactorization factor(ordering_for_dimension(model.mesh.dim));
     const FactorStatus status = factor.factorize(system.stiffness);
-    if (!status.ok) throw InputError(fmt::format("residual flexibility: the stiffness cannot be factored: {}", status.message));
+    if (!status.ok)
+      throw InputError(fmt::format("residual flexibility: the stiffness cannot be factored: {}", status.message));
     Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(system.dofs.n_free, n_in);
-    for (Eigen::Index j = 0; j < n_in; ++j) unit(free_index(model, system, spec.forces[static_cast<size_t>(j)].dof), j) = 1.0;
+    for (Eigen::Index j = 0; j < n_in; ++j)
+      unit(free_index(model, system, spec.forces[static_cast<size_t>(j)].dof), j) = 1.0;
     const Eigen::MatrixXd columns = factor.solve(unit);
     Eigen::MatrixXd flexibility(n_out, n_in);
-    for (Eigen::Index i = 0; i < n_out; ++i) flexibility.row(i) = columns.row(free_index(model, system, spec.responses[static_cast<size_t>(i)]));
-    r.receptance.residual = residual_flexibility(flexibility, r.receptance.shapes_out, r.receptance.shapes_in, r.receptance.omega);
+    for (Eigen::Index i = 0; i < n_out; ++i)
+      flexibility.row(i) = columns.row(free_index(model, system, spec.responses[static_cast<size_t>(i)]));
+    r.receptance.residual =
+        residual_flexibility(flexibility, r.receptance.shapes_out, r.receptance.shapes_in, r.receptance.omega);
   }
   return r;
 }
@@ -93,9 +103,9 @@ FullResponse full_response(const Model& model, const FreeSystem& system, const F
 // A reduced model with its response function.
 struct RomResponse {
   RomOutcome outcome;
-  Eigen::MatrixXd damping;              // direct method
-  std::optional<ModalReceptance> modal; // modal method
-  std::vector<int> out, in;             // reduced DOF indices
+  Eigen::MatrixXd damping;               // direct method
+  std::optional<ModalReceptance> modal;  // modal method
+  std::vector<int> out, in;              // reduced DOF indices
   Eigen::VectorXd force;
   std::vector<std::string> outputs;
 
@@ -120,8 +130,9 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
   const std::vector<PointDof>& responses = rom.responses.empty() ? spec.responses : rom.responses;
   auto index = [&](const PointDof& dof) {
     const auto i = m.index_of(dof.point, dof.direction);
-    if (!i) throw InputError(fmt::format("'analysis.rom' '{}': the reduced model has no DOF {} (add the point to its masters)",
-                                         rom.name, dof.name()));
+    if (!i)
+      throw InputError(fmt::format(
+          "'analysis.rom' '{}': the reduced model has no DOF {} (add the point to its masters)", rom.name, dof.name()));
     return *i;
   };
   for (const PointDof& dof : responses) {
@@ -134,7 +145,8 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
     r.force[static_cast<Eigen::Index>(j)] = forces[j].amplitude;
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(m.stiffness, m.mass);
-  if (eig.info() != Eigen::Success) throw SolverError(fmt::format("reduced model '{}': its eigenproblem failed", rom.name));
+  if (eig.info() != Eigen::Success)
+    throw SolverError(fmt::format("reduced model '{}': its eigenproblem failed", rom.name));
   const Eigen::VectorXd omega = eig.eigenvalues().array().max(0.0).sqrt();
   r.outcome.frequencies_hz = omega / kTwoPi;
   if (rom.method == RomSpec::Method::modal) {
@@ -143,8 +155,10 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
     h.zeta = modal_zetas(spec.damping, omega);
     h.shapes_out.resize(static_cast<Eigen::Index>(r.out.size()), omega.size());
     h.shapes_in.resize(static_cast<Eigen::Index>(r.in.size()), omega.size());
-    for (size_t i = 0; i < r.out.size(); ++i) h.shapes_out.row(static_cast<Eigen::Index>(i)) = eig.eigenvectors().row(r.out[i]);
-    for (size_t j = 0; j < r.in.size(); ++j) h.shapes_in.row(static_cast<Eigen::Index>(j)) = eig.eigenvectors().row(r.in[j]);
+    for (size_t i = 0; i < r.out.size(); ++i)
+      h.shapes_out.row(static_cast<Eigen::Index>(i)) = eig.eigenvectors().row(r.out[i]);
+    for (size_t j = 0; j < r.in.size(); ++j)
+      h.shapes_in.row(static_cast<Eigen::Index>(j)) = eig.eigenvectors().row(r.in[j]);
     r.modal = std::move(h);
   } else {
     r.damping = damping_matrix(spec.damping, m);
@@ -185,8 +199,10 @@ struct ModelPeak {
 
 // Peaks of every output of one model above the floor; key 100 r + k: the k-th peak of the r-th
 // output (1-based).
-ResultTable peak_table(const FrfOutcome& o, const FrfCurveSet& c, double prominence, double floor, std::vector<ModelPeak>& all) {
-  const double largest = o.sweep.response.middleCols(c.first_column, static_cast<Eigen::Index>(c.outputs.size())).cwiseAbs().maxCoeff();
+ResultTable peak_table(const FrfOutcome& o, const FrfCurveSet& c, double prominence, double floor,
+                       std::vector<ModelPeak>& all) {
+  const double largest =
+      o.sweep.response.middleCols(c.first_column, static_cast<Eigen::Index>(c.outputs.size())).cwiseAbs().maxCoeff();
   ResultTable t;
   t.name = "peaks_" + c.model;
   t.columns = {"peak", "frequency_hz", "amplitude_m"};
@@ -216,7 +232,8 @@ ResultTable peak_table(const FrfOutcome& o, const FrfCurveSet& c, double promine
 // the sweep.
 ResultTable peak_match_table(const std::string& model, std::vector<ModelPeak> peaks, const ModalResult& modal,
                              const std::vector<ModeLabel>& labels, double tolerance, double f_min, double f_max) {
-  std::sort(peaks.begin(), peaks.end(), [](const ModelPeak& a, const ModelPeak& b) { return a.frequency_hz < b.frequency_hz; });
+  std::sort(peaks.begin(), peaks.end(),
+            [](const ModelPeak& a, const ModelPeak& b) { return a.frequency_hz < b.frequency_hz; });
   std::vector<ModelPeak> resonances;
   std::vector<std::string> seen_in;
   for (const ModelPeak& p : peaks) {
@@ -243,7 +260,8 @@ ResultTable peak_match_table(const std::string& model, std::vector<ModelPeak> pe
       const double d = std::abs(resonances[p].frequency_hz / f[k] - 1.0);
       if (d <= tolerance) candidates.push_back({d, p, k});
     }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
   std::vector<int> peak_of_mode(static_cast<size_t>(f.size()), -1);
   std::vector<bool> peak_used(resonances.size(), false);
   for (const Candidate& c : candidates) {
@@ -288,7 +306,8 @@ ResultTable rom_frequency_table(const RomOutcome& rom) {
 
 }  // namespace
 
-ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, const RomSpec& rom, CraigBamptonTiming* timing) {
+ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, const RomSpec& rom,
+                                 CraigBamptonTiming* timing) {
   if (!rom.file.empty()) return read_reduced_model(rom.file);
   if (rom.matrices) return *rom.matrices;
   std::vector<int> masters;
@@ -406,7 +425,8 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
     ResultTable t = peak_table(o, c, spec.peak_prominence, spec.peak_floor, peaks);
     o.tables.emplace(t.name, std::move(t));
     if (o.full_modal) {
-      ResultTable match = peak_match_table(c.model, peaks, *o.full_modal, labels, spec.match_tolerance, spec.f_min, spec.f_max);
+      ResultTable match =
+          peak_match_table(c.model, peaks, *o.full_modal, labels, spec.match_tolerance, spec.f_min, spec.f_max);
       o.tables.emplace(match.name, std::move(match));
     }
   }
@@ -437,7 +457,8 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
       const double compliance = peak / spec.force_levels[l];
       if (l == 0) first_compliance = compliance;
       const auto row = static_cast<Eigen::Index>(l);
-      t.values.row(row) << static_cast<double>(l + 1), spec.force_levels[l], peak, compliance, compliance / first_compliance;
+      t.values.row(row) << static_cast<double>(l + 1), spec.force_levels[l], peak, compliance,
+          compliance / first_compliance;
       o.level_forces.push_back(spec.force_levels[l]);
       o.level_amplitudes.push_back(std::move(amplitude));
     }
@@ -446,8 +467,6 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
   return o;
 }
 
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec) {
-  return sweep_frf(*prepare_frf(model, spec), spec);
-}
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec) { return sweep_frf(*prepare_frf(model, spec), spec); }
 
 }  // namespace bb

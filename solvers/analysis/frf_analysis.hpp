@@ -25,20 +25,20 @@ struct FrfCurveSet {
 struct RomOutcome {
   std::string name;
   ReducedModel model;
-  CraigBamptonTiming timing;         // zero when read from a file
-  Eigen::VectorXd frequencies_hz;    // eigenfrequencies of the reduced model
-  double setup_seconds = 0.0;        // reduction or reading, plus damping matrix
-  double sweep_seconds = 0.0;        // response evaluations over the whole grid
+  CraigBamptonTiming timing;       // zero when read from a file
+  Eigen::VectorXd frequencies_hz;  // eigenfrequencies of the reduced model
+  double setup_seconds = 0.0;      // reduction or reading, plus damping matrix
+  double sweep_seconds = 0.0;      // response evaluations over the whole grid
 };
 
 struct FrfOutcome {
   ResultTables tables;
   std::optional<ModalResult> full_modal;
   std::vector<FrfCurveSet> curves;
-  Sweep sweep;                       // every model's outputs side by side
+  Sweep sweep;  // every model's outputs side by side
   std::vector<RomOutcome> roms;
   double full_sweep_seconds = 0.0;
-  double full_setup_seconds = 0.0;   // modes + residual flexibility
+  double full_setup_seconds = 0.0;  // modes + residual flexibility
   // Force levels (linearity): the first response of the first model at each level.
   std::vector<double> level_forces;
   std::vector<Eigen::VectorXd> level_amplitudes;
@@ -61,8 +61,8 @@ Eigen::VectorXcd frf_respond(const PreparedFrf& prepared, size_t curve, double f
 // The sweep, peaks, mode matching and linearity levels of `spec` on prepared models.
 FrfOutcome sweep_frf(const PreparedFrf& prepared, const FrfSpec& spec);
 
-// prepare_frf + sweep_frf. Throws InputError for points that are not one-node sets, constrained DOFs, masters that repeat,
-// responses or forces a reduced model does not hold; SolverError from the solvers.
+// prepare_frf + sweep_frf. Throws InputError for points that are not one-node sets, constrained DOFs, masters that
+// repeat, responses or forces a reduced model does not hold; SolverError from the solvers.
 FrfOutcome run_frf(const Model& model, const FrfSpec& spec);
 
 }  // namespace bb

@@ -27,21 +27,21 @@ struct FrfForce {
 
 struct FrfDamping {
   enum class Kind { modal, rayleigh } kind = Kind::modal;
-  double zeta = 0.0;                      // modal: the same ratio for every mode
-  std::array<double, 2> rayleigh_hz{};    // rayleigh: zeta fitted at two frequencies (eqs 3.37-3.39)
+  double zeta = 0.0;                    // modal: the same ratio for every mode
+  std::array<double, 2> rayleigh_hz{};  // rayleigh: zeta fitted at two frequencies (eqs 3.37-3.39)
   std::array<double, 2> rayleigh_zeta{};
 };
 
 // A reduced model: Craig-Bampton on master points, matrices from files, or matrices in the case.
 struct RomSpec {
-  std::string name;                   // names its columns and tables, e.g. "rom"
-  std::vector<std::string> masters;   // point names, all three directions of each, in this order
-  int modes = 10;                     // fixed-interface modes
-  std::filesystem::path file;         // a reduced-model sidecar (reduction/reduced_model_io.hpp) instead
+  std::string name;                      // names its columns and tables, e.g. "rom"
+  std::vector<std::string> masters;      // point names, all three directions of each, in this order
+  int modes = 10;                        // fixed-interface modes
+  std::filesystem::path file;            // a reduced-model sidecar (reduction/reduced_model_io.hpp) instead
   std::optional<ReducedModel> matrices;  // or matrices written in the case (a lumped model)
   enum class Method { direct, modal } method = Method::direct;
-  std::vector<FrfForce> forces;       // empty: the analysis's
-  std::vector<PointDof> responses;    // empty: the analysis's
+  std::vector<FrfForce> forces;     // empty: the analysis's
+  std::vector<PointDof> responses;  // empty: the analysis's
 };
 
 struct FrfSpec {
@@ -50,18 +50,18 @@ struct FrfSpec {
   bool adaptive = false;            // refine around peaks down to min_step
   double min_step = 0.0;
   FrfDamping damping;
-  bool full_model = true;           // the full mesh, by modal superposition
-  int full_modes = 20;              // modes of the full mesh kept in the superposition
-  bool residual_flexibility = true; // static correction for the truncated modes
+  bool full_model = true;            // the full mesh, by modal superposition
+  int full_modes = 20;               // modes of the full mesh kept in the superposition
+  bool residual_flexibility = true;  // static correction for the truncated modes
   std::vector<FrfForce> forces;
   std::vector<PointDof> responses;
-  std::vector<double> force_levels; // linearity: amplitude of the first force at each level [N]
+  std::vector<double> force_levels;  // linearity: amplitude of the first force at each level [N]
   std::vector<RomSpec> roms;
-  double peak_prominence = 1.05;    // a peak stands this factor above its neighbouring minima
+  double peak_prominence = 1.05;  // a peak stands this factor above its neighbouring minima
   // Peaks below this fraction of a model's largest response are round-off, e.g. of a response
   // that symmetry makes exactly zero.
   double peak_floor = 1e-8;
-  double match_tolerance = 0.10;    // a peak names a mode within this relative distance
+  double match_tolerance = 0.10;      // a peak names a mode within this relative distance
   std::optional<ModePairSpec> pairs;  // labels of the full mesh's modes (in-phase / out-of-phase, type)
 };
 

@@ -36,11 +36,13 @@ double friction_work(const contact::AftResult& a) {
 void require_solutions(const HbmOutcome& o) {
   for (const HbmLevel& level : o.levels) {
     if (level.path.points.empty())
-      throw SolverError(fmt::format("harmonic balance at Fe = {:g} N found no solution: {}", level.force, level.path.failure));
+      throw SolverError(
+          fmt::format("harmonic balance at Fe = {:g} N found no solution: {}", level.force, level.path.failure));
     for (const HbmPeak& pk : level.peaks)
       if (!pk.solution.converged)
-        throw SolverError(fmt::format("harmonic balance at Fe = {:g} N: the {} peak's solve did not converge ({}); no peak is reported",
-                                      level.force, pk.kind, pk.solution.failure));
+        throw SolverError(fmt::format(
+            "harmonic balance at Fe = {:g} N: the {} peak's solve did not converge ({}); no peak is reported",
+            level.force, pk.kind, pk.solution.failure));
   }
 }
 
@@ -64,24 +66,30 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     for (const HbmPeak& pk : level.peaks) {
       const bool ok = pk.solution.converged;
       const double nan = std::numeric_limits<double>::quiet_NaN();
-      row.insert(row.end(), {ok ? pk.frequency_hz : nan, ok ? pk.amplitude : nan, ok ? pk.amplitude / level.force : nan});
+      row.insert(row.end(),
+                 {ok ? pk.frequency_hz : nan, ok ? pk.amplitude : nan, ok ? pk.amplitude / level.force : nan});
       if (!ok) continue;
       const hbm::CycleEnergy& e = pk.energy;
       const size_t k = static_cast<size_t>(&pk - level.peaks.data());
-      energy_rows.push_back({key * 10 + static_cast<double>(k + 1), level.force, pk.frequency_hz, e.excitation, e.viscous, e.friction,
-                             e.normal, std::abs(e.excitation - e.viscous - e.friction - e.normal) / std::max(std::abs(e.excitation), 1e-300)});
+      energy_rows.push_back(
+          {key * 10 + static_cast<double>(k + 1), level.force, pk.frequency_hz, e.excitation, e.viscous, e.friction,
+           e.normal,
+           std::abs(e.excitation - e.viscous - e.friction - e.normal) / std::max(std::abs(e.excitation), 1e-300)});
       for (size_t c = 0; c < pk.solution.contacts.size(); ++c) {
         const contact::AftResult& a = pk.solution.contacts[c];
         double stick = 0, slip = 0, lift = 0;
         for (const contact::ContactState s : a.state) {
-          if (s == contact::ContactState::stick) ++stick;
-          else if (s == contact::ContactState::lift_off) ++lift;
-          else ++slip;
+          if (s == contact::ContactState::stick)
+            ++stick;
+          else if (s == contact::ContactState::lift_off)
+            ++lift;
+          else
+            ++slip;
         }
         const double nt = static_cast<double>(a.state.size());
-        state_rows.push_back({key * 1000 + static_cast<double>(k + 1) * 100 + static_cast<double>(c + 1), level.force, pk.frequency_hz,
-                              stick / nt, slip / nt, lift / nt, a.normal[0], a.n.minCoeff(), a.n.maxCoeff(),
-                              friction_work(a)});
+        state_rows.push_back({key * 1000 + static_cast<double>(k + 1) * 100 + static_cast<double>(c + 1), level.force,
+                              pk.frequency_hz, stick / nt, slip / nt, lift / nt, a.normal[0], a.n.minCoeff(),
+                              a.n.maxCoeff(), friction_work(a)});
         state_contacts.push_back(p.contact_names[c]);
         state_peaks.push_back(pk.kind);
       }
@@ -90,7 +98,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     for (const HbmPeak& pk : level.peaks) row.push_back(pk.trusted ? 1.0 : 0.0);
     for (const HbmPeak& pk : level.peaks) row.push_back(pk.sampling_error);
     peak_rows.push_back(row);
-    cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()), static_cast<double>(level.path.corrector_iterations),
+    cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()),
+                         static_cast<double>(level.path.corrector_iterations),
                          static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
                          static_cast<double>(level.path.jumps), level.path.converged ? 1.0 : 0.0, level.seconds});
   }
@@ -103,15 +112,21 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   for (const std::string& k : kinds) peak_columns.push_back(k + "_trusted");
   for (const std::string& k : kinds) peak_columns.push_back(k + "_aft_error");
   o.tables.emplace("peaks", table_from_rows("peaks", peak_columns, peak_rows));
-  o.tables.emplace("energy_balance", table_from_rows("energy_balance", {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j", "friction_j",
-                                                                   "normal_j", "relative_error"}, energy_rows));
-  ResultTable states = table_from_rows("contact_states", {"key", "fe_n", "frequency_hz", "stick", "slip", "lift_off", "mean_normal_n",
-                                                     "min_normal_n", "max_normal_n", "friction_work_j"}, state_rows);
+  o.tables.emplace("energy_balance", table_from_rows("energy_balance",
+                                                     {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j",
+                                                      "friction_j", "normal_j", "relative_error"},
+                                                     energy_rows));
+  ResultTable states = table_from_rows("contact_states",
+                                       {"key", "fe_n", "frequency_hz", "stick", "slip", "lift_off", "mean_normal_n",
+                                        "min_normal_n", "max_normal_n", "friction_work_j"},
+                                       state_rows);
   states.add_text_column("peak", state_peaks);
   states.add_text_column("contact", state_contacts);
   o.tables.emplace("contact_states", std::move(states));
-  o.tables.emplace("sweep_cost", table_from_rows("sweep_cost", {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
-                                                           "turning_points", "jumps", "reached_end", "seconds"}, cost_rows));
+  o.tables.emplace("sweep_cost", table_from_rows("sweep_cost",
+                                                 {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
+                                                  "turning_points", "jumps", "reached_end", "seconds"},
+                                                 cost_rows));
 }
 
 // frf_<Fe>: the path points of each level in order.
@@ -131,7 +146,8 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
       std::vector<double> row = {static_cast<double>(i + 1), level.frequency_hz[i]};
       for (Index r = 0; r < level.amplitude.cols(); ++r) row.push_back(level.amplitude(static_cast<Index>(i), r));
       for (Index r = 0; r < level.phase_deg.cols(); ++r) row.push_back(level.phase_deg(static_cast<Index>(i), r));
-      if (p.ip_oop) row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
+      if (p.ip_oop)
+        row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
       row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});
       for (size_t j = 0; j < level.amplitude_dlog.size(); ++j)
         for (const Eigen::MatrixXd* d : {&level.amplitude_dlog[j], &level.phase_dlog_deg[j]})
@@ -154,8 +170,8 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   const Eigen::MatrixXd stuck = stuck_stiffness(m);
   // Limit 0: the linear model alone (the damper's DOFs left out); 1: every contact stuck.
   const auto limit_solve = [&](int l, double w) {
-    return l == 0 ? direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb), m.mass.topLeftCorner(nb, nb), w,
-                                    m.harmonic_load.head(nb))
+    return l == 0 ? direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),
+                                    m.mass.topLeftCorner(nb, nb), w, m.harmonic_load.head(nb))
                   : direct_response(stuck, m.damping, m.mass, w, m.harmonic_load);
   };
   const int n_grid = 2001;
@@ -164,7 +180,8 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   o.free_response.resize(n_grid, nr);
   o.stuck_response.resize(n_grid, nr);
   auto outputs = [&](const Eigen::VectorXcd& z, Eigen::MatrixXd& into, Index i) {
-    for (size_t r = 0; r < p.responses.size(); ++r) into(i, static_cast<Index>(r)) = p.responses[r] < z.size() ? std::abs(z[p.responses[r]]) : 0.0;
+    for (size_t r = 0; r < p.responses.size(); ++r)
+      into(i, static_cast<Index>(r)) = p.responses[r] < z.size() ? std::abs(z[p.responses[r]]) : 0.0;
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) into(i, static_cast<Index>(p.responses.size()) + k) = peak_values(p, z, k).component;
   };
@@ -202,8 +219,10 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
       };
       Index i = 0;
       lim.col(col).maxCoeff(&i);
-      const double lo = o.limit_frequency_hz[std::max<Index>(i - 1, 0)], hi = o.limit_frequency_hz[std::min<Index>(i + 1, n_grid - 1)];
-      const GoldenSearch search = golden_section_maximum([&](double f) { return std::optional<double>(value(f).component); }, lo, hi, 60, 1e-12);
+      const double lo = o.limit_frequency_hz[std::max<Index>(i - 1, 0)],
+                   hi = o.limit_frequency_hz[std::min<Index>(i + 1, n_grid - 1)];
+      const GoldenSearch search = golden_section_maximum(
+          [&](double f) { return std::optional<double>(value(f).component); }, lo, hi, 60, 1e-12);
       const double a = search.a, b = search.b;
       const double f = 0.5 * (a + b);
       row.insert(row.end(), {f, value(f).amplitude});
@@ -241,9 +260,10 @@ void add_damper_table(HbmOutcome& o) {
     const damper::DamperStaticState& s = *p.damper_static;
     std::vector<std::vector<double>> rows;
     for (size_t c = 0; c < p.damper->contacts.size(); ++c)
-      rows.push_back({static_cast<double>(c + 1), s.normal_preload[static_cast<Index>(c)], s.normal_displacement[static_cast<Index>(c)],
-                      s.open[c] ? 1.0 : 0.0});
-    ResultTable t = table_from_rows("damper_static", {"contact", "normal_preload_n", "normal_displacement_m", "open"}, rows);
+      rows.push_back({static_cast<double>(c + 1), s.normal_preload[static_cast<Index>(c)],
+                      s.normal_displacement[static_cast<Index>(c)], s.open[c] ? 1.0 : 0.0});
+    ResultTable t =
+        table_from_rows("damper_static", {"contact", "normal_preload_n", "normal_displacement_m", "open"}, rows);
     std::vector<std::string> names;
     for (const auto& c : p.damper->contacts) names.push_back(c.name);
     t.add_text_column("name", names);

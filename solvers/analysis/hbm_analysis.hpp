@@ -24,18 +24,18 @@ using HbmProgress = std::function<void(const std::string&)>;
 
 // The linear model, contacts and loads assembled once; the force level and H are set per sweep.
 struct PreparedHbm {
-  hbm::HbmModel model;                     // harmonic load for a first-force amplitude of 1 N
-  std::vector<std::string> dof_names;      // of the model's DOFs ("T2.x", "mode 3", "damper.x")
+  hbm::HbmModel model;                 // harmonic load for a first-force amplitude of 1 N
+  std::vector<std::string> dof_names;  // of the model's DOFs ("T2.x", "mode 3", "damper.x")
   std::vector<std::string> contact_names;
-  std::vector<Eigen::Index> responses;     // model DOF of each response
+  std::vector<Eigen::Index> responses;  // model DOF of each response
   std::vector<std::string> response_names;
   std::optional<std::pair<Eigen::Index, Eigen::Index>> ip_oop;  // (left, right) DOFs
   std::optional<damper::RigidDamper> damper;
   std::optional<damper::DamperStaticState> damper_static;
-  double centrifugal_force = 0.0;          // CF on the damper [N]
-  ReducedModel linear;                     // the linear model (its recovery matrix when reduced here)
-  Eigen::VectorXd linear_frequencies_hz;   // of the linear model without contacts
-  int blade_dofs = 0;                      // DOFs of the linear model (the damper's follow)
+  double centrifugal_force = 0.0;         // CF on the damper [N]
+  ReducedModel linear;                    // the linear model (its recovery matrix when reduced here)
+  Eigen::VectorXd linear_frequencies_hz;  // of the linear model without contacts
+  int blade_dofs = 0;                     // DOFs of the linear model (the damper's follow)
   CraigBamptonTiming timing;
   double setup_seconds = 0.0;
 };
@@ -45,10 +45,10 @@ struct PreparedHbm {
 PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec);
 
 struct HbmPeak {
-  std::string kind;         // "IP", "OOP", or "peak" (maximum of the first response)
+  std::string kind;  // "IP", "OOP", or "peak" (maximum of the first response)
   double frequency_hz = 0.0;
-  double amplitude = 0.0;   // first-harmonic amplitude of the right (or first) response [m]
-  double component = 0.0;   // the in-phase / out-of-phase component that peaks there [m]
+  double amplitude = 0.0;  // first-harmonic amplitude of the right (or first) response [m]
+  double component = 0.0;  // the in-phase / out-of-phase component that peaks there [m]
   hbm::HbmSolution solution;
   hbm::CycleEnergy energy;
   // False when the path did not converge next to the peak (a rejected grid frequency between its
@@ -63,17 +63,17 @@ struct HbmPeak {
 };
 
 struct HbmLevel {
-  double force = 0.0;               // amplitude of the first force [N]
+  double force = 0.0;  // amplitude of the first force [N]
   hbm::ContinuationResult path;
-  std::vector<double> frequency_hz; // of the path points
-  Eigen::MatrixXd amplitude;        // path points x responses, first harmonic [m]
-  Eigen::MatrixXd phase_deg;        // path points x responses, first harmonic's phase to the force
-  Eigen::MatrixXd components;       // path points x (IP, OOP) [m] when ip_oop is set
+  std::vector<double> frequency_hz;  // of the path points
+  Eigen::MatrixXd amplitude;         // path points x responses, first harmonic [m]
+  Eigen::MatrixXd phase_deg;         // path points x responses, first harmonic's phase to the force
+  Eigen::MatrixXd components;        // path points x (IP, OOP) [m] when ip_oop is set
   // Per path of spec.sensitivities: path points x responses, p d|z|/dp [m] and p d phase/dp [deg]
   // at fixed frequency (hbm/sensitivity.hpp); NaN where the sensitivity is not defined.
   std::vector<Eigen::MatrixXd> amplitude_dlog, phase_dlog_deg;
   std::vector<HbmPeak> peaks;
-  std::vector<double> failed_hz;    // grid frequencies that did not converge
+  std::vector<double> failed_hz;  // grid frequencies that did not converge
   double seconds = 0.0;
 };
 
@@ -95,7 +95,6 @@ struct HbmOutcome {
 // limits, limit_peaks, damper_static. Throws SolverError when a level finds no solution at all or a
 // peak's refinement does not converge: a peak is never reported at a failed solve.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
-
 
 // K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
 Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model);

@@ -27,7 +27,8 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 std::array<double, 2> point_position(const Model& model, const std::string& point) {
   const auto it = model.node_sets.find(point);
   if (it == model.node_sets.end() || it->second.size() != 1)
-    throw InputError(fmt::format("'analysis.damper': '{}' is not a one-node set of the mesh; give the point's 'position'", point));
+    throw InputError(
+        fmt::format("'analysis.damper': '{}' is not a one-node set of the mesh; give the point's 'position'", point));
   const auto x = model.mesh.coords.row(it->second.front());
   return {x[0], x[1]};
 }
@@ -41,7 +42,8 @@ damper::RigidDamper build_damper(const Model& model, const DamperSpec& spec, con
     c.name = p.name;
     const std::array<double, 2> at = p.position ? *p.position : point_position(model, p.point);
     c.position = Eigen::Vector2d(at[0] - spec.centre[0], at[1] - spec.centre[1]);
-    c.normal = p.left_face ? damper::left_face_normal(spec.left_face_deg) : damper::right_face_normal(spec.right_face_deg);
+    c.normal =
+        p.left_face ? damper::left_face_normal(spec.left_face_deg) : damper::right_face_normal(spec.right_face_deg);
     if (!p.point.empty()) std::tie(c.blade_x, c.blade_y) = damper::platform_dofs(blades, p.point);
     d.contacts.push_back(c);
   }
@@ -61,8 +63,9 @@ Index dof_index(const PreparedHbm& p, const ReducedModel& blades, const PointDof
   return *i;
 }
 
-Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& blades, const std::vector<std::pair<PointDof, double>>& terms,
-                                   Index n, const std::string& where) {
+Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& blades,
+                                   const std::vector<std::pair<PointDof, double>>& terms, Index n,
+                                   const std::string& where) {
   Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n);
   for (const auto& [dof, c] : terms) row[dof_index(p, blades, dof, where)] += c;
   return row;
@@ -87,10 +90,12 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   p.blade_dofs = blades.size();
   for (const ReducedDof& d : blades.dofs) p.dof_names.push_back(d.name());
   {
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(blades.stiffness, blades.mass, Eigen::EigenvaluesOnly);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(blades.stiffness, blades.mass,
+                                                                  Eigen::EigenvaluesOnly);
     p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
   }
-  const Eigen::MatrixXd blade_damping = spec.damping_matrix ? *spec.damping_matrix : damping_matrix(spec.damping, blades);
+  const Eigen::MatrixXd blade_damping =
+      spec.damping_matrix ? *spec.damping_matrix : damping_matrix(spec.damping, blades);
   hbm::HbmModel& m = p.model;
   if (spec.damper) {
     p.damper = build_damper(model, *spec.damper, blades);
@@ -108,7 +113,8 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   m.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) = blade_damping;  // the rigid damper has none of its own
   m.static_load = Eigen::VectorXd::Zero(n);
   const std::string in_analysis = spec.at.where() + ": 'analysis'";
-  for (const auto& [dof, f] : spec.static_loads) m.static_load[dof_index(p, blades, dof, in_analysis + " static_loads")] += f;
+  for (const auto& [dof, f] : spec.static_loads)
+    m.static_load[dof_index(p, blades, dof, in_analysis + " static_loads")] += f;
   if (spec.damper) {
     const damper::ContactKinematics kin = damper::contact_kinematics(*p.damper, p.blade_dofs);
     contact::JenkinsParameters law = spec.damper->law;
@@ -129,18 +135,22 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   }
   for (const HbmContactSpec& c : spec.contacts) {
     const std::string where = fmt::format("{}: contact '{}'", c.at.where(), c.name);
-    m.contacts.push_back({c.law, combination_row(p, blades, c.tangential, n, where),
-                          c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where)});
+    m.contacts.push_back(
+        {c.law, combination_row(p, blades, c.tangential, n, where),
+         c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where)});
     p.contact_names.push_back(c.name);
   }
   m.harmonic_load = Eigen::VectorXcd::Zero(n);
-  for (const FrfForce& f : spec.forces) m.harmonic_load[dof_index(p, blades, f.dof, in_analysis + " forces")] += f.amplitude / spec.forces.front().amplitude;
+  for (const FrfForce& f : spec.forces)
+    m.harmonic_load[dof_index(p, blades, f.dof, in_analysis + " forces")] +=
+        f.amplitude / spec.forces.front().amplitude;
   for (const PointDof& r : spec.responses) {
     p.responses.push_back(dof_index(p, blades, r, in_analysis + " responses"));
     p.response_names.push_back(r.name());
   }
   if (spec.ip_oop)
-    p.ip_oop.emplace(dof_index(p, blades, spec.ip_oop->first, in_analysis + " ip_oop"), dof_index(p, blades, spec.ip_oop->second, in_analysis + " ip_oop"));
+    p.ip_oop.emplace(dof_index(p, blades, spec.ip_oop->first, in_analysis + " ip_oop"),
+                     dof_index(p, blades, spec.ip_oop->second, in_analysis + " ip_oop"));
   if (!m.contacts.empty()) {  // a time integration may run the linear model alone
     try {
       const hbm::HarmonicBalance check(m, {});  // sizes, contact laws and a nonsingular non-contact part

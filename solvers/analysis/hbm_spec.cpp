@@ -16,7 +16,8 @@ std::optional<std::string> unsupported_sensitivity(const HbmSpec& spec, const Hb
       return std::nullopt;
     case HbmParameter::Kind::contact_law:
       if (parameter.contact >= spec.contacts.size())
-        return fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", parameter.contact, spec.contacts.size());
+        return fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", parameter.contact,
+                           spec.contacts.size());
       return std::nullopt;
   }
   return std::nullopt;

@@ -4,6 +4,7 @@
 // frequency at several force levels.
 #pragma once
 #include <Eigen/Dense>
+
 #include <optional>
 #include <string>
 #include <utility>
@@ -27,19 +28,19 @@ struct HbmContactSpec {
 
 // One point of the rigid damper: its position and the blade point that carries the platform side.
 struct DamperPointSpec {
-  std::string name;                 // "L1"
-  bool left_face = true;            // flat face on the left platform, else the right platform
-  std::string point;                // master point of the blade model (x and y DOFs); empty = rigid platform
+  std::string name;       // "L1"
+  bool left_face = true;  // flat face on the left platform, else the right platform
+  std::string point;      // master point of the blade model (x and y DOFs); empty = rigid platform
   std::optional<std::array<double, 2>> position;  // [x, y] in the model frame; default: the point's node
 };
 
 // Rigid planar damper (damper/rigid_damper.hpp) pressed by the centrifugal force.
 struct DamperSpec {
-  double mass = 0.0, inertia = 0.0;        // [kg], [kg m^2] about G
-  std::array<double, 2> centre{};          // G in the model frame [m]
+  double mass = 0.0, inertia = 0.0;  // [kg], [kg m^2] about G
+  std::array<double, 2> centre{};    // G in the model frame [m]
   double left_face_deg = 45.0, right_face_deg = 45.0;
-  double centrifugal_force = 0.0;          // CF along +y at G [N]
-  contact::JenkinsParameters law;          // kn, kt, mu of every point (n0 = 0: the static solve sets the load)
+  double centrifugal_force = 0.0;  // CF along +y at G [N]
+  contact::JenkinsParameters law;  // kn, kt, mu of every point (n0 = 0: the static solve sets the load)
   std::vector<DamperPointSpec> points;
 };
 
@@ -49,7 +50,7 @@ struct HbmSweepSpec {
   // robust on the kinks of stick-slip-lift-off, cannot pass a fold. arclength: pseudo-arclength
   // continuation, passes folds (impacts, softening), may stall on kinks.
   enum class Method { grid, arclength } method = Method::grid;
-  double step_hz = 0.05;                                           // grid
+  double step_hz = 0.05;                                         // grid
   double initial_step = 0.01, max_step = 0.05, min_step = 1e-6;  // arclength, scaled (hbm::ContinuationOptions)
 };
 
@@ -58,32 +59,32 @@ struct HbmSweepSpec {
 // or the modal damping ratio.
 struct HbmParameter {
   enum class Kind { contact_law, damper_law, modal_damping } kind = Kind::modal_damping;
-  size_t contact = 0;                             // contact_law: index into HbmSpec::contacts
+  size_t contact = 0;                           // contact_law: index into HbmSpec::contacts
   contact::LawParameter law = contact::law_kt;  // contact_law, damper_law
-  std::string label;                              // its case path, e.g. "analysis.contact.0.kt": names the columns
+  std::string label;                            // its case path, e.g. "analysis.contact.0.kt": names the columns
 };
 
 struct HbmSpec {
-  RomSpec model;                     // the linear part: masters / file / matrices
-  FrfDamping damping;                // on the linear model's modes (the damper is undamped)
+  RomSpec model;                                  // the linear part: masters / file / matrices
+  FrfDamping damping;                             // on the linear model's modes (the damper is undamped)
   std::optional<Eigen::MatrixXd> damping_matrix;  // or C itself, written with matrices in the case
   std::vector<HbmContactSpec> contacts;
   std::optional<DamperSpec> damper;
   std::vector<std::pair<PointDof, double>> static_loads;  // [N], besides the damper's CF
-  std::vector<FrfForce> forces;      // the excitation pattern; each level scales it
-  std::vector<double> force_levels;  // amplitude of the first force at each level [N]
-  std::vector<PointDof> responses;   // first-harmonic amplitudes written per level
-  std::optional<std::pair<PointDof, PointDof>> ip_oop;  // (left, right): in-phase / out-of-phase peaks
+  std::vector<FrfForce> forces;                           // the excitation pattern; each level scales it
+  std::vector<double> force_levels;                       // amplitude of the first force at each level [N]
+  std::vector<PointDof> responses;                        // first-harmonic amplitudes written per level
+  std::optional<std::pair<PointDof, PointDof>> ip_oop;    // (left, right): in-phase / out-of-phase peaks
   int harmonics = 1;
-  int time_samples = 0;              // AFT samples per period; 0 = automatic
-  double tolerance = 1e-9;           // relative, hbm::HbmOptions
+  int time_samples = 0;     // AFT samples per period; 0 = automatic
+  double tolerance = 1e-9;  // relative, hbm::HbmOptions
   // Newton iterations per start (a solve tries up to three starts). On a sweep a converging point
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.
   int max_iterations = 20;
   HbmSweepSpec sweep;
   // Parameters whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp). Empty = none.
   std::vector<HbmParameter> sensitivities;
-  SourceLocation at;                 // of [analysis], for errors found when the model is built
+  SourceLocation at;  // of [analysis], for errors found when the model is built
 };
 
 // Why the analysis cannot differentiate `parameter` (no such contact, no damper, damping that is not

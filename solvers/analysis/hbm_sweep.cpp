@@ -22,7 +22,6 @@ Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen:
   return q.col(1).cast<std::complex<double>>() - std::complex<double>(0.0, 1.0) * q.col(2).cast<std::complex<double>>();
 }
 
-
 PeakValues peak_values(const PreparedHbm& p, const Eigen::VectorXcd& z, int kind) {
   if (!p.ip_oop) return {std::abs(z[p.responses.front()]), std::abs(z[p.responses.front()])};
   const auto [l, r] = *p.ip_oop;
@@ -78,11 +77,13 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
   peak.solution = best;
   peak.frequency_hz = best.omega / kTwoPi;
   const double below = pts[static_cast<size_t>(std::max<Index>(k - 1, 0))].omega / kTwoPi;
-  const double above = pts[static_cast<size_t>(std::min<Index>(k + 1, static_cast<Index>(pts.size()) - 1))].omega / kTwoPi;
+  const double above =
+      pts[static_cast<size_t>(std::min<Index>(k + 1, static_cast<Index>(pts.size()) - 1))].omega / kTwoPi;
   for (double f : level.failed_hz)
     if (f > std::min(below, above) && f < std::max(below, above)) {
       peak.trusted = false;
-      peak.doubt = fmt::format("the sweep did not converge at {:.4f} Hz, next to the maximum at {:.4f} Hz", f, peak.frequency_hz);
+      peak.doubt = fmt::format("the sweep did not converge at {:.4f} Hz, next to the maximum at {:.4f} Hz", f,
+                               peak.frequency_hz);
     }
   if (!level.path.converged && k + 1 == static_cast<Index>(pts.size())) {
     peak.trusted = false;
@@ -164,10 +165,18 @@ std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const Hb
       const contact::JenkinsParameters& law = m.contacts[k].law;
       contact::JenkinsParameters& dl = d.laws[k];
       switch (parameter.law) {
-        case contact::law_kn: dl.kn = law.kn; break;
-        case contact::law_kt: dl.kt = law.kt; break;
-        case contact::law_mu: dl.mu = law.mu; break;
-        case contact::law_n0: dl.n0 = law.n0; break;
+        case contact::law_kn:
+          dl.kn = law.kn;
+          break;
+        case contact::law_kt:
+          dl.kt = law.kt;
+          break;
+        case contact::law_mu:
+          dl.mu = law.mu;
+          break;
+        case contact::law_n0:
+          dl.n0 = law.n0;
+          break;
       }
     }
     out.push_back(std::move(d));
@@ -234,7 +243,8 @@ int bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<do
 
 }  // namespace
 
-HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, const HbmProgress& progress) {
+HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                         const HbmProgress& progress) {
   const auto t0 = Clock::now();
   HbmLevel level;
   level.force = force;
@@ -253,7 +263,8 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
   hbm::ContinuationResult& path = level.path;
   auto report = [&](double omega, int point, int iterations) {
     if (progress && point % 25 == 0)
-      progress(fmt::format("Fe = {:g} N, H = {}: {:.3f} Hz, point {}, {} iterations", force, harmonics, omega / kTwoPi, point, iterations));
+      progress(fmt::format("Fe = {:g} N, H = {}: {:.3f} Hz, point {}, {} iterations", force, harmonics, omega / kTwoPi,
+                           point, iterations));
   };
   if (!first.converged) {
     path.failure = "first point: " + first.failure;
@@ -316,8 +327,9 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     }
     path.converged = failed.empty();
     if (!failed.empty())
-      path.failure = fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})", failed.size(), n,
-                                 failed.front(), failed.back(), last_failure);
+      path.failure =
+          fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})",
+                      failed.size(), n, failed.front(), failed.back(), last_failure);
   }
   const size_t n_points = path.points.size();
   level.amplitude.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
@@ -329,7 +341,8 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
     for (size_t r = 0; r < p.responses.size(); ++r) {
       level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
-      level.phase_deg(static_cast<Index>(i), static_cast<Index>(r)) = std::arg(z[p.responses[r]]) * 180.0 / std::numbers::pi;
+      level.phase_deg(static_cast<Index>(i), static_cast<Index>(r)) =
+          std::arg(z[p.responses[r]]) * 180.0 / std::numbers::pi;
     }
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;

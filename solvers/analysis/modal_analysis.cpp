@@ -1,10 +1,10 @@
 #include "analysis/modal_analysis.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
@@ -44,10 +44,13 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   // A band is sized by the Sturm count at its top: exactly the modes below f_max are asked for.
   const double two_pi = 2 * std::numbers::pi;
   if (selection.band_max_hz) {
-    const InertiaCount below = eigenvalues_below(system.stiffness, system.mass, std::pow(two_pi * *selection.band_max_hz, 2));
-    if (!below.ok) throw SolverError(fmt::format("modal band: Sturm count at {} Hz: {}", *selection.band_max_hz, below.message));
+    const InertiaCount below =
+        eigenvalues_below(system.stiffness, system.mass, std::pow(two_pi * *selection.band_max_hz, 2));
+    if (!below.ok)
+      throw SolverError(fmt::format("modal band: Sturm count at {} Hz: {}", *selection.band_max_hz, below.message));
     if (below.negative >= dofs.n_free)
-      throw InputError(fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));
+      throw InputError(
+          fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));
     options.n_modes = std::max(below.negative, 1);
   }
   ModalSolution sol = lowest_modes(system.stiffness, system.mass, options);
@@ -89,7 +92,8 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   }
   for (Eigen::Index k_mode = 0; k_mode < sol.shapes.cols(); ++k_mode) {
     Eigen::MatrixXd shape = Eigen::MatrixXd::Zero(mesh.n_nodes(), mesh.dim);
-    for (int i = 0; i < dofs.n_free; ++i) shape(dofs.free_dofs[i] / mesh.dim, dofs.free_dofs[i] % mesh.dim) = sol.shapes(i, k_mode);
+    for (int i = 0; i < dofs.n_free; ++i)
+      shape(dofs.free_dofs[i] / mesh.dim, dofs.free_dofs[i] % mesh.dim) = sol.shapes(i, k_mode);
     result.shapes.push_back(std::move(shape));
   }
   return result;

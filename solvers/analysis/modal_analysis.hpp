@@ -1,6 +1,7 @@
 // Modal analysis: lowest natural frequencies and mass-normalized shapes of the constrained model.
 #pragma once
 #include <Eigen/Dense>
+
 #include <optional>
 #include <vector>
 
@@ -13,7 +14,6 @@
 
 namespace bb {
 
-
 struct ModalResult {
   Eigen::VectorXd frequencies_hz;
   // Effective modal mass of each mode along x, y (, z) as a fraction of the free mass:
@@ -22,11 +22,11 @@ struct ModalResult {
   std::vector<Eigen::MatrixXd> shapes;  // per mode: n_nodes x dim, mass-normalized
   int n_free_dofs = 0;
   int iterations = 0;
-  int lanczos_runs = 0;            // more than 1 when the Sturm count exposed a missed mode
-  int sturm_count = -1;            // modes below sturm_frequency_hz by the inertia of K - sigma M; -1 = not checked
+  int lanczos_runs = 0;  // more than 1 when the Sturm count exposed a missed mode
+  int sturm_count = -1;  // modes below sturm_frequency_hz by the inertia of K - sigma M; -1 = not checked
   double sturm_frequency_hz = 0.0;
   double sturm_seconds = 0.0;
-  int rigid_body_modes = 0;        // of the modes returned: lambda < 1e-8 lambda_max (free-free models)
+  int rigid_body_modes = 0;  // of the modes returned: lambda < 1e-8 lambda_max (free-free models)
   double max_residual = 0.0;
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;

@@ -13,18 +13,18 @@ namespace bb {
 
 // Which modes a modal analysis returns.
 struct ModeSelection {
-  int lowest = 6;                      // the lowest n modes, when no band is given
-  std::optional<double> band_min_hz;   // all modes with band_min_hz <= f <= band_max_hz
+  int lowest = 6;                     // the lowest n modes, when no band is given
+  std::optional<double> band_min_hz;  // all modes with band_min_hz <= f <= band_max_hz
   std::optional<double> band_max_hz;
 };
 
 struct ModePairSpec {
-  std::string left;       // single-node set on body 1 (e.g. "T1", the tip centre)
-  std::string right;      // single-node set on body 2 at the corresponding place ("T2")
+  std::string left;         // single-node set on body 1 (e.g. "T1", the tip centre)
+  std::string right;        // single-node set on body 2 at the corresponding place ("T2")
   Direction direction = 0;  // component compared for IP / OOP, unless the nodes hardly move along it
-  std::string left_tip;   // node sets of the tip faces (blade axis along y): the mode type
+  std::string left_tip;     // node sets of the tip faces (blade axis along y): the mode type
   std::string right_tip;
-  SourceLocation at;      // of [analysis.pairs]
+  SourceLocation at;  // of [analysis.pairs]
 };
 
 struct ModalSpec {

@@ -19,7 +19,8 @@ const std::vector<int>& named_set(const Model& model, const std::string& name) {
 int single_node(const Model& model, const std::string& name) {
   const std::vector<int>& nodes = named_set(model, name);
   if (nodes.size() != 1)
-    throw InputError(fmt::format("'analysis.pairs': set '{}' must hold exactly one node, it holds {}", name, nodes.size()));
+    throw InputError(
+        fmt::format("'analysis.pairs': set '{}' must hold exactly one node, it holds {}", name, nodes.size()));
   return nodes.front();
 }
 
@@ -49,7 +50,8 @@ TipMotion tip_motion(const Mesh& mesh, const std::vector<int>& face, const Eigen
     den += rx * rx + rz * rz;
   }
   const double theta = den > 0 ? num / den : 0.0;
-  const std::array<double, 3> size = {std::abs(mean_u.x()), std::abs(mean_u.y()), std::abs(theta) * 0.5 * (hi - lo).norm()};
+  const std::array<double, 3> size = {std::abs(mean_u.x()), std::abs(mean_u.y()),
+                                      std::abs(theta) * 0.5 * (hi - lo).norm()};
   static const char* names[] = {"flexure-x", "flexure-z", "torsion"};
   TipMotion m;
   for (size_t k = 0; k < 3; ++k)
@@ -57,7 +59,8 @@ TipMotion tip_motion(const Mesh& mesh, const std::vector<int>& face, const Eigen
   return m;
 }
 
-std::string in_or_out_of_phase(const Eigen::Vector3d& left, const Eigen::Vector3d& right, Direction direction, double rest) {
+std::string in_or_out_of_phase(const Eigen::Vector3d& left, const Eigen::Vector3d& right, Direction direction,
+                               double rest) {
   if (std::max(left.norm(), right.norm()) < rest) return "-";
   const Eigen::Vector3d both = left.cwiseAbs().cwiseMax(right.cwiseAbs());
   Eigen::Index axis = direction;
@@ -71,13 +74,15 @@ std::string in_or_out_of_phase(const Eigen::Vector3d& left, const Eigen::Vector3
 }  // namespace
 
 void check_mode_pair_sets(const Model& model, const ModePairSpec& spec) {
-  if (model.mesh.dim != 3) throw InputError(fmt::format("{}: [analysis.pairs] needs a solid (3D) mesh", spec.at.where()));
+  if (model.mesh.dim != 3)
+    throw InputError(fmt::format("{}: [analysis.pairs] needs a solid (3D) mesh", spec.at.where()));
   for (const std::string* name : {&spec.left, &spec.right, &spec.left_tip, &spec.right_tip})
-    if (!model.node_sets.count(*name)) throw InputError(fmt::format("{}: unknown node set '{}'", spec.at.where(), *name));
+    if (!model.node_sets.count(*name))
+      throw InputError(fmt::format("{}: unknown node set '{}'", spec.at.where(), *name));
   for (const std::string* name : {&spec.left, &spec.right})
     if (model.node_sets.at(*name).size() != 1)
-      throw InputError(fmt::format("{}: [analysis.pairs]: set '{}' must hold exactly one node, it holds {}", spec.at.where(),
-                                   *name, model.node_sets.at(*name).size()));
+      throw InputError(fmt::format("{}: [analysis.pairs]: set '{}' must hold exactly one node, it holds {}",
+                                   spec.at.where(), *name, model.node_sets.at(*name).size()));
 }
 
 std::vector<ModeLabel> label_mode_pairs(const Model& model, const ModalResult& modal, const ModePairSpec& spec) {

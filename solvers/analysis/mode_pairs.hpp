@@ -15,7 +15,6 @@
 
 namespace bb {
 
-
 // Throws InputError (at spec.at) unless the mesh is 3D, every named set exists and left and right
 // hold one node each.
 void check_mode_pair_sets(const Model& model, const ModePairSpec& spec);

@@ -1,6 +1,7 @@
 #include "analysis/rotating_analysis.hpp"
 
 #include <fmt/format.h>
+#include <unsupported/Eigen/FFT>
 
 #include <algorithm>
 #include <chrono>
@@ -8,8 +9,6 @@
 #include <complex>
 #include <limits>
 #include <numbers>
-
-#include <unsupported/Eigen/FFT>
 
 #include "analysis/stress_tables.hpp"
 #include "common/errors.hpp"
@@ -32,8 +31,10 @@ const char* axis_name(int d) { return d == 0 ? "x" : d == 1 ? "y" : "z"; }
 
 ffrf::RotationProfile profile_of(const RotatingSpec& s) {
   switch (s.profile) {
-    case RotatingSpec::Profile::constant: return ffrf::RotationProfile::constant_speed(s.speed);
-    case RotatingSpec::Profile::spin_up: return ffrf::RotationProfile::spin_up(s.speed, s.spin_up_time);
+    case RotatingSpec::Profile::constant:
+      return ffrf::RotationProfile::constant_speed(s.speed);
+    case RotatingSpec::Profile::spin_up:
+      return ffrf::RotationProfile::spin_up(s.speed, s.spin_up_time);
     case RotatingSpec::Profile::torque: {
       const double tau = s.torque;
       return ffrf::RotationProfile::free([tau](double) { return tau; }, s.initial_speed, 0.0,
@@ -44,7 +45,9 @@ ffrf::RotationProfile profile_of(const RotatingSpec& s) {
 }
 
 // The speed at which the steady state is taken: the constant speed, or the spin-up's final one.
-double steady_speed(const RotatingSpec& s) { return s.profile == RotatingSpec::Profile::torque ? s.initial_speed : s.speed; }
+double steady_speed(const RotatingSpec& s) {
+  return s.profile == RotatingSpec::Profile::torque ? s.initial_speed : s.speed;
+}
 
 // Global DOFs of every node of every history set, set after set, node after node, x y (z).
 std::vector<int> history_dofs(const Model& model, const RotatingSpec& spec) {
@@ -67,7 +70,8 @@ Eigen::MatrixXd set_means(const Model& model, const RotatingSpec& spec, const Ei
   for (size_t s = 0; s < spec.histories.size(); ++s) {
     const auto& nodes = model.node_sets.at(spec.histories[s]);
     for (size_t n = 0; n < nodes.size(); ++n)
-      for (int d = 0; d < dim; ++d) out.col(static_cast<Index>(s) * dim + d) += per_dof.col(column++) / static_cast<double>(nodes.size());
+      for (int d = 0; d < dim; ++d)
+        out.col(static_cast<Index>(s) * dim + d) += per_dof.col(column++) / static_cast<double>(nodes.size());
   }
   return out;
 }
@@ -108,12 +112,13 @@ Index steady_start(const ffrf::FfrfHistory& h, const RotatingSpec& spec) {
 
 // deflection: per set, the mean over the steady phase, half its peak-to-peak range, the static
 // solution of the same model (spin softening, and stiffening when on) and the linear one K u = Omega^2 f_c.
-void add_deflection_table(RotatingOutcome& o, const Model& model, const RotatingSpec& spec, const ffrf::RotatingBody& body,
-                          const Eigen::MatrixXd& means) {
+void add_deflection_table(RotatingOutcome& o, const Model& model, const RotatingSpec& spec,
+                          const ffrf::RotatingBody& body, const Eigen::MatrixXd& means) {
   const double speed = steady_speed(spec);
   const ffrf::StaticDeflection full = ffrf::centrifugal_deflection(body, speed, {.stiffening = spec.stiffening});
   SpdFactorization k;
-  if (!k.factorize(body.stiffness).ok) throw SolverError("rotating analysis: K could not be factorized for the linear deflection");
+  if (!k.factorize(body.stiffness).ok)
+    throw SolverError("rotating analysis: K could not be factorized for the linear deflection");
   const Eigen::VectorXd linear = k.solve(Eigen::VectorXd(speed * speed * body.centrifugal_load));
   const Eigen::VectorXd s_full = static_means(model, spec, body, full.displacement);
   const Eigen::VectorXd s_linear = static_means(model, spec, body, linear);
@@ -190,10 +195,12 @@ void add_energy_table(RotatingOutcome& o) {
   const double kinetic = *std::max_element(h.kinetic_energy.begin(), h.kinetic_energy.end());
   const double strain = std::max(*std::max_element(h.strain_energy.begin(), h.strain_energy.end()), 1e-300);
   const double error = h.energy_balance_error();
-  o.tables.emplace("energy", table_from_rows("energy", {"run", "max_kinetic_j", "max_strain_j", "driving_work_j", "gravity_work_j",
-                                                        "balance_error_j", "relative_error", "final_angular_momentum"},
-                                             {{1.0, kinetic, strain, h.driving_work.back(), h.gravity_work.back(), error, error / strain,
-                                               h.angular_momentum.back()}}));
+  o.tables.emplace("energy",
+                   table_from_rows("energy",
+                                   {"run", "max_kinetic_j", "max_strain_j", "driving_work_j", "gravity_work_j",
+                                    "balance_error_j", "relative_error", "final_angular_momentum"},
+                                   {{1.0, kinetic, strain, h.driving_work.back(), h.gravity_work.back(), error,
+                                     error / strain, h.angular_momentum.back()}}));
 }
 
 void add_campbell_tables(RotatingOutcome& o, const ffrf::ProjectedBody& projected, const RotatingSpec& spec,
@@ -206,28 +213,33 @@ void add_campbell_tables(RotatingOutcome& o, const ffrf::ProjectedBody& projecte
   std::vector<std::vector<double>> rows;
   for (Index i = 0; i < o.campbell.frequencies_hz.rows(); ++i)
     for (Index m = 0; m < o.campbell.frequencies_hz.cols(); ++m)
-      rows.push_back({static_cast<double>(rows.size() + 1), o.campbell.speeds[static_cast<size_t>(i)], static_cast<double>(m + 1),
-                      o.campbell.frequencies_hz(i, m)});
+      rows.push_back({static_cast<double>(rows.size() + 1), o.campbell.speeds[static_cast<size_t>(i)],
+                      static_cast<double>(m + 1), o.campbell.frequencies_hz(i, m)});
   o.tables.emplace("campbell", table_from_rows("campbell", {"point", "omega_rad_s", "mode", "frequency_hz"}, rows));
   std::vector<std::vector<double>> crossing_rows;
   for (const ffrf::EngineOrderCrossing& c : o.crossings)
-    crossing_rows.push_back({static_cast<double>(crossing_rows.size() + 1), static_cast<double>(c.engine_order), static_cast<double>(c.mode),
-                             c.speed, c.speed * 60.0 / kTwoPi, c.frequency_hz});
-  o.tables.emplace("crossings", table_from_rows("crossings", {"crossing", "engine_order", "mode", "speed_rad_s", "speed_rpm", "frequency_hz"},
-                                                crossing_rows));
+    crossing_rows.push_back({static_cast<double>(crossing_rows.size() + 1), static_cast<double>(c.engine_order),
+                             static_cast<double>(c.mode), c.speed, c.speed * 60.0 / kTwoPi, c.frequency_hz});
+  o.tables.emplace(
+      "crossings",
+      table_from_rows("crossings", {"crossing", "engine_order", "mode", "speed_rad_s", "speed_rpm", "frequency_hz"},
+                      crossing_rows));
   const ffrf::RotatingModes rest = ffrf::rotating_modes(projected, 0.0, options);
   std::vector<std::vector<double>> mode_rows;
   for (Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m)
     mode_rows.push_back({static_cast<double>(m + 1), m < rest.frequencies_hz.size() ? rest.frequencies_hz[m] : kNan,
                          o.modes_at_speed.frequencies_hz[m], o.modes_at_speed.growth_rates[m]});
-  o.tables.emplace("rotating_modes", table_from_rows("rotating_modes", {"mode", "rest_hz", "frequency_hz", "growth_rate_1_s"}, mode_rows));
+  o.tables.emplace(
+      "rotating_modes",
+      table_from_rows("rotating_modes", {"mode", "rest_hz", "frequency_hz", "growth_rate_1_s"}, mode_rows));
 }
 
 // stiffening: the run as specified and with the stiffening switched, each to its end or to the
 // time its divergence stops it; per variant the largest |u| of every history component, and the
 // speed at which its static operator turns singular (the spin-softening divergence).
-void add_stiffening_table(RotatingOutcome& o, const Model& model, const RotatingSpec& spec, const ffrf::ProjectedBody& projected,
-                          const ffrf::RotationProfile& profile, const ffrf::FfrfOptions& options) {
+void add_stiffening_table(RotatingOutcome& o, const Model& model, const RotatingSpec& spec,
+                          const ffrf::ProjectedBody& projected, const ffrf::RotationProfile& profile,
+                          const ffrf::FfrfOptions& options) {
   std::vector<std::string> cols = {"variant", "stiffening", "diverged", "end_time_s", "divergence_speed_rad_s"};
   for (const std::string& s : spec.histories)
     for (int d = 0; d < o.dim; ++d) cols.push_back(fmt::format("max_abs_{}.u{}_m", s, axis_name(d)));
@@ -274,13 +286,15 @@ AmplitudeSpectrum::AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt) {
   std::vector<double> x(static_cast<size_t>(padded), 0.0);
   const double mean = signal.mean();
   for (Index i = 0; i < n; ++i)
-    x[static_cast<size_t>(i)] = (signal[i] - mean) * (0.5 - 0.5 * std::cos(kTwoPi * static_cast<double>(i) / static_cast<double>(n - 1)));
+    x[static_cast<size_t>(i)] =
+        (signal[i] - mean) * (0.5 - 0.5 * std::cos(kTwoPi * static_cast<double>(i) / static_cast<double>(n - 1)));
   std::vector<std::complex<double>> spectrum;
   Eigen::FFT<double> fft;
   fft.fwd(spectrum, x);
   amplitude_.resize(padded / 2);
   // A sinusoid of amplitude A gives |X| = A n / 4 under the Hann window.
-  for (Index k = 0; k < padded / 2; ++k) amplitude_[k] = 4.0 * std::abs(spectrum[static_cast<size_t>(k)]) / static_cast<double>(n);
+  for (Index k = 0; k < padded / 2; ++k)
+    amplitude_[k] = 4.0 * std::abs(spectrum[static_cast<size_t>(k)]) / static_cast<double>(n);
   df_ = 1.0 / (static_cast<double>(padded) * dt);
 }
 
@@ -306,8 +320,9 @@ RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
   const ffrf::RotatingBody body = ffrf::build_rotating_body(model, {spec.axis_direction, spec.axis_point});
   const ffrf::ElasticBasis basis = [&] {
     try {
-      return ffrf::make_elastic_basis(body, spec.modal_basis ? ffrf::ElasticBasisOptions{ffrf::BasisKind::modal, spec.basis_modes, {}, true}
-                                                             : ffrf::ElasticBasisOptions{});
+      return ffrf::make_elastic_basis(
+          body, spec.modal_basis ? ffrf::ElasticBasisOptions{ffrf::BasisKind::modal, spec.basis_modes, {}, true}
+                                 : ffrf::ElasticBasisOptions{});
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: 'analysis.basis_modes': {}", spec.at.where(), e.what()));
     }
@@ -318,11 +333,13 @@ RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
   const int modal_size = std::min(std::max(spec.basis_modes, 2 * spec.campbell_modes + 4), body.n_free() - 1);
   const ffrf::ElasticBasis modal = ffrf::make_elastic_basis(body, {ffrf::BasisKind::modal, modal_size, {}, true});
   const ffrf::ProjectedBody modal_body = ffrf::project(body, modal);
-  const ffrf::RotatingModesOptions mode_options{.n_modes = spec.campbell_modes, .stiffening = spec.stiffening, .coriolis = spec.coriolis};
+  const ffrf::RotatingModesOptions mode_options{
+      .n_modes = spec.campbell_modes, .stiffening = spec.stiffening, .coriolis = spec.coriolis};
   o.free_dofs = body.n_free();
   o.basis_size = basis.size();
   o.modes_at_speed = ffrf::rotating_modes(modal_body, steady_speed(spec), mode_options);
-  o.time_step = spec.time_step > 0 ? spec.time_step : ffrf::time_step_resolving(modal_body, steady_speed(spec), 1, 40, mode_options);
+  o.time_step = spec.time_step > 0 ? spec.time_step
+                                   : ffrf::time_step_resolving(modal_body, steady_speed(spec), 1, 40, mode_options);
   o.setup_seconds = seconds_since(t0);
 
   const ffrf::RotationProfile profile = profile_of(spec);
@@ -351,12 +368,14 @@ RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
   add_oscillation_table(o, spec, means);
   if (spec.compare_stiffening) add_stiffening_table(o, model, spec, projected, profile, options);
   const double steps = std::max(1.0, static_cast<double>(o.history.steps));
-  o.tables.emplace("rotating_cost",
-                   table_from_rows("rotating_cost", {"run", "free_dofs", "basis_size", "time_step_s", "steps", "factorizations", "setup_s",
-                                                     "integration_s", "campbell_s", "us_per_step"},
-                                   {{1.0, static_cast<double>(o.free_dofs), static_cast<double>(o.basis_size), o.time_step,
-                                     static_cast<double>(o.history.steps), static_cast<double>(o.history.factorizations), o.setup_seconds,
-                                     o.run_seconds, o.campbell_seconds, 1e6 * o.run_seconds / steps}}));
+  o.tables.emplace(
+      "rotating_cost",
+      table_from_rows("rotating_cost",
+                      {"run", "free_dofs", "basis_size", "time_step_s", "steps", "factorizations", "setup_s",
+                       "integration_s", "campbell_s", "us_per_step"},
+                      {{1.0, static_cast<double>(o.free_dofs), static_cast<double>(o.basis_size), o.time_step,
+                        static_cast<double>(o.history.steps), static_cast<double>(o.history.factorizations),
+                        o.setup_seconds, o.run_seconds, o.campbell_seconds, 1e6 * o.run_seconds / steps}}));
   return o;
 }
 

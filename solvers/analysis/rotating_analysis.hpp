@@ -26,8 +26,8 @@ struct RotatingOutcome {
   int free_dofs = 0, basis_size = 0;
   double time_step = 0.0;
   double setup_seconds = 0.0, run_seconds = 0.0, campbell_seconds = 0.0;
-  std::string profile;                 // description of the rotor's motion
-  StressField steady_stresses;         // of the steady deflection at the run's (final) speed [Pa]
+  std::string profile;          // description of the rotor's motion
+  StressField steady_stresses;  // of the steady deflection at the run's (final) speed [Pa]
 };
 
 // Throws InputError for a history set the model lacks or a basis the body cannot hold, SolverError

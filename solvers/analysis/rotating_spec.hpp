@@ -4,6 +4,7 @@
 // linearized about the rotating state and their Campbell diagram with engine-order crossings.
 #pragma once
 #include <Eigen/Dense>
+
 #include <string>
 #include <vector>
 
@@ -24,13 +25,13 @@ struct RotatingSpec {
   Eigen::Vector3d axis_point = Eigen::Vector3d::Zero();  // [m]
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();     // inertial frame at theta = 0 [m/s^2]
 
-  double end_time = 0.0;       // [s]
-  double time_step = 0.0;      // [s]; 0 = 40 steps per period of the lowest rotating mode at `speed`
-  double rho_infinity = 0.9;   // generalized-alpha dissipation (ffrf/ffrf_integrator.hpp)
-  bool stiffening = true;      // centrifugal pre-stress (geometric) stiffness
+  double end_time = 0.0;      // [s]
+  double time_step = 0.0;     // [s]; 0 = 40 steps per period of the lowest rotating mode at `speed`
+  double rho_infinity = 0.9;  // generalized-alpha dissipation (ffrf/ffrf_integrator.hpp)
+  bool stiffening = true;     // centrifugal pre-stress (geometric) stiffness
   bool coriolis = true;
-  bool modal_basis = true;     // elastic coordinates: fixed-interface modes + static shapes, or every free DOF
-  int basis_modes = 12;        // modal basis size (modes at rest)
+  bool modal_basis = true;  // elastic coordinates: fixed-interface modes + static shapes, or every free DOF
+  int basis_modes = 12;     // modal basis size (modes at rest)
 
   // Also run the model with the stiffening switched the other way and report both (the linear
   // floating frame without stiffening softens and diverges beyond the first bending frequency).

@@ -1,9 +1,8 @@
 #include "analysis/run_analysis.hpp"
 
-#include "analysis/mode_pairs.hpp"
-
 #include <fmt/format.h>
 
+#include "analysis/mode_pairs.hpp"
 #include "analysis/stress_tables.hpp"
 #include "common/errors.hpp"
 
@@ -27,7 +26,8 @@ AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress
   tables.emplace("modal_participation", participation_table(modal));
   for (int k : spec.stress_modes) {
     if (k > static_cast<int>(modal.shapes.size()))
-      throw InputError(fmt::format("'analysis.stress_modes': mode {} asked, the analysis found {} modes", k, modal.shapes.size()));
+      throw InputError(
+          fmt::format("'analysis.stress_modes': mode {} asked, the analysis found {} modes", k, modal.shapes.size()));
     o.stresses.push_back({k, recover_stresses(model.mesh, model.section, modal.shapes[static_cast<size_t>(k - 1)])});
     const std::string name = fmt::format("nodal_stresses_mode{}", k);
     tables.emplace(name, nodal_stress_table(name, model.mesh, o.stresses.back().field));

@@ -24,14 +24,36 @@ using AnalysisOutcome =
 
 template <typename Spec>
 struct OutcomeOf;
-template <> struct OutcomeOf<StaticSpec> { using type = StaticOutcome; };
-template <> struct OutcomeOf<ModalSpec> { using type = ModalOutcome; };
-template <> struct OutcomeOf<FrfSpec> { using type = FrfOutcome; };
-template <> struct OutcomeOf<HbmSpec> { using type = HbmOutcome; };
-template <> struct OutcomeOf<TimeSpec> { using type = TimeOutcome; };
-template <> struct OutcomeOf<ContactLoopSpec> { using type = ContactLoopOutcome; };
-template <> struct OutcomeOf<RotatingSpec> { using type = RotatingOutcome; };
-static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<AnalysisSpec>, "one outcome per analysis type");
+template <>
+struct OutcomeOf<StaticSpec> {
+  using type = StaticOutcome;
+};
+template <>
+struct OutcomeOf<ModalSpec> {
+  using type = ModalOutcome;
+};
+template <>
+struct OutcomeOf<FrfSpec> {
+  using type = FrfOutcome;
+};
+template <>
+struct OutcomeOf<HbmSpec> {
+  using type = HbmOutcome;
+};
+template <>
+struct OutcomeOf<TimeSpec> {
+  using type = TimeOutcome;
+};
+template <>
+struct OutcomeOf<ContactLoopSpec> {
+  using type = ContactLoopOutcome;
+};
+template <>
+struct OutcomeOf<RotatingSpec> {
+  using type = RotatingOutcome;
+};
+static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<AnalysisSpec>,
+              "one outcome per analysis type");
 
 struct AnalysisResults {
   ResultTables tables;

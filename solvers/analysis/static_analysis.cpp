@@ -51,7 +51,8 @@ StaticSolution solve_static(const Model& model) {
 
   Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs.n_global());
   for (int i = 0; i < dofs.n_free; ++i) u[dofs.free_dofs[i]] = u_free[i];
-  for (size_t i = 0; i < dofs.constrained_dofs.size(); ++i) u[dofs.constrained_dofs[i]] = dofs.prescribed[static_cast<Eigen::Index>(i)];
+  for (size_t i = 0; i < dofs.constrained_dofs.size(); ++i)
+    u[dofs.constrained_dofs[i]] = dofs.prescribed[static_cast<Eigen::Index>(i)];
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.n_global());
   if (!dofs.constrained_dofs.empty()) {
     const Eigen::VectorXd ku = global.stiffness * u;
@@ -72,7 +73,8 @@ StaticOutcome run_static(const Model& model, const StaticSpec& spec, ResultTable
   tables.emplace("nodal_stresses", nodal_stress_table("nodal_stresses", model.mesh, o.stresses));
   tables.emplace("nodal_strains", nodal_strain_table("nodal_strains", model.mesh, o.stresses, model.section));
   if (o.stresses.points)
-    tables.emplace("integration_point_stresses", integration_point_stress_table("integration_point_stresses", o.stresses));
+    tables.emplace("integration_point_stresses",
+                   integration_point_stress_table("integration_point_stresses", o.stresses));
   return o;
 }
 

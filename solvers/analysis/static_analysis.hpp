@@ -14,10 +14,10 @@ struct StaticSolution {
   Eigen::MatrixXd reactions;      // n_nodes x dim [N], nonzero only on constrained DOFs
   Eigen::VectorXd loads;          // applied nodal forces, global DOF order [N]
   int n_free_dofs = 0;
-  double pivot_ratio = 0.0;       // CHOLMOD rcond estimate of the free-free stiffness
-  double relative_residual = 0.0; // ||K u - f|| / ||f|| on the free DOFs
+  double pivot_ratio = 0.0;        // CHOLMOD rcond estimate of the free-free stiffness
+  double relative_residual = 0.0;  // ||K u - f|| / ||f|| on the free DOFs
   double assembly_seconds = 0.0;
-  double solve_seconds = 0.0;     // factorization + solve
+  double solve_seconds = 0.0;  // factorization + solve
 };
 
 // Throws InputError when the model is singular (names the DOF of the zero pivot).

@@ -23,7 +23,8 @@ ResultTable nodal_stress_table(const std::string& name, const Mesh& mesh, const 
   const auto components = stress_columns(field.components);
   for (const auto& [column, index] : components) t.columns.push_back(column);
   t.columns.push_back("von_mises");
-  for (const char* p : field.components == 3 ? std::vector<const char*>{"s1", "s2"} : std::vector<const char*>{"s1", "s2", "s3"})
+  for (const char* p :
+       field.components == 3 ? std::vector<const char*>{"s1", "s2"} : std::vector<const char*>{"s1", "s2", "s3"})
     t.columns.push_back(p);
   t.columns.push_back("von_mises_scatter");
   t.values.resize(mesh.n_nodes(), static_cast<Eigen::Index>(t.columns.size()));
@@ -51,8 +52,10 @@ ResultTable nodal_strain_table(const std::string& name, const Mesh& mesh, const 
   ResultTable t;
   t.name = name;
   const double e = material.youngs_modulus, nu = material.poisson_ratio;
-  if (field.components == 3) t.columns = {"node", "exx", "eyy", "gxy", "ezz"};
-  else t.columns = {"node", "exx", "eyy", "gxy", "ezz", "gyz", "gzx"};
+  if (field.components == 3)
+    t.columns = {"node", "exx", "eyy", "gxy", "ezz"};
+  else
+    t.columns = {"node", "exx", "eyy", "gxy", "ezz", "gyz", "gzx"};
   t.values.resize(mesh.n_nodes(), static_cast<Eigen::Index>(t.columns.size()));
   for (int n = 0; n < mesh.n_nodes(); ++n) {
     t.values(n, 0) = static_cast<double>(mesh.node_ids[static_cast<size_t>(n)]);
@@ -67,7 +70,8 @@ ResultTable nodal_strain_table(const std::string& name, const Mesh& mesh, const 
 }
 
 ResultTable integration_point_stress_table(const std::string& name, const StressField& field) {
-  if (!field.points) throw std::invalid_argument("integration_point_stress_table: the field kept no integration points");
+  if (!field.points)
+    throw std::invalid_argument("integration_point_stress_table: the field kept no integration points");
   const IntegrationPointStresses& p = *field.points;
   const int dim = static_cast<int>(p.coords.cols());
   ResultTable t;

@@ -1,7 +1,5 @@
 #include "analysis/time_analysis.hpp"
 
-#include "frf/sweep.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -13,6 +11,7 @@
 
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
+#include "frf/sweep.hpp"
 #include "timeint/newmark.hpp"
 
 namespace bb {
@@ -24,7 +23,6 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
 
 // The energy a contact's loop encloses over the recorded samples: sum of T du by the trapezoid rule.
 double loop_work(const std::vector<timeint::ContactSample>& s) {
@@ -133,7 +131,8 @@ TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint:
 }
 
 // The steady state at history_hz and history_cycles periods after it, every step recorded.
-TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec, const timeint::SteadyStateOptions& options) {
+TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec,
+                                 const timeint::SteadyStateOptions& options) {
   TimeHistoryRecord rec;
   rec.frequency_hz = *spec.history_hz;
   rec.force = spec.system.force_levels.front();
@@ -147,8 +146,9 @@ TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec, con
     const timeint::NewmarkIntegrator integrator(m, n);
     timeint::RecordOptions record;
     record.dofs = p.responses;
-    rec.history = timeint::integrate(integrator, rec.steady.final_state, timeint::harmonic_excitation(m.harmonic_load, omega),
-                                     spec.history_cycles * spec.steps_per_period, record);
+    rec.history =
+        timeint::integrate(integrator, rec.steady.final_state, timeint::harmonic_excitation(m.harmonic_load, omega),
+                           spec.history_cycles * spec.steps_per_period, record);
   }
   return rec;
 }
@@ -160,7 +160,8 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
   const PreparedHbm& p = o.prepared;
   const auto nf = static_cast<Index>(frequencies.size());
   const auto nr = static_cast<Index>(p.responses.size());
-  const std::vector<std::string> kinds = pair ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
+  const std::vector<std::string> kinds =
+      pair ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
   std::vector<std::string> frf_cols = {"point", "fe_n", "frequency_hz"};
   for (const std::string& r : p.response_names) frf_cols.push_back(r + "_amp_m");
   if (pair) frf_cols.insert(frf_cols.end(), {"ip_component_m", "oop_component_m"});
@@ -177,13 +178,16 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     if (level.hbm)
       for (size_t k = 0; k < level.hbm->frequency_hz.size(); ++k)
         for (Index i = 0; i < nf; ++i)
-          if (std::abs(level.hbm->frequency_hz[k] - frequencies[static_cast<size_t>(i)]) < 1e-9 * frequencies[static_cast<size_t>(i)])
+          if (std::abs(level.hbm->frequency_hz[k] - frequencies[static_cast<size_t>(i)]) <
+              1e-9 * frequencies[static_cast<size_t>(i)])
             hbm_amp[static_cast<size_t>(i)] = level.hbm->amplitude.row(static_cast<Index>(k)).transpose();
     for (Index i = 0; i < nf; ++i) {
-      std::vector<double> row = {static_cast<double>((l + 1) * 100000 + static_cast<size_t>(i) + 1), level.force, frequencies[static_cast<size_t>(i)]};
+      std::vector<double> row = {static_cast<double>((l + 1) * 100000 + static_cast<size_t>(i) + 1), level.force,
+                                 frequencies[static_cast<size_t>(i)]};
       for (Index r = 0; r < nr; ++r) row.push_back(level.amplitude(i, r));
       if (pair) row.insert(row.end(), {level.components(i, 0), level.components(i, 1)});
-      row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]), level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
+      row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]),
+                             level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
       for (Index r = 0; r < nr; ++r) row.push_back(level.linear(i, r));
       if (compare)
         for (Index r = 0; r < nr; ++r) row.push_back(hbm_amp[static_cast<size_t>(i)][r]);
@@ -194,12 +198,14 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     const auto peaks_of = [&](const Eigen::MatrixXd& amplitude, const Eigen::MatrixXd& components) {
       std::vector<double> prow = {static_cast<double>(l + 1), level.force};
       for (size_t k = 0; k < kinds.size(); ++k) {
-        const Eigen::VectorXd values = pair ? Eigen::VectorXd(components.col(static_cast<Index>(k))) : Eigen::VectorXd(amplitude.col(0));
+        const Eigen::VectorXd values =
+            pair ? Eigen::VectorXd(components.col(static_cast<Index>(k))) : Eigen::VectorXd(amplitude.col(0));
         const Peak sample_peak = largest_sample(frequencies, values);
         const double f = sample_peak.frequency_hz, v = sample_peak.amplitude;
         const Index right = pair ? pair->second : 0;
         Index at = 0;
-        if (std::isfinite(f)) at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
+        if (std::isfinite(f))
+          at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
         at = std::clamp<Index>(at, 0, nf - 1);
         // The right (or first) response: the parabola's value without ip_oop, else the nearest grid value.
         const double amp = !pair ? v : right < nr ? amplitude(at, right) : v;
@@ -212,16 +218,18 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     if (level.hbm) {
       std::vector<double> hrow = {static_cast<double>(l + 1), level.force};
       for (const HbmPeak& pk : level.hbm->peaks)
-        hrow.insert(hrow.end(), {pk.solution.converged ? pk.frequency_hz : kNan, pk.solution.converged ? pk.amplitude : kNan,
-                                 pk.solution.converged ? pk.amplitude / level.force : kNan});
+        hrow.insert(hrow.end(),
+                    {pk.solution.converged ? pk.frequency_hz : kNan, pk.solution.converged ? pk.amplitude : kNan,
+                     pk.solution.converged ? pk.amplitude / level.force : kNan});
       if (level.hbm->peaks.empty()) hrow.insert(hrow.end(), 3 * kinds.size(), kNan);
       hbm_peak_rows.push_back(hrow);
     }
     long not_steady = 0;
     for (bool s : level.steady) not_steady += s ? 0 : 1;
-    cost_rows.push_back({static_cast<double>(l + 1), level.force, static_cast<double>(nf), static_cast<double>(level.steps),
-                         static_cast<double>(level.newton_iterations), static_cast<double>(level.max_step_iterations),
-                         static_cast<double>(not_steady), level.seconds, 1e6 * level.seconds / std::max<double>(1.0, static_cast<double>(level.steps))});
+    cost_rows.push_back({static_cast<double>(l + 1), level.force, static_cast<double>(nf),
+                         static_cast<double>(level.steps), static_cast<double>(level.newton_iterations),
+                         static_cast<double>(level.max_step_iterations), static_cast<double>(not_steady), level.seconds,
+                         1e6 * level.seconds / std::max<double>(1.0, static_cast<double>(level.steps))});
   }
   o.tables.emplace("frf", table_from_rows("frf", frf_cols, frf_rows));
   std::vector<std::string> peak_cols = {"level", "fe_n"};
@@ -230,10 +238,10 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
   o.tables.emplace("peaks", table_from_rows("peaks", peak_cols, peak_rows));
   o.tables.emplace("peaks_linear", table_from_rows("peaks_linear", peak_cols, linear_peak_rows));
   if (compare) o.tables.emplace("peaks_hbm", table_from_rows("peaks_hbm", peak_cols, hbm_peak_rows));
-  o.tables.emplace("time_cost", table_from_rows("time_cost", {"level", "fe_n", "frequencies", "steps", "newton_iterations", "max_step_iterations",
-                                                         "not_steady", "seconds", "us_per_step"},
-                                           cost_rows));
-
+  o.tables.emplace("time_cost", table_from_rows("time_cost",
+                                                {"level", "fe_n", "frequencies", "steps", "newton_iterations",
+                                                 "max_step_iterations", "not_steady", "seconds", "us_per_step"},
+                                                cost_rows));
 }
 
 // The tables of the recorded history: history, one hysteresis loop per contact, hysteresis_summary.
@@ -273,7 +281,9 @@ void add_history_tables(TimeOutcome& o, const TimeSpec& spec) {
             ++open;
             open_force = std::max({open_force, std::abs(s[i].tangential), s[i].normal});
             break;
-          default: ++slip; break;
+          default:
+            ++slip;
+            break;
         }
         if (s[i].normal > 0 && mu > 0) coulomb = std::max(coulomb, std::abs(s[i].tangential) / (mu * s[i].normal));
       }
@@ -282,18 +292,22 @@ void add_history_tables(TimeOutcome& o, const TimeSpec& spec) {
       // Slope of T against u over the stuck samples: kt when the loop is a line (needs u to vary).
       const double slope = n_stick >= 2 && var > 1e-30 ? (sut - su * st / n_stick) / var : kNan;
       const std::string name = "hysteresis_" + p.contact_names[c];
-      ResultTable t = table_from_rows(name, {"instant", "time_s", "relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"}, loop);
+      ResultTable t = table_from_rows(
+          name, {"instant", "time_s", "relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"},
+          loop);
       t.add_text_column("state", states);
       o.tables.emplace(name, std::move(t));
       double nmin = std::numeric_limits<double>::infinity(), nmax = 0, nmean = 0;
-      for (size_t i = 1; i < s.size(); ++i) nmin = std::min(nmin, s[i].normal), nmax = std::max(nmax, s[i].normal), nmean += s[i].normal / (n);
-      summary.push_back({static_cast<double>(c + 1), stick / n, slip / n, open / n, slope, slope / kt, coulomb, open_force,
-                         loop_work(s) / spec.history_cycles, nmin, nmean, nmax});
+      for (size_t i = 1; i < s.size(); ++i)
+        nmin = std::min(nmin, s[i].normal), nmax = std::max(nmax, s[i].normal), nmean += s[i].normal / (n);
+      summary.push_back({static_cast<double>(c + 1), stick / n, slip / n, open / n, slope, slope / kt, coulomb,
+                         open_force, loop_work(s) / spec.history_cycles, nmin, nmean, nmax});
     }
-    ResultTable t = table_from_rows("hysteresis_summary", {"contact", "stick", "slip", "lift_off", "stick_slope_n_per_m", "stick_slope_over_kt",
-                                                      "max_t_over_mu_n", "max_force_when_open_n", "loop_work_per_cycle_j",
-                                                      "min_normal_n", "mean_normal_n", "max_normal_n"},
-                               summary);
+    ResultTable t = table_from_rows(
+        "hysteresis_summary",
+        {"contact", "stick", "slip", "lift_off", "stick_slope_n_per_m", "stick_slope_over_kt", "max_t_over_mu_n",
+         "max_force_when_open_n", "loop_work_per_cycle_j", "min_normal_n", "mean_normal_n", "max_normal_n"},
+        summary);
     t.add_text_column("name", p.contact_names);
     o.tables.emplace("hysteresis_summary", std::move(t));
   }
@@ -314,7 +328,8 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   options.tolerance = spec.steady_tolerance;
   options.max_cycles = spec.max_cycles;
   options.newmark.alpha = spec.alpha;
-  const std::vector<double> frequencies = fixed_grid(spec.system.sweep.f_min, spec.system.sweep.f_max, spec.system.sweep.step_hz);
+  const std::vector<double> frequencies =
+      fixed_grid(spec.system.sweep.f_min, spec.system.sweep.f_max, spec.system.sweep.step_hz);
   for (double force : spec.system.force_levels)
     o.levels.push_back(sweep_level(p, spec, options, tracked, frequencies, force, progress));
   if (spec.history_hz) o.record = record_history(p, spec, options);

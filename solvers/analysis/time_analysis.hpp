@@ -17,23 +17,23 @@
 namespace bb {
 
 struct TimeLevel {
-  double force = 0.0;                // amplitude of the first force [N]
+  double force = 0.0;  // amplitude of the first force [N]
   std::vector<double> frequency_hz;
-  Eigen::MatrixXd amplitude;         // frequencies x responses, first harmonic [m]
-  Eigen::MatrixXd components;        // frequencies x (IP, OOP) [m] when ip_oop is set
-  std::vector<int> cycles;           // periods integrated per frequency
-  std::vector<bool> steady;          // the cycle-to-cycle criterion was met
+  Eigen::MatrixXd amplitude;   // frequencies x responses, first harmonic [m]
+  Eigen::MatrixXd components;  // frequencies x (IP, OOP) [m] when ip_oop is set
+  std::vector<int> cycles;     // periods integrated per frequency
+  std::vector<bool> steady;    // the cycle-to-cycle criterion was met
   long steps = 0, newton_iterations = 0;
   int max_step_iterations = 0;
   double seconds = 0.0;
   Eigen::MatrixXd linear, linear_components;  // the linear model (contacts as springs kn, kt) on the grid
-  std::optional<HbmLevel> hbm;       // the harmonic balance at the same grid (compare_harmonics > 0)
+  std::optional<HbmLevel> hbm;                // the harmonic balance at the same grid (compare_harmonics > 0)
 };
 
 struct TimeHistoryRecord {
   double frequency_hz = 0.0, force = 0.0;
-  timeint::SteadyState steady;       // the steady state reached there
-  timeint::TimeHistory history;      // history_cycles periods after it, every step recorded
+  timeint::SteadyState steady;   // the steady state reached there
+  timeint::TimeHistory history;  // history_cycles periods after it, every step recorded
 };
 
 struct TimeOutcome {

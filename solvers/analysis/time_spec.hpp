@@ -10,14 +10,14 @@
 namespace bb {
 
 struct TimeSpec {
-  HbmSpec system;                  // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
-  int steps_per_period = 128;      // dt = T / steps_per_period (eq 3.42)
-  int max_cycles = 2000;           // per frequency, then the point is reported as not steady
-  double steady_tolerance = 1e-6;  // cycle-to-cycle change, relative (timeint/steady_state.hpp)
-  double alpha = 0.0;              // HHT-alpha in [-1/3, 0]; 0 = average acceleration
+  HbmSpec system;                    // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
+  int steps_per_period = 128;        // dt = T / steps_per_period (eq 3.42)
+  int max_cycles = 2000;             // per frequency, then the point is reported as not steady
+  double steady_tolerance = 1e-6;    // cycle-to-cycle change, relative (timeint/steady_state.hpp)
+  double alpha = 0.0;                // HHT-alpha in [-1/3, 0]; 0 = average acceleration
   std::optional<double> history_hz;  // record histories and hysteresis loops at this frequency
-  int history_cycles = 2;          // whole periods recorded there
-  int compare_harmonics = 0;       // > 0: harmonic balance with this H at the same frequencies
+  int history_cycles = 2;            // whole periods recorded there
+  int compare_harmonics = 0;         // > 0: harmonic balance with this H at the same frequencies
 };
 
 }  // namespace bb

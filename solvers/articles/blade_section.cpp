@@ -6,8 +6,8 @@
 #include <cmath>
 #include <functional>
 #include <map>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include "mesh/hex_block.hpp"
 
@@ -91,7 +91,8 @@ void add_block(Mesh& mesh, ElementType type, const std::vector<std::vector<int>>
   b.conn.resize(static_cast<Eigen::Index>(elements.size()), static_cast<Eigen::Index>(elements.front().size()));
   for (size_t e = 0; e < elements.size(); ++e) {
     b.ids.push_back(static_cast<long>(mesh.n_elements()) + static_cast<long>(e) + 1);
-    for (size_t a = 0; a < elements[e].size(); ++a) b.conn(static_cast<Eigen::Index>(e), static_cast<Eigen::Index>(a)) = elements[e][a];
+    for (size_t a = 0; a < elements[e].size(); ++a)
+      b.conn(static_cast<Eigen::Index>(e), static_cast<Eigen::Index>(a)) = elements[e][a];
   }
   mesh.blocks.push_back(std::move(b));
 }
@@ -164,7 +165,8 @@ BladeSectionDivisions blade_section_divisions(ElementType element) {
     case ElementType::hex8:  // 4 x (5x2 + 3x2 + 3 + 5x2 + 20) = 196 hexahedra, 4 through t: L858-861
       d = {1, 2, 2, 2, 1, 20, 4};
       break;
-    default: throw std::invalid_argument(fmt::format("blade_section: no thesis mesh with {} elements", element_name(element)));
+    default:
+      throw std::invalid_argument(fmt::format("blade_section: no thesis mesh with {} elements", element_name(element)));
   }
   return d;
 }
@@ -172,10 +174,12 @@ BladeSectionDivisions blade_section_divisions(ElementType element) {
 BladeSection blade_section(const TwoBladeDimensions& dims, const BladeSectionDivisions& n, ElementType element) {
   dims.validate();
   if (element != ElementType::q4 && element != ElementType::cst && element != ElementType::hex8)
-    throw std::invalid_argument(fmt::format("blade_section: element {} (expected q4, cst or hex8)", element_name(element)));
+    throw std::invalid_argument(
+        fmt::format("blade_section: element {} (expected q4, cst or hex8)", element_name(element)));
   for (int v : {n.root_side_columns, n.root_rows, n.neck_rows, n.lip_rows, n.airfoil_columns, n.airfoil_rows, n.layers})
     if (v < 1 || v > 10000) throw std::invalid_argument("blade_section: every division must lie in [1, 10000]");
-  if (!(dims.w < dims.w_n)) throw DimensionError("w", "blade_section: the airfoil (w) must be narrower than the neck (w_n)");
+  if (!(dims.w < dims.w_n))
+    throw DimensionError("w", "blade_section: the airfoil (w) must be narrower than the neck (w_n)");
   const bool solid = element == ElementType::hex8;
   const PlanePattern pattern = plane_pattern(dims, n, !solid);  // "the two corners are avoided" in 3D (L858)
   BladeSection out;

@@ -21,8 +21,8 @@ class BlockList {
   BlockList(TwoBladeArticle& article, double t, int nz, ElementType element)
       : article_(article), t_(t), nz_(nz), element_(element) {}
 
-  void quad(TwoBladeBody body, const std::string& label, const Vec2& c1, const Vec2& c2, const Vec2& c3,
-            const Vec2& c4, int nx, int ny) {
+  void quad(TwoBladeBody body, const std::string& label, const Vec2& c1, const Vec2& c2, const Vec2& c3, const Vec2& c4,
+            int nx, int ny) {
     HexBlockSpec b;
     const std::array<Vec2, 4> c = {c1, c2, c3, c4};
     for (size_t a = 0; a < 4; ++a) {
@@ -77,17 +77,18 @@ std::array<double, 9> TwoBladeDimensions::levels() const {
 std::span<const TwoBladeDimensionField> two_blade_dimension_fields() {
   using D = TwoBladeDimensions;
   static const TwoBladeDimensionField fields[] = {
-      {"t", &D::t},       {"B_r", &D::B_r},   {"H_r", &D::H_r},   {"x_n1", &D::x_n1}, {"w_n", &D::w_n},
-      {"H_n", &D::H_n},   {"B_p", &D::B_p},   {"beta_deg", &D::beta_deg},             {"e_p", &D::e_p},
-      {"w", &D::w},       {"w_t", &D::w_t},   {"L_a", &D::L_a},   {"p", &D::p},       {"t_a", &D::t_a},
-      {"g_s", &D::g_s},   {"g_r", &D::g_r},   {"h_w", &D::h_w},   {"t_fb", &D::t_fb}, {"m_f", &D::m_f},
+      {"t", &D::t},     {"B_r", &D::B_r},   {"H_r", &D::H_r}, {"x_n1", &D::x_n1},
+      {"w_n", &D::w_n}, {"H_n", &D::H_n},   {"B_p", &D::B_p}, {"beta_deg", &D::beta_deg},
+      {"e_p", &D::e_p}, {"w", &D::w},       {"w_t", &D::w_t}, {"L_a", &D::L_a},
+      {"p", &D::p},     {"t_a", &D::t_a},   {"g_s", &D::g_s}, {"g_r", &D::g_r},
+      {"h_w", &D::h_w}, {"t_fb", &D::t_fb}, {"m_f", &D::m_f},
   };
   return fields;
 }
 
 std::span<const char* const> two_blade_set_names() {
-  static const char* const names[] = {"T1",           "T2",           "F",             "L1",   "L2",  "R", "C1", "C2",
-                                      "fixture_base", "fixture_left", "fixture_right", "tip1", "tip2"};
+  static const char* const names[] = {
+      "T1", "T2", "F", "L1", "L2", "R", "C1", "C2", "fixture_base", "fixture_left", "fixture_right", "tip1", "tip2"};
   return names;
 }
 
@@ -101,40 +102,47 @@ void TwoBladeDimensions::validate() const {
   if (refinement < 1 || refinement > 64)
     throw DimensionError("refinement", fmt::format("refinement must lie in 1..64, found {}", refinement));
   if (thickness_divisions < 0 || thickness_divisions > 1000)
-    throw DimensionError("thickness_divisions",
-                         fmt::format("thickness_divisions must lie in 0..1000 (0 = 4 x refinement), found {}", thickness_divisions));
+    throw DimensionError(
+        "thickness_divisions",
+        fmt::format("thickness_divisions must lie in 0..1000 (0 = 4 x refinement), found {}", thickness_divisions));
   if (nz() % 2 != 0)
-    throw DimensionError("thickness_divisions",
-                         fmt::format("thickness_divisions must be even so that the mid-thickness points are nodes, found {}", nz()));
+    throw DimensionError(
+        "thickness_divisions",
+        fmt::format("thickness_divisions must be even so that the mid-thickness points are nodes, found {}", nz()));
   if (airfoil_divisions < 1 || airfoil_divisions > 1000 || (airfoil_divisions * refinement) % 4 != 0)
-    throw DimensionError("airfoil_divisions",
-                         fmt::format("airfoil_divisions x refinement must be a positive multiple of 4 so that F (at L_a / 4) "
-                                     "is a node, found {} x {}", airfoil_divisions, refinement));
+    throw DimensionError(
+        "airfoil_divisions",
+        fmt::format("airfoil_divisions x refinement must be a positive multiple of 4 so that F (at L_a / 4) "
+                    "is a node, found {} x {}",
+                    airfoil_divisions, refinement));
   for (const char* name : {"g_s", "g_r"}) {
     const double g = std::string_view(name) == "g_s" ? g_s : g_r;
     if (g < kMinClearance)
-      throw DimensionError(name, fmt::format("{} = {} m: a clearance must be at least {} m so that gluing at coincident "
-                                             "nodes does not close it", name, g, kMinClearance));
+      throw DimensionError(name,
+                           fmt::format("{} = {} m: a clearance must be at least {} m so that gluing at coincident "
+                                       "nodes does not close it",
+                                       name, g, kMinClearance));
   }
   if (!(x_n1 + g_s < B_r))
     throw DimensionError("x_n1", fmt::format("x_n1 + g_s = {} must be < B_r = {}: no right root shoulder under the arm",
                                              x_n1 + g_s, B_r));
   if (!(x_n0() - g_s > 0))
-    throw DimensionError("w_n", fmt::format("x_n1 - w_n - g_s = {} must be > 0: no left root shoulder under the arm",
-                                            x_n0() - g_s));
+    throw DimensionError(
+        "w_n", fmt::format("x_n1 - w_n - g_s = {} must be > 0: no left root shoulder under the arm", x_n0() - g_s));
   if (!(H_n > t_a))
     throw DimensionError("H_n", fmt::format("H_n = {} must exceed the arm thickness t_a = {}: the platform would sit "
-                                            "inside the fixture", H_n, t_a));
-  if (!(B_p > w_n))
-    throw DimensionError("B_p", fmt::format("B_p = {} must exceed the neck width w_n = {}", B_p, w_n));
-  if (!(w < B_p))
-    throw DimensionError("w", fmt::format("w = {} must be narrower than the platform, B_p = {}", w, B_p));
+                                            "inside the fixture",
+                                            H_n, t_a));
+  if (!(B_p > w_n)) throw DimensionError("B_p", fmt::format("B_p = {} must exceed the neck width w_n = {}", B_p, w_n));
+  if (!(w < B_p)) throw DimensionError("w", fmt::format("w = {} must be narrower than the platform, B_p = {}", w, B_p));
   if (!(p > B_p))
     throw DimensionError("p", fmt::format("the pitch p = {} must exceed the platform width B_p = {}: the platforms "
-                                          "would overlap", p, B_p));
+                                          "would overlap",
+                                          p, B_p));
   if (!(p - B_r - 2 * g_r > 0))
     throw DimensionError("p", fmt::format("p - B_r - 2 g_r = {} must be > 0: no fixture wall between the root "
-                                          "cavities", p - B_r - 2 * g_r));
+                                          "cavities",
+                                          p - B_r - 2 * g_r));
   if (!(tip_width() < p))
     throw DimensionError("w_t", fmt::format("the tip width {} must be smaller than the pitch p = {}", tip_width(), p));
 }
@@ -183,8 +191,8 @@ TwoBladeArticle two_blade_article(const TwoBladeDimensions& d, ElementType eleme
     list.quad(blade, bl + "PL", {o + x_pl, Y[6]}, {o + x_n0, Y[5]}, {o + x_a0, Y[7]}, {o + x_pl, Y[7]}, 4 * r, 2 * r);
     list.quad(blade, bl + "PC", {o + x_n0, Y[5]}, {o + x_n1, Y[5]}, {o + x_a1, Y[7]}, {o + x_a0, Y[7]}, 2 * r, 2 * r);
     list.quad(blade, bl + "PR", {o + x_n1, Y[5]}, {o + x_pr, Y[6]}, {o + x_pr, Y[7]}, {o + x_a1, Y[7]}, 4 * r, 2 * r);
-    list.quad(blade, bl + "A", {o + x_a0, Y[7]}, {o + x_a1, Y[7]}, {o + x_c + half_tip, Y[8]}, {o + x_c - half_tip, Y[8]},
-              2 * r, d.airfoil_divisions * r);
+    list.quad(blade, bl + "A", {o + x_a0, Y[7]}, {o + x_a1, Y[7]}, {o + x_c + half_tip, Y[8]},
+              {o + x_c - half_tip, Y[8]}, 2 * r, d.airfoil_divisions * r);
     a.tips[static_cast<size_t>(b)] = {Y[8], o + x_c - half_tip, o + x_c + half_tip};
   }
 
@@ -213,8 +221,10 @@ TwoBladeArticle two_blade_article(const TwoBladeDimensions& d, ElementType eleme
   for (const Column& c : columns) {
     ++k;
     list.rect(TwoBladeBody::fixture, fmt::format("fixture.base{}", k), c.x0, c.x1, Y[0], Y[1], c.n * r, 2 * r);
-    if (c.wall) list.rect(TwoBladeBody::fixture, fmt::format("fixture.wall{}", k), c.x0, c.x1, Y[1], Y[3], c.n * r, 3 * r);
-    if (c.wall || c.arm) list.rect(TwoBladeBody::fixture, fmt::format("fixture.arm{}", k), c.x0, c.x1, Y[3], Y[4], c.n * r, r);
+    if (c.wall)
+      list.rect(TwoBladeBody::fixture, fmt::format("fixture.wall{}", k), c.x0, c.x1, Y[1], Y[3], c.n * r, 3 * r);
+    if (c.wall || c.arm)
+      list.rect(TwoBladeBody::fixture, fmt::format("fixture.arm{}", k), c.x0, c.x1, Y[3], Y[4], c.n * r, r);
   }
 
   // Master nodes at mid-thickness (thesis: every master node lies on the middle plane).

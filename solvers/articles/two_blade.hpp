@@ -23,6 +23,7 @@
 //   Y8 = Y7 + L_a      tip  [0.2200]
 #pragma once
 #include <Eigen/Dense>
+
 #include <array>
 #include <map>
 #include <span>
@@ -50,25 +51,25 @@ struct TwoBladeDimensions {
   double w_t = 0.0;        // airfoil width at the tip; 0 = w (untapered) [A]
   double L_a = 0.1565;     // airfoil length, platform top to tip [D][F] f1 on Table VI
   // Fixture and wedges [m].
-  double p = 0.050;        // blade pitch (x offset of blade 2) [A]
-  double t_a = 0.010;      // fixture arm thickness above the root shoulders [A]
-  double g_s = 0.0025;     // clearance neck / arm slot, each side (not glued) [A]
-  double g_r = 0.0025;     // clearance root and wedge sides / cavity walls (not glued) [A]
-  double h_w = 0.010;      // wedge height (a B_r x h_w x t block under each root) [A]
-  double t_fb = 0.020;     // fixture base thickness below the cavities [A]
-  double m_f = 0.015;      // outer side-wall thickness of the fixture [A]
+  double p = 0.050;     // blade pitch (x offset of blade 2) [A]
+  double t_a = 0.010;   // fixture arm thickness above the root shoulders [A]
+  double g_s = 0.0025;  // clearance neck / arm slot, each side (not glued) [A]
+  double g_r = 0.0025;  // clearance root and wedge sides / cavity walls (not glued) [A]
+  double h_w = 0.010;   // wedge height (a B_r x h_w x t block under each root) [A]
+  double t_fb = 0.020;  // fixture base thickness below the cavities [A]
+  double m_f = 0.015;   // outer side-wall thickness of the fixture [A]
   // Mesh density.
   int refinement = 1;           // r: every block's in-plane divisions are multiplied by r
   int thickness_divisions = 0;  // divisions through t; 0 = 4 r (the thesis's SAMS 3D model: 4)
   int airfoil_divisions = 8;    // divisions along L_a at r = 1 (times r); 8 puts a node at L_a / 4 (F)
 
   // Derived quantities (no validation; call validate() first).
-  double x_n0() const { return x_n1 - w_n; }             // left face of the neck
-  double x_c() const { return x_n1 - 0.5 * w_n; }        // blade axis: neck, platform and airfoil centre
+  double x_n0() const { return x_n1 - w_n; }       // left face of the neck
+  double x_c() const { return x_n1 - 0.5 * w_n; }  // blade axis: neck, platform and airfoil centre
   double tip_width() const { return w_t > 0 ? w_t : w; }
-  double contact_rise() const;                           // c = (B_p - w_n)/2 tan(beta)
+  double contact_rise() const;  // c = (B_p - w_n)/2 tan(beta)
   int nz() const { return thickness_divisions > 0 ? thickness_divisions : 4 * refinement; }
-  std::array<double, 9> levels() const;                  // Y0..Y8 of the header
+  std::array<double, 9> levels() const;                           // Y0..Y8 of the header
   double fixture_left_x() const { return -g_r - m_f; }            // XF0, clamped face
   double fixture_right_x() const { return p + B_r + g_r + m_f; }  // XF1, clamped face
 
@@ -98,7 +99,7 @@ std::span<const TwoBladeDimensionField> two_blade_dimension_fields();
 enum class TwoBladeBody { blade1, blade2, wedge1, wedge2, fixture };
 
 struct TipFace {
-  double y = 0.0;                 // tip level
+  double y = 0.0;                   // tip level
   double x_min = 0.0, x_max = 0.0;  // airfoil faces at the tip
 };
 
@@ -112,10 +113,10 @@ struct TwoBladeArticle {
   // blade 2's left contact face); and C1, C2, the tip corners (x_max, tip, z = 0) of blades 1
   // and 2, off the torsion axis. Each is a node of the mesh.
   std::map<std::string, Eigen::Vector3d> points;
-  double fixture_base_y = 0.0;   // Y0: clamped base face
-  double fixture_left_x = 0.0;   // XF0: clamped lateral face
-  double fixture_right_x = 0.0;  // XF1: clamped lateral face
-  std::array<TipFace, 2> tips;   // blade 1, blade 2
+  double fixture_base_y = 0.0;     // Y0: clamped base face
+  double fixture_left_x = 0.0;     // XF0: clamped lateral face
+  double fixture_right_x = 0.0;    // XF1: clamped lateral face
+  std::array<TipFace, 2> tips;     // blade 1, blade 2
   std::array<double, 9> levels{};  // Y0..Y8
 };
 

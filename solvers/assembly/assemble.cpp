@@ -1,7 +1,5 @@
 #include "assembly/assemble.hpp"
 
-#include "mesh/element_topology.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +8,7 @@
 #include "assembly/sparsity.hpp"
 #include "common/errors.hpp"
 #include "fe/solid.hpp"
+#include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
@@ -59,7 +58,8 @@ GlobalMatrices assemble(const Mesh& mesh, const fe::PlaneSection& section, const
         assemble_block<8, 3>(mesh, b, solid, pattern, fe::hex8_stiffness, fe::hex8_consistent_mass, g, options);
         break;
       case ElementType::hex8i:
-        assemble_block<8, 3>(mesh, b, solid, pattern, fe::hex8_incompatible_stiffness, fe::hex8_consistent_mass, g, options);
+        assemble_block<8, 3>(mesh, b, solid, pattern, fe::hex8_incompatible_stiffness, fe::hex8_consistent_mass, g,
+                             options);
         break;
       case ElementType::hex20:
         assemble_block<20, 3>(mesh, b, solid, pattern, fe::hex20_stiffness, fe::hex20_consistent_mass, g, options);

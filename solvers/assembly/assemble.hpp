@@ -21,8 +21,7 @@ struct AssemblyOptions {
 };
 
 // Throws InputError naming the element when its geometry is invalid (inverted, degenerate).
-GlobalMatrices assemble(const Mesh& mesh, const fe::PlaneSection& section,
-                        const AssemblyOptions& options = {});
+GlobalMatrices assemble(const Mesh& mesh, const fe::PlaneSection& section, const AssemblyOptions& options = {});
 
 // Rows and columns of `a` restricted to the free DOFs (ff) and free x constrained (fc).
 struct Partitioned {

@@ -35,7 +35,8 @@ DofMap number_dofs(const Model& model) {
     }
   }
   map.prescribed.resize(static_cast<Eigen::Index>(map.constrained_dofs.size()));
-  for (size_t i = 0; i < map.constrained_dofs.size(); ++i) map.prescribed[static_cast<Eigen::Index>(i)] = values[map.constrained_dofs[i]];
+  for (size_t i = 0; i < map.constrained_dofs.size(); ++i)
+    map.prescribed[static_cast<Eigen::Index>(i)] = values[map.constrained_dofs[i]];
   return map;
 }
 

@@ -1,6 +1,7 @@
 // Numbering of nodal DOFs into free equations and constrained values.
 #pragma once
 #include <Eigen/Dense>
+
 #include <vector>
 
 #include "model/model.hpp"

@@ -52,7 +52,8 @@ Eigen::Vector3d body_acceleration(const BodyLoad& load, const Eigen::Vector3d& x
 
 // f_e = M_e b over one block, b the nodal accelerations: N_a reproduces b exactly when b is linear in x.
 template <int N, int D, typename MassFn>
-void add_body_block(const Mesh& mesh, const ElementBlock& block, const BodyLoad& load, MassFn mass, Eigen::VectorXd& f) {
+void add_body_block(const Mesh& mesh, const ElementBlock& block, const BodyLoad& load, MassFn mass,
+                    Eigen::VectorXd& f) {
   for (Eigen::Index e = 0; e < block.conn.rows(); ++e) {
     const int* nodes = block.conn.row(e).data();
     Eigen::Matrix<double, N, D> xyz;
@@ -67,16 +68,18 @@ void add_body_block(const Mesh& mesh, const ElementBlock& block, const BodyLoad&
     try {
       fe_body = mass(xyz) * b;
     } catch (const std::domain_error& err) {
-      throw InputError(fmt::format("element {} ({}): {}", block.ids[static_cast<size_t>(e)], element_name(block.type), err.what()));
+      throw InputError(
+          fmt::format("element {} ({}): {}", block.ids[static_cast<size_t>(e)], element_name(block.type), err.what()));
     }
-    for (int a = 0; a < N; ++a) f.segment<D>(static_cast<Eigen::Index>(nodes[a]) * D) += fe_body.template segment<D>(D * a);
+    for (int a = 0; a < N; ++a)
+      f.segment<D>(static_cast<Eigen::Index>(nodes[a]) * D) += fe_body.template segment<D>(D * a);
   }
 }
 
 }  // namespace
 
-
-Eigen::VectorXd surface_load_vector(const Mesh& mesh, double thickness, const SurfaceLoad& load, const std::vector<int>& set_nodes) {
+Eigen::VectorXd surface_load_vector(const Mesh& mesh, double thickness, const SurfaceLoad& load,
+                                    const std::vector<int>& set_nodes) {
   const std::vector<Facet> facets = boundary_facets_within(mesh, set_nodes);
   if (facets.empty())
     throw InputError(fmt::format("node set '{}' holds no boundary {} of the mesh for a distributed load", load.set,
@@ -87,7 +90,8 @@ Eigen::VectorXd surface_load_vector(const Mesh& mesh, double thickness, const Su
   const int dim = mesh.dim;
   auto scatter = [&](const std::vector<int>& nodes, const auto& fe_load) {
     for (size_t a = 0; a < nodes.size(); ++a)
-      f.segment(static_cast<Eigen::Index>(nodes[a]) * dim, dim) += fe_load.segment(static_cast<Eigen::Index>(a) * dim, dim);
+      f.segment(static_cast<Eigen::Index>(nodes[a]) * dim, dim) +=
+          fe_load.segment(static_cast<Eigen::Index>(a) * dim, dim);
   };
   for (const Facet& facet : facets) {
     if (dim == 2) {
@@ -113,17 +117,21 @@ Eigen::VectorXd body_load_vector(const Mesh& mesh, const fe::PlaneSection& secti
   for (const ElementBlock& b : mesh.blocks) {
     switch (b.type) {
       case ElementType::q4:
-        add_body_block<4, 2>(mesh, b, load, [&](const auto& x) { return fe::q4_consistent_mass(x, section); }, f);
+        add_body_block<4, 2>(
+            mesh, b, load, [&](const auto& x) { return fe::q4_consistent_mass(x, section); }, f);
         break;
       case ElementType::cst:
-        add_body_block<3, 2>(mesh, b, load, [&](const auto& x) { return fe::cst_consistent_mass(x, section); }, f);
+        add_body_block<3, 2>(
+            mesh, b, load, [&](const auto& x) { return fe::cst_consistent_mass(x, section); }, f);
         break;
       case ElementType::hex8:
       case ElementType::hex8i:  // hex8i's mass is hex8's (the bubbles carry none)
-        add_body_block<8, 3>(mesh, b, load, [&](const auto& x) { return fe::hex8_consistent_mass(x, solid); }, f);
+        add_body_block<8, 3>(
+            mesh, b, load, [&](const auto& x) { return fe::hex8_consistent_mass(x, solid); }, f);
         break;
       case ElementType::hex20:
-        add_body_block<20, 3>(mesh, b, load, [&](const auto& x) { return fe::hex20_consistent_mass(x, solid); }, f);
+        add_body_block<20, 3>(
+            mesh, b, load, [&](const auto& x) { return fe::hex20_consistent_mass(x, solid); }, f);
         break;
     }
   }

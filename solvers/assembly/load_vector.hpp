@@ -13,7 +13,8 @@ namespace bb {
 Eigen::VectorXd load_vector(const Model& model);
 
 // The parts of it, each over all global DOFs.
-Eigen::VectorXd surface_load_vector(const Mesh& mesh, double thickness, const SurfaceLoad& load, const std::vector<int>& set_nodes);
+Eigen::VectorXd surface_load_vector(const Mesh& mesh, double thickness, const SurfaceLoad& load,
+                                    const std::vector<int>& set_nodes);
 Eigen::VectorXd body_load_vector(const Mesh& mesh, const fe::PlaneSection& section, const BodyLoad& load);
 
 }  // namespace bb

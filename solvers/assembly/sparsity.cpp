@@ -19,7 +19,8 @@ NodalPattern::NodalPattern(const Mesh& mesh) : dim_(mesh.dim), n_nodes_(mesh.n_n
     const auto& b = mesh.blocks[bi];
     for (Eigen::Index e = 0; e < b.conn.rows(); ++e)
       for (Eigen::Index a = 0; a < b.conn.cols(); ++a)
-        node_elements[static_cast<size_t>(fill[static_cast<size_t>(b.conn(e, a))]++)] = {static_cast<int>(bi), static_cast<int>(e)};
+        node_elements[static_cast<size_t>(fill[static_cast<size_t>(b.conn(e, a))]++)] = {static_cast<int>(bi),
+                                                                                         static_cast<int>(e)};
   }
   adjacency_start_.assign(static_cast<size_t>(n_nodes_) + 1, 0);
   std::vector<int> scratch;
@@ -51,7 +52,8 @@ Eigen::SparseMatrix<double> NodalPattern::zero_matrix() const {
   for (int node = 0; node < n_nodes_; ++node) {
     for (int d = 0; d < dim_; ++d) {
       outer[node * dim_ + d] = static_cast<int>(pos);
-      for (long k = adjacency_start_[static_cast<size_t>(node)]; k < adjacency_start_[static_cast<size_t>(node) + 1]; ++k)
+      for (long k = adjacency_start_[static_cast<size_t>(node)]; k < adjacency_start_[static_cast<size_t>(node) + 1];
+           ++k)
         for (int dr = 0; dr < dim_; ++dr) inner[pos++] = adjacency_[static_cast<size_t>(k)] * dim_ + dr;
     }
   }

@@ -3,6 +3,7 @@
 // costs several times the final matrix in memory, see bench/README.md).
 #pragma once
 #include <Eigen/Sparse>
+
 #include <vector>
 
 #include "mesh/mesh.hpp"

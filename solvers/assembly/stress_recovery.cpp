@@ -50,7 +50,8 @@ BlockNodal recover_block(const Mesh& mesh, const ElementBlock& block, const Eige
     try {
       s = point_stresses(xyz, element_displacements<N, D>(u, nodes));
     } catch (const std::domain_error& err) {
-      throw InputError(fmt::format("element {} ({}): {}", block.ids[static_cast<size_t>(e)], element_name(block.type), err.what()));
+      throw InputError(
+          fmt::format("element {} ({}): {}", block.ids[static_cast<size_t>(e)], element_name(block.type), err.what()));
     }
     const Eigen::Matrix<double, N, C> nodal = extrapolation * s.transpose();
     out.values.middleRows(e * N, N) = nodal;
@@ -74,11 +75,15 @@ BlockNodal recover_block(const Mesh& mesh, const ElementBlock& block, const Eige
 
 int integration_point_count(ElementType type) {
   switch (type) {
-    case ElementType::q4: return 4;
-    case ElementType::cst: return 1;
+    case ElementType::q4:
+      return 4;
+    case ElementType::cst:
+      return 1;
     case ElementType::hex8:
-    case ElementType::hex8i: return 8;
-    case ElementType::hex20: return 27;
+    case ElementType::hex8i:
+      return 8;
+    case ElementType::hex20:
+      return 27;
   }
   return 0;
 }
@@ -102,7 +107,8 @@ StressField recover_stresses(const Mesh& mesh, const fe::PlaneSection& section, 
   field.elements = Eigen::VectorXi::Zero(mesh.n_nodes());
   if (options.integration_points) {
     Eigen::Index n_points = 0;
-    for (const ElementBlock& b : mesh.blocks) n_points += b.conn.rows() * static_cast<Eigen::Index>(integration_point_count(b.type));
+    for (const ElementBlock& b : mesh.blocks)
+      n_points += b.conn.rows() * static_cast<Eigen::Index>(integration_point_count(b.type));
     field.points.emplace();
     field.points->coords.resize(n_points, mesh.dim);
     field.points->stress.resize(n_points, field.components);
@@ -119,17 +125,20 @@ StressField recover_stresses(const Mesh& mesh, const fe::PlaneSection& section, 
     switch (b.type) {
       case ElementType::q4:
         per_block.push_back(recover_block<4, 2, 4>(
-            mesh, b, u, fe::q4_extrapolation(), [&](const auto& x, const auto& ue) { return fe::q4_point_stresses(x, ue, section); },
+            mesh, b, u, fe::q4_extrapolation(),
+            [&](const auto& x, const auto& ue) { return fe::q4_point_stresses(x, ue, section); },
             fe::q4_integration_points, points, sum, field.elements));
         break;
       case ElementType::cst:
         per_block.push_back(recover_block<3, 2, 1>(
-            mesh, b, u, fe::cst_extrapolation(), [&](const auto& x, const auto& ue) { return fe::cst_point_stresses(x, ue, section); },
+            mesh, b, u, fe::cst_extrapolation(),
+            [&](const auto& x, const auto& ue) { return fe::cst_point_stresses(x, ue, section); },
             fe::cst_integration_points, points, sum, field.elements));
         break;
       case ElementType::hex8:
         per_block.push_back(recover_block<8, 3, 8>(
-            mesh, b, u, fe::hex8_extrapolation(), [&](const auto& x, const auto& ue) { return fe::hex8_point_stresses(x, ue, solid); },
+            mesh, b, u, fe::hex8_extrapolation(),
+            [&](const auto& x, const auto& ue) { return fe::hex8_point_stresses(x, ue, solid); },
             fe::hex8_integration_points, points, sum, field.elements));
         break;
       case ElementType::hex8i:
@@ -140,7 +149,8 @@ StressField recover_stresses(const Mesh& mesh, const fe::PlaneSection& section, 
         break;
       case ElementType::hex20:
         per_block.push_back(recover_block<20, 3, 27>(
-            mesh, b, u, fe::hex20_extrapolation(), [&](const auto& x, const auto& ue) { return fe::hex20_point_stresses(x, ue, solid); },
+            mesh, b, u, fe::hex20_extrapolation(),
+            [&](const auto& x, const auto& ue) { return fe::hex20_point_stresses(x, ue, solid); },
             fe::hex20_integration_points, points, sum, field.elements));
         break;
     }

@@ -3,6 +3,7 @@
 // the elements that share a node. The gather counterpart of assembly. SI units (Pa).
 #pragma once
 #include <Eigen/Dense>
+
 #include <optional>
 #include <vector>
 
@@ -21,15 +22,15 @@ struct IntegrationPointStresses {
 };
 
 struct StressField {
-  int components = 3;        // 3: plane stress (sxx, syy, sxy); 6: solid, Voigt (xx, yy, zz, xy, yz, zx)
-  Eigen::MatrixXd nodal;     // n_nodes x components, the average over the elements at each node [Pa]
+  int components = 3;     // 3: plane stress (sxx, syy, sxy); 6: solid, Voigt (xx, yy, zz, xy, yz, zx)
+  Eigen::MatrixXd nodal;  // n_nodes x components, the average over the elements at each node [Pa]
   // Per node, the largest von Mises stress of (one element's extrapolated value - the average): how
   // far the elements around the node disagree, a local estimate of the discretization error
   // (Zienkiewicz & Zhu 1987 build theirs on the same difference).
   Eigen::VectorXd scatter;
   Eigen::VectorXi elements;  // elements sharing each node (0: no element uses it, its stress is 0)
   std::optional<IntegrationPointStresses> points;
-  double seconds = 0.0;      // wall time of the recovery
+  double seconds = 0.0;  // wall time of the recovery
 };
 
 struct StressRecoveryOptions {

@@ -24,10 +24,14 @@ std::optional<contact::LawParameter> law_of(const std::string& key) {
 
 double& law_field(contact::JenkinsParameters& law, contact::LawParameter p) {
   switch (p) {
-    case contact::law_kn: return law.kn;
-    case contact::law_kt: return law.kt;
-    case contact::law_mu: return law.mu;
-    case contact::law_n0: return law.n0;
+    case contact::law_kn:
+      return law.kn;
+    case contact::law_kt:
+      return law.kt;
+    case contact::law_mu:
+      return law.mu;
+    case contact::law_n0:
+      return law.n0;
   }
   throw std::logic_error("unknown law parameter");
 }
@@ -59,7 +63,8 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
       if (!hbm) absent(p, "only hbm, time and contact_loop analyses have contacts");
       if (!v.contact) absent(p, "name the contact by its index, e.g. analysis.contact.0.kt");
       if (*v.contact >= hbm->contacts.size())
-        absent(p, fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", *v.contact, hbm->contacts.size()));
+        absent(p, fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", *v.contact,
+                              hbm->contacts.size()));
       return law_field(hbm->contacts[*v.contact].law, v.law);
     }
     double& operator()(const DamperValue& v) {
@@ -79,7 +84,8 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
       if (auto* frf = std::get_if<FrfSpec>(&spec.analysis)) forces = &frf->forces;
       if (HbmSpec* hbm = system()) forces = &hbm->forces;
       if (!forces) absent(p, "the analysis has no forces");
-      if (v.force >= forces->size()) absent(p, fmt::format("no force {} (the analysis has {})", v.force, forces->size()));
+      if (v.force >= forces->size())
+        absent(p, fmt::format("no force {} (the analysis has {})", v.force, forces->size()));
       return (*forces)[v.force].amplitude;
     }
     HbmSpec* system() {
@@ -99,22 +105,34 @@ CaseParameter parse_parameter_path(const std::string& path) {
   const auto unknown = [&]() -> CaseParameter {
     throw std::invalid_argument(fmt::format("'{}' is not a parameter a calibration can vary ({})", path, kSupported));
   };
-  const auto after = [&](const std::string& prefix) { return path.starts_with(prefix) ? path.substr(prefix.size()) : std::string(); };
-  if (path == "material.E") p.target = MaterialValue{&fe::PlaneSection::youngs_modulus};
-  else if (path == "material.nu") p.target = MaterialValue{&fe::PlaneSection::poisson_ratio};
-  else if (path == "material.rho") p.target = MaterialValue{&fe::PlaneSection::density};
-  else if (path == "section.thickness") p.target = MaterialValue{&fe::PlaneSection::thickness};
-  else if (path == "analysis.modal_damping") p.target = ModalDampingValue{};
+  const auto after = [&](const std::string& prefix) {
+    return path.starts_with(prefix) ? path.substr(prefix.size()) : std::string();
+  };
+  if (path == "material.E")
+    p.target = MaterialValue{&fe::PlaneSection::youngs_modulus};
+  else if (path == "material.nu")
+    p.target = MaterialValue{&fe::PlaneSection::poisson_ratio};
+  else if (path == "material.rho")
+    p.target = MaterialValue{&fe::PlaneSection::density};
+  else if (path == "section.thickness")
+    p.target = MaterialValue{&fe::PlaneSection::thickness};
+  else if (path == "analysis.modal_damping")
+    p.target = ModalDampingValue{};
   else if (const std::string name = after("mesh.dimensions."); !name.empty()) {
     for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
       if (name == f.name) p.target = ArticleDimension{f.member};
     if (!std::holds_alternative<ArticleDimension>(p.target)) return unknown();
   } else if (const std::string key = after("analysis.damper."); !key.empty()) {
-    if (const auto law = law_of(key); law && *law != contact::law_n0) p.target = DamperValue{law, nullptr};
-    else if (key == "mass") p.target = DamperValue{std::nullopt, &DamperSpec::mass};
-    else if (key == "inertia") p.target = DamperValue{std::nullopt, &DamperSpec::inertia};
-    else if (key == "centrifugal_force") p.target = DamperValue{std::nullopt, &DamperSpec::centrifugal_force};
-    else return unknown();
+    if (const auto law = law_of(key); law && *law != contact::law_n0)
+      p.target = DamperValue{law, nullptr};
+    else if (key == "mass")
+      p.target = DamperValue{std::nullopt, &DamperSpec::mass};
+    else if (key == "inertia")
+      p.target = DamperValue{std::nullopt, &DamperSpec::inertia};
+    else if (key == "centrifugal_force")
+      p.target = DamperValue{std::nullopt, &DamperSpec::centrifugal_force};
+    else
+      return unknown();
   } else if (const std::string force = after("analysis.forces."); !force.empty()) {
     const size_t dot = force.find('.');
     const std::string index = force.substr(0, dot);
@@ -131,7 +149,8 @@ CaseParameter parse_parameter_path(const std::string& path) {
     } else {
       const std::string index = rest.substr(0, dot);
       const auto law = law_of(rest.substr(dot + 1));
-      if (index.empty() || index.size() > 6 || index.find_first_not_of("0123456789") != std::string::npos || !law) return unknown();
+      if (index.empty() || index.size() > 6 || index.find_first_not_of("0123456789") != std::string::npos || !law)
+        return unknown();
       p.target = ContactLawValue{std::stoul(index), *law};
     }
   } else {
@@ -148,7 +167,8 @@ void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double 
   locate(spec, parameter) = value;
   if (std::holds_alternative<ArticleDimension>(parameter.target)) {
     spec.model.mesh.two_blade.validate();  // DimensionError is an InputError
-  } else if (std::holds_alternative<ContactLawValue>(parameter.target) || std::holds_alternative<DamperValue>(parameter.target)) {
+  } else if (std::holds_alternative<ContactLawValue>(parameter.target) ||
+             std::holds_alternative<DamperValue>(parameter.target)) {
     const auto check = [&](const contact::JenkinsParameters& law) {
       try {
         contact::validate(law);

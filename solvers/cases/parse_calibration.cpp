@@ -1,14 +1,14 @@
-#include <fmt/format.h>
+#include "cases/parse_calibration.hpp"
 
+#include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <algorithm>
 #include <numbers>
 
 #include "cases/case_parameter.hpp"
-#include "cases/parse_calibration.hpp"
-#include "common/toml_reader.hpp"
 #include "common/errors.hpp"
+#include "common/toml_reader.hpp"
 
 namespace bb {
 
@@ -40,14 +40,18 @@ struct KindColumns {
 };
 KindColumns kind_columns(DataKind kind) {
   switch (kind) {
-    case DataKind::peaks: return {{"force"}, {"frequency", "amplitude"}};
-    case DataKind::frf: return {{"frequency", "amplitude"}, {"phase"}};
-    case DataKind::hysteresis: return {{"relative_displacement", "tangential_force"}, {}};
+    case DataKind::peaks:
+      return {{"force"}, {"frequency", "amplitude"}};
+    case DataKind::frf:
+      return {{"frequency", "amplitude"}, {"phase"}};
+    case DataKind::hysteresis:
+      return {{"relative_displacement", "tangential_force"}, {}};
   }
   return {};
 }
 
-CalibrationData parse_data_block(const toml::table& t, const std::string& path, const std::filesystem::path& case_file) {
+CalibrationData parse_data_block(const toml::table& t, const std::string& path,
+                                 const std::filesystem::path& case_file) {
   TomlReader r(t, path, case_file);
   CalibrationData d;
   d.at = r.location();
@@ -62,17 +66,21 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path, 
     const std::string column(key.str());
     const bool known = std::count(allowed.required.begin(), allowed.required.end(), column) +
                        std::count(allowed.optional.begin(), allowed.optional.end(), column);
-    if (!known) r.fail("columns", fmt::format("'{}' is not a column of {} data (they are: {}{}{})", column, kind,
-                                              fmt::join(allowed.required, ", "), allowed.optional.empty() ? "" : ", ",
-                                              fmt::join(allowed.optional, ", ")));
+    if (!known)
+      r.fail("columns", fmt::format("'{}' is not a column of {} data (they are: {}{}{})", column, kind,
+                                    fmt::join(allowed.required, ", "), allowed.optional.empty() ? "" : ", ",
+                                    fmt::join(allowed.optional, ", ")));
     const std::optional<std::string> result = value.value<std::string>();
     if (!result || result->empty()) r.fail("columns", fmt::format("'{}' needs the name of a result column", column));
-    if (!d.data.has(column)) r.fail("columns", fmt::format("'{}' is mapped but {} has no such column", column, file.string()));
+    if (!d.data.has(column))
+      r.fail("columns", fmt::format("'{}' is mapped but {} has no such column", column, file.string()));
     const Unit& unit = d.data.units.at(column);
     const std::optional<Dimension> dim = column_dimension(*result);
     if (dim && *dim != unit.dimension)
-      r.fail("columns", fmt::format("{}'s column '{}' is in {} ({}) but result column '{}' holds a {}: the units do not match",
-                                    file.string(), column, unit.symbol, dimension_name(unit.dimension), *result, dimension_name(*dim)));
+      r.fail("columns",
+             fmt::format("{}'s column '{}' is in {} ({}) but result column '{}' holds a {}: the units do not match",
+                         file.string(), column, unit.symbol, dimension_name(unit.dimension), *result,
+                         dimension_name(*dim)));
     d.columns[column] = *result;
   }
   for (const std::string& c : allowed.required)
@@ -81,7 +89,8 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path, 
     r.fail("columns", "peaks data need 'frequency', 'amplitude' or both");
   if (r.has("amplitude_uncertainty")) d.amplitude_uncertainty = r.positive("amplitude_uncertainty");
   if (r.has("frequency_uncertainty")) d.frequency_uncertainty = r.positive("frequency_uncertainty");
-  if (r.has("phase_uncertainty_deg")) d.phase_uncertainty = r.positive("phase_uncertainty_deg") * std::numbers::pi / 180.0;
+  if (r.has("phase_uncertainty_deg"))
+    d.phase_uncertainty = r.positive("phase_uncertainty_deg") * std::numbers::pi / 180.0;
   if (r.has("force_uncertainty")) d.force_uncertainty = r.positive("force_uncertainty");
   r.finish();
   return d;
@@ -117,7 +126,8 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
       p.fail("path", e.what());
     }
     if (param.start < param.lower || param.start > param.upper)
-      p.fail("path", fmt::format("the case value {} of '{}' lies outside [{}, {}]", param.start, param.path, param.lower, param.upper));
+      p.fail("path", fmt::format("the case value {} of '{}' lies outside [{}, {}]", param.start, param.path,
+                                 param.lower, param.upper));
     p.finish();
     c.parameters.push_back(param);
   }
@@ -130,9 +140,11 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
       c.data.push_back(parse_data_block(*n.as_table(), fmt::format("calibration.data[{}]", block++), file));
     }
   }
-  if (c.fit_checks.empty() && c.data.empty()) r.fail("fit_checks", "needs at least one check name or a [[calibration.data]] block");
+  if (c.fit_checks.empty() && c.data.empty())
+    r.fail("fit_checks", "needs at least one check name or a [[calibration.data]] block");
   for (const std::string& name : c.fit_checks) {
-    const bool found = std::any_of(spec.checks.begin(), spec.checks.end(), [&](const CheckSpec& k) { return k.name == name; });
+    const bool found =
+        std::any_of(spec.checks.begin(), spec.checks.end(), [&](const CheckSpec& k) { return k.name == name; });
     if (!found) r.fail("fit_checks", fmt::format("no [[check]] named '{}'", name));
   }
   if (r.has("relative_uncertainty")) {
@@ -169,7 +181,8 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   }
   if (const auto cross = r.optional_string("cross_check")) {
     c.cross_check = file.parent_path() / *cross;
-    if (!std::filesystem::is_regular_file(c.cross_check)) r.fail("cross_check", fmt::format("no case file {}", c.cross_check.string()));
+    if (!std::filesystem::is_regular_file(c.cross_check))
+      r.fail("cross_check", fmt::format("no case file {}", c.cross_check.string()));
   }
   if (const auto it = r.optional_integer("max_iterations")) {
     if (*it < 1) r.fail("max_iterations", "must be >= 1");

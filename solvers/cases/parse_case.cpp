@@ -1,10 +1,9 @@
 // TOML case file -> CaseSpec. The format is documented in cases/README.md.
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <algorithm>
 #include <iterator>
-
-#include <toml++/toml.h>
 
 #include "cases/case_spec.hpp"
 #include "cases/parse_common.hpp"
@@ -30,7 +29,8 @@ struct AnalysisParser {
   AnalysisSpec (*parse)(TomlReader& r, const fs::path& folder);
 };
 constexpr AnalysisParser kAnalysisParsers[] = {
-    {"static", [](TomlReader& r, const fs::path&) -> AnalysisSpec {
+    {"static",
+     [](TomlReader& r, const fs::path&) -> AnalysisSpec {
        return StaticSpec{.integration_point_stresses = r.boolean("integration_point_stresses", false)};
      }},
     {"modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_modal(r); }},
@@ -50,7 +50,8 @@ AnalysisSpec parse_analysis(TomlReader r, const fs::path& folder) {
                                    [&](const AnalysisParser& p) { return p.type == type; });
   AnalysisSpec a = parser->parse(r, folder);
   const bool labels_modes = std::holds_alternative<ModalSpec>(a) || std::holds_alternative<FrfSpec>(a);
-  if (!labels_modes && r.has("pairs")) r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
+  if (!labels_modes && r.has("pairs"))
+    r.fail("pairs", "[analysis.pairs] labels modes; it needs type = \"modal\" or \"frf\"");
   r.finish();
   return a;
 }
@@ -79,26 +80,31 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   c.result = r.string("result");  // whether the analysis makes it is known only when it runs
   if (r.has("reference") == r.has("reference_result"))
     r.fail("reference", "give either 'reference' (a CSV file) or 'reference_result' (a result table of this run)");
-  if (r.has("reference")) c.reference = folder / r.string("reference");
-  else c.reference_result = r.string("reference_result");
+  if (r.has("reference"))
+    c.reference = folder / r.string("reference");
+  else
+    c.reference_result = r.string("reference_result");
   const std::string match = r.choice("match", {"key", "mac", "label"}, "key");
   c.match = match == "mac" ? CheckSpec::Match::mac : match == "label" ? CheckSpec::Match::label : CheckSpec::Match::key;
   if (r.has("reference_case")) {
     // With match = "mac" a reference file may be keyed by the other case's modes (e.g. published
     // values numbered as on the benchmark's own mesh): its run pairs them with this run's modes.
     if (c.reference_result.empty() && c.match != CheckSpec::Match::mac)
-      r.fail("reference_case", "names the case whose result table 'reference_result' is compared with (or, with match = \"mac\", "
-                               "whose modes the keys of 'reference' number)");
+      r.fail("reference_case",
+             "names the case whose result table 'reference_result' is compared with (or, with match = \"mac\", "
+             "whose modes the keys of 'reference' number)");
     c.reference_case = folder / r.string("reference_case");
-    if (!fs::is_regular_file(c.reference_case)) r.fail("reference_case", fmt::format("no case file {}", c.reference_case.string()));
+    if (!fs::is_regular_file(c.reference_case))
+      r.fail("reference_case", fmt::format("no case file {}", c.reference_case.string()));
   }
   const std::string expect = r.choice("expect", {"equal", "at_most", "at_least"}, "equal");
-  c.relation = expect == "at_most" ? CheckSpec::Relation::at_most
+  c.relation = expect == "at_most"    ? CheckSpec::Relation::at_most
                : expect == "at_least" ? CheckSpec::Relation::at_least
                                       : CheckSpec::Relation::equal;
   if (c.match == CheckSpec::Match::mac && c.reference_case.empty())
-    r.fail("match", "\"mac\" pairs this run's modes with the modes of another case's run by shape: give reference_case (and "
-                    "reference_result = \"frequencies\")");
+    r.fail("match",
+           "\"mac\" pairs this run's modes with the modes of another case's run by shape: give reference_case (and "
+           "reference_result = \"frequencies\")");
   if (r.has("min_mac")) {
     if (c.match != CheckSpec::Match::mac) r.fail("min_mac", "applies to match = \"mac\" only");
     c.min_mac = r.number("min_mac");
@@ -111,7 +117,8 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   if (c.match == CheckSpec::Match::label && c.labels.empty())
     r.fail("match", "\"label\" pairs rows by text columns: give labels = [\"type\", ...]");
   c.key = r.string("key");
-  if (c.match == CheckSpec::Match::mac && c.key != "mode") r.fail("key", "match = \"mac\" pairs modes: the key is \"mode\"");
+  if (c.match == CheckSpec::Match::mac && c.key != "mode")
+    r.fail("key", "match = \"mac\" pairs modes: the key is \"mode\"");
   TomlReader compare(r.table("compare"), r.path() + ".compare", r.file());
   for (const auto& [k, v] : r.table("compare")) {
     const std::string result_column(k.str());
@@ -139,7 +146,8 @@ toml::table read_case_table(const fs::path& file, int depth) {
   try {
     root = toml::parse_file(file.string());
   } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}: TOML syntax error: {}", file.string(), e.source().begin.line, e.description()));
+    throw InputError(
+        fmt::format("{}:{}: TOML syntax error: {}", file.string(), e.source().begin.line, e.description()));
   }
   // [case] model_from: material, mesh, sets, constraints and section of another case, so that
   // several analyses of one article share a single description of it.
@@ -183,16 +191,21 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   const ModelNeed need = std::visit([](const auto& a) { return model_need(a); }, spec.analysis);
   if (need == ModelNeed::nothing) {
     for (const char* key : {"material", "mesh", "section", "sets", "bc", "load"})
-      if (top.has(key)) top.fail(key, "a contact_loop analysis drives one contact by an imposed motion: it takes no model data");
+      if (top.has(key))
+        top.fail(key, "a contact_loop analysis drives one contact by an imposed motion: it takes no model data");
     spec.model.mesh.kind = MeshSpec::Kind::none;
   } else if (need == ModelNeed::matrices && !top.has("mesh")) {
     for (const char* key : {"material", "section", "sets", "bc", "load"})
-      if (top.has(key)) top.fail(key, "the model is given by matrices only (a reduced model from a file or written in the case): it takes no mesh data");
+      if (top.has(key))
+        top.fail(key,
+                 "the model is given by matrices only (a reduced model from a file or written in the case): it takes "
+                 "no mesh data");
     spec.model.mesh.kind = MeshSpec::Kind::none;
   } else {
     spec.model = parse_model(top, folder, !std::holds_alternative<StaticSpec>(spec.analysis));
   }
-  for_each_table_in_array(top, "check", [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
+  for_each_table_in_array(top, "check",
+                          [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
   if (top.has("study")) spec.study = parse_study(top, spec.model, spec.analysis);
   top.has("calibration");  // read by parse_calibration (cases/parse_calibration.hpp)
   top.finish();

@@ -12,7 +12,8 @@ ContactLoopSpec parse_contact_loop(TomlReader& r) {
   s.normal_phase_deg = r.optional_number("normal_phase_deg").value_or(0.0);
   if (const auto n = r.optional_integer("samples")) {
     // >= 16: the loop's corners need a few samples per stick/slip segment; the cap bounds memory.
-    if (*n < 16 || *n > 1'000'000) r.fail("samples", fmt::format("must lie in [16, 1000000] (samples per period), found {}", *n));
+    if (*n < 16 || *n > 1'000'000)
+      r.fail("samples", fmt::format("must lie in [16, 1000000] (samples per period), found {}", *n));
     s.samples = static_cast<int>(*n);
   }
   // Every law value is required: a rig states its contact, no silent default.

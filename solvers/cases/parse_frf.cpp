@@ -1,12 +1,12 @@
 #include "cases/parse_frf.hpp"
 
-#include "cases/parse_modal.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
+
+#include "cases/parse_modal.hpp"
 
 namespace bb {
 namespace fs = std::filesystem;
@@ -83,9 +83,12 @@ RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
   RomSpec rom;
   rom.name = r.string("name");
   if (rom.name.empty() || rom.name == "full" || rom.name.find_first_of(" ./") != std::string::npos)
-    r.fail("name", fmt::format("'{}': choose a short name without spaces, dots or slashes, other than \"full\"", rom.name));
+    r.fail("name",
+           fmt::format("'{}': choose a short name without spaces, dots or slashes, other than \"full\"", rom.name));
   if (static_cast<int>(r.has("file")) + static_cast<int>(r.has("masters")) + static_cast<int>(r.has("stiffness")) != 1)
-    r.fail("masters", "give one of 'masters' (Craig-Bampton), 'file' (a reduced model on disk) or 'stiffness' + 'mass' + 'dofs' (matrices)");
+    r.fail("masters",
+           "give one of 'masters' (Craig-Bampton), 'file' (a reduced model on disk) or 'stiffness' + 'mass' + 'dofs' "
+           "(matrices)");
   if (r.has("file")) {
     rom.file = folder / r.string("file");
   } else if (r.has("stiffness")) {
@@ -110,7 +113,9 @@ RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
 FrfDamping parse_damping(TomlReader& r) {
   FrfDamping damping;
   if (r.has("modal_damping") == r.has("rayleigh"))
-    r.fail("modal_damping", "give either 'modal_damping' (one ratio for every mode) or 'rayleigh' = { frequency_hz = [f1, f2], zeta = [z1, z2] }");
+    r.fail("modal_damping",
+           "give either 'modal_damping' (one ratio for every mode) or 'rayleigh' = { frequency_hz = [f1, f2], zeta = "
+           "[z1, z2] }");
   if (r.has("modal_damping")) {
     damping.zeta = r.non_negative("modal_damping", 0.0);
     if (damping.zeta >= 1.0) r.fail("modal_damping", "must be below 1 (critical damping)");
@@ -119,7 +124,8 @@ FrfDamping parse_damping(TomlReader& r) {
     const auto f = d.number_array("frequency_hz");
     const auto z = d.number_array("zeta");
     if (f.size() != 2 || !(f[0] > 0) || !(f[1] > f[0])) d.fail("frequency_hz", "expected [f1, f2] with 0 < f1 < f2");
-    if (z.size() != 2 || !(z[0] >= 0) || !(z[1] >= 0) || z[0] >= 1 || z[1] >= 1) d.fail("zeta", "expected [zeta1, zeta2], each in [0, 1)");
+    if (z.size() != 2 || !(z[0] >= 0) || !(z[1] >= 0) || z[0] >= 1 || z[1] >= 1)
+      d.fail("zeta", "expected [zeta1, zeta2], each in [0, 1)");
     d.finish();
     damping.kind = FrfDamping::Kind::rayleigh;
     damping.rayleigh_hz = {f[0], f[1]};
@@ -136,7 +142,8 @@ FrfSpec parse_frf(TomlReader& r, const fs::path& folder) {
   s.f_min = range[0];
   s.f_max = range[1];
   s.step = r.positive("step_hz");
-  if ((s.f_max - s.f_min) / s.step > 2e6) r.fail("step_hz", "more than 2 million frequencies: choose a larger step or adaptive = true");
+  if ((s.f_max - s.f_min) / s.step > 2e6)
+    r.fail("step_hz", "more than 2 million frequencies: choose a larger step or adaptive = true");
   s.adaptive = r.boolean("adaptive", false);
   if (s.adaptive) {
     s.min_step = r.positive("min_step_hz");
@@ -174,10 +181,12 @@ FrfSpec parse_frf(TomlReader& r, const fs::path& folder) {
       if (!n.is_table()) r.fail("rom", "write each reduced model as a [[analysis.rom]] table");
       TomlReader rr(*n.as_table(), fmt::format("{}.rom[{}]", r.path(), i++), r.file());
       s.roms.push_back(parse_rom(rr, folder));
-      if (!names.insert(s.roms.back().name).second) rr.fail("name", fmt::format("a reduced model named '{}' exists already", s.roms.back().name));
+      if (!names.insert(s.roms.back().name).second)
+        rr.fail("name", fmt::format("a reduced model named '{}' exists already", s.roms.back().name));
     }
   }
-  if (!s.full_model && s.roms.empty()) r.fail("full_model", "with full_model = false, give at least one [[analysis.rom]]");
+  if (!s.full_model && s.roms.empty())
+    r.fail("full_model", "with full_model = false, give at least one [[analysis.rom]]");
   s.pairs = parse_mode_pairs(r);
   return s;
 }

@@ -84,7 +84,8 @@ DamperSpec parse_damper(TomlReader r) {
     s.left_face = p.choice("face", {"left", "right"}) == "left";
     s.point = p.optional_string("point").value_or("");
     if (p.has("position")) s.position = parse_xy(p, "position");
-    if (s.point.empty() && !s.position) p.fail("point", "give the blade point it touches ('point'), or a 'position' for a rigid platform");
+    if (s.point.empty() && !s.position)
+      p.fail("point", "give the blade point it touches ('point'), or a 'position' for a rigid platform");
     p.finish();
     d.points.push_back(s);
   }
@@ -105,7 +106,9 @@ std::vector<HbmParameter> parse_sensitivities(TomlReader& r, const HbmSpec& s) {
       parameter = hbm_parameter(parse_parameter_path(path));
     } catch (const std::invalid_argument&) {
     }
-    if (!parameter) fail("not a supported path (analysis.contact.<i>.{kn,kt,mu,n0}, analysis.damper.{kt,mu}, analysis.modal_damping)");
+    if (!parameter)
+      fail(
+          "not a supported path (analysis.contact.<i>.{kn,kt,mu,n0}, analysis.damper.{kt,mu}, analysis.modal_damping)");
     if (const std::optional<std::string> why = unsupported_sensitivity(s, *parameter)) fail(*why);
     if (std::count(paths.begin(), paths.end(), path) > 1) fail("listed twice");
     out.push_back(*parameter);
@@ -169,11 +172,13 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   {
     TomlReader m(model, r.path() + ".model", r.file());
     if (m.has("damping")) {
-      if (!m.has("stiffness")) m.fail("damping", "a damping matrix goes with matrices written in the case ('dofs', 'stiffness', 'mass')");
+      if (!m.has("stiffness"))
+        m.fail("damping", "a damping matrix goes with matrices written in the case ('dofs', 'stiffness', 'mass')");
       if (r.has("modal_damping") || r.has("rayleigh"))
         r.fail("modal_damping", "the model gives its damping matrix: leave out modal_damping and rayleigh");
       s.damping_matrix = parse_square_matrix(m, "damping", m.string_array("dofs").size());
-      if ((*s.damping_matrix - s.damping_matrix->transpose()).cwiseAbs().maxCoeff() > 1e-8 * s.damping_matrix->cwiseAbs().maxCoeff())
+      if ((*s.damping_matrix - s.damping_matrix->transpose()).cwiseAbs().maxCoeff() >
+          1e-8 * s.damping_matrix->cwiseAbs().maxCoeff())
         m.fail("damping", "must be symmetric");
     }
     s.model = parse_rom(m, folder);
@@ -184,23 +189,30 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     int i = 0;
     for (const toml::node& n : r.array("contact")) {
       if (!n.is_table()) r.fail("contact", "write each contact as a [[analysis.contact]] table");
-      s.contacts.push_back(parse_contact(TomlReader(*n.as_table(), fmt::format("{}.contact[{}]", r.path(), i++), r.file())));
+      s.contacts.push_back(
+          parse_contact(TomlReader(*n.as_table(), fmt::format("{}.contact[{}]", r.path(), i++), r.file())));
     }
   }
-  if (const toml::table* d = r.optional_table("damper")) s.damper = parse_damper(TomlReader(*d, r.path() + ".damper", r.file()));
-  if (contacts_required && s.contacts.empty() && !s.damper) r.fail("contact", "an hbm analysis needs at least one [[analysis.contact]] or an [analysis.damper]");
-  s.sweep.method = r.choice("sweep", {"grid", "arclength"}, "grid") == "grid" ? HbmSweepSpec::Method::grid : HbmSweepSpec::Method::arclength;
+  if (const toml::table* d = r.optional_table("damper"))
+    s.damper = parse_damper(TomlReader(*d, r.path() + ".damper", r.file()));
+  if (contacts_required && s.contacts.empty() && !s.damper)
+    r.fail("contact", "an hbm analysis needs at least one [[analysis.contact]] or an [analysis.damper]");
+  s.sweep.method = r.choice("sweep", {"grid", "arclength"}, "grid") == "grid" ? HbmSweepSpec::Method::grid
+                                                                              : HbmSweepSpec::Method::arclength;
   if (s.sweep.method == HbmSweepSpec::Method::grid) {
     s.sweep.step_hz = r.positive("step_hz");
-    if ((s.sweep.f_max - s.sweep.f_min) / s.sweep.step_hz > 1e6) r.fail("step_hz", "more than a million frequencies: choose a larger step");
+    if ((s.sweep.f_max - s.sweep.f_min) / s.sweep.step_hz > 1e6)
+      r.fail("step_hz", "more than a million frequencies: choose a larger step");
   }
   if (const toml::table* c = r.optional_table("continuation")) {
-    if (s.sweep.method == HbmSweepSpec::Method::grid) r.fail("continuation", "[analysis.continuation] needs sweep = \"arclength\"");
+    if (s.sweep.method == HbmSweepSpec::Method::grid)
+      r.fail("continuation", "[analysis.continuation] needs sweep = \"arclength\"");
     TomlReader p(*c, r.path() + ".continuation", r.file());
     s.sweep.initial_step = p.optional_number("initial_step").value_or(s.sweep.initial_step);
     s.sweep.max_step = p.optional_number("max_step").value_or(s.sweep.max_step);
     s.sweep.min_step = p.optional_number("min_step").value_or(s.sweep.min_step);
-    if (!(s.sweep.min_step > 0) || !(s.sweep.initial_step >= s.sweep.min_step) || !(s.sweep.max_step >= s.sweep.initial_step))
+    if (!(s.sweep.min_step > 0) || !(s.sweep.initial_step >= s.sweep.min_step) ||
+        !(s.sweep.max_step >= s.sweep.initial_step))
       p.fail("max_step", "need 0 < min_step <= initial_step <= max_step");
     p.finish();
   }

@@ -1,8 +1,8 @@
 #include "cases/parse_modal.hpp"
 
-#include "cases/parse_common.hpp"
-
 #include <algorithm>
+
+#include "cases/parse_common.hpp"
 
 namespace bb {
 
@@ -10,7 +10,8 @@ ModalSpec parse_modal(TomlReader& r) {
   ModalSpec a;
   if (r.has("band_hz")) {
     const auto band = r.number_array("band_hz");
-    if (band.size() != 2 || band[0] < 0 || band[0] >= band[1]) r.fail("band_hz", "expected [f_min, f_max] with 0 <= f_min < f_max");
+    if (band.size() != 2 || band[0] < 0 || band[0] >= band[1])
+      r.fail("band_hz", "expected [f_min, f_max] with 0 <= f_min < f_max");
     a.modes.band_min_hz = band[0];
     a.modes.band_max_hz = band[1];
   }

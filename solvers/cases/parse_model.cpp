@@ -50,8 +50,10 @@ HexBlockSpec parse_hex_block(TomlReader r, ElementType element) {
   b.ny = parse_divisions(r, "ny");
   b.nz = parse_divisions(r, "nz");
   // Orientation: corners 1-4 must run counterclockwise seen from corner 5's side.
-  const Eigen::Vector3d e1 = b.corners[1] - b.corners[0], e2 = b.corners[3] - b.corners[0], e3 = b.corners[4] - b.corners[0];
-  if (!(e1.cross(e2).dot(e3) > 0)) r.fail("corners", "corners 1-4 must run counterclockwise seen from corners 5-8 (positive volume)");
+  const Eigen::Vector3d e1 = b.corners[1] - b.corners[0], e2 = b.corners[3] - b.corners[0],
+                        e3 = b.corners[4] - b.corners[0];
+  if (!(e1.cross(e2).dot(e3) > 0))
+    r.fail("corners", "corners 1-4 must run counterclockwise seen from corners 5-8 (positive volume)");
   r.finish();
   return b;
 }
@@ -104,9 +106,12 @@ void parse_blade_section(TomlReader& r, MeshSpec& m) {
   if (const toml::table* table = r.optional_table("divisions")) {
     TomlReader t(*table, r.path() + ".divisions", r.file());
     for (auto [key, member] : {std::pair{"root_side_columns", &BladeSectionDivisions::root_side_columns},
-                               {"root_rows", &BladeSectionDivisions::root_rows}, {"neck_rows", &BladeSectionDivisions::neck_rows},
-                               {"lip_rows", &BladeSectionDivisions::lip_rows}, {"airfoil_columns", &BladeSectionDivisions::airfoil_columns},
-                               {"airfoil_rows", &BladeSectionDivisions::airfoil_rows}, {"layers", &BladeSectionDivisions::layers}})
+                               {"root_rows", &BladeSectionDivisions::root_rows},
+                               {"neck_rows", &BladeSectionDivisions::neck_rows},
+                               {"lip_rows", &BladeSectionDivisions::lip_rows},
+                               {"airfoil_columns", &BladeSectionDivisions::airfoil_columns},
+                               {"airfoil_rows", &BladeSectionDivisions::airfoil_rows},
+                               {"layers", &BladeSectionDivisions::layers}})
       n.*member = small_integer(t, key, 1, 1000, n.*member);
     t.finish();
   }
@@ -131,7 +136,8 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
   }
   if (kind == "hex_blocks" || kind == "gmsh") {
     // Gmsh files hold plane meshes too (3-node triangles, 4-node quadrilaterals); blocks are solids.
-    if (kind == "hex_blocks" && m.dim() != 3) r.fail("element", "kind 'hex_blocks' needs a solid element (hex8, hex8i, hex20)");
+    if (kind == "hex_blocks" && m.dim() != 3)
+      r.fail("element", "kind 'hex_blocks' needs a solid element (hex8, hex8i, hex20)");
     m.merge_tolerance = r.non_negative("merge_tolerance", m.merge_tolerance);
     if (kind == "gmsh") {
       m.kind = MeshSpec::Kind::gmsh;
@@ -141,7 +147,8 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
       int index = 0;
       for (const toml::node& n : r.array("block")) {
         if (!n.is_table()) r.fail("block", "write blocks as [[mesh.block]] tables");
-        m.blocks.push_back(parse_hex_block(TomlReader(*n.as_table(), fmt::format("mesh.block[{}]", index++), r.file()), m.element));
+        m.blocks.push_back(
+            parse_hex_block(TomlReader(*n.as_table(), fmt::format("mesh.block[{}]", index++), r.file()), m.element));
       }
       if (m.blocks.empty()) r.fail("block", "needs at least one [[mesh.block]]");
     }
@@ -179,8 +186,8 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
   q.ny = static_cast<int>(ny);
   const std::string numbering = r.choice("numbering", {"rows", "serpentine"}, "rows");
   q.numbering = numbering == "rows" ? NodeNumbering::rows : NodeNumbering::serpentine;
-  const std::string diag = r.choice(
-      "diagonal", {"bottom_left_to_top_right", "bottom_right_to_top_left", "alternating"}, "bottom_left_to_top_right");
+  const std::string diag = r.choice("diagonal", {"bottom_left_to_top_right", "bottom_right_to_top_left", "alternating"},
+                                    "bottom_left_to_top_right");
   q.diagonal = diag == "bottom_left_to_top_right"   ? TriangleDiagonal::bottom_left_to_top_right
                : diag == "bottom_right_to_top_left" ? TriangleDiagonal::bottom_right_to_top_left
                                                     : TriangleDiagonal::alternating;
@@ -244,7 +251,8 @@ ConstraintSpec parse_constraint(TomlReader r) {
 Eigen::Vector3d parse_vector(TomlReader& r, const std::string& key, int dim) {
   const std::vector<double> v = r.number_array(key);
   if (static_cast<int>(v.size()) != dim)
-    r.fail(key, fmt::format("expected {} components ({}) on a {}D mesh, found {}", dim, dim == 2 ? "x, y" : "x, y, z", dim, v.size()));
+    r.fail(key, fmt::format("expected {} components ({}) on a {}D mesh, found {}", dim, dim == 2 ? "x, y" : "x, y, z",
+                            dim, v.size()));
   Eigen::Vector3d out = Eigen::Vector3d::Zero();
   for (int d = 0; d < dim; ++d) out[d] = v[static_cast<size_t>(d)];
   return out;
@@ -270,8 +278,11 @@ void parse_load(TomlReader r, int dim, ModelSpec& spec) {
     const std::string key = dim == 2 ? "edges" : "faces";
     const std::string other = dim == 2 ? "faces" : "edges";
     if (r.has(other))
-      r.fail(other, dim == 2 ? "a plane (2D) mesh has no element faces to load: a distributed load acts on its edges (edges = \"set\")"
-                             : "a line load on the edges of a solid is not supported: load its faces (faces = \"set\")");
+      r.fail(
+          other,
+          dim == 2
+              ? "a plane (2D) mesh has no element faces to load: a distributed load acts on its edges (edges = \"set\")"
+              : "a line load on the edges of a solid is not supported: load its faces (faces = \"set\")");
     SurfaceLoadSpec l;
     l.at = r.location(key);
     l.key = r.path() + "." + key;
@@ -296,7 +307,8 @@ void parse_load(TomlReader r, int dim, ModelSpec& spec) {
     l.load.kind = BodyLoad::Kind::centrifugal;
     l.load.speed = r.positive("speed");
     const std::vector<double> axis = r.number_array("axis");
-    if (axis.size() != 3) r.fail("axis", fmt::format("expected a direction [x, y, z], found {} components", axis.size()));
+    if (axis.size() != 3)
+      r.fail("axis", fmt::format("expected a direction [x, y, z], found {} components", axis.size()));
     const Eigen::Vector3d a(axis[0], axis[1], axis[2]);
     if (!(a.norm() > 0)) r.fail("axis", "the axis direction must not be zero");
     l.load.axis = a.normalized();
@@ -337,19 +349,22 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
       if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
       spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
       if (spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::blade_section) {
-        const auto reserved = spec.mesh.kind == MeshSpec::Kind::two_blade ? two_blade_set_names() : blade_section_set_names();
+        const auto reserved =
+            spec.mesh.kind == MeshSpec::Kind::two_blade ? two_blade_set_names() : blade_section_set_names();
         if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
           throw InputError(fmt::format("{}: 'sets.{}': the {} mesh defines this set itself ({}); choose another name",
                                        spec.sets.back().at.where(), name,
-                                       spec.mesh.kind == MeshSpec::Kind::two_blade ? "two_blade" : "blade_section", fmt::join(reserved, ", ")));
+                                       spec.mesh.kind == MeshSpec::Kind::two_blade ? "two_blade" : "blade_section",
+                                       fmt::join(reserved, ", ")));
       }
     }
   }
   for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
   for_each_table_in_array(top, "load", [&](TomlReader r) { parse_load(std::move(r), spec.mesh.dim(), spec); });
   if (!spec.body_loads.empty() && !(spec.section.density > 0))
-    throw InputError(fmt::format("{}: a {} load acts through the mass: 'material.rho' must be > 0", spec.body_loads.front().at.where(),
-                                 spec.body_loads.front().load.kind == BodyLoad::Kind::gravity ? "gravity" : "centrifugal"));
+    throw InputError(fmt::format(
+        "{}: a {} load acts through the mass: 'material.rho' must be > 0", spec.body_loads.front().at.where(),
+        spec.body_loads.front().load.kind == BodyLoad::Kind::gravity ? "gravity" : "centrifugal"));
   return spec;
 }
 

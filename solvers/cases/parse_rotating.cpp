@@ -27,9 +27,11 @@ void parse_profile(TomlReader& r, RotatingSpec& s) {
     s.profile = RotatingSpec::Profile::torque;
     s.torque = r.number("torque_n_m");
     s.initial_speed = r.number("initial_speed_rad_s");
-    if (!std::isfinite(s.torque) || !std::isfinite(s.initial_speed)) r.fail("torque_n_m", "torque and initial speed must be finite");
+    if (!std::isfinite(s.torque) || !std::isfinite(s.initial_speed))
+      r.fail("torque_n_m", "torque and initial speed must be finite");
     s.rotor_inertia = finite_positive(r, "rotor_inertia");
-    if (r.has("speed_rad_s") || r.has("spin_up_s")) r.fail("speed_rad_s", "a rotor driven by a torque has no prescribed speed");
+    if (r.has("speed_rad_s") || r.has("spin_up_s"))
+      r.fail("speed_rad_s", "a rotor driven by a torque has no prescribed speed");
     return;
   }
   s.speed = finite_positive(r, "speed_rad_s");
@@ -89,7 +91,8 @@ RotatingSpec parse_rotating(TomlReader& r) {
   s.end_time = finite_positive(r, "end_time_s");
   if (r.has("time_step_s")) {
     s.time_step = finite_positive(r, "time_step_s");
-    if (s.time_step > s.end_time) r.fail("time_step_s", fmt::format("{} s exceeds end_time_s = {} s", s.time_step, s.end_time));
+    if (s.time_step > s.end_time)
+      r.fail("time_step_s", fmt::format("{} s exceeds end_time_s = {} s", s.time_step, s.end_time));
     if (s.end_time / s.time_step > 5e7) r.fail("time_step_s", "more than 5e7 steps: choose a larger step");
   }
   if (r.has("rho_infinity")) {
@@ -108,8 +111,8 @@ RotatingSpec parse_rotating(TomlReader& r) {
   if (r.has("history_interval_s")) s.history_interval = finite_positive(r, "history_interval_s");
   parse_campbell(r, s);
   if (s.modal_basis && s.campbell_modes >= s.basis_modes)
-    r.fail("basis_modes", fmt::format("a modal basis of {} modes cannot converge {} rotating modes: raise basis_modes", s.basis_modes,
-                                      s.campbell_modes));
+    r.fail("basis_modes", fmt::format("a modal basis of {} modes cannot converge {} rotating modes: raise basis_modes",
+                                      s.basis_modes, s.campbell_modes));
   return s;
 }
 

@@ -54,7 +54,8 @@ HbmHarmonicsStudySpec parse_hbm_study(TomlReader r, const HbmSpec& hbm) {
   if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level");
   const long samples = r.optional_integer("time_samples").value_or(0);
   const int h_max = *std::max_element(s.harmonics.begin(), s.harmonics.end());
-  if (samples != 0 && samples < 2 * h_max + 1) r.fail("time_samples", fmt::format("must be 0 or at least 2 H + 1 = {}", 2 * h_max + 1));
+  if (samples != 0 && samples < 2 * h_max + 1)
+    r.fail("time_samples", fmt::format("must be 0 or at least 2 H + 1 = {}", 2 * h_max + 1));
   s.time_samples = static_cast<int>(samples);
   s.note = r.optional_string("note").value_or("");
   r.finish();
@@ -72,8 +73,10 @@ TimeStepStudySpec parse_time_study(TomlReader r) {
   s.steady_tolerances = r.number_array("steady_tolerances");
   for (double t : s.steady_tolerances)
     if (!(t > 0 && t < 0.1)) r.fail("steady_tolerances", "each value must lie in (0, 0.1)");
-  if (s.steps_per_period.empty() || s.steady_tolerances.empty() || s.steps_per_period.size() * s.steady_tolerances.size() < 2)
-    r.fail("steps_per_period", "needs at least two variants; the finest (most steps, smallest tolerance) is the reference");
+  if (s.steps_per_period.empty() || s.steady_tolerances.empty() ||
+      s.steps_per_period.size() * s.steady_tolerances.size() < 2)
+    r.fail("steps_per_period",
+           "needs at least two variants; the finest (most steps, smallest tolerance) is the reference");
   s.note = r.optional_string("note").value_or("");
   r.finish();
   return s;
@@ -171,7 +174,8 @@ StudySpec parse_study(TomlReader& top, const ModelSpec& model, const AnalysisSpe
     return parse_hbm_study(TomlReader(study, "study", file), *hbm);
   }
   if (k == "rotating_fidelity") {
-    if (!std::holds_alternative<RotatingSpec>(analysis)) top.fail("study", "a rotating_fidelity study needs a rotating analysis");
+    if (!std::holds_alternative<RotatingSpec>(analysis))
+      top.fail("study", "a rotating_fidelity study needs a rotating analysis");
     return parse_rotating_fidelity_study(TomlReader(study, "study", file));
   }
   if (k == "modal_refinement") {

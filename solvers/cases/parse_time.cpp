@@ -36,10 +36,11 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     t.compare_harmonics = static_cast<int>(*n);
   }
   t.system = parse_hbm(r, folder, false);
-  if (t.system.sweep.method != HbmSweepSpec::Method::grid) r.fail("sweep", "a time-domain analysis steps through a grid: sweep = \"grid\"");
+  if (t.system.sweep.method != HbmSweepSpec::Method::grid)
+    r.fail("sweep", "a time-domain analysis steps through a grid: sweep = \"grid\"");
   if (2 * (t.system.harmonics + 1) > t.steps_per_period)
-    r.fail("steps_per_period", fmt::format("must be at least 2 (H + 1) = {} for the DFT of {} harmonics", 2 * (t.system.harmonics + 1),
-                                           t.system.harmonics));
+    r.fail("steps_per_period", fmt::format("must be at least 2 (H + 1) = {} for the DFT of {} harmonics",
+                                           2 * (t.system.harmonics + 1), t.system.harmonics));
   return t;
 }
 

@@ -11,9 +11,9 @@ namespace bb {
 
 struct CheckSpec {
   std::string name;
-  std::string result;                 // result table, e.g. "nodal_displacements"
-  std::filesystem::path reference;    // CSV, resolved against the case file's folder; or empty when
-  std::string reference_result;       // another result table of the same run is the reference,
+  std::string result;                    // result table, e.g. "nodal_displacements"
+  std::filesystem::path reference;       // CSV, resolved against the case file's folder; or empty when
+  std::string reference_result;          // another result table of the same run is the reference,
   std::filesystem::path reference_case;  // or of this other case's run (its analysis only, not its checks)
   // How computed compares with reference: equal within the tolerance, or one-sided (at most /
   // at least the reference, give or take the tolerance), e.g. "this mesh is stiffer than that one".
@@ -23,13 +23,13 @@ struct CheckSpec {
   // min_mac fails); or the k-th row with the same text labels (e.g. the 2nd "torsion" mode).
   enum class Match { key, mac, label } match = Match::key;
   double min_mac = 0.9;
-  std::vector<std::string> labels;    // match = label: the text columns that must agree
-  std::string key;                    // key column of the reference, e.g. "node"
+  std::vector<std::string> labels;                           // match = label: the text columns that must agree
+  std::string key;                                           // key column of the reference, e.g. "node"
   std::vector<std::pair<std::string, std::string>> compare;  // result column -> reference column
-  std::vector<long> keys;             // compare only these reference rows; empty = every row
+  std::vector<long> keys;                                    // compare only these reference rows; empty = every row
   double abs_tol = 0.0;
   double rel_tol = 0.0;
-  std::string source;                 // where the reference values come from (for the report)
+  std::string source;  // where the reference values come from (for the report)
   SourceLocation at;
 };
 

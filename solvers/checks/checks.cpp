@@ -16,7 +16,8 @@ namespace bb {
 
 ReferenceColumn read_reference_column(const std::filesystem::path& file, const std::string& key_column,
                                       const std::string& value_column) {
-  if (!std::filesystem::is_regular_file(file)) throw InputError(fmt::format("reference file not found: {}", file.string()));
+  if (!std::filesystem::is_regular_file(file))
+    throw InputError(fmt::format("reference file not found: {}", file.string()));
   ReferenceColumn out;
   try {
     CsvReader<2> in(file.string());
@@ -27,13 +28,16 @@ ReferenceColumn read_reference_column(const std::filesystem::path& file, const s
       long key = 0;
       auto [kp, kec] = std::from_chars(key_text.data(), key_text.data() + key_text.size(), key);
       if (kec != std::errc() || kp != key_text.data() + key_text.size())
-        throw InputError(fmt::format("{}:{}: column '{}': '{}' is not an integer key", file.string(), line, key_column, key_text));
+        throw InputError(
+            fmt::format("{}:{}: column '{}': '{}' is not an integer key", file.string(), line, key_column, key_text));
       double value = 0.0;
       auto [vp, vec] = std::from_chars(value_text.data(), value_text.data() + value_text.size(), value);
       if (vec != std::errc() || vp != value_text.data() + value_text.size())
-        throw InputError(fmt::format("{}:{}: column '{}': '{}' is not a number", file.string(), line, value_column, value_text));
+        throw InputError(
+            fmt::format("{}:{}: column '{}': '{}' is not a number", file.string(), line, value_column, value_text));
       if (!std::isfinite(value))
-        throw InputError(fmt::format("{}:{}: column '{}': non-finite reference value '{}'", file.string(), line, value_column, value_text));
+        throw InputError(fmt::format("{}:{}: column '{}': non-finite reference value '{}'", file.string(), line,
+                                     value_column, value_text));
       out.keys.push_back(key);
       out.values.push_back(value);
     }
@@ -44,9 +48,11 @@ ReferenceColumn read_reference_column(const std::filesystem::path& file, const s
   return out;
 }
 
-std::vector<std::pair<long, std::string>> read_reference_labels(const std::filesystem::path& file, const std::string& key_column,
+std::vector<std::pair<long, std::string>> read_reference_labels(const std::filesystem::path& file,
+                                                                const std::string& key_column,
                                                                 const std::string& label_column) {
-  if (!std::filesystem::is_regular_file(file)) throw InputError(fmt::format("reference file not found: {}", file.string()));
+  if (!std::filesystem::is_regular_file(file))
+    throw InputError(fmt::format("reference file not found: {}", file.string()));
   std::vector<std::pair<long, std::string>> out;
   try {
     CsvReader<2> in(file.string());
@@ -56,7 +62,8 @@ std::vector<std::pair<long, std::string>> read_reference_labels(const std::files
       long key = 0;
       auto [kp, kec] = std::from_chars(key_text.data(), key_text.data() + key_text.size(), key);
       if (kec != std::errc() || kp != key_text.data() + key_text.size())
-        throw InputError(fmt::format("{}:{}: column '{}': '{}' is not an integer key", file.string(), in.get_file_line(), key_column, key_text));
+        throw InputError(fmt::format("{}:{}: column '{}': '{}' is not an integer key", file.string(),
+                                     in.get_file_line(), key_column, key_text));
       out.emplace_back(key, label);
     }
   } catch (const io::error::base& e) {
@@ -68,16 +75,20 @@ std::vector<std::pair<long, std::string>> read_reference_labels(const std::files
 namespace {
 
 // The labels of every row of a result table by its key, the chosen text columns joined.
-std::map<long, std::string> table_labels(const ResultTable& t, const std::vector<std::string>& columns, const std::string& where) {
+std::map<long, std::string> table_labels(const ResultTable& t, const std::vector<std::string>& columns,
+                                         const std::string& where) {
   std::map<long, std::string> out;
   for (Eigen::Index r = 0; r < t.values.rows(); ++r) out[std::lround(t.values(r, 0))] = "";
   for (const std::string& c : columns) {
     const auto it = std::find(t.text_columns.begin(), t.text_columns.end(), c);
     if (it == t.text_columns.end())
-      throw InputError(fmt::format("{}: result '{}' has no text column '{}' to match rows by (text columns: {})", where, t.name, c,
-                                   t.text_columns.empty() ? std::string("none") : fmt::format("{}", fmt::join(t.text_columns, ", "))));
+      throw InputError(fmt::format(
+          "{}: result '{}' has no text column '{}' to match rows by (text columns: {})", where, t.name, c,
+          t.text_columns.empty() ? std::string("none") : fmt::format("{}", fmt::join(t.text_columns, ", "))));
     const auto& text = t.text[static_cast<size_t>(it - t.text_columns.begin())];
-    for (Eigen::Index r = 0; r < t.values.rows(); ++r) out[std::lround(t.values(r, 0))] += (out[std::lround(t.values(r, 0))].empty() ? "" : " ") + text[static_cast<size_t>(r)];
+    for (Eigen::Index r = 0; r < t.values.rows(); ++r)
+      out[std::lround(t.values(r, 0))] +=
+          (out[std::lround(t.values(r, 0))].empty() ? "" : " ") + text[static_cast<size_t>(r)];
   }
   return out;
 }
@@ -89,7 +100,8 @@ RowMatch match_by_labels(const CheckSpec& check, const ResultTable& computed, co
   std::map<long, std::string> reference;
   if (!check.reference_result.empty()) {
     const auto it = reference_tables.find(check.reference_result);
-    if (it == reference_tables.end()) throw InputError(fmt::format("{}: reference result '{}' is not produced", where, check.reference_result));
+    if (it == reference_tables.end())
+      throw InputError(fmt::format("{}: reference result '{}' is not produced", where, check.reference_result));
     reference = table_labels(it->second, check.labels, where);
   } else {
     for (const std::string& c : check.labels)
@@ -118,7 +130,8 @@ RowMatch match_by_labels(const CheckSpec& check, const ResultTable& computed, co
 ReferenceColumn result_reference_column(const ResultTables& results, const std::string& table_name,
                                         const std::string& key_column, const std::string& value_column) {
   const auto it = results.find(table_name);
-  if (it == results.end()) throw InputError(fmt::format("reference result '{}' is not produced by this analysis", table_name));
+  if (it == results.end())
+    throw InputError(fmt::format("reference result '{}' is not produced by this analysis", table_name));
   const ResultTable& t = it->second;
   if (t.columns.empty() || t.columns[0] != key_column)
     throw InputError(fmt::format("reference result '{}' is keyed by '{}', not '{}'", table_name,
@@ -136,7 +149,8 @@ ReferenceColumn result_reference_column(const ResultTables& results, const std::
 }
 
 std::string reference_name(const CheckSpec& check) {
-  if (!check.reference_case.empty()) return fmt::format("result {} of {}", check.reference_result, check.reference_case.filename().string());
+  if (!check.reference_case.empty())
+    return fmt::format("result {} of {}", check.reference_result, check.reference_case.filename().string());
   return check.reference_result.empty() ? check.reference.string() : "result " + check.reference_result;
 }
 
@@ -144,44 +158,53 @@ std::string reference_name(const CheckSpec& check) {
 
 const char* relation_symbol(CheckSpec::Relation relation) {
   switch (relation) {
-    case CheckSpec::Relation::equal: return "=";
-    case CheckSpec::Relation::at_most: return "<=";
-    case CheckSpec::Relation::at_least: return ">=";
+    case CheckSpec::Relation::equal:
+      return "=";
+    case CheckSpec::Relation::at_most:
+      return "<=";
+    case CheckSpec::Relation::at_least:
+      return ">=";
   }
   return "?";
 }
 
-std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results, const ResultTables* reference_results,
-                                       const RowMatch* match) {
+std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results,
+                                       const ResultTables* reference_results, const RowMatch* match) {
   auto table_it = results.find(check.result);
   if (table_it == results.end()) {
     std::vector<std::string> produced;
     for (const auto& [name, table] : results) produced.push_back(name);
-    throw InputError(fmt::format("{}: check '{}' asks for result '{}', which this analysis does not produce (it produces: {})",
-                                 check.at.where(), check.name, check.result, fmt::join(produced, ", ")));
+    throw InputError(
+        fmt::format("{}: check '{}' asks for result '{}', which this analysis does not produce (it produces: {})",
+                    check.at.where(), check.name, check.result, fmt::join(produced, ", ")));
   }
   const ResultTable& table = table_it->second;
   std::optional<RowMatch> by_label;
-  if (check.match == CheckSpec::Match::label) by_label = match_by_labels(check, table, reference_results ? *reference_results : results);
+  if (check.match == CheckSpec::Match::label)
+    by_label = match_by_labels(check, table, reference_results ? *reference_results : results);
   const RowMatch* pairing = by_label ? &*by_label : match;
   if (check.match == CheckSpec::Match::mac && !match)
-    throw InputError(fmt::format("{}: check '{}': match = \"mac\" pairs the modes of two modal runs; this run has no mode shapes to pair",
-                                 check.at.where(), check.name));
+    throw InputError(fmt::format(
+        "{}: check '{}': match = \"mac\" pairs the modes of two modal runs; this run has no mode shapes to pair",
+        check.at.where(), check.name));
   std::vector<CheckEntry> entries;
   for (const auto& [result_column, reference_column] : check.compare) {
     const auto col = table.column_index(result_column);
-    const bool text_column = std::find(table.text_columns.begin(), table.text_columns.end(), result_column) != table.text_columns.end();
+    const bool text_column =
+        std::find(table.text_columns.begin(), table.text_columns.end(), result_column) != table.text_columns.end();
     if (text_column)
-      throw InputError(fmt::format("{}: check '{}': column '{}' of result '{}' holds text labels; checks compare numbers",
-                                   check.at.where(), check.name, result_column, check.result));
+      throw InputError(
+          fmt::format("{}: check '{}': column '{}' of result '{}' holds text labels; checks compare numbers",
+                      check.at.where(), check.name, result_column, check.result));
     if (!col || *col == 0)
       throw InputError(fmt::format("{}: check '{}': result '{}' has no column '{}' (columns: {})", check.at.where(),
                                    check.name, check.result, result_column, fmt::join(table.columns, ", ")));
     ReferenceColumn ref;
     try {
-      ref = check.reference_result.empty() ? read_reference_column(check.reference, check.key, reference_column)
-                                           : result_reference_column(reference_results ? *reference_results : results,
-                                                                     check.reference_result, check.key, reference_column);
+      ref = check.reference_result.empty()
+                ? read_reference_column(check.reference, check.key, reference_column)
+                : result_reference_column(reference_results ? *reference_results : results, check.reference_result,
+                                          check.key, reference_column);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: check '{}': {}", check.at.where(), check.name, e.what()));
     }
@@ -190,7 +213,8 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
         throw InputError(fmt::format("{}: check '{}': key {} = {} is not a row of {}", check.at.where(), check.name,
                                      check.key, key, reference_name(check)));
     for (size_t i = 0; i < ref.keys.size(); ++i) {
-      if (!check.keys.empty() && std::find(check.keys.begin(), check.keys.end(), ref.keys[i]) == check.keys.end()) continue;
+      if (!check.keys.empty() && std::find(check.keys.begin(), check.keys.end(), ref.keys[i]) == check.keys.end())
+        continue;
       CheckEntry e;
       e.group = check.name;
       e.column = result_column;
@@ -229,9 +253,15 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
       e.tolerance = check.abs_tol + check.rel_tol * std::abs(e.reference);
       e.relation = check.relation;
       switch (check.relation) {
-        case CheckSpec::Relation::equal: e.pass = e.abs_error <= e.tolerance; break;
-        case CheckSpec::Relation::at_most: e.pass = e.computed <= e.reference + e.tolerance; break;
-        case CheckSpec::Relation::at_least: e.pass = e.computed >= e.reference - e.tolerance; break;
+        case CheckSpec::Relation::equal:
+          e.pass = e.abs_error <= e.tolerance;
+          break;
+        case CheckSpec::Relation::at_most:
+          e.pass = e.computed <= e.reference + e.tolerance;
+          break;
+        case CheckSpec::Relation::at_least:
+          e.pass = e.computed >= e.reference - e.tolerance;
+          break;
       }
       e.pass = e.pass && std::isfinite(e.computed);
       entries.push_back(e);

@@ -1,11 +1,10 @@
 // Checks: computed result vs reference value vs tolerance, one entry per compared number.
 #pragma once
-#include <string>
-#include <vector>
-
 #include <filesystem>
 #include <map>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "checks/check_spec.hpp"
 #include "results/table.hpp"
@@ -13,11 +12,11 @@
 namespace bb {
 
 struct CheckEntry {
-  std::string name;        // "<check name>: <column> <key> <id>" (and the matched row, when matched)
-  std::string group;       // the check's name
-  std::string column;      // the compared result column
-  long key = 0;            // the reference row's key (node id, mode number)
-  long computed_key = 0;   // the computed row's key: `key`, or the row a match pairs it with
+  std::string name;       // "<check name>: <column> <key> <id>" (and the matched row, when matched)
+  std::string group;      // the check's name
+  std::string column;     // the compared result column
+  long key = 0;           // the reference row's key (node id, mode number)
+  long computed_key = 0;  // the computed row's key: `key`, or the row a match pairs it with
   double computed = 0.0;
   double reference = 0.0;
   double abs_error = 0.0;
@@ -39,7 +38,8 @@ ReferenceColumn read_reference_column(const std::filesystem::path& file, const s
 
 // Reads the text labels of `label_column` by `key_column` ('#' lines are comments); an empty cell is
 // the label "". Throws InputError naming the file and line.
-std::vector<std::pair<long, std::string>> read_reference_labels(const std::filesystem::path& file, const std::string& key_column,
+std::vector<std::pair<long, std::string>> read_reference_labels(const std::filesystem::path& file,
+                                                                const std::string& key_column,
                                                                 const std::string& label_column);
 
 // The computed row of each reference row when a check does not pair them by key (match = mac: from
@@ -54,7 +54,8 @@ struct RowMatch {
 // `match` pairs the rows of a check with match = mac; match = label is resolved here from the text
 // columns of the two tables (or of the reference file).
 std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTables& results,
-                                       const ResultTables* reference_results = nullptr, const RowMatch* match = nullptr);
+                                       const ResultTables* reference_results = nullptr,
+                                       const RowMatch* match = nullptr);
 
 // "=", "<=" or ">=": how an entry's computed value must relate to its reference.
 const char* relation_symbol(CheckSpec::Relation relation);

@@ -53,9 +53,12 @@ std::vector<std::pair<int, int>> clusters(const Eigen::VectorXd& f) {
   const double rigid = 1e-4 * (f.size() > 0 ? f.maxCoeff() : 0.0);
   for (int i = 0; i < static_cast<int>(f.size()); ++i) {
     const bool joins = !out.empty() && ((f[i] <= rigid && f[out.back().second] <= rigid) ||
-                                        std::abs(f[i] - f[out.back().second]) <= kRepeatedFrequency * std::max(f[i], f[out.back().second]));
-    if (joins) out.back().second = i;
-    else out.emplace_back(i, i);
+                                        std::abs(f[i] - f[out.back().second]) <=
+                                            kRepeatedFrequency * std::max(f[i], f[out.back().second]));
+    if (joins)
+      out.back().second = i;
+    else
+      out.emplace_back(i, i);
   }
   return out;
 }
@@ -65,13 +68,16 @@ std::vector<std::pair<int, int>> clusters(const Eigen::VectorXd& f) {
 ModeMatch match_modes_by_shape(const Mesh& mesh, const ModalResult& modes, const Mesh& reference_mesh,
                                const ModalResult& reference_modes) {
   if (mesh.dim != reference_mesh.dim)
-    throw InputError(fmt::format("mode matching by shape: a {}D mesh against a {}D reference mesh", mesh.dim, reference_mesh.dim));
+    throw InputError(
+        fmt::format("mode matching by shape: a {}D mesh against a {}D reference mesh", mesh.dim, reference_mesh.dim));
   const double size = (reference_mesh.coords.colwise().maxCoeff() - reference_mesh.coords.colwise().minCoeff()).norm();
   const auto pairs = common_nodes(mesh, reference_mesh, 1e-6 * size);
   const int n_ref = static_cast<int>(reference_modes.shapes.size());
   if (static_cast<int>(pairs.size()) < std::max(3, n_ref))
-    throw InputError(fmt::format("mode matching by shape: the two meshes share {} nodes (within 1e-6 of the model size); the MAC "
-                                 "needs at least {} to tell {} reference modes apart", pairs.size(), std::max(3, n_ref), n_ref));
+    throw InputError(
+        fmt::format("mode matching by shape: the two meshes share {} nodes (within 1e-6 of the model size); the MAC "
+                    "needs at least {} to tell {} reference modes apart",
+                    pairs.size(), std::max(3, n_ref), n_ref));
   const int dim = mesh.dim;
   const Eigen::Index rows = static_cast<Eigen::Index>(pairs.size()) * dim;
   auto sample = [&](const std::vector<Eigen::MatrixXd>& shapes, bool reference) {
@@ -95,13 +101,15 @@ ModeMatch match_modes_by_shape(const Mesh& mesh, const ModalResult& modes, const
     const auto [first, last] = groups[g];
     const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a.middleCols(first, last - first + 1));
     const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(rows, last - first + 1);
-    for (int j = 0; j < n_ref; ++j) sub(static_cast<Eigen::Index>(g), j) = (q.transpose() * b.col(j)).squaredNorm() / std::max(nb[j], 1e-300);
+    for (int j = 0; j < n_ref; ++j)
+      sub(static_cast<Eigen::Index>(g), j) = (q.transpose() * b.col(j)).squaredNorm() / std::max(nb[j], 1e-300);
   }
   // Greedy assignment, best pairing first; a cluster takes as many reference modes as it has modes.
   std::vector<std::tuple<double, int, int>> candidates;  // (subspace MAC, cluster, reference mode)
   for (Eigen::Index g = 0; g < sub.rows(); ++g)
     for (int j = 0; j < n_ref; ++j) candidates.emplace_back(sub(g, j), static_cast<int>(g), j);
-  std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) { return std::get<0>(x) > std::get<0>(y); });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const auto& x, const auto& y) { return std::get<0>(x) > std::get<0>(y); });
   std::vector<std::vector<int>> taken(groups.size());
   m.computed_of_reference.assign(static_cast<size_t>(n_ref), -1);
   m.match_mac.assign(static_cast<size_t>(n_ref), 0.0);
@@ -117,7 +125,8 @@ ModeMatch match_modes_by_shape(const Mesh& mesh, const ModalResult& modes, const
   // Inside a cluster, reference modes in their order take the cluster's modes in frequency order.
   for (size_t g = 0; g < groups.size(); ++g) {
     std::sort(taken[g].begin(), taken[g].end());
-    for (size_t i = 0; i < taken[g].size(); ++i) m.computed_of_reference[static_cast<size_t>(taken[g][i])] = groups[g].first + static_cast<int>(i);
+    for (size_t i = 0; i < taken[g].size(); ++i)
+      m.computed_of_reference[static_cast<size_t>(taken[g][i])] = groups[g].first + static_cast<int>(i);
   }
   return m;
 }

@@ -11,6 +11,7 @@
 // orthonormalized span of the cluster), then in frequency order inside it.
 #pragma once
 #include <Eigen/Dense>
+
 #include <vector>
 
 #include "analysis/modal_analysis.hpp"

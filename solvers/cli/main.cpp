@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 namespace {
 
 int failed_count(const bb::RunRecord& r) {
-  return static_cast<int>(std::count_if(r.checks.begin(), r.checks.end(), [](const bb::CheckEntry& e) { return !e.pass; }));
+  return static_cast<int>(
+      std::count_if(r.checks.begin(), r.checks.end(), [](const bb::CheckEntry& e) { return !e.pass; }));
 }
 
 void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
@@ -40,8 +41,8 @@ void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
   for (const std::string& w : r.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
   for (const bb::CheckEntry& e : r.checks)
     if (!e.pass)
-      std::fprintf(stderr, "  FAIL %s: computed %.9g, expected %s reference %.9g (tolerance %.3g, |error| %.3g)\n", e.name.c_str(),
-                   e.computed, bb::relation_symbol(e.relation), e.reference, e.tolerance, e.abs_error);
+      std::fprintf(stderr, "  FAIL %s: computed %.9g, expected %s reference %.9g (tolerance %.3g, |error| %.3g)\n",
+                   e.name.c_str(), e.computed, bb::relation_symbol(e.relation), e.reference, e.tolerance, e.abs_error);
 }
 
 // A subcommand's body: bad input -> exit 2, any other failure -> exit 3, the message on stderr.
@@ -111,12 +112,14 @@ int validate_command(const ValidateArgs& a) {
     const bb::RunOutcome o = bb::run_case(files[i], opt);
     print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
     int code = bb::exit_code(o.record.status);
-    bb::IndexEntry e{o.record.case_name, fs::relative(o.out_dir / "report.md", a.out), o.record.status,
-                     static_cast<int>(o.record.checks.size()), failed_count(o.record), o.record.wall_seconds, o.record.message};
+    bb::IndexEntry e{o.record.case_name,     fs::relative(o.out_dir / "report.md", a.out),
+                     o.record.status,        static_cast<int>(o.record.checks.size()),
+                     failed_count(o.record), o.record.wall_seconds,
+                     o.record.message};
     if (auto [it, fresh] = seen.emplace(files[i].stem().string(), files[i]); !fresh) {
       e.status = bb::RunStatus::bad_input;
-      e.message = fmt::format("two case files share the name '{}': {} and {}", files[i].stem().string(), it->second.string(),
-                              files[i].string());
+      e.message = fmt::format("two case files share the name '{}': {} and {}", files[i].stem().string(),
+                              it->second.string(), files[i].string());
       std::fprintf(stderr, "  error: %s\n", e.message.c_str());
       code = bb::exit_bad_input;
     }
@@ -135,7 +138,8 @@ struct CalibrateArgs {
 
 int calibrate_command(const CalibrateArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  const fs::path out = a.out.empty() ? fs::path("reports") / (fs::path(a.case_file).stem().string() + "-calibration") : fs::path(a.out);
+  const fs::path out =
+      a.out.empty() ? fs::path("reports") / (fs::path(a.case_file).stem().string() + "-calibration") : fs::path(a.out);
   return guarded([&] {
     bb::FitProgress progress;
     int last_start = 0;
@@ -143,23 +147,24 @@ int calibrate_command(const CalibrateArgs& a) {
       progress = [&](const bb::FitIteration& s) {
         if (last_start != 0 && s.start != last_start) std::fputc('\n', stderr);
         last_start = s.start;
-        std::fprintf(stderr, "\r  calibration: start %d of %d, iteration %3d  cost %.6e  |gradient| %.3e  step %s   ", s.start,
-                     s.starts, s.iteration, s.cost, s.gradient_max_norm, s.accepted ? "accepted" : "rejected");
+        std::fprintf(stderr, "\r  calibration: start %d of %d, iteration %3d  cost %.6e  |gradient| %.3e  step %s   ",
+                     s.start, s.starts, s.iteration, s.cost, s.gradient_max_norm, s.accepted ? "accepted" : "rejected");
       };
     const bb::CalibrationOutcome o = bb::calibrate_case(a.case_file, progress);
     if (last_start != 0) std::fputc('\n', stderr);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bb::write_calibration_outputs(o, a.case_file, wall, out, !a.no_plots);
-    std::fprintf(stderr, "%s: %s, cost %.6g -> %.6g in %.1f s -> %s\n", a.case_file.c_str(), o.converged ? "converged" : "NOT converged",
-                 o.initial_cost, o.final_cost, wall, (out / "report.md").string().c_str());
+    std::fprintf(stderr, "%s: %s, cost %.6g -> %.6g in %.1f s -> %s\n", a.case_file.c_str(),
+                 o.converged ? "converged" : "NOT converged", o.initial_cost, o.final_cost, wall,
+                 (out / "report.md").string().c_str());
     for (size_t i = 0; i < o.values.size(); ++i)
       std::fprintf(stderr, "  %s = %.8g (start %.8g, std %.3g)\n", o.spec.parameters[i].path.c_str(), o.values[i],
                    o.spec.parameters[i].start, o.std_devs[i]);
     for (const auto& w : o.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
     for (const bb::CheckEntry& e : o.cross_check)
       if (!e.pass)
-        std::fprintf(stderr, "  cross-check FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n", e.name.c_str(),
-                     e.computed, e.reference, e.abs_error, e.tolerance);
+        std::fprintf(stderr, "  cross-check FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n",
+                     e.name.c_str(), e.computed, e.reference, e.abs_error, e.tolerance);
     if (!o.converged) return bb::exit_solver_failed;
     return o.cross_check_passed() ? bb::exit_pass : bb::exit_check_failed;
   });
@@ -175,7 +180,9 @@ struct SynthesizeArgs {
 
 int synthesize_command(SynthesizeArgs a) {
   return guarded([&] {
-    a.options.kind = a.kind == "peaks" ? bb::DataKind::peaks : a.kind == "frf" ? bb::DataKind::frf : bb::DataKind::hysteresis;
+    a.options.kind = a.kind == "peaks" ? bb::DataKind::peaks
+                     : a.kind == "frf" ? bb::DataKind::frf
+                                       : bb::DataKind::hysteresis;
     a.options.phase_noise = a.phase_deg * std::numbers::pi / 180.0;
     for (const std::string& c : a.columns) {
       const size_t eq = c.find('='), colon = c.rfind(':');
@@ -187,7 +194,8 @@ int synthesize_command(SynthesizeArgs a) {
     const bb::CaseSpec spec = bb::parse_case_file(a.case_file);
     const bb::AnalysisResults results = bb::run_analysis(spec.analysis, bb::build_model(spec.model));
     const auto t = results.tables.find(a.table);
-    if (t == results.tables.end()) throw bb::InputError(fmt::format("{}: the case computes no table '{}'", a.case_file, a.table));
+    if (t == results.tables.end())
+      throw bb::InputError(fmt::format("{}: the case computes no table '{}'", a.case_file, a.table));
     bb::write_synthetic_data(t->second, a.options, a.out);
     std::fprintf(stderr, "%s: table %s -> %s\n", a.case_file.c_str(), a.table.c_str(), a.out.c_str());
     return bb::exit_pass;
@@ -222,45 +230,64 @@ int main(int argc, char** argv) {
 
   RunArgs run_args;
   CLI::App* run = app.add_subcommand("run", "Run one or more case files and write their reports");
-  run->add_option("CASE", run_args.cases, "Case file(s) (TOML, see cases/README.md)")->required()->check(CLI::ExistingFile);
-  run->add_option("--out", run_args.out, "Output folder (default reports/<case-name>; with several cases, a parent folder)");
+  run->add_option("CASE", run_args.cases, "Case file(s) (TOML, see cases/README.md)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  run->add_option("--out", run_args.out,
+                  "Output folder (default reports/<case-name>; with several cases, a parent folder)");
   run->add_flag("--study", run_args.study, "Also run the case's [study] (mesh refinement, accuracy vs cost)");
   run->add_flag("--no-plots", run_args.no_plots, "Skip gnuplot figures");
 
   ValidateArgs validate_args;
   CLI::App* validate = app.add_subcommand("validate", "Run every case under a folder and write reports/index.md");
-  validate->add_option("DIR", validate_args.dir, "Folder searched recursively for *.toml case files")->check(CLI::ExistingDirectory);
+  validate->add_option("DIR", validate_args.dir, "Folder searched recursively for *.toml case files")
+      ->check(CLI::ExistingDirectory);
   validate->add_option("--out", validate_args.out, "Report folder; each case goes to <out>/<case-name>");
   validate->add_flag("--study", validate_args.study, "Also run every case's [study]");
   validate->add_flag("--no-plots", validate_args.no_plots, "Skip gnuplot figures");
 
   CalibrateArgs calibrate_args;
   CLI::App* calibrate = app.add_subcommand(
-      "calibrate", "Identify the case's [calibration] parameters against its checks and measured data (Ceres least squares)");
-  calibrate->add_option("CASE", calibrate_args.case_file, "Case file with a [calibration] section")->required()->check(CLI::ExistingFile);
+      "calibrate",
+      "Identify the case's [calibration] parameters against its checks and measured data (Ceres least squares)");
+  calibrate->add_option("CASE", calibrate_args.case_file, "Case file with a [calibration] section")
+      ->required()
+      ->check(CLI::ExistingFile);
   calibrate->add_option("--out", calibrate_args.out, "Output folder (default reports/<case-name>-calibration)");
   calibrate->add_flag("--no-plots", calibrate_args.no_plots, "Skip gnuplot figures");
 
   SynthesizeArgs synth;
   CLI::App* synthesize = app.add_subcommand(
-      "synthesize", "Run a case and write one of its result tables as measured data with noise (round trips, test planning)");
-  synthesize->add_option("CASE", synth.case_file, "Case file run at the parameter values to recover")->required()->check(CLI::ExistingFile);
+      "synthesize",
+      "Run a case and write one of its result tables as measured data with noise (round trips, test planning)");
+  synthesize->add_option("CASE", synth.case_file, "Case file run at the parameter values to recover")
+      ->required()
+      ->check(CLI::ExistingFile);
   synthesize->add_option("--table", synth.table, "Result table to sample (e.g. frf_30, peaks, hysteresis)")->required();
-  synthesize->add_option("--kind", synth.kind, "Data kind: peaks, frf or hysteresis")->check(CLI::IsMember({"peaks", "frf", "hysteresis"}));
-  synthesize->add_option("--column", synth.columns, "data=result:unit, e.g. amplitude=A.x_amp_m:um (repeat per column)")->required();
-  synthesize->add_option("--noise", synth.options.noise, "Relative sigma of amplitudes and forces")->check(CLI::NonNegativeNumber);
-  synthesize->add_option("--frequency-noise", synth.options.frequency_noise, "Relative sigma of peak frequencies")->check(CLI::NonNegativeNumber);
+  synthesize->add_option("--kind", synth.kind, "Data kind: peaks, frf or hysteresis")
+      ->check(CLI::IsMember({"peaks", "frf", "hysteresis"}));
+  synthesize->add_option("--column", synth.columns, "data=result:unit, e.g. amplitude=A.x_amp_m:um (repeat per column)")
+      ->required();
+  synthesize->add_option("--noise", synth.options.noise, "Relative sigma of amplitudes and forces")
+      ->check(CLI::NonNegativeNumber);
+  synthesize->add_option("--frequency-noise", synth.options.frequency_noise, "Relative sigma of peak frequencies")
+      ->check(CLI::NonNegativeNumber);
   synthesize->add_option("--phase-noise-deg", synth.phase_deg, "Sigma of phases [deg]")->check(CLI::NonNegativeNumber);
-  synthesize->add_option("--outliers", synth.options.outliers, "Rows whose amplitude or force is scaled by 1.3")->check(CLI::NonNegativeNumber);
+  synthesize->add_option("--outliers", synth.options.outliers, "Rows whose amplitude or force is scaled by 1.3")
+      ->check(CLI::NonNegativeNumber);
   synthesize->add_option("--seed", synth.options.seed, "Random seed");
   synthesize->add_option("--every", synth.options.every, "Keep every n-th row")->check(CLI::PositiveNumber);
   synthesize->add_option("--out", synth.out, "CSV file to write")->required();
 
   ExportArgs export_args;
-  CLI::App* export_ccx = app.add_subcommand("export-calculix", "Write the case's model as a CalculiX *FREQUENCY deck (bench/calculix_compare.sh)");
-  export_ccx->add_option("CASE", export_args.case_file, "Case file with a 3D solid mesh")->required()->check(CLI::ExistingFile);
+  CLI::App* export_ccx = app.add_subcommand(
+      "export-calculix", "Write the case's model as a CalculiX *FREQUENCY deck (bench/calculix_compare.sh)");
+  export_ccx->add_option("CASE", export_args.case_file, "Case file with a 3D solid mesh")
+      ->required()
+      ->check(CLI::ExistingFile);
   export_ccx->add_option("--out", export_args.out, "Deck to write (.inp)")->required();
-  export_ccx->add_option("--modes", export_args.modes, "Modes to ask for (default: the case's analysis.modes)")->check(CLI::PositiveNumber);
+  export_ccx->add_option("--modes", export_args.modes, "Modes to ask for (default: the case's analysis.modes)")
+      ->check(CLI::PositiveNumber);
 
   try {
     app.parse(argc, argv);

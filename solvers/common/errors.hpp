@@ -6,10 +6,10 @@
 namespace bb {
 
 enum ExitCode : int {
-  exit_pass = 0,         // every check passed
-  exit_check_failed = 1, // the run completed, at least one check failed
-  exit_bad_input = 2,    // a case, mesh or reference file is malformed or the model is ill-posed
-  exit_solver_failed = 3 // a solver did not converge or broke down
+  exit_pass = 0,          // every check passed
+  exit_check_failed = 1,  // the run completed, at least one check failed
+  exit_bad_input = 2,     // a case, mesh or reference file is malformed or the model is ill-posed
+  exit_solver_failed = 3  // a solver did not converge or broke down
 };
 
 // Malformed input. The message names the file, line and key where known.

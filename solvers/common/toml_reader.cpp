@@ -11,13 +11,20 @@ namespace {
 
 std::string type_name(const toml::node& n) {
   switch (n.type()) {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::table: return "a table";
-    default: return "a date/time";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    default:
+      return "a date/time";
   }
 }
 
@@ -37,8 +44,8 @@ SourceLocation TomlReader::location(const std::string& key) const {
 }
 
 void TomlReader::fail(const std::string& key, const std::string& message) const {
-  const std::string name = key.empty() ? fmt::format("[{}]", path_)
-                                       : (path_.empty() ? key : fmt::format("{}.{}", path_, key));
+  const std::string name =
+      key.empty() ? fmt::format("[{}]", path_) : (path_.empty() ? key : fmt::format("{}.{}", path_, key));
   throw InputError(fmt::format("{}: '{}': {}", location(key).where(), name, message));
 }
 

@@ -198,8 +198,7 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
   Eigen::RowVector4d dw_law = Eigen::RowVector4d::Zero(), dn_p = Eigen::RowVector4d::Zero();
 
   double slider = options.initial_slider;
-  const double scale =
-      r.u.cwiseAbs().maxCoeff() + p.mu * std::max(p.n0 + p.kn * r.v.maxCoeff(), 0.0) / p.kt;
+  const double scale = r.u.cwiseAbs().maxCoeff() + p.mu * std::max(p.n0 + p.kn * r.v.maxCoeff(), 0.0) / p.kt;
   for (int period = 1; period <= options.max_periods; ++period) {
     const double start = slider;
     for (int k = 0; k < n; ++k) {

@@ -9,6 +9,7 @@
 // so a vector of 2H + 1 entries. The contact law has no rate dependence, so omega never enters.
 #pragma once
 #include <Eigen/Dense>
+
 #include <vector>
 
 #include "contact/jenkins_contact.hpp"
@@ -73,9 +74,9 @@ struct AftResult {
   Eigen::VectorXd u, v, t, n, w;
   std::vector<ContactState> state;
 
-  int periods = 0;               // periods marched
-  bool closed = false;           // the slider loop closed within the tolerance
-  double closure_mismatch = 0.0; // |w(end) - w(end of the period before)| [m], last period
+  int periods = 0;                // periods marched
+  bool closed = false;            // the slider loop closed within the tolerance
+  double closure_mismatch = 0.0;  // |w(end) - w(end of the period before)| [m], last period
 };
 
 // Throws std::invalid_argument when the parameters are invalid (validate()), the two coefficient

@@ -20,10 +20,14 @@ void validate(const JenkinsParameters& p) {
 
 const char* state_name(ContactState s) {
   switch (s) {
-    case ContactState::stick: return "stick";
-    case ContactState::slip_positive: return "slip+";
-    case ContactState::slip_negative: return "slip-";
-    case ContactState::lift_off: return "lift-off";
+    case ContactState::stick:
+      return "stick";
+    case ContactState::slip_positive:
+      return "slip+";
+    case ContactState::slip_negative:
+      return "slip-";
+    case ContactState::lift_off:
+      return "lift-off";
   }
   return "?";
 }
@@ -33,9 +37,12 @@ JenkinsStep jenkins_step(const JenkinsParameters& p, double slider, double u, do
   if (normal <= 0.0) return {.tangential = 0.0, .normal = 0.0, .slider = u, .state = ContactState::lift_off};
   const double limit = p.mu * normal;
   const double trial = p.kt * (u - slider);
-  if (std::abs(trial) < limit) return {.tangential = trial, .normal = normal, .slider = slider, .state = ContactState::stick};
+  if (std::abs(trial) < limit)
+    return {.tangential = trial, .normal = normal, .slider = slider, .state = ContactState::stick};
   const double t = std::copysign(limit, trial);
-  return {.tangential = t, .normal = normal, .slider = u - t / p.kt,
+  return {.tangential = t,
+          .normal = normal,
+          .slider = u - t / p.kt,
           .state = trial >= 0.0 ? ContactState::slip_positive : ContactState::slip_negative};
 }
 

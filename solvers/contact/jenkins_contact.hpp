@@ -9,6 +9,7 @@
 // force that resists u (a restoring force on the body whose displacement is u).
 #pragma once
 #include <Eigen/Dense>
+
 #include <array>
 
 namespace bb::contact {

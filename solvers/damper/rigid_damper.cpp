@@ -61,19 +61,22 @@ void validate(const RigidDamper& damper, int blade_dofs) {
     const bool rigid = c.blade_x == -1 && c.blade_y == -1;
     const auto in_range = [&](int i) { return i >= 0 && i < blade_dofs; };
     if (!rigid && !(in_range(c.blade_x) && in_range(c.blade_y) && c.blade_x != c.blade_y))
-      fail(fmt::format("contact '{}': blade DOF indices ({}, {}) must be two distinct indices in [0, {}) or both -1 "
-                       "(rigid platform)",
-                       c.name, c.blade_x, c.blade_y, blade_dofs));
+      fail(
+          fmt::format("contact '{}': blade DOF indices ({}, {}) must be two distinct indices in [0, {}) or both -1 "
+                      "(rigid platform)",
+                      c.name, c.blade_x, c.blade_y, blade_dofs));
   }
 }
 
 RigidDamper asymmetric_damper(const AsymmetricDamperGeometry& g) {
   for (const double b : {g.beta_left_deg, g.beta_right_deg})
     if (!(b > 0.0 && b < 90.0))
-      throw std::invalid_argument(fmt::format("asymmetric damper: face angles must lie in (0, 90) degrees (got {})", b));
+      throw std::invalid_argument(
+          fmt::format("asymmetric damper: face angles must lie in (0, 90) degrees (got {})", b));
   const Eigen::Vector2d n_l = left_face_normal(g.beta_left_deg);
   const Eigen::Vector2d along = g.l2 - g.l1;
-  if (!(along.norm() > 0.0) || std::abs(along.dot(n_l)) > 1e-9 * along.norm() || along.dot(Eigen::Vector2d(-n_l.y(), n_l.x())) < 0.0)
+  if (!(along.norm() > 0.0) || std::abs(along.dot(n_l)) > 1e-9 * along.norm() ||
+      along.dot(Eigen::Vector2d(-n_l.y(), n_l.x())) < 0.0)
     throw std::invalid_argument(
         "asymmetric damper: L1 -> L2 must run up the flat face, along (cos beta_L, sin beta_L)");
   RigidDamper d{.mass = g.mass, .inertia = g.inertia, .contacts = {}};
@@ -86,9 +89,10 @@ RigidDamper asymmetric_damper(const AsymmetricDamperGeometry& g) {
 std::pair<int, int> platform_dofs(const ReducedModel& blades, const std::string& label) {
   const std::optional<int> x = blades.index_of(label, 0), y = blades.index_of(label, 1);
   if (!x || !y)
-    throw InputError(fmt::format("damper: the blade reduced model has no DOF {}.{}: the platform contact point must "
-                                 "be a master node with x and y translations",
-                                 label, x ? "y" : "x"));
+    throw InputError(
+        fmt::format("damper: the blade reduced model has no DOF {}.{}: the platform contact point must "
+                    "be a master node with x and y translations",
+                    label, x ? "y" : "x"));
   return {*x, *y};
 }
 
@@ -140,9 +144,9 @@ CoupledSystem assemble_coupled_system(const Eigen::MatrixXd& blade_mass, const E
                                       const RigidDamper& damper) {
   if (blade_mass.rows() != blade_mass.cols() || blade_stiffness.rows() != blade_stiffness.cols() ||
       blade_mass.rows() != blade_stiffness.rows())
-    throw std::invalid_argument(fmt::format("coupled system: blade M ({} x {}) and K ({} x {}) must be square, same size",
-                                            blade_mass.rows(), blade_mass.cols(), blade_stiffness.rows(),
-                                            blade_stiffness.cols()));
+    throw std::invalid_argument(
+        fmt::format("coupled system: blade M ({} x {}) and K ({} x {}) must be square, same size", blade_mass.rows(),
+                    blade_mass.cols(), blade_stiffness.rows(), blade_stiffness.cols()));
   const int n = static_cast<int>(blade_mass.rows());
   validate(damper, n);
   CoupledSystem s{Eigen::MatrixXd::Zero(n + 3, n + 3), Eigen::MatrixXd::Zero(n + 3, n + 3), n};
@@ -156,8 +160,8 @@ CoupledSystem assemble_coupled_system(const Eigen::MatrixXd& blade_mass, const E
 
 Eigen::VectorXd centrifugal_load(int blade_dofs, double cf) {
   if (blade_dofs < 0 || !std::isfinite(cf))
-    throw std::invalid_argument(fmt::format("centrifugal load: need blade_dofs >= 0 and a finite CF (got {}, {})",
-                                            blade_dofs, cf));
+    throw std::invalid_argument(
+        fmt::format("centrifugal load: need blade_dofs >= 0 and a finite CF (got {}, {})", blade_dofs, cf));
   Eigen::VectorXd f = Eigen::VectorXd::Zero(blade_dofs + 3);
   f(damper_y(blade_dofs)) = cf;
   return f;
@@ -212,7 +216,8 @@ DamperStaticState solve_damper_static(const Eigen::MatrixXd& blade_stiffness, co
   const Eigen::Index nq = nb + 3;
   if (load.size() != nq) bad(fmt::format("the load has {} entries, the model {} (blade DOFs + 3)", load.size(), nq));
   if (!load.allFinite() || !blade_stiffness.allFinite()) bad("the load and the blade stiffness must be finite");
-  if (!(std::isfinite(options.kn) && options.kn > 0.0)) bad(fmt::format("kn must be finite and > 0 (got {})", options.kn));
+  if (!(std::isfinite(options.kn) && options.kn > 0.0))
+    bad(fmt::format("kn must be finite and > 0 (got {})", options.kn));
   if (options.max_iterations < 1) bad("max_iterations must be >= 1");
   if (!(options.opening_tolerance >= 0.0)) bad("opening_tolerance must be >= 0");
 
@@ -244,28 +249,30 @@ DamperStaticState solve_damper_static(const Eigen::MatrixXd& blade_stiffness, co
     for (size_t c = 0; c < nc; ++c)
       if (!st.open[c]) closed.push_back(static_cast<Eigen::Index>(c));
     if (closed.empty())
-      return fail(fmt::format("the load pulls the damper away from the platforms: every contact opens ({}); "
-                              "no static state in contact (is CF = {} N pressing, along +y?)",
-                              names_of(damper, st.open), load(damper_y(nb))));
+      return fail(
+          fmt::format("the load pulls the damper away from the platforms: every contact opens ({}); "
+                      "no static state in contact (is CF = {} N pressing, along +y?)",
+                      names_of(damper, st.open), load(damper_y(nb))));
     Eigen::MatrixXd a(static_cast<Eigen::Index>(closed.size()), nq);
     for (size_t i = 0; i < closed.size(); ++i) a.row(static_cast<Eigen::Index>(i)) = kin.normal.row(closed[i]);
     // The damper has no stiffness of its own: the closed contacts must fix its three DOFs.
     Eigen::FullPivHouseholderQR<Eigen::MatrixXd> qr(a.rightCols(3));
     qr.setThreshold(1e-10);
     if (qr.rank() < 3)
-      return fail(fmt::format("with contacts {} open, the closed ones ({}) leave the damper a mechanism: they "
-                              "cannot balance the load (CF too far off the contact lines, or faces at angles "
-                              "that cannot hold it)",
-                              names_of(damper, st.open),
-                              names_of(damper, [&] {
-                                std::vector<bool> c(nc);
-                                for (size_t j = 0; j < nc; ++j) c[j] = !st.open[j];
-                                return c;
-                              }())));
+      return fail(
+          fmt::format("with contacts {} open, the closed ones ({}) leave the damper a mechanism: they "
+                      "cannot balance the load (CF too far off the contact lines, or faces at angles "
+                      "that cannot hold it)",
+                      names_of(damper, st.open), names_of(damper, [&] {
+                        std::vector<bool> c(nc);
+                        for (size_t j = 0; j < nc; ++j) c[j] = !st.open[j];
+                        return c;
+                      }())));
     Eigen::VectorXd q, n;
     if (!solve_active_set(k, a, options.kn, load, q, n))
-      return fail("the coupled static system is singular or ill-conditioned (is the blade stiffness positive "
-                  "definite, i.e. are the blades clamped?)");
+      return fail(
+          "the coupled static system is singular or ill-conditioned (is the blade stiffness positive "
+          "definite, i.e. are the blades clamped?)");
 
     const Eigen::VectorXd v = kin.normal * q;
     std::vector<bool> next = st.open;
@@ -283,7 +290,8 @@ DamperStaticState solve_damper_static(const Eigen::MatrixXd& blade_stiffness, co
       st.normal_displacement = v;
       const Eigen::Matrix<double, 3, Eigen::Dynamic> b = contact_force_to_damper(damper);
       Eigen::VectorXd forces = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(2 * nc));
-      for (size_t c = 0; c < nc; ++c) forces(static_cast<Eigen::Index>(2 * c + 1)) = st.normal_preload(static_cast<Eigen::Index>(c));
+      for (size_t c = 0; c < nc; ++c)
+        forces(static_cast<Eigen::Index>(2 * c + 1)) = st.normal_preload(static_cast<Eigen::Index>(c));
       const Eigen::Vector3d r = load.tail(3) + b * forces;
       st.force_residual = r.head(2).norm();
       st.moment_residual = std::abs(r(2));

@@ -27,6 +27,7 @@
 //    -sum (T du + N dv)); its damper part is B [T1 N1 T2 N2 ...] (eq 3.43).
 #pragma once
 #include <Eigen/Dense>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,7 +38,7 @@ namespace bb::damper {
 
 // One point of contact between the damper and a blade platform.
 struct DamperContact {
-  std::string name;                                   // "L1", "L2", "R"
+  std::string name;                                    // "L1", "L2", "R"
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // r = contact point - G [m]
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();    // unit, platform -> damper
   // Indices, in the DOF vector q = [blade DOFs..., damper x, y, theta], of the platform point's x
@@ -70,8 +71,8 @@ void validate(const RigidDamper& damper, int blade_dofs);
 struct AsymmetricDamperGeometry {
   double mass = 0.0;
   double inertia = 0.0;
-  double beta_left_deg = 45.0;   // left face angle from x [deg], in (0, 90)
-  double beta_right_deg = 45.0;  // right face angle from x [deg], in (0, 90)
+  double beta_left_deg = 45.0;                   // left face angle from x [deg], in (0, 90)
+  double beta_right_deg = 45.0;                  // right face angle from x [deg], in (0, 90)
   Eigen::Vector2d l1 = Eigen::Vector2d::Zero();  // on the flat face, lower point [m]
   Eigen::Vector2d l2 = Eigen::Vector2d::Zero();  // on the flat face, upper point [m]
   Eigen::Vector2d r = Eigen::Vector2d::Zero();   // line contact of the cylindrical face [m]
@@ -141,16 +142,16 @@ struct DamperStaticOptions {
 // step of iterative refinement), so N comes out as a force and not as kn times a tiny difference
 // of displacements: its accuracy does not depend on kn.
 struct DamperStaticState {
-  Eigen::VectorXd q;               // blade and damper displacements [m, rad]; zero on failure
+  Eigen::VectorXd q;                                 // blade and damper displacements [m, rad]; zero on failure
   Eigen::Vector3d damper = Eigen::Vector3d::Zero();  // (x, y, theta) of G [m, m, rad]
-  Eigen::VectorXd normal_preload;  // N0 per contact [N], >= 0, zero where open
-  Eigen::VectorXd normal_displacement;  // v per contact [m]
-  std::vector<bool> open;          // contact c carries no load
+  Eigen::VectorXd normal_preload;                    // N0 per contact [N], >= 0, zero where open
+  Eigen::VectorXd normal_displacement;               // v per contact [m]
+  std::vector<bool> open;                            // contact c carries no load
   int iterations = 0;
-  double force_residual = 0.0;     // |f_d + sum N n| on the damper [N]
-  double moment_residual = 0.0;    // |M_d + sum r x N n| about G [N m]
+  double force_residual = 0.0;   // |f_d + sum N n| on the damper [N]
+  double moment_residual = 0.0;  // |M_d + sum r x N n| about G [N m]
   bool converged = false;
-  std::string failure;             // why not converged; empty when converged
+  std::string failure;  // why not converged; empty when converged
 };
 
 // Throws std::invalid_argument on invalid inputs (sizes, non-finite values, kn <= 0, validate()),

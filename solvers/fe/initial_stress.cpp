@@ -29,8 +29,7 @@ struct PointGradients {
 template <int Dim, int Nodes>
 PointGradients<Dim, Nodes> at_point(const Eigen::Matrix<double, Nodes, Dim>& coords,
                                     const Eigen::Matrix<double, Nodes, 1>& shape,
-                                    const Eigen::Matrix<double, Dim, Nodes>& dnat, double weight,
-                                    const char* element) {
+                                    const Eigen::Matrix<double, Dim, Nodes>& dnat, double weight, const char* element) {
   const Eigen::Matrix<double, Dim, Dim> jac = dnat * coords;  // J(i, j) = dx_j / dxi_i
   const double det = jac.determinant();
   if (!(det > 0.0)) throw_bad_jacobian(element, det);
@@ -120,15 +119,14 @@ Eigen::Matrix3d solid_tensor(const Eigen::Matrix<double, 6, 1>& s) {
 // sum_p w_p det J_p * scale * grad_p^T sigma_p grad_p, expanded to the Dim displacement directions.
 template <int Dim, int Nodes, size_t Points, typename Tensor>
 Eigen::Matrix<double, Dim * Nodes, Dim * Nodes> geometric_from_points(
-    const std::array<PointGradients<Dim, Nodes>, Points>& points, const Tensor& tensor_of_point,
-    double scale) {
+    const std::array<PointGradients<Dim, Nodes>, Points>& points, const Tensor& tensor_of_point, double scale) {
   Eigen::Matrix<double, Nodes, Nodes> scalar = Eigen::Matrix<double, Nodes, Nodes>::Zero();
   for (size_t p = 0; p < Points; ++p) {
     const auto& g = points[p].grad;
     scalar.noalias() += (points[p].weight * scale) * (g.transpose() * tensor_of_point(p) * g);
   }
   scalar = 0.5 * (scalar + scalar.transpose()).eval();
-  Eigen::Matrix<double, Dim * Nodes, Dim * Nodes> k = Eigen::Matrix<double, Dim * Nodes, Dim * Nodes>::Zero();
+  Eigen::Matrix<double, Dim * Nodes, Dim* Nodes> k = Eigen::Matrix<double, Dim * Nodes, Dim * Nodes>::Zero();
   for (int b = 0; b < Nodes; ++b)
     for (int a = 0; a < Nodes; ++a)
       for (int d = 0; d < Dim; ++d) k(Dim * a + d, Dim * b + d) = scalar(a, b);
@@ -151,9 +149,7 @@ Eigen::Matrix<double, 2, 4> q4_integration_points(const Q4Coords& xy) {
   return x;
 }
 
-Eigen::Matrix<double, 2, 1> cst_integration_points(const CstCoords& xy) {
-  return xy.colwise().mean().transpose();
-}
+Eigen::Matrix<double, 2, 1> cst_integration_points(const CstCoords& xy) { return xy.colwise().mean().transpose(); }
 
 Eigen::Matrix<double, 3, 8> hex8_integration_points(const Hex8Coords& xyz) {
   const auto points = hex8_points(xyz);
@@ -180,8 +176,7 @@ Q4PointStresses q4_point_stresses(const Q4Coords& xy, const Eigen::Matrix<double
 
 CstPointStresses cst_point_stresses(const CstCoords& xy, const Eigen::Matrix<double, 6, 1>& u,
                                     const PlaneSection& section) {
-  return plane_stress_elasticity(section.youngs_modulus, section.poisson_ratio) *
-         strain<2, 3>(cst_point(xy).grad, u);
+  return plane_stress_elasticity(section.youngs_modulus, section.poisson_ratio) * strain<2, 3>(cst_point(xy).grad, u);
 }
 
 Hex8PointStresses hex8_point_stresses(const Hex8Coords& xyz, const Eigen::Matrix<double, 24, 1>& u,
@@ -195,8 +190,7 @@ Hex8PointStresses hex8_point_stresses(const Hex8Coords& xyz, const Eigen::Matrix
 
 // Bubbles P_k = 1 - xi_k^2 with Taylor's correction, exactly as hex8_incompatible_stiffness
 // (fe/solid.cpp): grad P_k = (det J0 / det J) J0^-1 dP_k/dxi; amplitudes condensed from K alone.
-Hex8PointStresses hex8_incompatible_point_stresses(const Hex8Coords& xyz,
-                                                   const Eigen::Matrix<double, 24, 1>& u,
+Hex8PointStresses hex8_incompatible_point_stresses(const Hex8Coords& xyz, const Eigen::Matrix<double, 24, 1>& u,
                                                    const SolidMaterial& material) {
   const Matrix6 d = isotropic_elasticity(material.youngs_modulus, material.poisson_ratio);
   const auto points = hex8_points(xyz);
@@ -250,26 +244,23 @@ Hex20PointStresses hex20_point_stresses(const Hex20Coords& xyz, const Eigen::Mat
 
 Matrix8 q4_geometric_stiffness(const Q4Coords& xy, const Q4PointStresses& stress, double thickness) {
   return geometric_from_points<2, 4, 4>(
-      q4_points(xy), [&](size_t p) { return plane_tensor(stress.col(static_cast<Eigen::Index>(p))); },
-      thickness);
+      q4_points(xy), [&](size_t p) { return plane_tensor(stress.col(static_cast<Eigen::Index>(p))); }, thickness);
 }
 
 Matrix6 cst_geometric_stiffness(const CstCoords& xy, const CstPointStresses& stress, double thickness) {
   const std::array<PointGradients<2, 3>, 1> points{cst_point(xy)};
-  return geometric_from_points<2, 3, 1>(points, [&](size_t) { return plane_tensor(stress.col(0)); },
-                                        thickness);
+  return geometric_from_points<2, 3, 1>(
+      points, [&](size_t) { return plane_tensor(stress.col(0)); }, thickness);
 }
 
 Matrix24 hex8_geometric_stiffness(const Hex8Coords& xyz, const Hex8PointStresses& stress) {
   return geometric_from_points<3, 8, 8>(
-      hex8_points(xyz), [&](size_t p) { return solid_tensor(stress.col(static_cast<Eigen::Index>(p))); },
-      1.0);
+      hex8_points(xyz), [&](size_t p) { return solid_tensor(stress.col(static_cast<Eigen::Index>(p))); }, 1.0);
 }
 
 Matrix60 hex20_geometric_stiffness(const Hex20Coords& xyz, const Hex20PointStresses& stress) {
   return geometric_from_points<3, 20, 27>(
-      hex20_points(xyz), [&](size_t p) { return solid_tensor(stress.col(static_cast<Eigen::Index>(p))); },
-      1.0);
+      hex20_points(xyz), [&](size_t p) { return solid_tensor(stress.col(static_cast<Eigen::Index>(p))); }, 1.0);
 }
 
 }  // namespace bb::fe

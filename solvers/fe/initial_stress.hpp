@@ -46,8 +46,7 @@ CstPointStresses cst_point_stresses(const CstCoords& xy, const Eigen::Matrix<dou
                                     const PlaneSection& section);
 Hex8PointStresses hex8_point_stresses(const Hex8Coords& xyz, const Eigen::Matrix<double, 24, 1>& u,
                                       const SolidMaterial& material);
-Hex8PointStresses hex8_incompatible_point_stresses(const Hex8Coords& xyz,
-                                                   const Eigen::Matrix<double, 24, 1>& u,
+Hex8PointStresses hex8_incompatible_point_stresses(const Hex8Coords& xyz, const Eigen::Matrix<double, 24, 1>& u,
                                                    const SolidMaterial& material);
 Hex20PointStresses hex20_point_stresses(const Hex20Coords& xyz, const Eigen::Matrix<double, 60, 1>& u,
                                         const SolidMaterial& material);

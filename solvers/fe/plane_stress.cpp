@@ -20,8 +20,7 @@ Q4Point q4_at(const Q4Coords& xy, double xi, double eta) {
   shape << (1 - xi) * (1 - eta), (1 + xi) * (1 - eta), (1 + xi) * (1 + eta), (1 - xi) * (1 + eta);
   shape *= 0.25;
   Eigen::Matrix<double, 2, 4> dnat;  // d/dxi, d/deta of eq 2.34
-  dnat << -(1 - eta), (1 - eta), (1 + eta), -(1 + eta),
-          -(1 - xi), -(1 + xi), (1 + xi), (1 - xi);
+  dnat << -(1 - eta), (1 - eta), (1 + eta), -(1 + eta), -(1 - xi), -(1 + xi), (1 + xi), (1 - xi);
   dnat *= 0.25;
   const Eigen::Matrix2d jac = dnat * xy;
   const double det = jac.determinant();
@@ -42,8 +41,7 @@ Q4Point q4_at(const Q4Coords& xy, double xi, double eta) {
 
 // Twice the signed area; the CST's B matrix of eq 2.53.
 Eigen::Matrix<double, 3, 6> cst_b(const CstCoords& xy, double& area) {
-  const double x1 = xy(0, 0), y1 = xy(0, 1), x2 = xy(1, 0), y2 = xy(1, 1), x3 = xy(2, 0),
-               y3 = xy(2, 1);
+  const double x1 = xy(0, 0), y1 = xy(0, 1), x2 = xy(1, 0), y2 = xy(1, 1), x3 = xy(2, 0), y3 = xy(2, 1);
   const double det = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1);
   if (!(det > 0.0)) {
     throw std::domain_error("CST signed area " + std::to_string(0.5 * det) +
@@ -51,9 +49,8 @@ Eigen::Matrix<double, 3, 6> cst_b(const CstCoords& xy, double& area) {
   }
   area = 0.5 * det;
   Eigen::Matrix<double, 3, 6> b;
-  b << y2 - y3, 0, y3 - y1, 0, y1 - y2, 0,
-       0, x3 - x2, 0, x1 - x3, 0, x2 - x1,
-       x3 - x2, y2 - y3, x1 - x3, y3 - y1, x2 - x1, y1 - y2;
+  b << y2 - y3, 0, y3 - y1, 0, y1 - y2, 0, 0, x3 - x2, 0, x1 - x3, 0, x2 - x1, x3 - x2, y2 - y3, x1 - x3, y3 - y1,
+      x2 - x1, y1 - y2;
   return b / det;
 }
 
@@ -71,8 +68,8 @@ Matrix8 q4_stiffness(const Q4Coords& xy, const PlaneSection& section) {
   for (double xi : {-kGauss, kGauss}) {
     for (double eta : {-kGauss, kGauss}) {
       const Q4Point p = q4_at(xy, xi, eta);
-      k.noalias() += p.strain_displacement.transpose() * d * p.strain_displacement *
-                     (p.det_jacobian * section.thickness);
+      k.noalias() +=
+          p.strain_displacement.transpose() * d * p.strain_displacement * (p.det_jacobian * section.thickness);
     }
   }
   return 0.5 * (k + k.transpose());
@@ -83,8 +80,7 @@ Matrix8 q4_consistent_mass(const Q4Coords& xy, const PlaneSection& section) {
   for (double xi : {-kGauss, kGauss}) {
     for (double eta : {-kGauss, kGauss}) {
       const Q4Point p = q4_at(xy, xi, eta);
-      scalar.noalias() += p.shape.transpose() * p.shape * (p.det_jacobian * section.density *
-                                                           section.thickness);
+      scalar.noalias() += p.shape.transpose() * p.shape * (p.det_jacobian * section.density * section.thickness);
     }
   }
   Matrix8 m = Matrix8::Zero();
@@ -124,12 +120,10 @@ Matrix6 cst_consistent_mass(const CstCoords& xy, const PlaneSection& section) {
 Eigen::Vector3d q4_centroid_stress(const Q4Coords& xy, const Eigen::Matrix<double, 8, 1>& u,
                                    const PlaneSection& section) {
   const Q4Point p = q4_at(xy, 0.0, 0.0);
-  return plane_stress_elasticity(section.youngs_modulus, section.poisson_ratio) *
-         p.strain_displacement * u;
+  return plane_stress_elasticity(section.youngs_modulus, section.poisson_ratio) * p.strain_displacement * u;
 }
 
-Eigen::Vector3d cst_stress(const CstCoords& xy, const Eigen::Matrix<double, 6, 1>& u,
-                           const PlaneSection& section) {
+Eigen::Vector3d cst_stress(const CstCoords& xy, const Eigen::Matrix<double, 6, 1>& u, const PlaneSection& section) {
   double area = 0.0;
   const Eigen::Matrix<double, 3, 6> b = cst_b(xy, area);
   return plane_stress_elasticity(section.youngs_modulus, section.poisson_ratio) * b * u;

@@ -34,7 +34,6 @@ Matrix6 cst_consistent_mass(const CstCoords& xy, const PlaneSection& section);
 // Stress (sxx, syy, sxy) at the element centroid from element nodal displacements.
 Eigen::Vector3d q4_centroid_stress(const Q4Coords& xy, const Eigen::Matrix<double, 8, 1>& u,
                                    const PlaneSection& section);
-Eigen::Vector3d cst_stress(const CstCoords& xy, const Eigen::Matrix<double, 6, 1>& u,
-                           const PlaneSection& section);
+Eigen::Vector3d cst_stress(const CstCoords& xy, const Eigen::Matrix<double, 6, 1>& u, const PlaneSection& section);
 
 }  // namespace bb::fe

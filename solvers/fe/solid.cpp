@@ -46,8 +46,7 @@ struct GaussTable {
 using Hex8Table = GaussTable<8, 8>;
 using Hex20Table = GaussTable<20, 27>;
 
-void hex8_shape(double xi, double eta, double zeta, Eigen::Matrix<double, 8, 1>& n,
-                Eigen::Matrix<double, 3, 8>& dn) {
+void hex8_shape(double xi, double eta, double zeta, Eigen::Matrix<double, 8, 1>& n, Eigen::Matrix<double, 3, 8>& dn) {
   for (int a = 0; a < 8; ++a) {
     const double xa = kHex20Nodes[a][0], ya = kHex20Nodes[a][1], za = kHex20Nodes[a][2];
     const double fx = 1 + xa * xi, fy = 1 + ya * eta, fz = 1 + za * zeta;
@@ -127,9 +126,8 @@ const Hex20Table& hex20_table() {
 [[noreturn]] void throw_bad_jacobian(const char* element, double det, const Eigen::Vector3d& at) {
   std::ostringstream msg;
   msg.precision(6);
-  msg << element << " Jacobian determinant " << det << " <= 0 at natural point (" << at[0] << ", "
-      << at[1] << ", " << at[2]
-      << "): element inverted, degenerate or nodes not in Ansys/CalculiX order";
+  msg << element << " Jacobian determinant " << det << " <= 0 at natural point (" << at[0] << ", " << at[1] << ", "
+      << at[2] << "): element inverted, degenerate or nodes not in Ansys/CalculiX order";
   throw std::domain_error(msg.str());
 }
 
@@ -151,8 +149,8 @@ Eigen::Matrix3d jacobian_checked(const Eigen::Matrix<double, Nodes, 3>& dnat_t,
 // K from H = G G^T (see the file comment). Only the lower triangle of H is read; K is built as
 // lower blocks and mirrored, so it is symmetric by construction.
 template <int Dofs>
-Eigen::Matrix<double, Dofs, Dofs> isotropic_from_gradient_products(
-    const Eigen::Matrix<double, Dofs, Dofs>& h, double lambda, double mu) {
+Eigen::Matrix<double, Dofs, Dofs> isotropic_from_gradient_products(const Eigen::Matrix<double, Dofs, Dofs>& h,
+                                                                   double lambda, double mu) {
   constexpr int kNodes = Dofs / 3;
   Eigen::Matrix<double, Dofs, Dofs> k;
   for (int b = 0; b < kNodes; ++b) {
@@ -181,15 +179,14 @@ Lame lame(double e, double nu) { return {e * nu / ((1 + nu) * (1 - 2 * nu)), e /
 
 // Gauss-integrated stiffness of an isoparametric hexahedron with the table's rule.
 template <int Nodes, int Points>
-Eigen::Matrix<double, 3 * Nodes, 3 * Nodes> hex_stiffness(
-    const GaussTable<Nodes, Points>& table, const Eigen::Matrix<double, Nodes, 3>& xyz,
-    const SolidMaterial& material, const char* element) {
+Eigen::Matrix<double, 3 * Nodes, 3 * Nodes> hex_stiffness(const GaussTable<Nodes, Points>& table,
+                                                          const Eigen::Matrix<double, Nodes, 3>& xyz,
+                                                          const SolidMaterial& material, const char* element) {
   constexpr int kDofs = 3 * Nodes;
   Eigen::Matrix<double, kDofs, Points> g;  // column p: sqrt(w det J) grad N, index 3a + i
   for (int p = 0; p < Points; ++p) {
     double det = 0.0;
-    const Eigen::Matrix3d jac =
-        jacobian_checked<Nodes>(table.dnat_t[p], xyz, element, table.point[p], det);
+    const Eigen::Matrix3d jac = jacobian_checked<Nodes>(table.dnat_t[p], xyz, element, table.point[p], det);
     Eigen::Map<Eigen::Matrix<double, 3, Nodes>> grad(g.col(p).data());
     grad.noalias() = jac.inverse().lazyProduct(table.dnat[p]);
     grad *= std::sqrt(table.weight[p] * det);
@@ -202,9 +199,9 @@ Eigen::Matrix<double, 3 * Nodes, 3 * Nodes> hex_stiffness(
 
 // rho * integral of N N^T, expanded to the three directions (no coupling between directions).
 template <int Nodes, int Points>
-Eigen::Matrix<double, 3 * Nodes, 3 * Nodes> hex_consistent_mass(
-    const GaussTable<Nodes, Points>& table, const Eigen::Matrix<double, Nodes, 3>& xyz,
-    const SolidMaterial& material, const char* element) {
+Eigen::Matrix<double, 3 * Nodes, 3 * Nodes> hex_consistent_mass(const GaussTable<Nodes, Points>& table,
+                                                                const Eigen::Matrix<double, Nodes, 3>& xyz,
+                                                                const SolidMaterial& material, const char* element) {
   Eigen::Matrix<double, Nodes, Points> n;  // column p: sqrt(rho w det J) N
   for (int p = 0; p < Points; ++p) {
     double det = 0.0;
@@ -223,8 +220,8 @@ Eigen::Matrix<double, 3 * Nodes, 3 * Nodes> hex_consistent_mass(
 }
 
 template <int Nodes, int Points>
-double hex_volume(const GaussTable<Nodes, Points>& table,
-                  const Eigen::Matrix<double, Nodes, 3>& xyz, const char* element) {
+double hex_volume(const GaussTable<Nodes, Points>& table, const Eigen::Matrix<double, Nodes, 3>& xyz,
+                  const char* element) {
   double volume = 0.0;
   for (int p = 0; p < Points; ++p) {
     double det = 0.0;
@@ -265,14 +262,12 @@ Matrix24 hex8_incompatible_stiffness(const Hex8Coords& xyz, const SolidMaterial&
   }();
   double det0 = 0.0;
   const Eigen::Matrix3d jac0_inv =
-      jacobian_checked<8>(centre_dnat_t, xyz, "hex8 incompatible", Eigen::Vector3d::Zero(), det0)
-          .inverse();
+      jacobian_checked<8>(centre_dnat_t, xyz, "hex8 incompatible", Eigen::Vector3d::Zero(), det0).inverse();
 
   Eigen::Matrix<double, 33, 8> g;  // rows 0-23 nodes, 24-32 bubbles; column p: Gauss point p
   for (int p = 0; p < 8; ++p) {
     double det = 0.0;
-    const Eigen::Matrix3d jac =
-        jacobian_checked<8>(table.dnat_t[p], xyz, "hex8 incompatible", table.point[p], det);
+    const Eigen::Matrix3d jac = jacobian_checked<8>(table.dnat_t[p], xyz, "hex8 incompatible", table.point[p], det);
     const double root = std::sqrt(table.weight[p] * det);
     Eigen::Map<Eigen::Matrix<double, 3, 8>> grad(g.col(p).data());
     grad.noalias() = jac.inverse().lazyProduct(table.dnat[p]);
@@ -286,15 +281,13 @@ Matrix24 hex8_incompatible_stiffness(const Hex8Coords& xyz, const SolidMaterial&
   Eigen::Matrix<double, 33, 33> h = Eigen::Matrix<double, 33, 33>::Zero();
   h.selfadjointView<Eigen::Lower>().rankUpdate(g);
   const Lame l = lame(material.youngs_modulus, material.poisson_ratio);
-  const Eigen::Matrix<double, 33, 33> full =
-      isotropic_from_gradient_products<33>(h, l.lambda, l.mu);
+  const Eigen::Matrix<double, 33, 33> full = isotropic_from_gradient_products<33>(h, l.lambda, l.mu);
 
   const Eigen::Matrix<double, 9, 9> kaa = full.bottomRightCorner<9, 9>();
   const Eigen::Matrix<double, 9, 24> kau = full.bottomLeftCorner<9, 24>();
   const Eigen::LLT<Eigen::Matrix<double, 9, 9>> llt(kaa);
   if (llt.info() != Eigen::Success) {
-    throw std::domain_error(
-        "hex8 incompatible: bubble stiffness not positive definite (degenerate element)");
+    throw std::domain_error("hex8 incompatible: bubble stiffness not positive definite (degenerate element)");
   }
   Matrix24 k = full.topLeftCorner<24, 24>();
   k.noalias() -= kau.transpose() * llt.solve(kau);

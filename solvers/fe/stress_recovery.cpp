@@ -20,17 +20,20 @@ double linear(int i, double r) { return 0.5 * (1.0 + (i == 0 ? -r : r)); }
 double quadratic(int i, double t) {
   const double g2 = kG3 * kG3;
   switch (i) {
-    case 0: return t * (t - kG3) / (2 * g2);
-    case 1: return (g2 - t * t) / g2;
-    default: return t * (t + kG3) / (2 * g2);
+    case 0:
+      return t * (t - kG3) / (2 * g2);
+    case 1:
+      return (g2 - t * t) / g2;
+    default:
+      return t * (t + kG3) / (2 * g2);
   }
 }
 
 // Natural coordinates of the nodes (mesh/mesh.hpp order): corners, then hex20's mid-edge nodes.
 constexpr double kHexNodes[20][3] = {
-    {-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1},
-    {-1, 1, 1},   {0, -1, -1}, {1, 0, -1}, {0, 1, -1},  {-1, 0, -1}, {0, -1, 1}, {1, 0, 1},
-    {0, 1, 1},    {-1, 0, 1},  {-1, -1, 0}, {1, -1, 0}, {1, 1, 0},   {-1, 1, 0},
+    {-1, -1, -1}, {1, -1, -1}, {1, 1, -1},  {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1},
+    {-1, 1, 1},   {0, -1, -1}, {1, 0, -1},  {0, 1, -1},  {-1, 0, -1}, {0, -1, 1}, {1, 0, 1},
+    {0, 1, 1},    {-1, 0, 1},  {-1, -1, 0}, {1, -1, 0},  {1, 1, 0},   {-1, 1, 0},
 };
 constexpr double kQuadNodes[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
@@ -92,14 +95,16 @@ Eigen::Vector2d principal_plane(const Eigen::Vector3d& s) {
 
 double von_mises_solid(const Vector6& s) {
   const double d01 = s[0] - s[1], d12 = s[1] - s[2], d20 = s[2] - s[0];
-  return std::sqrt(std::max(0.0, 0.5 * (d01 * d01 + d12 * d12 + d20 * d20) + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
+  return std::sqrt(
+      std::max(0.0, 0.5 * (d01 * d01 + d12 * d12 + d20 * d20) + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
 }
 
 Eigen::Vector3d principal_solid(const Vector6& s) {
   Eigen::Matrix3d t;
   t << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
   // Eigenvalues only, ascending; the iterative solver stays accurate for close principal values.
-  const Eigen::Vector3d ascending = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(t, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::Vector3d ascending =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(t, Eigen::EigenvaluesOnly).eigenvalues();
   return ascending.reverse();
 }
 

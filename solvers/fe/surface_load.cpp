@@ -35,8 +35,8 @@ void face_shape(double xi, double eta, Eigen::Matrix<double, N, 1>& n, Eigen::Ma
 }
 
 template <int N, int G>
-Eigen::Matrix<double, 3 * N, 1> face_load(const Eigen::Matrix<double, N, 3>& xyz, double pressure, const Eigen::Vector3d& traction,
-                                          const double (&x)[G], const double (&w)[G]) {
+Eigen::Matrix<double, 3 * N, 1> face_load(const Eigen::Matrix<double, N, 3>& xyz, double pressure,
+                                          const Eigen::Vector3d& traction, const double (&x)[G], const double (&w)[G]) {
   Eigen::Matrix<double, 3 * N, 1> f = Eigen::Matrix<double, 3 * N, 1>::Zero();
   for (int j = 0; j < G; ++j)
     for (int i = 0; i < G; ++i) {
@@ -63,12 +63,14 @@ Eigen::Matrix<double, 4, 1> edge2_load(const Eigen::Matrix<double, 2, 2>& xy, do
   return f;
 }
 
-Eigen::Matrix<double, 12, 1> quad4_face_load(const Eigen::Matrix<double, 4, 3>& xyz, double pressure, const Eigen::Vector3d& traction) {
+Eigen::Matrix<double, 12, 1> quad4_face_load(const Eigen::Matrix<double, 4, 3>& xyz, double pressure,
+                                             const Eigen::Vector3d& traction) {
   static constexpr double x[2] = {-kG2, kG2}, w[2] = {1.0, 1.0};
   return face_load<4, 2>(xyz, pressure, traction, x, w);
 }
 
-Eigen::Matrix<double, 24, 1> quad8_face_load(const Eigen::Matrix<double, 8, 3>& xyz, double pressure, const Eigen::Vector3d& traction) {
+Eigen::Matrix<double, 24, 1> quad8_face_load(const Eigen::Matrix<double, 8, 3>& xyz, double pressure,
+                                             const Eigen::Vector3d& traction) {
   static constexpr double x[3] = {-kG3, 0.0, kG3}, w[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
   return face_load<8, 3>(xyz, pressure, traction, x, w);
 }

@@ -34,23 +34,30 @@ void for_each_element(const ElementBlock& block, Fn fn) {
     try {
       fn(block.conn.row(e).data());
     } catch (const std::domain_error& err) {
-      throw InputError(fmt::format("element {} ({}): {}", block.ids[static_cast<size_t>(e)],
-                                   element_name(block.type), err.what()));
+      throw InputError(
+          fmt::format("element {} ({}): {}", block.ids[static_cast<size_t>(e)], element_name(block.type), err.what()));
     }
   }
 }
 
 // The scalar consistent mass m_ab of an element, whatever its type.
-Eigen::MatrixXd scalar_mass(ElementType type, const Mesh& mesh, const int* nodes,
-                            const fe::PlaneSection& section) {
+Eigen::MatrixXd scalar_mass(ElementType type, const Mesh& mesh, const int* nodes, const fe::PlaneSection& section) {
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
   Eigen::MatrixXd expanded;
   switch (type) {
-    case ElementType::q4: expanded = fe::q4_consistent_mass(element_coords<4, 2>(mesh, nodes), section); break;
-    case ElementType::cst: expanded = fe::cst_consistent_mass(element_coords<3, 2>(mesh, nodes), section); break;
+    case ElementType::q4:
+      expanded = fe::q4_consistent_mass(element_coords<4, 2>(mesh, nodes), section);
+      break;
+    case ElementType::cst:
+      expanded = fe::cst_consistent_mass(element_coords<3, 2>(mesh, nodes), section);
+      break;
     case ElementType::hex8:
-    case ElementType::hex8i: expanded = fe::hex8_consistent_mass(element_coords<8, 3>(mesh, nodes), solid); break;
-    case ElementType::hex20: expanded = fe::hex20_consistent_mass(element_coords<20, 3>(mesh, nodes), solid); break;
+    case ElementType::hex8i:
+      expanded = fe::hex8_consistent_mass(element_coords<8, 3>(mesh, nodes), solid);
+      break;
+    case ElementType::hex20:
+      expanded = fe::hex20_consistent_mass(element_coords<20, 3>(mesh, nodes), solid);
+      break;
   }
   const int dim = element_dimension(type), n = nodes_per_element(type);
   Eigen::MatrixXd m(n, n);

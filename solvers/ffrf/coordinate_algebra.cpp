@@ -14,9 +14,7 @@ Eigen::VectorXd CoordinateMatrix::operator*(const Eigen::VectorXd& x) const {
   return s_ * x;
 }
 
-double CoordinateMatrix::form(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const {
-  return x.dot((*this) * y);
-}
+double CoordinateMatrix::form(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const { return x.dot((*this) * y); }
 
 Eigen::MatrixXd CoordinateMatrix::to_dense() const { return dense_ ? d_ : Eigen::MatrixXd(s_); }
 

@@ -1,8 +1,8 @@
 #include "ffrf/elastic_basis.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -25,13 +25,15 @@ void validate(const RotatingBody& body, const ElasticBasisOptions& o) {
     return;
   }
   if (o.n_modes < 1)
-    throw InputError(fmt::format("modal elastic basis needs n_modes >= 1, got {} (an empty basis has no elastic "
-                                 "coordinates)",
-                                 o.n_modes));
+    throw InputError(
+        fmt::format("modal elastic basis needs n_modes >= 1, got {} (an empty basis has no elastic "
+                    "coordinates)",
+                    o.n_modes));
   if (o.n_modes > body.n_free())
-    throw InputError(fmt::format("modal elastic basis of {} modes is larger than the body's {} free DOFs: ask for at "
-                                 "most {} modes, or use the nodal basis",
-                                 o.n_modes, body.n_free(), body.n_free()));
+    throw InputError(
+        fmt::format("modal elastic basis of {} modes is larger than the body's {} free DOFs: ask for at "
+                    "most {} modes, or use the nodal basis",
+                    o.n_modes, body.n_free(), body.n_free()));
   for (int m : o.selected_modes)
     if (m < 1 || m > o.n_modes)
       throw InputError(fmt::format("modal elastic basis: selected mode {} is outside 1..{} (n_modes)", m, o.n_modes));

@@ -5,6 +5,7 @@
 // the basis are what the integrator and the rotating modal solver work with. SI units.
 #pragma once
 #include <Eigen/Dense>
+
 #include <vector>
 
 #include "ffrf/coordinate_algebra.hpp"
@@ -19,8 +20,8 @@ enum class BasisKind {
 
 struct ElasticBasisOptions {
   BasisKind kind = BasisKind::nodal;
-  int n_modes = 0;                   // modal: compute the first n modes at rest (n >= 1)
-  std::vector<int> selected_modes;   // modal: 1-based mode numbers kept among those n; empty = all n
+  int n_modes = 0;                  // modal: compute the first n modes at rest (n >= 1)
+  std::vector<int> selected_modes;  // modal: 1-based mode numbers kept among those n; empty = all n
   // modal: append the static responses K^-1 f_c, K^-1 f_alpha and K^-1 of the gravity loads
   // (Craig's "modal truncation augmentation"), M-orthonormalized against the modes. The centrifugal
   // deflection is mostly a stretch that the low bending modes cannot represent; with these shapes
@@ -32,10 +33,10 @@ struct ElasticBasisOptions {
 
 struct ElasticBasis {
   BasisKind kind = BasisKind::nodal;
-  Eigen::MatrixXd shapes;         // modal: n_free x size, M-orthonormal columns; nodal: empty
-  Eigen::VectorXd frequencies_hz; // modal: of the kept modes at rest (static shapes excluded)
-  std::vector<int> mode_numbers;  // modal: 1-based numbers of the kept modes
-  int static_shapes = 0;          // modal: columns appended by static_correction
+  Eigen::MatrixXd shapes;          // modal: n_free x size, M-orthonormal columns; nodal: empty
+  Eigen::VectorXd frequencies_hz;  // modal: of the kept modes at rest (static shapes excluded)
+  std::vector<int> mode_numbers;   // modal: 1-based numbers of the kept modes
+  int static_shapes = 0;           // modal: columns appended by static_correction
   int n_free = 0;
 
   int size() const { return kind == BasisKind::nodal ? n_free : static_cast<int>(shapes.cols()); }
@@ -52,7 +53,7 @@ struct ProjectedBody {
   Eigen::MatrixXd gravity_load;  // size x dim
   MassProperties mass_properties;
   int dim = 2;
-  double size = 0.0;             // body size [m], for the divergence bound
+  double size = 0.0;  // body size [m], for the divergence bound
   const RotatingBody* body = nullptr;
   const ElasticBasis* basis = nullptr;
 
@@ -68,7 +69,6 @@ Eigen::VectorXd load_in_basis(const ElasticBasis& basis, const Eigen::VectorXd& 
 
 // Rows of q = Phi eta for the given global DOFs (a constrained DOF gives a zero row): recovery of
 // a few nodal displacements per time step without forming q.
-Eigen::MatrixXd recovery_rows(const RotatingBody& body, const ElasticBasis& basis,
-                              const std::vector<int>& global_dofs);
+Eigen::MatrixXd recovery_rows(const RotatingBody& body, const ElasticBasis& basis, const std::vector<int>& global_dofs);
 
 }  // namespace bb::ffrf

@@ -4,6 +4,7 @@
 // and by the rotating modal solver. Formulas: ffrf/ffrf_integrator.hpp. SI units.
 #pragma once
 #include <Eigen/Dense>
+
 #include <functional>
 
 #include "ffrf/elastic_basis.hpp"
@@ -22,9 +23,9 @@ struct Switches {
 
 // Energy, momentum and gravity quantities of a state (theta, Omega, q, q').
 struct Snapshot {
-  double kinetic = 0.0;         // T [J]
-  double strain = 0.0;          // U [J]
-  double momentum = 0.0;        // H [kg m^2/s]
+  double kinetic = 0.0;            // T [J]
+  double strain = 0.0;             // U [J]
+  double momentum = 0.0;           // H [kg m^2/s]
   double gravity_potential = 0.0;  // V_g = -g . R(theta) (s0 + F_g^T q) [J]
   double gravity_moment = 0.0;     // Q_g = -dV_g/dtheta [N m]
   double rms_deflection = 0.0;     // sqrt(q^T M q / m) [m]
@@ -45,15 +46,15 @@ class Dynamics {
   const CoordinateMatrix& damping() const { return damping_; }      // C (zero matrix when undamped)
   const Eigen::VectorXd& coupling0() const { return g0_; }          // g0 = G (x - p)
 
-  Eigen::VectorXd h(const Eigen::VectorXd& q) const;                  // f_c + (M_p - s K_s1) q
-  Eigen::VectorXd coupling(const Eigen::VectorXd& q) const;           // g0 + G q
-  double axis_inertia(const Eigen::VectorXd& q, const Eigen::VectorXd& hq) const;  // J(q)
-  Eigen::VectorXd gravity_load(double theta) const;                   // F_g R(theta)^T g
-  Eigen::VectorXd gravity_load_derivative(double theta) const;        // d/dtheta of the above
+  Eigen::VectorXd h(const Eigen::VectorXd& q) const;                                        // f_c + (M_p - s K_s1) q
+  Eigen::VectorXd coupling(const Eigen::VectorXd& q) const;                                 // g0 + G q
+  double axis_inertia(const Eigen::VectorXd& q, const Eigen::VectorXd& hq) const;           // J(q)
+  Eigen::VectorXd gravity_load(double theta) const;                                         // F_g R(theta)^T g
+  Eigen::VectorXd gravity_load_derivative(double theta) const;                              // d/dtheta of the above
   double gravity_moment(double theta, const Eigen::VectorXd& q, int derivative = 0) const;  // Q_g, dQ_g/dtheta
-  Eigen::VectorXd gravity_moment_gradient(double theta) const;        // dQ_g/dq
-  Eigen::VectorXd external_load(double t) const;                      // in basis coordinates
-  Eigen::VectorXd damping_force(const Eigen::VectorXd& v) const;      // C v
+  Eigen::VectorXd gravity_moment_gradient(double theta) const;                              // dQ_g/dq
+  Eigen::VectorXd external_load(double t) const;                                            // in basis coordinates
+  Eigen::VectorXd damping_force(const Eigen::VectorXd& v) const;                            // C v
 
   Snapshot snapshot(double theta, double omega, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
   double momentum(double omega, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;  // H

@@ -18,9 +18,8 @@ namespace bb::ffrf::detail {
 namespace {
 
 // Bordered solve of [j_tt, j_tq^T; j_qt, J_qq] [x_t; x_q] = [b_t; b_q] with a factorized J_qq.
-std::pair<double, Eigen::VectorXd> bordered_solve(const CoordinateSolver& jqq, double j_tt,
-                                                  const Eigen::VectorXd& j_tq, const Eigen::VectorXd& j_qt, double b_t,
-                                                  const Eigen::VectorXd& b_q) {
+std::pair<double, Eigen::VectorXd> bordered_solve(const CoordinateSolver& jqq, double j_tt, const Eigen::VectorXd& j_tq,
+                                                  const Eigen::VectorXd& j_qt, double b_t, const Eigen::VectorXd& b_q) {
   const Eigen::VectorXd y1 = jqq.solve(b_q), y2 = jqq.solve(j_qt);
   const double x_t = (b_t - j_tq.dot(y1)) / (j_tt - j_tq.dot(y2));
   return {x_t, y1 - y2 * x_t};
@@ -30,7 +29,10 @@ std::pair<double, Eigen::VectorXd> bordered_solve(const CoordinateSolver& jqq, d
 
 FreeRotorStepper::FreeRotorStepper(const Dynamics& dynamics, const RotationProfile& rotation,
                                    const FfrfOptions& options)
-    : d_(dynamics), rotation_(rotation), options_(options), ga_(chung_hulbert(options.rho_infinity)),
+    : d_(dynamics),
+      rotation_(rotation),
+      options_(options),
+      ga_(chung_hulbert(options.rho_infinity)),
       dt_(options.time_step) {
   if (!mass_solver_.factorize(d_.body().mass))
     throw SolverError("FFRF integrator: the mass matrix in the elastic coordinates is singular: " +
@@ -115,8 +117,8 @@ void FreeRotorStepper::newton_update(const Trial& tr, int iteration, double& a_t
   const ProjectedBody& p = d_.body();
   const Switches& sw = d_.switches();
   const StepState& x = tr.state;
-  const bool refactor = jqq_.size() == 0 || p.mass.is_dense() || iteration == 0 ||
-                        iteration == options_.max_newton_iterations / 2;
+  const bool refactor =
+      jqq_.size() == 0 || p.mass.is_dense() || iteration == 0 || iteration == options_.max_newton_iterations / 2;
   if (refactor) {
     combine_into({{am + af * g * sw.rayleigh_mass, &p.mass},
                   {af * (g * sw.rayleigh_stiffness + b), &p.stiffness},
@@ -131,10 +133,9 @@ void FreeRotorStepper::newton_update(const Trial& tr, int iteration, double& a_t
   const Eigen::VectorXd gv = p.gyroscopic * x.v;
   const Eigen::VectorXd j_qt = am * tr.c + af * (g * (2.0 * d_.coriolis() * gv - 2.0 * x.omega * tr.hq) -
                                                  b * d_.gravity_load_derivative(x.theta));
-  const Eigen::VectorXd j_tq =
-      am * (tr.c + b * (2.0 * a_theta * tr.hq - p.gyroscopic * a_q)) +
-      af * (g * 2.0 * x.omega * tr.hq +
-            b * (2.0 * x.omega * (d_.softening() * x.v) - d_.gravity_moment_gradient(x.theta)));
+  const Eigen::VectorXd j_tq = am * (tr.c + b * (2.0 * a_theta * tr.hq - p.gyroscopic * a_q)) +
+                               af * (g * 2.0 * x.omega * tr.hq + b * (2.0 * x.omega * (d_.softening() * x.v) -
+                                                                      d_.gravity_moment_gradient(x.theta)));
   const double j_tt = am * tr.j + af * (g * 2.0 * x.v.dot(tr.hq) - b * d_.gravity_moment(x.theta, x.q, 1));
   const auto [d_theta, d_q] = bordered_solve(jacobian_, j_tt, j_tq, j_qt, -tr.r_theta, -tr.r_q);
   a_theta += d_theta;
@@ -165,9 +166,10 @@ void FreeRotorStepper::step(StepState& s) {
       return;
     }
     if (k == options_.max_newton_iterations)
-      throw SolverError(fmt::format("FFRF free rotor: Newton did not converge at t = {:.6g} s (Omega = {:.6g} rad/s): "
-                                    "relative residual {:.3e} > {:.1e} after {} iterations; reduce the time step",
-                                    pred.t, tr.state.omega, tr.relative_residual, options_.newton_tolerance, k));
+      throw SolverError(
+          fmt::format("FFRF free rotor: Newton did not converge at t = {:.6g} s (Omega = {:.6g} rad/s): "
+                      "relative residual {:.3e} > {:.1e} after {} iterations; reduce the time step",
+                      pred.t, tr.state.omega, tr.relative_residual, options_.newton_tolerance, k));
     newton_update(tr, k, a_theta, a_q);
   }
 }

@@ -34,15 +34,15 @@ void validate(const ProjectedBody& body, const RotationProfile& rotation, const 
   if (o.max_newton_iterations < 1 || !(o.newton_tolerance > 0.0))
     throw InputError("FFRF integrator: max_newton_iterations must be >= 1 and newton_tolerance > 0");
   if (!rotation.prescribed() && o.external_load)
-    throw InputError("FFRF integrator: external_load with a free rotor is not supported (its moment on the rotor is "
-                     "not modelled); prescribe the rotation or apply the load as a torque");
+    throw InputError(
+        "FFRF integrator: external_load with a free rotor is not supported (its moment on the rotor is "
+        "not modelled); prescribe the rotation or apply the load as a torque");
   if (!rotation.prescribed() && o.rotor_inertia + body.mass_properties.axis_inertia <= 0.0)
     throw InputError("FFRF integrator: a free rotor needs a positive inertia about the axis (rotor_inertia)");
 }
 
 detail::Switches switches_of(const FfrfOptions& o) {
-  return {o.stiffening, o.coriolis, o.rayleigh_mass, o.rayleigh_stiffness, o.rotor_inertia, o.gravity,
-          o.external_load};
+  return {o.stiffening, o.coriolis, o.rayleigh_mass, o.rayleigh_stiffness, o.rotor_inertia, o.gravity, o.external_load};
 }
 
 // Cumulative works by the trapezoidal rule over the steps, and the energy checks of a run. The
@@ -105,8 +105,8 @@ class Ledger {
   // beyond the energy supplied.
   void check(const detail::StepState& s, const detail::Snapshot& snap) {
     const double e = snap.kinetic + snap.strain;
-    scale_ = std::max(scale_, std::abs(snap.kinetic) + std::abs(snap.strain) + std::abs(driving) +
-                                  std::abs(gravity) + std::abs(external) + damping + std::abs(e0_));
+    scale_ = std::max(scale_, std::abs(snap.kinetic) + std::abs(snap.strain) + std::abs(driving) + std::abs(gravity) +
+                                  std::abs(external) + damping + std::abs(e0_));
     if (!s.q.allFinite() || !s.v.allFinite() || !std::isfinite(e) || !std::isfinite(s.omega))
       fail(s, "the state is not finite");
     const double bound = o_.max_deflection_ratio * d_.body().size;
@@ -124,19 +124,19 @@ class Ledger {
   double driving = 0.0, gravity = 0.0, external = 0.0, damping = 0.0;
 
  private:
-  double power_external(const detail::StepState& s) const {
-    return d_.loaded() ? d_.external_load(s.t).dot(s.v) : 0.0;
-  }
+  double power_external(const detail::StepState& s) const { return d_.loaded() ? d_.external_load(s.t).dot(s.v) : 0.0; }
   double power_damping(const detail::StepState& s) const { return d_.damped() ? d_.damping().form(s.v, s.v) : 0.0; }
 
   [[noreturn]] void fail(const detail::StepState& s, const std::string& why) const {
     std::string hint;
     if (!o_.stiffening)
-      hint = " Geometric stiffening is off: above the lowest natural frequency of the motions in the plane of "
-             "rotation the spin-softened model has no stable equilibrium, the divergence of the linear FFRF model "
-             "described by Kane, Ryan & Banerjee (1987).";
-    throw DivergenceError(fmt::format("FFRF run diverged at t = {:.6g} s (Omega = {:.6g} rad/s): {}.{}", s.t, s.omega, why, hint),
-                          s.t, s.omega);
+      hint =
+          " Geometric stiffening is off: above the lowest natural frequency of the motions in the plane of "
+          "rotation the spin-softened model has no stable equilibrium, the divergence of the linear FFRF model "
+          "described by Kane, Ryan & Banerjee (1987).";
+    throw DivergenceError(
+        fmt::format("FFRF run diverged at t = {:.6g} s (Omega = {:.6g} rad/s): {}.{}", s.t, s.omega, why, hint), s.t,
+        s.omega);
   }
 
   const detail::Dynamics& d_;
@@ -155,9 +155,10 @@ Eigen::VectorXd initial_coordinates(const detail::Dynamics& d, const RotationPro
   const double alpha = rotation.prescribed() ? rotation.acceleration(0.0) : 0.0;
   CoordinateSolver solver;
   if (!solver.factorize(d.static_operator(omega, alpha)))
-    throw SolverError(fmt::format("FFRF integrator: no steady state at Omega = {:.6g} rad/s (static operator "
-                                  "singular: {})",
-                                  omega, solver.message()));
+    throw SolverError(
+        fmt::format("FFRF integrator: no steady state at Omega = {:.6g} rad/s (static operator "
+                    "singular: {})",
+                    omega, solver.message()));
   Eigen::VectorXd load = d.static_load(theta, omega, alpha);
   if (d.loaded()) load += d.external_load(0.0);
   return solver.solve(load);

@@ -24,11 +24,12 @@
 // factorization per run). Free rotation: Newton per step on the accelerations (exact Jacobian;
 // nodal basis: modified Newton with one factorization per step).
 #pragma once
-#include "common/errors.hpp"
 #include <Eigen/Dense>
+
 #include <functional>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "ffrf/elastic_basis.hpp"
 #include "ffrf/rotation_profile.hpp"
 
@@ -37,9 +38,9 @@ namespace bb::ffrf {
 // How a prescribed, time-varying speed reuses the effective matrix's factorization (nodal basis;
 // a modal basis refactorizes its small dense matrix whenever it changes).
 enum class FactorizationReuse {
-  every_change,    // refactorize whenever (Omega, alpha) change: every step of a spin-up
-  with_correction, // keep a stale factorization and correct iteratively (x += A_old^-1 (b - A x)),
-                   // refactorizing when the correction converges slowly (bench/bench_ffrf.cpp measures)
+  every_change,     // refactorize whenever (Omega, alpha) change: every step of a spin-up
+  with_correction,  // keep a stale factorization and correct iteratively (x += A_old^-1 (b - A x)),
+                    // refactorizing when the correction converges slowly (bench/bench_ffrf.cpp measures)
 };
 
 struct FfrfOptions {
@@ -48,21 +49,21 @@ struct FfrfOptions {
   // whose response matters (rotating_modes at the run's speeds); the generalized-alpha period error
   // is (omega dt)^2 / 12, 0.2 % at 40 steps per period.
   double time_step = 0.0;
-  double end_time = 0.0;      // [s], required; the run starts at t = 0
+  double end_time = 0.0;  // [s], required; the run starts at t = 0
   // Spectral radius at infinite frequency. 0.9 by default: the sudden start of a constant-speed run
   // excites every mode, and the unresolved high ones would otherwise ring forever at aliased
   // frequencies (rho = 1 is the trapezoidal rule, no dissipation); with 0.9 they lose 10 % per step,
   // while a mode resolved by 20 (40) steps per period loses 1.4e-5 (1.8e-6) of its amplitude per
   // period (spectral radius of the amplification matrix of Chung & Hulbert's scheme).
   double rho_infinity = 0.9;
-  int output_stride = 1;      // record every n-th step (the first and last instants always)
-  bool stiffening = true;     // geometric stiffening s Omega^2 K_s1 (s = 1), off: s = 0
-  bool coriolis = true;       // the gyroscopic term 2 Omega G q' of the elastic equations
-  double rotor_inertia = 0.0; // J_rotor about the axis [kg m^2]: T, H and the torque include it
+  int output_stride = 1;                              // record every n-th step (the first and last instants always)
+  bool stiffening = true;                             // geometric stiffening s Omega^2 K_s1 (s = 1), off: s = 0
+  bool coriolis = true;                               // the gyroscopic term 2 Omega G q' of the elastic equations
+  double rotor_inertia = 0.0;                         // J_rotor about the axis [kg m^2]: T, H and the torque include it
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // inertial frame [m/s^2]; 2D: z must be 0
-  double rayleigh_mass = 0.0;       // a_M [1/s] of C = a_M M + b_K K
-  double rayleigh_stiffness = 0.0;  // b_K [s]
-  std::vector<int> output_dofs;     // global DOFs (node * dim + dir) recorded, rotating frame
+  double rayleigh_mass = 0.0;                         // a_M [1/s] of C = a_M M + b_K K
+  double rayleigh_stiffness = 0.0;                    // b_K [s]
+  std::vector<int> output_dofs;                       // global DOFs (node * dim + dir) recorded, rotating frame
   // Start from the steady state at Omega(0) (static centrifugal + gravity deflection at theta(0),
   // at rest in the rotating frame) instead of from the undeformed body at rest.
   bool start_from_steady_state = false;
@@ -83,24 +84,24 @@ struct FfrfOptions {
 };
 
 struct FfrfHistory {
-  std::vector<double> time;           // [s]
-  Eigen::MatrixXd displacement;       // samples x output_dofs [m], rotating frame
+  std::vector<double> time;                        // [s]
+  Eigen::MatrixXd displacement;                    // samples x output_dofs [m], rotating frame
   std::vector<double> angle, speed, acceleration;  // theta [rad], Omega [rad/s], alpha [rad/s^2]
-  std::vector<double> kinetic_energy;   // T, inertial frame, body + rotor [J]
-  std::vector<double> strain_energy;    // U = 1/2 q^T K q [J]
-  std::vector<double> driving_work;     // integral tau Omega dt [J]
-  std::vector<double> gravity_work;     // work of gravity, -(V_g - V_g0) [J]
-  std::vector<double> external_work;    // integral f_ext . q' dt [J]
-  std::vector<double> damping_work;     // integral q'^T C q' dt >= 0 [J]
-  std::vector<double> angular_momentum; // H about the axis [kg m^2/s]
-  std::vector<double> driving_torque;   // prescribed: torque needed (dH/dt - gravity moment); free: applied [N m]
-  Eigen::VectorXd final_coordinates;    // eta at the end
+  std::vector<double> kinetic_energy;              // T, inertial frame, body + rotor [J]
+  std::vector<double> strain_energy;               // U = 1/2 q^T K q [J]
+  std::vector<double> driving_work;                // integral tau Omega dt [J]
+  std::vector<double> gravity_work;                // work of gravity, -(V_g - V_g0) [J]
+  std::vector<double> external_work;               // integral f_ext . q' dt [J]
+  std::vector<double> damping_work;                // integral q'^T C q' dt >= 0 [J]
+  std::vector<double> angular_momentum;            // H about the axis [kg m^2/s]
+  std::vector<double> driving_torque;  // prescribed: torque needed (dH/dt - gravity moment); free: applied [N m]
+  Eigen::VectorXd final_coordinates;   // eta at the end
   Eigen::VectorXd final_velocity;
   int steps = 0;
-  int factorizations = 0;       // of the effective (or Jacobian q-q) matrix
-  long solve_iterations = 0;    // corrections (prescribed) or Newton iterations (free), summed
+  int factorizations = 0;     // of the effective (or Jacobian q-q) matrix
+  long solve_iterations = 0;  // corrections (prescribed) or Newton iterations (free), summed
   int max_step_iterations = 0;
-  double max_residual = 0.0;    // largest relative residual accepted (free rotor)
+  double max_residual = 0.0;  // largest relative residual accepted (free rotor)
 
   // max over samples of |T + U - T0 - U0 - (driving + gravity + external - damping work)| [J].
   double energy_balance_error() const;
@@ -110,7 +111,8 @@ struct FfrfHistory {
 // value): a SolverError that also says when, for callers that report the divergence as a finding.
 class DivergenceError : public SolverError {
  public:
-  DivergenceError(const std::string& message, double time, double speed) : SolverError(message), time_(time), speed_(speed) {}
+  DivergenceError(const std::string& message, double time, double speed)
+      : SolverError(message), time_(time), speed_(speed) {}
   double time() const { return time_; }    // [s]
   double speed() const { return speed_; }  // Omega then [rad/s]
 

@@ -27,7 +27,10 @@ constexpr double kCorrectionTolerance = 1e-10;
 
 PrescribedStepper::PrescribedStepper(const Dynamics& dynamics, const RotationProfile& rotation,
                                      const FfrfOptions& options)
-    : d_(dynamics), rotation_(rotation), options_(options), ga_(chung_hulbert(options.rho_infinity)),
+    : d_(dynamics),
+      rotation_(rotation),
+      options_(options),
+      ga_(chung_hulbert(options.rho_infinity)),
       dt_(options.time_step) {
   if (!mass_solver_.factorize(d_.body().mass))
     throw SolverError("FFRF integrator: the mass matrix in the elastic coordinates is singular: " +
@@ -41,7 +44,8 @@ void PrescribedStepper::update_operators(double omega, double alpha) {
   const ProjectedBody& p = d_.body();
   const Switches& sw = d_.switches();
   combine_into({{1.0, &p.stiffness}, {-omega * omega, &d_.softening()}, {alpha, &p.gyroscopic}}, k_);
-  combine_into({{2.0 * omega * d_.coriolis(), &p.gyroscopic}, {sw.rayleigh_mass, &p.mass},
+  combine_into({{2.0 * omega * d_.coriolis(), &p.gyroscopic},
+                {sw.rayleigh_mass, &p.mass},
                 {sw.rayleigh_stiffness, &p.stiffness}},
                c_);
   operators_ready_ = true;

@@ -4,6 +4,7 @@
 // alpha-weighted parts of the next one). SI units.
 #pragma once
 #include <Eigen/Dense>
+
 #include <string>
 
 #include "ffrf/ffrf_dynamics.hpp"
@@ -14,9 +15,9 @@ namespace bb::ffrf::detail {
 struct StepState {
   double t = 0.0;
   double theta = 0.0, omega = 0.0;
-  double alpha = 0.0;     // prescribed: alpha(t); free rotor: the algorithmic rotor acceleration
-  Eigen::VectorXd q, v;   // elastic coordinates and velocities
-  Eigen::VectorXd a;      // algorithmic elastic acceleration
+  double alpha = 0.0;    // prescribed: alpha(t); free rotor: the algorithmic rotor acceleration
+  Eigen::VectorXd q, v;  // elastic coordinates and velocities
+  Eigen::VectorXd a;     // algorithmic elastic acceleration
 };
 
 struct StepCounters {

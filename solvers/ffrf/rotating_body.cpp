@@ -24,9 +24,10 @@ void validate(const Model& model, const RotationAxis& axis) {
     throw InputError(fmt::format("rotating body needs a positive density, got rho = {}", model.section.density));
   for (const Constraint& c : model.constraints)
     if (c.value != 0.0)
-      throw InputError(fmt::format("rotating body: constraint on set '{}' prescribes {} m; the root is clamped to "
-                                   "the rotor, so only zero prescribed displacements are allowed",
-                                   c.set, c.value));
+      throw InputError(
+          fmt::format("rotating body: constraint on set '{}' prescribes {} m; the root is clamped to "
+                      "the rotor, so only zero prescribed displacements are allowed",
+                      c.set, c.value));
 }
 
 // Rigid translations of every node, all DOFs x dim.
@@ -54,9 +55,10 @@ Eigen::VectorXd unit_speed_deflection(const RotatingBody& body) {
   SpdFactorization factor(ordering_for_dimension(body.dim));
   const FactorStatus status = factor.factorize(body.stiffness);
   if (!status.ok)
-    throw InputError(fmt::format("rotating body: the constraints do not hold the body (stiffness singular: {}); "
-                                 "clamp the root nodes in every direction",
-                                 status.message));
+    throw InputError(
+        fmt::format("rotating body: the constraints do not hold the body (stiffness singular: {}); "
+                    "clamp the root nodes in every direction",
+                    status.message));
   return factor.solve(body.centrifugal_load);
 }
 

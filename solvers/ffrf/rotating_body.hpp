@@ -39,10 +39,10 @@ struct RotatingBody {
   Eigen::VectorXd positions;  // undeformed nodal coordinates, all DOFs (node * dim + dir) [m]
 
   // Free x free, all on one sparse pattern (ffrf/body_assembly).
-  Eigen::SparseMatrix<double> mass;             // M [kg]
-  Eigen::SparseMatrix<double> stiffness;        // K [N/m]
-  Eigen::SparseMatrix<double> projected_mass;   // M_p: spin softening, M in 2D [kg]
-  Eigen::SparseMatrix<double> gyroscopic;       // G, skew: Coriolis 2 Omega G, Euler alpha G [kg]
+  Eigen::SparseMatrix<double> mass;            // M [kg]
+  Eigen::SparseMatrix<double> stiffness;       // K [N/m]
+  Eigen::SparseMatrix<double> projected_mass;  // M_p: spin softening, M in 2D [kg]
+  Eigen::SparseMatrix<double> gyroscopic;      // G, skew: Coriolis 2 Omega G, Euler alpha G [kg]
   // K_sigma1: initial-stress stiffness of the stresses of u1 (K u1 = f_c, the pre-stress at unit
   // speed), so that the centrifugal pre-stress stiffness is Omega^2 K_sigma1 [N/m per (rad/s)^2].
   // Spin softening is left out of this solve on purpose: the pre-stress is then exactly linear in
@@ -50,9 +50,9 @@ struct RotatingBody {
   // the stress (1.3e-4 for the thesis blade at 300 rad/s; 1e-4 for the spin-up beam at 6 rad/s).
   Eigen::SparseMatrix<double> geometric_stiffness;
 
-  Eigen::VectorXd centrifugal_load;  // f_c = M_p (x - p) restricted to free rows, per unit Omega^2 [kg m]
-  Eigen::VectorXd euler_load;        // f_alpha = -G (x - p), per unit alpha [kg m]
-  Eigen::MatrixXd gravity_load;      // n_free x dim: f_g = gravity_load * g_body [kg]
+  Eigen::VectorXd centrifugal_load;       // f_c = M_p (x - p) restricted to free rows, per unit Omega^2 [kg m]
+  Eigen::VectorXd euler_load;             // f_alpha = -G (x - p), per unit alpha [kg m]
+  Eigen::MatrixXd gravity_load;           // n_free x dim: f_g = gravity_load * g_body [kg]
   Eigen::VectorXd unit_speed_deflection;  // u1 [m s^2]
   MassProperties mass_properties;
   double size = 0.0;  // diagonal of the undeformed bounding box [m]

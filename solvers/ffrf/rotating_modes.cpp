@@ -1,9 +1,9 @@
 #include "ffrf/rotating_modes.hpp"
 
-#include <fmt/format.h>
-
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,13 +23,15 @@ struct DenseOperators {
 DenseOperators dense_operators(const ProjectedBody& body, const RotatingModesOptions& o) {
   if (o.n_modes < 1) throw InputError(fmt::format("rotating modes: n_modes must be >= 1, got {}", o.n_modes));
   if (o.n_modes > body.n())
-    throw InputError(fmt::format("rotating modes: {} modes asked from an elastic basis of {} coordinates; ask for "
-                                 "fewer modes or enlarge the basis",
-                                 o.n_modes, body.n()));
+    throw InputError(
+        fmt::format("rotating modes: {} modes asked from an elastic basis of {} coordinates; ask for "
+                    "fewer modes or enlarge the basis",
+                    o.n_modes, body.n()));
   if (!body.mass.is_dense() && body.n() > o.max_dense_size)
-    throw InputError(fmt::format("rotating modes of a nodal basis of {} coordinates need a dense {}x{} state-space "
-                                 "eigenproblem; use a modal elastic basis (BasisKind::modal) or raise max_dense_size",
-                                 body.n(), 2 * body.n(), 2 * body.n()));
+    throw InputError(
+        fmt::format("rotating modes of a nodal basis of {} coordinates need a dense {}x{} state-space "
+                    "eigenproblem; use a modal elastic basis (BasisKind::modal) or raise max_dense_size",
+                    body.n(), 2 * body.n(), 2 * body.n()));
   return {body.mass.to_dense(), body.stiffness.to_dense(), body.projected_mass.to_dense(), body.gyroscopic.to_dense(),
           body.geometric_stiffness.to_dense()};
 }
@@ -80,8 +82,10 @@ RotatingModes modes_at(const DenseOperators& ops, double speed, const RotatingMo
   double max_growth = 0.0;
   for (const auto& l : lambda) {
     max_growth = std::max(max_growth, l.real());
-    if (l.imag() > tol) modes.emplace_back(l.imag(), l.real());
-    else if (std::abs(l.imag()) <= tol && l.real() >= 0.0) modes.emplace_back(0.0, l.real());
+    if (l.imag() > tol)
+      modes.emplace_back(l.imag(), l.real());
+    else if (std::abs(l.imag()) <= tol && l.real() >= 0.0)
+      modes.emplace_back(0.0, l.real());
   }
   std::sort(modes.begin(), modes.end());
   RotatingModes r;
@@ -99,8 +103,8 @@ RotatingModes modes_at(const DenseOperators& ops, double speed, const RotatingMo
 }
 
 // Secant refinement of f_k(Omega) - EO Omega / 2 pi = 0 between two bracketing speeds.
-double refine_crossing(const DenseOperators& ops, const RotatingModesOptions& o, int mode, int eo, double w0,
-                       double d0, double w1, double d1) {
+double refine_crossing(const DenseOperators& ops, const RotatingModesOptions& o, int mode, int eo, double w0, double d0,
+                       double w1, double d1) {
   for (int it = 0; it < 30 && std::abs(w1 - w0) > 1e-10 * std::max(std::abs(w1), 1.0); ++it) {
     if (d1 == d0) break;
     const double w = w1 - d1 * (w1 - w0) / (d1 - d0);
@@ -161,16 +165,16 @@ std::vector<EngineOrderCrossing> engine_order_crossings(const ProjectedBody& bod
 
 double time_step_resolving(const ProjectedBody& body, double speed, int mode, int steps_per_period,
                            const RotatingModesOptions& options) {
-  if (mode < 1 || steps_per_period < 1)
-    throw InputError("time_step_resolving: mode and steps_per_period must be >= 1");
+  if (mode < 1 || steps_per_period < 1) throw InputError("time_step_resolving: mode and steps_per_period must be >= 1");
   RotatingModesOptions o = options;
   o.n_modes = std::max(o.n_modes, mode);
   const RotatingModes m = rotating_modes(body, speed, o);
   const auto k = static_cast<Eigen::Index>(mode - 1);
   if (k >= m.frequencies_hz.size() || !(m.frequencies_hz[k] > 0.0))
-    throw SolverError(fmt::format("time_step_resolving: mode {} at {} rad/s has no positive frequency (diverging, "
-                                  "or beyond the basis)",
-                                  mode, speed));
+    throw SolverError(
+        fmt::format("time_step_resolving: mode {} at {} rad/s has no positive frequency (diverging, "
+                    "or beyond the basis)",
+                    mode, speed));
   return 1.0 / (steps_per_period * m.frequencies_hz[k]);
 }
 

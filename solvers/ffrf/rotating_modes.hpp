@@ -14,6 +14,7 @@
 // divergence of the linear model without stiffening, Kane, Ryan & Banerjee 1987).
 #pragma once
 #include <Eigen/Dense>
+
 #include <vector>
 
 #include "ffrf/elastic_basis.hpp"
@@ -25,18 +26,18 @@ struct RotatingModesOptions {
   // below its highest mode at rest are converged (its top Ritz values, those of the static shapes
   // in particular, are not): ask for fewer than ElasticBasis::mode_numbers holds.
   int n_modes = 6;
-  bool stiffening = true;   // s_st Omega^2 K_s1
-  bool coriolis = true;     // 2 Omega G
-  int max_dense_size = 800; // a nodal basis larger than this must be replaced by a modal one
+  bool stiffening = true;    // s_st Omega^2 K_s1
+  bool coriolis = true;      // 2 Omega G
+  int max_dense_size = 800;  // a nodal basis larger than this must be replaced by a modal one
 };
 
 struct RotatingModes {
-  double speed = 0.0;              // Omega [rad/s]
+  double speed = 0.0;  // Omega [rad/s]
   // Ascending: the oscillating modes Im(s) / 2 pi and, at frequency 0, the divergent ones.
   Eigen::VectorXd frequencies_hz;
-  Eigen::VectorXd growth_rates;    // Re(s) [1/s] of the same modes: ~0 when stable, > 0 diverging
-  bool stable = true;              // no eigenvalue with a positive real part (beyond round-off)
-  double max_growth_rate = 0.0;    // [1/s]
+  Eigen::VectorXd growth_rates;  // Re(s) [1/s] of the same modes: ~0 when stable, > 0 diverging
+  bool stable = true;            // no eigenvalue with a positive real part (beyond round-off)
+  double max_growth_rate = 0.0;  // [1/s]
 };
 
 // Throws InputError for a negative n_modes or a nodal basis above max_dense_size.
@@ -74,13 +75,13 @@ double divergence_speed(const ProjectedBody& body, bool stiffening);
 struct StaticDeflectionOptions {
   bool stiffening = true;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // inertial frame [m/s^2]
-  double angle = 0.0;                                  // theta at which gravity is taken [rad]
+  double angle = 0.0;                                 // theta at which gravity is taken [rad]
 };
 struct StaticDeflection {
   double speed = 0.0;
   Eigen::VectorXd displacement;  // free DOFs [m]
   double relative_residual = 0.0;
-  double pivot_ratio = 0.0;      // min |D| / max |D| of the operator's LDL^T pivots
+  double pivot_ratio = 0.0;  // min |D| / max |D| of the operator's LDL^T pivots
 };
 // (K + s_st Omega^2 K_s1 - Omega^2 M_p) u = Omega^2 f_c + F_g R(theta)^T g on the full model.
 // Throws SolverError naming the speed when the operator is not positive definite (at or above the

@@ -43,8 +43,8 @@ RotationProfile RotationProfile::spin_up(double final_speed, double ramp_time) {
   return p;
 }
 
-RotationProfile RotationProfile::free(std::function<double(double)> torque, double initial_speed,
-                                      double initial_angle, std::string description) {
+RotationProfile RotationProfile::free(std::function<double(double)> torque, double initial_speed, double initial_angle,
+                                      std::string description) {
   if (!torque) throw InputError("free rotation profile: a torque history is required (use [](double) { return 0; })");
   require_finite(initial_speed, "initial speed");
   require_finite(initial_angle, "initial angle");
@@ -59,35 +59,41 @@ RotationProfile RotationProfile::free(std::function<double(double)> torque, doub
 
 double RotationProfile::angle(double t) const {
   switch (kind_) {
-    case Kind::constant_speed: return theta0_ + omega_ * t;
+    case Kind::constant_speed:
+      return theta0_ + omega_ * t;
     case Kind::spin_up: {
       if (t >= ramp_) return omega_ * t - 0.5 * omega_ * ramp_;
       const double c = ramp_ / kTwoPi;
       return omega_ / ramp_ * (0.5 * t * t + c * c * (std::cos(kTwoPi * t / ramp_) - 1.0));
     }
-    case Kind::free: break;
+    case Kind::free:
+      break;
   }
   throw std::logic_error("RotationProfile::angle: the rotor is free, theta is an unknown");
 }
 
 double RotationProfile::speed(double t) const {
   switch (kind_) {
-    case Kind::constant_speed: return omega_;
+    case Kind::constant_speed:
+      return omega_;
     case Kind::spin_up:
       if (t >= ramp_) return omega_;
       return omega_ / ramp_ * (t - ramp_ / kTwoPi * std::sin(kTwoPi * t / ramp_));
-    case Kind::free: break;
+    case Kind::free:
+      break;
   }
   throw std::logic_error("RotationProfile::speed: the rotor is free, Omega is an unknown");
 }
 
 double RotationProfile::acceleration(double t) const {
   switch (kind_) {
-    case Kind::constant_speed: return 0.0;
+    case Kind::constant_speed:
+      return 0.0;
     case Kind::spin_up:
       if (t >= ramp_) return 0.0;
       return omega_ / ramp_ * (1.0 - std::cos(kTwoPi * t / ramp_));
-    case Kind::free: break;
+    case Kind::free:
+      break;
   }
   throw std::logic_error("RotationProfile::acceleration: the rotor is free, alpha is an unknown");
 }
@@ -105,9 +111,12 @@ double RotationProfile::torque(double t) const {
 
 std::string RotationProfile::describe() const {
   switch (kind_) {
-    case Kind::constant_speed: return fmt::format("constant speed {} rad/s", omega_);
-    case Kind::spin_up: return fmt::format("spin-up to {} rad/s in {} s", omega_, ramp_);
-    case Kind::free: return fmt::format("free rotor ({}), Omega0 = {} rad/s", description_, omega0_);
+    case Kind::constant_speed:
+      return fmt::format("constant speed {} rad/s", omega_);
+    case Kind::spin_up:
+      return fmt::format("spin-up to {} rad/s in {} s", omega_, ramp_);
+    case Kind::free:
+      return fmt::format("free rotor ({}), Omega0 = {} rad/s", description_, omega0_);
   }
   return "?";
 }

@@ -40,8 +40,8 @@ class RotationProfile {
 
  private:
   Kind kind_ = Kind::constant_speed;
-  double omega_ = 0.0;     // constant speed, or the final speed Os of a spin-up
-  double ramp_ = 0.0;      // Ts
+  double omega_ = 0.0;  // constant speed, or the final speed Os of a spin-up
+  double ramp_ = 0.0;   // Ts
   double theta0_ = 0.0;
   double omega0_ = 0.0;
   std::function<double(double)> torque_;

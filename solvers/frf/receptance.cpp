@@ -19,7 +19,8 @@ double norm1(const Eigen::MatrixXd& a) { return a.size() == 0 ? 0.0 : a.cwiseAbs
 
 void require_square(const Eigen::MatrixXd& a, Eigen::Index n, const char* what, const char* caller) {
   if (a.rows() != n || a.cols() != n)
-    throw std::invalid_argument(fmt::format("{}: {} is {} x {}, expected {} x {}", caller, what, a.rows(), a.cols(), n, n));
+    throw std::invalid_argument(
+        fmt::format("{}: {} is {} x {}, expected {} x {}", caller, what, a.rows(), a.cols(), n, n));
 }
 
 }  // namespace
@@ -27,8 +28,9 @@ void require_square(const Eigen::MatrixXd& a, Eigen::Index n, const char* what, 
 Eigen::MatrixXcd ModalReceptance::at(double omega_rad_s) const {
   const Eigen::Index modes = omega.size();
   if (zeta.size() != modes || shapes_out.cols() != modes || shapes_in.cols() != modes)
-    throw std::invalid_argument(fmt::format("ModalReceptance: {} frequencies, {} damping ratios, {} and {} shape columns",
-                                            modes, zeta.size(), shapes_out.cols(), shapes_in.cols()));
+    throw std::invalid_argument(
+        fmt::format("ModalReceptance: {} frequencies, {} damping ratios, {} and {} shape columns", modes, zeta.size(),
+                    shapes_out.cols(), shapes_in.cols()));
   if (residual.size() != 0 && (residual.rows() != shapes_out.rows() || residual.cols() != shapes_in.rows()))
     throw std::invalid_argument(fmt::format("ModalReceptance: residual is {} x {}, expected {} x {}", residual.rows(),
                                             residual.cols(), shapes_out.rows(), shapes_in.rows()));
@@ -40,8 +42,8 @@ Eigen::MatrixXcd ModalReceptance::at(double omega_rad_s) const {
     const double wr = omega[r];
     const Complex den(wr * wr - w * w, 2.0 * zeta[r] * wr * w);
     if (!(std::abs(den) > kSingularDynamicStiffness * (wr * wr + w * w)))
-      throw SolverError(fmt::format("modal receptance: mode {} ({:.9g} Hz, zeta {}) is hit exactly at {:.9g} Hz",
-                                    r + 1, hz(wr), zeta[r], hz(w)));
+      throw SolverError(fmt::format("modal receptance: mode {} ({:.9g} Hz, zeta {}) is hit exactly at {:.9g} Hz", r + 1,
+                                    hz(wr), zeta[r], hz(w)));
     gain[r] = 1.0 / den;
   }
   Eigen::MatrixXcd h = shapes_out.cast<Complex>() * gain.asDiagonal() * shapes_in.transpose().cast<Complex>();
@@ -55,7 +57,8 @@ Eigen::MatrixXd residual_flexibility(const Eigen::MatrixXd& static_flexibility, 
       static_flexibility.rows() != shapes_out.rows() || static_flexibility.cols() != shapes_in.rows())
     throw std::invalid_argument("residual_flexibility: sizes of the flexibility, shapes and frequencies disagree");
   if (omega.size() > 0 && !(omega.minCoeff() > 0.0))
-    throw std::invalid_argument("residual_flexibility: every kept mode needs w_r > 0 (a rigid mode has no static flexibility)");
+    throw std::invalid_argument(
+        "residual_flexibility: every kept mode needs w_r > 0 (a rigid mode has no static flexibility)");
   const Eigen::VectorXd inverse_square = omega.array().square().inverse();
   return static_flexibility - shapes_out * inverse_square.asDiagonal() * shapes_in.transpose();
 }
@@ -74,14 +77,17 @@ Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eig
   const Eigen::Index n = stiffness.rows();
   require_square(stiffness, n, "stiffness", "modal_damping_matrix");
   require_square(mass, n, "mass", "modal_damping_matrix");
-  if (!(zeta >= 0.0) || !std::isfinite(zeta)) throw std::invalid_argument("modal_damping_matrix: zeta must be finite and >= 0");
+  if (!(zeta >= 0.0) || !std::isfinite(zeta))
+    throw std::invalid_argument("modal_damping_matrix: zeta must be finite and >= 0");
   if (n == 0) return Eigen::MatrixXd(0, 0);
 
   // Eigen's generalized solver factors M by LLT without reporting a failure, so check M first.
-  const Eigen::VectorXd mass_eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(mass, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::VectorXd mass_eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(mass, Eigen::EigenvaluesOnly).eigenvalues();
   if (!(mass_eigenvalues[0] > 1e-14 * mass_eigenvalues[n - 1]))
-    throw SolverError(fmt::format("modal_damping_matrix: the mass matrix is not positive definite (eigenvalues {:.3g} .. {:.3g})",
-                                  mass_eigenvalues[0], mass_eigenvalues[n - 1]));
+    throw SolverError(
+        fmt::format("modal_damping_matrix: the mass matrix is not positive definite (eigenvalues {:.3g} .. {:.3g})",
+                    mass_eigenvalues[0], mass_eigenvalues[n - 1]));
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(stiffness, mass);
   if (modes.info() != Eigen::Success) throw SolverError("modal_damping_matrix: the dense eigensolver did not converge");
 
@@ -89,7 +95,8 @@ Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eig
   const Eigen::VectorXd& lambda = modes.eigenvalues();
   const double rigid = 1e-10 * lambda.cwiseAbs().maxCoeff();
   if (lambda[0] < -rigid)
-    throw SolverError(fmt::format("modal_damping_matrix: the stiffness has a negative eigenvalue w^2 = {:.6g}", lambda[0]));
+    throw SolverError(
+        fmt::format("modal_damping_matrix: the stiffness has a negative eigenvalue w^2 = {:.6g}", lambda[0]));
   Eigen::VectorXd modal(n);
   for (Eigen::Index r = 0; r < n; ++r) modal[r] = lambda[r] <= rigid ? 0.0 : 2.0 * zeta * std::sqrt(lambda[r]);
   const Eigen::MatrixXd m_phi = mass * modes.eigenvectors();
@@ -104,7 +111,8 @@ Eigen::VectorXcd direct_response(const Eigen::MatrixXd& stiffness, const Eigen::
   require_square(mass, n, "mass", "direct_response");
   if (damping.size() != 0) require_square(damping, n, "damping", "direct_response");
   if (force.size() != n)
-    throw std::invalid_argument(fmt::format("direct_response: force has {} entries, the model {} DOFs", force.size(), n));
+    throw std::invalid_argument(
+        fmt::format("direct_response: force has {} entries, the model {} DOFs", force.size(), n));
   if (!std::isfinite(omega_rad_s)) throw std::invalid_argument("direct_response: frequency is not finite");
   const double w = omega_rad_s;
 
@@ -121,9 +129,10 @@ Eigen::VectorXcd direct_response(const Eigen::MatrixXd& stiffness, const Eigen::
   Eigen::VectorXcd x;
   if (relative >= kSingularDynamicStiffness) x = lu.solve(force);
   if (!(relative >= kSingularDynamicStiffness) || !x.allFinite())
-    throw SolverError(fmt::format("direct_response: the dynamic stiffness is singular at {:.9g} Hz (reciprocal condition "
-                                  "{:.2e} relative to |K| + w|C| + w^2|M|): an undamped resonance?",
-                                  hz(w), relative));
+    throw SolverError(
+        fmt::format("direct_response: the dynamic stiffness is singular at {:.9g} Hz (reciprocal condition "
+                    "{:.2e} relative to |K| + w|C| + w^2|M|): an undamped resonance?",
+                    hz(w), relative));
   return x;
 }
 

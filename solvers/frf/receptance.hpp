@@ -1,6 +1,7 @@
 // Linear receptances of a damped structure, thesis eqs 3.32 and 3.37-3.39.
 #pragma once
 #include <Eigen/Dense>
+
 #include <complex>
 
 namespace bb {
@@ -13,11 +14,11 @@ inline constexpr double kSingularDynamicStiffness = 1e-14;
 // Modal superposition (eq 3.32): H(w) = sum_r phi_out,r phi_in,r^T / (w_r^2 - w^2 + 2 i zeta_r w_r w)
 // (+ residual, a constant flexibility standing in for the truncated modes).
 struct ModalReceptance {
-  Eigen::VectorXd omega;           // w_r [rad/s], one per kept mode
-  Eigen::VectorXd zeta;            // modal damping ratio per mode
-  Eigen::MatrixXd shapes_out;      // mass-normalized shapes at the response DOFs (n_out x modes)
-  Eigen::MatrixXd shapes_in;       // at the force DOFs (n_in x modes)
-  Eigen::MatrixXd residual;        // n_out x n_in, or empty
+  Eigen::VectorXd omega;       // w_r [rad/s], one per kept mode
+  Eigen::VectorXd zeta;        // modal damping ratio per mode
+  Eigen::MatrixXd shapes_out;  // mass-normalized shapes at the response DOFs (n_out x modes)
+  Eigen::MatrixXd shapes_in;   // at the force DOFs (n_in x modes)
+  Eigen::MatrixXd residual;    // n_out x n_in, or empty
 
   // n_out x n_in receptance [m/N] at w [rad/s]. Throws std::invalid_argument when the sizes
   // disagree and SolverError when w hits an undamped w_r (a rigid mode at w = 0 included).

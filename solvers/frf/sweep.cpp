@@ -20,7 +20,8 @@ struct Evaluator {
     Eigen::VectorXcd v = response(f);
     if (outputs < 0) outputs = v.size();
     if (v.size() != outputs)
-      throw std::runtime_error(fmt::format("sweep: the response has {} outputs at {} Hz, {} before", v.size(), f, outputs));
+      throw std::runtime_error(
+          fmt::format("sweep: the response has {} outputs at {} Hz, {} before", v.size(), f, outputs));
     return v;
   }
 };
@@ -75,11 +76,12 @@ Vertex parabola_vertex(double x0, double x1, double x2, double y0, double y1, do
 
 std::vector<double> fixed_grid(double f_min, double f_max, double step) {
   if (!std::isfinite(f_min) || !std::isfinite(f_max) || !std::isfinite(step) || !(f_min < f_max) || !(step > 0.0))
-    throw std::invalid_argument(fmt::format("fixed_grid: need f_min < f_max and step > 0, got {} .. {} step {}", f_min, f_max, step));
+    throw std::invalid_argument(
+        fmt::format("fixed_grid: need f_min < f_max and step > 0, got {} .. {} step {}", f_min, f_max, step));
   const double steps = std::round((f_max - f_min) / step);
   if (!(steps < static_cast<double>(kMaxGridPoints)))
-    throw std::invalid_argument(fmt::format("fixed_grid: {} .. {} Hz at step {} would take more than {} points", f_min, f_max,
-                                            step, kMaxGridPoints));
+    throw std::invalid_argument(fmt::format("fixed_grid: {} .. {} Hz at step {} would take more than {} points", f_min,
+                                            f_max, step, kMaxGridPoints));
   auto n = static_cast<size_t>(steps);
   const bool lands_on_end = n > 0 && std::abs(f_min + steps * step - f_max) <= step / 1000.0;
   if (!lands_on_end && n > 0 && f_min + steps * step > f_max) --n;
@@ -132,8 +134,9 @@ Sweep adaptive_sweep(const ResponseAt& response, double f_min, double f_max, dou
       const double mid = 0.5 * (f[i] + f[i + 1]);
       if (!(mid > f[i] && mid < f[i + 1])) continue;  // no double between them
       if (++added > kMaxRefinementPoints)
-        throw std::runtime_error(fmt::format("adaptive_sweep: refinement of {} .. {} Hz needs more than {} extra points", f_min,
-                                             f_max, kMaxRefinementPoints));
+        throw std::runtime_error(
+            fmt::format("adaptive_sweep: refinement of {} .. {} Hz needs more than {} extra points", f_min, f_max,
+                        kMaxRefinementPoints));
       new_f.push_back(mid);
       new_values.push_back(evaluate(mid));
       ++added_now;
@@ -197,7 +200,8 @@ Peak largest_sample(const std::vector<double>& frequency_hz, const Eigen::Vector
   const auto i = static_cast<size_t>(k);
   Peak p{.frequency_hz = frequency_hz[i], .amplitude = values[k], .index = static_cast<int>(k)};
   if (k == 0 || k + 1 == values.size() || !(values[k - 1] - 2 * values[k] + values[k + 1] < 0)) return p;
-  const Vertex v = parabola_vertex(frequency_hz[i - 1], frequency_hz[i], frequency_hz[i + 1], values[k - 1], values[k], values[k + 1]);
+  const Vertex v = parabola_vertex(frequency_hz[i - 1], frequency_hz[i], frequency_hz[i + 1], values[k - 1], values[k],
+                                   values[k + 1]);
   p.frequency_hz = v.x;
   p.amplitude = v.y;
   return p;

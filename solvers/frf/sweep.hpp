@@ -1,6 +1,7 @@
 // Frequency sweeps of a linear response and peak finding.
 #pragma once
 #include <Eigen/Dense>
+
 #include <cstddef>
 #include <functional>
 #include <optional>

@@ -61,10 +61,11 @@ HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options)
     const Eigen::MatrixXd koo = model_.stiffness(other_dofs(), other_dofs());
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(koo);
     if (lu.rank() < koo.rows() || lu.rcond() < kSingularRcond)
-      fail(fmt::format("K restricted to the {} non-contact DOFs is singular (rank {}): the model with its contact DOFs "
-                       "clamped has a rigid-body mode. Constrain it (boundary conditions) or list those DOFs in a "
-                       "contact; no ground spring is added",
-                       koo.rows(), lu.rank()));
+      fail(
+          fmt::format("K restricted to the {} non-contact DOFs is singular (rank {}): the model with its contact DOFs "
+                      "clamped has a rigid-body mode. Constrain it (boundary conditions) or list those DOFs in a "
+                      "contact; no ground spring is added",
+                      koo.rows(), lu.rank()));
   }
 
   aft_ = options_.aft;
@@ -159,13 +160,15 @@ Eigen::MatrixXd HarmonicBalance::recover(const Eigen::VectorXd& x, double omega)
     const Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
     if (!(d.rcond() >= kSingularRcond))
       throw SolverError(fmt::format("harmonic balance: D_oo singular at harmonic {}, omega = {} rad/s", h, omega));
-    const Eigen::VectorXcd qc = h == 0 ? Eigen::VectorXcd(xc.col(0).cast<Complex>())
-                                       : Eigen::VectorXcd(xc.col(2 * h - 1).cast<Complex>() -
-                                                          Complex(0.0, 1.0) * xc.col(2 * h).cast<Complex>());
+    const Eigen::VectorXcd qc =
+        h == 0
+            ? Eigen::VectorXcd(xc.col(0).cast<Complex>())
+            : Eigen::VectorXcd(xc.col(2 * h - 1).cast<Complex>() - Complex(0.0, 1.0) * xc.col(2 * h).cast<Complex>());
     const Eigen::VectorXcd qo = d.recover(d.condense(harmonic_load(model_, h)), qc);
     for (size_t i = 0; i < other_dofs().size(); ++i) {
       const Index dof = other_dofs()[i];
-      if (h == 0) q(dof, 0) = qo[static_cast<Index>(i)].real();
+      if (h == 0)
+        q(dof, 0) = qo[static_cast<Index>(i)].real();
       else {
         q(dof, 2 * h - 1) = qo[static_cast<Index>(i)].real();
         q(dof, 2 * h) = -qo[static_cast<Index>(i)].imag();

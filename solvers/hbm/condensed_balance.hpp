@@ -18,6 +18,7 @@
 // corresponds to a_h = Re Z, b_h = -Im Z (Re(Z e^{i h theta}) = a cos + b sin).
 #pragma once
 #include <Eigen/Dense>
+
 #include <limits>
 #include <optional>
 #include <vector>

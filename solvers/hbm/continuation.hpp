@@ -8,6 +8,7 @@
 // and if they fail the result says so (converged == false, with omega and |R|).
 #pragma once
 #include <Eigen/Dense>
+
 #include <functional>
 #include <optional>
 #include <string>
@@ -31,13 +32,13 @@ struct ContinuationOptions {
   // harmonic part of the first solution (or amplitude_scale when > 0).
   double amplitude_scale = 0.0;
   double initial_step = 0.02;
-  double min_step = 1e-6;   // below this after shrinking the continuation stops as failed
+  double min_step = 1e-6;  // below this after shrinking the continuation stops as failed
   double max_step = 0.5;
-  double grow = 1.5;        // step factor after a corrector that converged in <= easy_iterations
-  double shrink = 0.5;      // step factor after a failed corrector
+  double grow = 1.5;    // step factor after a corrector that converged in <= easy_iterations
+  double shrink = 0.5;  // step factor after a failed corrector
   int easy_iterations = 4;
   int max_corrector_iterations = 25;
-  int max_points = 5000;    // hard cap, then failure
+  int max_points = 5000;                                  // hard cap, then failure
   std::optional<Eigen::VectorXd> initial = std::nullopt;  // guess for the first point (e.g. from a static pre-solve)
   std::function<void(const ContinuationProgress&)> progress;  // called per accepted point; may be empty
 };
@@ -47,15 +48,15 @@ struct ContinuationPoint {
   Eigen::VectorXd x;
   double residual = 0.0;  // ||R|| [N]
   int iterations = 0;
-  double step = 0.0;      // scaled arclength from the previous point (0 for the first)
+  double step = 0.0;           // scaled arclength from the previous point (0 for the first)
   double tangent_omega = 0.0;  // d(omega / omega_start)/ds at the point; its sign changes at a fold
 };
 
 struct ContinuationResult {
   std::vector<ContinuationPoint> points;
-  bool converged = false;   // reached omega_end
-  std::string failure;      // with |R| and omega when not converged
-  int turning_points = 0;   // sign changes of d omega / ds along the path
+  bool converged = false;  // reached omega_end
+  std::string failure;     // with |R| and omega when not converged
+  int turning_points = 0;  // sign changes of d omega / ds along the path
   int corrector_iterations = 0, rejected_steps = 0;
   int jumps = 0;  // points reached by stepping over a kink after the step fell below min_step
   double amplitude_scale = 0.0;

@@ -15,7 +15,6 @@ namespace bb::hbm {
 
 namespace {
 
-
 // R, its Jacobian L + dg/dx and (as data) the AFT of every contact at x.
 NewtonPoint balance_at(const HarmonicBalance& s, const HarmonicBalance::Linear& linear, const Eigen::VectorXd& x) {
   HarmonicBalance::Residual r = s.residual(linear, x);
@@ -27,21 +26,19 @@ NewtonPoint balance_at(const HarmonicBalance& s, const HarmonicBalance::Linear& 
   return p;
 }
 
-double norm_of(const NewtonPoint& p) {
-  return p.valid ? p.residual.norm() : std::numeric_limits<double>::infinity();
-}
+double norm_of(const NewtonPoint& p) { return p.valid ? p.residual.norm() : std::numeric_limits<double>::infinity(); }
 
 // One damped Newton solve from x (evaluated: `at`), its result in the solver's terms.
 HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& linear, double omega, Eigen::VectorXd x,
                    NewtonPoint at) {
   const double target = s.residual_tolerance();
   const DampedNewtonOptions options{.tolerance = target,
-                                            .max_iterations = s.options().max_iterations,
-                                            .max_backtracks = s.options().max_backtracks,
-                                            .step_solve = NewtonStepSolve::minimum_norm,
-                                            .levenberg_marquardt = true};
-  DampedNewtonResult r = damped_newton(
-      [&](const Eigen::VectorXd& y) { return balance_at(s, linear, y); }, std::move(x), std::move(at), options);
+                                    .max_iterations = s.options().max_iterations,
+                                    .max_backtracks = s.options().max_backtracks,
+                                    .step_solve = NewtonStepSolve::minimum_norm,
+                                    .levenberg_marquardt = true};
+  DampedNewtonResult r = damped_newton([&](const Eigen::VectorXd& y) { return balance_at(s, linear, y); }, std::move(x),
+                                       std::move(at), options);
   HbmSolution out;
   out.omega = omega;
   out.x = std::move(r.x);
@@ -50,23 +47,26 @@ HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& line
   out.iterations = r.iterations + (r.status == NewtonStatus::line_search_failed ? 1 : 0);
   out.residual = std::isfinite(r.residual) ? r.residual : std::numeric_limits<double>::max();
   switch (r.status) {
-    case NewtonStatus::converged: break;
+    case NewtonStatus::converged:
+      break;
     case NewtonStatus::invalid_point:
-      out.failure = fmt::format("contact evaluation failed (non-finite or slider loop not closed) at omega = {:.6g} rad/s",
-                                omega);
+      out.failure = fmt::format(
+          "contact evaluation failed (non-finite or slider loop not closed) at omega = {:.6g} rad/s", omega);
       break;
     case NewtonStatus::iteration_limit:
-      out.failure = fmt::format("no convergence in {} Newton iterations (|R| = {:.3g} N, target {:.3g} N) at omega = "
-                                "{:.6g} rad/s",
-                                r.iterations, r.residual, target, omega);
+      out.failure = fmt::format(
+          "no convergence in {} Newton iterations (|R| = {:.3g} N, target {:.3g} N) at omega = "
+          "{:.6g} rad/s",
+          r.iterations, r.residual, target, omega);
       break;
     case NewtonStatus::singular_jacobian:
       out.failure = fmt::format("singular Jacobian (|R| = {:.3g} N) at omega = {:.6g} rad/s", r.residual, omega);
       break;
     case NewtonStatus::line_search_failed:
-      out.failure = fmt::format("line search failed after {} halvings (|R| = {:.3g} N, target {:.3g} N) at omega = "
-                                "{:.6g} rad/s",
-                                s.options().max_backtracks, r.residual, target, omega);
+      out.failure = fmt::format(
+          "line search failed after {} halvings (|R| = {:.3g} N, target {:.3g} N) at omega = "
+          "{:.6g} rad/s",
+          s.options().max_backtracks, r.residual, target, omega);
       break;
   }
   if (auto* contacts = std::any_cast<std::vector<contact::AftResult>>(&r.at.data)) out.contacts = std::move(*contacts);
@@ -76,7 +76,8 @@ HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& line
 }  // namespace
 
 HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std::optional<Eigen::VectorXd>& initial) {
-  if (!(omega > 0.0) || !std::isfinite(omega)) throw std::invalid_argument("harmonic balance: omega must be finite and > 0");
+  if (!(omega > 0.0) || !std::isfinite(omega))
+    throw std::invalid_argument("harmonic balance: omega must be finite and > 0");
   const auto linear = s.condense(omega);
   if (!linear) {
     HbmSolution out;
@@ -103,8 +104,8 @@ HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std
   };
   if (initial) {
     if (initial->size() != s.unknowns())
-      throw std::invalid_argument(fmt::format("harmonic balance: initial guess has {} entries, expected {}",
-                                              initial->size(), s.unknowns()));
+      throw std::invalid_argument(
+          fmt::format("harmonic balance: initial guess has {} entries, expected {}", initial->size(), s.unknowns()));
     if (attempt(*initial, balance_at(s, *linear, *initial), HbmStart::initial)) return best;
   }
   // The linear limits only when needed: on a sweep the caller's guess almost always converges.

@@ -2,6 +2,7 @@
 // damped Newton (eq 3.35, linalg/damped_newton.hpp) with the exact AFT Jacobian. Units: SI.
 #pragma once
 #include <Eigen/Dense>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,7 +26,7 @@ struct HbmSolution {
   int iterations = 0;     // Newton iterations taken
   double residual = 0.0;  // ||R|| [N] (finite; the largest double when the start could not be evaluated)
   bool converged = false;
-  std::string failure;  // why not converged (with |R| and omega); empty when converged
+  std::string failure;                       // why not converged (with |R| and omega); empty when converged
   std::vector<contact::AftResult> contacts;  // the AFT of each contact at x
   HbmStart start = HbmStart::initial;        // the start x was reached from
 };

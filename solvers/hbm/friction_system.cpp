@@ -19,7 +19,8 @@ void validate_model(HbmModel& m, const std::string& who) {
   if (!m.mass.allFinite() || !m.stiffness.allFinite() || !m.damping.allFinite()) fail("M, C and K must be finite");
   if (m.static_load.size() == 0) m.static_load = Eigen::VectorXd::Zero(n);
   if (m.harmonic_load.size() == 0) m.harmonic_load = Eigen::VectorXcd::Zero(n);
-  if (m.static_load.size() != n || m.harmonic_load.size() != n) fail(fmt::format("loads must have {} entries (one per DOF)", n));
+  if (m.static_load.size() != n || m.harmonic_load.size() != n)
+    fail(fmt::format("loads must have {} entries (one per DOF)", n));
   if (!m.static_load.allFinite() || !m.harmonic_load.allFinite()) fail("loads must be finite");
   for (size_t k = 0; k < m.contacts.size(); ++k) {
     const ContactElement& e = m.contacts[k];

@@ -21,6 +21,7 @@
 // its contact DOFs clamped is held); each solver checks rcond() against its own threshold.
 #pragma once
 #include <Eigen/Dense>
+
 #include <complex>
 #include <limits>
 #include <string>

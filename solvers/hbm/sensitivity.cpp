@@ -47,10 +47,12 @@ void check_sizes(const HbmModel& model, const std::vector<ModelDerivative>& deri
     const ModelDerivative& d = derivatives[j];
     const auto square = [n](const Eigen::MatrixXd& a) { return a.size() == 0 || (a.rows() == n && a.cols() == n); };
     if (!square(d.mass) || !square(d.damping) || !square(d.stiffness))
-      throw std::invalid_argument(fmt::format("sensitivity: derivative {}: dM, dC and dK must be empty or {} x {}", j, n, n));
+      throw std::invalid_argument(
+          fmt::format("sensitivity: derivative {}: dM, dC and dK must be empty or {} x {}", j, n, n));
     if ((d.static_load.size() != 0 && d.static_load.size() != n) ||
         (d.harmonic_load.size() != 0 && d.harmonic_load.size() != n))
-      throw std::invalid_argument(fmt::format("sensitivity: derivative {}: load derivatives must be empty or have {} entries", j, n));
+      throw std::invalid_argument(
+          fmt::format("sensitivity: derivative {}: load derivatives must be empty or have {} entries", j, n));
     if (!d.laws.empty() && d.laws.size() != model.contacts.size())
       throw std::invalid_argument(fmt::format("sensitivity: derivative {}: {} law derivatives for {} contacts", j,
                                               d.laws.size(), model.contacts.size()));
@@ -64,7 +66,7 @@ Eigen::VectorXcd harmonic(const Eigen::MatrixXd& q, int h) {
 }
 
 struct Sensitivities {
-  Eigen::MatrixXd dx;              // unknowns x P
+  Eigen::MatrixXd dx;               // unknowns x P
   std::vector<Eigen::MatrixXd> dq;  // n x m per parameter, when asked for
 };
 
@@ -74,7 +76,8 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
     throw SolverError("sensitivity: the solution is not converged (" + solution.failure +
                       "); the implicit function theorem needs R = 0");
   if (solution.x.size() != s.unknowns())
-    throw std::invalid_argument(fmt::format("sensitivity: x has {} entries, expected {}", solution.x.size(), s.unknowns()));
+    throw std::invalid_argument(
+        fmt::format("sensitivity: x has {} entries, expected {}", solution.x.size(), s.unknowns()));
   const HbmModel& model = s.model();
   check_sizes(model, derivatives);
   const double omega = solution.omega;
@@ -90,9 +93,10 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
   const HarmonicBalance::ContactForces forces = s.contact_forces(solution.x);
   const Eigen::PartialPivLU<Eigen::MatrixXd> jacobian(linear->operator_ + forces.jacobian);
   if (!(jacobian.rcond() >= kSingularRcond))
-    throw SolverError(fmt::format("sensitivity: the Jacobian is singular at omega = {} rad/s (rcond {:.2e}): dx/dp "
-                                  "is not unique (a free static position?)",
-                                  omega, jacobian.rcond()));
+    throw SolverError(
+        fmt::format("sensitivity: the Jacobian is singular at omega = {} rad/s (rcond {:.2e}): dx/dp "
+                    "is not unique (a free static position?)",
+                    omega, jacobian.rcond()));
   const Eigen::MatrixXd q = s.recover(solution.x, omega);
 
   // dR/dp at fixed x, one column per parameter, in the real layout of the unknowns.
@@ -123,7 +127,8 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
         condensed_o[static_cast<size_t>(h)].push_back(std::move(y));
       }
       // Residual rows (Re r, -Im r) as in HarmonicBalance::condense.
-      if (h == 0) rhs.col(j).head(nc) = rc.real();
+      if (h == 0)
+        rhs.col(j).head(nc) = rc.real();
       else {
         rhs.col(j).segment((2 * h - 1) * nc, nc) = rc.real();
         rhs.col(j).segment(2 * h * nc, nc) = -rc.imag();
@@ -141,7 +146,8 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
     for (size_t k = 0; k < model.contacts.size(); ++k) {
       const ContactElement& e = model.contacts[k];
       Eigen::RowVectorXd at(nc), an(nc);
-      for (Index i = 0; i < nc; ++i) at[i] = e.tangential[c[static_cast<size_t>(i)]], an[i] = e.normal[c[static_cast<size_t>(i)]];
+      for (Index i = 0; i < nc; ++i)
+        at[i] = e.tangential[c[static_cast<size_t>(i)]], an[i] = e.normal[c[static_cast<size_t>(i)]];
       Eigen::VectorXd u = (at * coefficients).transpose();
       const Eigen::VectorXd v = (an * coefficients).transpose();
       u[0] -= e.tangential_offset;
@@ -173,7 +179,8 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
                                    doo_lu[static_cast<size_t>(h)].solve(doc * harmonic(Eigen::MatrixXd(dxc), h));
       for (Index i = 0; i < no; ++i) {
         const Index dof = o[static_cast<size_t>(i)];
-        if (h == 0) dq(dof, 0) = dqo[i].real();
+        if (h == 0)
+          dq(dof, 0) = dqo[i].real();
         else {
           dq(dof, 2 * h - 1) = dqo[i].real();
           dq(dof, 2 * h) = -dqo[i].imag();
@@ -190,10 +197,18 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
 ModelDerivative law_derivative(const HbmModel& model, contact::LawParameter parameter) {
   contact::JenkinsParameters unit;
   switch (parameter) {
-    case contact::law_kn: unit.kn = 1.0; break;
-    case contact::law_kt: unit.kt = 1.0; break;
-    case contact::law_mu: unit.mu = 1.0; break;
-    case contact::law_n0: unit.n0 = 1.0; break;
+    case contact::law_kn:
+      unit.kn = 1.0;
+      break;
+    case contact::law_kt:
+      unit.kt = 1.0;
+      break;
+    case contact::law_mu:
+      unit.mu = 1.0;
+      break;
+    case contact::law_n0:
+      unit.n0 = 1.0;
+      break;
   }
   ModelDerivative d;
   d.laws.assign(model.contacts.size(), unit);

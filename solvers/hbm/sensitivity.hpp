@@ -17,6 +17,7 @@
 // The tangential offsets of the contacts are held fixed.
 #pragma once
 #include <Eigen/Dense>
+
 #include <vector>
 
 #include "contact/aft.hpp"

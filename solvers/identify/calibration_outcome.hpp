@@ -1,9 +1,9 @@
 // What an identification reports: every start of the multi-start fit, the identified values with
 // their covariance, the fitted points before and after, and the cross-check by an independent model.
 #pragma once
+#include <Eigen/Dense>
 #include <toml++/toml.h>
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -28,23 +28,23 @@ struct CalibrationOutcome {
   std::vector<CalibrationStart> starts;  // every start, in order (the first from the case's values)
   size_t best = 0;                       // the start whose result is reported
   CalibrationSpec spec;
-  std::vector<double> values;           // identified values, in spec.parameters order
-  std::vector<double> std_devs;         // 1-sigma, from the covariance at the optimum (NaN if unavailable),
-                                        // scaled by reduced_chi_square when that exceeds 1
-  double reduced_chi_square = NAN;      // 2 cost / (residuals - parameters) at the optimum (with the loss)
-  Eigen::MatrixXd correlation;          // empty if the covariance could not be computed
-  std::vector<std::string> warnings;    // identifiability and convergence warnings
+  std::vector<double> values;                   // identified values, in spec.parameters order
+  std::vector<double> std_devs;                 // 1-sigma, from the covariance at the optimum (NaN if unavailable),
+                                                // scaled by reduced_chi_square when that exceeds 1
+  double reduced_chi_square = NAN;              // 2 cost / (residuals - parameters) at the optimum (with the loss)
+  Eigen::MatrixXd correlation;                  // empty if the covariance could not be computed
+  std::vector<std::string> warnings;            // identifiability and convergence warnings
   std::vector<std::pair<int, double>> history;  // (iteration, cost)
   double initial_cost = 0.0;
   double final_cost = 0.0;
-  int residual_evaluations = 0;         // model runs (a central-difference Jacobian costs 2 n of them)
-  std::string derivatives;              // how the Jacobian was computed ("analytic ..." or "central differences ...")
+  int residual_evaluations = 0;  // model runs (a central-difference Jacobian costs 2 n of them)
+  std::string derivatives;       // how the Jacobian was computed ("analytic ..." or "central differences ...")
   bool converged = false;
-  std::string termination;              // Ceres's report
-  std::vector<FitPoint> before;         // fitted points at the case's start values
-  std::vector<FitPoint> after;          // and at the identified values
+  std::string termination;                   // Ceres's report
+  std::vector<FitPoint> before;              // fitted points at the case's start values
+  std::vector<FitPoint> after;               // and at the identified values
   ResultTables curves_before, curves_after;  // the result tables the measured curves are fitted to
-  toml::table calibrated;               // the case table with the identified values
+  toml::table calibrated;                    // the case table with the identified values
   // The cross-check case run with the identified values (spec.cross_check), every check entry.
   std::vector<CheckEntry> cross_check;
   double cross_check_seconds = 0.0;

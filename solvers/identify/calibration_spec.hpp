@@ -14,17 +14,17 @@
 namespace bb {
 
 struct CalibrationParameter {
-  std::string path;     // dotted path of a number in the case file, e.g. "mesh.dimensions.L_a" (cases/case_parameter.hpp)
-  double lower = 0.0;   // bounds, > 0: parameters are fitted in log space
+  std::string path;  // dotted path of a number in the case file, e.g. "mesh.dimensions.L_a" (cases/case_parameter.hpp)
+  double lower = 0.0;  // bounds, > 0: parameters are fitted in log space
   double upper = 0.0;
-  double start = 0.0;   // the value in the case file
+  double start = 0.0;  // the value in the case file
 };
 
 // One [[calibration.data]] block: a measured curve and the result table that models it.
 struct CalibrationData {
-  std::string name;                  // label in reports (default: the file's stem)
-  MeasuredData data;                 // read and validated when the case is parsed
-  std::string table;                 // result table holding the computed curve
+  std::string name;                            // label in reports (default: the file's stem)
+  MeasuredData data;                           // read and validated when the case is parsed
+  std::string table;                           // result table holding the computed curve
   std::map<std::string, std::string> columns;  // data column -> result column
   // Sigmas when the file has no *_sigma column: relative to each amplitude (peaks, frf), relative
   // to the peak frequency (peaks), absolute in radians (phase), relative to the largest |force| of
@@ -38,12 +38,12 @@ struct CalibrationData {
 
 struct CalibrationSpec {
   std::vector<CalibrationParameter> parameters;
-  std::vector<std::string> fit_checks;  // [[check]] names whose entries become residuals
-  std::vector<CalibrationData> data;    // measured curves whose points become residuals
-  double relative_uncertainty = 0.01;   // sigma of each reference value, relative
+  std::vector<std::string> fit_checks;                // [[check]] names whose entries become residuals
+  std::vector<CalibrationData> data;                  // measured curves whose points become residuals
+  double relative_uncertainty = 0.01;                 // sigma of each reference value, relative
   std::map<std::string, double> check_uncertainties;  // per-check override of relative_uncertainty
-  std::string loss = "none";            // none | huber | cauchy
-  double loss_scale = 1.0;              // in units of sigma
+  std::string loss = "none";                          // none | huber | cauchy
+  double loss_scale = 1.0;                            // in units of sigma
   int max_iterations = 50;
   // Converged when the cost changes by less than this relative amount in a step (Ceres's
   // function_tolerance); models with solver noise (peaks of a nonlinear sweep) need a looser one.

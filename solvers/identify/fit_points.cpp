@@ -18,7 +18,9 @@ double wrap_angle(double a) { return std::remainder(a, 2.0 * std::numbers::pi); 
 
 const ResultTable& table_of(const CalibrationData& d, const ResultTables& tables) {
   const auto it = tables.find(d.table);
-  if (it == tables.end()) throw InputError(fmt::format("{}: calibration data '{}': the case computes no table '{}'", d.at.where(), d.name, d.table));
+  if (it == tables.end())
+    throw InputError(
+        fmt::format("{}: calibration data '{}': the case computes no table '{}'", d.at.where(), d.name, d.table));
   return it->second;
 }
 
@@ -26,7 +28,9 @@ const ResultTable& table_of(const CalibrationData& d, const ResultTables& tables
 Eigen::VectorXd result_column(const CalibrationData& d, const ResultTable& t, const std::string& data_column) {
   const std::string& name = d.columns.at(data_column);
   const auto c = t.column_index(name);
-  if (!c) throw InputError(fmt::format("{}: calibration data '{}': table '{}' has no column '{}'", d.at.where(), d.name, d.table, name));
+  if (!c)
+    throw InputError(
+        fmt::format("{}: calibration data '{}': table '{}' has no column '{}'", d.at.where(), d.name, d.table, name));
   return t.values.col(*c) * column_to_si(name);
 }
 
@@ -46,13 +50,17 @@ std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t
     Index row = -1;
     for (Index r = 0; r < force.size(); ++r)
       if (std::abs(force[r] - f) <= 1e-9 * std::abs(f)) row = r;
-    if (row < 0) throw InputError(fmt::format("{}: force level {:g} N has no row in table '{}' (case {})", m.where(i), f, d.table, d.at.where()));
+    if (row < 0)
+      throw InputError(fmt::format("{}: force level {:g} N has no row in table '{}' (case {})", m.where(i), f, d.table,
+                                   d.at.where()));
     for (const char* q : {"frequency", "amplitude"}) {
       if (!d.columns.count(q)) continue;
       const bool is_frequency = std::string(q) == "frequency";
       const double measured = m.column(q)[i];
-      const double sigma = sigma_of(m, q, i, (is_frequency ? d.frequency_uncertainty : d.amplitude_uncertainty) * measured);
-      points.push_back({d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, computed.at(q)[row], sigma, false, {}});
+      const double sigma =
+          sigma_of(m, q, i, (is_frequency ? d.frequency_uncertainty : d.amplitude_uncertainty) * measured);
+      points.push_back(
+          {d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, computed.at(q)[row], sigma, false, {}});
     }
   }
   return points;
@@ -79,13 +87,15 @@ std::vector<Eigen::VectorXd> dlog_columns(const CalibrationData& d, const Result
   return out;
 }
 
-std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t, const std::vector<std::string>& parameters) {
+std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
+                                 const std::vector<std::string>& parameters) {
   const MeasuredData& m = d.data;
   const Eigen::VectorXd f = result_column(d, t, "frequency");
   for (Index r = 1; r < f.size(); ++r)
     if (!(f[r] > f[r - 1]))
-      throw InputError(fmt::format("{}: calibration data '{}': the frequencies of table '{}' do not increase (row {}); use a grid sweep",
-                                   d.at.where(), d.name, d.table, r + 1));
+      throw InputError(fmt::format(
+          "{}: calibration data '{}': the frequencies of table '{}' do not increase (row {}); use a grid sweep",
+          d.at.where(), d.name, d.table, r + 1));
   // The fitted columns and their sensitivities, read once for all rows.
   struct Fitted {
     Eigen::VectorXd y;
@@ -105,8 +115,9 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
     const double fq = m.column("frequency")[i];
     const double slack = f.size() ? 1e-9 * std::abs(f[f.size() - 1]) : 0.0;  // the grid's ends carry rounding
     if (f.size() < 2 || fq < f[0] - slack || fq > f[f.size() - 1] + slack)
-      throw InputError(fmt::format("{}: frequency {:g} Hz lies outside the computed range [{:g}, {:g}] Hz of table '{}' (case {})", m.where(i), fq,
-                                   f.size() ? f[0] : NAN, f.size() ? f[f.size() - 1] : NAN, d.table, d.at.where()));
+      throw InputError(
+          fmt::format("{}: frequency {:g} Hz lies outside the computed range [{:g}, {:g}] Hz of table '{}' (case {})",
+                      m.where(i), fq, f.size() ? f[0] : NAN, f.size() ? f[f.size() - 1] : NAN, d.table, d.at.where()));
     for (const char* q : {"amplitude", "phase"}) {
       if (!d.columns.count(q)) continue;
       const bool phase = std::string(q) == "phase";
@@ -118,7 +129,8 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
       // interpolation (the unwrapping adds constants only).
       std::vector<double> gradient;
       for (const Eigen::VectorXd& dy : c.dlog) gradient.push_back(interpolate(f, dy, at) / sigma);
-      points.push_back({d.name, fmt::format("{} at {:.6g} Hz", q, fq), q, fq, measured, interpolate(f, c.y, at), sigma, phase, std::move(gradient)});
+      points.push_back({d.name, fmt::format("{} at {:.6g} Hz", q, fq), q, fq, measured, interpolate(f, c.y, at), sigma,
+                        phase, std::move(gradient)});
     }
   }
   return points;
@@ -143,7 +155,8 @@ std::vector<Branch> branches_of(const Eigen::VectorXd& u, const Eigen::VectorXd&
     b.direction = dir;
     b.u.resize(static_cast<Index>(pts.size()));
     b.force.resize(static_cast<Index>(pts.size()));
-    for (size_t k = 0; k < pts.size(); ++k) b.u[static_cast<Index>(k)] = pts[k].first, b.force[static_cast<Index>(k)] = pts[k].second;
+    for (size_t k = 0; k < pts.size(); ++k)
+      b.u[static_cast<Index>(k)] = pts[k].first, b.force[static_cast<Index>(k)] = pts[k].second;
     out.push_back(std::move(b));
     begin = end;
   };
@@ -177,11 +190,18 @@ std::vector<FitPoint> hysteresis_points(const CalibrationData& d, const ResultTa
       if (gap < best_gap) best_gap = gap, computed = interpolate(b.u, b.force, std::clamp(um[i], lo, hi));
     }
     if (!std::isfinite(computed))
-      throw InputError(fmt::format("{}: table '{}' has no loop branch moving {} to compare with (case {})", m.where(i), d.table,
-                                   dir > 0 ? "forward" : "backward", d.at.where()));
+      throw InputError(fmt::format("{}: table '{}' has no loop branch moving {} to compare with (case {})", m.where(i),
+                                   d.table, dir > 0 ? "forward" : "backward", d.at.where()));
     const double sigma = sigma_of(m, "force", i, d.force_uncertainty * scale);
-    points.push_back({d.name, fmt::format("force at {:.4g} m ({})", um[i], dir > 0 ? "loading" : "unloading"), "tangential_force", um[i], tm[i],
-                      computed, sigma, false, {}});
+    points.push_back({d.name,
+                      fmt::format("force at {:.4g} m ({})", um[i], dir > 0 ? "loading" : "unloading"),
+                      "tangential_force",
+                      um[i],
+                      tm[i],
+                      computed,
+                      sigma,
+                      false,
+                      {}});
   }
   return points;
 }
@@ -193,17 +213,28 @@ double FitPoint::misfit() const { return angle ? wrap_angle(computed - measured)
 std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal) {
   std::vector<FitPoint> points;
   for (const CheckEntry& e : entries)
-    points.push_back({e.group, e.name.substr(std::min(e.name.size(), e.group.size() + 2)), "check", static_cast<double>(e.key), e.reference, e.computed,
-                      uncertainty_of(cal, e.group) * std::abs(e.reference), false, {}});
+    points.push_back({e.group,
+                      e.name.substr(std::min(e.name.size(), e.group.size() + 2)),
+                      "check",
+                      static_cast<double>(e.key),
+                      e.reference,
+                      e.computed,
+                      uncertainty_of(cal, e.group) * std::abs(e.reference),
+                      false,
+                      {}});
   return points;
 }
 
-std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables, const std::vector<std::string>& parameters) {
+std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables,
+                                  const std::vector<std::string>& parameters) {
   const ResultTable& t = table_of(d, tables);
   switch (d.data.kind) {
-    case DataKind::peaks: return peak_points(d, t);
-    case DataKind::frf: return frf_points(d, t, parameters);
-    case DataKind::hysteresis: return hysteresis_points(d, t);
+    case DataKind::peaks:
+      return peak_points(d, t);
+    case DataKind::frf:
+      return frf_points(d, t, parameters);
+    case DataKind::hysteresis:
+      return hysteresis_points(d, t);
   }
   return {};
 }

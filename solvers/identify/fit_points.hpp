@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "identify/calibration_spec.hpp"
 #include "checks/checks.hpp"
+#include "identify/calibration_spec.hpp"
 #include "results/table.hpp"
 
 namespace bb {
@@ -24,7 +24,7 @@ struct FitPoint {
   // log-sensitivity columns (analysis/hbm_analysis.hpp); empty otherwise.
   std::vector<double> gradient;
 
-  double misfit() const;    // computed - measured (wrapped for angles)
+  double misfit() const;  // computed - measured (wrapped for angles)
   double residual() const { return misfit() / sigma; }
 };
 

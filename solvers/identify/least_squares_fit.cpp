@@ -118,7 +118,8 @@ std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
 // The covariance at the optimum x (log values) as standard deviations and correlations, with the
 // Birge ratio: a fit worse than the stated uncertainties allow (reduced chi-square above 1, e.g.
 // outliers or an imperfect model) scales the covariance up by it.
-void add_covariance(ceres::Problem& problem, std::vector<double>& x, const CalibrationSpec& cal, CalibrationOutcome& out) {
+void add_covariance(ceres::Problem& problem, std::vector<double>& x, const CalibrationSpec& cal,
+                    CalibrationOutcome& out) {
   const size_t n = x.size();
   out.std_devs.assign(n, NAN);
   ceres::Covariance::Options cov_options;
@@ -153,28 +154,34 @@ void add_covariance(ceres::Problem& problem, std::vector<double>& x, const Calib
 void warn_other_minima(CalibrationOutcome& out, size_t n) {
   const CalibrationStart& chosen = out.starts[out.best];
   const double chi2_95[] = {3.84, 5.99, 7.81, 9.49, 11.07, 12.59, 14.07, 15.51, 16.92, 18.31};
-  const double quantile = n <= 10 ? chi2_95[n - 1] : static_cast<double>(n) + 2.0 * std::sqrt(2.0 * static_cast<double>(n));
+  const double quantile =
+      n <= 10 ? chi2_95[n - 1] : static_cast<double>(n) + 2.0 * std::sqrt(2.0 * static_cast<double>(n));
   const double scale = std::isfinite(out.reduced_chi_square) ? std::max(1.0, out.reduced_chi_square) : 1.0;
   for (size_t s = 0; s < out.starts.size(); ++s) {
-    if (s == out.best || !out.starts[s].converged || 2.0 * (out.starts[s].final_cost - chosen.final_cost) / scale >= quantile) continue;
+    if (s == out.best || !out.starts[s].converged ||
+        2.0 * (out.starts[s].final_cost - chosen.final_cost) / scale >= quantile)
+      continue;
     bool same = true;
     for (size_t i = 0; i < n; ++i) same = same && std::abs(std::log(out.starts[s].values[i] / chosen.values[i])) < 0.05;
     if (!same)
-      out.warnings.push_back(fmt::format("start {} reaches a cost ({:.6g}) within the 95 % confidence region of the best ({:.6g}) at other "
-                                         "values: the minimum is not unique", s + 1, out.starts[s].final_cost, chosen.final_cost));
+      out.warnings.push_back(fmt::format(
+          "start {} reaches a cost ({:.6g}) within the 95 % confidence region of the best ({:.6g}) at other "
+          "values: the minimum is not unique",
+          s + 1, out.starts[s].final_cost, chosen.final_cost));
   }
 }
 
 }  // namespace
 
-CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator& evaluate, bool analytic, int residuals,
-                                  const FitProgress& progress) {
+CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator& evaluate, bool analytic,
+                                  int residuals, const FitProgress& progress) {
   CalibrationOutcome out;
   out.spec = cal;
   const size_t n = cal.parameters.size();
   const std::vector<std::vector<double>> starts = start_points(cal);
   ceres::NumericDiffOptions diff;
-  diff.relative_step_size = cal.derivative_step;  // default 1e-4: above the eigensolver's 1e-10 noise, below the model's curvature
+  diff.relative_step_size =
+      cal.derivative_step;  // default 1e-4: above the eigensolver's 1e-10 noise, below the model's curvature
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
   const auto build = [&](std::vector<double>& x, ceres::Problem& problem) {
     ceres::CostFunction* cost = nullptr;
@@ -223,7 +230,8 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     r.iterations = static_cast<int>(summary.iterations.size());
     r.converged = summary.termination_type == ceres::CONVERGENCE;
     out.starts.push_back(r);
-    if (s == 0 || (r.converged && (!out.starts[out.best].converged || r.final_cost < out.starts[out.best].final_cost)) ||
+    if (s == 0 ||
+        (r.converged && (!out.starts[out.best].converged || r.final_cost < out.starts[out.best].final_cost)) ||
         (!out.starts[out.best].converged && r.final_cost < out.starts[out.best].final_cost)) {
       out.best = s;
       x = xs;
@@ -247,7 +255,8 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   add_covariance(problem, x, cal, out);
   for (size_t i = 0; i < n; ++i) {
     const double span = std::log(cal.parameters[i].upper / cal.parameters[i].lower);
-    if (std::abs(x[i] - std::log(cal.parameters[i].lower)) < 1e-3 * span || std::abs(x[i] - std::log(cal.parameters[i].upper)) < 1e-3 * span)
+    if (std::abs(x[i] - std::log(cal.parameters[i].lower)) < 1e-3 * span ||
+        std::abs(x[i] - std::log(cal.parameters[i].upper)) < 1e-3 * span)
       out.warnings.push_back(fmt::format("'{}' ended on a bound ({:.6g}): the optimum may lie outside the stated range",
                                          cal.parameters[i].path, out.values[i]));
   }

@@ -83,40 +83,69 @@ struct Column {
 
 const char* dimension_name(Dimension d) {
   switch (d) {
-    case length: return "length";
-    case force: return "force";
-    case frequency: return "frequency";
-    case angle: return "angle";
-    case compliance: return "compliance";
-    case stiffness: return "stiffness";
-    case time: return "time";
-    case dimensionless: return "dimensionless";
+    case length:
+      return "length";
+    case force:
+      return "force";
+    case frequency:
+      return "frequency";
+    case angle:
+      return "angle";
+    case compliance:
+      return "compliance";
+    case stiffness:
+      return "stiffness";
+    case time:
+      return "time";
+    case dimensionless:
+      return "dimensionless";
   }
   return "?";
 }
 
 const char* data_kind_name(DataKind k) {
   switch (k) {
-    case DataKind::peaks: return "peaks";
-    case DataKind::frf: return "frf";
-    case DataKind::hysteresis: return "hysteresis";
+    case DataKind::peaks:
+      return "peaks";
+    case DataKind::frf:
+      return "frf";
+    case DataKind::hysteresis:
+      return "hysteresis";
   }
   return "?";
 }
 
 std::optional<Unit> parse_unit(std::string_view symbol) {
   constexpr double pi = std::numbers::pi;
-  struct Known { std::string_view symbol; Dimension dimension; double to_si; };
-  static constexpr Known table[] = {
-      {"m", length, 1.0},          {"mm", length, 1e-3},        {"um", length, 1e-6},
-      {"nm", length, 1e-9},        {"N", force, 1.0},           {"kN", force, 1e3},
-      {"mN", force, 1e-3},         {"Hz", frequency, 1.0},      {"kHz", frequency, 1e3},
-      {"rad/s", frequency, 1.0 / (2.0 * pi)},                   {"rpm", frequency, 1.0 / 60.0},
-      {"deg", angle, pi / 180.0},  {"rad", angle, 1.0},         {"m/N", compliance, 1.0},
-      {"mm/N", compliance, 1e-3},  {"um/N", compliance, 1e-6},  {"nm/N", compliance, 1e-9},
-      {"N/m", stiffness, 1.0},     {"N/mm", stiffness, 1e3},    {"N/um", stiffness, 1e6},
-      {"s", time, 1.0},            {"ms", time, 1e-3},          {"-", dimensionless, 1.0},
-      {"1", dimensionless, 1.0}};
+  struct Known {
+    std::string_view symbol;
+    Dimension dimension;
+    double to_si;
+  };
+  static constexpr Known table[] = {{"m", length, 1.0},
+                                    {"mm", length, 1e-3},
+                                    {"um", length, 1e-6},
+                                    {"nm", length, 1e-9},
+                                    {"N", force, 1.0},
+                                    {"kN", force, 1e3},
+                                    {"mN", force, 1e-3},
+                                    {"Hz", frequency, 1.0},
+                                    {"kHz", frequency, 1e3},
+                                    {"rad/s", frequency, 1.0 / (2.0 * pi)},
+                                    {"rpm", frequency, 1.0 / 60.0},
+                                    {"deg", angle, pi / 180.0},
+                                    {"rad", angle, 1.0},
+                                    {"m/N", compliance, 1.0},
+                                    {"mm/N", compliance, 1e-3},
+                                    {"um/N", compliance, 1e-6},
+                                    {"nm/N", compliance, 1e-9},
+                                    {"N/m", stiffness, 1.0},
+                                    {"N/mm", stiffness, 1e3},
+                                    {"N/um", stiffness, 1e6},
+                                    {"s", time, 1.0},
+                                    {"ms", time, 1e-3},
+                                    {"-", dimensionless, 1.0},
+                                    {"1", dimensionless, 1.0}};
   // The micro sign (U+00B5) and the Greek mu (U+03BC) look alike; both mean "u".
   std::string_view micro_rest;
   for (const std::string_view micro : {"\xC2\xB5", "\xCE\xBC"})
@@ -131,7 +160,7 @@ std::optional<Dimension> column_dimension(std::string_view column) {
   // Longest suffixes first: "_n_per_m" also ends in "_m", "_m_per_n" in "_n".
   static constexpr std::pair<std::string_view, Dimension> suffixes[] = {
       {"_n_per_m", stiffness}, {"_per_n", compliance}, {"_hz", frequency}, {"_deg", angle},
-      {"_rad", angle},         {"_m", length},         {"_n", force},       {"_s", time}};
+      {"_rad", angle},         {"_m", length},         {"_n", force},      {"_s", time}};
   for (const auto& [suffix, dim] : suffixes)
     if (column.ends_with(suffix)) return dim;
   return std::nullopt;
@@ -168,7 +197,8 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
     const std::string name(trim(cell.substr(0, open)));
     if (name.empty()) throw fail(header_line, fmt::format("header cell '{}' has no column name", cell));
     if (open == std::string_view::npos || !cell.ends_with(']'))
-      throw fail(header_line, fmt::format("column '{}' has no '[unit]' ('{}'); write it as '{} [<unit>]'", name, cell, name));
+      throw fail(header_line,
+                 fmt::format("column '{}' has no '[unit]' ('{}'); write it as '{} [<unit>]'", name, cell, name));
     const std::string_view symbol = trim(cell.substr(open + 1, cell.size() - open - 2));
     const ColumnSpec* spec = nullptr;
     for (const auto& s : specs)
@@ -176,15 +206,16 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
     if (!spec) {
       std::vector<std::string> known;
       for (const auto& s : specs) known.emplace_back(s.name);
-      throw fail(header_line, fmt::format("unknown column '{}'; a {} file has: {}", name, data_kind_name(kind),
-                                          join_names(known)));
+      throw fail(header_line,
+                 fmt::format("unknown column '{}'; a {} file has: {}", name, data_kind_name(kind), join_names(known)));
     }
     for (const auto& c : cols)
       if (c.name == name) throw fail(header_line, fmt::format("column '{}' appears twice", name));
     const auto unit = parse_unit(symbol);
     if (!unit)
       throw fail(header_line, fmt::format("column '{}': unknown unit '{}' (known: m mm um µm nm, N kN mN, Hz kHz "
-                                          "rad/s rpm, deg rad, m/N mm/N um/N nm/N, N/m N/mm N/um, s ms)", name, symbol));
+                                          "rad/s rpm, deg rad, m/N mm/N um/N nm/N, N/m N/mm N/um, s ms)",
+                                          name, symbol));
     if (std::find(spec->dims.begin(), spec->dims.end(), unit->dimension) == spec->dims.end())
       throw fail(header_line, fmt::format("column '{}' has unit '{}' ({}); it needs a {} unit", name, symbol,
                                           dimension_name(unit->dimension), dims_text(spec->dims)));
@@ -198,15 +229,15 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
   };
   for (const auto& s : specs)
     if (s.required && !find(s.name))
-      throw fail(header_line, fmt::format("missing column '{} [<{} unit>]'; the file has: {}", s.name, dims_text(s.dims),
-                                          join_names(names)));
+      throw fail(header_line, fmt::format("missing column '{} [<{} unit>]'; the file has: {}", s.name,
+                                          dims_text(s.dims), join_names(names)));
   for (const auto& c : cols) {
     if (!c.spec->sigma_of) continue;
     const Column* of = find(c.spec->sigma_of);
     if (!of) throw fail(header_line, fmt::format("column '{}' needs the column '{}'", c.name, c.spec->sigma_of));
     if (of->unit.dimension != c.unit.dimension)
-      throw fail(header_line, fmt::format("column '{}' has unit '{}' ({}); it needs a {} unit, like column '{}'", c.name,
-                                          c.unit.symbol, dimension_name(c.unit.dimension),
+      throw fail(header_line, fmt::format("column '{}' has unit '{}' ({}); it needs a {} unit, like column '{}'",
+                                          c.name, c.unit.symbol, dimension_name(c.unit.dimension),
                                           dimension_name(of->unit.dimension), of->name));
   }
 
@@ -227,8 +258,8 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
   const size_t n = data.lines.size();
   const size_t min_rows = kind == DataKind::hysteresis ? 8 : 1;
   if (n < min_rows)
-    throw fail(header_line, fmt::format("{} data rows; a {} file needs at least {}{}", n, data_kind_name(kind), min_rows,
-                                        kind == DataKind::hysteresis ? " (one loop, in time order)" : ""));
+    throw fail(header_line, fmt::format("{} data rows; a {} file needs at least {}{}", n, data_kind_name(kind),
+                                        min_rows, kind == DataKind::hysteresis ? " (one loop, in time order)" : ""));
   const auto line_of = [&](size_t r) { return static_cast<unsigned>(data.lines[r]); };
   if (kind == DataKind::frf) {
     const Column& f = *find("frequency");
@@ -244,11 +275,13 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
       for (size_t q = 0; q < r; ++q)
         if (f.written[r] == f.written[q])
           throw fail(line_of(r), fmt::format("column 'force': level {} {} repeats the level of line {} (one row per "
-                                             "force level)", f.written[r], f.unit.symbol, line_of(q)));
+                                             "force level)",
+                                             f.written[r], f.unit.symbol, line_of(q)));
   }
 
   for (auto& c : cols) {
-    data.columns[c.name] = Eigen::Map<const Eigen::VectorXd>(c.written.data(), static_cast<Eigen::Index>(n)) * c.unit.to_si;
+    data.columns[c.name] =
+        Eigen::Map<const Eigen::VectorXd>(c.written.data(), static_cast<Eigen::Index>(n)) * c.unit.to_si;
     data.units[c.name] = c.unit;
   }
   return data;

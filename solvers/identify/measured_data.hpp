@@ -16,6 +16,7 @@
 // Every cell must be a finite number; amplitudes and sigmas must be positive.
 #pragma once
 #include <Eigen/Dense>
+
 #include <filesystem>
 #include <map>
 #include <optional>

@@ -27,10 +27,11 @@ void write_synthetic_data(const ResultTable& table, const SyntheticOptions& o, c
     if (!unit) throw InputError(fmt::format("synthetic data: unknown unit '{}' for column '{}'", c.unit, c.data));
     const std::optional<Dimension> dim = column_dimension(c.result);
     if (dim && *dim != unit->dimension)
-      throw InputError(fmt::format("synthetic data: '{}' is a {} but unit '{}' is a {}", c.result, dimension_name(*dim), c.unit,
-                                   dimension_name(unit->dimension)));
+      throw InputError(fmt::format("synthetic data: '{}' is a {} but unit '{}' is a {}", c.result, dimension_name(*dim),
+                                   c.unit, dimension_name(unit->dimension)));
     Eigen::VectorXd v(n);
-    for (Index i = 0; i < n; ++i) v[i] = table.values(rows[static_cast<size_t>(i)], *col) * column_to_si(c.result) / unit->to_si;
+    for (Index i = 0; i < n; ++i)
+      v[i] = table.values(rows[static_cast<size_t>(i)], *col) * column_to_si(c.result) / unit->to_si;
     values.push_back(v);
     units.push_back(*unit);
   }
@@ -65,14 +66,16 @@ void write_synthetic_data(const ResultTable& table, const SyntheticOptions& o, c
       for (Index i : outliers) v[i] *= o.outlier_factor;
     sigma_columns.push_back(sigma);
     // The loop's sigma column is force_sigma (measured_data.hpp).
-    sigma_header.push_back(fmt::format("{}_sigma [{}]", name == "tangential_force" ? "force" : name, o.columns[k].unit));
+    sigma_header.push_back(
+        fmt::format("{}_sigma [{}]", name == "tangential_force" ? "force" : name, o.columns[k].unit));
   }
   std::ofstream out(file);
   if (!out) throw InputError(fmt::format("{}: cannot write", file.string()));
   std::istringstream lines(o.provenance);
   for (std::string line; std::getline(lines, line);) out << "# " << line << '\n';
-  out << fmt::format("# synthetic {} data from table '{}': Gaussian noise {:g} (relative), seed {}, {} outlier(s) x {:g}\n",
-                     data_kind_name(o.kind), table.name, o.noise, o.seed, outliers.size(), o.outlier_factor);
+  out << fmt::format(
+      "# synthetic {} data from table '{}': Gaussian noise {:g} (relative), seed {}, {} outlier(s) x {:g}\n",
+      data_kind_name(o.kind), table.name, o.noise, o.seed, outliers.size(), o.outlier_factor);
   header.insert(header.end(), sigma_header.begin(), sigma_header.end());
   for (size_t k = 0; k < header.size(); ++k) out << (k ? "," : "") << header[k];
   out << '\n';

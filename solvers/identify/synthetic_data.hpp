@@ -26,8 +26,8 @@ struct SyntheticOptions {
   int outliers = 0;              // rows whose amplitude or force is scaled by outlier_factor
   double outlier_factor = 1.3;
   unsigned seed = 1;
-  int every = 1;                 // keep every n-th row of the table
-  std::string provenance;        // written as '#' comment lines
+  int every = 1;           // keep every n-th row of the table
+  std::string provenance;  // written as '#' comment lines
 };
 
 // Writes `file` with sigma columns stating the noise used (so a fit weights the points by it).

@@ -20,7 +20,9 @@ bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& st
       step = cod.solve(-at.residual);
       break;
     }
-    case NewtonStepSolve::partial_pivot_lu: step = at.jacobian.partialPivLu().solve(-at.residual); break;
+    case NewtonStepSolve::partial_pivot_lu:
+      step = at.jacobian.partialPivLu().solve(-at.residual);
+      break;
     case NewtonStepSolve::full_pivot_lu: {
       const Eigen::FullPivLU<Eigen::MatrixXd> lu(at.jacobian);
       if (!lu.isInvertible()) return false;

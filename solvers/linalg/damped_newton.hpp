@@ -14,6 +14,7 @@
 // never returns a non-finite x or residual.
 #pragma once
 #include <Eigen/Dense>
+
 #include <any>
 #include <functional>
 #include <string>

@@ -56,8 +56,8 @@ InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, con
   id.job = 4;  // analysis and factorization
   dmumps_c(&id);
   if (id.infog[0] < 0) {
-    out.message = fmt::format("the LDL^T factorization of K - sigma M failed (MUMPS INFOG(1) = {}, INFOG(2) = {})", id.infog[0],
-                              id.infog[1]);
+    out.message = fmt::format("the LDL^T factorization of K - sigma M failed (MUMPS INFOG(1) = {}, INFOG(2) = {})",
+                              id.infog[0], id.infog[1]);
   } else {
     out.negative = id.infog[11];  // INFOG(12): negative pivots
     out.zero = id.infog[27];      // INFOG(28): null pivots found

@@ -3,8 +3,8 @@
 // sequence property). The modal solver uses it to prove that Lanczos found every mode below its cut.
 #pragma once
 #include <Eigen/Sparse>
-#include <string>
 
+#include <string>
 
 namespace bb {
 

@@ -28,10 +28,12 @@ class ShiftInvertOp {
     Eigen::SparseMatrix<double> shifted = k_ - sigma * m_;
     shifted.makeCompressed();
     const FactorStatus s = factor_.factorize(shifted);
-    if (!s.ok) throw SolverError(fmt::format("modal shift-invert: K - sigma M with sigma = {:.6g}: {}", sigma, s.message));
+    if (!s.ok)
+      throw SolverError(fmt::format("modal shift-invert: K - sigma M with sigma = {:.6g}: {}", sigma, s.message));
   }
   void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = factor_.solve(Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(x_in, rows())));
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()) =
+        factor_.solve(Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(x_in, rows())));
   }
 
  private:
@@ -46,8 +48,8 @@ ModalSolution lanczos_run(const Eigen::SparseMatrix<double>& stiffness, const Ei
   const double sigma = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
   ShiftInvertOp op(stiffness, mass, options.ordering);
   Spectra::SparseSymMatProd<double> bop(mass);
-  Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert>
-      eigs(op, bop, nev, ncv, sigma);
+  Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert> eigs(
+      op, bop, nev, ncv, sigma);
   eigs.init();
   const auto found = eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
                                   Spectra::SortRule::SmallestAlge);
@@ -144,13 +146,15 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
       count = eigenvalues_below(stiffness, mass, shift);
     }
     sturm_seconds += count.seconds;
-    if (!count.ok) throw SolverError(fmt::format("modal completeness check at {:.6g} rad^2/s^2: {}", shift, count.message));
+    if (!count.ok)
+      throw SolverError(fmt::format("modal completeness check at {:.6g} rad^2/s^2: {}", shift, count.message));
     const auto found = static_cast<int>((sol.eigenvalues.array() <= shift).count());
     if (found == count.negative || run == options.max_reruns || nev >= most) {
       if (found != count.negative)
-        throw SolverError(fmt::format("Lanczos found {} eigenvalues below {:.6g} Hz but the Sturm count of K - sigma M "
-                                      "is {} after {} runs: a mode would be missing", found,
-                                      std::sqrt(std::max(shift, 0.0)) / (2 * std::numbers::pi), count.negative, run + 1));
+        throw SolverError(
+            fmt::format("Lanczos found {} eigenvalues below {:.6g} Hz but the Sturm count of K - sigma M "
+                        "is {} after {} runs: a mode would be missing",
+                        found, std::sqrt(std::max(shift, 0.0)) / (2 * std::numbers::pi), count.negative, run + 1));
       sol = first_modes(std::move(sol), std::max(options.n_modes, count.negative));
       sol.sturm_count = count.negative;
       sol.sturm_shift = shift;

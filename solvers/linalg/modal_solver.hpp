@@ -27,15 +27,15 @@ struct ModalOptions {
 };
 
 struct ModalSolution {
-  Eigen::VectorXd eigenvalues;   // w^2 [rad^2/s^2], ascending
-  Eigen::MatrixXd shapes;        // mass-normalized, one per column
+  Eigen::VectorXd eigenvalues;  // w^2 [rad^2/s^2], ascending
+  Eigen::MatrixXd shapes;       // mass-normalized, one per column
   int iterations = 0;
   int converged_modes = 0;
-  double max_residual = 0.0;     // max_k ||K x - w^2 M x|| / ((||K|| + w^2 ||M||) ||x||)
+  double max_residual = 0.0;  // max_k ||K x - w^2 M x|| / ((||K|| + w^2 ||M||) ||x||)
   // Completeness: eigenvalues below sturm_shift by the inertia of K - sturm_shift M (-1 = not
   // checked), Lanczos runs needed to find them all, and the cost of the counts.
   int sturm_count = -1;
-  double sturm_shift = 0.0;      // [rad^2/s^2]
+  double sturm_shift = 0.0;  // [rad^2/s^2]
   int lanczos_runs = 0;
   double sturm_seconds = 0.0;
 };
@@ -43,7 +43,7 @@ struct ModalSolution {
 // The lowest options.n_modes modes, or more when a repeated eigenvalue straddles the n-th (the whole
 // cluster is returned). Throws SolverError when Lanczos does not converge, the shifted matrix cannot
 // be factored, or the Sturm count still disagrees after max_reruns larger runs.
-ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
-                           const Eigen::SparseMatrix<double>& mass, const ModalOptions& options);
+ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                           const ModalOptions& options);
 
 }  // namespace bb

@@ -108,7 +108,8 @@ FactorStatus SpdFactorization::factorize(const Eigen::SparseMatrix<double>& a) {
   status.rcond = cholmod_rcond(impl_->factor, c);
   if (!(status.rcond >= kSingularRcond)) {
     status.weakest_column = weakest_pivot_column(impl_->factor, c);
-    status.message = fmt::format("matrix is numerically singular (pivot ratio {:.3g} < {:.0e})", status.rcond, kSingularRcond);
+    status.message =
+        fmt::format("matrix is numerically singular (pivot ratio {:.3g} < {:.0e})", status.rcond, kSingularRcond);
     return status;
   }
   status.ok = true;
@@ -116,7 +117,8 @@ FactorStatus SpdFactorization::factorize(const Eigen::SparseMatrix<double>& a) {
 }
 
 Eigen::MatrixXd SpdFactorization::solve(const Eigen::MatrixXd& b) const {
-  if (!impl_->factor || b.rows() != rows_) throw std::logic_error("SpdFactorization::solve without a valid factorization");
+  if (!impl_->factor || b.rows() != rows_)
+    throw std::logic_error("SpdFactorization::solve without a valid factorization");
   cholmod_common* c = &impl_->common;
   cholmod_dense rhs{};
   rhs.nrow = static_cast<size_t>(b.rows());
@@ -133,8 +135,6 @@ Eigen::MatrixXd SpdFactorization::solve(const Eigen::MatrixXd& b) const {
   return out;
 }
 
-Eigen::VectorXd SpdFactorization::solve(const Eigen::VectorXd& b) const {
-  return solve(Eigen::MatrixXd(b)).col(0);
-}
+Eigen::VectorXd SpdFactorization::solve(const Eigen::VectorXd& b) const { return solve(Eigen::MatrixXd(b)).col(0); }
 
 }  // namespace bb

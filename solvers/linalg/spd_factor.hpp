@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,9 +12,9 @@ namespace bb {
 
 struct FactorStatus {
   bool ok = false;
-  double rcond = 0.0;            // CHOLMOD's estimate: (min |L_ii| / max |L_ii|)^2
-  int weakest_column = -1;       // original column of the failed or smallest pivot, when !ok
-  std::string message;           // why it failed
+  double rcond = 0.0;       // CHOLMOD's estimate: (min |L_ii| / max |L_ii|)^2
+  int weakest_column = -1;  // original column of the failed or smallest pivot, when !ok
+  std::string message;      // why it failed
 };
 
 // Fill-reducing ordering. CHOLMOD's own default tries AMD and then METIS and keeps the better;

@@ -48,7 +48,8 @@ std::vector<Facet> boundary_facets_within(const Mesh& mesh, const std::vector<in
   for (int n : nodes) in[static_cast<size_t>(n)] = 1;
   std::vector<Facet> out;
   for (Facet& f : boundary_facets(mesh))
-    if (std::all_of(f.nodes.begin(), f.nodes.end(), [&](int n) { return in[static_cast<size_t>(n)] != 0; })) out.push_back(std::move(f));
+    if (std::all_of(f.nodes.begin(), f.nodes.end(), [&](int n) { return in[static_cast<size_t>(n)] != 0; }))
+      out.push_back(std::move(f));
   return out;
 }
 

@@ -2,6 +2,7 @@
 // only. Distributed loads act on them and plots draw them (the skin of a solid).
 #pragma once
 #include <Eigen/Dense>
+
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -9,10 +10,10 @@
 namespace bb {
 
 struct Facet {
-  int block = 0;              // index into mesh.blocks
-  Eigen::Index element = 0;   // row of the block's connectivity
-  int local = 0;              // facet number in the element (mesh/element_topology.hpp)
-  std::vector<int> nodes;     // internal node indices, in the order of facet_nodes()
+  int block = 0;             // index into mesh.blocks
+  Eigen::Index element = 0;  // row of the block's connectivity
+  int local = 0;             // facet number in the element (mesh/element_topology.hpp)
+  std::vector<int> nodes;    // internal node indices, in the order of facet_nodes()
 };
 
 // Facets are matched by their corner nodes, so two elements glued at coincident nodes share theirs

@@ -71,14 +71,15 @@ void read_elements(const fs::path& nodes_csv, const fs::path& elements_csv, Mesh
   std::vector<std::array<int, NN>> conn;
   read_columns<NN + 1>(elements_csv, node_columns<NN + 1>("n"), [&](const auto& row, unsigned line) {
     const long id = parse_cell<long>(row[0], elements_csv, line, "element id");
-    if (!seen.insert(id).second) throw InputError(fmt::format("{}:{}: duplicate element id {}", elements_csv.string(), line, id));
+    if (!seen.insert(id).second)
+      throw InputError(fmt::format("{}:{}: duplicate element id {}", elements_csv.string(), line, id));
     std::array<int, NN> c{};
     for (unsigned a = 0; a < NN; ++a) {
       const long node = parse_cell<long>(row[a + 1], elements_csv, line, "node id");
       c[a] = mesh.index_of(node);
       if (c[a] < 0)
-        throw InputError(fmt::format("{}:{}: element {} uses node {}, which is not in {}", elements_csv.string(),
-                                     line, id, node, nodes_csv.filename().string()));
+        throw InputError(fmt::format("{}:{}: element {} uses node {}, which is not in {}", elements_csv.string(), line,
+                                     id, node, nodes_csv.filename().string()));
     }
     if (mesh.dim == 2 && signed_area(mesh, c.data(), static_cast<int>(NN)) <= 0.0)
       throw InputError(fmt::format("{}:{}: element {} is inverted or degenerate (list its nodes counterclockwise)",
@@ -102,26 +103,33 @@ Mesh read_csv_mesh(const fs::path& nodes_csv, const fs::path& elements_csv, Elem
   auto add_node = [&](const std::string& id_text, const std::array<double, 3>& p, unsigned line) {
     const long id = parse_cell<long>(id_text, nodes_csv, line, "node id");
     for (double c : p)
-      if (!std::isfinite(c)) throw InputError(fmt::format("{}:{}: node {} has a non-finite coordinate", nodes_csv.string(), line, id));
-    if (!seen.insert(id).second) throw InputError(fmt::format("{}:{}: duplicate node id {}", nodes_csv.string(), line, id));
+      if (!std::isfinite(c))
+        throw InputError(fmt::format("{}:{}: node {} has a non-finite coordinate", nodes_csv.string(), line, id));
+    if (!seen.insert(id).second)
+      throw InputError(fmt::format("{}:{}: duplicate node id {}", nodes_csv.string(), line, id));
     mesh.node_ids.push_back(id);
     xyz.emplace_back(p[0], p[1], p[2]);
   };
   if (mesh.dim == 2) {
     read_columns<3>(nodes_csv, {"id", "x", "y"}, [&](const auto& row, unsigned line) {
-      add_node(row[0], {parse_cell<double>(row[1], nodes_csv, line, "coordinate"),
-                        parse_cell<double>(row[2], nodes_csv, line, "coordinate"), 0.0}, line);
+      add_node(row[0],
+               {parse_cell<double>(row[1], nodes_csv, line, "coordinate"),
+                parse_cell<double>(row[2], nodes_csv, line, "coordinate"), 0.0},
+               line);
     });
   } else {
     read_columns<4>(nodes_csv, {"id", "x", "y", "z"}, [&](const auto& row, unsigned line) {
-      add_node(row[0], {parse_cell<double>(row[1], nodes_csv, line, "coordinate"),
-                        parse_cell<double>(row[2], nodes_csv, line, "coordinate"),
-                        parse_cell<double>(row[3], nodes_csv, line, "coordinate")}, line);
+      add_node(row[0],
+               {parse_cell<double>(row[1], nodes_csv, line, "coordinate"),
+                parse_cell<double>(row[2], nodes_csv, line, "coordinate"),
+                parse_cell<double>(row[3], nodes_csv, line, "coordinate")},
+               line);
     });
   }
   if (mesh.node_ids.empty()) throw InputError(fmt::format("{}: the mesh has no nodes", nodes_csv.string()));
   mesh.coords.resize(static_cast<Eigen::Index>(xyz.size()), mesh.dim);
-  for (size_t i = 0; i < xyz.size(); ++i) mesh.coords.row(static_cast<Eigen::Index>(i)) = xyz[i].head(mesh.dim).transpose();
+  for (size_t i = 0; i < xyz.size(); ++i)
+    mesh.coords.row(static_cast<Eigen::Index>(i)) = xyz[i].head(mesh.dim).transpose();
   mesh.rebuild_index();
 
   const int nn = nodes_per_element(element);
@@ -132,15 +140,23 @@ Mesh read_csv_mesh(const fs::path& nodes_csv, const fs::path& elements_csv, Elem
   ElementBlock block;
   block.type = element;
   switch (nn) {
-    case 3: read_elements<3>(nodes_csv, elements_csv, mesh, block); break;
-    case 4: read_elements<4>(nodes_csv, elements_csv, mesh, block); break;
-    case 8: read_elements<8>(nodes_csv, elements_csv, mesh, block); break;
-    case 20: read_elements<20>(nodes_csv, elements_csv, mesh, block); break;
-    default: throw InputError("unsupported element for CSV meshes");
+    case 3:
+      read_elements<3>(nodes_csv, elements_csv, mesh, block);
+      break;
+    case 4:
+      read_elements<4>(nodes_csv, elements_csv, mesh, block);
+      break;
+    case 8:
+      read_elements<8>(nodes_csv, elements_csv, mesh, block);
+      break;
+    case 20:
+      read_elements<20>(nodes_csv, elements_csv, mesh, block);
+      break;
+    default:
+      throw InputError("unsupported element for CSV meshes");
   }
   mesh.blocks.push_back(std::move(block));
   return mesh;
 }
-
 
 }  // namespace bb

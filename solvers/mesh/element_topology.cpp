@@ -21,11 +21,16 @@ constexpr ElementTopology kHex20{"hex20", 3, 20, 8, kHexEdges, kHexFaces};
 
 const ElementTopology& topology(ElementType type) {
   switch (type) {
-    case ElementType::q4: return kQ4;
-    case ElementType::cst: return kCst;
-    case ElementType::hex8: return kHex8;
-    case ElementType::hex8i: return kHex8i;
-    case ElementType::hex20: return kHex20;
+    case ElementType::q4:
+      return kQ4;
+    case ElementType::cst:
+      return kCst;
+    case ElementType::hex8:
+      return kHex8;
+    case ElementType::hex8i:
+      return kHex8i;
+    case ElementType::hex20:
+      return kHex20;
   }
   return kQ4;  // unreachable: every enumerator is handled above (-Wswitch)
 }

@@ -182,7 +182,7 @@ struct RawBlock {
 struct RawNodes {
   std::vector<long> tags;  // file order
   std::vector<Eigen::Vector3d> coords;
-  std::vector<int> lines;  // line of each node's coordinates
+  std::vector<int> lines;               // line of each node's coordinates
   std::unordered_map<long, int> index;  // tag -> position in file order
 };
 
@@ -196,8 +196,7 @@ void read_mesh_format(MshLexer& lex) {
                                        "(gmsh -format msh41, or Mesh.MshFileVersion = 4.1)",
                                        version));
   const int file_type = lex.next_int("the MSH file type");
-  if (file_type != 0)
-    lex.fail("binary MSH files are not supported; write the mesh as ASCII (Mesh.Binary = 0)");
+  if (file_type != 0) lex.fail("binary MSH files are not supported; write the mesh as ASCII (Mesh.Binary = 0)");
   lex.next_int("the MSH data size");
   lex.expect("$EndMeshFormat");
 }
@@ -306,7 +305,8 @@ void read_elements(MshLexer& lex, std::vector<RawBlock>& blocks) {
     total += in_block;
     blocks.push_back(std::move(block));
   }
-  if (total != n_elements) lex.fail(fmt::format("$Elements announces {} elements but its blocks hold {}", n_elements, total));
+  if (total != n_elements)
+    lex.fail(fmt::format("$Elements announces {} elements but its blocks hold {}", n_elements, total));
   lex.expect("$EndElements");
 }
 
@@ -372,15 +372,18 @@ GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_h
   std::vector<int> internal(nodes.tags.size(), -1);
   auto node_position = [&](const RawElement& e, long tag) {
     const auto it = nodes.index.find(tag);
-    if (it == nodes.index.end()) lex.fail(e.line, fmt::format("element {} uses node {}, which is not defined in $Nodes", e.tag, tag));
+    if (it == nodes.index.end())
+      lex.fail(e.line, fmt::format("element {} uses node {}, which is not defined in $Nodes", e.tag, tag));
     return it->second;
   };
   for (const RawBlock& b : blocks) {
     if (b.entity_dim != dim) continue;
     if (!mesh_element(b.type, dim, linear_hex))
-      lex.fail(b.line, fmt::format("Gmsh element type {} is not supported in a {}D mesh (supported: {})", b.type, dim,
-                                   dim == 3 ? "5 = 8-node and 17 = 20-node hexahedra; for 20 nodes set Mesh.SecondOrderIncomplete = 1"
-                                            : "2 = 3-node triangles and 3 = 4-node quadrangles"));
+      lex.fail(b.line,
+               fmt::format(
+                   "Gmsh element type {} is not supported in a {}D mesh (supported: {})", b.type, dim,
+                   dim == 3 ? "5 = 8-node and 17 = 20-node hexahedra; for 20 nodes set Mesh.SecondOrderIncomplete = 1"
+                            : "2 = 3-node triangles and 3 = 4-node quadrangles"));
     for (const RawElement& e : b.elements)
       for (long tag : e.nodes) internal[static_cast<size_t>(node_position(e, tag))] = 0;
   }
@@ -411,7 +414,8 @@ GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_h
   for (const RawBlock& b : blocks) {
     if (b.entity_dim != dim) continue;
     const ElementType type = *mesh_element(b.type, dim, linear_hex);
-    auto it = std::find_if(mesh.blocks.begin(), mesh.blocks.end(), [type](const ElementBlock& eb) { return eb.type == type; });
+    auto it = std::find_if(mesh.blocks.begin(), mesh.blocks.end(),
+                           [type](const ElementBlock& eb) { return eb.type == type; });
     if (it == mesh.blocks.end()) {
       mesh.blocks.push_back(ElementBlock{type, {}, {}});
       it = std::prev(mesh.blocks.end());
@@ -438,7 +442,8 @@ GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_h
     const auto entity = physicals.find({b.entity_dim, b.entity_tag});
     if (entity == physicals.end()) {
       if (have_entities)
-        lex.fail(b.line, fmt::format("element block on {}D entity {}, which $Entities does not list", b.entity_dim, b.entity_tag));
+        lex.fail(b.line, fmt::format("element block on {}D entity {}, which $Entities does not list", b.entity_dim,
+                                     b.entity_tag));
       continue;
     }
     for (int physical : entity->second) {
@@ -449,7 +454,8 @@ GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_h
         for (long tag : e.nodes) {
           const int n = internal[static_cast<size_t>(node_position(e, tag))];
           if (n < 0)
-            lex.fail(e.line, fmt::format("node {} of physical group '{}' belongs to no {}D element of the mesh", tag, group, dim));
+            lex.fail(e.line, fmt::format("node {} of physical group '{}' belongs to no {}D element of the mesh", tag,
+                                         group, dim));
           members.insert(n);
         }
     }

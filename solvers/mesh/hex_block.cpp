@@ -16,17 +16,35 @@ namespace {
 // Parameter-space position of the hex20 nodes in the doubled lattice of one cell (corners at 0
 // and 2, mid-edge nodes at 1), in the node order of mesh/mesh.hpp.
 constexpr std::array<std::array<int, 3>, 8> kCorner = {{
-    {0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 2}, {2, 0, 2}, {2, 2, 2}, {0, 2, 2},
+    {0, 0, 0},
+    {2, 0, 0},
+    {2, 2, 0},
+    {0, 2, 0},
+    {0, 0, 2},
+    {2, 0, 2},
+    {2, 2, 2},
+    {0, 2, 2},
 }};
 // Mid-edge nodes 9-20 (1-based): the corner pairs of each edge, 0-based.
 constexpr std::array<std::array<int, 2>, 12> kHex20Edge = {{
-    {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
+    {0, 1},
+    {1, 2},
+    {2, 3},
+    {3, 0},
+    {4, 5},
+    {5, 6},
+    {6, 7},
+    {7, 4},
+    {0, 4},
+    {1, 5},
+    {2, 6},
+    {3, 7},
 }};
 
 Eigen::Vector3d trilinear(const std::array<Eigen::Vector3d, 8>& c, double s, double r, double t) {
   return (1 - s) * (1 - r) * (1 - t) * c[0] + s * (1 - r) * (1 - t) * c[1] + s * r * (1 - t) * c[2] +
-         (1 - s) * r * (1 - t) * c[3] + (1 - s) * (1 - r) * t * c[4] + s * (1 - r) * t * c[5] +
-         s * r * t * c[6] + (1 - s) * r * t * c[7];
+         (1 - s) * r * (1 - t) * c[3] + (1 - s) * (1 - r) * t * c[4] + s * (1 - r) * t * c[5] + s * r * t * c[6] +
+         (1 - s) * r * t * c[7];
 }
 
 // Jacobian determinant of the trilinear map at a corner of the unit cube: the triple product of
@@ -157,7 +175,8 @@ Mesh merge_meshes(const std::vector<Mesh>& parts, double tolerance, std::vector<
       throw std::invalid_argument("merge_meshes: mesh " + std::to_string(p) + " has dimension " +
                                   std::to_string(part.dim) + ", mesh 0 has " + std::to_string(dim));
     if (part.coords.rows() != part.n_nodes() || (part.n_nodes() > 0 && part.coords.cols() != dim))
-      throw std::invalid_argument("merge_meshes: mesh " + std::to_string(p) + " has coordinates that do not match its nodes");
+      throw std::invalid_argument("merge_meshes: mesh " + std::to_string(p) +
+                                  " has coordinates that do not match its nodes");
     total_nodes += part.n_nodes();
     if (part.coords.size() > 0) extent = std::max(extent, part.coords.cwiseAbs().maxCoeff());
   }
@@ -237,13 +256,14 @@ Mesh merge_meshes(const std::vector<Mesh>& parts, double tolerance, std::vector<
         if (b.type != type) continue;
         if (b.conn.cols() != per_element)
           throw std::invalid_argument("merge_meshes: a " + std::string(element_name(type)) + " block of mesh " +
-                                      std::to_string(p) + " has " + std::to_string(b.conn.cols()) + " nodes per element");
+                                      std::to_string(p) + " has " + std::to_string(b.conn.cols()) +
+                                      " nodes per element");
         for (Eigen::Index r = 0; r < b.conn.rows(); ++r, ++e) {
           for (int a = 0; a < per_element; ++a) {
             const int local = b.conn(r, a);
             if (local < 0 || local >= parts[p].n_nodes())
-              throw std::invalid_argument("merge_meshes: mesh " + std::to_string(p) + " has an element with node index " +
-                                          std::to_string(local) + " out of range");
+              throw std::invalid_argument("merge_meshes: mesh " + std::to_string(p) +
+                                          " has an element with node index " + std::to_string(local) + " out of range");
             block.conn(e, a) = origin[p][static_cast<size_t>(local)];
           }
           // A tolerance larger than an element would collapse it; that is never what was meant.

@@ -12,9 +12,9 @@ struct HexBlockSpec {
   // Corners in hex8 node order: 1-4 the face at the first end of the third direction,
   // counterclockwise seen from the other end; 5-8 above 1-4.
   std::array<Eigen::Vector3d, 8> corners;
-  int nx = 1;  // divisions along corner 1 -> 2
-  int ny = 1;  // along corner 1 -> 4
-  int nz = 1;  // along corner 1 -> 5
+  int nx = 1;                               // divisions along corner 1 -> 2
+  int ny = 1;                               // along corner 1 -> 4
+  int nz = 1;                               // along corner 1 -> 5
   ElementType element = ElementType::hex8;  // hex8, hex8i or hex20
   long first_node_id = 1;
   long first_element_id = 1;

@@ -2,6 +2,7 @@
 // Internal code indexes nodes 0..n-1; ids are kept only to talk to the user.
 #pragma once
 #include <Eigen/Dense>
+
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -13,11 +14,11 @@ namespace bb {
 // 1-4 on the bottom face (zeta = -1) counterclockwise seen from +zeta, 5-8 above them; hex20 adds
 // the mid-edge nodes 9-12 (edges 1-2, 2-3, 3-4, 4-1), 13-16 (5-6, 6-7, 7-8, 8-5), 17-20 (1-5, 2-6, 3-7, 4-8).
 enum class ElementType {
-  q4,    // plane-stress bilinear quadrilateral
-  cst,   // plane-stress constant-strain triangle
-  hex8,  // trilinear hexahedron, 2x2x2 Gauss
-  hex8i, // hex8 with incompatible (bubble) modes, as Ansys SOLID45 by default
-  hex20, // serendipity hexahedron, 3x3x3 Gauss (Ansys SOLID95, CalculiX C3D20)
+  q4,     // plane-stress bilinear quadrilateral
+  cst,    // plane-stress constant-strain triangle
+  hex8,   // trilinear hexahedron, 2x2x2 Gauss
+  hex8i,  // hex8 with incompatible (bubble) modes, as Ansys SOLID45 by default
+  hex20,  // serendipity hexahedron, 3x3x3 Gauss (Ansys SOLID95, CalculiX C3D20)
 };
 
 int element_dimension(ElementType type);
@@ -27,7 +28,7 @@ std::string_view element_name(ElementType type);
 
 struct ElementBlock {
   ElementType type = ElementType::q4;
-  std::vector<long> ids;                                                    // user element ids
+  std::vector<long> ids;                                                     // user element ids
   Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> conn;  // internal node indices
 };
 

@@ -46,8 +46,9 @@ Mesh build_two_blade(const MeshSpec& spec, std::map<std::string, std::vector<int
       }
     }
     if (best_distance > kOnNode)
-      throw InputError(fmt::format("{}: two_blade mesh: point {} ({:.6g}, {:.6g}, {:.6g}) has no node (nearest {:.3g} m away)",
-                                   spec.at.where(), name, point.x(), point.y(), point.z(), best_distance));
+      throw InputError(
+          fmt::format("{}: two_blade mesh: point {} ({:.6g}, {:.6g}, {:.6g}) has no node (nearest {:.3g} m away)",
+                      spec.at.where(), name, point.x(), point.y(), point.z(), best_distance));
     sets[name] = {best};
   }
   constexpr double kOnFace = 1e-9;  // [m]
@@ -55,7 +56,8 @@ Mesh build_two_blade(const MeshSpec& spec, std::map<std::string, std::vector<int
     std::vector<int>& nodes = sets[name];
     for (int n = 0; n < mesh.n_nodes(); ++n)
       if (on(mesh.coords(n, 0), mesh.coords(n, 1))) nodes.push_back(n);
-    if (nodes.empty()) throw InputError(fmt::format("{}: two_blade mesh: set '{}' matches no node", spec.at.where(), name));
+    if (nodes.empty())
+      throw InputError(fmt::format("{}: two_blade mesh: set '{}' matches no node", spec.at.where(), name));
   };
   select("fixture_base", [&](double, double y) { return std::abs(y - article.fixture_base_y) <= kOnFace; });
   select("fixture_left", [&](double x, double) { return std::abs(x - article.fixture_left_x) <= kOnFace; });
@@ -86,7 +88,9 @@ std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set, const No
   } else if (!set.ids.empty()) {
     for (long id : set.ids) {
       const int n = mesh.index_of(id);
-      if (n < 0) throw InputError(fmt::format("{}: node set '{}' names node {}, which is not in the mesh", set.at.where(), set.name, id));
+      if (n < 0)
+        throw InputError(
+            fmt::format("{}: node set '{}' names node {}, which is not in the mesh", set.at.where(), set.name, id));
       nodes.push_back(n);
     }
   } else {
@@ -117,21 +121,26 @@ Model build_model(const ModelSpec& spec) {
       require_file(spec.mesh.elements_csv, spec.mesh.at);
       model.mesh = read_csv_mesh(spec.mesh.nodes_csv, spec.mesh.elements_csv, spec.mesh.element);
       break;
-    case MeshSpec::Kind::mapped_quad: model.mesh = generate_mapped_quad(spec.mesh.mapped); break;
+    case MeshSpec::Kind::mapped_quad:
+      model.mesh = generate_mapped_quad(spec.mesh.mapped);
+      break;
     case MeshSpec::Kind::hex_blocks: {
       std::vector<Mesh> parts;
       for (const HexBlockSpec& b : spec.mesh.blocks) parts.push_back(generate_hex_block(b));
       model.mesh = parts.size() == 1 ? std::move(parts.front()) : merge_meshes(parts, spec.mesh.merge_tolerance);
       break;
     }
-    case MeshSpec::Kind::two_blade: model.mesh = build_two_blade(spec.mesh, model.node_sets); break;
+    case MeshSpec::Kind::two_blade:
+      model.mesh = build_two_blade(spec.mesh, model.node_sets);
+      break;
     case MeshSpec::Kind::blade_section: {
       BladeSection b = blade_section(spec.mesh.two_blade, spec.mesh.blade_divisions, spec.mesh.element);
       model.mesh = std::move(b.mesh);
       model.node_sets = std::move(b.sets);
       break;
     }
-    case MeshSpec::Kind::none: return model;  // the analysis brings its own matrices
+    case MeshSpec::Kind::none:
+      return model;  // the analysis brings its own matrices
     case MeshSpec::Kind::gmsh: {
       require_file(spec.mesh.gmsh_file, spec.mesh.at);
       // Which element an 8-node Gmsh hexahedron becomes (plane meshes: triangles and quads map by type).
@@ -164,13 +173,15 @@ Model build_model(const ModelSpec& spec) {
   }
   for (const SurfaceLoadSpec& l : spec.surface_loads) {
     const auto set = model.node_sets.find(l.load.set);
-    if (set == model.node_sets.end()) throw InputError(fmt::format("{}: '{}': unknown node set '{}'", l.at.where(), l.key, l.load.set));
+    if (set == model.node_sets.end())
+      throw InputError(fmt::format("{}: '{}': unknown node set '{}'", l.at.where(), l.key, l.load.set));
     if (boundary_facets_within(model.mesh, set->second).empty())
-      throw InputError(fmt::format("{}: '{}': node set '{}' holds no boundary {} of the mesh ({})", l.at.where(), l.key, l.load.set,
-                                   model.mesh.dim == 2 ? "edge" : "face",
-                                   model.mesh.dim == 2 ? "an element edge on the boundary is loaded when both its nodes lie in the set"
-                                                       : "an element face on the boundary is loaded when all its nodes lie in the set, "
-                                                         "a hex20 face's mid-edge nodes too"));
+      throw InputError(fmt::format("{}: '{}': node set '{}' holds no boundary {} of the mesh ({})", l.at.where(), l.key,
+                                   l.load.set, model.mesh.dim == 2 ? "edge" : "face",
+                                   model.mesh.dim == 2
+                                       ? "an element edge on the boundary is loaded when both its nodes lie in the set"
+                                       : "an element face on the boundary is loaded when all its nodes lie in the set, "
+                                         "a hex20 face's mid-edge nodes too"));
     model.surface_loads.push_back(l.load);
   }
   for (const BodyLoadSpec& l : spec.body_loads) model.body_loads.push_back(l.load);

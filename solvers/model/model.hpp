@@ -51,8 +51,8 @@ struct BodyLoad {
   Kind kind = Kind::gravity;
   Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // gravity [m/s^2]
   double speed = 0.0;                                      // centrifugal: Omega [rad/s]
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();          // unit vector
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();         // a point of the axis [m] (2D: z = 0)
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();         // unit vector
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();        // a point of the axis [m] (2D: z = 0)
 };
 
 struct Model {

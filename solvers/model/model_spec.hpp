@@ -18,14 +18,22 @@
 namespace bb {
 
 struct MeshSpec {
-  enum class Kind { mapped_quad, csv, hex_blocks, gmsh, two_blade, blade_section, none } kind = Kind::mapped_quad;  // none: matrices only
+  enum class Kind {
+    mapped_quad,
+    csv,
+    hex_blocks,
+    gmsh,
+    two_blade,
+    blade_section,
+    none
+  } kind = Kind::mapped_quad;  // none: matrices only
   MappedQuadSpec mapped;
-  std::filesystem::path nodes_csv;     // csv: columns id,x,y[,z]
-  std::filesystem::path elements_csv;  // csv: columns id,n1..nN
-  std::vector<HexBlockSpec> blocks;    // hex_blocks: merged at coincident nodes
-  double merge_tolerance = 1e-9;       // [m]
-  std::filesystem::path gmsh_file;     // gmsh: .msh 4.1 ASCII
-  TwoBladeDimensions two_blade;        // two_blade and blade_section: the thesis's test article, validated
+  std::filesystem::path nodes_csv;        // csv: columns id,x,y[,z]
+  std::filesystem::path elements_csv;     // csv: columns id,n1..nN
+  std::vector<HexBlockSpec> blocks;       // hex_blocks: merged at coincident nodes
+  double merge_tolerance = 1e-9;          // [m]
+  std::filesystem::path gmsh_file;        // gmsh: .msh 4.1 ASCII
+  TwoBladeDimensions two_blade;           // two_blade and blade_section: the thesis's test article, validated
   BladeSectionDivisions blade_divisions;  // blade_section: the chapter-2 blade's divisions
   ElementType element = ElementType::q4;
   SourceLocation at;

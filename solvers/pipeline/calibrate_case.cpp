@@ -53,8 +53,9 @@ std::vector<std::string> parameter_paths(const CalibrationSpec& cal) {
 
 // The fitted points of the case with the given parameter values, and the tables of its curves;
 // with `gradients`, frf points carry d r / d log p from the tables' sensitivity columns.
-std::vector<FitPoint> fitted_points(const CalibratedCase& base, const CalibrationSpec& cal, const std::vector<double>& values,
-                                    ResultTables* curves = nullptr, bool gradients = false) {
+std::vector<FitPoint> fitted_points(const CalibratedCase& base, const CalibrationSpec& cal,
+                                    const std::vector<double>& values, ResultTables* curves = nullptr,
+                                    bool gradients = false) {
   const CaseSpec spec = with_values(base, values);
   const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model));
   std::vector<FitPoint> points;
@@ -84,7 +85,8 @@ std::variant<CalibratedCase, std::string> analytic_case(const CalibratedCase& ba
   if (!hbm) return std::string("the analysis is not hbm");
   for (const CaseParameter& p : base.parameters) {
     const std::optional<HbmParameter> h = hbm_parameter(p);
-    if (!h) return fmt::format("the analysis has no sensitivities for these parameters ('{}' is not differentiated)", p.path);
+    if (!h)
+      return fmt::format("the analysis has no sensitivities for these parameters ('{}' is not differentiated)", p.path);
     if (const std::optional<std::string> why = unsupported_sensitivity(*hbm, *h))
       return fmt::format("the analysis has no sensitivities for these parameters ('{}': {})", p.path, *why);
     const auto same = [&](const HbmParameter& q) { return q.label == h->label; };
@@ -103,7 +105,8 @@ void set_number(toml::table& root, const std::string& path, double value) {
   }
   const size_t dot = path.rfind('.');  // an integer: replaced by a float in its parent table
   toml::node* parent = dot == std::string::npos ? &root : node_at_path(root, path.substr(0, dot));
-  if (!parent || !parent->is_table()) throw InputError(fmt::format("calibration path '{}' is inside an array of numbers", path));
+  if (!parent || !parent->is_table())
+    throw InputError(fmt::format("calibration path '{}' is inside an array of numbers", path));
   parent->as_table()->insert_or_assign(path.substr(dot == std::string::npos ? 0 : dot + 1), value);
 }
 
@@ -119,7 +122,8 @@ void cross_check(const CalibrationSpec& cal, CalibrationOutcome& out) {
   }
   out.cross_check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!out.cross_check_passed())
-    out.warnings.push_back(fmt::format("the cross-check {} fails with the identified values", cal.cross_check.string()));
+    out.warnings.push_back(
+        fmt::format("the cross-check {} fails with the identified values", cal.cross_check.string()));
 }
 
 }  // namespace
@@ -139,10 +143,12 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   const auto analytic_base = analytic_case(base, *cal);
   const CalibratedCase* sensitivity_base = std::get_if<CalibratedCase>(&analytic_base);
   ResultTables curves_before;
-  const std::vector<FitPoint> before = fitted_points(sensitivity_base ? *sensitivity_base : base, *cal, start, &curves_before,
-                                                     sensitivity_base != nullptr);
+  const std::vector<FitPoint> before = fitted_points(sensitivity_base ? *sensitivity_base : base, *cal, start,
+                                                     &curves_before, sensitivity_base != nullptr);
   for (const FitPoint& p : before)
-    if (!(p.sigma > 0.0)) throw InputError(fmt::format("{}: fitted entry '{}' has a zero reference or uncertainty", cal->at.where(), p.label));
+    if (!(p.sigma > 0.0))
+      throw InputError(
+          fmt::format("{}: fitted entry '{}' has a zero reference or uncertainty", cal->at.where(), p.label));
   std::string numeric_reason = sensitivity_base ? "" : std::get<std::string>(analytic_base);
   if (sensitivity_base)
     for (const FitPoint& p : before)

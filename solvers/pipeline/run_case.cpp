@@ -1,13 +1,12 @@
 #include "pipeline/run_case.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <optional>
-
-#include <unistd.h>
 
 #include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
@@ -31,7 +30,8 @@ namespace fs = std::filesystem;
 void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
   // Long sweeps report progress on a terminal only (one line, rewritten in place).
   HbmProgress progress;
-  if (isatty(STDERR_FILENO)) progress = [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
+  if (isatty(STDERR_FILENO))
+    progress = [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
   const AnalysisResults results = run_analysis(spec.analysis, model, progress);
   if (progress) std::fputs("\r\033[K", stderr);
   describe_analysis(spec.analysis, results, model, run);
@@ -60,8 +60,9 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     const auto* mine = std::get_if<ModalOutcome>(&results.outcome);
     const auto* theirs = std::get_if<ModalOutcome>(&other.results.outcome);
     if (!mine || !theirs)
-      throw InputError(fmt::format("{}: check '{}': match = \"mac\" pairs the modes of two modal analyses; {} is not one", c.at.where(),
-                                   c.name, !mine ? "this case" : c.reference_case.filename().string()));
+      throw InputError(
+          fmt::format("{}: check '{}': match = \"mac\" pairs the modes of two modal analyses; {} is not one",
+                      c.at.where(), c.name, !mine ? "this case" : c.reference_case.filename().string()));
     const ModeMatch m = match_modes_by_shape(model.mesh, mine->modal, other.model.mesh, theirs->modal);
     const std::string name = "mac_" + c.reference_case.stem().string();
     tables.emplace(name, mode_match_table(name, m, mine->modal, theirs->modal));
@@ -79,8 +80,10 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
         const long ref_mode = static_cast<long>(j) + 1;
         const int k = m.computed_of_reference[j];
         if (k >= 0 && m.match_mac[j] >= c.min_mac) pairing->computed_key[ref_mode] = k + 1;
-        pairing->note[ref_mode] = k >= 0 ? fmt::format("MAC {:.4f}{}", m.match_mac[j], m.match_mac[j] >= c.min_mac ? "" : fmt::format(" < {}", c.min_mac))
-                                         : std::string("no mode left to pair");
+        pairing->note[ref_mode] = k >= 0
+                                      ? fmt::format("MAC {:.4f}{}", m.match_mac[j],
+                                                    m.match_mac[j] >= c.min_mac ? "" : fmt::format(" < {}", c.min_mac))
+                                      : std::string("no mode left to pair");
       }
     }
     auto entries = evaluate_check(c, tables, reference, pairing ? &*pairing : nullptr);
@@ -96,7 +99,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
   if (options.plots) {
     plot_analysis(spec.analysis, results, model, spec.checks, out, run);
     int i = 0;
-    for (const CheckSpec& c : spec.checks) run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
+    for (const CheckSpec& c : spec.checks)
+      run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
   }
   if (options.study && spec.study) run_study(*spec.study, spec, model, results, out, options.plots, run);
   bool all_pass = true;
@@ -117,7 +121,8 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
   try {
     const toml::table case_table = read_case_table(case_file);
     const CaseSpec spec = parse_case_table(case_table, case_file);
-    parse_calibration(case_table, case_file, spec);  // a bad [calibration] or data file fails here too, not only in `calibrate`
+    parse_calibration(case_table, case_file,
+                      spec);  // a bad [calibration] or data file fails here too, not only in `calibrate`
     run.case_name = spec.name;
     run.title = spec.title;
     run.description = spec.description;

@@ -47,18 +47,19 @@ struct StudyRun {
           "study_harmonics", plot_hbm_harmonics_study);
   }
   void operator()(const TimeStepStudySpec& s) const {
-    table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s), s.note, "time_step_study", "study_time_steps",
-          plot_time_step_study);
+    table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s), s.note, "time_step_study",
+          "study_time_steps", plot_time_step_study);
   }
 
   void operator()(const RotatingFidelityStudySpec& s) const {
-    table(run_rotating_fidelity_study(model, std::get<RotatingSpec>(spec.analysis), s), s.note, "rotating_fidelity_study",
-          "study_rotating_fidelity", plot_rotating_fidelity);
+    table(run_rotating_fidelity_study(model, std::get<RotatingSpec>(spec.analysis), s), s.note,
+          "rotating_fidelity_study", "study_rotating_fidelity", plot_rotating_fidelity);
   }
 
   // A study whose result is one table: listed in the report, written as CSV, drawn.
   template <typename Plot>
-  void table(ResultTable t, const std::string& note, const std::string& name, const std::string& plot_name, Plot plot) const {
+  void table(ResultTable t, const std::string& note, const std::string& name, const std::string& plot_name,
+             Plot plot) const {
     run.study_tables.push_back(std::move(t));
     run.study_note = note;
     write_table_csv(run.study_tables.back(), out / (name + ".csv"));

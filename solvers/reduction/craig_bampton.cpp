@@ -1,8 +1,8 @@
 #include "reduction/craig_bampton.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -40,7 +40,8 @@ Partition partition_dofs(int n, const std::vector<int>& masters, const std::vect
     const auto u = static_cast<size_t>(dof);
     if (p.is_master[u])
       throw InputError(fmt::format("Craig-Bampton: master {} ('{}') repeats free DOF {} of master {} ('{}')", i + 1,
-                                   names[i].name(), dof, p.local[u] + 1, names[static_cast<size_t>(p.local[u])].name()));
+                                   names[i].name(), dof, p.local[u] + 1,
+                                   names[static_cast<size_t>(p.local[u])].name()));
     p.is_master[u] = true;
     p.local[u] = static_cast<int>(i);
   }
@@ -66,7 +67,8 @@ Sparse slave_block(const Sparse& a, const Partition& p) {
     s.startVec(j);
     // Rows stay ascending: slaves are numbered in increasing free index.
     for (Sparse::InnerIterator it(a, p.slaves[static_cast<size_t>(j)]); it; ++it)
-      if (!p.is_master[static_cast<size_t>(it.row())]) s.insertBack(p.local[static_cast<size_t>(it.row())], j) = it.value();
+      if (!p.is_master[static_cast<size_t>(it.row())])
+        s.insertBack(p.local[static_cast<size_t>(it.row())], j) = it.value();
   }
   s.finalize();
   return s;
@@ -74,10 +76,12 @@ Sparse slave_block(const Sparse& a, const Partition& p) {
 
 // K_sm as a dense n_s x n_m block: it is the right-hand side of the constraint-mode solve anyway.
 Eigen::MatrixXd slave_master_block(const Sparse& a, const std::vector<int>& masters, const Partition& p) {
-  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(p.slaves.size()), static_cast<Eigen::Index>(masters.size()));
+  Eigen::MatrixXd b =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(p.slaves.size()), static_cast<Eigen::Index>(masters.size()));
   for (size_t i = 0; i < masters.size(); ++i)
     for (Sparse::InnerIterator it(a, masters[i]); it; ++it)
-      if (!p.is_master[static_cast<size_t>(it.row())]) b(p.local[static_cast<size_t>(it.row())], static_cast<Eigen::Index>(i)) = it.value();
+      if (!p.is_master[static_cast<size_t>(it.row())])
+        b(p.local[static_cast<size_t>(it.row())], static_cast<Eigen::Index>(i)) = it.value();
   return b;
 }
 
@@ -126,7 +130,8 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
   if (masters.size() != master_names.size())
     throw std::invalid_argument("craig_bampton: one name per master is required");
   if (options.n_modes < 0)
-    throw InputError(fmt::format("Craig-Bampton: the number of fixed-interface modes must be >= 0, found {}", options.n_modes));
+    throw InputError(
+        fmt::format("Craig-Bampton: the number of fixed-interface modes must be >= 0, found {}", options.n_modes));
   auto t0 = Clock::now();
   const Partition p = partition_dofs(n, masters, master_names);
   const auto nm = static_cast<Eigen::Index>(masters.size());
@@ -143,12 +148,12 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
     SpdFactorization factor(options.ordering);
     const FactorStatus status = factor.factorize(k_ss);
     if (!status.ok) {
-      const std::string where =
-          status.weakest_column >= 0
-              ? fmt::format("; free DOF {} is not held by the masters or constraints",
-                            p.slaves[static_cast<size_t>(status.weakest_column)])
-              : std::string();
-      throw InputError(fmt::format("Craig-Bampton: the slave stiffness K_ss cannot be factored: {}{}", status.message, where));
+      const std::string where = status.weakest_column >= 0
+                                    ? fmt::format("; free DOF {} is not held by the masters or constraints",
+                                                  p.slaves[static_cast<size_t>(status.weakest_column)])
+                                    : std::string();
+      throw InputError(
+          fmt::format("Craig-Bampton: the slave stiffness K_ss cannot be factored: {}{}", status.message, where));
     }
     if (nm > 0) psi = -factor.solve(slave_master_block(stiffness, masters, p));
   }

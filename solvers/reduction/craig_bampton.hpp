@@ -3,6 +3,7 @@
 // fixed-interface modes of (K_ss, M_ss), mass-normalized.
 #pragma once
 #include <Eigen/Sparse>
+
 #include <vector>
 
 #include "linalg/spd_factor.hpp"

@@ -1,8 +1,8 @@
 #include "reduction/reduced_model.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -20,7 +20,8 @@ constexpr char kAxes[] = {'x', 'y', 'z'};
 // A label is whatever the exporter calls the node ("T2", "N1034"); whitespace would make the
 // sidecar's names ambiguous to read back, so it is refused.
 bool valid_label(const std::string& label) {
-  return !label.empty() && std::none_of(label.begin(), label.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+  return !label.empty() &&
+         std::none_of(label.begin(), label.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
 }
 
 // "K(2, 3) ('T2.y', 'mode 1')" for messages; 1-based like the matrix files.
@@ -84,10 +85,12 @@ void validate_reduced_model(const ReducedModel& model, const std::string& source
     const bool nodal = d.direction >= 0 && d.direction < 3 && d.mode == 0 && valid_label(d.label);
     const bool modal = d.direction == -1 && d.mode >= 1 && d.label.empty();
     if (!nodal && !modal)
-      throw InputError(fmt::format("{}: DOF {} ('{}') is neither a nodal direction nor a mode", source, i + 1, d.name()));
+      throw InputError(
+          fmt::format("{}: DOF {} ('{}') is neither a nodal direction nor a mode", source, i + 1, d.name()));
     const auto [it, inserted] = seen.emplace(d.name(), i);
     if (!inserted)
-      throw InputError(fmt::format("{}: DOF '{}' appears twice (DOFs {} and {})", source, d.name(), it->second + 1, i + 1));
+      throw InputError(
+          fmt::format("{}: DOF '{}' appears twice (DOFs {} and {})", source, d.name(), it->second + 1, i + 1));
   }
   for (const auto& [matrix, a] : {std::pair<const char*, const Eigen::MatrixXd*>{"K", &model.stiffness},
                                   std::pair<const char*, const Eigen::MatrixXd*>{"M", &model.mass}}) {

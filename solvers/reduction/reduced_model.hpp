@@ -3,6 +3,7 @@
 // Built by Craig-Bampton here, or exported by Ansys / NX and read from files.
 #pragma once
 #include <Eigen/Dense>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ struct ReducedDof {
   int direction = -1;  // 0 = x, 1 = y, 2 = z; -1 for a modal coordinate
   int mode = 0;        // 1-based fixed-interface mode number; 0 for a nodal DOF
 
-  std::string name() const;                                  // "T2.x" or "mode 3"
+  std::string name() const;                                         // "T2.x" or "mode 3"
   static std::optional<ReducedDof> parse(const std::string& name);  // inverse of name()
   bool operator==(const ReducedDof&) const = default;
 };

@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "common/csv_reader.hpp"
-#include "common/toml_reader.hpp"
 #include "common/errors.hpp"
+#include "common/toml_reader.hpp"
 
 namespace bb {
 namespace fs = std::filesystem;
@@ -82,7 +82,8 @@ long parse_count(std::string_view token, const LineSource& src, const std::strin
 
 std::string lower(std::string_view s) {
   std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return out;
 }
 
@@ -103,9 +104,10 @@ Eigen::MatrixXd read_matrix_market(const fs::path& file, Eigen::Index n) {
                          ((coordinate && (symmetry == "general" || symmetry == "symmetric")) ||
                           (format == "array" && symmetry == "general"));
   if (!supported)
-    src.fail(fmt::format("unsupported Matrix Market header '{}'; expected '%%MatrixMarket matrix coordinate real "
-                         "general|symmetric' or '%%MatrixMarket matrix array real general'",
-                         trim(line)));
+    src.fail(
+        fmt::format("unsupported Matrix Market header '{}'; expected '%%MatrixMarket matrix coordinate real "
+                    "general|symmetric' or '%%MatrixMarket matrix array real general'",
+                    trim(line)));
   const bool symmetric = symmetry == "symmetric";
 
   // Comments ('%') and blank lines may precede the size line.
@@ -119,8 +121,7 @@ Eigen::MatrixXd read_matrix_market(const fs::path& file, Eigen::Index n) {
   if (size.size() != (coordinate ? 3u : 2u))
     src.fail(coordinate ? "expected the size line 'rows columns entries'" : "expected the size line 'rows columns'");
   const long rows = parse_count(size[0], src, "row count"), cols = parse_count(size[1], src, "column count");
-  if (rows != n || cols != n)
-    src.fail(fmt::format("matrix is {} x {} but the sidecar names {} DOFs", rows, cols, n));
+  if (rows != n || cols != n) src.fail(fmt::format("matrix is {} x {} but the sidecar names {} DOFs", rows, cols, n));
   const long expected = coordinate ? parse_count(size[2], src, "entry count") : n * n;
   const long capacity = symmetric ? n * (n + 1) / 2 : n * n;
   if (expected < 0 || expected > capacity)
@@ -183,11 +184,13 @@ Eigen::MatrixXd read_csv_matrix(const fs::path& file, Eigen::Index n) {
 // ---------------------------------------------------------------- sidecar
 
 toml::table parse_sidecar(const fs::path& sidecar) {
-  if (!fs::is_regular_file(sidecar)) throw InputError(fmt::format("{}: reduced-model sidecar not found", sidecar.string()));
+  if (!fs::is_regular_file(sidecar))
+    throw InputError(fmt::format("{}: reduced-model sidecar not found", sidecar.string()));
   try {
     return toml::parse_file(sidecar.string());
   } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}: TOML syntax error: {}", sidecar.string(), e.source().begin.line, e.description()));
+    throw InputError(
+        fmt::format("{}:{}: TOML syntax error: {}", sidecar.string(), e.source().begin.line, e.description()));
   }
 }
 
@@ -223,7 +226,8 @@ ReducedModel read_reduced_model(const fs::path& sidecar) {
   const std::vector<std::string> names = r.string_array("dofs");
   for (size_t i = 0; i < names.size(); ++i) {
     const auto dof = ReducedDof::parse(names[i]);
-    if (!dof) r.fail("dofs", fmt::format("entry {} '{}' is not a DOF name ('<node>.x|y|z' or 'mode <n>')", i + 1, names[i]));
+    if (!dof)
+      r.fail("dofs", fmt::format("entry {} '{}' is not a DOF name ('<node>.x|y|z' or 'mode <n>')", i + 1, names[i]));
     model.dofs.push_back(*dof);
   }
   if (model.dofs.empty()) r.fail("dofs", "names no DOF");

@@ -32,7 +32,8 @@ void files(const RotatingSpec&, const RotatingOutcome&, const fs::path&, RunReco
 
 }  // namespace
 
-void write_analysis_files(const AnalysisSpec& spec, const AnalysisResults& results, const fs::path& out, RunRecord& run) {
+void write_analysis_files(const AnalysisSpec& spec, const AnalysisResults& results, const fs::path& out,
+                          RunRecord& run) {
   visit_analysis(spec, results, [&](const auto& s, const auto& outcome) { files(s, outcome, out, run); });
 }
 

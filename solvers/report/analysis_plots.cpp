@@ -41,12 +41,14 @@ void plots(const StaticSpec&, const StaticOutcome& s, const PlotTarget& t) {
 void plots(const ModalSpec&, const ModalOutcome& outcome, const PlotTarget& t) {
   const ModalResult& modal = outcome.modal;
   for (size_t k = 0; k < std::min<size_t>(4, modal.shapes.size()); ++k)
-    t.run.plots.push_back(plot_deformed_mesh(t.model.mesh, modal.shapes[k], t.out, fmt::format("mode{}", k + 1),
-                                             fmt::format("Mode {}: {:.4f} Hz", k + 1, modal.frequencies_hz[static_cast<Eigen::Index>(k)])));
+    t.run.plots.push_back(plot_deformed_mesh(
+        t.model.mesh, modal.shapes[k], t.out, fmt::format("mode{}", k + 1),
+        fmt::format("Mode {}: {:.4f} Hz", k + 1, modal.frequencies_hz[static_cast<Eigen::Index>(k)])));
   for (const ModeStresses& m : outcome.stresses)
-    t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(m.field), "Pa per unit modal coordinate", t.out,
-                                             fmt::format("von_mises_mode{}", m.mode),
-                                             fmt::format("Mode {}: von Mises stress of the mass-normalized shape", m.mode)));
+    t.run.plots.push_back(
+        plot_nodal_contour(t.model.mesh, nodal_von_mises(m.field), "Pa per unit modal coordinate", t.out,
+                           fmt::format("von_mises_mode{}", m.mode),
+                           fmt::format("Mode {}: von Mises stress of the mass-normalized shape", m.mode)));
 }
 
 void plots(const FrfSpec&, const FrfOutcome& frf, const PlotTarget& t) {
@@ -87,15 +89,18 @@ void plots(const HbmSpec&, const HbmOutcome& h, const PlotTarget& t) {
 
 void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget& t) {
   for (size_t s = 0; s < o.history_sets.size(); ++s)
-    for (int d = 0; d < std::min(o.dim, 2); ++d) {  // x and y, as the thesis (the z motion of a blade turning about z is nil)
+    for (int d = 0; d < std::min(o.dim, 2);
+         ++d) {  // x and y, as the thesis (the z motion of a blade turning about z is nil)
       const std::string stem = fmt::format("history_{}_u{}", o.history_sets[s], "xyz"[d]);
       t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem));
       // The first few periods of the first rotating mode, where the oscillation can be seen.
       const double f1 = o.modes_at_speed.frequencies_hz.size() > 0 ? o.modes_at_speed.frequencies_hz[0] : 0.0;
-      if (f1 > 0 && spec.end_time > 20.0 / f1) t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem + "_zoom", 20.0 / f1));
+      if (f1 > 0 && spec.end_time > 20.0 / f1)
+        t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem + "_zoom", 20.0 / f1));
     }
   t.run.plots.push_back(plot_campbell(o, spec.engine_orders, t.out, "campbell"));
-  t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(o.steady_stresses), "Pa", t.out, "steady_von_mises",
+  t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(o.steady_stresses), "Pa", t.out,
+                                           "steady_von_mises",
                                            "von Mises stress of the steady centrifugal deflection (nodal averages)"));
 }
 

@@ -21,26 +21,34 @@ namespace {
 std::string ccx_real(double v) {
   std::string s = fmt::format("{}", v);
   if (s.size() > 20) s = fmt::format("{:.13e}", v);
-  if (s.size() > 20) throw InputError(fmt::format("CalculiX export: {} does not fit ccx's 20-character number field", s));
+  if (s.size() > 20)
+    throw InputError(fmt::format("CalculiX export: {} does not fit ccx's 20-character number field", s));
   return s;
 }
 
 std::string_view ccx_element_type(ElementType type) {
   switch (type) {
-    case ElementType::hex8: return "C3D8";
-    case ElementType::hex8i: return "C3D8I";  // ccx's own incompatible-mode formulation
-    case ElementType::hex20: return "C3D20";  // 3x3x3 Gauss, like fe::hex20_stiffness
+    case ElementType::hex8:
+      return "C3D8";
+    case ElementType::hex8i:
+      return "C3D8I";  // ccx's own incompatible-mode formulation
+    case ElementType::hex20:
+      return "C3D20";  // 3x3x3 Gauss, like fe::hex20_stiffness
     case ElementType::q4:
-    case ElementType::cst: break;
+    case ElementType::cst:
+      break;
   }
-  throw InputError(fmt::format("CalculiX export: element type '{}' is not a 3D solid; only hex8, hex8i and hex20 are exported",
-                               element_name(type)));
+  throw InputError(
+      fmt::format("CalculiX export: element type '{}' is not a 3D solid; only hex8, hex8i and hex20 are exported",
+                  element_name(type)));
 }
 
 // ccx set names are case-insensitive words; keep letters, digits and '_' and make them unique.
 std::string ccx_set_name(const std::string& name, std::set<std::string>& used) {
   std::string base = "N_";
-  for (const char c : name) base += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : '_';
+  for (const char c : name)
+    base += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c)))
+                                                        : '_';
   base.resize(std::min<size_t>(base.size(), 70));
   std::string candidate = base;
   for (int k = 2; used.count(candidate) != 0; ++k) candidate = fmt::format("{}_{}", base, k);
@@ -65,15 +73,19 @@ void write_calculix_frequency_deck(const Model& model, int n_modes, const std::f
   if (n_modes < 1) throw InputError(fmt::format("CalculiX export: asked for {} modes; give at least 1", n_modes));
   for (const Constraint& c : model.constraints)
     if (c.value != 0.0)
-      throw InputError(fmt::format("CalculiX export: constraint on set '{}' prescribes {} m; a frequency step needs "
-                                   "homogeneous constraints (value 0)", c.set, c.value));
+      throw InputError(
+          fmt::format("CalculiX export: constraint on set '{}' prescribes {} m; a frequency step needs "
+                      "homogeneous constraints (value 0)",
+                      c.set, c.value));
   for (const ElementBlock& b : mesh.blocks) ccx_element_type(b.type);  // reject before writing anything
 
   std::ofstream out(inp);
   if (!out) throw std::runtime_error("cannot write " + inp.string());
   out << "** CalculiX deck written by bladebench (report/calculix_export). SI units: m, Pa, kg/m^3.\n"
          "** Node n = bladebench internal node index n-1; elements numbered 1..m over the blocks in order.\n";
-  if (!model.loads.empty()) out << fmt::format("** {} nodal load(s) of the case left out: a frequency step does not use them.\n", model.loads.size());
+  if (!model.loads.empty())
+    out << fmt::format("** {} nodal load(s) of the case left out: a frequency step does not use them.\n",
+                       model.loads.size());
 
   out << "*NODE, NSET=NALL\n";
   for (int i = 0; i < mesh.n_nodes(); ++i) {
@@ -100,7 +112,8 @@ void write_calculix_frequency_deck(const Model& model, int n_modes, const std::f
   for (const Constraint& c : model.constraints) {
     if (set_names.count(c.set) != 0) continue;
     const auto it = model.node_sets.find(c.set);
-    if (it == model.node_sets.end()) throw InputError(fmt::format("CalculiX export: constraint names unknown node set '{}'", c.set));
+    if (it == model.node_sets.end())
+      throw InputError(fmt::format("CalculiX export: constraint names unknown node set '{}'", c.set));
     const std::string name = ccx_set_name(c.set, used);
     set_names.emplace(c.set, name);
     out << fmt::format("*NSET, NSET={}\n", name);
@@ -116,10 +129,13 @@ void write_calculix_frequency_deck(const Model& model, int n_modes, const std::f
 
   out << "*MATERIAL, NAME=MAT\n*ELASTIC\n"
       << ccx_real(model.section.youngs_modulus) << ", " << ccx_real(model.section.poisson_ratio) << '\n'
-      << "*DENSITY\n" << ccx_real(model.section.density) << '\n';
-  for (size_t k = 0; k < mesh.blocks.size(); ++k) out << fmt::format("*SOLID SECTION, ELSET=E{}, MATERIAL=MAT\n", k + 1);
+      << "*DENSITY\n"
+      << ccx_real(model.section.density) << '\n';
+  for (size_t k = 0; k < mesh.blocks.size(); ++k)
+    out << fmt::format("*SOLID SECTION, ELSET=E{}, MATERIAL=MAT\n", k + 1);
 
-  out << "*STEP\n*FREQUENCY\n" << n_modes << '\n'
+  out << "*STEP\n*FREQUENCY\n"
+      << n_modes << '\n'
       << "** add '*NODE FILE' and 'U' here to write the mode shapes to the .frd file\n"
          "*END STEP\n";
   if (!out) throw std::runtime_error("failed writing " + inp.string());

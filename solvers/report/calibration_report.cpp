@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <numbers>
 #include <fstream>
+#include <numbers>
 #include <stdexcept>
 
 #include "report/gnuplot.hpp"
@@ -47,10 +47,13 @@ std::string slug(std::string s) {
 
 // The measured points of one quantity of a data set with their computed values at the start and
 // at the identified values, and the computed curves (x column, y column of the fitted table).
-Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const std::string& quantity, const fs::path& out_dir) {
+Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const std::string& quantity,
+                   const fs::path& out_dir) {
   const std::string stem = "fit_" + slug(d.name) + "_" + quantity;
   const bool curve = d.data.kind != DataKind::peaks;
-  const std::string x_col = d.data.kind == DataKind::frf ? "frequency" : d.data.kind == DataKind::hysteresis ? "relative_displacement" : "force";
+  const std::string x_col = d.data.kind == DataKind::frf          ? "frequency"
+                            : d.data.kind == DataKind::hysteresis ? "relative_displacement"
+                                                                  : "force";
   const std::string y_col = quantity == "tangential_force" ? "tangential_force" : quantity;
   const double y_scale = quantity == "phase" ? 180.0 / std::numbers::pi : 1.0;  // phases plotted in degrees
   {
@@ -59,8 +62,8 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
     for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
       const FitPoint& a = o.after[k];
       if (a.set != d.name || a.quantity != quantity) continue;
-      out << a.x << ' ' << a.measured * y_scale << ' ' << a.sigma * y_scale << ' ' << o.before[k].computed * y_scale << ' '
-          << a.computed * y_scale << '\n';
+      out << a.x << ' ' << a.measured * y_scale << ' ' << a.sigma * y_scale << ' ' << o.before[k].computed * y_scale
+          << ' ' << a.computed * y_scale << '\n';
     }
     for (const ResultTables* tables : {&o.curves_before, &o.curves_after}) {
       out << "\n\n";
@@ -73,29 +76,38 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
       const auto yi = t->second.column_index(d.columns.at(y_col));
       const double y_si = column_to_si(d.columns.at(y_col)) * y_scale;
       for (Eigen::Index r = 0; xi && yi && r < t->second.values.rows(); ++r)
-        out << t->second.values(r, *xi) * column_to_si(d.columns.at(x_col)) << ' ' << t->second.values(r, *yi) * y_si << '\n';
+        out << t->second.values(r, *xi) * column_to_si(d.columns.at(x_col)) << ' ' << t->second.values(r, *yi) * y_si
+            << '\n';
     }
   }
-  const std::string x_label = d.data.kind == DataKind::frf ? "frequency [Hz]" : d.data.kind == DataKind::hysteresis ? "relative displacement [m]"
-                                                                                                                     : "force level [N]";
+  const std::string x_label = d.data.kind == DataKind::frf          ? "frequency [Hz]"
+                              : d.data.kind == DataKind::hysteresis ? "relative displacement [m]"
+                                                                    : "force level [N]";
   const std::optional<Dimension> y_dim = column_dimension(d.columns.at(y_col));
-  const std::string y_label = quantity == "phase" ? "phase [deg]" : quantity == "frequency" ? "frequency [Hz]"
+  const std::string y_label = quantity == "phase"              ? "phase [deg]"
+                              : quantity == "frequency"        ? "frequency [Hz]"
                               : quantity == "tangential_force" ? "tangential force [N]"
-                              : y_dim == Dimension::compliance ? "amplitude per newton [m/N]" : "amplitude [m]";
+                              : y_dim == Dimension::compliance ? "amplitude per newton [m/N]"
+                                                               : "amplitude [m]";
   std::string shown = quantity;
   std::replace(shown.begin(), shown.end(), '_', ' ');  // gnuplot would subscript after _
   const std::string title = fmt::format("{}: {} measured (points, 1 sigma) and computed", d.name, shown);
-  std::string script = fmt::format("set title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\nset datafile missing 'nan'\n",
-                                   gnuplot_quote(title), x_label, y_label);
+  std::string script = fmt::format(
+      "set title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\nset datafile missing 'nan'\n",
+      gnuplot_quote(title), x_label, y_label);
   if (!curve) script += "set logscale x\n";  // force levels span decades
   if (curve) {
-    script += fmt::format("plot '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.5 lc rgb 'black' title 'measured', \\\n"
-                          "     '{0}.dat' index 1 using 1:2 with lines dt 2 lc rgb '#1f77b4' title 'start values', \\\n"
-                          "     '{0}.dat' index 2 using 1:2 with lines lw 2 lc rgb '#d62728' title 'identified'\n", stem);
+    script += fmt::format(
+        "plot '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.5 lc rgb 'black' title 'measured', \\\n"
+        "     '{0}.dat' index 1 using 1:2 with lines dt 2 lc rgb '#1f77b4' title 'start values', \\\n"
+        "     '{0}.dat' index 2 using 1:2 with lines lw 2 lc rgb '#d62728' title 'identified'\n",
+        stem);
   } else {
-    script += fmt::format("plot '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.6 lc rgb 'black' title 'measured', \\\n"
-                          "     '{0}.dat' index 0 using 1:4 with points pt 6 lc rgb '#1f77b4' title 'start values', \\\n"
-                          "     '{0}.dat' index 0 using 1:5 with points pt 9 ps 1.2 lc rgb '#d62728' title 'identified'\n", stem);
+    script += fmt::format(
+        "plot '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.6 lc rgb 'black' title 'measured', \\\n"
+        "     '{0}.dat' index 0 using 1:4 with points pt 6 lc rgb '#1f77b4' title 'start values', \\\n"
+        "     '{0}.dat' index 0 using 1:5 with points pt 9 ps 1.2 lc rgb '#d62728' title 'identified'\n",
+        stem);
   }
   return draw(out_dir, stem, title, script);
 }
@@ -107,7 +119,8 @@ void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_f
     out << "parameter,start,value,std,lower,upper\n";
     for (size_t i = 0; i < o.values.size(); ++i) {
       const auto& p = o.spec.parameters[i];
-      out << fmt::format("{},{:.10g},{:.10g},{:.6g},{:.10g},{:.10g}\n", p.path, p.start, o.values[i], o.std_devs[i], p.lower, p.upper);
+      out << fmt::format("{},{:.10g},{:.10g},{:.6g},{:.10g},{:.10g}\n", p.path, p.start, o.values[i], o.std_devs[i],
+                         p.lower, p.upper);
     }
   }
   {
@@ -129,18 +142,21 @@ void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_f
     out << '\n';
     for (size_t s = 0; s < o.starts.size(); ++s) {
       const CalibrationStart& r = o.starts[s];
-      out << fmt::format("{},{},{:.10g},{:.10g},{}", s + 1, r.converged ? 1 : 0, r.initial_cost, r.final_cost, r.iterations);
+      out << fmt::format("{},{},{:.10g},{:.10g},{}", s + 1, r.converged ? 1 : 0, r.initial_cost, r.final_cost,
+                         r.iterations);
       for (size_t i = 0; i < r.values.size(); ++i) out << fmt::format(",{:.10g},{:.10g}", r.start[i], r.values[i]);
       out << '\n';
     }
   }
   {
     std::ofstream out = open_out(out_dir / "fitted_points.csv");
-    out << "set,point,quantity,x,measured,sigma,computed_start,residual_start,computed_identified,residual_identified\n";
+    out << "set,point,quantity,x,measured,sigma,computed_start,residual_start,computed_identified,residual_"
+           "identified\n";
     for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
       const FitPoint& a = o.after[k];
-      out << fmt::format("\"{}\",\"{}\",{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g}\n", a.set, a.label, a.quantity, a.x, a.measured,
-                         a.sigma, o.before[k].computed, o.before[k].residual(), a.computed, a.residual());
+      out << fmt::format("\"{}\",\"{}\",{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g}\n", a.set, a.label,
+                         a.quantity, a.x, a.measured, a.sigma, o.before[k].computed, o.before[k].residual(), a.computed,
+                         a.residual());
     }
   }
 }
@@ -154,42 +170,52 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   write_calibration_files(o, case_file, out_dir);
   std::ofstream md = open_out(out_dir / "report.md");
   md << fmt::format("# Calibration of `{}`\n\n", case_file.string());
-  md << fmt::format("{} in {:.1f} s, {} model evaluations ({:.2f} s each on average). Cost {:.6g} -> {:.6g}; rms residual {:.3g} -> {:.3g} sigma.\n\n",
-                    o.converged ? "Converged" : "**Not converged**", wall_seconds, o.residual_evaluations,
-                    wall_seconds / std::max(1, o.residual_evaluations), o.initial_cost, o.final_cost, rms_residual(o.before), rms_residual(o.after));
+  md << fmt::format(
+      "{} in {:.1f} s, {} model evaluations ({:.2f} s each on average). Cost {:.6g} -> {:.6g}; rms residual {:.3g} -> "
+      "{:.3g} sigma.\n\n",
+      o.converged ? "Converged" : "**Not converged**", wall_seconds, o.residual_evaluations,
+      wall_seconds / std::max(1, o.residual_evaluations), o.initial_cost, o.final_cost, rms_residual(o.before),
+      rms_residual(o.after));
   md << fmt::format("Jacobian: {}.\n\n", o.derivatives);
-  md << "Residuals: (computed - measured) / sigma per fitted point (for a check entry, sigma is relative to the reference). Loss: "
+  md << "Residuals: (computed - measured) / sigma per fitted point (for a check entry, sigma is relative to the "
+        "reference). Loss: "
      << o.spec.loss << ".\n\n";
-  md << fmt::format("Reduced chi-square at the optimum: {:.3g}{}.\n\n", o.reduced_chi_square,
-                    o.reduced_chi_square > 1 ? " (above 1: the standard deviations below are scaled up by its square root)" : "");
+  md << fmt::format(
+      "Reduced chi-square at the optimum: {:.3g}{}.\n\n", o.reduced_chi_square,
+      o.reduced_chi_square > 1 ? " (above 1: the standard deviations below are scaled up by its square root)" : "");
   md << "| fitted set | points | rms residual at start | rms residual identified |\n|---|---|---|---|\n";
   for (const std::string& set : sets_of(o.after)) {
     const auto n = std::count_if(o.after.begin(), o.after.end(), [&](const FitPoint& p) { return p.set == set; });
-    md << fmt::format("| {} | {} | {:.3g} | {:.3g} |\n", set, n, rms_residual(o.before, set), rms_residual(o.after, set));
+    md << fmt::format("| {} | {} | {:.3g} | {:.3g} |\n", set, n, rms_residual(o.before, set),
+                      rms_residual(o.after, set));
   }
   md << '\n';
   if (!o.spec.fit_checks.empty()) {
     md << "| fitted check | sigma (relative) |\n|---|---|\n";
-    for (const std::string& name : o.spec.fit_checks) md << fmt::format("| {} | {:g} |\n", name, uncertainty_of(o.spec, name));
+    for (const std::string& name : o.spec.fit_checks)
+      md << fmt::format("| {} | {:g} |\n", name, uncertainty_of(o.spec, name));
     md << '\n';
   }
   for (const CalibrationData& d : o.spec.data)
-    md << fmt::format("Data set `{}`: {} file `{}` ({} rows), fitted to table `{}`.\n\n", d.name, data_kind_name(d.data.kind),
-                      d.data.file.filename().string(), d.data.rows(), d.table);
+    md << fmt::format("Data set `{}`: {} file `{}` ({} rows), fitted to table `{}`.\n\n", d.name,
+                      data_kind_name(d.data.kind), d.data.file.filename().string(), d.data.rows(), d.table);
   if (o.starts.size() > 1) {
-    md << fmt::format("## Starts\n\n{} starts (the case's values, then a Latin hypercube in log space, seed {}); start {} is reported.\n\n",
-                      o.starts.size(), o.spec.seed, o.best + 1);
+    md << fmt::format(
+        "## Starts\n\n{} starts (the case's values, then a Latin hypercube in log space, seed {}); start {} is "
+        "reported.\n\n",
+        o.starts.size(), o.spec.seed, o.best + 1);
     md << "| start | converged | cost at start | final cost | iterations |\n|---|---|---|---|---|\n";
     for (size_t s = 0; s < o.starts.size(); ++s)
-      md << fmt::format("| {} | {} | {:.6g} | {:.6g} | {} |\n", s + 1, o.starts[s].converged ? "yes" : "no", o.starts[s].initial_cost,
-                        o.starts[s].final_cost, o.starts[s].iterations);
+      md << fmt::format("| {} | {} | {:.6g} | {:.6g} | {} |\n", s + 1, o.starts[s].converged ? "yes" : "no",
+                        o.starts[s].initial_cost, o.starts[s].final_cost, o.starts[s].iterations);
     md << "\nValues at every start and end: `starts.csv`.\n\n";
   }
-  md << "## Parameters\n\n| parameter | start | identified | std (1 sigma) | lower | upper |\n|---|---|---|---|---|---|\n";
+  md << "## Parameters\n\n| parameter | start | identified | std (1 sigma) | lower | upper "
+        "|\n|---|---|---|---|---|---|\n";
   for (size_t i = 0; i < o.values.size(); ++i) {
     const auto& p = o.spec.parameters[i];
-    md << fmt::format("| `{}` | {:.6g} | {:.6g} | {:.3g} | {:.6g} | {:.6g} |\n", p.path, p.start, o.values[i], o.std_devs[i],
-                      p.lower, p.upper);
+    md << fmt::format("| `{}` | {:.6g} | {:.6g} | {:.3g} | {:.6g} | {:.6g} |\n", p.path, p.start, o.values[i],
+                      o.std_devs[i], p.lower, p.upper);
   }
   if (o.correlation.size() > 0) {
     md << "\nCorrelation matrix:\n\n|   |";
@@ -208,31 +234,37 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     for (const auto& w : o.warnings) md << "- " << w << '\n';
   }
   if (!o.cross_check.empty() || !o.spec.cross_check.empty()) {
-    md << fmt::format("\n## Cross-check: `{}` with the identified values\n\n{} ({:.1f} s).\n\n", o.spec.cross_check.filename().string(),
+    md << fmt::format("\n## Cross-check: `{}` with the identified values\n\n{} ({:.1f} s).\n\n",
+                      o.spec.cross_check.filename().string(),
                       o.cross_check_passed() ? "Every check passes" : "**Some checks fail**", o.cross_check_seconds);
     md << "| check entry | computed | reference | error | tolerance | pass |\n|---|---|---|---|---|---|\n";
     for (const CheckEntry& e : o.cross_check)
-      md << fmt::format("| {} | {:.6g} | {:.6g} | {:.3g} | {:.3g} | {} |\n", e.name, e.computed, e.reference, e.abs_error, e.tolerance,
-                        e.pass ? "yes" : "**no**");
+      md << fmt::format("| {} | {:.6g} | {:.6g} | {:.3g} | {:.3g} | {} |\n", e.name, e.computed, e.reference,
+                        e.abs_error, e.tolerance, e.pass ? "yes" : "**no**");
   }
   if (plots && !o.spec.data.empty()) {
     md << "\n## Fitted curves over the data\n\n";
     for (const CalibrationData& d : o.spec.data)
       for (const auto& [column, result] : d.columns) {
-        if (column == "force" || (column == "frequency" && d.data.kind != DataKind::peaks) || column == "relative_displacement") continue;
+        if (column == "force" || (column == "frequency" && d.data.kind != DataKind::peaks) ||
+            column == "relative_displacement")
+          continue;
         const Plot p = plot_data_set(o, d, column, out_dir);
-        md << (p.file.empty() ? fmt::format("- {}: not drawn ({})\n", p.title, p.note) : fmt::format("![{}]({})\n\n", p.title, p.file));
+        md << (p.file.empty() ? fmt::format("- {}: not drawn ({})\n", p.title, p.note)
+                              : fmt::format("![{}]({})\n\n", p.title, p.file));
       }
   }
-  md << "\n## Fitted points\n\n| set | point | measured | sigma | at start | residual | identified | residual |\n|---|---|---|---|---|---|---|---|\n";
+  md << "\n## Fitted points\n\n| set | point | measured | sigma | at start | residual | identified | residual "
+        "|\n|---|---|---|---|---|---|---|---|\n";
   for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
     const FitPoint& b = o.before[k];
     const FitPoint& a = o.after[k];
-    md << fmt::format("| {} | {} | {:.6g} | {:.3g} | {:.6g} | {:+.2f} | {:.6g} | {:+.2f} |\n", a.set, a.label, a.measured, a.sigma, b.computed,
-                      b.residual(), a.computed, a.residual());
+    md << fmt::format("| {} | {} | {:.6g} | {:.3g} | {:.6g} | {:+.2f} | {:.6g} | {:+.2f} |\n", a.set, a.label,
+                      a.measured, a.sigma, b.computed, b.residual(), a.computed, a.residual());
   }
-  md << fmt::format("\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`, `fitted_points.csv`{}.\n", o.termination,
-                    o.converged ? ", `calibrated.toml`" : " (no `calibrated.toml`: the fit did not converge)");
+  md << fmt::format(
+      "\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`, `fitted_points.csv`{}.\n",
+      o.termination, o.converged ? ", `calibrated.toml`" : " (no `calibrated.toml`: the fit did not converge)");
   if (!md) throw std::runtime_error("failed writing the calibration report");
 }
 

@@ -11,7 +11,8 @@ namespace bb {
 Plot plot_contact_loop(const ContactLoopOutcome& loop, const std::filesystem::path& out_dir, const std::string& stem) {
   const contact::AftResult& a = loop.aft;
   using contact::ContactState;
-  const std::array<ContactState, 4> states{ContactState::stick, ContactState::slip_positive, ContactState::slip_negative, ContactState::lift_off};
+  const std::array<ContactState, 4> states{ContactState::stick, ContactState::slip_positive,
+                                           ContactState::slip_negative, ContactState::lift_off};
   const std::array<const char*, 4> colours{"#1f5fbf", "#bf1f1f", "#bf8f1f", "#2f9f2f"};
   {
     std::ofstream out = open_plot_data(out_dir, stem);
@@ -26,15 +27,16 @@ Plot plot_contact_loop(const ContactLoopOutcome& loop, const std::filesystem::pa
       if (!any) out << "nan nan\n";
     }
   }
-  const std::string title = fmt::format("Hysteresis loop: energy {:.4g} J per cycle, max |T| {:.4g} N", loop.summary.dissipated_energy,
-                                        loop.summary.max_tangential_force);
-  std::string script = fmt::format("set title '{}'\nset xlabel 'relative tangential displacement u [m]'\nset ylabel 'tangential force T [N]'\n"
-                                   "set grid\nset key outside right\nset datafile missing 'nan'\n"
-                                   "plot '{}.dat' index 0 using 1:2 with lines lw 1.5 lc rgb '#7f7f7f' title 'loop'",
-                                   gnuplot_quote(title), stem);
+  const std::string title = fmt::format("Hysteresis loop: energy {:.4g} J per cycle, max |T| {:.4g} N",
+                                        loop.summary.dissipated_energy, loop.summary.max_tangential_force);
+  std::string script = fmt::format(
+      "set title '{}'\nset xlabel 'relative tangential displacement u [m]'\nset ylabel 'tangential force T [N]'\n"
+      "set grid\nset key outside right\nset datafile missing 'nan'\n"
+      "plot '{}.dat' index 0 using 1:2 with lines lw 1.5 lc rgb '#7f7f7f' title 'loop'",
+      gnuplot_quote(title), stem);
   for (size_t i = 0; i < states.size(); ++i)
-    script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title '{}'", stem, i + 1, colours[i],
-                          contact::state_name(states[i]));
+    script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title '{}'", stem,
+                          i + 1, colours[i], contact::state_name(states[i]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

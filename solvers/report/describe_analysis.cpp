@@ -13,36 +13,46 @@ std::string g(double v) { return fmt::format("{:.6g}", v); }
 
 void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
   std::string forces;
-  for (const FrfForce& f : spec.forces) forces += fmt::format("{}{} N on {}", forces.empty() ? "" : ", ", g(f.amplitude), f.dof.name());
+  for (const FrfForce& f : spec.forces)
+    forces += fmt::format("{}{} N on {}", forces.empty() ? "" : ", ", g(f.amplitude), f.dof.name());
   const std::string damping = spec.damping.kind == FrfDamping::Kind::modal
                                   ? fmt::format("modal, zeta = {}", g(spec.damping.zeta))
-                                  : fmt::format("Rayleigh, zeta = {} at {} Hz and {} at {} Hz", g(spec.damping.rayleigh_zeta[0]),
-                                                g(spec.damping.rayleigh_hz[0]), g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[1]));
-  run.facts.emplace_back("analysis", fmt::format("linear forced response, {} to {} Hz, {} ({} frequencies), {}; force {}",
-                                                 g(spec.f_min), g(spec.f_max),
-                                                 spec.adaptive ? fmt::format("step {} Hz refined to {} Hz around peaks", g(spec.step), g(spec.min_step))
-                                                               : fmt::format("step {} Hz", g(spec.step)),
-                                                 frf.sweep.frequency_hz.size(), damping, forces));
+                                  : fmt::format("Rayleigh, zeta = {} at {} Hz and {} at {} Hz",
+                                                g(spec.damping.rayleigh_zeta[0]), g(spec.damping.rayleigh_hz[0]),
+                                                g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[1]));
+  run.facts.emplace_back(
+      "analysis",
+      fmt::format(
+          "linear forced response, {} to {} Hz, {} ({} frequencies), {}; force {}", g(spec.f_min), g(spec.f_max),
+          spec.adaptive ? fmt::format("step {} Hz refined to {} Hz around peaks", g(spec.step), g(spec.min_step))
+                        : fmt::format("step {} Hz", g(spec.step)),
+          frf.sweep.frequency_hz.size(), damping, forces));
   if (frf.full_modal) {
-    run.facts.emplace_back("full mesh", fmt::format("{} free DOFs; modal superposition (eq 3.32) of the lowest {} modes (up to {:.1f} Hz){}",
-                                                    frf.full_modal->n_free_dofs, frf.full_modal->frequencies_hz.size(),
-                                                    frf.full_modal->frequencies_hz.maxCoeff(),
-                                                    spec.residual_flexibility ? " + static residual flexibility of the rest" : ""));
+    run.facts.emplace_back(
+        "full mesh",
+        fmt::format("{} free DOFs; modal superposition (eq 3.32) of the lowest {} modes (up to {:.1f} Hz){}",
+                    frf.full_modal->n_free_dofs, frf.full_modal->frequencies_hz.size(),
+                    frf.full_modal->frequencies_hz.maxCoeff(),
+                    spec.residual_flexibility ? " + static residual flexibility of the rest" : ""));
     run.facts.emplace_back("full mesh: assembly / modes + residual / sweep [s]",
-                           fmt::format("{:.2f} / {:.2f} / {:.4f}", frf.full_modal->assembly_seconds, frf.full_setup_seconds, frf.full_sweep_seconds));
+                           fmt::format("{:.2f} / {:.2f} / {:.4f}", frf.full_modal->assembly_seconds,
+                                       frf.full_setup_seconds, frf.full_sweep_seconds));
   }
   for (size_t i = 0; i < frf.roms.size(); ++i) {
     const RomOutcome& r = frf.roms[i];
     const RomSpec& rs = spec.roms[i];
-    const std::string origin = rs.file.empty() ? fmt::format("Craig-Bampton, masters {} (3 DOFs each), {} fixed-interface modes",
-                                                             fmt::join(rs.masters, " "), rs.modes)
-                                               : fmt::format("read from {}", rs.file.filename().string());
-    run.facts.emplace_back(fmt::format("reduced model '{}'", r.name),
-                           fmt::format("{} DOFs, {}; response by {}", r.model.size(), origin,
-                                       rs.method == RomSpec::Method::direct ? "direct solve of D(w)" : "modal superposition"));
-    run.facts.emplace_back(fmt::format("reduced model '{}': constraint modes / fixed-interface modes / projection / sweep [s]", r.name),
-                           fmt::format("{:.2f} / {:.2f} / {:.3f} / {:.4f}", r.timing.constraint_modes_seconds, r.timing.fixed_interface_seconds,
-                                       r.timing.projection_seconds, r.sweep_seconds));
+    const std::string origin = rs.file.empty()
+                                   ? fmt::format("Craig-Bampton, masters {} (3 DOFs each), {} fixed-interface modes",
+                                                 fmt::join(rs.masters, " "), rs.modes)
+                                   : fmt::format("read from {}", rs.file.filename().string());
+    run.facts.emplace_back(
+        fmt::format("reduced model '{}'", r.name),
+        fmt::format("{} DOFs, {}; response by {}", r.model.size(), origin,
+                    rs.method == RomSpec::Method::direct ? "direct solve of D(w)" : "modal superposition"));
+    run.facts.emplace_back(
+        fmt::format("reduced model '{}': constraint modes / fixed-interface modes / projection / sweep [s]", r.name),
+        fmt::format("{:.2f} / {:.2f} / {:.3f} / {:.4f}", r.timing.constraint_modes_seconds,
+                    r.timing.fixed_interface_seconds, r.timing.projection_seconds, r.sweep_seconds));
   }
 }
 
@@ -50,68 +60,85 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const PreparedHbm& p = hbm.prepared;
   std::string levels;
   for (double f : spec.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
-  const std::string damping = spec.damping_matrix ? "damping matrix given in the case"
-                              : spec.damping.kind == FrfDamping::Kind::modal
-                                  ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
-                                  : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
-                                                g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]), g(spec.damping.rayleigh_hz[1]));
+  const std::string damping =
+      spec.damping_matrix ? "damping matrix given in the case"
+      : spec.damping.kind == FrfDamping::Kind::modal
+          ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
+          : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
+                        g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]),
+                        g(spec.damping.rayleigh_hz[1]));
   const std::string sweep = spec.sweep.method == HbmSweepSpec::Method::grid
                                 ? fmt::format("a {} Hz grid (Newton from the secant guess)", g(spec.sweep.step_hz))
                                 : "pseudo-arclength continuation";
-  run.facts.emplace_back("analysis", fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by {}; {}", spec.harmonics,
-                                                 spec.time_samples > 0 ? g(spec.time_samples) : "automatic", g(spec.sweep.f_min),
-                                                 g(spec.sweep.f_max), sweep, damping));
+  run.facts.emplace_back("analysis",
+                         fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by {}; {}",
+                                     spec.harmonics, spec.time_samples > 0 ? g(spec.time_samples) : "automatic",
+                                     g(spec.sweep.f_min), g(spec.sweep.f_max), sweep, damping));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
   std::string contacts;
   for (const hbm::ContactElement& c : p.model.contacts)
-    contacts += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ", p.contact_names[static_cast<size_t>(&c - p.model.contacts.data())],
-                            g(c.law.kn), g(c.law.kt), g(c.law.mu));
+    contacts += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ",
+                            p.contact_names[static_cast<size_t>(&c - p.model.contacts.data())], g(c.law.kn),
+                            g(c.law.kt), g(c.law.mu));
   run.facts.emplace_back("contacts", contacts);
   run.facts.emplace_back("model DOFs / linear model DOFs", fmt::format("{} / {}", p.model.mass.rows(), p.blade_dofs));
   if (p.damper_static) {
     std::string n0;
     for (size_t c = 0; c < p.damper->contacts.size(); ++c)
-      n0 += fmt::format("{}{} {:.4g} N{}", n0.empty() ? "" : ", ", p.damper->contacts[c].name, p.damper_static->normal_preload[static_cast<Eigen::Index>(c)],
+      n0 += fmt::format("{}{} {:.4g} N{}", n0.empty() ? "" : ", ", p.damper->contacts[c].name,
+                        p.damper_static->normal_preload[static_cast<Eigen::Index>(c)],
                         p.damper_static->open[c] ? " (open)" : "");
     run.facts.emplace_back("damper static pre-solve: normal loads", n0);
   }
-  run.facts.emplace_back("setup (reduction + matrices) / all sweeps [s]", fmt::format("{:.2f} / {:.3f}", p.setup_seconds, hbm.sweep_seconds));
+  run.facts.emplace_back("setup (reduction + matrices) / all sweeps [s]",
+                         fmt::format("{:.2f} / {:.3f}", p.setup_seconds, hbm.sweep_seconds));
   int reached = 0, points = 0;
   for (const HbmLevel& l : hbm.levels) {
     reached += l.path.converged ? 1 : 0;
     points += static_cast<int>(l.path.points.size());
-    if (!l.path.converged) run.facts.emplace_back(fmt::format("sweep at Fe = {} N stopped", g(l.force)), l.path.failure);
+    if (!l.path.converged)
+      run.facts.emplace_back(fmt::format("sweep at Fe = {} N stopped", g(l.force)), l.path.failure);
   }
-  run.facts.emplace_back("sweeps that reached the end / points", fmt::format("{} of {} / {}", reached, hbm.levels.size(), points));
+  run.facts.emplace_back("sweeps that reached the end / points",
+                         fmt::format("{} of {} / {}", reached, hbm.levels.size(), points));
   for (const HbmLevel& l : hbm.levels)
     for (const HbmPeak& pk : l.peaks)
-      if (!pk.trusted) run.warnings.push_back(fmt::format("{} peak at Fe = {} N ({:.4f} Hz) is doubtful: {}", pk.kind, g(l.force), pk.frequency_hz, pk.doubt));
+      if (!pk.trusted)
+        run.warnings.push_back(fmt::format("{} peak at Fe = {} N ({:.4f} Hz) is doubtful: {}", pk.kind, g(l.force),
+                                           pk.frequency_hz, pk.doubt));
   double worst = 0.0;
   std::string where;
   for (const HbmLevel& l : hbm.levels)
     for (const HbmPeak& pk : l.peaks)
-      if (pk.sampling_error > worst) worst = pk.sampling_error, where = fmt::format("{} peak at Fe = {} N", pk.kind, g(l.force));
-  run.facts.emplace_back("AFT sampling error at the peaks (contact-force change with twice the samples, relative to the force scale)",
-                         worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (every peak stuck)"));
+      if (pk.sampling_error > worst)
+        worst = pk.sampling_error, where = fmt::format("{} peak at Fe = {} N", pk.kind, g(l.force));
+  run.facts.emplace_back(
+      "AFT sampling error at the peaks (contact-force change with twice the samples, relative to the force scale)",
+      worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (every peak stuck)"));
   if (worst > 1e-3)
-    run.warnings.push_back(fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples", worst, where));
+    run.warnings.push_back(fmt::format(
+        "the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples", worst, where));
 }
 
 void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
   const PreparedHbm& p = time.prepared;
-  run.facts.emplace_back("analysis", fmt::format("direct time integration ({}), {} steps per period, stepped sine {} to {} Hz every {} Hz, "
-                                                 "each frequency to a cycle-to-cycle change below {} (at most {} periods) from the "
-                                                 "previous one's state; first {} harmonic(s) by DFT over the last period",
-                                                 spec.alpha == 0.0 ? "Newmark average acceleration" : fmt::format("HHT-alpha, alpha = {}", g(spec.alpha)),
-                                                 spec.steps_per_period, g(spec.system.sweep.f_min), g(spec.system.sweep.f_max),
-                                                 g(spec.system.sweep.step_hz), g(spec.steady_tolerance), spec.max_cycles, spec.system.harmonics));
+  run.facts.emplace_back(
+      "analysis",
+      fmt::format(
+          "direct time integration ({}), {} steps per period, stepped sine {} to {} Hz every {} Hz, "
+          "each frequency to a cycle-to-cycle change below {} (at most {} periods) from the "
+          "previous one's state; first {} harmonic(s) by DFT over the last period",
+          spec.alpha == 0.0 ? "Newmark average acceleration" : fmt::format("HHT-alpha, alpha = {}", g(spec.alpha)),
+          spec.steps_per_period, g(spec.system.sweep.f_min), g(spec.system.sweep.f_max), g(spec.system.sweep.step_hz),
+          g(spec.steady_tolerance), spec.max_cycles, spec.system.harmonics));
   std::string levels;
   for (double f : spec.system.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
   std::string contacts;
   for (size_t c = 0; c < p.model.contacts.size(); ++c)
-    contacts += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ", p.contact_names[c], g(p.model.contacts[c].law.kn),
-                            g(p.model.contacts[c].law.kt), g(p.model.contacts[c].law.mu));
+    contacts +=
+        fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ", p.contact_names[c],
+                    g(p.model.contacts[c].law.kn), g(p.model.contacts[c].law.kt), g(p.model.contacts[c].law.mu));
   run.facts.emplace_back("contacts", contacts.empty() ? "none (linear model)" : contacts);
   run.facts.emplace_back("model DOFs", std::to_string(p.model.mass.rows()));
   long steps = 0, not_steady = 0;
@@ -122,29 +149,39 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
     for (bool s : l.steady) not_steady += s ? 0 : 1;
   }
   if (not_steady > 0)
-    run.warnings.push_back(fmt::format("{} frequencies did not reach the steady state within {} periods: their amplitudes are not the "
-                                       "steady response", not_steady, spec.max_cycles));
-  run.facts.emplace_back("steps / frequencies not steady / time [s]", fmt::format("{} / {} / {:.2f} (per step {:.2f} us)", steps, not_steady,
-                                                                                  seconds, 1e6 * seconds / static_cast<double>(std::max(1L, steps))));
-  if (spec.compare_harmonics > 0) run.facts.emplace_back("comparison", fmt::format("harmonic balance, H = {}, same grid", spec.compare_harmonics));
+    run.warnings.push_back(
+        fmt::format("{} frequencies did not reach the steady state within {} periods: their amplitudes are not the "
+                    "steady response",
+                    not_steady, spec.max_cycles));
+  run.facts.emplace_back("steps / frequencies not steady / time [s]",
+                         fmt::format("{} / {} / {:.2f} (per step {:.2f} us)", steps, not_steady, seconds,
+                                     1e6 * seconds / static_cast<double>(std::max(1L, steps))));
+  if (spec.compare_harmonics > 0)
+    run.facts.emplace_back("comparison", fmt::format("harmonic balance, H = {}, same grid", spec.compare_harmonics));
   if (time.record)
-    run.facts.emplace_back("recorded run", fmt::format("{} Hz, Fe = {} N: steady after {} periods ({}), then {} periods recorded{}",
-                                                       g(time.record->frequency_hz), g(time.record->force), time.record->steady.cycles,
-                                                       time.record->steady.converged ? "converged" : time.record->steady.failure,
-                                                       spec.history_cycles, time.record->history.converged ? "" : ": " + time.record->history.failure));
+    run.facts.emplace_back(
+        "recorded run",
+        fmt::format("{} Hz, Fe = {} N: steady after {} periods ({}), then {} periods recorded{}",
+                    g(time.record->frequency_hz), g(time.record->force), time.record->steady.cycles,
+                    time.record->steady.converged ? "converged" : time.record->steady.failure, spec.history_cycles,
+                    time.record->history.converged ? "" : ": " + time.record->history.failure));
 }
 
 void describe(const ContactLoopSpec& spec, const ContactLoopOutcome& loop, RunRecord& run) {
   const contact::JenkinsParameters& p = spec.law;
-  run.facts.emplace_back("analysis", fmt::format("friction-contact test rig: one Jenkins contact under u = {} cos(theta) m, "
-                                                 "v = {} cos(theta + {} deg) m (v > 0 presses), {} samples per period, "
-                                                 "AFT march to the periodic steady state",
-                                                 g(spec.tangential_amplitude), g(spec.normal_amplitude), g(spec.normal_phase_deg), spec.samples));
-  run.facts.emplace_back("contact", fmt::format("kn {} N/m, kt {} N/m, mu {}, n0 {} N: slip force mu n0 = {} N, slip displacement "
-                                                "mu n0 / kt = {} m",
-                                                g(p.kn), g(p.kt), g(p.mu), g(p.n0), g(p.mu * p.n0), g(p.mu * p.n0 / p.kt)));
-  run.facts.emplace_back("periods marched / loop closed", fmt::format("{} / {} (slider mismatch {:.3g} m)", loop.aft.periods,
-                                                                      loop.aft.closed ? "yes" : "NO", loop.aft.closure_mismatch));
+  run.facts.emplace_back(
+      "analysis",
+      fmt::format("friction-contact test rig: one Jenkins contact under u = {} cos(theta) m, "
+                  "v = {} cos(theta + {} deg) m (v > 0 presses), {} samples per period, "
+                  "AFT march to the periodic steady state",
+                  g(spec.tangential_amplitude), g(spec.normal_amplitude), g(spec.normal_phase_deg), spec.samples));
+  run.facts.emplace_back("contact",
+                         fmt::format("kn {} N/m, kt {} N/m, mu {}, n0 {} N: slip force mu n0 = {} N, slip displacement "
+                                     "mu n0 / kt = {} m",
+                                     g(p.kn), g(p.kt), g(p.mu), g(p.n0), g(p.mu * p.n0), g(p.mu * p.n0 / p.kt)));
+  run.facts.emplace_back("periods marched / loop closed",
+                         fmt::format("{} / {} (slider mismatch {:.3g} m)", loop.aft.periods,
+                                     loop.aft.closed ? "yes" : "NO", loop.aft.closure_mismatch));
 }
 
 // The largest von Mises stress of a field and where it is: "3.21e+08 Pa at node 17".
@@ -156,8 +193,8 @@ std::string peak_von_mises(const Mesh& mesh, const StressField& field) {
       peak = v;
       node = n;
     }
-  return fmt::format("{:.4g} Pa at node {} (elements there disagree by {:.3g} Pa)", peak, mesh.node_ids[static_cast<size_t>(node)],
-                     field.scatter[node]);
+  return fmt::format("{:.4g} Pa at node {} (elements there disagree by {:.3g} Pa)", peak,
+                     mesh.node_ids[static_cast<size_t>(node)], field.scatter[node]);
 }
 
 void describe(const StaticSpec&, const StaticOutcome& outcome, const Model& model, RunRecord& run) {
@@ -176,69 +213,85 @@ void describe(const StaticSpec&, const StaticOutcome& outcome, const Model& mode
     resultant += fmt::format("{}{} = {:.6g}", d ? ", " : "", "xyz"[d], sum);
   }
   run.facts.emplace_back("resultant of the applied loads [N]", resultant);
-  run.facts.emplace_back("assembly / factor+solve / stress recovery [s]",
-                         fmt::format("{:.4f} / {:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds, outcome.stresses.seconds));
+  run.facts.emplace_back(
+      "assembly / factor+solve / stress recovery [s]",
+      fmt::format("{:.4f} / {:.4f} / {:.4f}", sol.assembly_seconds, sol.solve_seconds, outcome.stresses.seconds));
   run.facts.emplace_back("largest nodal von Mises stress", peak_von_mises(model.mesh, outcome.stresses));
 }
 
 void describe(const ModalSpec& spec, const ModalOutcome& outcome, const Model& model, RunRecord& run) {
   const ModalResult& modal = outcome.modal;
   const ModeSelection& sel = spec.modes;
-  run.facts.emplace_back("analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
-                                                 sel.band_max_hz ? fmt::format("all modes in [{}, {}] Hz", sel.band_min_hz.value_or(0.0), *sel.band_max_hz)
-                                                                 : fmt::format("lowest {} modes", sel.lowest)));
+  run.facts.emplace_back(
+      "analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
+                              sel.band_max_hz ? fmt::format("all modes in [{}, {}] Hz", sel.band_min_hz.value_or(0.0),
+                                                            *sel.band_max_hz)
+                                              : fmt::format("lowest {} modes", sel.lowest)));
   run.facts.emplace_back("free DOFs", std::to_string(modal.n_free_dofs));
   run.facts.emplace_back("Lanczos iterations", std::to_string(modal.iterations));
   run.facts.emplace_back("completeness (Sturm count of K - sigma M)",
                          modal.sturm_count < 0
                              ? std::string("not checked (every mode found is a rigid-body mode)")
-                             : fmt::format("{} modes below {:.6g} Hz, all found ({} Lanczos run{}, count {:.3f} s)", modal.sturm_count,
-                                           modal.sturm_frequency_hz, modal.lanczos_runs, modal.lanczos_runs > 1 ? "s" : "",
-                                           modal.sturm_seconds));
+                             : fmt::format("{} modes below {:.6g} Hz, all found ({} Lanczos run{}, count {:.3f} s)",
+                                           modal.sturm_count, modal.sturm_frequency_hz, modal.lanczos_runs,
+                                           modal.lanczos_runs > 1 ? "s" : "", modal.sturm_seconds));
   if (modal.rigid_body_modes > 0)
     run.facts.emplace_back("rigid-body modes (free model)", std::to_string(modal.rigid_body_modes));
   run.facts.emplace_back("max eigen-residual (backward error)", fmt::format("{:.3e}", modal.max_residual));
-  run.facts.emplace_back("assembly / eigensolve [s]", fmt::format("{:.4f} / {:.4f}", modal.assembly_seconds, modal.solve_seconds));
+  run.facts.emplace_back("assembly / eigensolve [s]",
+                         fmt::format("{:.4f} / {:.4f}", modal.assembly_seconds, modal.solve_seconds));
   if (spec.pairs) {
     const ModePairSpec& p = *spec.pairs;
-    run.facts.emplace_back("mode labels", fmt::format("pair: sign of '{}' vs '{}' along {}; type: motion of tip face '{}' "
-                                                      "(else '{}')", p.left, p.right, "xyz"[p.direction], p.right_tip, p.left_tip));
+    run.facts.emplace_back("mode labels",
+                           fmt::format("pair: sign of '{}' vs '{}' along {}; type: motion of tip face '{}' "
+                                       "(else '{}')",
+                                       p.left, p.right, "xyz"[p.direction], p.right_tip, p.left_tip));
   }
   for (const ModeStresses& m : outcome.stresses)
-    run.facts.emplace_back(fmt::format("mode {}: largest von Mises stress per unit modal coordinate (shape normalized to unit modal mass)", m.mode),
-                           peak_von_mises(model.mesh, m.field));
+    run.facts.emplace_back(
+        fmt::format("mode {}: largest von Mises stress per unit modal coordinate (shape normalized to unit modal mass)",
+                    m.mode),
+        peak_von_mises(model.mesh, m.field));
 }
 
 void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run) {
-  run.facts.emplace_back("analysis", fmt::format("rotating body, floating frame of reference: {} for {} s; axis through ({}, {}, {}) m along "
-                                                 "({}, {}, {}); gravity ({}, {}, {}) m/s^2; geometric stiffening {}, Coriolis {}",
-                                                 o.profile, g(spec.end_time), g(spec.axis_point.x()), g(spec.axis_point.y()),
-                                                 g(spec.axis_point.z()), g(spec.axis_direction.x()), g(spec.axis_direction.y()),
-                                                 g(spec.axis_direction.z()), g(spec.gravity.x()), g(spec.gravity.y()), g(spec.gravity.z()),
-                                                 spec.stiffening ? "on" : "off", spec.coriolis ? "on" : "off"));
-  run.facts.emplace_back("elastic coordinates", spec.modal_basis ? fmt::format("{} of {} free DOFs: {} fixed-interface modes at rest + "
-                                                                               "static shapes (centrifugal, Euler, gravity)",
-                                                                               o.basis_size, o.free_dofs, spec.basis_modes)
-                                                                 : fmt::format("every free DOF ({})", o.free_dofs));
-  run.facts.emplace_back("time integration", fmt::format("generalized-alpha, rho_inf = {}, dt = {:.4g} s ({}), {} steps, {} factorizations",
-                                                         g(spec.rho_infinity), o.time_step,
-                                                         spec.time_step > 0 ? "as given" : "40 steps per period of the lowest rotating mode",
-                                                         o.history.steps, o.history.factorizations));
-  run.facts.emplace_back("setup / integration / Campbell [s]", fmt::format("{:.3f} / {:.3f} / {:.3f} ({:.2f} us per step)", o.setup_seconds,
-                                                                           o.run_seconds, o.campbell_seconds,
-                                                                           1e6 * o.run_seconds / std::max(1, o.history.steps)));
+  run.facts.emplace_back(
+      "analysis",
+      fmt::format("rotating body, floating frame of reference: {} for {} s; axis through ({}, {}, {}) m along "
+                  "({}, {}, {}); gravity ({}, {}, {}) m/s^2; geometric stiffening {}, Coriolis {}",
+                  o.profile, g(spec.end_time), g(spec.axis_point.x()), g(spec.axis_point.y()), g(spec.axis_point.z()),
+                  g(spec.axis_direction.x()), g(spec.axis_direction.y()), g(spec.axis_direction.z()),
+                  g(spec.gravity.x()), g(spec.gravity.y()), g(spec.gravity.z()), spec.stiffening ? "on" : "off",
+                  spec.coriolis ? "on" : "off"));
+  run.facts.emplace_back("elastic coordinates",
+                         spec.modal_basis ? fmt::format("{} of {} free DOFs: {} fixed-interface modes at rest + "
+                                                        "static shapes (centrifugal, Euler, gravity)",
+                                                        o.basis_size, o.free_dofs, spec.basis_modes)
+                                          : fmt::format("every free DOF ({})", o.free_dofs));
+  run.facts.emplace_back(
+      "time integration",
+      fmt::format("generalized-alpha, rho_inf = {}, dt = {:.4g} s ({}), {} steps, {} factorizations",
+                  g(spec.rho_infinity), o.time_step,
+                  spec.time_step > 0 ? "as given" : "40 steps per period of the lowest rotating mode", o.history.steps,
+                  o.history.factorizations));
+  run.facts.emplace_back("setup / integration / Campbell [s]",
+                         fmt::format("{:.3f} / {:.3f} / {:.3f} ({:.2f} us per step)", o.setup_seconds, o.run_seconds,
+                                     o.campbell_seconds, 1e6 * o.run_seconds / std::max(1, o.history.steps)));
   std::string modes;
   for (Eigen::Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m)
     modes += fmt::format("{}{:.2f}", m ? ", " : "", o.modes_at_speed.frequencies_hz[m]);
   run.facts.emplace_back(fmt::format("rotating modes at {} rad/s [Hz]", g(o.modes_at_speed.speed)), modes);
   std::string crossings;
   for (const ffrf::EngineOrderCrossing& c : o.crossings)
-    crossings += fmt::format("{}EO {} x mode {} at {:.4g} rad/s ({:.0f} rpm, {:.2f} Hz)", crossings.empty() ? "" : "; ", c.engine_order, c.mode,
-                             c.speed, c.speed * 60.0 / (2 * 3.141592653589793), c.frequency_hz);
-  run.facts.emplace_back("engine-order crossings (Campbell)", crossings.empty() ? std::string("none in the speed range") : crossings);
+    crossings += fmt::format("{}EO {} x mode {} at {:.4g} rad/s ({:.0f} rpm, {:.2f} Hz)", crossings.empty() ? "" : "; ",
+                             c.engine_order, c.mode, c.speed, c.speed * 60.0 / (2 * 3.141592653589793), c.frequency_hz);
+  run.facts.emplace_back("engine-order crossings (Campbell)",
+                         crossings.empty() ? std::string("none in the speed range") : crossings);
   if (!o.modes_at_speed.stable)
-    run.warnings.push_back(fmt::format("the linearized model is unstable at {} rad/s (growth rate {:.3g} 1/s): the centrifugal softening "
-                                       "exceeds the stiffness", g(o.modes_at_speed.speed), o.modes_at_speed.max_growth_rate));
+    run.warnings.push_back(
+        fmt::format("the linearized model is unstable at {} rad/s (growth rate {:.3g} 1/s): the centrifugal softening "
+                    "exceeds the stiffness",
+                    g(o.modes_at_speed.speed), o.modes_at_speed.max_growth_rate));
 }
 
 }  // namespace
@@ -246,11 +299,13 @@ void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run
 void describe_model(const ModelSpec& spec, bool driven_contact, const Model& model, RunRecord& run) {
   const Mesh& mesh = model.mesh;
   std::string elements;
-  for (const auto& b : mesh.blocks) elements += fmt::format("{}{} x {}", elements.empty() ? "" : ", ", b.ids.size(), element_name(b.type));
+  for (const auto& b : mesh.blocks)
+    elements += fmt::format("{}{} x {}", elements.empty() ? "" : ", ", b.ids.size(), element_name(b.type));
   std::string source;
   switch (spec.mesh.kind) {
     case MeshSpec::Kind::csv:
-      source = fmt::format("CSV ({}, {})", spec.mesh.nodes_csv.filename().string(), spec.mesh.elements_csv.filename().string());
+      source = fmt::format("CSV ({}, {})", spec.mesh.nodes_csv.filename().string(),
+                           spec.mesh.elements_csv.filename().string());
       break;
     case MeshSpec::Kind::mapped_quad:
       source = fmt::format("mapped quad, {} x {} divisions", spec.mesh.mapped.nx, spec.mesh.mapped.ny);
@@ -258,24 +313,31 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
     case MeshSpec::Kind::hex_blocks:
       source = fmt::format("{} hexahedral block(s) merged at coincident nodes", spec.mesh.blocks.size());
       break;
-    case MeshSpec::Kind::gmsh: source = fmt::format("Gmsh {}", spec.mesh.gmsh_file.filename().string()); break;
+    case MeshSpec::Kind::gmsh:
+      source = fmt::format("Gmsh {}", spec.mesh.gmsh_file.filename().string());
+      break;
     case MeshSpec::Kind::none:
-      run.facts.emplace_back("model", driven_contact ? "none: one contact driven by an imposed relative motion (test rig)"
+      run.facts.emplace_back("model", driven_contact
+                                          ? "none: one contact driven by an imposed relative motion (test rig)"
                                           : "no mesh: reduced or lumped models given by their matrices");
       return;
     case MeshSpec::Kind::blade_section: {
       const BladeSectionDivisions& n = spec.mesh.blade_divisions;
-      source = fmt::format("chapter-2 blade (the two-blade article's blade in its plane{}): root {} x {}, neck {} rows, lip {} rows, airfoil "
-                           "{} x {}{}", spec.mesh.element == ElementType::hex8 ? ", extruded, damper-face corners left out" : "",
-                           2 * n.root_side_columns + n.airfoil_columns + 2, n.root_rows, n.neck_rows, n.lip_rows, n.airfoil_columns,
-                           n.airfoil_rows, spec.mesh.element == ElementType::hex8 ? fmt::format(", {} layers through t", n.layers) : "");
+      source = fmt::format(
+          "chapter-2 blade (the two-blade article's blade in its plane{}): root {} x {}, neck {} rows, lip {} rows, "
+          "airfoil "
+          "{} x {}{}",
+          spec.mesh.element == ElementType::hex8 ? ", extruded, damper-face corners left out" : "",
+          2 * n.root_side_columns + n.airfoil_columns + 2, n.root_rows, n.neck_rows, n.lip_rows, n.airfoil_columns,
+          n.airfoil_rows, spec.mesh.element == ElementType::hex8 ? fmt::format(", {} layers through t", n.layers) : "");
       break;
     }
     case MeshSpec::Kind::two_blade: {
       const TwoBladeDimensions& d = spec.mesh.two_blade;
-      source = fmt::format("two-blade article (2 blades, 2 wedges, fixture), refinement {}, {} divisions through t, "
-                           "{} along the airfoil, glued at coincident nodes (tolerance {} m)",
-                           d.refinement, d.nz(), d.airfoil_divisions * d.refinement, g(spec.mesh.merge_tolerance));
+      source = fmt::format(
+          "two-blade article (2 blades, 2 wedges, fixture), refinement {}, {} divisions through t, "
+          "{} along the airfoil, glued at coincident nodes (tolerance {} m)",
+          d.refinement, d.nz(), d.airfoil_divisions * d.refinement, g(spec.mesh.merge_tolerance));
       std::string dims;
       for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
         dims += fmt::format("{}{} = {}", dims.empty() ? "" : ", ", f.name, g(d.*f.member));
@@ -286,35 +348,42 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
   run.facts.emplace_back("mesh", source);
   run.facts.emplace_back("elements", elements);
   run.facts.emplace_back("nodes", std::to_string(mesh.n_nodes()));
-  run.facts.emplace_back("E [Pa], nu, rho [kg/m^3]", fmt::format("{}, {}, {}", g(spec.section.youngs_modulus),
-                                                                 g(spec.section.poisson_ratio), g(spec.section.density)));
+  run.facts.emplace_back("E [Pa], nu, rho [kg/m^3]",
+                         fmt::format("{}, {}, {}", g(spec.section.youngs_modulus), g(spec.section.poisson_ratio),
+                                     g(spec.section.density)));
   if (mesh.dim == 2) run.facts.emplace_back("thickness [m]", g(spec.section.thickness));
   for (const auto& l : model.loads)
     run.facts.emplace_back(fmt::format("load on '{}'", l.set),
                            fmt::format("{} N along {}, split {}", g(l.total), "xyz"[l.direction],
                                        l.split == LoadSplit::equal ? "equally" : "consistently over the edge"));
   auto vec = [&](const Eigen::Vector3d& v) {
-    return mesh.dim == 2 ? fmt::format("({}, {})", g(v.x()), g(v.y())) : fmt::format("({}, {}, {})", g(v.x()), g(v.y()), g(v.z()));
+    return mesh.dim == 2 ? fmt::format("({}, {})", g(v.x()), g(v.y()))
+                         : fmt::format("({}, {}, {})", g(v.x()), g(v.y()), g(v.z()));
   };
   const char* facets = mesh.dim == 2 ? "boundary edges" : "boundary faces";
   for (const SurfaceLoad& l : model.surface_loads)
-    run.facts.emplace_back(fmt::format("{} on '{}'", l.kind == SurfaceLoad::Kind::pressure ? "pressure" : "traction", l.set),
-                           l.kind == SurfaceLoad::Kind::pressure
-                               ? fmt::format("{} Pa normal to the {} of the set (> 0 pushes into the body), consistent nodal forces", g(l.pressure), facets)
-                               : fmt::format("{} Pa on the {} of the set, consistent nodal forces", vec(l.traction), facets));
+    run.facts.emplace_back(
+        fmt::format("{} on '{}'", l.kind == SurfaceLoad::Kind::pressure ? "pressure" : "traction", l.set),
+        l.kind == SurfaceLoad::Kind::pressure
+            ? fmt::format("{} Pa normal to the {} of the set (> 0 pushes into the body), consistent nodal forces",
+                          g(l.pressure), facets)
+            : fmt::format("{} Pa on the {} of the set, consistent nodal forces", vec(l.traction), facets));
   for (const BodyLoad& l : model.body_loads)
-    run.facts.emplace_back(l.kind == BodyLoad::Kind::gravity ? "gravity" : "centrifugal load",
-                           l.kind == BodyLoad::Kind::gravity
-                               ? fmt::format("{} m/s^2 on every element, through its consistent mass", vec(l.acceleration))
-                               : fmt::format("{} rad/s about the axis ({}, {}, {}) through {} m, through the consistent mass (no spin "
-                                             "softening, no stress stiffening)", g(l.speed), g(l.axis.x()), g(l.axis.y()), g(l.axis.z()),
-                                             vec(l.origin)));
+    run.facts.emplace_back(
+        l.kind == BodyLoad::Kind::gravity ? "gravity" : "centrifugal load",
+        l.kind == BodyLoad::Kind::gravity
+            ? fmt::format("{} m/s^2 on every element, through its consistent mass", vec(l.acceleration))
+            : fmt::format("{} rad/s about the axis ({}, {}, {}) through {} m, through the consistent mass (no spin "
+                          "softening, no stress stiffening)",
+                          g(l.speed), g(l.axis.x()), g(l.axis.y()), g(l.axis.z()), vec(l.origin)));
 }
 
 void describe_analysis(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model, RunRecord& run) {
   visit_analysis(spec, results, [&](const auto& s, const auto& outcome) {
-    if constexpr (requires { describe(s, outcome, model, run); }) describe(s, outcome, model, run);  // facts that name nodes
-    else describe(s, outcome, run);
+    if constexpr (requires { describe(s, outcome, model, run); })
+      describe(s, outcome, model, run);  // facts that name nodes
+    else
+      describe(s, outcome, run);
   });
 }
 

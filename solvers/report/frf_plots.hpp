@@ -13,7 +13,8 @@ namespace bb {
 
 // Amplitude of response `output` (e.g. "T2.x") of every model that has it; log scale in y, the
 // full mesh's natural frequencies as dotted lines when known.
-Plot plot_frf(const FrfOutcome& frf, const std::string& output, const std::filesystem::path& out_dir, const std::string& stem);
+Plot plot_frf(const FrfOutcome& frf, const std::string& output, const std::filesystem::path& out_dir,
+              const std::string& stem);
 
 // The first model's first response at each force level of the linearity sweep.
 Plot plot_force_levels(const FrfOutcome& frf, const std::filesystem::path& out_dir, const std::string& stem);

@@ -17,6 +17,7 @@ std::ofstream open_plot_data(const std::filesystem::path& out_dir, const std::st
 
 // Writes out_dir/plots/<stem>.gp (SVG terminal + `script`) and runs gnuplot on it; the plot, or
 // the reason it was not drawn.
-Plot draw(const std::filesystem::path& out_dir, const std::string& stem, const std::string& title, const std::string& script);
+Plot draw(const std::filesystem::path& out_dir, const std::string& stem, const std::string& title,
+          const std::string& script);
 
 }  // namespace bb

@@ -26,14 +26,17 @@ std::string abscissa_label(const HbmOutcome& hbm) { return hbm.prepared.damper ?
 
 }  // namespace
 
-Plot plot_hbm_levels(const HbmOutcome& hbm, size_t response, bool per_newton, const fs::path& out_dir, const std::string& stem) {
+Plot plot_hbm_levels(const HbmOutcome& hbm, size_t response, bool per_newton, const fs::path& out_dir,
+                     const std::string& stem) {
   const std::string name = hbm.prepared.response_names.at(response);
   {
     std::ofstream out = open_plot_data(out_dir, stem);
     for (const HbmLevel& l : hbm.levels) {
       out << "# Fe = " << l.force << " N: frequency_hz amplitude\n";
       for (size_t i = 0; i < l.frequency_hz.size(); ++i)
-        out << l.frequency_hz[i] << ' ' << l.amplitude(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(response)) / (per_newton ? l.force : 1.0)
+        out << l.frequency_hz[i] << ' '
+            << l.amplitude(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(response)) /
+                   (per_newton ? l.force : 1.0)
             << '\n';
       out << "\n\n";
     }
@@ -44,25 +47,29 @@ Plot plot_hbm_levels(const HbmOutcome& hbm, size_t response, bool per_newton, co
             << hbm.stuck_response(i, static_cast<Eigen::Index>(response)) << '\n';
     }
   }
-  const std::string title = per_newton ? fmt::format("Response {} per newton at each force level, with the linear limits", name)
-                                       : fmt::format("Response {} at each force level (first harmonic)", name);
-  std::string script = fmt::format("set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
-                                   "set ylabel '{}'\nset grid\nset key outside right\nplot ",
-                                   gnuplot_quote(title), per_newton ? "amplitude / Fe [m/N]" : "amplitude [m]");
+  const std::string title =
+      per_newton ? fmt::format("Response {} per newton at each force level, with the linear limits", name)
+                 : fmt::format("Response {} at each force level (first harmonic)", name);
+  std::string script = fmt::format(
+      "set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
+      "set ylabel '{}'\nset grid\nset key outside right\nplot ",
+      gnuplot_quote(title), per_newton ? "amplitude / Fe [m/N]" : "amplitude [m]");
   for (size_t i = 0; i < hbm.levels.size(); ++i)
-    script += fmt::format("{}'{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N'", i ? ", \\\n     " : "", stem, i,
-                          kColours[i % 8], hbm.levels[i].force);
+    script += fmt::format("{}'{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N'",
+                          i ? ", \\\n     " : "", stem, i, kColours[i % 8], hbm.levels[i].force);
   if (per_newton)
-    script += fmt::format(", \\\n     '{0}.dat' index {1} using 1:2 with lines lw 2 dt 2 lc rgb '#000000' title 'free (no damper)', \\\n"
-                          "     '{0}.dat' index {1} using 1:3 with lines lw 2 dt 3 lc rgb '#000000' title 'stuck (eq 3.51)'",
-                          stem, hbm.levels.size());
+    script += fmt::format(
+        ", \\\n     '{0}.dat' index {1} using 1:2 with lines lw 2 dt 2 lc rgb '#000000' title 'free (no damper)', \\\n"
+        "     '{0}.dat' index {1} using 1:3 with lines lw 2 dt 3 lc rgb '#000000' title 'stuck (eq 3.51)'",
+        stem, hbm.levels.size());
   script += '\n';
   return draw(out_dir, stem, title, script);
 }
 
-Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, const fs::path& reference, const fs::path& out_dir,
-                          const std::string& stem) {
-  const std::vector<std::string> kinds = hbm.prepared.ip_oop ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
+Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, const fs::path& reference,
+                          const fs::path& out_dir, const std::string& stem) {
+  const std::vector<std::string> kinds =
+      hbm.prepared.ip_oop ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
   std::vector<std::vector<double>> ref(kinds.size());
   std::vector<std::vector<long>> ref_keys(kinds.size());
   for (size_t k = 0; k < kinds.size() && !reference.empty(); ++k) {
@@ -82,7 +89,9 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
       out << abscissa(hbm, level.force);
       for (size_t k = 0; k < kinds.size(); ++k) {
         const bool ok = k < level.peaks.size() && level.peaks[k].solution.converged;
-        const double v = !ok ? std::nan("") : quantity == "hz" ? level.peaks[k].frequency_hz : level.peaks[k].amplitude / level.force;
+        const double v = !ok                ? std::nan("")
+                         : quantity == "hz" ? level.peaks[k].frequency_hz
+                                            : level.peaks[k].amplitude / level.force;
         double r = std::nan("");
         for (size_t i = 0; i < ref_keys[k].size(); ++i)
           if (ref_keys[k][i] == static_cast<long>(l + 1)) r = ref[k][i];
@@ -93,23 +102,26 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
   }
   const std::string what = quantity == "hz" ? "resonance frequency" : "resonance amplitude per newton";
   const std::string title = fmt::format("Damper performance: {} against {}", what, abscissa_label(hbm));
-  std::string script = fmt::format("set title '{}'\nset logscale x\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\n",
-                                   gnuplot_quote(title), abscissa_label(hbm), quantity == "hz" ? "frequency [Hz]" : "amplitude / Fe [m/N]");
+  std::string script = fmt::format(
+      "set title '{}'\nset logscale x\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside right\n",
+      gnuplot_quote(title), abscissa_label(hbm), quantity == "hz" ? "frequency [Hz]" : "amplitude / Fe [m/N]");
   if (quantity != "hz") script += "set logscale y\nset format y '10^{%L}'\n";
   script += "set datafile missing 'nan'\nplot ";
   for (size_t k = 0; k < kinds.size(); ++k) {
     std::string upper = kinds[k] == "peak" ? "peak" : kinds[k] == "ip" ? "IP" : "OOP";
-    script += fmt::format("{}'{}.dat' using 1:{} with linespoints pt 7 lc rgb '{}' title '{} (bladebench)'", k ? ", \\\n     " : "", stem,
-                          2 + 2 * k, kColours[k], upper);
+    script += fmt::format("{}'{}.dat' using 1:{} with linespoints pt 7 lc rgb '{}' title '{} (bladebench)'",
+                          k ? ", \\\n     " : "", stem, 2 + 2 * k, kColours[k], upper);
     if (!ref[k].empty())
-      script += fmt::format(", \\\n     '{}.dat' using 1:{} with linespoints pt 4 dt 2 lc rgb '{}' title '{} (reference)'", stem, 3 + 2 * k,
-                            kColours[k], upper);
+      script +=
+          fmt::format(", \\\n     '{}.dat' using 1:{} with linespoints pt 4 dt 2 lc rgb '{}' title '{} (reference)'",
+                      stem, 3 + 2 * k, kColours[k], upper);
   }
   script += '\n';
   return draw(out_dir, stem, title, script);
 }
 
-Plot plot_contact_states(const HbmOutcome& hbm, const std::string& kind, const fs::path& out_dir, const std::string& stem) {
+Plot plot_contact_states(const HbmOutcome& hbm, const std::string& kind, const fs::path& out_dir,
+                         const std::string& stem) {
   const std::vector<std::string>& contacts = hbm.prepared.contact_names;
   {
     std::ofstream out = open_plot_data(out_dir, stem);
@@ -132,13 +144,15 @@ Plot plot_contact_states(const HbmOutcome& hbm, const std::string& kind, const f
     }
   }
   const std::string title = fmt::format("Contact states at the {} peaks (slip = the rest of the period)", kind);
-  std::string script = fmt::format("set title '{}'\nset logscale x\nset xlabel '{}'\nset ylabel 'fraction of the period'\n"
-                                   "set yrange [-0.02:1.02]\nset grid\nset key outside right\nplot ",
-                                   gnuplot_quote(title), abscissa_label(hbm));
+  std::string script = fmt::format(
+      "set title '{}'\nset logscale x\nset xlabel '{}'\nset ylabel 'fraction of the period'\n"
+      "set yrange [-0.02:1.02]\nset grid\nset key outside right\nplot ",
+      gnuplot_quote(title), abscissa_label(hbm));
   for (size_t c = 0; c < contacts.size(); ++c)
-    script += fmt::format("{0}'{1}.dat' using 1:{2} with linespoints pt 7 lc rgb '{3}' title '{4} stick', \\\n"
-                          "     '{1}.dat' using 1:{5} with linespoints pt 4 dt 2 lc rgb '{3}' title '{4} lift-off'",
-                          c ? ", \\\n     " : "", stem, 2 + 2 * c, kColours[c % 8], gnuplot_quote(contacts[c]), 3 + 2 * c);
+    script += fmt::format(
+        "{0}'{1}.dat' using 1:{2} with linespoints pt 7 lc rgb '{3}' title '{4} stick', \\\n"
+        "     '{1}.dat' using 1:{5} with linespoints pt 4 dt 2 lc rgb '{3}' title '{4} lift-off'",
+        c ? ", \\\n     " : "", stem, 2 + 2 * c, kColours[c % 8], gnuplot_quote(contacts[c]), 3 + 2 * c);
   script += '\n';
   return draw(out_dir, stem, title, script);
 }
@@ -147,10 +161,12 @@ Plot plot_hbm_harmonics_study(const ResultTable& study, const fs::path& out_dir,
   std::vector<std::string> kinds;
   for (const std::string& c : study.columns)
     if (c.ends_with("_amp_error")) kinds.push_back(c.substr(0, c.size() - 10));
-  const int col_h = *study.column_index("harmonics"), col_f = *study.column_index("fe_n"), col_s = *study.column_index("seconds");
+  const int col_h = *study.column_index("harmonics"), col_f = *study.column_index("fe_n"),
+            col_s = *study.column_index("seconds");
   std::vector<double> levels;
   for (Eigen::Index r = 0; r < study.values.rows(); ++r)
-    if (std::find(levels.begin(), levels.end(), study.values(r, col_f)) == levels.end()) levels.push_back(study.values(r, col_f));
+    if (std::find(levels.begin(), levels.end(), study.values(r, col_f)) == levels.end())
+      levels.push_back(study.values(r, col_f));
   std::vector<std::string> titles;
   {
     std::ofstream out = open_plot_data(out_dir, stem);
@@ -169,13 +185,15 @@ Plot plot_hbm_harmonics_study(const ResultTable& study, const fs::path& out_dir,
       }
   }
   const std::string title = "Harmonic balance: peak amplitude error against the largest H vs cost";
-  std::string script = fmt::format("set title '{}'\nset logscale xy\nset format y '10^{{%L}}'\nset xlabel 'sweep time [s]'\n"
-                                   "set ylabel '|relative amplitude error|'\nset grid\nset key outside right\nplot ",
-                                   gnuplot_quote(title));
+  std::string script = fmt::format(
+      "set title '{}'\nset logscale xy\nset format y '10^{{%L}}'\nset xlabel 'sweep time [s]'\n"
+      "set ylabel '|relative amplitude error|'\nset grid\nset key outside right\nplot ",
+      gnuplot_quote(title));
   for (size_t i = 0; i < titles.size(); ++i)
-    script += fmt::format("{0}'{1}.dat' index {2} using 1:2 with linespoints pt 7 lc rgb '{3}' title '{4}', "
-                          "'{1}.dat' index {2} using 1:2:(sprintf('H=%d', $3)) with labels offset 0,1 notitle",
-                          i ? ", \\\n     " : "", stem, i, kColours[i % 8], gnuplot_quote(titles[i]));
+    script += fmt::format(
+        "{0}'{1}.dat' index {2} using 1:2 with linespoints pt 7 lc rgb '{3}' title '{4}', "
+        "'{1}.dat' index {2} using 1:2:(sprintf('H=%d', $3)) with labels offset 0,1 notitle",
+        i ? ", \\\n     " : "", stem, i, kColours[i % 8], gnuplot_quote(titles[i]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

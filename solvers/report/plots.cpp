@@ -1,19 +1,18 @@
 #include "report/plots.hpp"
 
-#include "mesh/boundary.hpp"
-#include "mesh/element_topology.hpp"
-
-#include "report/gnuplot.hpp"
-
 #include <fmt/format.h>
 
-#include <cmath>
-#include <cstdlib>
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
-#include <vector>
 #include <map>
+#include <vector>
+
+#include "mesh/boundary.hpp"
+#include "mesh/element_topology.hpp"
+#include "report/gnuplot.hpp"
 
 namespace bb {
 namespace {
@@ -33,7 +32,8 @@ void write_boundary(std::ofstream& out, const Mesh& mesh, const Eigen::MatrixXd&
       }
   for (const auto& [edge, count] : uses) {
     if (count != 1) continue;
-    out << xy(edge.first, 0) << ' ' << xy(edge.first, 1) << '\n' << xy(edge.second, 0) << ' ' << xy(edge.second, 1) << "\n\n";
+    out << xy(edge.first, 0) << ' ' << xy(edge.first, 1) << '\n'
+        << xy(edge.second, 0) << ' ' << xy(edge.second, 1) << "\n\n";
   }
 }
 
@@ -67,7 +67,8 @@ std::vector<std::array<int, 4>> boundary_faces(const Mesh& mesh) {
 
 // Edges of the skin faces that face `axis` (+x, +y or +z) and belong to only one such face: the
 // outline of the solid seen from that side, bodies and openings included, with no interior lines.
-std::vector<std::pair<int, int>> facing_outline(const Mesh& mesh, const std::vector<std::array<int, 4>>& faces, int axis) {
+std::vector<std::pair<int, int>> facing_outline(const Mesh& mesh, const std::vector<std::array<int, 4>>& faces,
+                                                int axis) {
   std::map<std::pair<int, int>, int> uses;
   for (const auto& f : faces) {
     const Eigen::Vector3d d1 = mesh.coords.row(f[2]) - mesh.coords.row(f[0]);
@@ -97,7 +98,8 @@ Plot plot_deformed_solid(const Mesh& mesh, const Eigen::MatrixXd& displacements,
       const auto edges = facing_outline(mesh, faces, v[0]);
       for (const Eigen::MatrixXd* xyz : {&mesh.coords, &deformed}) {
         for (const auto& [p, q] : edges)
-          out << (*xyz)(p, v[1]) << ' ' << (*xyz)(p, v[2]) << '\n' << (*xyz)(q, v[1]) << ' ' << (*xyz)(q, v[2]) << "\n\n";
+          out << (*xyz)(p, v[1]) << ' ' << (*xyz)(p, v[2]) << '\n'
+              << (*xyz)(q, v[1]) << ' ' << (*xyz)(q, v[2]) << "\n\n";
         out << "\n";
       }
     }
@@ -176,7 +178,8 @@ Plot plot_refinement_cost(const RefinementResult& study, const fs::path& out_dir
     std::ofstream out = open_plot_data(out_dir, stem);
     out << "# free_dofs assembly_s solve_s\n";
     for (const RefinementRow& r : study.rows)
-      out << r.n_free_dofs << ' ' << std::max(r.assembly_seconds, 1e-6) << ' ' << std::max(r.solve_seconds, 1e-6) << '\n';
+      out << r.n_free_dofs << ' ' << std::max(r.assembly_seconds, 1e-6) << ' ' << std::max(r.solve_seconds, 1e-6)
+          << '\n';
   }
   const std::string title = "Cost vs DOFs";
   const std::string script = fmt::format(

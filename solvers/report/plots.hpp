@@ -18,10 +18,12 @@ Plot plot_check(const std::vector<CheckEntry>& entries, const std::string& group
                 const std::string& stem);
 
 // Log-log error vs free DOFs, and solve time vs free DOFs.
-Plot plot_refinement_error(const RefinementResult& study, const std::filesystem::path& out_dir, const std::string& stem);
+Plot plot_refinement_error(const RefinementResult& study, const std::filesystem::path& out_dir,
+                           const std::string& stem);
 Plot plot_refinement_cost(const RefinementResult& study, const std::filesystem::path& out_dir, const std::string& stem);
 
 // Log-log max frequency error vs free DOFs, one line per element type.
-Plot plot_modal_refinement(const ModalRefinementResult& study, const std::filesystem::path& out_dir, const std::string& stem);
+Plot plot_modal_refinement(const ModalRefinementResult& study, const std::filesystem::path& out_dir,
+                           const std::string& stem);
 
 }  // namespace bb

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "analysis/rotating_analysis.hpp"
-#include "results/table.hpp"
 #include "report/run_record.hpp"
+#include "results/table.hpp"
 
 namespace bb {
 
@@ -16,8 +16,8 @@ namespace bb {
 // zoom > 0 only the first `zoom` seconds.
 Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, const std::filesystem::path& out_dir,
                            const std::string& stem, double zoom = 0.0);
-Plot plot_campbell(const RotatingOutcome& o, const std::vector<int>& engine_orders, const std::filesystem::path& out_dir,
-                   const std::string& stem);
+Plot plot_campbell(const RotatingOutcome& o, const std::vector<int>& engine_orders,
+                   const std::filesystem::path& out_dir, const std::string& stem);
 
 // The rotating fidelity study: each level's errors against its cost, log-log, labelled.
 Plot plot_rotating_fidelity(const ResultTable& study, const std::filesystem::path& out_dir, const std::string& stem);

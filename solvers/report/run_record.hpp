@@ -29,13 +29,13 @@ struct RunRecord {
   std::string title;
   std::string description;
   RunStatus status = RunStatus::bad_input;
-  std::string message;  // error message for bad_input / solver_failed
+  std::string message;                // error message for bad_input / solver_failed
   std::vector<std::string> warnings;  // results to read with care (e.g. a peak next to a failed solve)
   double wall_seconds = 0.0;
   std::vector<std::pair<std::string, std::string>> facts;  // inputs and solver statistics
   std::vector<CheckSpec> check_specs;
   std::vector<CheckEntry> checks;
-  std::vector<std::string> tables;  // CSV files written
+  std::vector<std::string> tables;         // CSV files written
   std::vector<ResultTable> listed_tables;  // shown row by row in the report (tables with text labels)
   std::vector<Plot> plots;
   std::optional<RefinementResult> study;

@@ -12,7 +12,8 @@
 namespace bb {
 
 // Response `response` of every level, time integration (points) and harmonic balance (lines).
-Plot plot_time_frf(const TimeOutcome& time, size_t response, const std::filesystem::path& out_dir, const std::string& stem);
+Plot plot_time_frf(const TimeOutcome& time, size_t response, const std::filesystem::path& out_dir,
+                   const std::string& stem);
 
 // Tangential force against relative tangential displacement of every contact over the recorded periods.
 Plot plot_hysteresis(const TimeOutcome& time, const std::filesystem::path& out_dir, const std::string& stem);

@@ -1,11 +1,11 @@
 #include "report/writers.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace bb {
@@ -94,11 +94,16 @@ void write_listed_table(std::ofstream& out, const RunRecord& run, const ResultTa
 
 std::string status_name(RunStatus status) {
   switch (status) {
-    case RunStatus::pass: return "pass";
-    case RunStatus::fail: return "fail";
-    case RunStatus::no_checks: return "no_checks";
-    case RunStatus::bad_input: return "bad_input";
-    case RunStatus::solver_failed: return "solver_failed";
+    case RunStatus::pass:
+      return "pass";
+    case RunStatus::fail:
+      return "fail";
+    case RunStatus::no_checks:
+      return "no_checks";
+    case RunStatus::bad_input:
+      return "bad_input";
+    case RunStatus::solver_failed:
+      return "solver_failed";
   }
   return "?";
 }
@@ -106,10 +111,14 @@ std::string status_name(RunStatus status) {
 int exit_code(RunStatus status) {
   switch (status) {
     case RunStatus::pass:
-    case RunStatus::no_checks: return 0;
-    case RunStatus::fail: return 1;
-    case RunStatus::bad_input: return 2;
-    case RunStatus::solver_failed: return 3;
+    case RunStatus::no_checks:
+      return 0;
+    case RunStatus::fail:
+      return 1;
+    case RunStatus::bad_input:
+      return 2;
+    case RunStatus::solver_failed:
+      return 3;
   }
   return 3;
 }
@@ -138,13 +147,14 @@ void write_summary_json(const RunRecord& run, const std::filesystem::path& file)
   if (!run.warnings.empty()) j["warnings"] = run.warnings;
   j["checks"] = nlohmann::json::array();
   for (const CheckEntry& c : run.checks) {
-    j["checks"].push_back({{"name", c.name},
-                           {"computed", c.computed},
-                           {"reference", c.reference},
-                           {"abs_error", c.abs_error},
-                           {"rel_error", std::isfinite(c.rel_error) ? nlohmann::json(c.rel_error) : nlohmann::json(nullptr)},
-                           {"tolerance", c.tolerance},
-                           {"pass", c.pass}});
+    j["checks"].push_back(
+        {{"name", c.name},
+         {"computed", c.computed},
+         {"reference", c.reference},
+         {"abs_error", c.abs_error},
+         {"rel_error", std::isfinite(c.rel_error) ? nlohmann::json(c.rel_error) : nlohmann::json(nullptr)},
+         {"tolerance", c.tolerance},
+         {"pass", c.pass}});
   }
   nlohmann::json facts = nlohmann::json::object();
   for (const auto& [k, v] : run.facts) facts[k] = v;
@@ -169,9 +179,11 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     out << '\n';
   }
   if (!run.check_specs.empty()) {
-    out << "## Checks\n\nAn entry passes when |computed - reference| <= abs_tol + rel_tol * |reference| (expect `=`), or, one-sided,\n"
+    out << "## Checks\n\nAn entry passes when |computed - reference| <= abs_tol + rel_tol * |reference| (expect `=`), "
+           "or, one-sided,\n"
            "when computed <= reference + tolerance (`<=`) or computed >= reference - tolerance (`>=`).\n\n";
-    out << "| check | reference | expect | source | abs_tol | rel_tol | entries | failed | max abs error | max rel error |\n"
+    out << "| check | reference | expect | source | abs_tol | rel_tol | entries | failed | max abs error | max rel "
+           "error |\n"
            "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CheckSpec& spec : run.check_specs) {
       int n = 0, failed = 0;
@@ -183,22 +195,26 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
         max_abs = std::max(max_abs, e.abs_error);
         if (std::isfinite(e.rel_error) && e.reference != 0.0) max_rel = std::max(max_rel, e.rel_error);
       }
-      const std::string reference = !spec.reference_case.empty() && spec.reference_result.empty()
-                                        ? fmt::format("{}, numbered by the modes of {}", spec.reference.filename().string(),
-                                                      spec.reference_case.filename().string())
-                                    : !spec.reference_case.empty() ? fmt::format("result {} of {}", spec.reference_result,
-                                                                              spec.reference_case.filename().string())
-                                    : spec.reference_result.empty() ? spec.reference.filename().string()
-                                                                    : "result " + spec.reference_result;
-      const std::string paired = spec.match == CheckSpec::Match::mac     ? fmt::format(", modes paired by shape (MAC >= {})", spec.min_mac)
-                                 : spec.match == CheckSpec::Match::label ? fmt::format(", rows paired by label ({})", fmt::join(spec.labels, ", "))
-                                                                         : "";
-      out << fmt::format("| {} | `{}`{} | {} | {} | {} | {} | {} | {} | {} | {} |\n", spec.name, reference, paired, relation_symbol(spec.relation),
-                         spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol), sci(spec.rel_tol), n, failed, sci(max_abs),
-                         sci(max_rel));
+      const std::string reference =
+          !spec.reference_case.empty() && spec.reference_result.empty()
+              ? fmt::format("{}, numbered by the modes of {}", spec.reference.filename().string(),
+                            spec.reference_case.filename().string())
+          : !spec.reference_case.empty()
+              ? fmt::format("result {} of {}", spec.reference_result, spec.reference_case.filename().string())
+          : spec.reference_result.empty() ? spec.reference.filename().string()
+                                          : "result " + spec.reference_result;
+      const std::string paired = spec.match == CheckSpec::Match::mac
+                                     ? fmt::format(", modes paired by shape (MAC >= {})", spec.min_mac)
+                                 : spec.match == CheckSpec::Match::label
+                                     ? fmt::format(", rows paired by label ({})", fmt::join(spec.labels, ", "))
+                                     : "";
+      out << fmt::format("| {} | `{}`{} | {} | {} | {} | {} | {} | {} | {} | {} |\n", spec.name, reference, paired,
+                         relation_symbol(spec.relation), spec.source.empty() ? "-" : spec.source, sci(spec.abs_tol),
+                         sci(spec.rel_tol), n, failed, sci(max_abs), sci(max_rel));
     }
     out << "\n<details><summary>Every entry</summary>\n\n";
-    out << "| entry | computed | reference | abs error | rel error | tolerance | pass |\n|---|---|---|---|---|---|---|\n";
+    out << "| entry | computed | reference | abs error | rel error | tolerance | pass "
+           "|\n|---|---|---|---|---|---|---|\n";
     for (const CheckEntry& e : run.checks)
       out << fmt::format("| {} | {:.9e} | {:.9e} | {} | {} | {} | {} |\n", e.name, e.computed, e.reference,
                          sci(e.abs_error), sci(e.rel_error), sci(e.tolerance), e.pass ? "pass" : "**FAIL**");
@@ -240,8 +256,8 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     out << "| level | nx x ny | free DOFs | probe [m] | error vs Timoshenko | error vs limit | observed order | "
            "assembly [s] | factor+solve [s] |\n|---|---|---|---|---|---|---|---|---|\n";
     for (const RefinementRow& r : s.rows)
-      out << fmt::format("| {} | {} x {} | {} | {:.6e} | {:+.3f}% | {:+.4f}% | {} | {:.4f} | {:.4f} |\n", r.level, r.nx, r.ny,
-                         r.n_free_dofs, r.probe, 100 * r.error_vs_beam, 100 * r.error_vs_limit,
+      out << fmt::format("| {} | {} x {} | {} | {:.6e} | {:+.3f}% | {:+.4f}% | {} | {:.4f} | {:.4f} |\n", r.level, r.nx,
+                         r.ny, r.n_free_dofs, r.probe, 100 * r.error_vs_beam, 100 * r.error_vs_limit,
                          r.observed_order > 0 ? fmt::format("{:.2f}", r.observed_order) : std::string("-"),
                          r.assembly_seconds, r.solve_seconds);
     out << '\n';
@@ -252,18 +268,21 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     const ModalRefinementRow& ref = m.rows[static_cast<size_t>(m.reference_row)];
     out << "## Mesh convergence of the first frequencies (accuracy vs cost)\n\n";
     if (!run.study_note.empty()) out << run.study_note << "\n\n";
-    out << fmt::format("Errors are relative to the finest mesh of the study ({} at refinement {}, {} free DOFs), mode by "
-                       "mode in frequency order, over the first {} modes.\n\n",
-                       element_name(ref.element), ref.refinement, ref.n_free_dofs, m.modes);
+    out << fmt::format(
+        "Errors are relative to the finest mesh of the study ({} at refinement {}, {} free DOFs), mode by "
+        "mode in frequency order, over the first {} modes.\n\n",
+        element_name(ref.element), ref.refinement, ref.n_free_dofs, m.modes);
     out << "| element | refinement | free DOFs | f1 [Hz] | f" << m.modes
         << " [Hz] | max error | rms error | assembly [s] | eigensolve [s] |\n|---|---|---|---|---|---|---|---|---|\n";
     for (const ModalRefinementRow& r : m.rows)
-      out << fmt::format("| {} | {} | {} | {:.3f} | {:.2f} | {:.3f}% | {:.3f}% | {:.2f} | {:.2f} |\n", element_name(r.element),
-                         r.refinement, r.n_free_dofs, r.frequencies_hz.front(), r.frequencies_hz.back(), 100 * r.max_error,
-                         100 * r.rms_error, r.assembly_seconds, r.solve_seconds);
+      out << fmt::format("| {} | {} | {} | {:.3f} | {:.2f} | {:.3f}% | {:.3f}% | {:.2f} | {:.2f} |\n",
+                         element_name(r.element), r.refinement, r.n_free_dofs, r.frequencies_hz.front(),
+                         r.frequencies_hz.back(), 100 * r.max_error, 100 * r.rms_error, r.assembly_seconds,
+                         r.solve_seconds);
     out << '\n';
-    for (const Plot& p : run.study_plots) out << (p.file.empty() ? fmt::format("*{}: not drawn ({})*\n\n", p.title, p.note)
-                                                                 : fmt::format("![{}]({})\n\n", p.title, p.file));
+    for (const Plot& p : run.study_plots)
+      out << (p.file.empty() ? fmt::format("*{}: not drawn ({})*\n\n", p.title, p.note)
+                             : fmt::format("![{}]({})\n\n", p.title, p.file));
   }
   for (const ResultTable& t : run.study_tables) {
     out << fmt::format("## Study: {} (accuracy vs cost)\n\n", t.name);

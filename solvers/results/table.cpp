@@ -26,15 +26,18 @@ int ResultTable::row_of_key(long key) const {
   return -1;
 }
 
-ResultTable table_from_rows(const std::string& name, std::vector<std::string> columns, const std::vector<std::vector<double>>& rows) {
+ResultTable table_from_rows(const std::string& name, std::vector<std::string> columns,
+                            const std::vector<std::vector<double>>& rows) {
   ResultTable t;
   t.name = name;
   t.columns = std::move(columns);
   t.values.resize(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(t.columns.size()));
   for (size_t i = 0; i < rows.size(); ++i) {
     if (rows[i].size() != t.columns.size())
-      throw std::invalid_argument(name + ": a row has " + std::to_string(rows[i].size()) + " values for " + std::to_string(t.columns.size()) + " columns");
-    for (size_t j = 0; j < rows[i].size(); ++j) t.values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
+      throw std::invalid_argument(name + ": a row has " + std::to_string(rows[i].size()) + " values for " +
+                                  std::to_string(t.columns.size()) + " columns");
+    for (size_t j = 0; j < rows[i].size(); ++j)
+      t.values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
   }
   return t;
 }

@@ -7,7 +7,8 @@
 
 namespace bb {
 
-ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal_spec, const ModalRefinementStudySpec& s) {
+ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal_spec,
+                                                 const ModalRefinementStudySpec& s) {
   ModalRefinementResult out;
   out.modes = s.modes;
   for (ElementType element : s.elements) {
@@ -41,7 +42,8 @@ ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const Mo
   }
   for (size_t i = 0; i < out.rows.size(); ++i)
     if (out.rows[i].element == ElementType::hex20 &&
-        (out.reference_row < 0 || out.rows[i].n_free_dofs > out.rows[static_cast<size_t>(out.reference_row)].n_free_dofs))
+        (out.reference_row < 0 ||
+         out.rows[i].n_free_dofs > out.rows[static_cast<size_t>(out.reference_row)].n_free_dofs))
       out.reference_row = static_cast<int>(i);
   if (out.reference_row < 0) out.reference_row = static_cast<int>(out.rows.size()) - 1;
   const auto& ref = out.rows[static_cast<size_t>(out.reference_row)].frequencies_hz;

@@ -27,6 +27,7 @@ struct ModalRefinementResult {
   int modes = 0;
 };
 
-ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal, const ModalRefinementStudySpec& study);
+ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal,
+                                                 const ModalRefinementStudySpec& study);
 
 }  // namespace bb

@@ -10,8 +10,12 @@ namespace bb {
 
 RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStudySpec& s) {
   RefinementResult out;
-  const RectangularBeam beam{s.beam_length, s.beam_height, spec.section.thickness, spec.section.youngs_modulus,
-                             spec.section.poisson_ratio, s.shear_coefficient};
+  const RectangularBeam beam{s.beam_length,
+                             s.beam_height,
+                             spec.section.thickness,
+                             spec.section.youngs_modulus,
+                             spec.section.poisson_ratio,
+                             s.shear_coefficient};
   out.beam_deflection = timoshenko_tip_deflection(beam, s.beam_load);
   out.bending_only = euler_bernoulli_tip_deflection(beam, s.beam_load);
 

@@ -31,12 +31,13 @@ ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const 
 
   ResultTable t;
   t.name = "rom_study";
-  t.columns = {"variant", "master_points", "modes", "rom_dofs", "max_freq_error", "rms_freq_error", "peak_freq_error",
-               "peak_amp_error", "reduction_s", "solve_us_per_frequency"};
+  t.columns = {"variant",        "master_points",   "modes",          "rom_dofs",    "max_freq_error",
+               "rms_freq_error", "peak_freq_error", "peak_amp_error", "reduction_s", "solve_us_per_frequency"};
   t.values.resize(static_cast<Eigen::Index>(o.roms.size()), static_cast<Eigen::Index>(t.columns.size()));
   for (size_t v = 0; v < o.roms.size(); ++v) {
     const RomOutcome& r = o.roms[v];
-    const auto n = std::min<Eigen::Index>({static_cast<Eigen::Index>(study.compare_modes), r.frequencies_hz.size(), full.size()});
+    const auto n =
+        std::min<Eigen::Index>({static_cast<Eigen::Index>(study.compare_modes), r.frequencies_hz.size(), full.size()});
     double max_error = 0.0, sum2 = 0.0;
     for (Eigen::Index k = 0; k < n; ++k) {
       const double e = std::abs(r.frequencies_hz[k] / full[k] - 1.0);
@@ -60,8 +61,9 @@ ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const 
     const CraigBamptonTiming& c = r.timing;
     const auto row = static_cast<Eigen::Index>(v);
     t.values.row(row) << static_cast<double>(v + 1), static_cast<double>(frf.roms[v].masters.size()),
-        static_cast<double>(frf.roms[v].modes), static_cast<double>(r.model.size()), max_error, std::sqrt(sum2 / static_cast<double>(std::max<Eigen::Index>(n, 1))),
-        peak_f, peak_a, c.constraint_modes_seconds + c.fixed_interface_seconds + c.projection_seconds,
+        static_cast<double>(frf.roms[v].modes), static_cast<double>(r.model.size()), max_error,
+        std::sqrt(sum2 / static_cast<double>(std::max<Eigen::Index>(n, 1))), peak_f, peak_a,
+        c.constraint_modes_seconds + c.fixed_interface_seconds + c.projection_seconds,
         1e6 * r.sweep_seconds / n_frequencies;
   }
   t.add_text_column("master_set", set_of_variant);

@@ -4,8 +4,8 @@
 #pragma once
 #include "analysis/frf_spec.hpp"
 #include "model/model.hpp"
-#include "study/study_spec.hpp"
 #include "results/table.hpp"
+#include "study/study_spec.hpp"
 
 namespace bb {
 

@@ -67,17 +67,21 @@ Level static_level(const Model& model, const RotatingSpec& spec) {
   for (int n : nodes) l.mean += all.segment(n * model.mesh.dim, model.mesh.dim) / static_cast<double>(nodes.size());
   const ffrf::ElasticBasis basis = ffrf::make_elastic_basis(body, {ffrf::BasisKind::modal, spec.basis_modes, {}, true});
   const ffrf::ProjectedBody projected = ffrf::project(body, basis);
-  l.frequency_hz = ffrf::rotating_modes(projected, speed, {.n_modes = 1, .stiffening = true, .coriolis = spec.coriolis}).frequencies_hz[0];
+  l.frequency_hz = ffrf::rotating_modes(projected, speed, {.n_modes = 1, .stiffening = true, .coriolis = spec.coriolis})
+                       .frequencies_hz[0];
   l.unknowns = body.n_free();
   l.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return l;
 }
 
-double relative(double value, double reference) { return std::abs(value - reference) / std::max(std::abs(reference), 1e-300); }
+double relative(double value, double reference) {
+  return std::abs(value - reference) / std::max(std::abs(reference), 1e-300);
+}
 
 }  // namespace
 
-ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& spec, const RotatingFidelityStudySpec& study) {
+ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& spec,
+                                        const RotatingFidelityStudySpec& study) {
   std::vector<Level> levels;
   levels.push_back(static_level(model, spec));
   RotatingSpec linear = spec;
@@ -111,12 +115,13 @@ ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& 
     rows.push_back({static_cast<double>(rows.size() + 1), static_cast<double>(l.unknowns), l.seconds,
                     has_mean ? relative(l.mean[mean_dir], ref.mean[mean_dir]) : kNan,
                     has_motion && ref.motion.size() > 0 ? relative(l.motion[motion_dir], ref.motion[motion_dir]) : kNan,
-                    std::isfinite(l.frequency_hz) && !l.diverged ? relative(l.frequency_hz, ref.frequency_hz) : kNan, l.diverged ? 1.0 : 0.0});
+                    std::isfinite(l.frequency_hz) && !l.diverged ? relative(l.frequency_hz, ref.frequency_hz) : kNan,
+                    l.diverged ? 1.0 : 0.0});
     names.push_back(l.model);
   }
-  ResultTable t = table_from_rows("rotating_fidelity", {"level", "unknowns", "seconds", "mean_error", "motion_error", "frequency_error",
-                                                       "diverged"},
-                                  rows);
+  ResultTable t = table_from_rows(
+      "rotating_fidelity",
+      {"level", "unknowns", "seconds", "mean_error", "motion_error", "frequency_error", "diverged"}, rows);
   t.add_text_column("model", names);
   return t;
 }

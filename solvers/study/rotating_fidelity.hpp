@@ -14,6 +14,7 @@ namespace bb {
 // text column "model". The compared quantities are those of the first history set: its largest mean
 // displacement component, its largest |u| over the run, and the frequency of the first rotating mode
 // (measured on the run's histories; the static level's from the rotating eigenproblem).
-ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& spec, const RotatingFidelityStudySpec& study);
+ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& spec,
+                                        const RotatingFidelityStudySpec& study);
 
 }  // namespace bb

@@ -14,16 +14,16 @@ namespace bb {
 
 // Mesh-refinement study of a mapped-quad static case against Timoshenko beam theory.
 struct RefinementStudySpec {
-  std::vector<int> levels;                   // factors applied to nx and ny
-  std::string probe_set;                     // node set whose mean displacement is tracked
+  std::vector<int> levels;  // factors applied to nx and ny
+  std::string probe_set;    // node set whose mean displacement is tracked
   Direction probe_direction = 1;
-  std::optional<LoadSplit> load_split;       // overrides every load's split rule in the study
-  std::optional<std::string> load_set;       // moves every load onto this node set in the study
-  double beam_length = 0.0;                  // Timoshenko reference [m]
-  double beam_height = 0.0;                  // [m]
-  double beam_load = 0.0;                    // tip shear force [N], signed like the probe
+  std::optional<LoadSplit> load_split;  // overrides every load's split rule in the study
+  std::optional<std::string> load_set;  // moves every load onto this node set in the study
+  double beam_length = 0.0;             // Timoshenko reference [m]
+  double beam_height = 0.0;             // [m]
+  double beam_load = 0.0;               // tip shear force [N], signed like the probe
   double shear_coefficient = 5.0 / 6.0;
-  std::string note;                          // assumptions, quoted in the report
+  std::string note;  // assumptions, quoted in the report
   SourceLocation at;
 };
 
@@ -39,7 +39,7 @@ struct ModalRefinementStudySpec {
 
 // Accuracy vs cost of reduced models: fixed-interface modes x master sets, against the full mesh.
 struct RomStudySpec {
-  std::vector<int> modes;                                                   // fixed-interface modes to try
+  std::vector<int> modes;                                                     // fixed-interface modes to try
   std::vector<std::pair<std::string, std::vector<std::string>>> master_sets;  // name -> master points
   int compare_modes = 10;  // natural frequencies compared with the full mesh's
   std::string note;
@@ -49,9 +49,9 @@ struct RomStudySpec {
 // Convergence in the number of harmonics of the nonlinear forced response: peaks at each H
 // against the largest, with the cost of each sweep.
 struct HbmHarmonicsStudySpec {
-  std::vector<int> harmonics;       // H values, the largest is the reference
-  std::vector<double> force_levels; // a subset of the analysis's levels [N]
-  int time_samples = 0;             // AFT samples for every H; 0 = automatic (max(64, 16 (2H + 1)))
+  std::vector<int> harmonics;        // H values, the largest is the reference
+  std::vector<double> force_levels;  // a subset of the analysis's levels [N]
+  int time_samples = 0;              // AFT samples for every H; 0 = automatic (max(64, 16 (2H + 1)))
   std::string note;
   SourceLocation at;
 };
@@ -74,7 +74,7 @@ struct RotatingFidelityStudySpec {
   SourceLocation at;
 };
 
-using StudySpec = std::variant<RefinementStudySpec, ModalRefinementStudySpec, RomStudySpec, HbmHarmonicsStudySpec, TimeStepStudySpec,
-                               RotatingFidelityStudySpec>;
+using StudySpec = std::variant<RefinementStudySpec, ModalRefinementStudySpec, RomStudySpec, HbmHarmonicsStudySpec,
+                               TimeStepStudySpec, RotatingFidelityStudySpec>;
 
 }  // namespace bb

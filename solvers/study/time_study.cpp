@@ -40,7 +40,8 @@ ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const 
   for (size_t v = 0; v < variants.size(); ++v) {
     const TimeOutcome& o = variants[v].outcome;
     const ResultTable& peaks = o.tables.at("peaks");
-    std::vector<double> row = {static_cast<double>(v + 1), static_cast<double>(variants[v].steps), variants[v].tolerance};
+    std::vector<double> row = {static_cast<double>(v + 1), static_cast<double>(variants[v].steps),
+                               variants[v].tolerance};
     for (const std::string& k : kinds) {
       const int f = *peaks.column_index(k + "_hz"), a = *peaks.column_index(k + "_amp_m");
       row.push_back(peaks.values(0, f) / ref_peaks.values(0, f) - 1);
@@ -56,7 +57,8 @@ ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const 
       not_steady += level.steady[i] ? 0 : 1;
     }
     row.insert(row.end(), {worst, static_cast<double>(level.steps), cycles, not_steady, level.seconds});
-    for (size_t c = 0; c < row.size(); ++c) t.values(static_cast<Eigen::Index>(v), static_cast<Eigen::Index>(c)) = row[c];
+    for (size_t c = 0; c < row.size(); ++c)
+      t.values(static_cast<Eigen::Index>(v), static_cast<Eigen::Index>(c)) = row[c];
   }
   return t;
 }

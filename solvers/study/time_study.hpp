@@ -3,8 +3,8 @@
 // variant against the finest one, with its cost.
 #pragma once
 #include "analysis/time_analysis.hpp"
-#include "study/study_spec.hpp"
 #include "results/table.hpp"
+#include "study/study_spec.hpp"
 
 namespace bb {
 

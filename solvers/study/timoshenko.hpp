@@ -4,11 +4,11 @@
 namespace bb {
 
 struct RectangularBeam {
-  double length = 0.0;             // L [m]
-  double height = 0.0;             // h [m]
-  double thickness = 0.0;          // t [m]
-  double youngs_modulus = 0.0;     // E [Pa]
-  double poisson_ratio = 0.0;      // nu, gives G = E / (2 (1 + nu))
+  double length = 0.0;          // L [m]
+  double height = 0.0;          // h [m]
+  double thickness = 0.0;       // t [m]
+  double youngs_modulus = 0.0;  // E [Pa]
+  double poisson_ratio = 0.0;   // nu, gives G = E / (2 (1 + nu))
   double shear_coefficient = 5.0 / 6.0;
 };
 

@@ -12,10 +12,14 @@ ContactSample contact_step(const hbm::ContactElement& contact, double slider_bef
 ContactTangent contact_tangent(const hbm::ContactElement& contact, const ContactSample& sample) {
   const contact::JenkinsParameters& p = contact.law;
   switch (sample.state) {
-    case contact::ContactState::stick: return {.dt_du = p.kt, .dt_dv = 0.0, .dn_dv = p.kn};
-    case contact::ContactState::slip_positive: return {.dt_du = 0.0, .dt_dv = p.mu * p.kn, .dn_dv = p.kn};
-    case contact::ContactState::slip_negative: return {.dt_du = 0.0, .dt_dv = -p.mu * p.kn, .dn_dv = p.kn};
-    case contact::ContactState::lift_off: return {};
+    case contact::ContactState::stick:
+      return {.dt_du = p.kt, .dt_dv = 0.0, .dn_dv = p.kn};
+    case contact::ContactState::slip_positive:
+      return {.dt_du = 0.0, .dt_dv = p.mu * p.kn, .dn_dv = p.kn};
+    case contact::ContactState::slip_negative:
+      return {.dt_du = 0.0, .dt_dv = -p.mu * p.kn, .dn_dv = p.kn};
+    case contact::ContactState::lift_off:
+      return {};
   }
   return {};
 }

@@ -157,18 +157,20 @@ StepReport NewmarkIntegrator::step(DynamicState& state, const Excitation& excita
       p.jacobian = keff_->reduced() + (1.0 + alpha) * e.jacobian;
       return p;
     };
-    const DampedNewtonResult r = damped_newton(
-        balance, VectorXd(qt(c)),
-        {.tolerance = tolerance, .max_iterations = options_.max_iterations, .max_backtracks = options_.max_backtracks,
-         .step_solve = NewtonStepSolve::partial_pivot_lu});
+    const DampedNewtonResult r = damped_newton(balance, VectorXd(qt(c)),
+                                               {.tolerance = tolerance,
+                                                .max_iterations = options_.max_iterations,
+                                                .max_backtracks = options_.max_backtracks,
+                                                .step_solve = NewtonStepSolve::partial_pivot_lu});
     // The iteration that failed (line search, non-finite step) is counted.
     report.iterations = r.iterations + (r.converged || r.status == NewtonStatus::iteration_limit ? 0 : 1);
     report.residual = r.residual;
     report.converged = r.converged;
     if (!report.converged) {
-      report.failure = fmt::format("Newmark step to t = {:.9g} s did not converge: |R| = {:.3e} N after {} Newton "
-                                   "iterations (tolerance {:.3e} N)",
-                                   t1, r.residual, report.iterations, tolerance);
+      report.failure = fmt::format(
+          "Newmark step to t = {:.9g} s did not converge: |R| = {:.3e} N after {} Newton "
+          "iterations (tolerance {:.3e} N)",
+          t1, r.residual, report.iterations, tolerance);
       return report;
     }
     q(c) = r.x;
@@ -214,12 +216,14 @@ TimeHistory integrate(const NewmarkIntegrator& integrator, const DynamicState& s
   if (steps < 0) throw std::invalid_argument("Newmark run: the number of steps must be >= 0");
   const Index n = integrator.model().mass.rows();
   for (const Index i : record.dofs)
-    if (i < 0 || i >= n) throw std::invalid_argument(fmt::format("Newmark run: recorded DOF {} is not in [0, {})", i, n));
+    if (i < 0 || i >= n)
+      throw std::invalid_argument(fmt::format("Newmark run: recorded DOF {} is not in [0, {})", i, n));
   TimeHistory h;
   h.final_state = start;
   const auto keep = [&](const DynamicState& s, Index row) {
     h.time.push_back(s.time);
-    for (size_t j = 0; j < record.dofs.size(); ++j) h.displacement(row, static_cast<Index>(j)) = s.displacement[record.dofs[j]];
+    for (size_t j = 0; j < record.dofs.size(); ++j)
+      h.displacement(row, static_cast<Index>(j)) = s.displacement[record.dofs[j]];
     if (record.contacts)
       for (size_t k = 0; k < s.contacts.size(); ++k) h.contacts[k].push_back(s.contacts[k]);
   };

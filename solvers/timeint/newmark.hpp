@@ -31,6 +31,7 @@
 // steps per period, error 1.2e-4 relative at 512; tests/unit/time_contact_test.cpp).
 #pragma once
 #include <Eigen/Dense>
+
 #include <functional>
 #include <optional>
 #include <string>
@@ -42,14 +43,14 @@
 namespace bb::timeint {
 
 struct NewmarkOptions {
-  double time_step = 0.0;  // dt [s], > 0, finite
-  double alpha = 0.0;      // HHT alpha in [-1/3, 0]; 0 = average acceleration
-  int max_iterations = 30; // Newton iterations per step
+  double time_step = 0.0;   // dt [s], > 0, finite
+  double alpha = 0.0;       // HHT alpha in [-1/3, 0]; 0 = average acceleration
+  int max_iterations = 30;  // Newton iterations per step
   // A step has converged when ||R|| <= tolerance * (force_scale + ||b_c||) [N]: R the condensed
   // balance on the contact DOFs, force_scale() = ||f_static|| + sum_k (1 + mu_k) N0_k, b_c the
   // condensed right-hand side (inertia included), with which the round-off in R grows at small dt.
   double tolerance = 1e-10;
-  int max_backtracks = 20; // halvings of a Newton step
+  int max_backtracks = 20;  // halvings of a Newton step
 };
 
 // External load beyond f_static, a function of time [N], one entry per DOF.
@@ -72,11 +73,11 @@ struct WorkLedger {
 
 // Everything a step needs from the previous one.
 struct DynamicState {
-  double time = 0.0;                  // [s]
-  Eigen::VectorXd displacement;       // q [m]
-  Eigen::VectorXd velocity;           // q' [m/s]
-  Eigen::VectorXd acceleration;       // q'' [m/s^2], in balance with the forces below
-  Eigen::VectorXd load;               // f_static + f(time) [N]
+  double time = 0.0;                    // [s]
+  Eigen::VectorXd displacement;         // q [m]
+  Eigen::VectorXd velocity;             // q' [m/s]
+  Eigen::VectorXd acceleration;         // q'' [m/s^2], in balance with the forces below
+  Eigen::VectorXd load;                 // f_static + f(time) [N]
   std::vector<ContactSample> contacts;  // per contact; .slider is the slider position now
   WorkLedger work;
 };
@@ -85,7 +86,7 @@ struct StepReport {
   int iterations = 0;
   double residual = 0.0;  // ||R|| at the accepted iterate [N]
   bool converged = false;
-  std::string failure;    // with the time and the residual; empty when converged
+  std::string failure;  // with the time and the residual; empty when converged
 };
 
 class NewmarkIntegrator {
@@ -135,16 +136,16 @@ struct RecordOptions {
 };
 
 struct TimeHistory {
-  std::vector<double> time;                         // steps + 1 instants (the start included)
-  Eigen::MatrixXd displacement;                     // (steps + 1) x dofs.size() [m]
-  std::vector<std::vector<ContactSample>> contacts; // [contact][instant]
-  std::vector<int> iterations;                      // Newton iterations per step
-  int steps = 0;                                    // steps taken (fewer than asked on failure)
+  std::vector<double> time;                          // steps + 1 instants (the start included)
+  Eigen::MatrixXd displacement;                      // (steps + 1) x dofs.size() [m]
+  std::vector<std::vector<ContactSample>> contacts;  // [contact][instant]
+  std::vector<int> iterations;                       // Newton iterations per step
+  int steps = 0;                                     // steps taken (fewer than asked on failure)
   long total_iterations = 0;
   int max_iterations = 0;
-  bool converged = false;                           // every step converged
-  std::string failure;                              // the failed step's message (time, residual)
-  DynamicState final_state;                         // after the last converged step
+  bool converged = false;    // every step converged
+  std::string failure;       // the failed step's message (time, residual)
+  DynamicState final_state;  // after the last converged step
 };
 
 // `steps` steps from `start`. Stops at the first step that fails, with its message.

@@ -42,10 +42,11 @@ StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions
     }
     return p;
   };
-  const DampedNewtonResult r = damped_newton(
-      balance, VectorXd::Zero(n),
-      {.tolerance = tolerance, .max_iterations = options.max_iterations, .max_backtracks = options.max_backtracks,
-       .step_solve = NewtonStepSolve::full_pivot_lu});
+  const DampedNewtonResult r = damped_newton(balance, VectorXd::Zero(n),
+                                             {.tolerance = tolerance,
+                                              .max_iterations = options.max_iterations,
+                                              .max_backtracks = options.max_backtracks,
+                                              .step_solve = NewtonStepSolve::full_pivot_lu});
 
   StaticState s;
   // The iteration that failed (singular tangent, line search) is counted.
@@ -58,9 +59,10 @@ StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions
         "direction{}",
         s.iterations, r.residual, stuck ? "" : " with friction neglected; try StaticFriction::stuck_at_offset");
   else if (!s.converged)
-    s.failure = fmt::format("static initial state did not converge: |R| = {:.3e} N after {} iterations (tolerance "
-                            "{:.3e} N)",
-                            r.residual, s.iterations, tolerance);
+    s.failure = fmt::format(
+        "static initial state did not converge: |R| = {:.3e} N after {} iterations (tolerance "
+        "{:.3e} N)",
+        r.residual, s.iterations, tolerance);
   s.q = s.converged ? r.x : VectorXd::Zero(n);
   for (const hbm::ContactElement& c : m.contacts) {
     const double w = stuck ? 0.0 : c.tangential.dot(s.q) - c.tangential_offset;

@@ -2,6 +2,7 @@
 // friction system of hbm/friction_system.hpp, with the contact sliders it leaves behind. Units: SI.
 #pragma once
 #include <Eigen/Dense>
+
 #include <string>
 #include <vector>
 
@@ -28,8 +29,8 @@ struct StaticOptions {
 };
 
 struct StaticState {
-  Eigen::VectorXd q;              // [m]; zero on failure
-  std::vector<double> sliders;    // per contact, for NewmarkIntegrator::initial_state
+  Eigen::VectorXd q;            // [m]; zero on failure
+  std::vector<double> sliders;  // per contact, for NewmarkIntegrator::initial_state
   std::vector<ContactSample> contacts;
   int iterations = 0;
   double residual = 0.0;

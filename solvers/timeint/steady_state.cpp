@@ -74,7 +74,8 @@ void analyse(std::deque<MatrixXd>& periods, const SteadyStateOptions& options, S
     // Remove the linear trend (drift per period spread over the samples) from the analysed periods.
     for (size_t p = 0; p < periods.size(); ++p)
       for (int k = 0; k < n_t; ++k)
-        periods[p].row(k) -= out.drift.transpose() * ((static_cast<double>(p) * n_t + k) / n_t - 0.5 * static_cast<double>(periods.size()));
+        periods[p].row(k) -= out.drift.transpose() *
+                             ((static_cast<double>(p) * n_t + k) / n_t - 0.5 * static_cast<double>(periods.size()));
   }
   for (const MatrixXd& x : periods) {
     for (int k = 0; k < n_t; ++k) {
@@ -111,7 +112,8 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
   const NewmarkIntegrator integrator(model, nm);
   const Index n = integrator.model().mass.rows();
   for (const Index i : options.dofs)
-    if (i < 0 || i >= n) throw std::invalid_argument(fmt::format("steady state: tracked DOF {} is not in [0, {})", i, n));
+    if (i < 0 || i >= n)
+      throw std::invalid_argument(fmt::format("steady state: tracked DOF {} is not in [0, {})", i, n));
   const Excitation excitation = harmonic_excitation(integrator.model().harmonic_load, omega);
 
   SteadyState out;
@@ -134,7 +136,8 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
       for (size_t c = 0; c < state.contacts.size(); ++c) loop[c].push_back(state.contacts[c]);
       const StepReport r = integrator.step(state, excitation);
       if (!r.converged) {
-        out.failure = fmt::format("steady state at omega = {:.9g} rad/s, period {}: {}", omega, out.cycles + 1, r.failure);
+        out.failure =
+            fmt::format("steady state at omega = {:.9g} rad/s, period {}: {}", omega, out.cycles + 1, r.failure);
         out.final_state = state;
         return out;
       }
@@ -160,9 +163,10 @@ SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyS
     }
   }
   if (!out.converged)
-    out.failure = fmt::format("steady state at omega = {:.9g} rad/s not reached in {} periods: cycle-to-cycle "
-                              "change {:.3e} > tolerance {:.3e} (largest drift of a period mean {:.3e} m per period)",
-                              omega, out.cycles, out.change, options.tolerance, out.drift.cwiseAbs().maxCoeff());
+    out.failure = fmt::format(
+        "steady state at omega = {:.9g} rad/s not reached in {} periods: cycle-to-cycle "
+        "change {:.3e} > tolerance {:.3e} (largest drift of a period mean {:.3e} m per period)",
+        omega, out.cycles, out.change, options.tolerance, out.drift.cwiseAbs().maxCoeff());
   analyse(periods, options, out);
   out.contacts = std::move(loop);
   out.final_state = state;

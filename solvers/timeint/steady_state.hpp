@@ -10,6 +10,7 @@
 // (the transient between neighbouring frequencies is short, the one from rest is not).
 #pragma once
 #include <Eigen/Dense>
+
 #include <optional>
 #include <string>
 #include <vector>

@@ -92,10 +92,11 @@ void check(const HarmonicBalance& system, const HbmSolution& s, const Point& p, 
   ++f.total;
   f.converged += s.converged ? 1 : 0;
   f.worst_iterations = std::max(f.worst_iterations, s.iterations);
-  std::printf("  %-7s kn %5.0e kt %5.0e mu %3.1f Fe %7.2f zeta %5.0e N0 %5.0e w/wr %4.2f w %9.4g | %s it %3d |R| %9.2e "
-              "(target %8.2e)%s\n",
-              f.name.c_str(), p.kn, p.kt, p.mu, p.force, p.zeta, p.n0, p.ratio, s.omega, s.converged ? "conv" : "FAIL",
-              s.iterations, s.residual, target, required ? " [required]" : "");
+  std::printf(
+      "  %-7s kn %5.0e kt %5.0e mu %3.1f Fe %7.2f zeta %5.0e N0 %5.0e w/wr %4.2f w %9.4g | %s it %3d |R| %9.2e "
+      "(target %8.2e)%s\n",
+      f.name.c_str(), p.kn, p.kt, p.mu, p.force, p.zeta, p.n0, p.ratio, s.omega, s.converged ? "conv" : "FAIL",
+      s.iterations, s.residual, target, required ? " [required]" : "");
 }
 
 void summary(const Family& f) {
@@ -260,19 +261,22 @@ TEST(HbmExtremes, ShortContinuationsKeepTheSolverContract) {
     bool must_finish;
   };
   std::vector<Run> runs;
-  runs.push_back({"blade k1e6 mu0.3 F1", blade_on_ground({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0}, 1.0, 1e-2), 3, true});
+  runs.push_back(
+      {"blade k1e6 mu0.3 F1", blade_on_ground({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0}, 1.0, 1e-2), 3, true});
   runs.push_back(
       {"blade k1e6 mu0.3 F100", blade_on_ground({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0}, 100.0, 1e-2), 3, true});
-  runs.push_back({"blade k1e9 mu2 F3000", blade_on_ground({.kn = 1e9, .kt = 1e9, .mu = 2.0, .n0 = 10.0}, 3000.0, 1e-5), 3, false});
-  runs.push_back({"blade k1e12 mu0.3 F1", blade_on_ground({.kn = 1e12, .kt = 1e12, .mu = 0.3, .n0 = 10.0}, 1.0, 1e-2), 3, false});
-  runs.push_back({"damper k1e6 mu0.3 F10 H1",
-                  planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2), 1, true});
-  runs.push_back({"damper k1e6 mu0.3 F10 H3",
-                  planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2), 3, true});
-  runs.push_back({"damper k1e6 mu0.3 F100",
-                  planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 100.0, 1e-2), 1, false});
-  runs.push_back({"damper k1e9 mu0.3 F100",
-                  planar_blades_with_damper({.kn = 1e9, .kt = 1e9, .mu = 0.3}, 100.0, 1e-2), 1, false});
+  runs.push_back(
+      {"blade k1e9 mu2 F3000", blade_on_ground({.kn = 1e9, .kt = 1e9, .mu = 2.0, .n0 = 10.0}, 3000.0, 1e-5), 3, false});
+  runs.push_back(
+      {"blade k1e12 mu0.3 F1", blade_on_ground({.kn = 1e12, .kt = 1e12, .mu = 0.3, .n0 = 10.0}, 1.0, 1e-2), 3, false});
+  runs.push_back(
+      {"damper k1e6 mu0.3 F10 H1", planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2), 1, true});
+  runs.push_back(
+      {"damper k1e6 mu0.3 F10 H3", planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2), 3, true});
+  runs.push_back(
+      {"damper k1e6 mu0.3 F100", planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 100.0, 1e-2), 1, false});
+  runs.push_back(
+      {"damper k1e9 mu0.3 F100", planar_blades_with_damper({.kn = 1e9, .kt = 1e9, .mu = 0.3}, 100.0, 1e-2), 1, false});
   runs.push_back({"damper k1e12 mu2 F3000",
                   planar_blades_with_damper({.kn = 1e12, .kt = 1e12, .mu = 2.0}, 3000.0, 1e-5), 1, false});
   int finished = 0;
@@ -281,7 +285,8 @@ TEST(HbmExtremes, ShortContinuationsKeepTheSolverContract) {
     const HarmonicBalance system(r.model, {.harmonics = r.harmonics});
     const double wr = stuck_resonance(system.model(), 0), target = system.options().tolerance * system.force_scale();
     const auto t0 = std::chrono::steady_clock::now();
-    const ContinuationResult c = continue_in_frequency(system, {.omega_start = 0.9 * wr, .omega_end = 1.1 * wr, .max_points = 400, .progress = {}});
+    const ContinuationResult c = continue_in_frequency(
+        system, {.omega_start = 0.9 * wr, .omega_end = 1.1 * wr, .max_points = 400, .progress = {}});
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const ContinuationOptions defaults;
     for (size_t i = 0; i < c.points.size(); ++i) {
@@ -301,9 +306,11 @@ TEST(HbmExtremes, ShortContinuationsKeepTheSolverContract) {
     if (r.must_finish) {
       EXPECT_TRUE(c.converged) << c.failure;
     }
-    std::printf("  cont %-24s w %8.4g..%8.4g | %s %3zu points, %4d corrector it, %3d rejected, %d folds, %d jumps, %.2f s%s%s\n",
-                r.name, 0.9 * wr, 1.1 * wr, c.converged ? "done" : "STOP", c.points.size(), c.corrector_iterations,
-                c.rejected_steps, c.turning_points, c.jumps, seconds, c.converged ? "" : ": ", c.failure.c_str());
+    std::printf(
+        "  cont %-24s w %8.4g..%8.4g | %s %3zu points, %4d corrector it, %3d rejected, %d folds, %d jumps, %.2f "
+        "s%s%s\n",
+        r.name, 0.9 * wr, 1.1 * wr, c.converged ? "done" : "STOP", c.points.size(), c.corrector_iterations,
+        c.rejected_steps, c.turning_points, c.jumps, seconds, c.converged ? "" : ": ", c.failure.c_str());
   }
   std::printf("  == continuation: %d / %zu reached omega_end\n", finished, runs.size());
 }

@@ -4,6 +4,7 @@
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+
 #include <complex>
 
 #include "../unit/damper_support.hpp"
@@ -20,9 +21,9 @@ inline Eigen::RowVectorXd unit_row(Eigen::Index n, Eigen::Index i) {
   return r;
 }
 
-// A blade of three DOFs (also the model of tests/unit/hbm_harmonic_balance_test.cpp): DOF 0 root (excited, no contact), 1 platform
-// tangential (u = q1), 2 platform normal (v = q2, a push along +q2 presses). Modal damping zeta on
-// every mode; `static_push` is an extra static force on DOF 2 [N].
+// A blade of three DOFs (also the model of tests/unit/hbm_harmonic_balance_test.cpp): DOF 0 root (excited, no contact),
+// 1 platform tangential (u = q1), 2 platform normal (v = q2, a push along +q2 presses). Modal damping zeta on every
+// mode; `static_push` is an extra static force on DOF 2 [N].
 inline HbmModel blade_on_ground(const contact::JenkinsParameters& law, double force, double zeta = 0.01,
                                 double static_push = 0.0) {
   HbmModel m;
@@ -66,7 +67,8 @@ inline HbmModel planar_blades_with_damper(const contact::JenkinsParameters& law,
   m.stiffness = s.stiffness;
   m.damping = Eigen::MatrixXd::Zero(7, 7);
   m.damping.topLeftCorner(4, 4) = modal_damping_matrix(kb, mb, zeta);
-  for (Eigen::Index c = 0; c < k.tangential.rows(); ++c) m.contacts.push_back({law, k.tangential.row(c), k.normal.row(c)});
+  for (Eigen::Index c = 0; c < k.tangential.rows(); ++c)
+    m.contacts.push_back({law, k.tangential.row(c), k.normal.row(c)});
   m.static_load = damper::centrifugal_load(4, cf);
   m.harmonic_load = Eigen::VectorXcd::Zero(7);
   m.harmonic_load[0] = force;

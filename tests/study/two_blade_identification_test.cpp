@@ -16,13 +16,13 @@
 #include <fstream>
 #include <string>
 
+#include "../unit/two_blade_rom_case.hpp"
 #include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
+#include "identify/synthetic_data.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/calibrate_case.hpp"
-#include "identify/synthetic_data.hpp"
-#include "../unit/two_blade_rom_case.hpp"
 
 namespace bb {
 namespace {
@@ -43,7 +43,8 @@ std::string two_blade_case(double kt, double mu, const std::string& extra) {
 class TwoBladeIdentification : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(TwoBladeIdentification, KtAndMuComeBackFromNoisyPeaksAndAnFrf) {
-  const fs::path dir = fs::temp_directory_path() / ("bladebench_two_blade_identification_" + std::to_string(GetParam()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("bladebench_two_blade_identification_" + std::to_string(GetParam()));
   fs::create_directories(dir);
   const double truth[] = {1.0e8, 0.5};
   std::ofstream(dir / "truth.toml") << two_blade_case(truth[0], truth[1], "");
@@ -57,19 +58,23 @@ TEST_P(TwoBladeIdentification, KtAndMuComeBackFromNoisyPeaksAndAnFrf) {
     o.kind = DataKind::peaks;
     o.frequency_noise = 0.001;
     o.outliers = 1;
-    o.columns = {{"force", "fe_n", "N"}, {"frequency", std::string(kind) + "_hz", "Hz"}, {"amplitude", std::string(kind) + "_amp_per_n", "um/N"}};
+    o.columns = {{"force", "fe_n", "N"},
+                 {"frequency", std::string(kind) + "_hz", "Hz"},
+                 {"amplitude", std::string(kind) + "_amp_per_n", "um/N"}};
     write_synthetic_data(r.tables.at("peaks"), o, dir / (std::string(kind) + ".csv"));
     ++o.seed;
-    blocks += std::string("[[calibration.data]]\nkind = \"peaks\"\nfile = \"") + kind + ".csv\"\ntable = \"peaks\"\ncolumns = { force = \"fe_n\", frequency = \"" +
-              kind + "_hz\", amplitude = \"" + kind + "_amp_per_n\" }\n";
+    blocks += std::string("[[calibration.data]]\nkind = \"peaks\"\nfile = \"") + kind +
+              ".csv\"\ntable = \"peaks\"\ncolumns = { force = \"fe_n\", frequency = \"" + kind +
+              "_hz\", amplitude = \"" + kind + "_amp_per_n\" }\n";
   }
   o.kind = DataKind::frf;
   o.outliers = 2;
   o.every = 5;
   o.columns = {{"frequency", "frequency_hz", "Hz"}, {"amplitude", "T2.x_amp_m", "mm"}};
   write_synthetic_data(r.tables.at("frf_100"), o, dir / "frf_100.csv");
-  blocks += "[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_100.csv\"\ntable = \"frf_100\"\n"
-            "columns = { frequency = \"frequency_hz\", amplitude = \"T2.x_amp_m\" }\n";
+  blocks +=
+      "[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_100.csv\"\ntable = \"frf_100\"\n"
+      "columns = { frequency = \"frequency_hz\", amplitude = \"T2.x_amp_m\" }\n";
   const std::string calibration = R"([calibration]
 parameters = [{ path = "analysis.damper.kt", lower = 1.0e6, upper = 1.0e10 },
               { path = "analysis.damper.mu", lower = 0.05, upper = 2.0 }]
@@ -81,12 +86,13 @@ derivative_step = 1e-2
 )";
   std::ofstream(dir / "case.toml") << two_blade_case(3.0e8, 0.8, calibration + blocks);
   const CalibrationOutcome out = calibrate_case(dir / "case.toml");
-  std::printf("  %s, %d evaluations, reduced chi-square %.3g\n", out.termination.c_str(), out.residual_evaluations, out.reduced_chi_square);
+  std::printf("  %s, %d evaluations, reduced chi-square %.3g\n", out.termination.c_str(), out.residual_evaluations,
+              out.reduced_chi_square);
   for (const std::string& w : out.warnings) std::printf("  warning: %s\n", w.c_str());
   ASSERT_TRUE(out.converged) << out.termination;
   for (size_t i = 0; i < 2; ++i) {
-    std::printf("  %s: identified %.6g +- %.3g, truth %.6g (%.2f sigma)\n", out.spec.parameters[i].path.c_str(), out.values[i],
-                out.std_devs[i], truth[i], std::abs(out.values[i] - truth[i]) / out.std_devs[i]);
+    std::printf("  %s: identified %.6g +- %.3g, truth %.6g (%.2f sigma)\n", out.spec.parameters[i].path.c_str(),
+                out.values[i], out.std_devs[i], truth[i], std::abs(out.values[i] - truth[i]) / out.std_devs[i]);
     ASSERT_TRUE(std::isfinite(out.std_devs[i]));
     EXPECT_LT(std::abs(out.values[i] - truth[i]), 2 * out.std_devs[i]);
   }

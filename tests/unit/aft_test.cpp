@@ -3,6 +3,8 @@
 // the clipped normal load against its closed-form harmonics, the exact Jacobian against central
 // differences, convergence with the number of time samples, and finite, closed loops over extreme
 // parameters. Units: SI.
+#include "contact/aft.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "contact/aft.hpp"
 #include "contact/jenkins_contact.hpp"
 
 namespace bb::contact {
@@ -31,7 +32,8 @@ Eigen::VectorXd cosine(int harmonics, double amplitude, double phase = 0.0) {
 
 double evaluate(const Eigen::VectorXd& c, double theta) {
   double x = c[0];
-  for (int h = 1; h <= harmonics_of(c.size()); ++h) x += c[2 * h - 1] * std::cos(h * theta) + c[2 * h] * std::sin(h * theta);
+  for (int h = 1; h <= harmonics_of(c.size()); ++h)
+    x += c[2 * h - 1] * std::cos(h * theta) + c[2 * h] * std::sin(h * theta);
   return x;
 }
 
@@ -59,7 +61,8 @@ double parallelogram(double theta, double amplitude, double kt, double slip_forc
 Eigen::Vector2d describing_function(double amplitude, double kt, double slip_force) {
   if (kt * amplitude <= slip_force) return {kt * amplitude, 0.0};
   const double beta = std::acos(1.0 - 2.0 * slip_force / (kt * amplitude));
-  return {kt * amplitude / kPi * (beta - 0.5 * std::sin(2.0 * beta)), -kt * amplitude / kPi * std::pow(std::sin(beta), 2)};
+  return {kt * amplitude / kPi * (beta - 0.5 * std::sin(2.0 * beta)),
+          -kt * amplitude / kPi * std::pow(std::sin(beta), 2)};
 }
 
 // First harmonic of the response to U cos(theta - phase): the loop above delayed by `phase`.
@@ -91,7 +94,8 @@ TEST(AftJenkins, ConstantNormalLoadLoopIsTheJenkinsParallelogram) {
   int slips = 0;
   for (int k = 0; k < samples; ++k) {
     const double theta = 2.0 * kPi * k / samples;
-    EXPECT_NEAR(r.t[k], parallelogram(theta, amplitude, kConstantLoad.kt, kSlipForce), 1e-9 * kSlipForce) << "k = " << k;
+    EXPECT_NEAR(r.t[k], parallelogram(theta, amplitude, kConstantLoad.kt, kSlipForce), 1e-9 * kSlipForce)
+        << "k = " << k;
     EXPECT_LE(std::abs(r.t[k]), kSlipForce * (1.0 + 1e-15));
     EXPECT_EQ(r.n[k], 100.0);
     slips += r.state[static_cast<size_t>(k)] != ContactState::stick;
@@ -109,7 +113,8 @@ TEST(AftJenkins, DissipatedEnergyIsTheParallelogramArea) {
   double worst = 0.0;
   for (double ratio : {0.5, 0.999, 1.001, 1.2, 1.5, 3.0, 10.0, 100.0}) {
     const double amplitude = ratio * kSlipDistance;
-    const AftResult r = aft_jenkins(kConstantLoad, cosine(1, amplitude, 0.4), Eigen::VectorXd::Zero(3), {.samples = 256});
+    const AftResult r =
+        aft_jenkins(kConstantLoad, cosine(1, amplitude, 0.4), Eigen::VectorXd::Zero(3), {.samples = 256});
     const double exact = ratio > 1.0 ? 4.0 * kSlipForce * (amplitude - kSlipDistance) : 0.0;
     const double work = cycle_work(r.tangential, cosine(1, amplitude, 0.4));
     const double error = std::abs(work - exact) / (4.0 * kSlipForce * amplitude);
@@ -122,7 +127,8 @@ TEST(AftJenkins, DissipatedEnergyIsTheParallelogramArea) {
       EXPECT_NEAR(work, 0.0, 1e-12 * kSlipForce * amplitude);
     }
   }
-  std::printf("[ energy ] parallelogram area at n_t = 256: worst |W - 4 mu N (U - mu N / kt)| / (4 mu N U) = %.2e\n", worst);
+  std::printf("[ energy ] parallelogram area at n_t = 256: worst |W - 4 mu N (U - mu N / kt)| / (4 mu N U) = %.2e\n",
+              worst);
 }
 
 TEST(AftJenkins, FirstHarmonicMatchesTheDescribingFunction) {
@@ -147,7 +153,8 @@ TEST(AftJenkins, HarmonicsConvergeAsTheInverseSquareOfTheSampleCount) {
   const Eigen::Vector2d exact = shifted_describing_function(amplitude, phase, kConstantLoad.kt, kSlipForce);
   std::vector<double> errors;
   for (int samples : {16, 64, 256}) {
-    const AftResult r = aft_jenkins(kConstantLoad, cosine(1, amplitude, phase), Eigen::VectorXd::Zero(3), {.samples = samples});
+    const AftResult r =
+        aft_jenkins(kConstantLoad, cosine(1, amplitude, phase), Eigen::VectorXd::Zero(3), {.samples = samples});
     errors.push_back((r.tangential.segment<2>(1) - exact).norm() / exact.norm());
     std::printf("[ n_t convergence ] n_t = %3d: |T1 - T1_exact| / |T1_exact| = %.2e\n", samples, errors.back());
   }
@@ -197,8 +204,8 @@ TEST(AftJenkins, OpeningContactNormalLoadMatchesTheClippedCosine) {
   const JenkinsParameters p{.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 100.0};
   const int harmonics = 5;
   Eigen::VectorXd v = Eigen::VectorXd::Zero(harmonic_size(harmonics));
-  v[0] = 2e-6;   // c = 120 N
-  v[1] = 3e-5;   // A = 300 N: open for |theta| > acos(-0.4), 37 % of the period
+  v[0] = 2e-6;  // c = 120 N
+  v[1] = 3e-5;  // A = 300 N: open for |theta| > acos(-0.4), 37 % of the period
   const Eigen::VectorXd exact = clipped_cosine(harmonics, p.n0 + p.kn * v[0], p.kn * v[1]);
   for (int samples : {64, 1024}) {
     const AftResult r = aft_jenkins(p, cosine(harmonics, 1e-4), v, {.samples = samples});
@@ -244,8 +251,10 @@ TEST(AftJenkins, EnergyWithVariableNormalLoadAndLiftOffIsTheIntegralOfTdu) {
   EXPECT_GT(open, 20);
   EXPECT_GT(slipping, 20);
   const double work = cycle_work(r.tangential, u), reference = fine_march_work(p, u, v, 200000);
-  std::printf("[ energy, lift-off ] W from AFT harmonics (n_t = 512) = %.6e J, integral of T du (2e5 steps) = %.6e J,"
-              " rel. diff %.2e\n", work, reference, std::abs(work - reference) / reference);
+  std::printf(
+      "[ energy, lift-off ] W from AFT harmonics (n_t = 512) = %.6e J, integral of T du (2e5 steps) = %.6e J,"
+      " rel. diff %.2e\n",
+      work, reference, std::abs(work - reference) / reference);
   EXPECT_GT(reference, 0.0);
   EXPECT_NEAR(work, reference, 1e-3 * reference);
 }
@@ -274,9 +283,19 @@ TEST(AftJenkins, JacobianMatchesCentralDifferences) {
   // 2000 N +- 300 N about N0 = 1000 N, so the contact opens and closes in every trial.
   const std::vector<Regime> regimes = {
       {"stick", {.kn = 1e6, .kt = 1e6, .mu = 0.5, .n0 = 1000.0}, 1e-5, 1e-5, 0.0, 0.0, ContactState::stick},
-      {"stick-slip", {.kn = 1e6, .kt = 1e6, .mu = 0.5, .n0 = 1000.0}, 1e-3, 1e-5, 2.5e-3, 0.0,
+      {"stick-slip",
+       {.kn = 1e6, .kt = 1e6, .mu = 0.5, .n0 = 1000.0},
+       1e-3,
+       1e-5,
+       2.5e-3,
+       0.0,
        ContactState::slip_positive},
-      {"partial lift-off", {.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 1000.0}, 1e-3, 1e-5, 2.5e-3, 2e-4,
+      {"partial lift-off",
+       {.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 1000.0},
+       1e-3,
+       1e-5,
+       2.5e-3,
+       2e-4,
        ContactState::lift_off}};
   std::mt19937 rng(2024);
   double worst = 0.0;
@@ -319,16 +338,16 @@ TEST(AftJenkins, JacobianMatchesCentralDifferences) {
           const Eigen::VectorXd fd_t = (plus.tangential - minus.tangential) / (2.0 * step);
           const Eigen::VectorXd fd_n = (plus.normal - minus.normal) / (2.0 * step);
           const Eigen::VectorXd an_t = tangential ? base.dtangential_du.col(j) : base.dtangential_dv.col(j - m);
-          const Eigen::VectorXd an_n = tangential ? Eigen::VectorXd(Eigen::VectorXd::Zero(m))
-                                                  : Eigen::VectorXd(base.dnormal_dv.col(j - m));
-          const double error = std::max((fd_t - an_t).cwiseAbs().maxCoeff() / t_scale,
-                                        (fd_n - an_n).cwiseAbs().maxCoeff() / n_scale);
+          const Eigen::VectorXd an_n =
+              tangential ? Eigen::VectorXd(Eigen::VectorXd::Zero(m)) : Eigen::VectorXd(base.dnormal_dv.col(j - m));
+          const double error =
+              std::max((fd_t - an_t).cwiseAbs().maxCoeff() / t_scale, (fd_n - an_n).cwiseAbs().maxCoeff() / n_scale);
           worst = std::max(worst, error);
           EXPECT_LT(error, 1e-6) << regime.name << ", H = " << harmonics << ", trial " << trial << ", column " << j;
         }
       }
-  std::printf("[ Jacobian ] %d columns vs central differences, %d skipped (state change): worst error %.2e\n",
-              checked, skipped, worst);
+  std::printf("[ Jacobian ] %d columns vs central differences, %d skipped (state change): worst error %.2e\n", checked,
+              skipped, worst);
   EXPECT_GT(checked, 10 * skipped);
 }
 
@@ -343,8 +362,8 @@ TEST(AftJenkins, ExtremeParametersGiveFiniteForcesAndLoopsThatClose) {
   const double preloads[] = {0.0, 1e-3, 300.0, 1e5};
   int runs = 0, lift_offs = 0;
   for (int i = 0; i < 400; ++i) {
-    const JenkinsParameters p{.kn = log_uniform(1e3, 1e12), .kt = log_uniform(1e3, 1e12), .mu = 2.0 * unit(rng),
-                              .n0 = preloads[i % 4]};
+    const JenkinsParameters p{
+        .kn = log_uniform(1e3, 1e12), .kt = log_uniform(1e3, 1e12), .mu = 2.0 * unit(rng), .n0 = preloads[i % 4]};
     const int harmonics = 1 + i % 3;
     const Eigen::VectorXd u = random_coefficients(rng, harmonics, log_uniform(1e-9, 1e-2));
     const Eigen::VectorXd v = random_coefficients(rng, harmonics, log_uniform(1e-9, 1e-2));
@@ -352,8 +371,10 @@ TEST(AftJenkins, ExtremeParametersGiveFiniteForcesAndLoopsThatClose) {
     ++runs;
     lift_offs += std::find(r.state.begin(), r.state.end(), ContactState::lift_off) != r.state.end();
     ASSERT_TRUE(r.tangential.allFinite() && r.normal.allFinite()) << "run " << i;
-    ASSERT_TRUE(r.dtangential_du.allFinite() && r.dtangential_dv.allFinite() && r.dnormal_dv.allFinite()) << "run " << i;
-    ASSERT_TRUE(r.closed) << "run " << i << ": mismatch " << r.closure_mismatch << " m after " << r.periods << " periods";
+    ASSERT_TRUE(r.dtangential_du.allFinite() && r.dtangential_dv.allFinite() && r.dnormal_dv.allFinite())
+        << "run " << i;
+    ASSERT_TRUE(r.closed) << "run " << i << ": mismatch " << r.closure_mismatch << " m after " << r.periods
+                          << " periods";
     EXPECT_EQ(r.periods, 2) << "run " << i;
     for (Eigen::Index k = 0; k < r.t.size(); ++k) {
       ASSERT_GE(r.n[k], 0.0);

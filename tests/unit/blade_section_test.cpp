@@ -1,11 +1,12 @@
 // The chapter-2 blade meshes (articles/blade_section): the element and node counts the thesis states
 // for its three discretizations, the Presams node numbering, the root's clamped nodes, and a
 // geometry that is the two-blade article's blade (areas and volume).
+#include "articles/blade_section.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "articles/blade_section.hpp"
 #include "assembly/assemble.hpp"
 
 namespace bb {
@@ -65,7 +66,8 @@ TEST(BladeSection, PlaneNodesOneToFourAreThePresamsNodes) {
     EXPECT_DOUBLE_EQ(b.mesh.coords(n, 1), expected[i][1]) << "node " << i + 1;
   }
   const auto& root = b.sets.at("root");
-  for (int id : {1, 2, 3}) EXPECT_NE(std::find(root.begin(), root.end(), b.mesh.index_of(id)), root.end()) << "node " << id;
+  for (int id : {1, 2, 3})
+    EXPECT_NE(std::find(root.begin(), root.end(), b.mesh.index_of(id)), root.end()) << "node " << id;
   EXPECT_EQ(std::find(root.begin(), root.end(), b.mesh.index_of(4)), root.end()) << "node 4 is free (Fig. 2.19)";
 }
 
@@ -85,7 +87,8 @@ TEST(BladeSection, TipAndMidAreSingleNodesOnTheAirfoilsTrailingFace) {
     const int tip = b.sets.at("tip")[0], mid = b.sets.at("mid")[0];
     EXPECT_NEAR(b.mesh.coords(tip, 1), d.levels()[8], 1e-12);
     EXPECT_NEAR(b.mesh.coords(tip, 0), d.x_c() + 0.5 * d.w, 1e-12);
-    EXPECT_NEAR(b.mesh.coords(mid, 1), 0.5 * (d.levels()[7] + d.levels()[8]), 0.5 * d.L_a / blade_section_divisions(e).airfoil_rows + 1e-12);
+    EXPECT_NEAR(b.mesh.coords(mid, 1), 0.5 * (d.levels()[7] + d.levels()[8]),
+                0.5 * d.L_a / blade_section_divisions(e).airfoil_rows + 1e-12);
   }
 }
 

@@ -1,6 +1,8 @@
 // CalculiX deck export (report/calculix_export): the structure of the .inp on tiny hexahedral
 // models, read back line by line. No ccx is needed; bench/calculix_compare.sh runs ccx on real
 // cases. Units: SI.
+#include "report/calculix_export.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -13,7 +15,6 @@
 
 #include "common/errors.hpp"
 #include "mesh/hex_block.hpp"
-#include "report/calculix_export.hpp"
 
 namespace bb {
 namespace {
@@ -23,8 +24,9 @@ namespace fs = std::filesystem;
 // A 2 x 1 x 1 m box of nx x 1 x 1 elements, clamped in xyz on x = 0 and held along z on x = 2.
 Model box_model(ElementType type, int nx) {
   HexBlockSpec spec;
-  spec.corners = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 1, 0), Eigen::Vector3d(0, 1, 0),
-                  Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(2, 0, 1), Eigen::Vector3d(2, 1, 1), Eigen::Vector3d(0, 1, 1)};
+  spec.corners = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 1, 0),
+                  Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(2, 0, 1),
+                  Eigen::Vector3d(2, 1, 1), Eigen::Vector3d(0, 1, 1)};
   spec.nx = nx;
   spec.element = type;
   Model model;
@@ -34,7 +36,8 @@ Model box_model(ElementType type, int nx) {
     if (std::abs(model.mesh.coords(i, 0)) < 1e-12) model.node_sets["root"].push_back(i);
     if (std::abs(model.mesh.coords(i, 0) - 2.0) < 1e-12) model.node_sets["tip end"].push_back(i);
   }
-  model.constraints = {{.set = "root", .directions = {0, 1, 2}, .value = 0.0}, {.set = "tip end", .directions = {2}, .value = 0.0}};
+  model.constraints = {{.set = "root", .directions = {0, 1, 2}, .value = 0.0},
+                       {.set = "tip end", .directions = {2}, .value = 0.0}};
   return model;
 }
 
@@ -42,7 +45,8 @@ class CalculixDeck : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    file_ = fs::temp_directory_path() / ("bladebench_calculix_" + std::string(info->name()) + "_" + std::to_string(getpid()) + ".inp");
+    file_ = fs::temp_directory_path() /
+            ("bladebench_calculix_" + std::string(info->name()) + "_" + std::to_string(getpid()) + ".inp");
   }
   void TearDown() override { fs::remove(file_); }
 
@@ -98,7 +102,9 @@ TEST_F(CalculixDeck, Hex20ConnectivityIsWrittenInMeshOrderOneBased) {
   for (size_t e = 0; e < elements.size(); ++e) {
     ASSERT_EQ(elements[e].size(), 21u) << "element number and 20 nodes";
     EXPECT_EQ(elements[e][0], static_cast<long>(e + 1));
-    for (int a = 0; a < 20; ++a) EXPECT_EQ(elements[e][static_cast<size_t>(a) + 1], model.mesh.blocks[0].conn(static_cast<Eigen::Index>(e), a) + 1L);
+    for (int a = 0; a < 20; ++a)
+      EXPECT_EQ(elements[e][static_cast<size_t>(a) + 1],
+                model.mesh.blocks[0].conn(static_cast<Eigen::Index>(e), a) + 1L);
   }
 }
 

@@ -72,7 +72,8 @@ class CalibrationRoundTrip : public test::TempFolderTest {
     std::ofstream ref(dir_ / "reference.csv");
     ref.precision(17);
     ref << "mode,frequency_hz\n";
-    for (Eigen::Index i = 0; i < std::get<ModalOutcome>(r.outcome).modal.frequencies_hz.size(); ++i) ref << i + 1 << ',' << std::get<ModalOutcome>(r.outcome).modal.frequencies_hz[i] << '\n';
+    for (Eigen::Index i = 0; i < std::get<ModalOutcome>(r.outcome).modal.frequencies_hz.size(); ++i)
+      ref << i + 1 << ',' << std::get<ModalOutcome>(r.outcome).modal.frequencies_hz[i] << '\n';
     ref.close();
     write_values(dir_ / "case.toml", e_start, rho_start, parameters);
     return dir_ / "case.toml";
@@ -80,13 +81,16 @@ class CalibrationRoundTrip : public test::TempFolderTest {
 
  private:
   static void write_values(const fs::path& file, double e, double rho, const std::string& parameters) {
-    std::string text = substitute(substitute(substitute(std::string(kCase), "E", std::to_string(e)), "rho", std::to_string(rho)), "parameters", parameters);
+    std::string text =
+        substitute(substitute(substitute(std::string(kCase), "E", std::to_string(e)), "rho", std::to_string(rho)),
+                   "parameters", parameters);
     std::ofstream(file) << text;
   }
 };
 
 TEST_F(CalibrationRoundTrip, RecoversYoungsModulusFromFrequencies) {
-  const fs::path c = write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  const fs::path c =
+      write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
   const CalibrationOutcome o = calibrate_case(c);
   ASSERT_TRUE(o.converged) << o.termination;
   EXPECT_NEAR(o.values[0] / 2.1e11, 1.0, 1e-6);
@@ -97,19 +101,22 @@ TEST_F(CalibrationRoundTrip, RecoversYoungsModulusFromFrequencies) {
 
 TEST_F(CalibrationRoundTrip, StiffnessAndDensityTogetherAreFlaggedAsNotIdentifiable) {
   // Frequencies scale with sqrt(E / rho): only the ratio is identifiable.
-  const fs::path c = write_case(1.8e11, 7000.0,
-                                R"({ path = "material.E", lower = 1e11, upper = 3e11 }, { path = "material.rho", lower = 5000.0, upper = 10000.0 })",
-                                2.1e11, 7800.0);
+  const fs::path c = write_case(
+      1.8e11, 7000.0,
+      R"({ path = "material.E", lower = 1e11, upper = 3e11 }, { path = "material.rho", lower = 5000.0, upper = 10000.0 })",
+      2.1e11, 7800.0);
   const CalibrationOutcome o = calibrate_case(c);
   EXPECT_NEAR((o.values[0] / o.values[1]) / (2.1e11 / 7800.0), 1.0, 1e-5);  // the ratio is found
   ASSERT_FALSE(o.warnings.empty());
   bool flagged = false;
-  for (const auto& w : o.warnings) flagged = flagged || w.find("correlate") != std::string::npos || w.find("rank deficient") != std::string::npos;
+  for (const auto& w : o.warnings)
+    flagged = flagged || w.find("correlate") != std::string::npos || w.find("rank deficient") != std::string::npos;
   EXPECT_TRUE(flagged);
 }
 
 TEST_F(CalibrationRoundTrip, EveryStartOfALatinHypercubeIsReportedAndTheBestWins) {
-  const fs::path c = write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  const fs::path c =
+      write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
   std::ofstream(c, std::ios::app) << "starts = 4\nseed = 11\n";
   const CalibrationOutcome o = calibrate_case(c);
   ASSERT_EQ(o.starts.size(), 4u);
@@ -128,7 +135,8 @@ TEST_F(CalibrationRoundTrip, EveryStartOfALatinHypercubeIsReportedAndTheBestWins
 }
 
 TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedCase) {
-  const fs::path c = write_case(1.1e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  const fs::path c =
+      write_case(1.1e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
   std::ofstream(c, std::ios::app) << "max_iterations = 1\n";
   const CalibrationOutcome o = calibrate_case(c);
   ASSERT_FALSE(o.converged) << o.termination;

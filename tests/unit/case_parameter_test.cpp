@@ -1,11 +1,11 @@
 // Typed case parameters (cases/case_parameter): a dotted path resolves once into a reference that
 // reads and writes the parsed case, and a write that makes the case invalid is refused as the
 // parser would refuse it.
-#include <gtest/gtest.h>
+#include "cases/case_parameter.hpp"
 
+#include <gtest/gtest.h>
 #include <toml++/toml.h>
 
-#include "cases/case_parameter.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
 #include "oscillator_case.hpp"
@@ -13,17 +13,16 @@
 namespace bb {
 namespace {
 
-CaseSpec oscillator() {
-  return parse_case_table(toml::parse(test::oscillator_case_text({})), "oscillator.toml");
-}
+CaseSpec oscillator() { return parse_case_table(toml::parse(test::oscillator_case_text({})), "oscillator.toml"); }
 
 TEST(CaseParameter, EveryContactLawPathReadsAndWritesItsField) {
   CaseSpec spec = oscillator();
   const struct {
     const char* path;
     double value;
-  } expected[] = {{"analysis.contact.0.kn", 1.0e6}, {"analysis.contact.0.kt", 1.0e6}, {"analysis.contact.0.mu", 0.3},
-                  {"analysis.contact.0.n0", 30.0},  {"analysis.modal_damping", 0.01}, {"analysis.forces.0.amplitude", 1.0}};
+  } expected[] = {{"analysis.contact.0.kn", 1.0e6}, {"analysis.contact.0.kt", 1.0e6},
+                  {"analysis.contact.0.mu", 0.3},   {"analysis.contact.0.n0", 30.0},
+                  {"analysis.modal_damping", 0.01}, {"analysis.forces.0.amplitude", 1.0}};
   for (const auto& e : expected) {
     const CaseParameter p = parse_parameter_path(e.path);
     EXPECT_EQ(parameter_value(spec, p), e.value) << e.path;
@@ -35,10 +34,12 @@ TEST(CaseParameter, EveryContactLawPathReadsAndWritesItsField) {
 }
 
 TEST(CaseParameter, PathsOfAnUnknownFormOrAbsentFromTheCaseAreRefused) {
-  for (const char* bad : {"analysis.contact.0.kx", "analysis.model.mass", "material", "mesh.dimensions.nonsense", "analysis.contact.x.kt"})
+  for (const char* bad : {"analysis.contact.0.kx", "analysis.model.mass", "material", "mesh.dimensions.nonsense",
+                          "analysis.contact.x.kt"})
     EXPECT_THROW((void)parse_parameter_path(bad), std::invalid_argument) << bad;
   const CaseSpec spec = oscillator();
-  for (const char* absent : {"analysis.contact.1.kt", "analysis.damper.kt", "mesh.dimensions.L_a", "material.E", "analysis.forces.3.amplitude"})
+  for (const char* absent : {"analysis.contact.1.kt", "analysis.damper.kt", "mesh.dimensions.L_a", "material.E",
+                             "analysis.forces.3.amplitude"})
     EXPECT_THROW((void)parameter_value(spec, parse_parameter_path(absent)), std::invalid_argument) << absent;
 }
 

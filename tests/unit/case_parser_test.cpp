@@ -11,8 +11,8 @@
 #include "analysis/static_analysis.hpp"
 #include "assembly/load_vector.hpp"
 #include "cases/case_spec.hpp"
-#include "model/build_model.hpp"
 #include "common/errors.hpp"
+#include "model/build_model.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -134,7 +134,8 @@ type = "static"
 class CaseFile : public test::TempFolderTest {
  protected:
   // The case with `line` inserted after the first line equal to `after`; returns its 1-based line.
-  static std::string insert_after(const std::string& text, const std::string& after, const std::string& line, int& line_no) {
+  static std::string insert_after(const std::string& text, const std::string& after, const std::string& line,
+                                  int& line_no) {
     const size_t at = text.find(after + "\n");
     EXPECT_NE(at, std::string::npos) << after;
     const size_t end = at + after.size() + 1;
@@ -177,8 +178,8 @@ TEST_F(CaseFile, MinimalCaseParsesWithTheDocumentedDefaults) {
 }
 
 TEST_F(CaseFile, ModalAnalysisReadsModesAndShift) {
-  const CaseSpec spec = parse_case_file(
-      write(replace(kMinimalCase, "type = \"static\"", "type = \"modal\"\nmodes = 4\nshift_hz = 2.5")));
+  const CaseSpec spec =
+      parse_case_file(write(replace(kMinimalCase, "type = \"static\"", "type = \"modal\"\nmodes = 4\nshift_hz = 2.5")));
   EXPECT_TRUE(std::holds_alternative<ModalSpec>(spec.analysis));
   EXPECT_EQ(std::get<ModalSpec>(spec.analysis).modes.lowest, 4);
   EXPECT_EQ(std::get<ModalSpec>(spec.analysis).options.shift_frequency_hz, 2.5);
@@ -280,13 +281,12 @@ TEST_F(CaseFile, ClockwiseCornersAreRejected) {
 }
 
 TEST_F(CaseFile, ModalAnalysisWithoutDensityIsRejected) {
-  const std::string text = replace(replace(kMinimalCase, "rho = 7800.0\n", ""), "type = \"static\"", "type = \"modal\"\nmodes = 3");
+  const std::string text =
+      replace(replace(kMinimalCase, "rho = 7800.0\n", ""), "type = \"static\"", "type = \"modal\"\nmodes = 3");
   EXPECT_NE(error_of(write(text)).find("rho"), std::string::npos);
 }
 
-TEST_F(CaseFile, MissingFileIsAnInputError) {
-  EXPECT_THROW(parse_case_file(dir_ / "does_not_exist.toml"), InputError);
-}
+TEST_F(CaseFile, MissingFileIsAnInputError) { EXPECT_THROW(parse_case_file(dir_ / "does_not_exist.toml"), InputError); }
 
 TEST_F(CaseFile, ConstraintOnAnUnknownSetIsRejectedWhenBuildingTheModel) {
   const CaseSpec spec = parse_case_file(write(replace(kMinimalCase, "set = \"left\"", "set = \"lefft\"")));

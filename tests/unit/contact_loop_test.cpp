@@ -97,7 +97,8 @@ TEST(ContactLoop, RigidContactGivesTheRigidPlasticEnergy) {
   s.law.kt = 1e16;
   const ContactLoopOutcome o = run_contact_loop(s);
   const double exact = 4 * 0.5 * 100.0 * s.tangential_amplitude, h = h_of(s);
-  EXPECT_NEAR(o.summary.dissipated_energy, exact, 2 * 50.0 * s.tangential_amplitude * h * h / 2 + 4 * 50.0 * 50.0 / s.law.kt);
+  EXPECT_NEAR(o.summary.dissipated_energy, exact,
+              2 * 50.0 * s.tangential_amplitude * h * h / 2 + 4 * 50.0 * 50.0 / s.law.kt);
   EXPECT_NEAR(jenkins_loop_closed_form(s.law, s.tangential_amplitude).energy, exact, 1e-9 * exact);
 }
 
@@ -141,7 +142,8 @@ TEST(ContactLoop, ClosedFormsAreNotClaimedForAVariableNormalLoad) {
   EXPECT_TRUE(std::isnan(t.values(0, *t.column_index("closed_form_energy_j"))));
   EXPECT_TRUE(std::isnan(t.values(0, *t.column_index("closed_form_stiffness_n_per_m"))));
   const ResultTable& h = o.tables.at("hysteresis");
-  for (const char* c : {"relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"}) EXPECT_TRUE(h.column_index(c)) << c;
+  for (const char* c : {"relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"})
+    EXPECT_TRUE(h.column_index(c)) << c;
   EXPECT_EQ(h.values.rows(), 256);
 }
 

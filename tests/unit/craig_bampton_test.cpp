@@ -4,10 +4,12 @@
 // fixed-interface modes are added, Guyan reduction is exact for loads on the masters, the
 // recovery matrix expands the reduced static solution to the full one, and the kept modes are
 // those of the structure with its masters clamped. Units: SI.
+#include "reduction/craig_bampton.hpp"
+
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -17,7 +19,6 @@
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
 #include "mesh/mapped_quad.hpp"
-#include "reduction/craig_bampton.hpp"
 #include "test_support.hpp"
 
 namespace bb {

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "common/errors.hpp"
-#include "identify/fit_points.hpp"
 #include "data_block.hpp"
+#include "identify/fit_points.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -23,7 +23,7 @@ TEST_F(CurveIdentification, FrfPointsInterpolateTheComputedCurveAndWrapPhases) {
   CalibrationData d = test::frf_block(dir_ / "frf.csv");
   ResultTables tables;
   tables.emplace("frf_1", table_from_rows("frf_1", {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg"},
-                                {{1, 10.0, 1e-3, 170.0}, {2, 11.0, 3e-3, -170.0}, {3, 12.0, 2e-3, -160.0}}));
+                                          {{1, 10.0, 1e-3, 170.0}, {2, 11.0, 3e-3, -170.0}, {3, 12.0, 2e-3, -160.0}}));
   const std::vector<FitPoint> p = data_points(d, tables);
   ASSERT_EQ(p.size(), 4u);
   EXPECT_NEAR(p[0].computed, 2e-3, 1e-15);  // halfway between 1 and 3 mm
@@ -53,15 +53,17 @@ TEST_F(CurveIdentification, HysteresisPointsUseTheBranchMovingTheSameWay) {
     rows.push_back({static_cast<double>(k + 1), std::cos(theta), std::sin(theta) < 0 ? 1.0 : -1.0});
   }
   ResultTables tables;
-  tables.emplace("hysteresis", table_from_rows("hysteresis", {"instant", "relative_tangential_m", "tangential_force_n"}, rows));
+  tables.emplace("hysteresis",
+                 table_from_rows("hysteresis", {"instant", "relative_tangential_m", "tangential_force_n"}, rows));
   std::string csv = "relative_displacement [m],tangential_force [N]\n";
   for (int k = 0; k < 16; ++k) {
     const double theta = 2 * std::numbers::pi * (k + 0.5) / 16.0;
     csv += std::to_string(0.9 * std::cos(theta)) + ",0.5\n";
   }
   write(csv, "loop.csv");
-  const CalibrationData d = test::data_block(dir_ / "loop.csv", DataKind::hysteresis, "hysteresis",
-                                             {{"relative_displacement", "relative_tangential_m"}, {"tangential_force", "tangential_force_n"}});
+  const CalibrationData d = test::data_block(
+      dir_ / "loop.csv", DataKind::hysteresis, "hysteresis",
+      {{"relative_displacement", "relative_tangential_m"}, {"tangential_force", "tangential_force_n"}});
   const std::vector<FitPoint> p = data_points(d, tables);
   ASSERT_EQ(p.size(), 16u);
   for (int k = 0; k < 16; ++k) {
@@ -76,7 +78,8 @@ TEST_F(CurveIdentification, PeaksAreMatchedByForceLevel) {
   CalibrationData d = test::data_block(dir_ / "peaks.csv", DataKind::peaks, "peaks",
                                        {{"force", "fe_n"}, {"frequency", "peak_hz"}, {"amplitude", "peak_amp_per_n"}});
   ResultTables tables;
-  tables.emplace("peaks", table_from_rows("peaks", {"level", "fe_n", "peak_hz", "peak_amp_per_n"}, {{1, 0.1, 224.0, 3.6e-5}, {2, 3.0, 171.0, 4.1e-5}}));
+  tables.emplace("peaks", table_from_rows("peaks", {"level", "fe_n", "peak_hz", "peak_amp_per_n"},
+                                          {{1, 0.1, 224.0, 3.6e-5}, {2, 3.0, 171.0, 4.1e-5}}));
   const std::vector<FitPoint> p = data_points(d, tables);
   ASSERT_EQ(p.size(), 4u);
   EXPECT_DOUBLE_EQ(p[0].computed, 171.0);
@@ -87,7 +90,6 @@ TEST_F(CurveIdentification, PeaksAreMatchedByForceLevel) {
   d.data = read_measured_data(dir_ / "other.csv", DataKind::peaks);
   EXPECT_THROW(data_points(d, tables), InputError);  // no computed level at 5 N
 }
-
 
 }  // namespace
 }  // namespace bb

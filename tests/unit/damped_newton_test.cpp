@@ -2,13 +2,13 @@
 // backtracking that tames overshooting and undefined full steps, Levenberg-Marquardt steps where
 // backtracking is not allowed to, the minimum-norm step on an underdetermined system, and failures
 // reported with a status and |R|, never thrown, never NaN.
+#include "linalg/damped_newton.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
-
-#include "linalg/damped_newton.hpp"
 
 namespace bb {
 namespace {
@@ -57,8 +57,8 @@ TEST(DampedNewton, BacktrackingTamesAFullStepThatOvershoots) {
 }
 
 TEST(DampedNewton, LevenbergMarquardtStepsReduceTheResidualWhereNoHalvingIsAllowed) {
-  const DampedNewtonResult r = damped_newton(
-      arctangent, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12, .max_backtracks = 0, .levenberg_marquardt = true});
+  const DampedNewtonResult r = damped_newton(arctangent, VectorXd::Constant(1, 3.0),
+                                             {.tolerance = 1e-12, .max_backtracks = 0, .levenberg_marquardt = true});
   ASSERT_TRUE(r.converged) << r.failure;
   EXPECT_NEAR(r.x[0], 0.0, 1e-12);
 }
@@ -99,8 +99,8 @@ TEST(DampedNewton, SingularAndInvalidSystemsAreReportedNotThrownAndNeverNaN) {
     p.jacobian = MatrixXd{{1.0, 1.0}, {2.0, 2.0}};
     return p;
   };
-  for (const NewtonStepSolve how : {NewtonStepSolve::full_pivot_lu, NewtonStepSolve::partial_pivot_lu,
-                                    NewtonStepSolve::minimum_norm}) {
+  for (const NewtonStepSolve how :
+       {NewtonStepSolve::full_pivot_lu, NewtonStepSolve::partial_pivot_lu, NewtonStepSolve::minimum_norm}) {
     const DampedNewtonResult r =
         damped_newton(inconsistent, VectorXd::Zero(2), {.tolerance = 1e-12, .step_solve = how});
     EXPECT_FALSE(r.converged);

@@ -9,8 +9,8 @@
 #include <tuple>
 #include <utility>
 
-#include "damper/rigid_damper.hpp"
 #include "common/errors.hpp"
+#include "damper/rigid_damper.hpp"
 #include "damper_support.hpp"
 #include "reduction/reduced_model.hpp"
 
@@ -105,8 +105,8 @@ TEST(DamperKinematics, ForceMatrixMatchesVirtualWorkOfTheContactForces) {
     double work = 0.0;
     for (size_t c = 0; c < 3; ++c) {
       const DamperContact& p = d.contacts[c];
-      const Eigen::Vector2d force = f(static_cast<Eigen::Index>(2 * c)) * p.tangent() +
-                                    f(static_cast<Eigen::Index>(2 * c + 1)) * p.normal;
+      const Eigen::Vector2d force =
+          f(static_cast<Eigen::Index>(2 * c)) * p.tangent() + f(static_cast<Eigen::Index>(2 * c + 1)) * p.normal;
       work += force.dot(damper_point_displacement(dq, p.position));
     }
     const double via_b = dq.dot(b * f);
@@ -120,7 +120,8 @@ TEST(DamperKinematics, ForceMatrixMatchesVirtualWorkOfTheContactForces) {
     double work_full = 0.0;
     for (size_t c = 0; c < 3; ++c) {
       const DamperContact& p = d.contacts[c];
-      const Eigen::Vector2d force = t(static_cast<Eigen::Index>(c)) * p.tangent() + nn(static_cast<Eigen::Index>(c)) * p.normal;
+      const Eigen::Vector2d force =
+          t(static_cast<Eigen::Index>(c)) * p.tangent() + nn(static_cast<Eigen::Index>(c)) * p.normal;
       const Eigen::Vector2d db(dfull(p.blade_x), dfull(p.blade_y));
       work_full += force.dot(damper_point_displacement(dfull.tail<3>(), p.position)) - force.dot(db);
     }
@@ -165,7 +166,7 @@ TEST(DamperGeometry, PlatformPointsOfAReducedModelGiveTheBladeSideOfTheContacts)
   std::tie(g.r_x, g.r_y) = platform_dofs(m, "R");
   const ContactKinematics k = contact_kinematics(asymmetric_damper(g), m.size());
   EXPECT_EQ(k.normal.cols(), 16);
-  EXPECT_EQ(k.normal(2, 9), -std::sin(rad(55.0)));  // R's n_x on its blade x DOF
+  EXPECT_EQ(k.normal(2, 9), -std::sin(rad(55.0)));    // R's n_x on its blade x DOF
   EXPECT_EQ(k.normal.block(0, 0, 3, 3).norm(), 0.0);  // T1 plays no part
   EXPECT_EQ(k.normal.col(5).norm(), 0.0);             // nor any z DOF
 }

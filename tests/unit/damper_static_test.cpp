@@ -167,8 +167,13 @@ TEST(DamperStatic, TwoBladeArticlePlatformPointsSeatTheDamperWithTheWedgeLoads) 
                           r = a.points.at("R").head<2>();
     const Eigen::Vector2d centre = 0.5 * (l1 + l2);
     const Eigen::Vector2d g_pos(0.5 * (centre.x() + r.x()), a.levels[5]);
-    AsymmetricDamperGeometry g{.mass = 0.05, .inertia = 2e-6, .beta_left_deg = beta, .beta_right_deg = beta,
-                               .l1 = l1 - g_pos, .l2 = l2 - g_pos, .r = r - g_pos};
+    AsymmetricDamperGeometry g{.mass = 0.05,
+                               .inertia = 2e-6,
+                               .beta_left_deg = beta,
+                               .beta_right_deg = beta,
+                               .l1 = l1 - g_pos,
+                               .l2 = l2 - g_pos,
+                               .r = r - g_pos};
     const RigidDamper d = asymmetric_damper(g);
     const DamperStaticState s = solve_rigid(d, 250.0, 1e9);
     ASSERT_TRUE(s.converged) << s.failure;
@@ -195,7 +200,8 @@ TEST(DamperStatic, ClosedFormHoldsFromSoftToVeryStiffContactsAndFromTinyToLargeC
       worst_sym = std::max(worst_sym, (s.normal_preload - exact).cwiseAbs().maxCoeff() / side);
       const DamperStaticState a = solve_rigid(asym, cf, kn);
       ASSERT_TRUE(a.converged) << a.failure;
-      worst_asym = std::max(worst_asym, (a.normal_preload - cf * unit_asym).cwiseAbs().maxCoeff() / (cf * unit_asym.norm()));
+      worst_asym =
+          std::max(worst_asym, (a.normal_preload - cf * unit_asym).cwiseAbs().maxCoeff() / (cf * unit_asym.norm()));
       EXPECT_TRUE(a.q.allFinite());
     }
   }

@@ -1,6 +1,7 @@
 // Damper geometries shared by the damper unit tests. Units: SI.
 #pragma once
 #include <Eigen/Dense>
+
 #include <cmath>
 #include <numbers>
 
@@ -14,7 +15,8 @@ inline double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { retur
 // Symmetric damper: face angles beta on both sides, the right point R = (a, b) and the left face
 // centre (-a, b), mirror images about x = 0; L1 and L2 at -s and +s along the left face from its
 // centre. m = 0.05 kg, J = 2e-6 kg m^2 (a small steel wedge).
-inline AsymmetricDamperGeometry symmetric_geometry(double beta_deg, double a = 4e-3, double b = 2e-3, double s = 1.5e-3) {
+inline AsymmetricDamperGeometry symmetric_geometry(double beta_deg, double a = 4e-3, double b = 2e-3,
+                                                   double s = 1.5e-3) {
   const Eigen::Vector2d c(-a, b), t(std::cos(rad(beta_deg)), std::sin(rad(beta_deg)));
   AsymmetricDamperGeometry g;
   g.mass = 0.05;

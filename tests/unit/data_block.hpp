@@ -20,7 +20,8 @@ inline CalibrationData data_block(const std::filesystem::path& file, DataKind ki
 
 // The frf block of the response A.x in the table frf_1, as the harmonic balance names its columns.
 inline CalibrationData frf_block(const std::filesystem::path& file) {
-  return data_block(file, DataKind::frf, "frf_1", {{"frequency", "frequency_hz"}, {"amplitude", "A.x_amp_m"}, {"phase", "A.x_phase_deg"}});
+  return data_block(file, DataKind::frf, "frf_1",
+                    {{"frequency", "frequency_hz"}, {"amplitude", "A.x_amp_m"}, {"phase", "A.x_phase_deg"}});
 }
 
 }  // namespace bb::test

@@ -64,7 +64,8 @@ Mesh quarter_ring(ElementType type, double a, double b, double length, int nr, i
   };
   const test::HexGrid grid = test::make_hex_grid(nr, nt, nz, nodes_per_element(type), point, [&](int i, int j, int k) {
     const Eigen::Vector3i s(i % 2, j % 2, k % 2);
-    return Eigen::Vector3d(point(i, j, k) - 0.5 * (point(i - s[0], j - s[1], k - s[2]) + point(i + s[0], j + s[1], k + s[2])));
+    return Eigen::Vector3d(point(i, j, k) -
+                           0.5 * (point(i - s[0], j - s[1], k - s[2]) + point(i + s[0], j + s[1], k + s[2])));
   });
   return test::mesh_from_grid(grid, type);
 }
@@ -98,7 +99,8 @@ TEST(SurfaceLoad, PressureResultantOnACurvedFaceIsPressureTimesItsProjectedArea)
   }
   // In 2D: the q4 edges of the outer arc of a quarter annulus (mapped from a rectangle in r, theta).
   MappedQuadSpec spec;
-  spec.corners = {Eigen::Vector2d(a, 0), Eigen::Vector2d(b, 0), Eigen::Vector2d(b, 0.5 * kPi), Eigen::Vector2d(a, 0.5 * kPi)};
+  spec.corners = {Eigen::Vector2d(a, 0), Eigen::Vector2d(b, 0), Eigen::Vector2d(b, 0.5 * kPi),
+                  Eigen::Vector2d(a, 0.5 * kPi)};
   spec.nx = 3;
   spec.ny = 7;
   Mesh annulus = generate_mapped_quad(spec);
@@ -115,8 +117,9 @@ TEST(SurfaceLoad, PressureResultantOnACurvedFaceIsPressureTimesItsProjectedArea)
 
 TEST(SurfaceLoad, OnlyBoundaryFacetsWithEveryNodeInTheSetAreLoaded) {
   HexBlockSpec block;
-  block.corners = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 1, 0), Eigen::Vector3d(0, 1, 0),
-                   Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(2, 0, 1), Eigen::Vector3d(2, 1, 1), Eigen::Vector3d(0, 1, 1)};
+  block.corners = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 1, 0),
+                   Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(2, 0, 1),
+                   Eigen::Vector3d(2, 1, 1), Eigen::Vector3d(0, 1, 1)};
   block.nx = 2;
   block.element = ElementType::hex20;
   const Mesh mesh = generate_hex_block(block);
@@ -142,9 +145,9 @@ TEST(BodyLoad, GravityAndCentrifugalResultantsAreExactForEveryElement) {
   const double rho = 7800.0, omega = 120.0;
   for (ElementType type : {ElementType::hex8, ElementType::hex8i, ElementType::hex20}) {
     HexBlockSpec block;
-    block.corners = {Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(1.5, 0, 0), Eigen::Vector3d(1.5, 0.1, 0), Eigen::Vector3d(0.5, 0.1, 0),
-                     Eigen::Vector3d(0.5, 0, 0.2), Eigen::Vector3d(1.5, 0, 0.2), Eigen::Vector3d(1.5, 0.1, 0.2),
-                     Eigen::Vector3d(0.5, 0.1, 0.2)};
+    block.corners = {Eigen::Vector3d(0.5, 0, 0),     Eigen::Vector3d(1.5, 0, 0),    Eigen::Vector3d(1.5, 0.1, 0),
+                     Eigen::Vector3d(0.5, 0.1, 0),   Eigen::Vector3d(0.5, 0, 0.2),  Eigen::Vector3d(1.5, 0, 0.2),
+                     Eigen::Vector3d(1.5, 0.1, 0.2), Eigen::Vector3d(0.5, 0.1, 0.2)};
     block.nx = 5;
     block.ny = 2;
     block.nz = 3;
@@ -154,7 +157,8 @@ TEST(BodyLoad, GravityAndCentrifugalResultantsAreExactForEveryElement) {
     const double mass = rho * 1.0 * 0.1 * 0.2;
     BodyLoad gravity;
     gravity.acceleration = Eigen::Vector3d(0, -9.81, 0);
-    EXPECT_NEAR((resultant(body_load_vector(mesh, material, gravity), 3) - mass * gravity.acceleration).norm(), 0.0, 1e-9 * mass * 9.81)
+    EXPECT_NEAR((resultant(body_load_vector(mesh, material, gravity), 3) - mass * gravity.acceleration).norm(), 0.0,
+                1e-9 * mass * 9.81)
         << element_name(type);
     BodyLoad spin;
     spin.kind = BodyLoad::Kind::centrifugal;

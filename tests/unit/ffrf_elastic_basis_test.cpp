@@ -55,8 +55,8 @@ TEST(FfrfElasticBasis, ModalBasisIsMassOrthonormalAndKeepsTheSelectedModes) {
 double static_error(const ffrf::RotatingBody& body, const ffrf::ElasticBasis& basis, double w, bool stiffening) {
   const ffrf::ProjectedBody p = ffrf::project(body, basis);
   const double s = stiffening ? 1.0 : 0.0;
-  const Eigen::MatrixXd op = p.stiffness.to_dense() + w * w * (s * p.geometric_stiffness.to_dense() -
-                                                               p.projected_mass.to_dense());
+  const Eigen::MatrixXd op =
+      p.stiffness.to_dense() + w * w * (s * p.geometric_stiffness.to_dense() - p.projected_mass.to_dense());
   const Eigen::VectorXd eta = op.ldlt().solve(w * w * p.centrifugal_load);
   const Eigen::VectorXd full = ffrf::centrifugal_deflection(body, w, {.stiffening = stiffening}).displacement;
   return (ffrf::to_free_dofs(basis, eta) - full).norm() / full.norm();
@@ -70,9 +70,8 @@ TEST(FfrfElasticBasis, StaticCorrectionShapesRecoverTheCentrifugalDeflection) {
   for (const bool stiffening : {false, true}) {
     const double e_plain = static_error(body, plain, 0.5 * w1, stiffening);
     const double e_corrected = static_error(body, corrected, 0.5 * w1, stiffening);
-    std::printf(
-        "  stiffening %d, Omega = omega_1 / 2: static deflection error 8 modes %.2e, with static shapes %.2e\n",
-        stiffening, e_plain, e_corrected);
+    std::printf("  stiffening %d, Omega = omega_1 / 2: static deflection error 8 modes %.2e, with static shapes %.2e\n",
+                stiffening, e_plain, e_corrected);
     EXPECT_LT(e_corrected, 0.05 * e_plain);
     EXPECT_LT(e_corrected, 1e-3);
   }

@@ -5,9 +5,11 @@
 // with gravity, energy and angular-momentum balances of a free rotor under a torque, the free rotor
 // with a heavy hub against the prescribed constant speed, the modal basis against the nodal one,
 // and the input errors. Units: SI.
-#include <gtest/gtest.h>
+#include "ffrf/ffrf_integrator.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -18,7 +20,6 @@
 
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
-#include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"
 #include "ffrf_test_models.hpp"
 
@@ -117,7 +118,7 @@ TEST(FfrfIntegrator, ConstantSpeedWithRotatingGravityConvergesAtSecondOrder) {
   const test::BeamSpec b = offset_beam();
   const test::FfrfSetup s = test::ffrf_setup(offset_model(b, 0.05), test::modal_basis(4, false));
   const double f1 = s.basis->frequencies_hz[0], f4 = s.basis->frequencies_hz[3];
-  const double w = 0.3 * 2 * kPi * f1;  // well below the divergence
+  const double w = 0.3 * 2 * kPi * f1;     // well below the divergence
   const Eigen::Vector2d g(3.0e3, -1.0e3);  // large, so that gravity matters against the centrifugal load
   const ExactConstantSpeed exact = exact_constant_speed(*s.projected, w, g);
   const double t_end = 3.0 / f1;
@@ -193,13 +194,14 @@ TEST(FfrfIntegrator, ConstantSpeedResponseOscillatesAboutTheStaticDeflectionAtTh
   for (size_t i = 0; i < y.size(); ++i) y[i] = h.displacement(static_cast<Eigen::Index>(i), 0);
   const auto [period, mean] = period_and_mean(h.time, y, u_static);
   const double amplitude = *std::max_element(y.begin(), y.end()) - u_static;
-  std::printf("  Omega %.2f rad/s: static tip u_y %.6e m, mean %.6e m (%+.2e), amplitude %.3e m; period %.6e s vs "
-              "rotating mode %.6e s (%+.2e); %d factorization(s)\n",
-              w, u_static, mean, mean / u_static - 1, amplitude, period, 1.0 / f1, period * f1 - 1, h.factorizations);
+  std::printf(
+      "  Omega %.2f rad/s: static tip u_y %.6e m, mean %.6e m (%+.2e), amplitude %.3e m; period %.6e s vs "
+      "rotating mode %.6e s (%+.2e); %d factorization(s)\n",
+      w, u_static, mean, mean / u_static - 1, amplitude, period, 1.0 / f1, period * f1 - 1, h.factorizations);
   EXPECT_NEAR(mean / u_static, 1.0, 2e-3);
-  EXPECT_NEAR(period * f1, 1.0, 1e-3);  // gen-alpha period error at 100 steps/period: ~3e-4
+  EXPECT_NEAR(period * f1, 1.0, 1e-3);             // gen-alpha period error at 100 steps/period: ~3e-4
   EXPECT_GT(amplitude, 0.5 * std::abs(u_static));  // the sudden start really excites the mode
-  EXPECT_EQ(h.factorizations, 1);       // constant speed: one factorization for the whole run
+  EXPECT_EQ(h.factorizations, 1);                  // constant speed: one factorization for the whole run
 }
 
 // Spin-up with gravity: T + U change = work of the driving torque + work of gravity.
@@ -228,9 +230,10 @@ TEST(FfrfIntegrator, PrescribedSpinUpBalancesEnergyWithDrivingAndGravityWork) {
       torque_work += 0.5 * (h.time[i] - h.time[i - 1]) *
                      (h.driving_torque[i] * h.speed[i] + h.driving_torque[i - 1] * h.speed[i - 1]);
     EXPECT_NEAR(torque_work / h.driving_work.back(), 1.0, per_period == 80 ? 1e-4 : 1e-2);
-    std::printf("  %2d steps per period: energy balance error %.3e of max T (%.4g J); driving work %.4g J, largest "
-                "work %.3g J; observed order %.2f\n",
-                per_period, err, t_max, h.driving_work.back(), w_max, previous > 0 ? std::log2(previous / err) : 0.0);
+    std::printf(
+        "  %2d steps per period: energy balance error %.3e of max T (%.4g J); driving work %.4g J, largest "
+        "work %.3g J; observed order %.2f\n",
+        per_period, err, t_max, h.driving_work.back(), w_max, previous > 0 ? std::log2(previous / err) : 0.0);
     if (per_period == 80) {
       EXPECT_LT(err, 1e-5);
     }
@@ -265,11 +268,11 @@ TEST(FfrfIntegrator, FreeRotorBalancesEnergyAndAngularMomentumUnderATorque) {
         coast_drift = std::max(coast_drift, std::abs(h.angular_momentum[i] - h.angular_momentum.back()));
     }
     const double e_err = h.energy_balance_error() / t_max;
-    std::printf("  %s basis: Omega_end %.3f rad/s; energy balance error %.2e of max T; Delta H %.9f vs impulse %.9f "
-                "(%.2e); H drift while coasting %.2e; Newton %ld iterations, max %d per step, %d factorizations\n",
-                modal ? "modal" : "nodal", h.speed.back(), e_err, h_end, impulse, h_end / impulse - 1,
-                coast_drift / std::abs(h.angular_momentum.back()), h.solve_iterations, h.max_step_iterations,
-                h.factorizations);
+    std::printf(
+        "  %s basis: Omega_end %.3f rad/s; energy balance error %.2e of max T; Delta H %.9f vs impulse %.9f "
+        "(%.2e); H drift while coasting %.2e; Newton %ld iterations, max %d per step, %d factorizations\n",
+        modal ? "modal" : "nodal", h.speed.back(), e_err, h_end, impulse, h_end / impulse - 1,
+        coast_drift / std::abs(h.angular_momentum.back()), h.solve_iterations, h.max_step_iterations, h.factorizations);
     EXPECT_LT(e_err, 1e-4);
     EXPECT_NEAR(h_end / impulse, 1.0, 1e-4);
     EXPECT_LT(coast_drift, 1e-9 * std::abs(h.angular_momentum.back()));
@@ -300,8 +303,7 @@ TEST(FfrfIntegrator, DampedRunWithAnExternalLoadBalancesEnergy) {
   double t_max = 0.0;
   for (double t : h.kinetic_energy) t_max = std::max(t_max, t);
   std::printf("  damping work %.4g J, external work %.4g J, driving work %.4g J; balance error %.2e of max T\n",
-              h.damping_work.back(), h.external_work.back(), h.driving_work.back(),
-              h.energy_balance_error() / t_max);
+              h.damping_work.back(), h.external_work.back(), h.driving_work.back(), h.energy_balance_error() / t_max);
   EXPECT_GT(h.damping_work.back(), 0.0);
   EXPECT_GT(std::abs(h.external_work.back()), 0.0);
   EXPECT_LT(h.energy_balance_error(), 1e-5 * t_max);
@@ -322,8 +324,8 @@ TEST(FfrfIntegrator, FreeRotorWithAHeavyHubMatchesThePrescribedConstantSpeed) {
   double previous = 0.0;
   for (const double hub : {1e3, 1e4}) {
     o.rotor_inertia = hub * s.body->mass_properties.axis_inertia;
-    const ffrf::FfrfHistory free = ffrf::integrate(
-        *s.projected, ffrf::RotationProfile::free([](double) { return 0.0; }, w), o);
+    const ffrf::FfrfHistory free =
+        ffrf::integrate(*s.projected, ffrf::RotationProfile::free([](double) { return 0.0; }, w), o);
     const double diff = (free.displacement - prescribed.displacement).cwiseAbs().maxCoeff() /
                         prescribed.displacement.cwiseAbs().maxCoeff();
     std::printf("  J_hub = %.0e J_blade: max tip difference %.3e relative\n", hub, diff);
@@ -353,14 +355,18 @@ TEST(FfrfIntegrator, ModalBasisReproducesTheNodalSpinUpWithMeasuredErrorAndSpeed
   const auto t1 = clock::now();
   const ffrf::FfrfHistory hm = ffrf::integrate(*modal.projected, profile, o);
   const auto t2 = clock::now();
-  const double err = (hm.displacement - hn.displacement).cwiseAbs().colwise().maxCoeff().cwiseQuotient(
-                         hn.displacement.cwiseAbs().colwise().maxCoeff()).maxCoeff();
-  const double tn = std::chrono::duration<double>(t1 - t0).count(),
-               tm = std::chrono::duration<double>(t2 - t1).count();
-  std::printf("  %d steps: nodal (%d DOFs) %.3f s, %d factorizations, %ld corrections; modal (%d coordinates) %.3f s "
-              "(speed-up %.1f); max tip error %.2e of the peak\n",
-              hn.steps, nodal.body->n_free(), tn, hn.factorizations, hn.solve_iterations, modal.basis->size(), tm,
-              tn / tm, err);
+  const double err = (hm.displacement - hn.displacement)
+                         .cwiseAbs()
+                         .colwise()
+                         .maxCoeff()
+                         .cwiseQuotient(hn.displacement.cwiseAbs().colwise().maxCoeff())
+                         .maxCoeff();
+  const double tn = std::chrono::duration<double>(t1 - t0).count(), tm = std::chrono::duration<double>(t2 - t1).count();
+  std::printf(
+      "  %d steps: nodal (%d DOFs) %.3f s, %d factorizations, %ld corrections; modal (%d coordinates) %.3f s "
+      "(speed-up %.1f); max tip error %.2e of the peak\n",
+      hn.steps, nodal.body->n_free(), tn, hn.factorizations, hn.solve_iterations, modal.basis->size(), tm, tn / tm,
+      err);
   EXPECT_LT(err, 5e-3);
 }
 

@@ -125,8 +125,7 @@ TEST_P(RotatingBar, ElongationWithSpinSofteningConvergesToTheClosedForm) {
   EXPECT_GT(elongation_softening(bar, bar.length) / elongation_no_softening(bar, bar.length) - 1.0, 0.01);
 }
 
-INSTANTIATE_TEST_SUITE_P(Ffrf, RotatingBar,
-                         ::testing::Values(ElementType::q4, ElementType::hex8i, ElementType::hex20),
+INSTANTIATE_TEST_SUITE_P(Ffrf, RotatingBar, ::testing::Values(ElementType::q4, ElementType::hex8i, ElementType::hex20),
                          [](const auto& param_info) { return std::string(element_name(param_info.param)); });
 
 TEST(FfrfRotatingBody, MassPropertiesOfABoxAreExact) {

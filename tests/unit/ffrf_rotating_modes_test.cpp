@@ -104,9 +104,10 @@ TEST(FfrfRotatingModes, SpinSofteningWithoutStiffeningDivergesAtTheFirstInPlaneF
   ffrf::RotatingModesOptions soft{.n_modes = 3, .stiffening = false};
   const ffrf::RotatingModes below = ffrf::rotating_modes(*s.projected, 0.98 * w1, soft);
   const ffrf::RotatingModes above = ffrf::rotating_modes(*s.projected, 1.02 * w1, soft);
-  std::printf("  omega_1 %.4f rad/s: at 0.98 omega_1 f1 = %.4f Hz (stable %d); at 1.02 omega_1 f1 = %.4f Hz, growth "
-              "%.4f 1/s (stable %d)\n",
-              w1, below.frequencies_hz[0], below.stable, above.frequencies_hz[0], above.max_growth_rate, above.stable);
+  std::printf(
+      "  omega_1 %.4f rad/s: at 0.98 omega_1 f1 = %.4f Hz (stable %d); at 1.02 omega_1 f1 = %.4f Hz, growth "
+      "%.4f 1/s (stable %d)\n",
+      w1, below.frequencies_hz[0], below.stable, above.frequencies_hz[0], above.max_growth_rate, above.stable);
   EXPECT_TRUE(below.stable);
   EXPECT_FALSE(above.stable);
   EXPECT_EQ(above.frequencies_hz[0], 0.0);
@@ -131,8 +132,7 @@ TEST(FfrfRotatingModes, ModalBasisMatchesTheFullModelForTheLowestRotatingModes) 
   const Model model = test::beam_model(b);
   const ffrf::RotatingBody body = ffrf::build_rotating_body(model);
   const double speed = 8.0 * frequency_unit(b);
-  Eigen::SparseMatrix<double> k_eff =
-      body.stiffness + speed * speed * (body.geometric_stiffness - body.projected_mass);
+  Eigen::SparseMatrix<double> k_eff = body.stiffness + speed * speed * (body.geometric_stiffness - body.projected_mass);
   const ModalSolution full = lowest_modes(k_eff, body.mass, {.n_modes = 4});
   for (const int n_modes : {8, 16, 24}) {
     const ffrf::ElasticBasis basis = ffrf::make_elastic_basis(body, test::modal_basis(n_modes));

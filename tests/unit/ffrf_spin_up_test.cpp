@@ -12,9 +12,9 @@
 // T = rho A Omega^2 (L^2 - x^2)/2, integrated by the average-acceleration Newmark rule. The solid
 // model (hex8i) differs from it by its axial-chordwise Coriolis coupling, shear and 3D effects.
 // Units: SI.
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -59,8 +59,8 @@ std::vector<double> reference_tip_lag(const std::vector<double>& times, int elem
   const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
   for (int e = 0; e < elements; ++e) {
     Eigen::Matrix4d ke, me, ge = Eigen::Matrix4d::Zero();
-    ke << 12, 6 * h, -12, 6 * h, 6 * h, 4 * h * h, -6 * h, 2 * h * h, -12, -6 * h, 12, -6 * h, 6 * h, 2 * h * h,
-        -6 * h, 4 * h * h;
+    ke << 12, 6 * h, -12, 6 * h, 6 * h, 4 * h * h, -6 * h, 2 * h * h, -12, -6 * h, 12, -6 * h, 6 * h, 2 * h * h, -6 * h,
+        4 * h * h;
     ke *= kEI / (h * h * h);
     me << 156, 22 * h, 54, -13 * h, 22 * h, 4 * h * h, 13 * h, -3 * h * h, 54, 13 * h, 156, -22 * h, -13 * h,
         -3 * h * h, -22 * h, 4 * h * h;
@@ -70,8 +70,9 @@ std::vector<double> reference_tip_lag(const std::vector<double>& times, int elem
       const double s = 0.5 * (gp[g] + 1.0), x = (e + s) * h, w = 0.5 * h * gw[g];
       const Eigen::Vector4d nn(1 - 3 * s * s + 2 * s * s * s, h * (s - 2 * s * s + s * s * s),
                                3 * s * s - 2 * s * s * s, h * (s * s * s - s * s));
-      const Eigen::Vector4d dn = Eigen::Vector4d(-6 * s + 6 * s * s, h * (1 - 4 * s + 3 * s * s), 6 * s - 6 * s * s,
-                                                 h * (3 * s * s - 2 * s)) / h;
+      const Eigen::Vector4d dn =
+          Eigen::Vector4d(-6 * s + 6 * s * s, h * (1 - 4 * s + 3 * s * s), 6 * s - 6 * s * s, h * (3 * s * s - 2 * s)) /
+          h;
       ge += w * 0.5 * kRhoA * (kL * kL - x * x) * dn * dn.transpose();  // T at unit speed
       fe += w * kRhoA * x * nn;
     }
@@ -158,9 +159,10 @@ TEST(FfrfSpinUp, WithStiffeningTheTipLagStaysBoundedAndMatchesTheBeamModel) {
     diff = std::max(diff, std::abs(run.tip[i] - ref[i]));
     if (run.time[i] >= kTs) after = std::max(after, std::abs(run.tip[i]));
   }
-  std::printf("  max tip lag %.4f m at t = %.2f s; after spin-up |tip| <= %.4f m; max difference from the Euler-"
-              "Bernoulli beam model %.2e m (%.2f %% of the lag); %d steps, %d factorizations\n",
-              lag, t_lag, after, diff, 100 * diff / lag, run.history.steps, run.history.factorizations);
+  std::printf(
+      "  max tip lag %.4f m at t = %.2f s; after spin-up |tip| <= %.4f m; max difference from the Euler-"
+      "Bernoulli beam model %.2e m (%.2f %% of the lag); %d steps, %d factorizations\n",
+      lag, t_lag, after, diff, 100 * diff / lag, run.history.steps, run.history.factorizations);
   for (double t : {2.0, 5.0, 7.5, 10.0, 15.0, 20.0, 25.0}) {
     const size_t i = static_cast<size_t>(std::lround(t / (run.time[1] - run.time[0])));
     std::printf("    t %5.1f s: tip %+.5f m (beam model %+.5f m)\n", run.time[i], run.tip[i], ref[i]);
@@ -193,8 +195,8 @@ TEST(FfrfSpinUp, WithoutStiffeningTheRunDivergesAfterTheSofteningSpeedAndSaysSo)
     std::smatch m;
     ASSERT_TRUE(std::regex_search(what, m, std::regex("t = ([0-9.eE+-]+) s"))) << what;
     const double t_fail = std::stod(m[1].str());
-    std::printf("  divergence speed %.4f rad/s reached at t = %.3f s; run stopped at t = %.3f s:\n  %s\n", w_div,
-                t_div, t_fail, what.c_str());
+    std::printf("  divergence speed %.4f rad/s reached at t = %.3f s; run stopped at t = %.3f s:\n  %s\n", w_div, t_div,
+                t_fail, what.c_str());
     EXPECT_GT(t_fail, t_div);
     EXPECT_LT(t_fail, t_div + 4.0);
     EXPECT_NE(what.find("Kane"), std::string::npos);

@@ -3,6 +3,7 @@
 // chain RotatingBody -> ElasticBasis -> ProjectedBody. Units: SI.
 #pragma once
 #include <Eigen/Dense>
+
 #include <cmath>
 #include <memory>
 #include <string>
@@ -21,7 +22,7 @@ namespace bb::test {
 // is the in-plane (chordwise, lag) direction and z the flapwise one.
 struct BeamSpec {
   double length = 1.0, width = 0.05, depth = 0.05;  // [m]; 2D: width = height in the plane, depth = thickness
-  double root_radius = 0.0;                          // [m]
+  double root_radius = 0.0;                         // [m]
   double youngs_modulus = 2.0e11, poisson_ratio = 0.0, density = 7800.0;
   ElementType element = ElementType::q4;
   int nx = 20, ny = 1, nz = 1;  // divisions along x, y (width), z (depth, 3D only)
@@ -67,7 +68,9 @@ inline Model beam_model(const BeamSpec& b) {
     h.element = b.element;
     model.mesh = generate_hex_block(h);
   }
-  model.section = {.youngs_modulus = b.youngs_modulus, .poisson_ratio = b.poisson_ratio, .density = b.density,
+  model.section = {.youngs_modulus = b.youngs_modulus,
+                   .poisson_ratio = b.poisson_ratio,
+                   .density = b.density,
                    .thickness = element_dimension(b.element) == 2 ? b.depth : 0.0};
   model.node_sets["root"] = nodes_at_x(model.mesh, x0);
   model.node_sets["tip"] = nodes_at_x(model.mesh, x1);

@@ -1,17 +1,18 @@
 // The frf analysis on a small plane-stress cantilever (steel, 1.0 x 0.1 m, 24 x 4 Q4, clamped at
 // x = 0): the full mesh by modal superposition against a dense direct solve, Craig-Bampton models
 // against the full mesh, reciprocity, and a reduced model written and read back.
+#include "analysis/frf_analysis.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 #include <numbers>
 
-#include "analysis/frf_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "cases/case_spec.hpp"
-#include "model/build_model.hpp"
 #include "frf/receptance.hpp"
+#include "model/build_model.hpp"
 #include "reduction/reduced_model_io.hpp"
 #include "temp_folder.hpp"
 
@@ -52,9 +53,7 @@ step_hz = 5.0
 
 class FrfAnalysis : public test::TempFolderTest {
  protected:
-  CaseSpec parse(const std::string& analysis) {
-    return parse_case_file(write(std::string(kCase) + analysis));
-  }
+  CaseSpec parse(const std::string& analysis) { return parse_case_file(write(std::string(kCase) + analysis)); }
 };
 
 // Dense direct reference: (K + i w C - w^2 M) x = f with Rayleigh C, at the free DOFs.
@@ -121,7 +120,8 @@ modes = 20
   for (const RomOutcome& rom : o.roms) {
     double worst = 0.0;
     for (Eigen::Index k = 0; k < 4; ++k) {
-      EXPECT_GE(rom.frequencies_hz[k], full[k] * (1 - 1e-9)) << rom.name << " mode " << k + 1 << ": CB bounds from above";
+      EXPECT_GE(rom.frequencies_hz[k], full[k] * (1 - 1e-9))
+          << rom.name << " mode " << k + 1 << ": CB bounds from above";
       worst = std::max(worst, rom.frequencies_hz[k] / full[k] - 1.0);
     }
     EXPECT_LT(worst, previous) << rom.name;
@@ -141,8 +141,14 @@ masters = ["tip", "mid"]
 modes = 4
 method = "direct"
 )";
-  const CaseSpec ab = parse("modal_damping = 0.02\nfull_modes = 6\nforces = [{ dof = \"tip.y\", amplitude = 1.0 }]\nresponses = [\"mid.x\"]\n" + rom);
-  const CaseSpec ba = parse("modal_damping = 0.02\nfull_modes = 6\nforces = [{ dof = \"mid.x\", amplitude = 1.0 }]\nresponses = [\"tip.y\"]\n" + rom);
+  const CaseSpec ab = parse(
+      "modal_damping = 0.02\nfull_modes = 6\nforces = [{ dof = \"tip.y\", amplitude = 1.0 }]\nresponses = "
+      "[\"mid.x\"]\n" +
+      rom);
+  const CaseSpec ba = parse(
+      "modal_damping = 0.02\nfull_modes = 6\nforces = [{ dof = \"mid.x\", amplitude = 1.0 }]\nresponses = "
+      "[\"tip.y\"]\n" +
+      rom);
   const Model model = build_model(ab.model);
   const auto p_ab = prepare_frf(model, std::get<FrfSpec>(ab.analysis));
   const auto p_ba = prepare_frf(model, std::get<FrfSpec>(ba.analysis));

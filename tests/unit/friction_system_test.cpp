@@ -1,12 +1,12 @@
 // The friction system (hbm/friction_system): the contact DOFs are exactly those some a_t or a_n
 // touches, and the Schur condensation onto them plus the recovery of the others reproduces the
 // full solve, for the real operator of the time domain and the complex one of a harmonic.
+#include "hbm/friction_system.hpp"
+
 #include <gtest/gtest.h>
 
 #include <complex>
 #include <vector>
-
-#include "hbm/friction_system.hpp"
 
 namespace bb::hbm {
 namespace {

@@ -3,9 +3,9 @@
 // distorted shapes included), symmetry, rigid translations in the null space, the exact energy of an
 // infinitesimal rotation under a uniform stress, the discrete taut-string spectrum of a bar under
 // uniform tension, and Euler's buckling load of a clamped-free column. Units: SI.
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -82,11 +82,10 @@ std::vector<ElementCase> element_cases() {
   out.push_back({"Hex8", 3, 8, 8, h8, fe::hex8_volume(h8),
                  [h8](const Eigen::VectorXd& u) { return Eigen::MatrixXd(fe::hex8_point_stresses(h8, u, kSolid)); },
                  hex8_k, d3});
-  out.push_back({"Hex8Incompatible", 3, 8, 8, h8, fe::hex8_volume(h8),
-                 [h8](const Eigen::VectorXd& u) {
-                   return Eigen::MatrixXd(fe::hex8_incompatible_point_stresses(h8, u, kSolid));
-                 },
-                 hex8_k, d3});
+  out.push_back(
+      {"Hex8Incompatible", 3, 8, 8, h8, fe::hex8_volume(h8),
+       [h8](const Eigen::VectorXd& u) { return Eigen::MatrixXd(fe::hex8_incompatible_point_stresses(h8, u, kSolid)); },
+       hex8_k, d3});
   fe::Hex20Coords h20 = test::hex20_from_corners(h8);
   h20.row(8) += Eigen::RowVector3d(0.03, -0.02, 0.04);  // one curved edge
   h20.row(17) += Eigen::RowVector3d(-0.02, 0.03, 0.01);
@@ -117,8 +116,10 @@ Eigen::VectorXd engineering_strain(const Eigen::MatrixXd& a) {
 TEST_P(ElementStress, LinearDisplacementFieldGivesTheConstantStressAtEveryPoint) {
   const ElementCase& c = GetParam();
   Eigen::MatrixXd a(c.dim, c.dim);
-  if (c.dim == 2) a << 1.3e-4, -0.7e-4, 2.1e-4, -0.4e-4;
-  else a << 1.3e-4, -0.7e-4, 0.5e-4, 2.1e-4, -0.4e-4, 0.9e-4, -1.1e-4, 0.6e-4, 0.8e-4;
+  if (c.dim == 2)
+    a << 1.3e-4, -0.7e-4, 2.1e-4, -0.4e-4;
+  else
+    a << 1.3e-4, -0.7e-4, 0.5e-4, 2.1e-4, -0.4e-4, 0.9e-4, -1.1e-4, 0.6e-4, 0.8e-4;
   const Eigen::VectorXd u0 = Eigen::VectorXd::LinSpaced(c.dim, 1e-3, 3e-3);
   const Eigen::MatrixXd s = c.stresses(linear_field(c.xyz, a, u0));
   const Eigen::VectorXd expected = c.elasticity * engineering_strain(a);
@@ -128,9 +129,7 @@ TEST_P(ElementStress, LinearDisplacementFieldGivesTheConstantStressAtEveryPoint)
 }
 
 // A uniform stress at every point, Voigt or plane order.
-Eigen::MatrixXd uniform_stress(const ElementCase& c, const Eigen::VectorXd& s) {
-  return s.replicate(1, c.points);
-}
+Eigen::MatrixXd uniform_stress(const ElementCase& c, const Eigen::VectorXd& s) { return s.replicate(1, c.points); }
 
 Eigen::VectorXd some_stress(int dim) {
   if (dim == 2) return Eigen::Vector3d(3.0e6, -1.2e6, 0.8e6);
@@ -164,8 +163,10 @@ TEST_P(ElementStress, InfinitesimalRotationEnergyIsTheTraceFormulaTimesTheVolume
   const Eigen::MatrixXd k = c.geometric(uniform_stress(c, s));
   Eigen::Vector3d w = c.dim == 2 ? Eigen::Vector3d(0, 0, 1e-3) : Eigen::Vector3d(0.4e-3, -0.7e-3, 1.0e-3);
   Eigen::Matrix3d sigma;
-  if (c.dim == 2) sigma << s[0], s[2], 0, s[2], s[1], 0, 0, 0, 0;
-  else sigma << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
+  if (c.dim == 2)
+    sigma << s[0], s[2], 0, s[2], s[1], 0, 0, 0, 0;
+  else
+    sigma << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
   Eigen::VectorXd u(c.dim * c.nodes);
   for (int n = 0; n < c.nodes; ++n) {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();

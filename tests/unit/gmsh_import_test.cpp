@@ -1,6 +1,8 @@
 // Gmsh MSH 4.1 import (mesh/gmsh_import) against the committed fixtures in tests/data/gmsh:
 // counts, volume, orientation, physical groups as node sets, the hex20 node reordering, and
 // malformed files naming their file and line. Units: m.
+#include "mesh/gmsh_import.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,9 +15,8 @@
 #include <vector>
 
 #include "common/errors.hpp"
-#include "mesh/gmsh_import.hpp"
-#include "test_support.hpp"
 #include "hex20_checks.hpp"
+#include "test_support.hpp"
 
 namespace bb {
 namespace {
@@ -27,10 +28,20 @@ std::filesystem::path fixture(const std::string& name) {
 }
 
 constexpr std::array<std::array<int, 4>, 6> kFaceCorners = {{
-    {0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7},
+    {0, 1, 2, 3},
+    {4, 5, 6, 7},
+    {0, 1, 5, 4},
+    {1, 2, 6, 5},
+    {2, 3, 7, 6},
+    {3, 0, 4, 7},
 }};
 constexpr std::array<std::array<int, 4>, 6> kFaceMidEdges = {{
-    {8, 9, 10, 11}, {12, 13, 14, 15}, {8, 17, 12, 16}, {9, 18, 13, 17}, {10, 19, 14, 18}, {11, 16, 15, 19},
+    {8, 9, 10, 11},
+    {12, 13, 14, 15},
+    {8, 17, 12, 16},
+    {9, 18, 13, 17},
+    {10, 19, 14, 18},
+    {11, 16, 15, 19},
 }};
 
 Vec3 node(const Mesh& mesh, int n) { return mesh.coords.row(n).transpose(); }

@@ -2,6 +2,8 @@
 // models written in a temporary case: the stuck and frictionless limits of a friction oscillator
 // against their closed forms, the energy balance at every peak, the in-phase peak of two identical
 // blades coupled by a contact, and a contact naming an unknown DOF. Units: SI.
+#include "analysis/hbm_analysis.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,10 +11,9 @@
 #include <numbers>
 #include <string>
 
-#include "analysis/hbm_analysis.hpp"
 #include "cases/case_spec.hpp"
-#include "model/build_model.hpp"
 #include "common/errors.hpp"
+#include "model/build_model.hpp"
 #include "oscillator_case.hpp"
 #include "pipeline/run_case.hpp"
 #include "temp_folder.hpp"
@@ -24,7 +25,8 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // m = 1 kg, k = 1e6 N/m, zeta = 0.01 (c = 20 N s/m); a Jenkins contact to the ground with
 // kt = 1e6 N/m and constant normal load n0 = 30 N; mu and the force levels are filled in.
-std::string oscillator_case(const std::string& mu, const std::string& levels, const std::string& range = "[130.0, 260.0]") {
+std::string oscillator_case(const std::string& mu, const std::string& levels,
+                            const std::string& range = "[130.0, 260.0]") {
   test::OscillatorCase c;
   c.mu = mu;
   c.levels = levels;
@@ -105,7 +107,10 @@ TEST_F(HbmAnalysis, SmallestLevelIsTheClosedFormStuckOscillator) {
   // every frequency of the sweep, not only the peak
   const HbmLevel& level = o.levels[0];
   for (size_t i = 0; i < level.frequency_hz.size(); i += 50)
-    EXPECT_NEAR(level.amplitude(static_cast<Eigen::Index>(i), 0) / 0.01 / receptance(2.0e6, 1.0, 20.0, level.frequency_hz[i]) - 1, 0.0, 1e-9)
+    EXPECT_NEAR(
+        level.amplitude(static_cast<Eigen::Index>(i), 0) / 0.01 / receptance(2.0e6, 1.0, 20.0, level.frequency_hz[i]) -
+            1,
+        0.0, 1e-9)
         << level.frequency_hz[i] << " Hz";
   for (const contact::ContactState s : peak.solution.contacts.at(0).state) EXPECT_EQ(s, contact::ContactState::stick);
 }
@@ -120,7 +125,9 @@ TEST_F(HbmAnalysis, FrictionlessContactGivesTheFreeLinearOscillatorAtEveryLevel)
     EXPECT_NEAR(level.peaks[0].frequency_hz / hz - 1, 0.0, 5e-6) << level.force << " N";
     EXPECT_NEAR(level.peaks[0].amplitude / level.force / per_n - 1, 0.0, 1e-7) << level.force << " N";
     for (size_t i = 0; i < level.frequency_hz.size(); i += 20)
-      EXPECT_NEAR(level.amplitude(static_cast<Eigen::Index>(i), 0) / level.force / receptance(1.0e6, 1.0, 20.0, level.frequency_hz[i]) - 1,
+      EXPECT_NEAR(level.amplitude(static_cast<Eigen::Index>(i), 0) / level.force /
+                          receptance(1.0e6, 1.0, 20.0, level.frequency_hz[i]) -
+                      1,
                   0.0, 1e-9)
           << level.force << " N, " << level.frequency_hz[i] << " Hz";
     EXPECT_EQ(level.peaks[0].energy.friction, 0.0);
@@ -128,7 +135,8 @@ TEST_F(HbmAnalysis, FrictionlessContactGivesTheFreeLinearOscillatorAtEveryLevel)
 }
 
 TEST_F(HbmAnalysis, EnergyBalancesAtEveryPeakFromStuckToGrossSlip) {
-  for (const std::string& text : {oscillator_case("0.3", "[0.01, 1.0, 3.0, 10.0, 100.0, 10000.0]"), std::string(kBladesCase)}) {
+  for (const std::string& text :
+       {oscillator_case("0.3", "[0.01, 1.0, 3.0, 10.0, 100.0, 10000.0]"), std::string(kBladesCase)}) {
     const HbmOutcome o = run(text);
     const ResultTable& t = o.tables.at("energy_balance");
     const int expected = static_cast<int>(o.levels.size()) * (o.prepared.ip_oop ? 2 : 1);
@@ -140,7 +148,8 @@ TEST_F(HbmAnalysis, EnergyBalancesAtEveryPeakFromStuckToGrossSlip) {
     }
     // levels that slip dissipate in the contact
     bool slipped = false;
-    for (int r = 0; r < t.values.rows(); ++r) slipped |= column(t, "friction_j", r) > 0.01 * column(t, "excitation_j", r);
+    for (int r = 0; r < t.values.rows(); ++r)
+      slipped |= column(t, "friction_j", r) > 0.01 * column(t, "excitation_j", r);
     EXPECT_TRUE(slipped);
   }
 }
@@ -160,8 +169,10 @@ TEST_F(HbmAnalysis, InPhasePeakOfSymmetricBladesIsTheClosedFormAtEveryLevel) {
     EXPECT_NEAR(ip.frequency_hz / ip_hz - 1, 0.0, 5e-6) << level.force << " N";
     EXPECT_NEAR(ip.component / level.force / (0.5 * per_n) - 1, 0.0, 1e-7) << level.force << " N";
     for (Eigen::Index i = 0; i < level.components.rows(); i += 25)
-      EXPECT_NEAR(level.components(i, 0) / level.force / (0.5 * receptance(1.0e6, 1.0, c_ip, level.frequency_hz[static_cast<size_t>(i)])) - 1, 0.0,
-                  1e-9);
+      EXPECT_NEAR(level.components(i, 0) / level.force /
+                          (0.5 * receptance(1.0e6, 1.0, c_ip, level.frequency_hz[static_cast<size_t>(i)])) -
+                      1,
+                  0.0, 1e-9);
   }
   // The OOP peak: stuck at 0.01 N (w^2 = (k + 2 kc + 2 kt) / m), near the free one at 1 kN
   // ((k + 2 kc) / m), each within the peak's shift by the damping (8e-5 stuck).
@@ -223,9 +234,11 @@ TEST_F(HbmSolverFailure, ASweepWithNoSolutionFailsTheRunWithItsReason) {
   c.levels = "[200.0]";
   c.range = "[150.0, 170.0]";
   c.analysis_extra = "max_iterations = 1\n";
-  c.extra = "[[check]]\nname = \"peak\"\nresult = \"peaks\"\nreference_result = \"peaks\"\nkey = \"level\"\n"
-            "compare = { peak_hz = \"peak_hz\" }\nrel_tol = 1e-9\n";
-  const RunOutcome o = run_case(write(test::oscillator_case_text(c)), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  c.extra =
+      "[[check]]\nname = \"peak\"\nresult = \"peaks\"\nreference_result = \"peaks\"\nkey = \"level\"\n"
+      "compare = { peak_hz = \"peak_hz\" }\nrel_tol = 1e-9\n";
+  const RunOutcome o =
+      run_case(write(test::oscillator_case_text(c)), {.out_dir = dir_ / "out", .study = false, .plots = false});
   EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
   EXPECT_NE(o.record.message.find("found no solution"), std::string::npos) << o.record.message;
   EXPECT_EQ(exit_code(o.record.status), exit_solver_failed);

@@ -18,8 +18,8 @@
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
 #include "model/build_model.hpp"
-#include "pipeline/calibrate_case.hpp"
 #include "oscillator_case.hpp"
+#include "pipeline/calibrate_case.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -91,14 +91,14 @@ TEST_P(HbmCalibrationSeeds, FrictionParametersComeBackFromNoisyPeaksWithAnOutlie
   std::ofstream(dir_ / "case.toml") << oscillator_case(5.0e5, 0.8);  // wrong by 3x and 2.3x
   const CalibrationOutcome o = calibrate_case(dir_ / "case.toml");
   for (const CalibrationStart& s : o.starts)
-    std::printf("  start kt %.4g mu %.4g -> kt %.6g mu %.6g, cost %.4g%s\n", s.start[0], s.start[1], s.values[0], s.values[1], s.final_cost,
-                s.converged ? "" : " (not converged)");
+    std::printf("  start kt %.4g mu %.4g -> kt %.6g mu %.6g, cost %.4g%s\n", s.start[0], s.start[1], s.values[0],
+                s.values[1], s.final_cost, s.converged ? "" : " (not converged)");
   std::printf("  %s\n", o.termination.c_str());
   ASSERT_TRUE(o.converged) << o.termination;
   const double truth_values[] = {kt_true, mu_true};
   for (size_t i = 0; i < 2; ++i) {
-    std::printf("  %s: identified %.6g +- %.3g, truth %.6g (%.2f sigma)\n", o.spec.parameters[i].path.c_str(), o.values[i], o.std_devs[i],
-                truth_values[i], std::abs(o.values[i] - truth_values[i]) / o.std_devs[i]);
+    std::printf("  %s: identified %.6g +- %.3g, truth %.6g (%.2f sigma)\n", o.spec.parameters[i].path.c_str(),
+                o.values[i], o.std_devs[i], truth_values[i], std::abs(o.values[i] - truth_values[i]) / o.std_devs[i]);
     ASSERT_TRUE(std::isfinite(o.std_devs[i]));
     EXPECT_LT(std::abs(o.values[i] - truth_values[i]), 2 * o.std_devs[i]);
   }

@@ -20,13 +20,13 @@
 #include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
-#include "model/build_model.hpp"
 #include "common/errors.hpp"
-#include "pipeline/calibrate_case.hpp"
+#include "data_block.hpp"
 #include "identify/fit_points.hpp"
 #include "identify/synthetic_data.hpp"
-#include "data_block.hpp"
+#include "model/build_model.hpp"
 #include "oscillator_case.hpp"
+#include "pipeline/calibrate_case.hpp"
 #include "temp_folder.hpp"
 #include "two_blade_rom_case.hpp"
 
@@ -92,7 +92,8 @@ struct CentralDifferences {
 TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
   const std::vector<std::string> paths = {"analysis.contact.0.kt", "analysis.contact.0.mu", "analysis.contact.0.n0",
                                           "analysis.modal_damping"};
-  const std::string list = R"(sensitivities = ["analysis.contact.0.kt", "analysis.contact.0.mu", "analysis.contact.0.n0", "analysis.modal_damping"])";
+  const std::string list =
+      R"(sensitivities = ["analysis.contact.0.kt", "analysis.contact.0.mu", "analysis.contact.0.n0", "analysis.modal_damping"])";
   const std::filesystem::path file = dir_ / "case.toml";
   const ResultTables analytic = run(toml::parse(oscillator_case("[0.01, 3.0]", list)), file);
   const toml::table plain = toml::parse(oscillator_case("[0.01, 3.0]", ""));
@@ -107,8 +108,9 @@ TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
         // Relative to the column's scale: |z| itself for the amplitude, one degree for the phase.
         const double scale = std::string(q) == "A.x_amp_m" ? value.cwiseAbs().maxCoeff() : 1.0;
         const double error = fd.error(level, q, exact) / scale;
-        std::printf("  %-9s %-14s d/dlog %-22s max |p d/dp| %.3e, max |analytic - FD| %.2e (relative to %s)\n", level, q, path.c_str(),
-                    exact.cwiseAbs().maxCoeff() / scale, error, std::string(q) == "A.x_amp_m" ? "max |z|" : "1 deg");
+        std::printf("  %-9s %-14s d/dlog %-22s max |p d/dp| %.3e, max |analytic - FD| %.2e (relative to %s)\n", level,
+                    q, path.c_str(), exact.cwiseAbs().maxCoeff() / scale, error,
+                    std::string(q) == "A.x_amp_m" ? "max |z|" : "1 deg");
         // The analytic columns are exact; what is left is the differences' own error (measured:
         // <= 1e-8 of max |z| and <= 8e-7 deg). A wrong term would show at 1e-3 of the derivative.
         EXPECT_LT(error, q == std::string("A.x_amp_m") ? 1e-6 : 1e-4) << level << " " << q << " " << path;
@@ -133,7 +135,9 @@ TEST_F(HbmFrfSensitivity, DamperDlogColumnsAgreeWithCentralDifferencesOfWholeRun
   const std::vector<std::string> paths = {"analysis.damper.kt", "analysis.damper.mu", "analysis.modal_damping"};
   const std::filesystem::path file = dir_ / "case.toml";
   const ResultTables analytic =
-      run(toml::parse(damper_case(R"(sensitivities = ["analysis.damper.kt", "analysis.damper.mu", "analysis.modal_damping"])")), file);
+      run(toml::parse(
+              damper_case(R"(sensitivities = ["analysis.damper.kt", "analysis.damper.mu", "analysis.modal_damping"])")),
+          file);
   const toml::table plain = toml::parse(damper_case(""));
   for (const std::string& path : paths) {
     const CentralDifferences fd(plain, path, file);
@@ -156,7 +160,8 @@ TEST_F(HbmFrfSensitivity, DamperDlogColumnsAgreeWithCentralDifferencesOfWholeRun
 
 TEST_F(HbmFrfSensitivity, UnsupportedPathsAreRefusedWithTheirLine) {
   for (const char* bad : {R"(sensitivities = ["analysis.contact.1.kt"])", R"(sensitivities = ["analysis.damper.kt"])",
-                          R"(sensitivities = ["analysis.model.mass"])", R"(sensitivities = ["analysis.contact.0.kt", "analysis.contact.0.kt"])"}) {
+                          R"(sensitivities = ["analysis.model.mass"])",
+                          R"(sensitivities = ["analysis.contact.0.kt", "analysis.contact.0.kt"])"}) {
     const std::filesystem::path file = write(oscillator_case("[1.0]", bad));
     try {
       (void)parse_case_table(read_case_table(file), file);
@@ -167,7 +172,8 @@ TEST_F(HbmFrfSensitivity, UnsupportedPathsAreRefusedWithTheirLine) {
     }
   }
   std::string rayleigh = oscillator_case("[1.0]", R"(sensitivities = ["analysis.modal_damping"])");
-  rayleigh.replace(rayleigh.find("modal_damping = 0.01"), 20, "rayleigh = { frequency_hz = [100.0, 300.0], zeta = [0.01, 0.01] }");
+  rayleigh.replace(rayleigh.find("modal_damping = 0.01"), 20,
+                   "rayleigh = { frequency_hz = [100.0, 300.0], zeta = [0.01, 0.01] }");
   const std::filesystem::path file = write(rayleigh);
   EXPECT_THROW((void)parse_case_table(read_case_table(file), file), InputError);
 }
@@ -176,14 +182,16 @@ TEST_F(HbmFrfSensitivity, FrfPointGradientsInterpolateTheDlogColumnsInSiOverSigm
   write("frequency [Hz],amplitude [mm],phase [deg]\n10.5,2.0,10\n", "frf.csv");
   const CalibrationData d = test::frf_block(dir_ / "frf.csv");
   ResultTables tables;
-  tables.emplace("frf_1", table_from_rows("frf_1", {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg", "A.x_amp_m_dlog_k", "A.x_phase_deg_dlog_k"},
+  tables.emplace("frf_1", table_from_rows("frf_1",
+                                          {"point", "frequency_hz", "A.x_amp_m", "A.x_phase_deg", "A.x_amp_m_dlog_k",
+                                           "A.x_phase_deg_dlog_k"},
                                           {{1, 10.0, 1e-3, 0.0, 2e-3, 30.0}, {2, 11.0, 3e-3, 20.0, 4e-3, 90.0}}));
   const std::vector<FitPoint> p = data_points(d, tables, {"k"});
   ASSERT_EQ(p.size(), 2u);
   ASSERT_EQ(p[0].gradient.size(), 1u);
-  EXPECT_NEAR(p[0].gradient[0], 3e-3 / (0.02 * 2e-3), 1e-9);                       // halfway, over the amplitude's sigma
+  EXPECT_NEAR(p[0].gradient[0], 3e-3 / (0.02 * 2e-3), 1e-9);  // halfway, over the amplitude's sigma
   EXPECT_NEAR(p[1].gradient[0], 60.0 * std::numbers::pi / 180.0 / p[1].sigma, 1e-9);  // degrees -> radians
-  EXPECT_TRUE(data_points(d, tables, {"k", "other"})[0].gradient.empty());           // a parameter without columns: none
+  EXPECT_TRUE(data_points(d, tables, {"k", "other"})[0].gradient.empty());  // a parameter without columns: none
   EXPECT_TRUE(data_points(d, tables)[0].gradient.empty());
 }
 
@@ -211,12 +219,14 @@ std::string write_round_trip_data(const std::filesystem::path& dir, unsigned see
   o.phase_noise = 0.02;  // rad
   o.outliers = 2;
   o.every = 6;
-  o.columns = {{"frequency", "frequency_hz", "Hz"}, {"amplitude", "A.x_amp_m", "um"}, {"phase", "A.x_phase_deg", "deg"}};
+  o.columns = {
+      {"frequency", "frequency_hz", "Hz"}, {"amplitude", "A.x_amp_m", "um"}, {"phase", "A.x_phase_deg", "deg"}};
   std::string blocks;
   for (const char* level : {"0.3", "10"}) {
     o.seed = seed + static_cast<unsigned>(level[0]);  // as FrfRoundTrip
     write_synthetic_data(r.tables.at(std::string("frf_") + level), o, dir / (std::string("frf_") + level + ".csv"));
-    blocks += std::string("[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_") + level + ".csv\"\ntable = \"frf_" + level +
+    blocks += std::string("[[calibration.data]]\nkind = \"frf\"\nfile = \"frf_") + level + ".csv\"\ntable = \"frf_" +
+              level +
               "\"\ncolumns = { frequency = \"frequency_hz\", amplitude = \"A.x_amp_m\", phase = \"A.x_phase_deg\" }\n";
   }
   return blocks;
@@ -249,7 +259,8 @@ loss_scale = 2.0
 max_iterations = 40
 function_tolerance = 1e-6
 derivative_step = 1e-2
-derivatives = ")") + derivatives + "\"\n";
+derivatives = ")") +
+           derivatives + "\"\n";
   };
   CalibrationOutcome out[2];
   const char* modes[] = {"auto", "numeric"};
@@ -258,11 +269,12 @@ derivatives = ")") + derivatives + "\"\n";
     const auto t0 = std::chrono::steady_clock::now();
     out[m] = calibrate_case(dir_ / "case.toml");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("  derivatives = %s: %s; %d evaluations, %.2f s, %s\n", modes[m], out[m].derivatives.c_str(), out[m].residual_evaluations,
-                seconds, out[m].termination.c_str());
+    std::printf("  derivatives = %s: %s; %d evaluations, %.2f s, %s\n", modes[m], out[m].derivatives.c_str(),
+                out[m].residual_evaluations, seconds, out[m].termination.c_str());
     for (size_t i = 0; i < 3; ++i)
-      std::printf("    %s: identified %.6g +- %.3g, truth %.6g (%.2f sigma)\n", out[m].spec.parameters[i].path.c_str(), out[m].values[i],
-                  out[m].std_devs[i], truth[i], std::abs(out[m].values[i] - truth[i]) / out[m].std_devs[i]);
+      std::printf("    %s: identified %.6g +- %.3g, truth %.6g (%.2f sigma)\n", out[m].spec.parameters[i].path.c_str(),
+                  out[m].values[i], out[m].std_devs[i], truth[i],
+                  std::abs(out[m].values[i] - truth[i]) / out[m].std_devs[i]);
   }
   EXPECT_EQ(out[0].derivatives.rfind("analytic", 0), 0u) << out[0].derivatives;
   EXPECT_EQ(out[1].derivatives.rfind("central differences", 0), 0u) << out[1].derivatives;

@@ -19,15 +19,18 @@ namespace bb::hbm {
 namespace {
 
 using contact::ContactState;
-using test::FrictionOscillator;
 using test::first_harmonic_amplitude;
+using test::FrictionOscillator;
 
 constexpr double kPi = std::numbers::pi;
 
 // m = 1 kg, k = 1e6 N/m (1000 rad/s free of the contact), 1 % viscous damping; the stuck contact
 // adds kt = 5e5 N/m (1225 rad/s), and lets go at mu N0 = 10 N, i.e. after 2e-5 m.
 FrictionOscillator oscillator(double force) {
-  return {.mass = 1.0, .damping = 20.0, .stiffness = 1.0e6, .force = force,
+  return {.mass = 1.0,
+          .damping = 20.0,
+          .stiffness = 1.0e6,
+          .force = force,
           .contact = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0}};
 }
 
@@ -51,8 +54,10 @@ Eigen::Vector2d time_integration_first_harmonic(const FrictionOscillator& o, dou
     const double t = static_cast<double>(n) * dt;
     if (n >= first_averaged) harmonic += x * Eigen::Vector2d(std::cos(omega * t), std::sin(omega * t));
     const double k1x = v, k1v = acceleration(t, x, v, slider);
-    const double k2x = v + 0.5 * dt * k1v, k2v = acceleration(t + 0.5 * dt, x + 0.5 * dt * k1x, v + 0.5 * dt * k1v, slider);
-    const double k3x = v + 0.5 * dt * k2v, k3v = acceleration(t + 0.5 * dt, x + 0.5 * dt * k2x, v + 0.5 * dt * k2v, slider);
+    const double k2x = v + 0.5 * dt * k1v,
+                 k2v = acceleration(t + 0.5 * dt, x + 0.5 * dt * k1x, v + 0.5 * dt * k1v, slider);
+    const double k3x = v + 0.5 * dt * k2v,
+                 k3v = acceleration(t + 0.5 * dt, x + 0.5 * dt * k2x, v + 0.5 * dt * k2v, slider);
     const double k4x = v + dt * k3v, k4v = acceleration(t + dt, x + dt * k3x, v + dt * k3v, slider);
     x += dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
     v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
@@ -103,9 +108,11 @@ TEST(HbmFrictionOscillator, ConvergedHarmonicsBalanceInputAndDissipatedEnergy) {
   ASSERT_TRUE(s.converged) << s.failure;
   Eigen::VectorXd excitation = Eigen::VectorXd::Zero(s.x.size());
   excitation[1] = o.force;
-  const double input = contact::cycle_work(excitation, s.x), friction = contact::cycle_work(s.contacts[0].tangential, s.x);
+  const double input = contact::cycle_work(excitation, s.x),
+               friction = contact::cycle_work(s.contacts[0].tangential, s.x);
   double viscous = 0.0;
-  for (int h = 1; h <= 5; ++h) viscous += kPi * o.damping * omega * h * h * (s.x[2 * h - 1] * s.x[2 * h - 1] + s.x[2 * h] * s.x[2 * h]);
+  for (int h = 1; h <= 5; ++h)
+    viscous += kPi * o.damping * omega * h * h * (s.x[2 * h - 1] * s.x[2 * h - 1] + s.x[2 * h] * s.x[2 * h]);
   EXPECT_GT(friction, 0.0);
   EXPECT_GT(input, 0.0);
   EXPECT_NEAR(input, viscous + friction, 1e-8 * input);

@@ -119,7 +119,8 @@ TEST(HbmMultiDof, OpeningContactLiftsOffWithoutNaN) {
     ASSERT_TRUE(s.converged) << s.failure;
     ASSERT_TRUE(s.x.allFinite());
     const auto& n = s.contacts[0].n;
-    const auto open = std::count(s.contacts[0].state.begin(), s.contacts[0].state.end(), contact::ContactState::lift_off);
+    const auto open =
+        std::count(s.contacts[0].state.begin(), s.contacts[0].state.end(), contact::ContactState::lift_off);
     std::printf("  lift-off, omega %6.0f: %ld of %ld samples open, max N %.3g N\n", omega, static_cast<long>(open),
                 static_cast<long>(n.size()), n.maxCoeff());
     EXPECT_GT(open, 0);
@@ -138,7 +139,8 @@ HbmModel blade_with_damper(double force, double mu) {
   m.stiffness.topLeftCorner(3, 3) << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = (VectorXd(5) << 1.0, 0.4, 0.3, 0.05, 0.05).finished().asDiagonal();
   m.damping = MatrixXd::Zero(5, 5);
-  m.damping.topLeftCorner(3, 3) = modal_damping_matrix(m.stiffness.topLeftCorner(3, 3), m.mass.topLeftCorner(3, 3), 0.005);
+  m.damping.topLeftCorner(3, 3) =
+      modal_damping_matrix(m.stiffness.topLeftCorner(3, 3), m.mass.topLeftCorner(3, 3), 0.005);
   const contact::JenkinsParameters law{.kn = 2.0e6, .kt = 1.0e6, .mu = mu, .n0 = 0.0};
   m.contacts.push_back({law, unit_row(5, 1) - unit_row(5, 3), unit_row(5, 4) - unit_row(5, 2)});
   m.contacts.push_back({law, unit_row(5, 3), unit_row(5, 4)});
@@ -154,8 +156,8 @@ std::pair<double, double> energy_balance(const HarmonicBalance& system, const Hb
                                          double force) {
   const CycleEnergy e = cycle_energy(system, s);
   const double error = std::abs(e.excitation - (e.viscous + e.friction + e.normal)) / e.excitation;
-  std::printf("  %s F %5.0f N, omega %5.0f: W_exc %.4e J, viscous %.3e, friction %.3e, normal %.1e, error %.1e\n", label,
-              force, s.omega, e.excitation, e.viscous, e.friction, e.normal, error);
+  std::printf("  %s F %5.0f N, omega %5.0f: W_exc %.4e J, viscous %.3e, friction %.3e, normal %.1e, error %.1e\n",
+              label, force, s.omega, e.excitation, e.viscous, e.friction, e.normal, error);
   EXPECT_GT(e.excitation, 0.0);
   EXPECT_GE(e.friction, -1e-12 * e.excitation);
   return {error, e.friction / e.excitation};
@@ -195,8 +197,9 @@ TEST(HbmMultiDof, CycleEnergyOfExcitationEqualsViscousPlusContactDissipation) {
       EXPECT_LT(error, 1e-6);
     }
   }
-  std::printf("  worst relative energy-balance error %.2e, largest friction share %.2f, damper points converged %d/12\n",
-              worst, most_friction, damper_converged);
+  std::printf(
+      "  worst relative energy-balance error %.2e, largest friction share %.2f, damper points converged %d/12\n", worst,
+      most_friction, damper_converged);
   EXPECT_GT(most_friction, 0.2) << "the cases must exercise friction dissipation";
   EXPECT_GE(damper_converged, 6);
 }
@@ -207,7 +210,10 @@ TEST(HbmMultiDof, SingleDofAgreesWithTheFrictionOscillator) {
   // [[k - m h^2 w^2, c h w], [-c h w, k - m h^2 w^2]] for harmonic h, T the AFT of the contact at
   // v = 0. The Newton correction of R1 at the solution, -(A + dT/du)^-1 R1, bounds (to first order)
   // the distance to that balance's exact solution.
-  const test::FrictionOscillator o{.mass = 1.0, .damping = 20.0, .stiffness = 1.0e6, .force = 30.0,
+  const test::FrictionOscillator o{.mass = 1.0,
+                                   .damping = 20.0,
+                                   .stiffness = 1.0e6,
+                                   .force = 30.0,
                                    .contact = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0}};
   const HarmonicBalance system(o.model(), {.harmonics = 5, .tolerance = 1e-12});
   const Eigen::Index m = contact::harmonic_size(5);
@@ -264,7 +270,8 @@ TEST(HbmMultiDof, StickSlipPeakConvergesInHarmonics) {
     peaks.push_back(peak_in_time(q.row(1).transpose()));
     std::printf("  H = %d at omega %.0f rad/s: peak |q1| = %.8e m\n", harmonics, peak_omega, peaks.back());
   }
-  const double d1 = std::abs(peaks[1] - peaks[0]), d2 = std::abs(peaks[2] - peaks[1]), d3 = std::abs(peaks[3] - peaks[2]);
+  const double d1 = std::abs(peaks[1] - peaks[0]), d2 = std::abs(peaks[2] - peaks[1]),
+               d3 = std::abs(peaks[3] - peaks[2]);
   std::printf("  differences: |3-1| %.2e, |5-3| %.2e, |7-5| %.2e\n", d1, d2, d3);
   EXPECT_GT(d1, d2);
   EXPECT_GT(d2, d3);
@@ -278,7 +285,8 @@ HbmModel impact_pair() {
   m.mass = MatrixXd::Identity(2, 2);
   m.stiffness = 1.0e6 * MatrixXd::Identity(2, 2);
   m.damping = 20.0 * MatrixXd::Identity(2, 2);
-  m.contacts.push_back({{.kn = 1.0e6, .kt = 1.0, .mu = 0.0, .n0 = 0.0}, Eigen::RowVectorXd::Zero(2),
+  m.contacts.push_back({{.kn = 1.0e6, .kt = 1.0, .mu = 0.0, .n0 = 0.0},
+                        Eigen::RowVectorXd::Zero(2),
                         (Eigen::RowVectorXd(2) << 1.0, -1.0).finished()});
   m.static_load = Eigen::Vector2d(-10.0, 10.0);
   m.harmonic_load = Eigen::Vector2cd(2.0, 0.0);
@@ -307,17 +315,19 @@ TEST(HbmContinuation, ImpactResonanceIsFollowedThroughItsFolds) {
     if (i > 0 && (p.tangent_omega > 0.0) != (r.points[i - 1].tangent_omega > 0.0))
       std::printf("  turning point near omega %.2f rad/s, |q0| %.3e m\n", p.omega, std::hypot(p.x[2], p.x[4]));
     if (i > 0) {
-      // Continuity: consecutive points are no further apart (scaled) than the step that joined them, plus the corrector.
+      // Continuity: consecutive points are no further apart (scaled) than the step that joined them, plus the
+      // corrector.
       const ContinuationPoint& q = r.points[i - 1];
       const double distance = std::hypot((p.x - q.x).norm() / r.amplitude_scale, (p.omega - q.omega) / 800.0);
       max_step = std::max(max_step, distance / p.step);
       EXPECT_LT(distance, 3.0 * p.step);
     }
   }
-  std::printf("  continuation: %zu points, %d turning points, %d corrector iterations, %d rejected steps, %d jumps, %.2f s, "
-              "max |q0| %.3e m, max distance/step %.2f\n",
-              r.points.size(), r.turning_points, r.corrector_iterations, r.rejected_steps, r.jumps, seconds, max_amplitude,
-              max_step);
+  std::printf(
+      "  continuation: %zu points, %d turning points, %d corrector iterations, %d rejected steps, %d jumps, %.2f s, "
+      "max |q0| %.3e m, max distance/step %.2f\n",
+      r.points.size(), r.turning_points, r.corrector_iterations, r.rejected_steps, r.jumps, seconds, max_amplitude,
+      max_step);
   EXPECT_EQ(calls, static_cast<int>(r.points.size()));
   EXPECT_GE(r.turning_points, 2);
   // Past the folds the path has returned to the small-amplitude linear branch.
@@ -326,7 +336,8 @@ TEST(HbmContinuation, ImpactResonanceIsFollowedThroughItsFolds) {
 
 TEST(HbmContinuation, StoppedPathReportsFrequencyAndResidualWithoutNaN) {
   const HarmonicBalance system(impact_pair(), {.harmonics = 3});
-  const ContinuationResult r = continue_in_frequency(system, {.omega_start = 800.0, .omega_end = 1600.0, .max_points = 5, .progress = {}});
+  const ContinuationResult r =
+      continue_in_frequency(system, {.omega_start = 800.0, .omega_end = 1600.0, .max_points = 5, .progress = {}});
   EXPECT_FALSE(r.converged);
   EXPECT_EQ(r.points.size(), 5u);
   EXPECT_NE(r.failure.find("omega ="), std::string::npos) << r.failure;
@@ -349,11 +360,13 @@ TEST(HbmMultiDof, ExtremeParametersConvergeOrReportFailureWithoutNaN) {
             EXPECT_TRUE(std::isfinite(s.residual));
             EXPECT_LE(s.iterations, 3 * (system.options().max_iterations + 1));
             worst_iterations = std::max(worst_iterations, s.iterations);
-            if (s.converged) ++converged;
+            if (s.converged)
+              ++converged;
             else {
               ++failed;
               EXPECT_FALSE(s.failure.empty());
-              std::printf("  kn %.0e kt %.0e mu %.0f F %.2g omega %.0f: %s\n", kn, kt, mu, force, omega, s.failure.c_str());
+              std::printf("  kn %.0e kt %.0e mu %.0f F %.2g omega %.0f: %s\n", kn, kt, mu, force, omega,
+                          s.failure.c_str());
             }
           }
         }

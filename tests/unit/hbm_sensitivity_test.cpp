@@ -37,8 +37,8 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-constexpr double kStep = 1e-6;          // relative central-difference step
-constexpr double kSolveBound = 1e-5;    // see the header
+constexpr double kStep = 1e-6;        // relative central-difference step
+constexpr double kSolveBound = 1e-5;  // see the header
 constexpr double kAftBound = 1e-7;
 constexpr double kSolverTolerance = 1e-12;
 
@@ -77,9 +77,12 @@ StateCount count_states(const HbmSolution& s) {
   StateCount c;
   for (const contact::AftResult& r : s.contacts)
     for (const contact::ContactState state : r.state) {
-      if (state == contact::ContactState::stick) ++c.stick;
-      else if (state == contact::ContactState::lift_off) ++c.open;
-      else ++c.slip;
+      if (state == contact::ContactState::stick)
+        ++c.stick;
+      else if (state == contact::ContactState::lift_off)
+        ++c.open;
+      else
+        ++c.slip;
     }
   return c;
 }
@@ -94,10 +97,14 @@ enum class Regime { stuck, stick_slip, gross_slip, lift_off };
 
 const char* regime_name(Regime r) {
   switch (r) {
-    case Regime::stuck: return "stuck";
-    case Regime::stick_slip: return "stick-slip";
-    case Regime::gross_slip: return "gross slip";
-    case Regime::lift_off: return "lift-off";
+    case Regime::stuck:
+      return "stuck";
+    case Regime::stick_slip:
+      return "stick-slip";
+    case Regime::gross_slip:
+      return "gross slip";
+    case Regime::lift_off:
+      return "lift-off";
   }
   return "?";
 }
@@ -108,7 +115,9 @@ void expect_regime(const HbmSolution& s, Regime regime) {
   const StateCount c = count_states(s);
   const double total = c.stick + c.slip + c.open, slip = c.slip / total;
   switch (regime) {
-    case Regime::stuck: EXPECT_EQ(c.stick, total); break;
+    case Regime::stuck:
+      EXPECT_EQ(c.stick, total);
+      break;
     case Regime::stick_slip:
       EXPECT_EQ(c.open, 0);
       EXPECT_GT(slip, 0.1);
@@ -210,8 +219,8 @@ TEST(HbmSensitivity, BladeOnGroundMatchesCentralDifferencesInEveryRegime) {
   compare(models::blade_on_ground(law, 2.0), 3, omega, Regime::stuck, "blade");
   compare(models::blade_on_ground(law, 30.0), 3, omega, Regime::stick_slip, "blade");
   compare(models::blade_on_ground(law, 150.0), 3, omega, Regime::gross_slip, "blade");
-  compare(models::blade_on_ground({.kn = 5.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 5.0}, 80.0), 5, 1100.0,
-          Regime::lift_off, "blade");
+  compare(models::blade_on_ground({.kn = 5.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 5.0}, 80.0), 5, 1100.0, Regime::lift_off,
+          "blade");
 }
 
 TEST(HbmSensitivity, PlanarDamperMatchesCentralDifferences) {
@@ -220,7 +229,8 @@ TEST(HbmSensitivity, PlanarDamperMatchesCentralDifferences) {
   // first period would slip into the seat and leave a sample exactly on the Coulomb limit, a kink
   // whose state flips under any perturbation.
   const contact::JenkinsParameters law{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 0.0};
-  for (const auto& [force, below, regime] : {std::tuple{2.0, 0.98, Regime::stuck}, std::tuple{200.0, 0.9, Regime::stick_slip}}) {
+  for (const auto& [force, below, regime] :
+       {std::tuple{2.0, 0.98, Regime::stuck}, std::tuple{200.0, 0.9, Regime::stick_slip}}) {
     HbmModel model = models::planar_blades_with_damper(law, force, 1e-2);
     MatrixXd k = model.stiffness;
     for (const ContactElement& c : model.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
@@ -250,8 +260,8 @@ TEST(HbmSensitivity, FrictionlessContactHasExactlyZeroTangentialStiffnessSensiti
   const HarmonicBalance system(model, tight(3));
   const HbmSolution s = solve_at_frequency(system, 1000.0);
   ASSERT_TRUE(s.converged) << s.failure;
-  const MatrixXd dx = solution_sensitivity(system, s, {law_derivative(model, contact::law_kt),
-                                                       law_derivative(model, contact::law_kn)});
+  const MatrixXd dx =
+      solution_sensitivity(system, s, {law_derivative(model, contact::law_kt), law_derivative(model, contact::law_kn)});
   EXPECT_EQ(dx.col(0).norm(), 0.0);
   EXPECT_GT(dx.col(1).norm(), 0.0);
 }
@@ -316,7 +326,8 @@ TEST(AftLawDerivatives, MatchCentralDifferencesOfTheMarch) {
   contact::AftOptions with = plain;
   with.law_derivatives = true;
   for (const AftCase& c : cases) {
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(contact::harmonic_size(3)), v = Eigen::VectorXd::Zero(contact::harmonic_size(3));
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(contact::harmonic_size(3)),
+                    v = Eigen::VectorXd::Zero(contact::harmonic_size(3));
     u[1] = c.u1, u[5] = 0.1 * c.u1, v[0] = c.v0, v[2] = c.v1;
     const contact::AftResult r = contact::aft_jenkins(c.law, u, v, with);
     ASSERT_EQ(r.dtangential_dlaw.rows(), 7);
@@ -342,7 +353,8 @@ TEST(AftLawDerivatives, MatchCentralDifferencesOfTheMarch) {
       const Eigen::VectorXd fd_n = (side[0].normal - side[1].normal) / (2.0 * kStep * value);
       // Compared per unit relative change of the parameter, against the force scale mu N0 + kn |v|.
       const double scale = c.law.mu * c.law.n0 + c.law.kn * v.norm();
-      const double e_t = (r.dtangential_dlaw.col(p) - fd_t).norm() * value / std::max(fd_t.norm() * value, 1e-6 * scale);
+      const double e_t =
+          (r.dtangential_dlaw.col(p) - fd_t).norm() * value / std::max(fd_t.norm() * value, 1e-6 * scale);
       const double e_n = (r.dnormal_dlaw.col(p) - fd_n).norm() * value / std::max(fd_n.norm() * value, 1e-6 * scale);
       std::printf(" %s %.1e/%.1e", kNames[static_cast<size_t>(p)], e_t, e_n);
       EXPECT_LT(e_t, kAftBound) << c.name << ", dT/d" << kNames[static_cast<size_t>(p)];

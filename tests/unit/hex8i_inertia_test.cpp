@@ -12,9 +12,9 @@
 // and compare both with the converged bending frequencies (the closed form): neither is wrong,
 // both converge at second order to the same limit; C3D8I's bubble inertia makes the higher bending
 // modes of a coarse mesh more accurate, hex8i's first mode is the closer one.
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -84,7 +84,8 @@ ExtendedElement extended_hex8i(const fe::Hex8Coords& xyz, const fe::SolidMateria
 // The slender cantilever of the CalculiX reference: 1 m x 0.01 m x 0.01 m, nx x 1 x 1, clamped at
 // x = 0.
 test::HexGrid cantilever_grid(int nx) {
-  return test::make_hex_grid(nx, 1, 1, 8, [&](int i, int j, int k) { return Eigen::Vector3d(0.5 * i / nx, 0.005 * j, 0.005 * k); });
+  return test::make_hex_grid(nx, 1, 1, 8,
+                             [&](int i, int j, int k) { return Eigen::Vector3d(0.5 * i / nx, 0.005 * j, 0.005 * k); });
 }
 
 enum class BubbleInertia { none, full };
@@ -104,7 +105,8 @@ Eigen::VectorXd frequencies(int nx, BubbleInertia inertia) {
       for (int c = 0; c < 33; ++c) {
         k(dof[static_cast<size_t>(r)], dof[static_cast<size_t>(c)]) += el.stiffness(r, c);
         const bool nodal = r < 24 && c < 24;
-        if (nodal || inertia == BubbleInertia::full) m(dof[static_cast<size_t>(r)], dof[static_cast<size_t>(c)]) += el.mass(r, c);
+        if (nodal || inertia == BubbleInertia::full)
+          m(dof[static_cast<size_t>(r)], dof[static_cast<size_t>(c)]) += el.mass(r, c);
       }
   }
   std::vector<int> free;
@@ -122,7 +124,8 @@ Eigen::VectorXd frequencies(int nx, BubbleInertia inertia) {
   const Eigen::LLT<Eigen::MatrixXd> llt(kf);
   const Eigen::MatrixXd l_inv_m = llt.matrixL().solve(mf);
   const Eigen::MatrixXd c = llt.matrixL().solve(l_inv_m.transpose());
-  const Eigen::VectorXd mu = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (c + c.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::VectorXd mu =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (c + c.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
   Eigen::VectorXd lambda(6);
   for (Eigen::Index i = 0; i < 6; ++i) lambda[i] = 1.0 / mu[mu.size() - 1 - i];  // the largest mu are the lowest modes
   return lambda.head(6).array().sqrt() / (2 * std::numbers::pi);
@@ -134,7 +137,8 @@ TEST(Hex8iInertia, CondensingTheIncompatibleModesGivesTheHex8iStiffness) {
   const ExtendedElement e = extended_hex8i(xyz, {2.1e11, 0.3, 7850.0});
   const Eigen::Matrix<double, 24, 24> condensed =
       e.stiffness.topLeftCorner<24, 24>() -
-      e.stiffness.topRightCorner<24, 9>() * e.stiffness.bottomRightCorner<9, 9>().ldlt().solve(e.stiffness.bottomLeftCorner<9, 24>());
+      e.stiffness.topRightCorner<24, 9>() *
+          e.stiffness.bottomRightCorner<9, 9>().ldlt().solve(e.stiffness.bottomLeftCorner<9, 24>());
   const fe::Matrix24 hex8i = fe::hex8_incompatible_stiffness(xyz, {2.1e11, 0.3, 7850.0});
   EXPECT_LT((condensed - hex8i).norm(), 1e-10 * hex8i.norm());
   // The nodal block of the mass is hex8's consistent mass, which hex8i carries alone.
@@ -157,13 +161,15 @@ TEST(Hex8iInertia, MasslessIncompatibleModesAreBladebenchsHex8i) {
   const ModalResult bladebench = solve_modal(model, o);
   const Eigen::VectorXd massless = frequencies(10, BubbleInertia::none);
   // To the Lanczos run's convergence (its default tolerance), measured 1.4e-7.
-  for (Eigen::Index i = 0; i < 6; ++i) EXPECT_NEAR(massless[i] / bladebench.frequencies_hz[i], 1.0, 1e-6) << "mode " << i + 1;
+  for (Eigen::Index i = 0; i < 6; ++i)
+    EXPECT_NEAR(massless[i] / bladebench.frequencies_hz[i], 1.0, 1e-6) << "mode " << i + 1;
 }
 
 // With inertia on the amplitudes the same kernel gives CalculiX's C3D8I frequencies to the seven
 // digits its .dat prints (5e-7 relative): the difference between the two programs is that inertia.
 TEST(Hex8iInertia, IncompatibleModesWithInertiaReproduceCalculixC3D8I) {
-  const std::filesystem::path ref = std::filesystem::path(BB_SOURCE_DIR) / "references" / "verification" / "calculix_c3d8i_slender_cantilever.csv";
+  const std::filesystem::path ref =
+      std::filesystem::path(BB_SOURCE_DIR) / "references" / "verification" / "calculix_c3d8i_slender_cantilever.csv";
   for (auto [nx, column] : {std::pair{10, "nx10_hz"}, std::pair{20, "nx20_hz"}}) {
     const ReferenceColumn ccx = read_reference_column(ref, "mode", column);
     const Eigen::VectorXd with_inertia = frequencies(nx, BubbleInertia::full);
@@ -203,7 +209,8 @@ TEST(Hex8iInertia, BothFormulationsConvergeAtSecondOrderToTheSameBendingFrequenc
     EXPECT_NEAR(limit_massless / limit_inertia, 1.0, 2e-4) << "the same limit, mode " << mode + 1;
   }
   // Euler-Bernoulli for the first mode (shear and rotary inertia lower it by 1e-4 at L / h = 100).
-  const double eb = std::pow(1.87510407, 2) / (2 * std::numbers::pi) * std::sqrt(kSteel.youngs_modulus * 0.01 * 0.01 / 12 / kSteel.density);
+  const double eb = std::pow(1.87510407, 2) / (2 * std::numbers::pi) *
+                    std::sqrt(kSteel.youngs_modulus * 0.01 * 0.01 / 12 / kSteel.density);
   EXPECT_NEAR(massless[2][0] / eb, 1.0, 5e-4);
   EXPECT_NEAR(inertia[2][0] / eb, 1.0, 5e-4);
 }

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "hex20_checks.hpp"
 #include "mesh/hex_block.hpp"
 #include "test_support.hpp"
-#include "hex20_checks.hpp"
 
 namespace bb {
 namespace {
@@ -23,10 +23,20 @@ using Vec3 = Eigen::Vector3d;
 
 // Faces of a hex by corners; for hex20 also the mid-edge nodes on each face's edges.
 constexpr std::array<std::array<int, 4>, 6> kFaceCorners = {{
-    {0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7},
+    {0, 1, 2, 3},
+    {4, 5, 6, 7},
+    {0, 1, 5, 4},
+    {1, 2, 6, 5},
+    {2, 3, 7, 6},
+    {3, 0, 4, 7},
 }};
 constexpr std::array<std::array<int, 4>, 6> kFaceMidEdges = {{
-    {8, 9, 10, 11}, {12, 13, 14, 15}, {8, 17, 12, 16}, {9, 18, 13, 17}, {10, 19, 14, 18}, {11, 16, 15, 19},
+    {8, 9, 10, 11},
+    {12, 13, 14, 15},
+    {8, 17, 12, 16},
+    {9, 18, 13, 17},
+    {10, 19, 14, 18},
+    {11, 16, 15, 19},
 }};
 
 HexBlockSpec box(Vec3 origin, Vec3 size, int nx, int ny, int nz, ElementType type = ElementType::hex8) {
@@ -202,7 +212,8 @@ INSTANTIATE_TEST_SUITE_P(HexBlock, HexBlockTypes,
 
 TEST(HexBlockMesh, Hex20MidEdgeNodesSitAtTheMidpointsOfTheirEdges) {
   // The trilinear map is linear along each parameter line, so this holds in a distorted block too.
-  for (const HexBlockSpec& spec : {parallelepiped(3, 2, 2, ElementType::hex20), distorted(3, 3, 2, ElementType::hex20)}) {
+  for (const HexBlockSpec& spec :
+       {parallelepiped(3, 2, 2, ElementType::hex20), distorted(3, 3, 2, ElementType::hex20)}) {
     const Mesh m = generate_hex_block(spec);
     ASSERT_EQ(m.blocks[0].type, ElementType::hex20);
     EXPECT_TRUE(test::hex20_mid_edge_nodes_at_midpoints(m));
@@ -214,7 +225,8 @@ TEST(HexBlockMesh, NodesLieOnTheTrilinearMapOfTheCorners) {
   const Mesh m = generate_hex_block(spec);
   // Node order: x fastest, then y, then z, so the block corners are these nodes.
   const std::array<int, 8> corner_nodes = {0, 4, 14, 10, 45, 49, 59, 55};
-  for (size_t a = 0; a < 8; ++a) EXPECT_LE((node(m, corner_nodes[a]) - spec.corners[a]).norm(), 1e-14) << "corner " << a + 1;
+  for (size_t a = 0; a < 8; ++a)
+    EXPECT_LE((node(m, corner_nodes[a]) - spec.corners[a]).norm(), 1e-14) << "corner " << a + 1;
   // Evenly spaced along the straight block edge 1 -> 2.
   for (int i = 0; i <= 4; ++i)
     EXPECT_LE((node(m, i) - (spec.corners[0] + (spec.corners[1] - spec.corners[0]) * (i / 4.0))).norm(), 1e-14);
@@ -348,14 +360,16 @@ TEST(MergeMeshes, ElementsAreGroupedIntoOneBlockPerType) {
 
 TEST(MergeMeshes, MismatchedDimensionsOrCollapsingToleranceThrow) {
   const Mesh hex = generate_hex_block(box(Vec3(0, 0, 0), Vec3(1, 1, 1), 2, 2, 2));
-  const Mesh quad = test::make_mesh({{1, {0, 0}}, {2, {1, 0}}, {3, {1, 1}}, {4, {0, 1}}}, {{ElementType::q4, {{1, 2, 3, 4}}}});
+  const Mesh quad =
+      test::make_mesh({{1, {0, 0}}, {2, {1, 0}}, {3, {1, 1}}, {4, {0, 1}}}, {{ElementType::q4, {{1, 2, 3, 4}}}});
   EXPECT_THROW(merge_meshes({hex, quad}, 1e-9), std::invalid_argument);
   EXPECT_THROW(merge_meshes({}, 1e-9), std::invalid_argument);
   EXPECT_THROW(merge_meshes({hex}, -1.0), std::invalid_argument);
   // Elements are 0.5 m wide: a 0.6 m tolerance would collapse them.
   EXPECT_THROW(merge_meshes({hex}, 0.6), std::invalid_argument);
   // 2D meshes merge too.
-  const Mesh right = test::make_mesh({{1, {1, 0}}, {2, {2, 0}}, {3, {2, 1}}, {4, {1, 1}}}, {{ElementType::q4, {{1, 2, 3, 4}}}});
+  const Mesh right =
+      test::make_mesh({{1, {1, 0}}, {2, {2, 0}}, {3, {2, 1}}, {4, {1, 1}}}, {{ElementType::q4, {{1, 2, 3, 4}}}});
   const Mesh plane = merge_meshes({quad, right}, 1e-9);
   EXPECT_EQ(plane.dim, 2);
   EXPECT_EQ(plane.n_nodes(), 6);
@@ -364,7 +378,8 @@ TEST(MergeMeshes, MismatchedDimensionsOrCollapsingToleranceThrow) {
 TEST(MergeMeshes, StackedBlocksMergeLikeOneTallBlock) {
   // Four 12 x 12 x 12 hex20 blocks, 33k nodes: also a smoke test of the hashing at some size.
   std::vector<Mesh> parts;
-  for (int k = 0; k < 4; ++k) parts.push_back(generate_hex_block(box(Vec3(0, 0, k), Vec3(1, 1, 1), 12, 12, 12, ElementType::hex20)));
+  for (int k = 0; k < 4; ++k)
+    parts.push_back(generate_hex_block(box(Vec3(0, 0, k), Vec3(1, 1, 1), 12, 12, 12, ElementType::hex20)));
   const Mesh m = merge_meshes(parts, 1e-9);
   EXPECT_EQ(m.n_nodes(), hex20_node_count(12, 12, 48));
 }

@@ -32,13 +32,15 @@ Graph folder_graph() {
     std::string line;
     std::smatch m;
     while (std::getline(in, line))
-      if (std::regex_search(line, m, include) && m[1] != from) g[from].emplace(m[1], fs::relative(entry.path(), root).string());
+      if (std::regex_search(line, m, include) && m[1] != from)
+        g[from].emplace(m[1], fs::relative(entry.path(), root).string());
   }
   return g;
 }
 
 // A cycle through `node`, as "a -> b -> a", or empty.
-std::string find_cycle(const Graph& g, const std::string& node, std::vector<std::string>& path, std::set<std::string>& done) {
+std::string find_cycle(const Graph& g, const std::string& node, std::vector<std::string>& path,
+                       std::set<std::string>& done) {
   if (std::find(path.begin(), path.end(), node) != path.end()) {
     std::string cycle;
     for (auto it = std::find(path.begin(), path.end(), node); it != path.end(); ++it) cycle += *it + " -> ";
@@ -48,7 +50,8 @@ std::string find_cycle(const Graph& g, const std::string& node, std::vector<std:
   path.push_back(node);
   if (const auto it = g.find(node); it != g.end())
     for (const auto& [next, file] : it->second)
-      if (std::string c = find_cycle(g, next, path, done); !c.empty()) return c + " (" + node + " -> " + next + " in " + file + ")";
+      if (std::string c = find_cycle(g, next, path, done); !c.empty())
+        return c + " (" + node + " -> " + next + " in " + file + ")";
   path.pop_back();
   done.insert(node);
   return {};
@@ -68,7 +71,8 @@ TEST(Architecture, FolderIncludesFormNoCycle) {
 TEST(Architecture, OnlyThePipelineAndTheCommandLineUseTheCaseFileLayer) {
   for (const auto& [folder, edges] : folder_graph())
     if (folder != "pipeline" && folder != "cli" && edges.count("cases"))
-      ADD_FAILURE() << folder << "/ includes cases/ (" << edges.at("cases") << "): move the spec it needs next to its consumer";
+      ADD_FAILURE() << folder << "/ includes cases/ (" << edges.at("cases")
+                    << "): move the spec it needs next to its consumer";
 }
 
 }  // namespace

@@ -1,14 +1,14 @@
 // Jenkins point contact (contact/jenkins_contact): the states and transitions of thesis Table X,
 // eqs 3.28-3.29, lift-off and re-stick, the Coulomb bound, frictionless, very stiff and unloaded
 // contacts, and the 2D contact of two sliders sharing N. Units: SI.
+#include "contact/jenkins_contact.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 #include <stdexcept>
 #include <vector>
-
-#include "contact/jenkins_contact.hpp"
 
 namespace bb::contact {
 namespace {
@@ -132,9 +132,10 @@ TEST(JenkinsContact, ForceNeverExceedsTheCoulombLimitAndNormalLoadIsNeverNegativ
   // the force must obey the law of the state it reports.
   std::mt19937 rng(7);
   std::normal_distribution<double> step(0.0, 1.0);
-  const std::vector<JenkinsParameters> contacts = {
-      kContact, {.kn = 1e3, .kt = 1e12, .mu = 2.0, .n0 = 0.0}, {.kn = 1e12, .kt = 1e3, .mu = 0.1, .n0 = 1.0},
-      {.kn = 1e6, .kt = 1e6, .mu = 0.0, .n0 = 10.0}};
+  const std::vector<JenkinsParameters> contacts = {kContact,
+                                                   {.kn = 1e3, .kt = 1e12, .mu = 2.0, .n0 = 0.0},
+                                                   {.kn = 1e12, .kt = 1e3, .mu = 0.1, .n0 = 1.0},
+                                                   {.kn = 1e6, .kt = 1e6, .mu = 0.0, .n0 = 10.0}};
   std::vector<int> seen(4, 0);
   for (const auto& p : contacts) {
     const double du = 3.0 * (p.mu * p.n0 + 1.0) / p.kt, dv = 0.5 * (p.n0 + 1.0) / p.kn;

@@ -29,7 +29,8 @@ MappedQuadSpec rectangle(double length, double height, int nx, int ny, ElementTy
 // A convex quadrilateral with no parallel sides.
 MappedQuadSpec skewed(int nx, int ny, ElementType type) {
   MappedQuadSpec spec = rectangle(1, 1, nx, ny, type);
-  spec.corners = {Eigen::Vector2d(-0.5, 0.2), Eigen::Vector2d(4.0, -0.3), Eigen::Vector2d(3.2, 2.6), Eigen::Vector2d(0.4, 1.7)};
+  spec.corners = {Eigen::Vector2d(-0.5, 0.2), Eigen::Vector2d(4.0, -0.3), Eigen::Vector2d(3.2, 2.6),
+                  Eigen::Vector2d(0.4, 1.7)};
   return spec;
 }
 
@@ -65,7 +66,7 @@ TEST(MappedQuadMesh, SerpentineNumberingMatchesThesisTableTwo) {
   MappedQuadSpec spec = rectangle(10, 2, 5, 2);
   spec.numbering = NodeNumbering::serpentine;
   const Mesh mesh = generate_mapped_quad(spec);
-  const std::map<long, Eigen::Vector2d> expected = {{1, {0, 0}},   {6, {10, 0}}, {7, {10, 1}}, {9, {6, 1}},
+  const std::map<long, Eigen::Vector2d> expected = {{1, {0, 0}},  {6, {10, 0}}, {7, {10, 1}}, {9, {6, 1}},
                                                     {12, {0, 1}}, {13, {0, 2}}, {18, {10, 2}}};
   for (const auto& [id, xy] : expected) EXPECT_LE((coords_of(mesh, id) - xy).norm(), 1e-12) << "node " << id;
   std::set<long> ids(mesh.node_ids.begin(), mesh.node_ids.end());
@@ -195,8 +196,8 @@ TEST(MappedQuadMesh, TriangleDiagonalPatternsSplitCellsAsNamed) {
     const Mesh mesh = generate_mapped_quad(spec);
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
-        const bool expected = d == TriangleDiagonal::bottom_left_to_top_right ||
-                              (d == TriangleDiagonal::alternating && (i + j) % 2 == 0);
+        const bool expected =
+            d == TriangleDiagonal::bottom_left_to_top_right || (d == TriangleDiagonal::alternating && (i + j) % 2 == 0);
         EXPECT_EQ(cell_uses_13_diagonal(mesh, nx, i, j), expected) << "cell " << i << "," << j;
       }
   }

@@ -1,5 +1,7 @@
 // Measured data (identify/measured_data): files of each kind are read into SI with the header's
 // units, and every malformed file is refused with a message naming the file, line and column.
+#include "identify/measured_data.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <string>
 
 #include "common/errors.hpp"
-#include "identify/measured_data.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -31,7 +32,8 @@ std::string refusal(const fs::path& file, DataKind kind) {
 }
 
 void expect_contains(const std::string& message, std::initializer_list<std::string> parts) {
-  for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  for (const auto& part : parts)
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
 }
 
 TEST(MeasuredDataUnits, KnownSymbolsConvertToSiWithFrequenciesInHertz) {
@@ -67,7 +69,8 @@ TEST(MeasuredDataUnits, KnownSymbolsConvertToSiWithFrequenciesInHertz) {
 }
 
 TEST(MeasuredDataUnits, UnknownSymbolsAreRefused) {
-  for (const char* symbol : {"", "um/n", "hz", "Um", "furlong", "m/s", "N m"}) EXPECT_FALSE(parse_unit(symbol)) << symbol;
+  for (const char* symbol : {"", "um/n", "hz", "Um", "furlong", "m/s", "N m"})
+    EXPECT_FALSE(parse_unit(symbol)) << symbol;
 }
 
 TEST(MeasuredDataUnits, ColumnSuffixesGiveTheDimensionLongestFirst) {
@@ -184,7 +187,8 @@ TEST_F(MeasuredDataFile, MissingFileCannotBeOpened) {
 
 TEST_F(MeasuredDataFile, EmptyOrCommentOnlyFileIsRefused) {
   expect_contains(refusal(write("", "empty.csv"), DataKind::frf), {"empty.csv: no header line"});
-  expect_contains(refusal(write("# only\n\n# comments\n", "comments.csv"), DataKind::peaks), {"comments.csv: no header line"});
+  expect_contains(refusal(write("# only\n\n# comments\n", "comments.csv"), DataKind::peaks),
+                  {"comments.csv: no header line"});
 }
 
 TEST_F(MeasuredDataFile, HeaderWithoutRowsIsRefused) {
@@ -224,12 +228,13 @@ TEST_F(MeasuredDataFile, UnitOfTheWrongDimensionIsRefused) {
 }
 
 TEST_F(MeasuredDataFile, SigmaNeedsItsColumnAndItsDimension) {
-  expect_contains(refusal(write("frequency [Hz], amplitude [um/N], amplitude_sigma [um]\n1, 1, 1\n", "rig.csv"),
-                          DataKind::frf),
-                  {"rig.csv:1: column 'amplitude_sigma' has unit 'um' (length); it needs a compliance unit, like "
-                   "column 'amplitude'"});
-  expect_contains(refusal(write("frequency [Hz], amplitude [m], phase_sigma [deg]\n1, 1, 1\n", "rig.csv"), DataKind::frf),
-                  {"rig.csv:1: column 'phase_sigma' needs the column 'phase'"});
+  expect_contains(
+      refusal(write("frequency [Hz], amplitude [um/N], amplitude_sigma [um]\n1, 1, 1\n", "rig.csv"), DataKind::frf),
+      {"rig.csv:1: column 'amplitude_sigma' has unit 'um' (length); it needs a compliance unit, like "
+       "column 'amplitude'"});
+  expect_contains(
+      refusal(write("frequency [Hz], amplitude [m], phase_sigma [deg]\n1, 1, 1\n", "rig.csv"), DataKind::frf),
+      {"rig.csv:1: column 'phase_sigma' needs the column 'phase'"});
 }
 
 TEST_F(MeasuredDataFile, UnknownColumnIsRefusedWithTheColumnsOfTheKind) {
@@ -247,10 +252,10 @@ TEST_F(MeasuredDataFile, DuplicatedColumnIsRefused) {
 }
 
 TEST_F(MeasuredDataFile, MissingRequiredColumnIsNamedWithItsUnitAndTheFileColumns) {
-  expect_contains(refusal(write("# loop\nrelative_displacement [um], force_sigma [N]\n1, 1\n", "loop.csv"),
-                          DataKind::hysteresis),
-                  {"loop.csv:2: missing column 'tangential_force [<force unit>]'; the file has: "
-                   "relative_displacement, force_sigma"});
+  expect_contains(
+      refusal(write("# loop\nrelative_displacement [um], force_sigma [N]\n1, 1\n", "loop.csv"), DataKind::hysteresis),
+      {"loop.csv:2: missing column 'tangential_force [<force unit>]'; the file has: "
+       "relative_displacement, force_sigma"});
   expect_contains(refusal(write("frequency [Hz], amplitude [m]\n1, 1\n", "peaks.csv"), DataKind::peaks),
                   {"peaks.csv:1: missing column 'force [<force unit>]'"});
 }
@@ -266,9 +271,10 @@ TEST_F(MeasuredDataFile, EmptyOrNonNumericCellIsRefused) {
   expect_contains(refusal(write("frequency [Hz], amplitude [m]\n1,  \n", "rig.csv"), DataKind::frf),
                   {"rig.csv:2: column 'amplitude': empty cell"});
   for (const char* text : {"1.2.3", "12abc", "0x10", "abc", "1 2", "--1", "+-1", "5e"})
-    expect_contains(refusal(write(std::string("# c\nfrequency [Hz], amplitude [m]\n1, 1\n") + text + ", 1\n", "rig.csv"),
-                            DataKind::frf),
-                    {"rig.csv:4: column 'frequency': '"});
+    expect_contains(
+        refusal(write(std::string("# c\nfrequency [Hz], amplitude [m]\n1, 1\n") + text + ", 1\n", "rig.csv"),
+                DataKind::frf),
+        {"rig.csv:4: column 'frequency': '"});
   expect_contains(refusal(write("frequency [Hz], amplitude [m]\n1, 12abc\n", "rig.csv"), DataKind::frf),
                   {"rig.csv:2: column 'amplitude': '12abc' is not a number"});
   expect_contains(refusal(write("frequency [Hz], amplitude [m]\n1, 1e400\n", "rig.csv"), DataKind::frf),
@@ -277,36 +283,38 @@ TEST_F(MeasuredDataFile, EmptyOrNonNumericCellIsRefused) {
 
 TEST_F(MeasuredDataFile, NanAndInfinityAreRefusedExplicitly) {
   for (const char* text : {"nan", "NaN", "-nan", "inf", "-inf", "Infinity"})
-    expect_contains(refusal(write(std::string("frequency [Hz], phase [deg], amplitude [m]\n1, ") + text + ", 1\n", "rig.csv"),
-                            DataKind::frf),
-                    {std::string("rig.csv:2: column 'phase': '") + text + "' is not a finite number"});
+    expect_contains(
+        refusal(write(std::string("frequency [Hz], phase [deg], amplitude [m]\n1, ") + text + ", 1\n", "rig.csv"),
+                DataKind::frf),
+        {std::string("rig.csv:2: column 'phase': '") + text + "' is not a finite number"});
 }
 
 TEST_F(MeasuredDataFile, NonPositiveAmplitudeOrSigmaIsRefused) {
   expect_contains(refusal(write("frequency [Hz], amplitude [m]\n1, 1\n2, 0\n", "rig.csv"), DataKind::frf),
                   {"rig.csv:3: column 'amplitude': '0' must be positive"});
-  expect_contains(refusal(write("force [N], frequency [Hz], amplitude [m]\n1, 100, -1e-6\n", "peaks.csv"), DataKind::peaks),
-                  {"peaks.csv:2: column 'amplitude': '-1e-6' must be positive"});
-  expect_contains(refusal(write("frequency [Hz], amplitude [m], phase [deg], phase_sigma [deg]\n1, 1, -10, -0.5\n",
-                                "rig.csv"),
-                          DataKind::frf),
-                  {"rig.csv:2: column 'phase_sigma': '-0.5' must be positive"});
+  expect_contains(
+      refusal(write("force [N], frequency [Hz], amplitude [m]\n1, 100, -1e-6\n", "peaks.csv"), DataKind::peaks),
+      {"peaks.csv:2: column 'amplitude': '-1e-6' must be positive"});
+  expect_contains(
+      refusal(write("frequency [Hz], amplitude [m], phase [deg], phase_sigma [deg]\n1, 1, -10, -0.5\n", "rig.csv"),
+              DataKind::frf),
+      {"rig.csv:2: column 'phase_sigma': '-0.5' must be positive"});
 }
 
 TEST_F(MeasuredDataFile, FrfFrequenciesMustIncreaseStrictly) {
-  expect_contains(refusal(write("# c\nfrequency [Hz], amplitude [m]\n100, 1\n120, 1\n# c\n110, 1\n", "rig.csv"),
-                          DataKind::frf),
-                  {"rig.csv:6: frequency 110 Hz is not above the previous row's 120 Hz (rows must be sorted by "
-                   "increasing frequency, without duplicates)"});
+  expect_contains(
+      refusal(write("# c\nfrequency [Hz], amplitude [m]\n100, 1\n120, 1\n# c\n110, 1\n", "rig.csv"), DataKind::frf),
+      {"rig.csv:6: frequency 110 Hz is not above the previous row's 120 Hz (rows must be sorted by "
+       "increasing frequency, without duplicates)"});
   expect_contains(refusal(write("frequency [rpm], amplitude [m]\n7200, 1\n7200, 1\n", "rig.csv"), DataKind::frf),
                   {"rig.csv:3: frequency 7200 rpm is not above the previous row's 7200 rpm"});
 }
 
 TEST_F(MeasuredDataFile, RepeatedForceLevelIsRefusedNamingBothRows) {
-  expect_contains(refusal(write("force [N], frequency [Hz], amplitude [m]\n1, 300, 1\n2, 299, 2\n\n1, 298, 3\n",
-                                "peaks.csv"),
-                          DataKind::peaks),
-                  {"peaks.csv:5: column 'force': level 1 N repeats the level of line 2"});
+  expect_contains(
+      refusal(write("force [N], frequency [Hz], amplitude [m]\n1, 300, 1\n2, 299, 2\n\n1, 298, 3\n", "peaks.csv"),
+              DataKind::peaks),
+      {"peaks.csv:5: column 'force': level 1 N repeats the level of line 2"});
 }
 
 }  // namespace

@@ -19,8 +19,8 @@ namespace {
 // a quarter turn, so its spectrum has exactly repeated pairs (the report that exposed the defect).
 Model square_plate() {
   HexBlockSpec b;
-  b.corners = {Eigen::Vector3d(0, 0, 0), {10, 0, 0}, {10, 10, 0}, {0, 10, 0},
-               {0, 0, 1},                {10, 0, 1}, {10, 10, 1}, {0, 10, 1}};
+  b.corners = {
+      Eigen::Vector3d(0, 0, 0), {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {0, 0, 1}, {10, 0, 1}, {10, 10, 1}, {0, 10, 1}};
   b.nx = 8;
   b.ny = 8;
   b.nz = 3;
@@ -74,7 +74,8 @@ TEST(ModalCompleteness, SturmCountEqualsTheEigenvaluesBelowTheShift) {
 TEST(ModalCompleteness, TheSpectrumHasRepeatedPairs) {
   const PlateSystem& p = plate();
   int pairs = 0;
-  for (Eigen::Index k = 1; k < p.reference.size(); ++k) pairs += p.reference[k] - p.reference[k - 1] < 1e-8 * p.reference[k] ? 1 : 0;
+  for (Eigen::Index k = 1; k < p.reference.size(); ++k)
+    pairs += p.reference[k] - p.reference[k - 1] < 1e-8 * p.reference[k] ? 1 : 0;
   EXPECT_GE(pairs, 3);
 }
 
@@ -106,14 +107,16 @@ TEST(ModalCompleteness, UncheckedLanczosMissesAMemberOfAPairThatTheCountCatches)
     o.verify_count = false;
     const ModalSolution unchecked = lowest_modes(p.free.stiffness, p.free.mass, o);
     bool wrong = false;
-    for (Eigen::Index k = 0; k < n; ++k) wrong = wrong || std::abs(unchecked.eigenvalues[k] - p.reference[k]) > 1e-8 * p.reference[k];
+    for (Eigen::Index k = 0; k < n; ++k)
+      wrong = wrong || std::abs(unchecked.eigenvalues[k] - p.reference[k]) > 1e-8 * p.reference[k];
     o.verify_count = true;
     const ModalSolution checked = lowest_modes(p.free.stiffness, p.free.mass, o);
     missed += wrong ? 1 : 0;
     rerun += checked.lanczos_runs > 1 ? 1 : 0;
     if (wrong) EXPECT_GT(checked.lanczos_runs, 1) << "n = " << n << ": a missed mode went unnoticed";
   }
-  std::printf("  requested counts 4..24: %d unchecked runs miss a mode, %d checked runs needed a second Lanczos run\n", missed, rerun);
+  std::printf("  requested counts 4..24: %d unchecked runs miss a mode, %d checked runs needed a second Lanczos run\n",
+              missed, rerun);
   EXPECT_GT(missed, 0) << "this plate no longer exposes the defect: the test would pass without the count";
 }
 

@@ -3,9 +3,9 @@
 // here independently from the clamped-free Timoshenko frequency equation (and cross-checked
 // with a 1D Timoshenko finite-element beam and with Euler-Bernoulli). Also: mass normalization,
 // and the three rigid-body modes of a free plate. Units: SI.
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -55,10 +55,10 @@ double timoshenko_clamped_free_determinant(const Beam& b, double omega) {
   const double l = b.length;
   const double ch = std::cosh(alpha * l), sh = std::sinh(alpha * l), co = std::cos(beta * l), si = std::sin(beta * l);
   Eigen::Matrix4d m;
-  m << 1, 0, 1, 0,                                             // w(0)
-      0, a, 0, -c,                                             // psi(0)
+  m << 1, 0, 1, 0,                                                   // w(0)
+      0, a, 0, -c,                                                   // psi(0)
       a * alpha * ch, a * alpha * sh, c * beta * co, c * beta * si,  // psi'(L)
-      -sh / alpha, -ch / alpha, -si / beta, co / beta;        // (w'(L) - psi(L)) / r
+      -sh / alpha, -ch / alpha, -si / beta, co / beta;               // (w'(L) - psi(L)) / r
   return m.determinant();
 }
 
@@ -122,8 +122,8 @@ std::vector<double> euler_bernoulli_cantilever_frequencies(const Beam& b) {
   const double beta_l[] = {1.875104068711961, 4.694091132974175, 7.854757438237613};
   std::vector<double> out;
   for (double bl : beta_l)
-    out.push_back(bl * bl / (b.length * b.length) *
-                  std::sqrt(b.youngs_modulus * b.inertia() / (b.density * b.area())) / kTwoPi);
+    out.push_back(bl * bl / (b.length * b.length) * std::sqrt(b.youngs_modulus * b.inertia() / (b.density * b.area())) /
+                  kTwoPi);
   return out;
 }
 

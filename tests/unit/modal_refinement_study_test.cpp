@@ -44,7 +44,8 @@ class ModalRefinementStudy : public test::TempFolderTest {};
 
 TEST_F(ModalRefinementStudy, ErrorsFallWithRefinementAndVanishOnTheFinestHex20Mesh) {
   const CaseSpec spec = parse_case_file(write(kBar));
-  const ModalRefinementResult r = run_modal_refinement_study(spec.model, std::get<ModalSpec>(spec.analysis), std::get<ModalRefinementStudySpec>(*spec.study));
+  const ModalRefinementResult r = run_modal_refinement_study(spec.model, std::get<ModalSpec>(spec.analysis),
+                                                             std::get<ModalRefinementStudySpec>(*spec.study));
   ASSERT_EQ(r.rows.size(), 6u);
   const ModalRefinementRow& ref = r.rows[static_cast<size_t>(r.reference_row)];
   EXPECT_EQ(ref.element, ElementType::hex20);
@@ -62,7 +63,8 @@ TEST_F(ModalRefinementStudy, ErrorsFallWithRefinementAndVanishOnTheFinestHex20Me
 
 TEST_F(ModalRefinementStudy, NeedsASolidModalCase) {
   std::string text = kBar;
-  text.replace(text.find("type = \"modal\"\nmodes = 4"), std::string("type = \"modal\"\nmodes = 4").size(), "type = \"static\"");
+  text.replace(text.find("type = \"modal\"\nmodes = 4"), std::string("type = \"modal\"\nmodes = 4").size(),
+               "type = \"static\"");
   EXPECT_THROW(parse_case_file(write(text)), InputError);
 }
 

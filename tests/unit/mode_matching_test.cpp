@@ -1,6 +1,8 @@
 // Pairing modes by shape (checks/mode_matching) and by label (checks/checks, match = "label"): a
 // reordered or refined mode set must be compared mode to mode, a repeated eigenvalue as a pair,
 // and a reference mode without a partner must fail its check entries, not borrow a neighbour's.
+#include "checks/mode_matching.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 
 #include "analysis/modal_analysis.hpp"
 #include "checks/checks.hpp"
-#include "checks/mode_matching.hpp"
 #include "common/errors.hpp"
 #include "mesh/hex_block.hpp"
 #include "temp_folder.hpp"
@@ -21,7 +22,8 @@ namespace {
 // repeated pairs (the two lateral directions), between them the torsion and axial modes.
 Model square_bar(int nx, int n) {
   HexBlockSpec b;
-  b.corners = {Eigen::Vector3d(0, 0, 0), {1, 0, 0}, {1, 0.05, 0}, {0, 0.05, 0}, {0, 0, 0.05}, {1, 0, 0.05}, {1, 0.05, 0.05}, {0, 0.05, 0.05}};
+  b.corners = {Eigen::Vector3d(0, 0, 0), {1, 0, 0},      {1, 0.05, 0}, {0, 0.05, 0}, {0, 0, 0.05}, {1, 0, 0.05},
+               {1, 0.05, 0.05},          {0, 0.05, 0.05}};
   b.nx = nx;
   b.ny = n;
   b.nz = n;
@@ -100,7 +102,8 @@ TEST(ModeMatching, ARefinedMeshPairsWithTheCoarseOneThroughTheirCommonNodes) {
     EXPECT_GT(m.match_mac[j], 0.99) << "reference mode " << j + 1;
     // The partner is the same mode, lower on the finer mesh (conforming elements, consistent mass:
     // the frequencies converge from above).
-    EXPECT_LT(fine_modes.frequencies_hz[k], coarse_modes.frequencies_hz[static_cast<Eigen::Index>(j)]) << "reference mode " << j + 1;
+    EXPECT_LT(fine_modes.frequencies_hz[k], coarse_modes.frequencies_hz[static_cast<Eigen::Index>(j)])
+        << "reference mode " << j + 1;
   }
   const ResultTable t = mode_match_table("mac_coarse", m, fine_modes, coarse_modes);
   EXPECT_EQ(t.columns[0], "mode");
@@ -131,7 +134,8 @@ ResultTable labelled(const std::vector<double>& f, const std::vector<std::string
 TEST(ModeMatching, LabelledRowsArePairedByTheirLabelsInOrder) {
   ResultTables computed, reference;
   computed.emplace("frequencies", labelled({100, 210, 300, 420}, {"flexure-x", "torsion", "flexure-x", "torsion"}));
-  reference.emplace("frequencies", labelled({101, 305, 205, 415, 500}, {"flexure-x", "flexure-x", "torsion", "torsion", "flexure-z"}));
+  reference.emplace("frequencies",
+                    labelled({101, 305, 205, 415, 500}, {"flexure-x", "flexure-x", "torsion", "torsion", "flexure-z"}));
   CheckSpec c;
   c.name = "by type";
   c.result = "frequencies";

@@ -2,6 +2,8 @@
 // convergence against the exact forced response of a 1-DOF oscillator, the period elongation of
 // the average-acceleration rule, energy conservation (alpha = 0) and dissipation (alpha < 0), and
 // the condensation onto contact DOFs agreeing with the uncondensed solve. Units: SI.
+#include "timeint/newmark.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <numbers>
 #include <vector>
 
-#include "timeint/newmark.hpp"
 #include "timeint/static_state.hpp"
 
 namespace bb::timeint {
@@ -133,9 +134,9 @@ TEST(Newmark, CondensationOntoContactDofsMatchesTheFullSolveOfALinearModel) {
   hbm::HbmModel with_contact = chain();
   with_contact.damping = 0.01 * with_contact.stiffness;
   const Eigen::RowVectorXd a_n = Eigen::RowVector3d(0.0, 1.0, -1.0);
-  with_contact.contacts.push_back(
-      {.law = {.kn = 3.0, .kt = 1.0, .mu = 0.0, .n0 = 100.0}, .tangential = Eigen::RowVector3d(0.0, 1.0, 0.0),
-       .normal = a_n});
+  with_contact.contacts.push_back({.law = {.kn = 3.0, .kt = 1.0, .mu = 0.0, .n0 = 100.0},
+                                   .tangential = Eigen::RowVector3d(0.0, 1.0, 0.0),
+                                   .normal = a_n});
   hbm::HbmModel linear = chain();
   linear.damping = with_contact.damping;
   linear.stiffness += 3.0 * a_n.transpose() * a_n;

@@ -24,10 +24,11 @@ using test::LinearField;
 // MacNeal-Harder patch: a 0.24 x 0.12 rectangle, four boundary nodes (ids 1-4) and four interior
 // nodes (ids 5-8) at irregular positions, five quadrilaterals of which none is a parallelogram.
 std::vector<std::pair<long, Eigen::Vector2d>> macneal_harder_nodes() {
-  return {{1, {0.0, 0.0}},    {2, {0.24, 0.0}},   {3, {0.24, 0.12}}, {4, {0.0, 0.12}},
-          {5, {0.04, 0.02}},  {6, {0.18, 0.03}},  {7, {0.16, 0.08}}, {8, {0.08, 0.08}}};
+  return {{1, {0.0, 0.0}},   {2, {0.24, 0.0}},  {3, {0.24, 0.12}}, {4, {0.0, 0.12}},
+          {5, {0.04, 0.02}}, {6, {0.18, 0.03}}, {7, {0.16, 0.08}}, {8, {0.08, 0.08}}};
 }
-const std::vector<std::vector<long>> kMacNealHarderQuads = {{1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}, {5, 6, 7, 8}};
+const std::vector<std::vector<long>> kMacNealHarderQuads = {
+    {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}, {5, 6, 7, 8}};
 // The same patch triangulated, the diagonals chosen both ways.
 const std::vector<std::vector<long>> kMacNealHarderTriangles = {{1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 4, 7},
                                                                 {4, 8, 7}, {4, 1, 5}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}};
@@ -43,31 +44,35 @@ void PrintTo(const Patch& p, std::ostream* os) { *os << p.name; }
 Patch macneal_harder(ElementType type) {
   const auto& conn = type == ElementType::q4 ? kMacNealHarderQuads : kMacNealHarderTriangles;
   return {type == ElementType::q4 ? "Q4MacNealHarder" : "CstMacNealHarder",
-          test::make_mesh(macneal_harder_nodes(), {Block{type, conn}}), {1, 2, 3, 4}};
+          test::make_mesh(macneal_harder_nodes(), {Block{type, conn}}),
+          {1, 2, 3, 4}};
 }
 
 // Unit square, 3 x 3 nodes, every edge node and the interior node pushed off-centre; node ids are
 // deliberately not 1..n so that the id -> index mapping is exercised too.
 std::vector<std::pair<long, Eigen::Vector2d>> skewed_square_nodes() {
-  return {{10, {0.0, 0.0}}, {20, {0.4, 0.0}},   {30, {1.0, 0.0}},  {40, {0.0, 0.3}}, {50, {0.6, 0.45}},
+  return {{10, {0.0, 0.0}},  {20, {0.4, 0.0}}, {30, {1.0, 0.0}},  {40, {0.0, 0.3}}, {50, {0.6, 0.45}},
           {60, {1.0, 0.65}}, {70, {0.0, 1.0}}, {80, {0.55, 1.0}}, {90, {1.0, 1.0}}};
 }
-const std::vector<std::vector<long>> kSkewedQuads = {{10, 20, 50, 40}, {20, 30, 60, 50}, {40, 50, 80, 70}, {50, 60, 90, 80}};
+const std::vector<std::vector<long>> kSkewedQuads = {
+    {10, 20, 50, 40}, {20, 30, 60, 50}, {40, 50, 80, 70}, {50, 60, 90, 80}};
 const std::vector<std::vector<long>> kSkewedTriangles = {{10, 20, 50}, {10, 50, 40}, {20, 30, 60}, {20, 60, 50},
                                                          {40, 50, 80}, {40, 80, 70}, {50, 60, 90}, {50, 90, 80}};
 
 Patch skewed_square(ElementType type) {
   const auto& conn = type == ElementType::q4 ? kSkewedQuads : kSkewedTriangles;
   return {type == ElementType::q4 ? "Q4SkewedSquare" : "CstSkewedSquare",
-          test::make_mesh(skewed_square_nodes(), {Block{type, conn}}), {10, 20, 30, 40, 60, 70, 80, 90}};
+          test::make_mesh(skewed_square_nodes(), {Block{type, conn}}),
+          {10, 20, 30, 40, 60, 70, 80, 90}};
 }
 
 // Q4 and CST in one mesh (two blocks): the two left cells of the skewed square as quads, the
 // two right cells as triangles. Both are linear along a shared edge, so the mesh is conforming.
 Patch mixed_square() {
   return {"MixedQ4AndCst",
-          test::make_mesh(skewed_square_nodes(), {Block{ElementType::q4, {{10, 20, 50, 40}, {40, 50, 80, 70}}},
-                                                  Block{ElementType::cst, {{20, 30, 60}, {20, 60, 50}, {50, 60, 90}, {50, 90, 80}}}}),
+          test::make_mesh(skewed_square_nodes(),
+                          {Block{ElementType::q4, {{10, 20, 50, 40}, {40, 50, 80, 70}}},
+                           Block{ElementType::cst, {{20, 30, 60}, {20, 60, 50}, {50, 60, 90}, {50, 90, 80}}}}),
           {10, 20, 30, 40, 60, 70, 80, 90}};
 }
 
@@ -124,12 +129,13 @@ TEST_P(DistortedPatch, InteriorNodesReproduceAPrescribedLinearDisplacementField)
   const StaticSolution sol = solve_static(model);
   ASSERT_EQ(sol.n_free_dofs, 2 * (model.mesh.n_nodes() - static_cast<int>(p.boundary.size())));
   double scale = 0.0;
-  for (int n = 0; n < model.mesh.n_nodes(); ++n) scale = std::max(scale, f.at(model.mesh.coords(n, 0), model.mesh.coords(n, 1)).norm());
+  for (int n = 0; n < model.mesh.n_nodes(); ++n)
+    scale = std::max(scale, f.at(model.mesh.coords(n, 0), model.mesh.coords(n, 1)).norm());
   for (int n = 0; n < model.mesh.n_nodes(); ++n) {
     const Eigen::Vector2d expected = f.at(model.mesh.coords(n, 0), model.mesh.coords(n, 1));
     const Eigen::Vector2d got = sol.displacements.row(n).transpose();
-    EXPECT_LE((got - expected).norm(), 1e-10 * scale) << "node " << model.mesh.node_ids[n] << ": " << got.transpose()
-                                                      << " vs " << expected.transpose();
+    EXPECT_LE((got - expected).norm(), 1e-10 * scale)
+        << "node " << model.mesh.node_ids[n] << ": " << got.transpose() << " vs " << expected.transpose();
   }
 }
 
@@ -166,7 +172,8 @@ TEST_P(DistortedPatch, ReactionsOfAConstantStressStateAreSelfEquilibrated) {
 
 INSTANTIATE_TEST_SUITE_P(PatchTest, DistortedPatch,
                          ::testing::Values(macneal_harder(ElementType::q4), macneal_harder(ElementType::cst),
-                                           skewed_square(ElementType::q4), skewed_square(ElementType::cst), mixed_square()),
+                                           skewed_square(ElementType::q4), skewed_square(ElementType::cst),
+                                           mixed_square()),
                          [](const ::testing::TestParamInfo<Patch>& p) { return p.param.name; });
 
 // Force patch test: the skewed unit square under uniform biaxial traction, sx on the right edge and

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "fe/plane_stress.hpp"
-#include "test_support.hpp"
 #include "stiffness_checks.hpp"
+#include "test_support.hpp"
 
 namespace bb {
 namespace {
@@ -88,9 +88,9 @@ TEST_P(ElementMatrices, UniformStrainEnergyEqualsHalfEpsDEpsTimesVolume) {
   const Eigen::MatrixXd k = stiffness(s, section);
   const Eigen::Matrix3d d = fe::plane_stress_elasticity(section.youngs_modulus, section.poisson_ratio);
   const double volume = test::polygon_area(s.xy) * section.thickness;
-  for (const LinearField& f : {LinearField{0, 1e-3, 0, 0, 0, 0}, LinearField{0, 0, 0, 0, 0, -2e-3},
-                               LinearField{0, 0, 1e-3, 0, 1e-3, 0},
-                               LinearField{3e-4, 1.2e-3, -4e-4, -2e-4, 7e-4, 5e-4}}) {
+  for (const LinearField& f :
+       {LinearField{0, 1e-3, 0, 0, 0, 0}, LinearField{0, 0, 0, 0, 0, -2e-3}, LinearField{0, 0, 1e-3, 0, 1e-3, 0},
+        LinearField{3e-4, 1.2e-3, -4e-4, -2e-4, 7e-4, 5e-4}}) {
     const Eigen::VectorXd u = sample_field(f, s.xy);
     const Eigen::Vector3d eps = f.strain();
     const double expected = 0.5 * eps.dot(d * eps) * volume;
@@ -222,7 +222,8 @@ TEST(Q4Rectangle, StiffnessIsIndependentOfTranslation) {
   fe::Q4Coords xy;
   xy << 0, 0, 2, 0, 2, 1, 0, 1;
   const fe::Q4Coords moved = xy.rowwise() + Eigen::RowVector2d(100.0, -40.0);
-  EXPECT_LE((fe::q4_stiffness(xy, sec) - fe::q4_stiffness(moved, sec)).norm(), 1e-10 * fe::q4_stiffness(xy, sec).norm());
+  EXPECT_LE((fe::q4_stiffness(xy, sec) - fe::q4_stiffness(moved, sec)).norm(),
+            1e-10 * fe::q4_stiffness(xy, sec).norm());
 }
 
 TEST(Q4Rectangle, ConsistentMassMatchesClosedForm) {

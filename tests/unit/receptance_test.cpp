@@ -1,6 +1,8 @@
 // Linear receptances (frf/receptance): modal superposition and the direct dense solve against the
 // closed forms of one- and two-DOF oscillators, reciprocity, residual flexibility, Rayleigh and
 // modal damping, undamped resonances and linearity in the force. Units: SI.
+#include "frf/receptance.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +14,6 @@
 #include <vector>
 
 #include "common/errors.hpp"
-#include "frf/receptance.hpp"
 
 namespace bb {
 namespace {
@@ -40,8 +41,8 @@ Chain spring_chain(const std::vector<double>& masses, const std::vector<double>&
 Chain two_dof() { return spring_chain({1.5, 0.8}, {2.0e6, 5.0e5, 1.0e6}); }
 
 struct Modes {
-  Eigen::VectorXd omega;  // rad/s
-  Eigen::MatrixXd shapes; // mass-normalized
+  Eigen::VectorXd omega;   // rad/s
+  Eigen::MatrixXd shapes;  // mass-normalized
 };
 
 Modes dense_modes(const Chain& c) {
@@ -67,9 +68,11 @@ double relative(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) { return (
 TEST(Receptance, OneDofModalAndDirectEqualTheClosedForm) {
   const double k = 1.0e6, m = 2.0, zeta = 0.02, wn = std::sqrt(k / m), c = 2.0 * zeta * std::sqrt(k * m);
   const Chain one{Eigen::MatrixXd::Constant(1, 1, k), Eigen::MatrixXd::Constant(1, 1, m)};
-  const ModalReceptance modal{.omega = Eigen::VectorXd::Constant(1, wn), .zeta = Eigen::VectorXd::Constant(1, zeta),
+  const ModalReceptance modal{.omega = Eigen::VectorXd::Constant(1, wn),
+                              .zeta = Eigen::VectorXd::Constant(1, zeta),
                               .shapes_out = Eigen::MatrixXd::Constant(1, 1, 1.0 / std::sqrt(m)),
-                              .shapes_in = Eigen::MatrixXd::Constant(1, 1, 1.0 / std::sqrt(m)), .residual = {}};
+                              .shapes_in = Eigen::MatrixXd::Constant(1, 1, 1.0 / std::sqrt(m)),
+                              .residual = {}};
   const Eigen::MatrixXd damping = modal_damping_matrix(one.stiffness, one.mass, zeta);
   EXPECT_NEAR(damping(0, 0), c, 1e-12 * c);
   for (double ratio : {0.0, 0.3, 0.99, 1.0, 1.01, 1.7, 10.0}) {
@@ -91,8 +94,8 @@ TEST(Receptance, OneDofStaticLimitIsTheFlexibility) {
   for (double ratio : {0.0, 1e-6}) {
     const double w = ratio * modes.omega[0], tolerance = (1e-14 + 2.0 * zeta * ratio) / k;
     EXPECT_NEAR(std::abs(modal.at(w)(0, 0) - 1.0 / k), 0.0, tolerance);
-    EXPECT_NEAR(std::abs(direct_response(one.stiffness, damping, one.mass, w, Eigen::VectorXcd::Ones(1))[0] - 1.0 / k), 0.0,
-                tolerance);
+    EXPECT_NEAR(std::abs(direct_response(one.stiffness, damping, one.mass, w, Eigen::VectorXcd::Ones(1))[0] - 1.0 / k),
+                0.0, tolerance);
   }
 }
 
@@ -163,8 +166,11 @@ TEST(Receptance, ResidualFlexibilityRestoresTheStaticResponseOfTruncatedModes) {
   const double zeta = 0.01;
   const Eigen::MatrixXd flexibility = c.stiffness.inverse();
   const ModalReceptance full = all_dofs(modes, Eigen::VectorXd::Constant(3, zeta));
-  ModalReceptance one_mode{.omega = modes.omega.head(1), .zeta = Eigen::VectorXd::Constant(1, zeta),
-                           .shapes_out = modes.shapes.leftCols(1), .shapes_in = modes.shapes.leftCols(1), .residual = {}};
+  ModalReceptance one_mode{.omega = modes.omega.head(1),
+                           .zeta = Eigen::VectorXd::Constant(1, zeta),
+                           .shapes_out = modes.shapes.leftCols(1),
+                           .shapes_in = modes.shapes.leftCols(1),
+                           .residual = {}};
   ModalReceptance with_residual = one_mode;
   with_residual.residual = residual_flexibility(flexibility, one_mode.shapes_out, one_mode.shapes_in, one_mode.omega);
 
@@ -186,7 +192,8 @@ TEST(Receptance, UndampedResonanceIsASolverErrorAndOffResonanceIsFinite) {
   const Modes modes = dense_modes(c);
   const Eigen::MatrixXd no_damping = Eigen::MatrixXd::Zero(2, 2);
   for (Eigen::Index r = 0; r < 2; ++r) {
-    EXPECT_THROW(direct_response(c.stiffness, no_damping, c.mass, modes.omega[r], Eigen::VectorXcd::Ones(2)), SolverError);
+    EXPECT_THROW(direct_response(c.stiffness, no_damping, c.mass, modes.omega[r], Eigen::VectorXcd::Ones(2)),
+                 SolverError);
     EXPECT_THROW(direct_response(c.stiffness, {}, c.mass, modes.omega[r], Eigen::VectorXcd::Ones(2)), SolverError);
   }
   try {

@@ -2,6 +2,8 @@
 // and the files that let an Ansys or NX export stand in for bladebench's own reduction. A write
 // and read round-trips bit for bit; every malformed file is an InputError naming the file and,
 // for a line-level fault, the line.
+#include "reduction/reduced_model_io.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +16,6 @@
 
 #include "common/errors.hpp"
 #include "reduction/reduced_model.hpp"
-#include "reduction/reduced_model_io.hpp"
 #include "temp_folder.hpp"
 
 namespace bb {
@@ -98,7 +99,8 @@ class ReducedModelIo : public test::TempFolderTest {
  protected:
   // A sidecar for the 2-DOF model naming the matrix files K.<ext> and M.<ext>.
   std::filesystem::path sidecar(const std::string& format, const std::string& ext,
-                                const std::string& dofs = R"(["T1.x", "mode 1"])", const std::string& extra = "") const {
+                                const std::string& dofs = R"(["T1.x", "mode 1"])",
+                                const std::string& extra = "") const {
     return write(fmt_sidecar(format, ext, dofs, extra), "rom.toml");
   }
   static std::string fmt_sidecar(const std::string& format, const std::string& ext, const std::string& dofs,
@@ -184,8 +186,9 @@ TEST_F(ReducedModelIo, RejectsAMatrixWhoseSizeDisagreesWithTheDofs) {
 }
 
 TEST_F(ReducedModelIo, RejectsABadMatrixMarketHeader) {
-  for (const char* header : {"%%MatrixMarket matrix coordinate complex general", "%%MatrixMarket matrix array real symmetric",
-                             "2 2 3", "%%MatrixMarket matrix coordinate real hermitian"}) {
+  for (const char* header :
+       {"%%MatrixMarket matrix coordinate complex general", "%%MatrixMarket matrix array real symmetric", "2 2 3",
+        "%%MatrixMarket matrix coordinate real hermitian"}) {
     write(std::string(header) + "\n2 2 3\n1 1 2\n2 1 -1\n2 2 3\n", "K.mtx");
     write_good_mass_mtx();
     const std::string message = read_error(sidecar("matrix_market", "mtx"));

@@ -1,13 +1,14 @@
 // The rotating analysis through the case pipeline (analysis/rotating_analysis): the spectrum that
 // measures oscillation frequencies, the tables a run writes, the modes at rest against the modal
 // analysis of the same mesh, and a diverging run that must fail the case with its time.
+#include "analysis/rotating_analysis.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "analysis/modal_analysis.hpp"
-#include "analysis/rotating_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/run_case.hpp"
@@ -22,7 +23,8 @@ TEST(AmplitudeSpectrum, FindsTheFrequencyAndAmplitudeOfASinusoidBetweenItsBins) 
   const double dt = 1e-4, f = 191.37, a = 2.5e-5;
   Eigen::VectorXd x(50000);
   for (Eigen::Index i = 0; i < x.size(); ++i)
-    x[i] = 1e-3 + a * std::sin(kTwoPi * f * static_cast<double>(i) * dt + 0.3) + 0.2 * a * std::sin(kTwoPi * 47.7 * static_cast<double>(i) * dt);
+    x[i] = 1e-3 + a * std::sin(kTwoPi * f * static_cast<double>(i) * dt + 0.3) +
+           0.2 * a * std::sin(kTwoPi * 47.7 * static_cast<double>(i) * dt);
   const AmplitudeSpectrum s(x, dt);
   const SpectralPeak p = s.peak(0.97 * f, 1.03 * f);
   EXPECT_NEAR(p.frequency_hz, f, 0.1 * s.resolution_hz());
@@ -71,10 +73,12 @@ TEST_F(RotatingAnalysis, ModesAtRestAreThoseOfTheModalAnalysisOfTheSameMesh) {
   const ModalResult modal = solve_modal(model, ModeSelection{4, std::nullopt, std::nullopt}, ModalOptions{});
   const ResultTable& t = o.tables.at("rotating_modes");
   for (int m = 0; m < 4; ++m)
-    EXPECT_NEAR(t.values(m, *t.column_index("rest_hz")), modal.frequencies_hz[m], 1e-6 * modal.frequencies_hz[m]) << "mode " << m + 1;
+    EXPECT_NEAR(t.values(m, *t.column_index("rest_hz")), modal.frequencies_hz[m], 1e-6 * modal.frequencies_hz[m])
+        << "mode " << m + 1;
   // Stiffening raises the first (chordwise) mode with speed despite the softening: 200 rad/s.
   EXPECT_GT(t.values(0, *t.column_index("frequency_hz")), t.values(0, *t.column_index("rest_hz")));
-  for (const char* name : {"histories", "deflection", "oscillation", "energy", "campbell", "crossings", "rotating_cost"})
+  for (const char* name :
+       {"histories", "deflection", "oscillation", "energy", "campbell", "crossings", "rotating_cost"})
     EXPECT_TRUE(o.tables.count(name)) << name;
   const ResultTable& h = o.tables.at("histories");
   EXPECT_TRUE(h.column_index("tip.ux_m") && h.column_index("tip.uy_m") && h.column_index("omega_rad_s"));
@@ -82,8 +86,9 @@ TEST_F(RotatingAnalysis, ModesAtRestAreThoseOfTheModalAnalysisOfTheSameMesh) {
 
 TEST_F(RotatingAnalysis, ARunThatDivergesFailsTheCaseNamingTheTime) {
   // Without stiffening, far above the strip's first bending frequency (about 65 rad/s): spin softening wins.
-  const std::filesystem::path file = write(strip_case("speed_rad_s = 2000.0\nend_time_s = 1.0\ntime_step_s = 1e-4\nstiffening = false\n"
-                                                      "[analysis.campbell]\nspeeds_rad_s = [0.0, 10.0]\n"));
+  const std::filesystem::path file =
+      write(strip_case("speed_rad_s = 2000.0\nend_time_s = 1.0\ntime_step_s = 1e-4\nstiffening = false\n"
+                       "[analysis.campbell]\nspeeds_rad_s = [0.0, 10.0]\n"));
   const RunOutcome o = run_case(file, {.out_dir = dir_ / "out", .study = false, .plots = false});
   EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
   EXPECT_NE(o.record.message.find("t = "), std::string::npos) << o.record.message;

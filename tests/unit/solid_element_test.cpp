@@ -268,9 +268,15 @@ fe::Matrix24 box_stiffness_closed_form(const Eigen::Vector3d& size, const fe::So
   const fe::Matrix6 d = fe::isotropic_elasticity(m.youngs_modulus, m.poisson_ratio);
   std::array<Eigen::Matrix<double, 6, 3>, 3> e{};
   for (auto& ep : e) ep.setZero();
-  e[0](0, 0) = 1; e[0](3, 1) = 1; e[0](5, 2) = 1;  // d/dx: xx <- ux, xy <- uy, zx <- uz
-  e[1](1, 1) = 1; e[1](3, 0) = 1; e[1](4, 2) = 1;  // d/dy: yy <- uy, xy <- ux, yz <- uz
-  e[2](2, 2) = 1; e[2](4, 1) = 1; e[2](5, 0) = 1;  // d/dz: zz <- uz, yz <- uy, zx <- ux
+  e[0](0, 0) = 1;
+  e[0](3, 1) = 1;
+  e[0](5, 2) = 1;  // d/dx: xx <- ux, xy <- uy, zx <- uz
+  e[1](1, 1) = 1;
+  e[1](3, 0) = 1;
+  e[1](4, 2) = 1;  // d/dy: yy <- uy, xy <- ux, yz <- uz
+  e[2](2, 2) = 1;
+  e[2](4, 1) = 1;
+  e[2](5, 0) = 1;  // d/dz: zz <- uz, yz <- uy, zx <- ux
   // 1D integrals over [0, L] of linear hats s, t in {-1, +1}: value*value, value*slope, slope*slope.
   auto vv = [](double s, double t, double len) { return s == t ? len / 3 : len / 6; };
   auto vd = [](double, double t, double) { return 0.5 * t; };  // integral of phi_s phi_t' = t/2
@@ -285,10 +291,14 @@ fe::Matrix24 box_stiffness_closed_form(const Eigen::Vector3d& size, const fe::So
           for (int dir = 0; dir < 3; ++dir) {
             const double si = nat(i, dir), sj = nat(j, dir), len = size[dir];
             const bool di = dir == p, dj = dir == q;
-            if (di && dj) prod *= dd(si, sj, len);
-            else if (di) prod *= vd(sj, si, len);
-            else if (dj) prod *= vd(si, sj, len);
-            else prod *= vv(si, sj, len);
+            if (di && dj)
+              prod *= dd(si, sj, len);
+            else if (di)
+              prod *= vd(sj, si, len);
+            else if (dj)
+              prod *= vd(si, sj, len);
+            else
+              prod *= vv(si, sj, len);
           }
           integral(p, q) = prod;
         }

@@ -15,8 +15,9 @@ constexpr double kE = 2.1e11, kNu = 0.3, kRho = 7850.0, kL = 1.0, kA = 0.05;
 
 Model clamped_bar(int nx, int n_section, ElementType element) {
   HexBlockSpec b;
-  b.corners = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(kL, 0, 0), Eigen::Vector3d(kL, kA, 0), Eigen::Vector3d(0, kA, 0),
-               Eigen::Vector3d(0, 0, kA), Eigen::Vector3d(kL, 0, kA), Eigen::Vector3d(kL, kA, kA), Eigen::Vector3d(0, kA, kA)};
+  b.corners = {Eigen::Vector3d(0, 0, 0),    Eigen::Vector3d(kL, 0, 0), Eigen::Vector3d(kL, kA, 0),
+               Eigen::Vector3d(0, kA, 0),   Eigen::Vector3d(0, 0, kA), Eigen::Vector3d(kL, 0, kA),
+               Eigen::Vector3d(kL, kA, kA), Eigen::Vector3d(0, kA, kA)};
   b.nx = nx;
   b.ny = n_section;
   b.nz = n_section;

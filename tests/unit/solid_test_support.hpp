@@ -3,6 +3,7 @@
 // independent of mesh/ and assembly/). Units: SI.
 #pragma once
 #include <Eigen/Dense>
+
 #include <functional>
 #include <ostream>
 #include <stdexcept>
@@ -18,18 +19,19 @@ enum class SolidKind { hex8, hex8i, hex20 };
 
 inline std::string solid_kind_name(SolidKind kind) {
   switch (kind) {
-    case SolidKind::hex8: return "Hex8";
-    case SolidKind::hex8i: return "Hex8Incompatible";
-    case SolidKind::hex20: return "Hex20";
+    case SolidKind::hex8:
+      return "Hex8";
+    case SolidKind::hex8i:
+      return "Hex8Incompatible";
+    case SolidKind::hex20:
+      return "Hex20";
   }
   return "?";
 }
 
 inline int solid_kind_nodes(SolidKind kind) { return kind == SolidKind::hex20 ? 20 : 8; }
 
-inline fe::SolidMaterial steel_solid() {
-  return {.youngs_modulus = 2.0e11, .poisson_ratio = 0.3, .density = 7800.0};
-}
+inline fe::SolidMaterial steel_solid() { return {.youngs_modulus = 2.0e11, .poisson_ratio = 0.3, .density = 7800.0}; }
 
 // Natural coordinates of the hex20 nodes in Ansys/CalculiX order (the first 8 are the hex8's),
 // written out here from the documented convention rather than taken from the implementation.
@@ -58,9 +60,12 @@ inline fe::Hex20Coords hex20_from_corners(const fe::Hex8Coords& corners) {
 
 inline Eigen::MatrixXd solid_stiffness(SolidKind kind, const Eigen::MatrixXd& xyz, const fe::SolidMaterial& m) {
   switch (kind) {
-    case SolidKind::hex8: return fe::hex8_stiffness(fe::Hex8Coords(xyz), m);
-    case SolidKind::hex8i: return fe::hex8_incompatible_stiffness(fe::Hex8Coords(xyz), m);
-    case SolidKind::hex20: return fe::hex20_stiffness(fe::Hex20Coords(xyz), m);
+    case SolidKind::hex8:
+      return fe::hex8_stiffness(fe::Hex8Coords(xyz), m);
+    case SolidKind::hex8i:
+      return fe::hex8_incompatible_stiffness(fe::Hex8Coords(xyz), m);
+    case SolidKind::hex20:
+      return fe::hex20_stiffness(fe::Hex20Coords(xyz), m);
   }
   throw std::logic_error("unknown solid kind");
 }
@@ -85,8 +90,7 @@ struct LinearField3 {
   // Voigt (xx, yy, zz, xy, yz, zx), engineering shear.
   Eigen::Matrix<double, 6, 1> strain() const {
     Eigen::Matrix<double, 6, 1> e;
-    e << grad(0, 0), grad(1, 1), grad(2, 2), grad(0, 1) + grad(1, 0), grad(1, 2) + grad(2, 1),
-        grad(2, 0) + grad(0, 2);
+    e << grad(0, 0), grad(1, 1), grad(2, 2), grad(0, 1) + grad(1, 0), grad(1, 2) + grad(2, 1), grad(2, 0) + grad(0, 2);
     return e;
   }
 };
@@ -119,9 +123,9 @@ inline Eigen::MatrixXd rigid_body_modes_3d(const Eigen::MatrixXd& xyz) {
 // corners plus midedge_offset(i, j, k) (zero gives straight edges).
 struct HexGrid {
   int nx = 0, ny = 0, nz = 0;
-  Eigen::MatrixXd coords;                   // n_nodes x 3
-  std::vector<Eigen::Vector3i> lattice;     // lattice index of each node
-  std::vector<std::vector<int>> elements;   // node indices, Ansys/CalculiX order
+  Eigen::MatrixXd coords;                  // n_nodes x 3
+  std::vector<Eigen::Vector3i> lattice;    // lattice index of each node
+  std::vector<std::vector<int>> elements;  // node indices, Ansys/CalculiX order
   int n_dofs() const { return 3 * static_cast<int>(coords.rows()); }
   bool on_boundary(int node) const {
     const Eigen::Vector3i& l = lattice[static_cast<size_t>(node)];
@@ -230,7 +234,8 @@ inline Mesh mesh_from_grid(const HexGrid& grid, ElementType type) {
   const int nodes = nodes_per_element(type);
   block.conn.resize(static_cast<Eigen::Index>(grid.elements.size()), nodes);
   for (size_t e = 0; e < grid.elements.size(); ++e) {
-    for (int a = 0; a < nodes; ++a) block.conn(static_cast<Eigen::Index>(e), a) = grid.elements[e][static_cast<size_t>(a)];
+    for (int a = 0; a < nodes; ++a)
+      block.conn(static_cast<Eigen::Index>(e), a) = grid.elements[e][static_cast<size_t>(a)];
     block.ids.push_back(static_cast<long>(e) + 1);
   }
   mesh.blocks.push_back(std::move(block));

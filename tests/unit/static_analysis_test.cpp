@@ -1,6 +1,8 @@
 // Linear static analysis (analysis/static_analysis, assembly/): equilibrium of reactions and loads,
 // detection of rigid-body motions and mechanisms, symmetry and reciprocity of the assembled
 // stiffness, work-equivalent edge loads, and the monotone convergence of compliance.
+#include "analysis/static_analysis.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/static_analysis.hpp"
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
 #include "mesh/mapped_quad.hpp"
@@ -100,7 +101,8 @@ TEST(StaticEquilibrium, PrescribedEndDisplacementGivesTheUniaxialReactionEAEpsil
     EXPECT_NEAR(left, -expected, 1e-9 * expected) << element_name(type);
     // Lateral contraction -nu delta / L at the top edge.
     for (int n = 0; n < model.mesh.n_nodes(); ++n)
-      EXPECT_NEAR(sol.displacements(n, 1), -model.section.poisson_ratio * delta / length * model.mesh.coords(n, 1), 1e-12);
+      EXPECT_NEAR(sol.displacements(n, 1), -model.section.poisson_ratio * delta / length * model.mesh.coords(n, 1),
+                  1e-12);
   }
 }
 
@@ -280,8 +282,12 @@ TEST(StaticConvergence, CantileverComplianceGrowsMonotonicallyUnderNestedRefinem
 TEST(TimoshenkoTipDeflection, IsEulerBernoulliBendingPlusShearCompliance) {
   // L = 10 m, h = 1 m, t = 0.1 m, E = 200 GPa, nu = 0.25 (G = 80 GPa), k = 5/6, P = 100 kN:
   // P L^3 / 3EI = 1e8 / (3 * 2e11 * 0.1 / 12) = 0.02 m, P L / kGA = 1e6 / (5/6 * 8e10 * 0.1) = 1.5e-4 m.
-  const RectangularBeam beam{.length = 10.0, .height = 1.0, .thickness = 0.1, .youngs_modulus = 2.0e11,
-                             .poisson_ratio = 0.25, .shear_coefficient = 5.0 / 6.0};
+  const RectangularBeam beam{.length = 10.0,
+                             .height = 1.0,
+                             .thickness = 0.1,
+                             .youngs_modulus = 2.0e11,
+                             .poisson_ratio = 0.25,
+                             .shear_coefficient = 5.0 / 6.0};
   EXPECT_NEAR(euler_bernoulli_tip_deflection(beam, 1.0e5), 0.02, 1e-15);
   EXPECT_NEAR(timoshenko_tip_deflection(beam, 1.0e5), 0.02 + 1.5e-4, 1e-15);
   EXPECT_NEAR(timoshenko_tip_deflection(beam, -1.0e5), -(0.02 + 1.5e-4), 1e-15) << "linear in the load";

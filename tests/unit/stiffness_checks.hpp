@@ -1,15 +1,16 @@
 // Spectral checks shared by the element tests (plane and solid).
 #pragma once
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
-#include <Eigen/Dense>
 #include <cmath>
 
 namespace bb::test {
 
 // K is positive semi-definite with exactly `zero_modes` zero eigenvalues (below 1e-10 of the
 // largest), and the next eigenvalue is a genuine deformation mode above `separation` * largest.
-inline ::testing::AssertionResult has_exactly_zero_energy_modes(const Eigen::MatrixXd& k, int zero_modes, double separation) {
+inline ::testing::AssertionResult has_exactly_zero_energy_modes(const Eigen::MatrixXd& k, int zero_modes,
+                                                                double separation) {
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k);
   const Eigen::VectorXd lambda = eig.eigenvalues();  // ascending
   const double largest = lambda.maxCoeff();
@@ -17,7 +18,8 @@ inline ::testing::AssertionResult has_exactly_zero_energy_modes(const Eigen::Mat
   int zero = 0;
   for (Eigen::Index i = 0; i < lambda.size(); ++i) {
     if (lambda[i] < -1e-10 * largest)
-      return ::testing::AssertionFailure() << "negative eigenvalue " << i << " (" << lambda[i] << "): K is not semi-definite";
+      return ::testing::AssertionFailure()
+             << "negative eigenvalue " << i << " (" << lambda[i] << "): K is not semi-definite";
     if (std::abs(lambda[i]) < 1e-10 * largest) ++zero;
   }
   if (zero != zero_modes)

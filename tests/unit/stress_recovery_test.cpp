@@ -1,6 +1,8 @@
 // Stress recovery (fe/stress_recovery, assembly/stress_recovery): extrapolation from the integration
 // points to the nodes, averaging, invariants, and the whole static path (distributed load -> solve ->
 // recovery) on distorted patches, where every element must return the exact constant stress.
+#include "assembly/stress_recovery.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "analysis/static_analysis.hpp"
 #include "analysis/stress_tables.hpp"
-#include "assembly/stress_recovery.hpp"
 #include "fe/solid.hpp"
 #include "fe/stress_recovery.hpp"
 #include "mesh/hex_block.hpp"
@@ -41,22 +42,28 @@ TEST(StressExtrapolation, IsExactForTheDegreeItsPointsDetermine) {
   for (int a = 0; a < 4; ++a) EXPECT_NEAR(q4[a], f2(quad[a][0], quad[a][1]), 1e-12) << "q4 node " << a + 1;
 
   const Eigen::Matrix<double, 20, 3> nodes = test::hex20_natural_nodes();
-  auto f3 = [](double x, double y, double z) { return 2 + x - y + 0.5 * z + 0.3 * x * y - 0.2 * y * z + 0.1 * x * y * z; };
+  auto f3 = [](double x, double y, double z) {
+    return 2 + x - y + 0.5 * z + 0.3 * x * y - 0.2 * y * z + 0.1 * x * y * z;
+  };
   Eigen::Matrix<double, 8, 1> hex8_points;
   for (int k = 0, p = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i, ++p) hex8_points[p] = f3(i ? kG2 : -kG2, j ? kG2 : -kG2, k ? kG2 : -kG2);
   const Eigen::Matrix<double, 8, 1> hex8 = fe::hex8_extrapolation() * hex8_points;
-  for (int a = 0; a < 8; ++a) EXPECT_NEAR(hex8[a], f3(nodes(a, 0), nodes(a, 1), nodes(a, 2)), 1e-12) << "hex8 node " << a + 1;
+  for (int a = 0; a < 8; ++a)
+    EXPECT_NEAR(hex8[a], f3(nodes(a, 0), nodes(a, 1), nodes(a, 2)), 1e-12) << "hex8 node " << a + 1;
 
-  auto fq = [](double x, double y, double z) { return 1 + x * x - 2 * y * y * z + 0.5 * x * x * y * y * z * z + x * y * z; };
+  auto fq = [](double x, double y, double z) {
+    return 1 + x * x - 2 * y * y * z + 0.5 * x * x * y * y * z * z + x * y * z;
+  };
   const double g[3] = {-kG3, 0.0, kG3};
   Eigen::Matrix<double, 27, 1> hex20_points;
   for (int k = 0, p = 0; k < 3; ++k)
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i, ++p) hex20_points[p] = fq(g[i], g[j], g[k]);
   const Eigen::Matrix<double, 20, 1> hex20 = fe::hex20_extrapolation() * hex20_points;
-  for (int a = 0; a < 20; ++a) EXPECT_NEAR(hex20[a], fq(nodes(a, 0), nodes(a, 1), nodes(a, 2)), 1e-12) << "hex20 node " << a + 1;
+  for (int a = 0; a < 20; ++a)
+    EXPECT_NEAR(hex20[a], fq(nodes(a, 0), nodes(a, 1), nodes(a, 2)), 1e-12) << "hex20 node " << a + 1;
 }
 
 TEST(StressInvariants, VonMisesAndPrincipalStressesOfKnownStates) {
@@ -127,7 +134,8 @@ Mesh distorted_solid_mesh(ElementType type) {
   const int n = 2;
   const test::HexGrid grid = test::make_hex_grid(n, n, n, nodes, [&](int i, int j, int k) {
     Eigen::Vector3d x(0.5 * i / n, 0.4 * j / n, 0.3 * k / n);  // 1.0 x 0.8 x 0.6 box, lattice step 2 per element
-    const Eigen::Vector3d wobble(0.07 * std::sin(1.7 * j + 2.9 * k), 0.05 * std::cos(2.2 * i - 1.1 * k), 0.04 * std::sin(0.9 * i + 1.9 * j));
+    const Eigen::Vector3d wobble(0.07 * std::sin(1.7 * j + 2.9 * k), 0.05 * std::cos(2.2 * i - 1.1 * k),
+                                 0.04 * std::sin(0.9 * i + 1.9 * j));
     if (i > 0 && i < 2 * n) x.x() += wobble.x();
     if (j > 0 && j < 2 * n) x.y() += wobble.y();
     if (k > 0 && k < 2 * n) x.z() += wobble.z();
@@ -170,7 +178,8 @@ TEST_P(EveryElement, LinearFieldGivesTheExactConstantStressAtEveryNodeAndPoint) 
   const double scale = exact.norm();
   ASSERT_EQ(field.nodal.cols(), exact.size());
   for (int n = 0; n < mesh.n_nodes(); ++n) {
-    EXPECT_LT((field.nodal.row(n).transpose() - exact).norm(), 1e-9 * scale) << "node " << mesh.node_ids[static_cast<size_t>(n)];
+    EXPECT_LT((field.nodal.row(n).transpose() - exact).norm(), 1e-9 * scale)
+        << "node " << mesh.node_ids[static_cast<size_t>(n)];
     EXPECT_LT(field.scatter[n], 1e-9 * scale);
     EXPECT_GT(field.elements[n], 0);
   }
@@ -238,8 +247,13 @@ INSTANTIATE_TEST_SUITE_P(StressRecovery, EveryElement,
 TEST(StressRecovery, Hex8iBendingStressesIncludeTheIncompatibleModes) {
   const double length = 1.0, depth = 0.1, width = 0.1, curvature = 2e-3;  // kappa [1/m]
   HexBlockSpec block;
-  block.corners = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(length, 0, 0), Eigen::Vector3d(length, depth, 0), Eigen::Vector3d(0, depth, 0),
-                   Eigen::Vector3d(0, 0, width), Eigen::Vector3d(length, 0, width), Eigen::Vector3d(length, depth, width),
+  block.corners = {Eigen::Vector3d(0, 0, 0),
+                   Eigen::Vector3d(length, 0, 0),
+                   Eigen::Vector3d(length, depth, 0),
+                   Eigen::Vector3d(0, depth, 0),
+                   Eigen::Vector3d(0, 0, width),
+                   Eigen::Vector3d(length, 0, width),
+                   Eigen::Vector3d(length, depth, width),
                    Eigen::Vector3d(0, depth, width)};
   block.nx = 4;
   block.ny = 1;

@@ -2,6 +2,7 @@
 // Units: SI.
 #pragma once
 #include <Eigen/Dense>
+
 #include <algorithm>
 #include <initializer_list>
 #include <ostream>

@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <complex>
-#include <cstdlib>
 #include <cmath>
+#include <complex>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -75,16 +75,17 @@ TEST(TimeContact, TableXiiTransitionsOfThePredictorCorrectorSlider) {
     reached.push_back(r.state);
   }
   EXPECT_EQ(rows, 13);
-  for (const ContactState s : {ContactState::stick, ContactState::slip_positive, ContactState::slip_negative,
-                               ContactState::lift_off})
+  for (const ContactState s :
+       {ContactState::stick, ContactState::slip_positive, ContactState::slip_negative, ContactState::lift_off})
     EXPECT_NE(std::find(reached.begin(), reached.end(), s), reached.end()) << state_name(s);
 }
 
 TEST(TimeContact, ConsistentTangentIsTheDerivativeOfTheSlider) {
   const hbm::ContactElement c{.law = {.kn = 3e5, .kt = 1e6, .mu = 0.4, .n0 = 20.0},
-                              .tangential = Eigen::RowVector2d(1.0, 0.0), .normal = Eigen::RowVector2d(0.0, 1.0)};
-  for (const Eigen::Vector2d& q : {Eigen::Vector2d(2e-6, 1e-5), Eigen::Vector2d(3e-5, 1e-5), Eigen::Vector2d(-3e-5, -2e-5),
-                                  Eigen::Vector2d(1e-5, -1e-4)}) {
+                              .tangential = Eigen::RowVector2d(1.0, 0.0),
+                              .normal = Eigen::RowVector2d(0.0, 1.0)};
+  for (const Eigen::Vector2d& q : {Eigen::Vector2d(2e-6, 1e-5), Eigen::Vector2d(3e-5, 1e-5),
+                                   Eigen::Vector2d(-3e-5, -2e-5), Eigen::Vector2d(1e-5, -1e-4)}) {
     const ContactSample s = contact_step(c, 0.0, q);
     const ContactTangent d = contact_tangent(c, s);
     const double h = 1e-12;
@@ -106,7 +107,8 @@ struct Oscillator {
     mo.mass = MatrixXd::Constant(1, 1, m);
     mo.damping = MatrixXd::Constant(1, 1, c());
     mo.stiffness = MatrixXd::Constant(1, 1, k);
-    mo.contacts.push_back({.law = law, .tangential = Eigen::RowVectorXd::Ones(1), .normal = Eigen::RowVectorXd::Zero(1)});
+    mo.contacts.push_back(
+        {.law = law, .tangential = Eigen::RowVectorXd::Ones(1), .normal = Eigen::RowVectorXd::Zero(1)});
     mo.harmonic_load = Eigen::VectorXcd::Constant(1, force);
     return mo;
   }
@@ -139,10 +141,11 @@ TEST(TimeContact, FrictionOscillatorSteadyStateMatchesHarmonicBalanceAndBalances
     const double a = s.amplitude(0, 1);
     const double area = loop_area(s.contacts[0]);
     const double balance = s.cycle_work.excitation - s.cycle_work.viscous;
-    std::printf("  omega %5.1f: A1 time %.6e m, HBM(H=7) %.6e m, diff %+.2e; %d periods, max %d Newton it.; "
-                "loop area %.6e J, W_ext - W_visc %.6e J (rel %.1e), A3/A1 %.3f\n",
-                omega, a, hbm, a / hbm - 1.0, s.cycles, s.max_iterations, area, balance,
-                std::abs(area - balance) / area, s.amplitude(0, 3) / a);
+    std::printf(
+        "  omega %5.1f: A1 time %.6e m, HBM(H=7) %.6e m, diff %+.2e; %d periods, max %d Newton it.; "
+        "loop area %.6e J, W_ext - W_visc %.6e J (rel %.1e), A3/A1 %.3f\n",
+        omega, a, hbm, a / hbm - 1.0, s.cycles, s.max_iterations, area, balance, std::abs(area - balance) / area,
+        s.amplitude(0, 3) / a);
     EXPECT_NEAR(a, hbm, 0.01 * hbm);
     EXPECT_NEAR(s.cycle_work.friction, area, 1e-12 * area);
     EXPECT_GT(area, 0.0);
@@ -160,7 +163,8 @@ TEST(TimeContact, FrictionOscillatorAmplitudeConvergesWithStepsPerPeriod) {
   double previous = 0.0;
   for (const int n : {64, 128, 256, 512}) {
     const double e = std::abs(oscillator_steady_state(o, omega, n).amplitude(0, 1) - reference);
-    if (previous > 0.0) std::printf("  %4d steps/period: |A1 - A1(4096)| = %.3e m, order %.2f\n", n, e, std::log2(previous / e));
+    if (previous > 0.0)
+      std::printf("  %4d steps/period: |A1 - A1(4096)| = %.3e m, order %.2f\n", n, e, std::log2(previous / e));
     previous = e;
   }
   EXPECT_LT(previous, 1e-3 * reference);
@@ -185,8 +189,14 @@ TEST(TimeContact, StuckLoopIsALineOfSlopeKt) {
     EXPECT_EQ(p.state, ContactState::stick);
     EXPECT_EQ(p.slider, loop.front().slider);
     off_line = std::max(off_line, std::abs(p.tangential - o.law.kt * (p.u - p.slider)));
-    if (p.u < umin) { umin = p.u; tmin = p.tangential; }
-    if (p.u > umax) { umax = p.u; tmax = p.tangential; }
+    if (p.u < umin) {
+      umin = p.u;
+      tmin = p.tangential;
+    }
+    if (p.u > umax) {
+      umax = p.u;
+      tmax = p.tangential;
+    }
   }
   EXPECT_NEAR((tmax - tmin) / (umax - umin), o.law.kt, 1e-9 * o.law.kt);
   EXPECT_LT(off_line, 1e-12);
@@ -237,7 +247,8 @@ hbm::HbmModel blade_on_ground(double force) {
   m.stiffness << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = Eigen::Vector3d(1.0, 0.4, 0.3).asDiagonal();
   m.damping = modal_damping_matrix(m.stiffness, m.mass, 0.02);
-  m.contacts.push_back({.law = {.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0}, .tangential = unit_row(3, 1),
+  m.contacts.push_back({.law = {.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0},
+                        .tangential = unit_row(3, 1),
                         .normal = unit_row(3, 2)});
   m.static_load = Eigen::Vector3d::Zero();
   m.harmonic_load = Eigen::VectorXcd::Zero(3);
@@ -255,16 +266,17 @@ TEST(TimeContact, MultiDofVariableNormalLoadMatchesHarmonicBalance) {
       const hbm::HbmSolution h = hbm::solve_at_frequency(system, omega);
       ASSERT_TRUE(h.converged) << h.failure;
       const MatrixXd q = system.recover(h.x, omega);
-      const SteadyState s = steady_state(
-          m, omega, {.dofs = {0, 1, 2}, .steps_per_period = 512, .harmonics = 7, .tolerance = 1e-8});
+      const SteadyState s =
+          steady_state(m, omega, {.dofs = {0, 1, 2}, .steps_per_period = 512, .harmonics = 7, .tolerance = 1e-8});
       ASSERT_TRUE(s.converged) << s.failure;
       const double e = (s.coefficients.middleCols(1, 2) - q.middleCols(1, 2)).norm() / q.middleCols(1, 2).norm();
       int slipping = 0;
       for (const ContactSample& p : s.contacts[0])
         slipping += p.state == ContactState::slip_positive || p.state == ContactState::slip_negative;
-      std::printf("  F %5.1f N, omega %6.0f: |first harmonics time - HBM| / |HBM| = %.2e, %d of %zu samples slip, "
-                  "%d periods, max %d Newton it.\n",
-                  force, omega, e, slipping, s.contacts[0].size(), s.cycles, s.max_iterations);
+      std::printf(
+          "  F %5.1f N, omega %6.0f: |first harmonics time - HBM| / |HBM| = %.2e, %d of %zu samples slip, "
+          "%d periods, max %d Newton it.\n",
+          force, omega, e, slipping, s.contacts[0].size(), s.cycles, s.max_iterations);
       EXPECT_LT(e, 0.01);
       EXPECT_NEAR(s.cycle_work.excitation - s.cycle_work.viscous, s.cycle_work.friction + s.cycle_work.normal,
                   1e-6 * s.cycle_work.excitation);
@@ -280,12 +292,14 @@ hbm::HbmModel blade_with_damper(double force) {
   m.stiffness.topLeftCorner(3, 3) << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = (VectorXd(5) << 1.0, 0.4, 0.3, 0.05, 0.05).finished().asDiagonal();
   m.damping = MatrixXd::Zero(5, 5);
-  m.damping.topLeftCorner(3, 3) = modal_damping_matrix(m.stiffness.topLeftCorner(3, 3), m.mass.topLeftCorner(3, 3), 0.01);
+  m.damping.topLeftCorner(3, 3) =
+      modal_damping_matrix(m.stiffness.topLeftCorner(3, 3), m.mass.topLeftCorner(3, 3), 0.01);
   // Unlike the HBM test, the damper gets a little damping of its own (1% of critical on its contact
   // springs): undamped damper modes make the transient from rest last thousands of periods.
   m.damping(3, 3) = m.damping(4, 4) = 2.0 * 0.01 * std::sqrt(2.0e6 * 0.05);
   const contact::JenkinsParameters law{.kn = 2.0e6, .kt = 1.0e6, .mu = 0.4, .n0 = 0.0};
-  m.contacts.push_back({.law = law, .tangential = unit_row(5, 1) - unit_row(5, 3), .normal = unit_row(5, 4) - unit_row(5, 2)});
+  m.contacts.push_back(
+      {.law = law, .tangential = unit_row(5, 1) - unit_row(5, 3), .normal = unit_row(5, 4) - unit_row(5, 2)});
   m.contacts.push_back({.law = law, .tangential = unit_row(5, 3), .normal = unit_row(5, 4)});
   m.static_load = VectorXd::Zero(5);
   m.static_load[4] = 40.0;
@@ -308,8 +322,12 @@ TEST(TimeContact, DamperHeldOnlyByFrictionMatchesHarmonicBalance) {
     const hbm::HbmModel m = blade_with_damper(force);
     const hbm::HarmonicBalance system(m, {.harmonics = 7, .tolerance = 1e-10});
     for (const double omega : {700.0, 1000.0, 1300.0, 1800.0}) {
-      SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4}, .steps_per_period = 256, .harmonics = 7, .tolerance = 1e-8,
-                             .ignore_drift = true, .max_cycles = 400};
+      SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4},
+                             .steps_per_period = 256,
+                             .harmonics = 7,
+                             .tolerance = 1e-8,
+                             .ignore_drift = true,
+                             .max_cycles = 400};
       opt.initial.friction = StaticFriction::stuck_at_offset;
       const SteadyState s = steady_state(m, omega, opt);
       ASSERT_TRUE(s.final_state.displacement.allFinite());
@@ -319,16 +337,18 @@ TEST(TimeContact, DamperHeldOnlyByFrictionMatchesHarmonicBalance) {
       }
       const hbm::HbmSolution h = hbm::solve_at_frequency(system, omega);
       if (!h.converged) {
-        std::printf("  damper F %5.1f N, omega %6.0f: HBM not converged (%s); time A1(q1) %.4e m, damper drift %.2e "
-                    "m/period\n",
-                    force, omega, h.failure.c_str(), s.amplitude(1, 1), s.drift[3]);
+        std::printf(
+            "  damper F %5.1f N, omega %6.0f: HBM not converged (%s); time A1(q1) %.4e m, damper drift %.2e "
+            "m/period\n",
+            force, omega, h.failure.c_str(), s.amplitude(1, 1), s.drift[3]);
         continue;
       }
       const MatrixXd q = system.recover(h.x, omega);
       const double e = (s.coefficients.middleCols(1, 2) - q.middleCols(1, 2)).norm() / q.middleCols(1, 2).norm();
-      std::printf("  damper F %5.1f N, omega %6.0f: |first harmonics time - HBM| / |HBM| = %.2e, %d periods, max %d "
-                  "Newton it., damper drift %.2e m/period\n",
-                  force, omega, e, s.cycles, s.max_iterations, s.drift[3]);
+      std::printf(
+          "  damper F %5.1f N, omega %6.0f: |first harmonics time - HBM| / |HBM| = %.2e, %d periods, max %d "
+          "Newton it., damper drift %.2e m/period\n",
+          force, omega, e, s.cycles, s.max_iterations, s.drift[3]);
       ++compared;
       EXPECT_LT(e, 0.01);
     }
@@ -340,8 +360,12 @@ TEST(TimeContact, WalkingDamperIsReportedAsDriftNotAsASteadyState) {
   // F = 20 N at 1300 rad/s: the oscillation becomes periodic while the damper's mean position moves
   // by the same amount every period (ratcheting). Without ignore_drift the run must say so.
   const hbm::HbmModel m = blade_with_damper(20.0);
-  SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4}, .steps_per_period = 256, .harmonics = 3, .tolerance = 1e-8,
-                         .min_cycles = 2, .max_cycles = 300};
+  SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4},
+                         .steps_per_period = 256,
+                         .harmonics = 3,
+                         .tolerance = 1e-8,
+                         .min_cycles = 2,
+                         .max_cycles = 300};
   opt.initial.friction = StaticFriction::stuck_at_offset;
   const SteadyState walking = steady_state(m, 1300.0, opt);
   EXPECT_FALSE(walking.converged);
@@ -362,7 +386,8 @@ hbm::HbmModel platform(double static_normal, double normal_force) {
   m.stiffness = Eigen::Vector2d(1e4, 1e4).asDiagonal();
   m.damping = 2.0 * 0.02 * std::sqrt(1e4 * 0.5) * MatrixXd::Identity(2, 2);
   m.contacts.push_back({.law = {.kn = 1e5, .kt = 1e4, .mu = 0.5, .n0 = 2.0},
-                        .tangential = Eigen::RowVector2d(1.0, 0.0), .normal = Eigen::RowVector2d(0.0, 1.0)});
+                        .tangential = Eigen::RowVector2d(1.0, 0.0),
+                        .normal = Eigen::RowVector2d(0.0, 1.0)});
   m.static_load = Eigen::Vector2d(0.0, static_normal);
   m.harmonic_load = Eigen::Vector2cd(1.0, normal_force);
   return m;
@@ -395,10 +420,11 @@ TEST(TimeContact, SeparatedContactCarriesNoForce) {
       ++closed;
     }
   }
-  std::printf("  partial separation: %d samples open, %d closed, %d periods, loop area %.3e J, "
-              "W_ext - W_visc - W_normal %.3e J\n",
-              opened, closed, partial.cycles, loop_area(partial.contacts[0]),
-              partial.cycle_work.excitation - partial.cycle_work.viscous - partial.cycle_work.normal);
+  std::printf(
+      "  partial separation: %d samples open, %d closed, %d periods, loop area %.3e J, "
+      "W_ext - W_visc - W_normal %.3e J\n",
+      opened, closed, partial.cycles, loop_area(partial.contacts[0]),
+      partial.cycle_work.excitation - partial.cycle_work.viscous - partial.cycle_work.normal);
   EXPECT_GT(opened, 5);
   EXPECT_GT(closed, 5);
 }
@@ -415,10 +441,10 @@ TEST(TimeContact, StiffContactNeedsNoSmallerStepThanAccuracyAsks) {
     const SteadyState s = steady_state(o.model(), 110.0, opt);
     ASSERT_TRUE(s.converged) << s.failure;
     const double hbm = o.hbm_amplitude(110.0, 7);
-    std::printf("  kt 1e9, alpha %+.1f, 64 steps/period: A1 %.5e (HBM %.5e, %+.2e), %d periods, %ld Newton "
-                "iterations, max %d per step\n",
-                alpha, s.amplitude(0, 1), hbm, s.amplitude(0, 1) / hbm - 1.0, s.cycles, s.total_iterations,
-                s.max_iterations);
+    std::printf(
+        "  kt 1e9, alpha %+.1f, 64 steps/period: A1 %.5e (HBM %.5e, %+.2e), %d periods, %ld Newton "
+        "iterations, max %d per step\n",
+        alpha, s.amplitude(0, 1), hbm, s.amplitude(0, 1) / hbm - 1.0, s.cycles, s.total_iterations, s.max_iterations);
     EXPECT_LE(s.max_iterations, 10);
     EXPECT_NEAR(s.amplitude(0, 1), hbm, 0.02 * hbm);
   }
@@ -463,7 +489,8 @@ BladesAndDamper blades_and_damper() {
   m.damping = 1e-5 * sys.stiffness;
   for (Eigen::Index c = 0; c < kin.tangential.rows(); ++c)
     m.contacts.push_back({.law = {.kn = 2e7, .kt = 2e7, .mu = 0.3, .n0 = 0.0},
-                          .tangential = kin.tangential.row(c), .normal = kin.normal.row(c)});
+                          .tangential = kin.tangential.row(c),
+                          .normal = kin.normal.row(c)});
   m.static_load = damper::centrifugal_load(nb, 300.0);
   m.harmonic_load = Eigen::VectorXcd::Zero(nb + 3);
   m.harmonic_load[0] = 200.0;  // on the platform point under L1
@@ -499,11 +526,13 @@ TEST(TimeContact, ThirtyOneDofBladesAndDamperRunReportsIterationsAndCost) {
   ASSERT_TRUE(h.converged) << h.failure;
   int slipping = 0;
   for (const auto& history : h.contacts)
-    for (const ContactSample& p : history) slipping += p.state == ContactState::slip_positive || p.state == ContactState::slip_negative;
-  std::printf("  31 DOF, %zu contact DOFs, %d steps: %ld Newton iterations (max %d per step), %d contact-samples "
-              "slipping, %.2f us per step\n",
-              integrator.contact_dofs().size(), h.steps, h.total_iterations, h.max_iterations, slipping,
-              1e6 * seconds / h.steps);
+    for (const ContactSample& p : history)
+      slipping += p.state == ContactState::slip_positive || p.state == ContactState::slip_negative;
+  std::printf(
+      "  31 DOF, %zu contact DOFs, %d steps: %ld Newton iterations (max %d per step), %d contact-samples "
+      "slipping, %.2f us per step\n",
+      integrator.contact_dofs().size(), h.steps, h.total_iterations, h.max_iterations, slipping,
+      1e6 * seconds / h.steps);
   EXPECT_EQ(h.steps, steps);
   EXPECT_GT(slipping, 0);
   EXPECT_LE(h.max_iterations, 15);

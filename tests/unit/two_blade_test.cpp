@@ -2,6 +2,8 @@
 // mesh is one conforming body glued only where the thesis glues it, it fills exactly the volume
 // of the bodies, the named points are nodes, impossible geometry is rejected by name, and the two
 // identical blades give near-degenerate pairs of modes. Units: SI.
+#include "articles/two_blade.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,14 +21,13 @@
 
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
-#include "articles/two_blade.hpp"
 #include "cases/case_spec.hpp"
-#include "model/build_model.hpp"
 #include "common/errors.hpp"
 #include "fe/solid.hpp"
 #include "mesh/hex_block.hpp"
-#include "test_support.hpp"
+#include "model/build_model.hpp"
 #include "temp_folder.hpp"
+#include "test_support.hpp"
 
 namespace bb {
 namespace {
@@ -78,7 +79,12 @@ TwoBladeDimensions unusual_dimensions() {
 
 // Hex8 faces by corner (0-based), ordered so that the right-hand normal points out of the element.
 constexpr std::array<std::array<int, 4>, 6> kFaces = {{
-    {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7},
+    {0, 3, 2, 1},
+    {4, 5, 6, 7},
+    {0, 1, 5, 4},
+    {1, 2, 6, 5},
+    {2, 3, 7, 6},
+    {3, 0, 4, 7},
 }};
 
 bool inside_convex_quad(const std::array<Vec2, 4>& q, const Vec2& p) {
@@ -123,7 +129,8 @@ TEST(TwoBladeMesh, IsOneConnectedBodyOfConformingElements) {
       }
     std::vector<std::array<Vec2, 4>> footprint;
     for (const HexBlockSpec& b : m.article.blocks)
-      footprint.push_back({b.corners[0].head<2>(), b.corners[1].head<2>(), b.corners[2].head<2>(), b.corners[3].head<2>()});
+      footprint.push_back(
+          {b.corners[0].head<2>(), b.corners[1].head<2>(), b.corners[2].head<2>(), b.corners[3].head<2>()});
     int surface = 0;
     for (const auto& [key, n] : count) {
       ASSERT_LE(n, 2);
@@ -131,7 +138,8 @@ TEST(TwoBladeMesh, IsOneConnectedBodyOfConformingElements) {
       ++surface;
       const auto [e, f] = owner[key];
       std::array<Vec3, 4> x;
-      for (size_t a = 0; a < 4; ++a) x[a] = m.mesh.coords.row(block.conn(e, kFaces[static_cast<size_t>(f)][a])).transpose();
+      for (size_t a = 0; a < 4; ++a)
+        x[a] = m.mesh.coords.row(block.conn(e, kFaces[static_cast<size_t>(f)][a])).transpose();
       const Vec3 centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
       const Vec3 normal = (x[2] - x[0]).cross(x[3] - x[1]).normalized();
       if (std::abs(normal.z()) > 0.5) {
@@ -183,7 +191,7 @@ TEST(TwoBladeMesh, NeckIsNotGluedToTheArmsOnlyRootShouldersWedgesAndFloorAre) {
     EXPECT_EQ(shared.size(), 6u);  // each blade with its wedge and the fixture, each wedge with the fixture
     for (auto [blade, wedge] : {std::pair{B::blade1, B::wedge1}, std::pair{B::blade2, B::wedge2}}) {
       EXPECT_EQ((shared[{blade, B::fixture}]), 2 * face_nodes(1));  // two shoulders of one division
-      EXPECT_EQ((shared[{blade, wedge}]), face_nodes(6));          // root bottom, 1 + 1 + 2 + 1 + 1 divisions
+      EXPECT_EQ((shared[{blade, wedge}]), face_nodes(6));           // root bottom, 1 + 1 + 2 + 1 + 1 divisions
       EXPECT_EQ((shared[{wedge, B::fixture}]), face_nodes(6));
     }
     // Nothing at all inside the slot clearance, and the neck faces inside the slot are blade only.
@@ -217,12 +225,13 @@ TEST(TwoBladeMesh, FillsTheAnalyticVolumeOfEachBody) {
     std::map<TwoBladeBody, double> volume;
     for (size_t k = 0; k < a.blocks.size(); ++k) {
       const Mesh part = generate_hex_block(a.blocks[k]);
-      for (Eigen::Index e = 0; e < part.blocks[0].conn.rows(); ++e) volume[a.body[k]] += element_volume(part, part.blocks[0], e);
+      for (Eigen::Index e = 0; e < part.blocks[0].conn.rows(); ++e)
+        volume[a.body[k]] += element_volume(part, part.blocks[0], e);
     }
     // Cross-sections (the article is an extrusion over t), written from the dimensions alone.
     const double c = 0.5 * (d.B_p - d.w_n) * std::tan(d.beta_deg * std::numbers::pi / 180.0);
-    const double blade = d.B_r * d.H_r + d.w_n * d.H_n + 0.5 * (d.B_p + d.w_n) * c + d.B_p * d.e_p +
-                         0.5 * (d.w + d.w_t) * d.L_a;
+    const double blade =
+        d.B_r * d.H_r + d.w_n * d.H_n + 0.5 * (d.B_p + d.w_n) * c + d.B_p * d.e_p + 0.5 * (d.w + d.w_t) * d.L_a;
     const double wedge = d.B_r * d.h_w;
     const double width = (d.p + d.B_r + 2 * (d.g_r + d.m_f)), height = d.t_fb + d.h_w + d.H_r + d.t_a;
     const double fixture = width * height - 2 * ((d.B_r + 2 * d.g_r) * (d.h_w + d.H_r) + (d.w_n + 2 * d.g_s) * d.t_a);
@@ -244,7 +253,8 @@ nu = 0.33
 rho = 7730.0
 [mesh]
 kind = "two_blade"
-)" + mesh_lines + R"(
+)" + mesh_lines +
+         R"(
 [[bc]]
 set = "fixture_base"
 dofs = ["x", "y", "z"]
@@ -283,9 +293,8 @@ TEST_F(TwoBladeCase, AutomaticNodeSetsSitAtTheNamedPointsAndFaces) {
   const Model model = build_model(spec.model);
   const TwoBladeDimensions d;  // nominal: the points of the reconstruction, worked out by hand
   const std::map<std::string, Vec3> expected = {
-      {"T1", {0.0175, 0.2200, 0.025}},       {"T2", {0.0675, 0.2200, 0.025}},
-      {"F", {0.0702, 0.102625, 0.025}},      {"L1", {0.025625, 0.034125, 0.025}},
-      {"L2", {0.031875, 0.040375, 0.025}},   {"R", {0.05625, 0.03725, 0.025}},
+      {"T1", {0.0175, 0.2200, 0.025}},     {"T2", {0.0675, 0.2200, 0.025}},     {"F", {0.0702, 0.102625, 0.025}},
+      {"L1", {0.025625, 0.034125, 0.025}}, {"L2", {0.031875, 0.040375, 0.025}}, {"R", {0.05625, 0.03725, 0.025}},
   };
   for (const auto& [name, x] : expected) {
     ASSERT_TRUE(model.node_sets.count(name)) << name;
@@ -310,7 +319,8 @@ TEST_F(TwoBladeCase, AutomaticNodeSetsSitAtTheNamedPointsAndFaces) {
 TEST_F(TwoBladeCase, IdenticalBladesGiveNearDegeneratePairsInPhaseAndOutOfPhase) {
   const CaseSpec spec = parse_case_file(write(article_case("element = \"hex8i\"\nrefinement = 1\n")));
   const Model model = build_model(spec.model);
-  const ModalResult modal = solve_modal(model, std::get<ModalSpec>(spec.analysis).modes, std::get<ModalSpec>(spec.analysis).options);
+  const ModalResult modal =
+      solve_modal(model, std::get<ModalSpec>(spec.analysis).modes, std::get<ModalSpec>(spec.analysis).options);
   ASSERT_EQ(modal.frequencies_hz.size(), 4);
   const Eigen::VectorXd& f = modal.frequencies_hz;
   EXPECT_LT(f[1] / f[0] - 1.0, 0.01);  // first flexure of the two blades
@@ -338,27 +348,35 @@ TEST(TwoBladeDimensions, ValidateNamesTheDimensionThatMakesTheGeometryImpossible
     return std::string("(accepted)");
   };
   EXPECT_EQ(offender([](auto&) {}), "(accepted)");
-  EXPECT_EQ(offender([](auto& d) { d.H_n = d.t_a; }), "H_n");          // platform inside the arms
-  EXPECT_EQ(offender([](auto& d) { d.w = d.B_p + 0.001; }), "w");      // airfoil wider than the platform
-  EXPECT_EQ(offender([](auto& d) { d.p = d.B_p; }), "p");              // platforms overlap
-  EXPECT_EQ(offender([](auto& d) { d.p = 0.04; }), "p");               // no wall between the cavities
+  EXPECT_EQ(offender([](auto& d) { d.H_n = d.t_a; }), "H_n");      // platform inside the arms
+  EXPECT_EQ(offender([](auto& d) { d.w = d.B_p + 0.001; }), "w");  // airfoil wider than the platform
+  EXPECT_EQ(offender([](auto& d) { d.p = d.B_p; }), "p");          // platforms overlap
+  EXPECT_EQ(offender([](auto& d) { d.p = 0.04; }), "p");           // no wall between the cavities
   EXPECT_EQ(offender([](auto& d) { d.B_p = d.w_n; }), "B_p");
   EXPECT_EQ(offender([](auto& d) { d.L_a = -0.1; }), "L_a");
   EXPECT_EQ(offender([](auto& d) { d.t = 0.0; }), "t");
   EXPECT_EQ(offender([](auto& d) { d.m_f = NAN; }), "m_f");
-  EXPECT_EQ(offender([](auto& d) { d.g_s = 1e-8; }), "g_s");           // would close when merging
-  EXPECT_EQ(offender([](auto& d) { d.x_n1 = 0.033; }), "x_n1");        // no right shoulder
-  EXPECT_EQ(offender([](auto& d) { d.w_n = 0.02; }), "w_n");           // no left shoulder
+  EXPECT_EQ(offender([](auto& d) { d.g_s = 1e-8; }), "g_s");     // would close when merging
+  EXPECT_EQ(offender([](auto& d) { d.x_n1 = 0.033; }), "x_n1");  // no right shoulder
+  EXPECT_EQ(offender([](auto& d) { d.w_n = 0.02; }), "w_n");     // no left shoulder
   EXPECT_EQ(offender([](auto& d) { d.beta_deg = 90.0; }), "beta_deg");
   EXPECT_EQ(offender([](auto& d) { d.w_t = -0.001; }), "w_t");
   EXPECT_EQ(offender([](auto& d) { d.airfoil_divisions = 7; }), "airfoil_divisions");  // F off the nodes
   EXPECT_EQ(offender([](auto& d) { d.thickness_divisions = 3; }), "thickness_divisions");
   EXPECT_EQ(offender([](auto& d) { d.refinement = 0; }), "refinement");
-  EXPECT_THROW(two_blade_article([] { TwoBladeDimensions d; d.H_n = 0.005; return d; }(), ElementType::hex20), InputError);
+  EXPECT_THROW(two_blade_article(
+                   [] {
+                     TwoBladeDimensions d;
+                     d.H_n = 0.005;
+                     return d;
+                   }(),
+                   ElementType::hex20),
+               InputError);
 }
 
 TEST_F(TwoBladeCase, DimensionsTableSetsAnySubsetAndRejectsUnknownNamesAndImpossibleValues) {
-  const CaseSpec spec = parse_case_file(write(article_case("element = \"hex20\"\nrefinement = 3\n[mesh.dimensions]\nL_a = 0.15\nw = 0.006\n")));
+  const CaseSpec spec = parse_case_file(
+      write(article_case("element = \"hex20\"\nrefinement = 3\n[mesh.dimensions]\nL_a = 0.15\nw = 0.006\n")));
   ASSERT_EQ(spec.model.mesh.kind, MeshSpec::Kind::two_blade);
   EXPECT_EQ(spec.model.mesh.two_blade.L_a, 0.15);
   EXPECT_EQ(spec.model.mesh.two_blade.w, 0.006);

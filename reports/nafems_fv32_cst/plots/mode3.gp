@@ -1,0 +1,9 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'mode3.svg'
+set title 'Mode 3: 162.7070 Hz (displacements x 69.1)'
+set size ratio -1
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+set key outside right
+plot 'mode3.dat' index 0 with lines lc rgb '#999999' dt 2 title 'undeformed', \
+     'mode3.dat' index 1 with lines lc rgb '#1f5fbf' lw 1.5 title 'deformed'

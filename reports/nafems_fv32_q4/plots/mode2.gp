@@ -1,0 +1,9 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'mode2.svg'
+set title 'Mode 2: 130.1471 Hz (displacements x 39)'
+set size ratio -1
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+set key outside right
+plot 'mode2.dat' index 0 with lines lc rgb '#999999' dt 2 title 'undeformed', \
+     'mode2.dat' index 1 with lines lc rgb '#1f5fbf' lw 1.5 title 'deformed'

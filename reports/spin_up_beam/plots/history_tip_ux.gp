@@ -1,0 +1,8 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'history_tip_ux.svg'
+set title 'Node set ''tip'': x displacement in the rotating frame (spin-up to 6 rad/s in 15 s)'
+set xlabel 'time [s]'
+set ylabel 'u_x [m]'
+set grid
+set key bottom right
+plot 'history_tip_ux.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_x', 0.000514285714282 with lines dt 2 lc rgb '#bf1f1f' title 'steady centrifugal deflection'

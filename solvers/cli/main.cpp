@@ -90,6 +90,23 @@ struct ValidateArgs {
   bool study = false, no_plots = false;
 };
 
+// "3 passed", "1 failed", "2 bad input": a status as the final line of validate says it.
+std::string status_verb(bb::RunStatus status) {
+  switch (status) {
+    case bb::RunStatus::pass:
+      return "passed";
+    case bb::RunStatus::fail:
+      return "failed";
+    case bb::RunStatus::no_checks:
+      return "without checks";
+    case bb::RunStatus::bad_input:
+      return "bad input";
+    case bb::RunStatus::solver_failed:
+      return "solver failed";
+  }
+  return "?";
+}
+
 int validate_command(const ValidateArgs& a) {
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(a.dir))
@@ -127,7 +144,14 @@ int validate_command(const ValidateArgs& a) {
     rc = std::max(rc, code);
   }
   bb::write_index_md(index, fs::path(a.out) / "index.md");
-  std::fprintf(stderr, "%zu cases, index: %s\n", files.size(), (fs::path(a.out) / "index.md").string().c_str());
+  // The verdict a CI log is read for: every status that occurred, in the enum's order.
+  std::map<bb::RunStatus, int> by_status;
+  for (const bb::IndexEntry& e : index) ++by_status[e.status];
+  std::string verdict;
+  for (const auto& [status, count] : by_status)
+    verdict += fmt::format("{}{} {}", verdict.empty() ? "" : ", ", count, status_verb(status));
+  std::fprintf(stderr, "%zu cases: %s; index: %s\n", files.size(), verdict.c_str(),
+               (fs::path(a.out) / "index.md").string().c_str());
   return rc;
 }
 

@@ -8,17 +8,11 @@
 #include "assembly/sparsity.hpp"
 #include "common/errors.hpp"
 #include "fe/solid.hpp"
+#include "mesh/element_coords.hpp"
 #include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
-
-template <int N, int D>
-Eigen::Matrix<double, N, D> element_coords(const Mesh& mesh, const int* nodes) {
-  Eigen::Matrix<double, N, D> xyz;
-  for (int a = 0; a < N; ++a) xyz.row(a) = mesh.coords.row(nodes[a]).template head<D>();
-  return xyz;
-}
 
 template <int N, int D, typename Props, typename StiffFn, typename MassFn>
 void assemble_block(const Mesh& mesh, const ElementBlock& block, const Props& props, const NodalPattern& pattern,

@@ -8,16 +8,10 @@
 #include "common/errors.hpp"
 #include "fe/initial_stress.hpp"
 #include "fe/solid.hpp"
+#include "mesh/element_coords.hpp"
 
 namespace bb::ffrf {
 namespace {
-
-template <int N, int D>
-Eigen::Matrix<double, N, D> element_coords(const Mesh& mesh, const int* nodes) {
-  Eigen::Matrix<double, N, D> xyz;
-  for (int a = 0; a < N; ++a) xyz.row(a) = mesh.coords.row(nodes[a]).template head<D>();
-  return xyz;
-}
 
 template <int N, int D>
 Eigen::Matrix<double, N * D, 1> element_displacement(const Eigen::VectorXd& u, const int* nodes) {

@@ -101,7 +101,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()),
                          static_cast<double>(level.path.corrector_iterations),
                          static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
-                         static_cast<double>(level.path.jumps), level.path.converged ? 1.0 : 0.0, level.seconds});
+                         static_cast<double>(level.path.jumps), level.path.converged ? 1.0 : 0.0,
+                         static_cast<double>(level.samples), level.seconds});
   }
   std::vector<std::string> peak_columns = {"level", "fe_n"};
   if (spec.damper) peak_columns.push_back("cf_over_fe");
@@ -125,8 +126,25 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   o.tables.emplace("contact_states", std::move(states));
   o.tables.emplace("sweep_cost", table_from_rows("sweep_cost",
                                                  {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
-                                                  "turning_points", "jumps", "reached_end", "seconds"},
+                                                  "turning_points", "jumps", "reached_end", "samples", "seconds"},
                                                  cost_rows));
+}
+
+// aft_sampling: with aft_tolerance, every sweep each level took on the way to its samples.
+void add_sampling_table(HbmOutcome& o) {
+  std::vector<std::vector<double>> rows;
+  for (size_t l = 0; l < o.levels.size(); ++l) {
+    const auto& trials = o.levels[l].sampling_trials;
+    for (size_t t = 0; t < trials.size(); ++t)
+      rows.push_back({static_cast<double>(rows.size() + 1), static_cast<double>(l + 1), o.levels[l].force,
+                      static_cast<double>(trials[t].samples), trials[t].aft_error, trials[t].reached_end ? 1.0 : 0.0,
+                      trials[t].trusted ? 1.0 : 0.0, trials[t].seconds, t + 1 == trials.size() ? 1.0 : 0.0});
+  }
+  if (rows.empty()) return;
+  o.tables.emplace("aft_sampling", table_from_rows("aft_sampling",
+                                                   {"trial", "level", "fe_n", "samples", "aft_error", "reached_end",
+                                                    "trusted", "seconds", "chosen"},
+                                                   rows));
 }
 
 // frf_<Fe>: the path points of each level in order.
@@ -281,6 +299,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   o.sweep_seconds = seconds_since(t0);
   require_solutions(o);
   add_peak_tables(o, spec);
+  add_sampling_table(o);
   add_frf_tables(o, spec);
   add_limit_tables(o, spec);
   add_damper_table(o);

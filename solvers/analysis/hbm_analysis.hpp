@@ -74,11 +74,23 @@ struct HbmLevel {
   std::vector<Eigen::MatrixXd> amplitude_dlog, phase_dlog_deg;
   std::vector<HbmPeak> peaks;
   std::vector<double> failed_hz;  // grid frequencies that did not converge
+  int samples = 0;                // AFT samples per period the level was solved with
   double seconds = 0.0;
+  // With HbmSpec::aft_tolerance: every sweep tried, coarsest first; the level holds the last one.
+  struct SamplingTrial {
+    int samples = 0;
+    double aft_error = 0.0;  // largest HbmPeak::sampling_error of the sweep
+    bool reached_end = false, trusted = false;
+    double seconds = 0.0;
+  };
+  std::vector<SamplingTrial> sampling_trials;
 };
 
 // The sweep of one force level with H harmonics. A continuation that stops is reported in
-// path.failure (with frequency and residual) and the level keeps the points reached.
+// path.failure (with frequency and residual) and the level keeps the points reached. With
+// spec.aft_tolerance > 0 the level is swept again with more AFT samples while its peaks'
+// sampling error exceeds the tolerance, the sweep stops short or a peak is doubtful (an
+// under-sampled stick-slip residual is too rough for the corrector), up to spec.max_time_samples.
 HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, double force, int harmonics,
                          const HbmProgress& progress = {});
 
@@ -91,7 +103,7 @@ struct HbmOutcome {
   double sweep_seconds = 0.0;
 };
 
-// prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost,
+// prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost, aft_sampling,
 // limits, limit_peaks, damper_static. Throws SolverError when a level finds no solution at all or a
 // peak's refinement does not converge: a peak is never reported at a failed solve.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});

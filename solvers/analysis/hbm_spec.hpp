@@ -77,6 +77,11 @@ struct HbmSpec {
   std::optional<std::pair<PointDof, PointDof>> ip_oop;    // (left, right): in-phase / out-of-phase peaks
   int harmonics = 1;
   int time_samples = 0;     // AFT samples per period; 0 = automatic
+  // When > 0, each level's samples are raised from time_samples (up to max_time_samples) until
+  // the AFT sampling error at its peaks is at most this (relative to the force scale, as
+  // HbmPeak::sampling_error) and its sweep reaches the end with trusted peaks. 0 = fixed samples.
+  double aft_tolerance = 0.0;
+  int max_time_samples = 4096;
   double tolerance = 1e-9;  // relative, hbm::HbmOptions
   // Newton iterations per start (a solve tries up to three starts). On a sweep a converging point
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.

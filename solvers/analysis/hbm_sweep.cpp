@@ -106,12 +106,14 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
   return peak;
 }
 
-hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics) {
+// The balance of one level; samples = 0 leaves the choice to hbm::HarmonicBalance.
+hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                                  int samples) {
   hbm::HbmModel m = p.model;
   m.harmonic_load *= force;
   hbm::HbmOptions options;
   options.harmonics = harmonics;
-  options.aft.samples = spec.time_samples;
+  options.aft.samples = samples;
   options.tolerance = spec.tolerance;
   options.max_iterations = spec.max_iterations;
   return hbm::HarmonicBalance(std::move(m), options);
@@ -120,17 +122,17 @@ hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, dou
 // The first frequency's solution. Direct Newton from the static pre-solve (or the linear limits)
 // first; when that fails, a homotopy in the force: from 1/64 of it, each converged fraction the
 // start of the next, the increment halved on failure.
-hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, double omega,
-                                const std::optional<Eigen::VectorXd>& initial) {
-  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics);
+hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
+                                double omega, const std::optional<Eigen::VectorXd>& initial) {
+  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, samples);
   hbm::HbmSolution direct = hbm::solve_at_frequency(system, omega, initial);
   if (direct.converged) return direct;
   double done = 1.0 / 64, step = 1.0 / 64;
-  hbm::HbmSolution at = hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics), omega, initial);
+  hbm::HbmSolution at = hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics, samples), omega, initial);
   int total = direct.iterations + at.iterations;
   while (at.converged && done < 1.0 && step >= 1.0 / 4096) {
     const double next = std::min(1.0, done + step);
-    hbm::HbmSolution trial = hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics), omega, at.x);
+    hbm::HbmSolution trial = hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics, samples), omega, at.x);
     total += trial.iterations;
     if (trial.converged) {
       at = std::move(trial), done = next, step *= 2;
@@ -241,14 +243,13 @@ int bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<do
   return target;
 }
 
-}  // namespace
-
-HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
-                         const HbmProgress& progress) {
+HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
+                          const HbmProgress& progress) {
   const auto t0 = Clock::now();
   HbmLevel level;
   level.force = force;
-  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics);
+  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, samples);
+  level.samples = system.aft_options().samples;
   const double omega_start = kTwoPi * spec.sweep.f_min, omega_end = kTwoPi * spec.sweep.f_max;
   std::optional<Eigen::VectorXd> initial;
   if (p.damper_static) {
@@ -259,12 +260,12 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
       for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
     }
   }
-  const hbm::HbmSolution first = first_solution(p, spec, force, harmonics, omega_start, initial);
+  const hbm::HbmSolution first = first_solution(p, spec, force, harmonics, samples, omega_start, initial);
   hbm::ContinuationResult& path = level.path;
   auto report = [&](double omega, int point, int iterations) {
     if (progress && point % 25 == 0)
-      progress(fmt::format("Fe = {:g} N, H = {}: {:.3f} Hz, point {}, {} iterations", force, harmonics, omega / kTwoPi,
-                           point, iterations));
+      progress(fmt::format("Fe = {:g} N, H = {}, {} samples: {:.3f} Hz, point {}, {} iterations", force, harmonics,
+                           level.samples, omega / kTwoPi, point, iterations));
   };
   if (!first.converged) {
     path.failure = "first point: " + first.failure;
@@ -351,6 +352,41 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
   if (n_points > 0)
     for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, level, k));
   level.seconds = seconds_since(t0);
+  return level;
+}
+
+}  // namespace
+
+HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                         const HbmProgress& progress) {
+  HbmLevel level = sweep_at_samples(p, spec, force, harmonics, spec.time_samples, progress);
+  if (!(spec.aft_tolerance > 0.0)) return level;
+  std::vector<HbmLevel::SamplingTrial> trials;
+  double seconds = 0.0;
+  for (;;) {
+    HbmLevel::SamplingTrial t;
+    t.samples = level.samples;
+    t.reached_end = level.path.converged;
+    t.trusted = !level.peaks.empty();
+    for (const HbmPeak& pk : level.peaks) {
+      t.aft_error = std::max(t.aft_error, pk.sampling_error);
+      t.trusted = t.trusted && pk.trusted && pk.solution.converged;
+    }
+    t.seconds = level.seconds;
+    seconds += level.seconds;
+    trials.push_back(t);
+    const bool met = t.aft_error <= spec.aft_tolerance && t.reached_end && t.trusted;
+    if (met || level.samples >= spec.max_time_samples) break;
+    // The error falls as 1 / n (a stick-slip kink lies between two samples), so when it alone is
+    // the reason, jump to the power-of-two multiple that should meet the tolerance; else double.
+    int factor = 2;
+    if (t.reached_end && t.trusted)
+      while (factor < 64 && t.aft_error / factor > spec.aft_tolerance) factor *= 2;
+    const int next = std::min(factor * level.samples, spec.max_time_samples);
+    level = sweep_at_samples(p, spec, force, harmonics, next, progress);
+  }
+  level.sampling_trials = std::move(trials);
+  level.seconds = seconds;  // the cost of reaching the tolerance, every trial included
   return level;
 }
 

@@ -135,6 +135,17 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   if (samples != 0 && (samples < 2 * h + 1 || samples > 100000))
     r.fail("time_samples", fmt::format("must be 0 (automatic) or lie in [{}, 100000] (at least 2H + 1)", 2 * h + 1));
   s.time_samples = static_cast<int>(samples);
+  if (r.has("aft_tolerance")) {
+    s.aft_tolerance = r.positive("aft_tolerance");
+    if (s.aft_tolerance >= 1.0) r.fail("aft_tolerance", "must be below 1 (a relative contact-force error)");
+  }
+  if (const auto most = r.optional_integer("max_time_samples")) {
+    if (!r.has("aft_tolerance")) r.fail("max_time_samples", "applies only with aft_tolerance (samples raised)");
+    const long start = samples > 0 ? samples : 2 * h + 1;
+    if (*most < start || *most > 100000)
+      r.fail("max_time_samples", fmt::format("must lie in [{}, 100000] (at least time_samples and 2H + 1)", start));
+    s.max_time_samples = static_cast<int>(*most);
+  }
   if (r.has("tolerance")) {
     s.tolerance = r.positive("tolerance");
     if (s.tolerance >= 1e-2) r.fail("tolerance", "must be below 1e-2 (relative force balance)");

@@ -203,6 +203,35 @@ TEST_F(HbmAnalysis, GridStepsNewtonCannotTakeAreBridgedByArclength) {
   EXPECT_NEAR(b.peaks[0].amplitude, a.peaks[0].amplitude, 1e-6 * a.peaks[0].amplitude);
 }
 
+// A Coulomb-like contact (kt = 1e4 k): with 64 AFT samples the stick-slip kinks fall between
+// samples and the peak of the near-stuck level is off by percents; aft_tolerance raises the samples
+// until the estimated error is met, and the result agrees with a 4096-sample sweep.
+TEST_F(HbmAnalysis, AftToleranceRaisesTheSamplesUntilTheStiffContactIsResolved) {
+  test::OscillatorCase c;
+  c.kt = "1.0e10";
+  c.levels = "[12.0]";
+  c.range = "[130.0, 220.0]";
+  c.step = "1.0";
+  c.samples = "4096";
+  const HbmPeak reference = run(test::oscillator_case_text(c)).levels[0].peaks[0];
+  c.samples = "64";
+  const HbmLevel coarse = run(test::oscillator_case_text(c)).levels[0];
+  c.analysis_extra = "aft_tolerance = 1e-3\n";
+  const HbmLevel raised = run(test::oscillator_case_text(c)).levels[0];
+
+  const auto relative = [&](const HbmPeak& pk) { return std::abs(pk.amplitude / reference.amplitude - 1); };
+  EXPECT_GT(coarse.peaks[0].sampling_error, 1e-2);
+  EXPECT_GT(relative(coarse.peaks[0]), 3e-2);  // 64 samples: the estimate is right to warn
+  EXPECT_TRUE(coarse.sampling_trials.empty());
+  ASSERT_GE(raised.sampling_trials.size(), 2u);
+  EXPECT_EQ(raised.sampling_trials.front().samples, 64);
+  EXPECT_EQ(raised.sampling_trials.back().samples, raised.samples);
+  EXPECT_GT(raised.samples, 64);
+  EXPECT_LE(raised.peaks[0].sampling_error, 1e-3);
+  EXPECT_LT(relative(raised.peaks[0]), 1e-3);
+  EXPECT_NEAR(raised.peaks[0].frequency_hz, reference.frequency_hz, 1e-3 * reference.frequency_hz);
+}
+
 TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {
   std::string text = oscillator_case("0.3", "[1.0]");
   const std::string from = "tangential = { \"A.x\" = 1.0 }";

@@ -185,7 +185,7 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   const std::vector<std::string> kinds = peak_kinds(p);
   const hbm::HbmModel& m = p.model;
   const Index nb = p.blade_dofs;
-  const Eigen::MatrixXd stuck = stuck_stiffness(m);
+  const Eigen::MatrixXd stuck = hbm::stuck_stiffness(m);
   // Limit 0: the linear model alone (the damper's DOFs left out); 1: every contact stuck.
   const auto limit_solve = [&](int l, double w) {
     return l == 0 ? direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),

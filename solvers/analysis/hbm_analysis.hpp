@@ -108,9 +108,6 @@ struct HbmOutcome {
 // peak's refinement does not converge: a peak is never reported at a failed solve.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
 
-// K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
-Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model);
-
 // The name of level `force`'s FRF table, e.g. "frf_300" or "frf_0.5".
 // Its sensitivity columns: "<response>_amp_m_dlog_<path>" and "<response>_phase_deg_dlog_<path>".
 std::string hbm_frf_table_name(double force);

@@ -73,13 +73,6 @@ Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& bla
 
 }  // namespace
 
-Eigen::MatrixXd stuck_stiffness(const hbm::HbmModel& model) {
-  Eigen::MatrixXd k = model.stiffness;
-  for (const hbm::ContactElement& c : model.contacts)
-    k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
-  return k;
-}
-
 PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   const auto t0 = Clock::now();
   PreparedHbm p;

@@ -107,8 +107,7 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
 }
 
 // The balance of one level; samples = 0 leaves the choice to hbm::HarmonicBalance.
-hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
-                                  int samples) {
+hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples) {
   hbm::HbmModel m = p.model;
   m.harmonic_load *= force;
   hbm::HbmOptions options;
@@ -128,11 +127,13 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, doubl
   hbm::HbmSolution direct = hbm::solve_at_frequency(system, omega, initial);
   if (direct.converged) return direct;
   double done = 1.0 / 64, step = 1.0 / 64;
-  hbm::HbmSolution at = hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics, samples), omega, initial);
+  hbm::HbmSolution at =
+      hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics, samples), omega, initial);
   int total = direct.iterations + at.iterations;
   while (at.converged && done < 1.0 && step >= 1.0 / 4096) {
     const double next = std::min(1.0, done + step);
-    hbm::HbmSolution trial = hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics, samples), omega, at.x);
+    hbm::HbmSolution trial =
+        hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics, samples), omega, at.x);
     total += trial.iterations;
     if (trial.converged) {
       at = std::move(trial), done = next, step *= 2;

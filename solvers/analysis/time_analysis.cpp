@@ -90,7 +90,7 @@ void linear_on_grid(TimeLevel& level, const PreparedHbm& p, const hbm::HbmModel&
   const std::vector<double>& frequencies = level.frequency_hz;
   const auto nf = static_cast<Index>(frequencies.size());
   const auto nr = static_cast<Index>(p.responses.size());
-  const Eigen::MatrixXd k = stuck_stiffness(m);
+  const Eigen::MatrixXd k = hbm::stuck_stiffness(m);
   level.linear = Eigen::MatrixXd(nf, nr);
   if (pair) level.linear_components = Eigen::MatrixXd(nf, 2);
   for (Index i = 0; i < nf; ++i) {

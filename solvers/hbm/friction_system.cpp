@@ -36,6 +36,13 @@ void validate_model(HbmModel& m, const std::string& who) {
   }
 }
 
+Eigen::MatrixXd stuck_stiffness(const HbmModel& model) {
+  Eigen::MatrixXd k = model.stiffness;
+  for (const ContactElement& c : model.contacts)
+    k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+  return k;
+}
+
 template <class Scalar>
 Condensation<Scalar>::Condensation(const Matrix& a, const std::vector<Index>& contact_dofs,
                                    const std::vector<Index>& other_dofs)

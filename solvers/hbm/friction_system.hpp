@@ -54,6 +54,9 @@ struct HbmModel {
 // `who`. Shared by the harmonic balance and the time integration.
 void validate_model(HbmModel& model, const std::string& who);
 
+// K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
+Eigen::MatrixXd stuck_stiffness(const HbmModel& model);
+
 // One linear operator A condensed onto c (formulas above), A_oo factorized once (partial-pivoting
 // LU). Scalar: double (time domain) or std::complex<double> (one harmonic).
 template <class Scalar>

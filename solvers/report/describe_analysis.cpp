@@ -111,7 +111,8 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   for (const HbmLevel& l : hbm.levels)
     for (const HbmPeak& pk : l.peaks)
       if (pk.sampling_error > worst)
-        worst = pk.sampling_error, where = fmt::format("{} at Fe = {} N", pk.kind == "peak" ? "peak" : pk.kind + " peak", g(l.force));
+        worst = pk.sampling_error,
+        where = fmt::format("{} at Fe = {} N", pk.kind == "peak" ? "peak" : pk.kind + " peak", g(l.force));
   run.facts.emplace_back(
       "AFT sampling error at the peaks (contact-force change with twice the samples, relative to the force scale)",
       worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (every peak stuck)"));
@@ -126,9 +127,10 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
                            per_level);
   }
   if (spec.aft_tolerance > 0.0 && worst > spec.aft_tolerance)
-    run.warnings.push_back(fmt::format("the AFT sampling error {:.2e} at the {} exceeds aft_tolerance = {} even at the "
-                                       "largest samples tried (max_time_samples = {})",
-                                       worst, where, g(spec.aft_tolerance), spec.max_time_samples));
+    run.warnings.push_back(
+        fmt::format("the AFT sampling error {:.2e} at the {} exceeds aft_tolerance = {} even at the "
+                    "largest samples tried (max_time_samples = {})",
+                    worst, where, g(spec.aft_tolerance), spec.max_time_samples));
   else if (!(spec.aft_tolerance > 0.0) && worst > 1e-3)
     run.warnings.push_back(
         fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples or set "

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <optional>
 
+#include "analysis/hbm_nonlinear_modes.hpp"
 #include "analysis/hbm_response.hpp"
 #include "common/errors.hpp"
 #include "frf/receptance.hpp"
@@ -303,6 +304,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   add_frf_tables(o, spec);
   add_limit_tables(o, spec);
   add_damper_table(o);
+  add_nonlinear_modes(o, spec);
   return o;
 }
 

@@ -13,6 +13,7 @@
 #include "analysis/hbm_spec.hpp"
 #include "damper/rigid_damper.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/nonlinear_modes.hpp"
 #include "model/model.hpp"
 #include "reduction/craig_bampton.hpp"
 #include "results/table.hpp"
@@ -101,6 +102,8 @@ struct HbmOutcome {
   Eigen::VectorXd limit_frequency_hz;
   Eigen::MatrixXd free_response, stuck_response;  // frequencies x responses, per N of the first force
   double sweep_seconds = 0.0;
+  std::vector<hbm::NonlinearModeBranch> nonlinear_modes;  // spec.nonlinear_modes: one per linear mode
+  double nonlinear_mode_seconds = 0.0;
 };
 
 // prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost, aft_sampling,

@@ -64,6 +64,17 @@ struct HbmParameter {
   std::string label;                            // its case path, e.g. "analysis.contact.0.kt": names the columns
 };
 
+// Nonlinear modes of the model (hbm/nonlinear_modes.hpp) along a modal amplitude range, and the
+// forced-response peak each predicts at every force level (single-nonlinear-mode theory).
+struct NonlinearModesSpec {
+  std::vector<int> linear_modes;  // 1-based, ascending frequency of the stuck linearization
+  // The sweep's peak kind each mode is compared with ("ip", "oop" or "peak"); empty = no comparison.
+  std::vector<std::string> peaks;
+  double amplitude_min = 0.0, amplitude_max = 0.0;  // modal amplitude a [m kg^1/2], q_1 = a psi, psi^H M psi = 1
+  int points = 40;                                  // log-spaced amplitudes
+  SourceLocation at;
+};
+
 struct HbmSpec {
   RomSpec model;                                  // the linear part: masters / file / matrices
   FrfDamping damping;                             // on the linear model's modes (the damper is undamped)
@@ -76,7 +87,7 @@ struct HbmSpec {
   std::vector<PointDof> responses;                        // first-harmonic amplitudes written per level
   std::optional<std::pair<PointDof, PointDof>> ip_oop;    // (left, right): in-phase / out-of-phase peaks
   int harmonics = 1;
-  int time_samples = 0;     // AFT samples per period; 0 = automatic
+  int time_samples = 0;  // AFT samples per period; 0 = automatic
   // When > 0, each level's samples are raised from time_samples (up to max_time_samples) until
   // the AFT sampling error at its peaks is at most this (relative to the force scale, as
   // HbmPeak::sampling_error) and its sweep reaches the end with trusted peaks. 0 = fixed samples.
@@ -89,6 +100,7 @@ struct HbmSpec {
   HbmSweepSpec sweep;
   // Parameters whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp). Empty = none.
   std::vector<HbmParameter> sensitivities;
+  std::optional<NonlinearModesSpec> nonlinear_modes;
   SourceLocation at;  // of [analysis], for errors found when the model is built
 };
 

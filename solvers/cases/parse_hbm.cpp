@@ -118,6 +118,42 @@ std::vector<HbmParameter> parse_sensitivities(TomlReader& r, const HbmSpec& s) {
 
 }  // namespace
 
+namespace {
+
+NonlinearModesSpec parse_nonlinear_modes(TomlReader r, const HbmSpec& hbm) {
+  NonlinearModesSpec s;
+  s.at = r.location();
+  for (long m : r.integer_array("linear_modes")) {
+    if (m < 1 || m > 10000) r.fail("linear_modes", fmt::format("mode {}: modes count from 1", m));
+    s.linear_modes.push_back(static_cast<int>(m));
+  }
+  if (s.linear_modes.empty()) r.fail("linear_modes", "name at least one mode of the stuck linearization");
+  if (r.has("peaks")) {
+    s.peaks = r.string_array("peaks");
+    if (s.peaks.size() != s.linear_modes.size())
+      r.fail("peaks", fmt::format("one peak kind per linear mode ({} modes, {} peak kinds)", s.linear_modes.size(),
+                                  s.peaks.size()));
+    const std::set<std::string> kinds = hbm.ip_oop ? std::set<std::string>{"ip", "oop"} : std::set<std::string>{"peak"};
+    for (const std::string& k : s.peaks)
+      if (!kinds.count(k))
+        r.fail("peaks", fmt::format("'{}' is not a peak kind of this sweep ({})", k,
+                                    hbm.ip_oop ? "\"ip\" or \"oop\" with ip_oop" : "\"peak\" without ip_oop"));
+  }
+  const std::vector<double> range = r.number_array("modal_amplitude");
+  if (range.size() != 2 || !(range[0] > 0.0) || !(range[0] < range[1]) || !std::isfinite(range[1]))
+    r.fail("modal_amplitude", "expected [a_min, a_max] with 0 < a_min < a_max [m kg^1/2]");
+  s.amplitude_min = range[0];
+  s.amplitude_max = range[1];
+  if (const auto n = r.optional_integer("points")) {
+    if (*n < 2 || *n > 10000) r.fail("points", "must lie in [2, 10000]");
+    s.points = static_cast<int>(*n);
+  }
+  r.finish();
+  return s;
+}
+
+}  // namespace
+
 HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required) {
   HbmSpec s;
   s.at = r.location();
@@ -230,6 +266,10 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   if (r.has("sensitivities")) {
     if (!contacts_required) r.fail("sensitivities", "only a harmonic balance analysis computes sensitivities");
     s.sensitivities = parse_sensitivities(r, s);
+  }
+  if (const toml::table* t = r.optional_table("nonlinear_modes")) {
+    if (!contacts_required) r.fail("nonlinear_modes", "only a harmonic balance analysis computes nonlinear modes");
+    s.nonlinear_modes = parse_nonlinear_modes(TomlReader(*t, r.path() + ".nonlinear_modes", r.file()), s);
   }
   return s;
 }

@@ -9,6 +9,7 @@
 #include "report/contour_plots.hpp"
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
+#include "report/nonlinear_mode_plots.hpp"
 #include "report/plots.hpp"
 #include "report/rotating_plots.hpp"
 #include "report/time_plots.hpp"
@@ -73,7 +74,7 @@ void plots(const TimeSpec&, const TimeOutcome& time, const PlotTarget& t) {
   }
 }
 
-void plots(const HbmSpec&, const HbmOutcome& h, const PlotTarget& t) {
+void plots(const HbmSpec& spec, const HbmOutcome& h, const PlotTarget& t) {
   for (size_t r = 0; r < h.prepared.response_names.size(); ++r)
     t.run.plots.push_back(plot_hbm_levels(h, r, false, t.out, "frf_levels_" + h.prepared.response_names[r]));
   t.run.plots.push_back(plot_hbm_levels(h, 0, true, t.out, "frf_per_newton_" + h.prepared.response_names[0]));
@@ -85,6 +86,10 @@ void plots(const HbmSpec&, const HbmOutcome& h, const PlotTarget& t) {
   for (const char* kind : {"IP", "OOP", "peak"})
     if ((std::string(kind) == "peak") != h.prepared.ip_oop.has_value())
       t.run.plots.push_back(plot_contact_states(h, kind, t.out, fmt::format("contact_states_{}", kind)));
+  if (spec.nonlinear_modes) {
+    t.run.plots.push_back(plot_backbones(h, spec, t.out, "nonlinear_mode_backbones"));
+    t.run.plots.push_back(plot_modal_damping(h, t.out, "nonlinear_mode_damping"));
+  }
 }
 
 void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget& t) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace bb {
 namespace {
@@ -55,6 +56,34 @@ void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
                     r.timing.fixed_interface_seconds, r.timing.projection_seconds, r.sweep_seconds));
   }
 }
+
+namespace {
+
+void describe_nonlinear_modes(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
+  if (!spec.nonlinear_modes) return;
+  const NonlinearModesSpec& nm = *spec.nonlinear_modes;
+  size_t points = 0;
+  for (const hbm::NonlinearModeBranch& b : hbm.nonlinear_modes) points += b.points.size();
+  run.facts.emplace_back(
+      "nonlinear modes (extended periodic motion concept, Krack 2015)",
+      fmt::format("{} branch(es), modal amplitude {} to {} m kg^1/2 in {} log steps, H = {}: {} points in {:.3f} s",
+                  hbm.nonlinear_modes.size(), g(nm.amplitude_min), g(nm.amplitude_max), nm.points, spec.harmonics,
+                  points, hbm.nonlinear_mode_seconds));
+  for (const hbm::NonlinearModeBranch& b : hbm.nonlinear_modes) {
+    double lo = b.points.front().omega, hi = lo, dmin = b.points.front().damping_ratio(), dmax = dmin;
+    for (const hbm::NonlinearModePoint& p : b.points) {
+      lo = std::min(lo, p.omega), hi = std::max(hi, p.omega);
+      dmin = std::min(dmin, p.damping_ratio()), dmax = std::max(dmax, p.damping_ratio());
+    }
+    run.facts.emplace_back(fmt::format("nonlinear mode {} (stuck linear {:.4f} Hz)", b.linear_mode,
+                                       b.linear_omega / (2 * std::numbers::pi)),
+                           fmt::format("frequency {:.4f} to {:.4f} Hz, damping ratio {:.4g} to {:.4g}",
+                                       lo / (2 * std::numbers::pi), hi / (2 * std::numbers::pi), dmin, dmax));
+    if (!b.converged) run.warnings.push_back(fmt::format("the branch stopped early: {}", b.failure));
+  }
+}
+
+}  // namespace
 
 void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const PreparedHbm& p = hbm.prepared;
@@ -136,6 +165,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
         fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples or set "
                     "aft_tolerance (samples raised automatically)",
                     worst, where));
+  describe_nonlinear_modes(spec, hbm, run);
 }
 
 void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {

@@ -47,10 +47,13 @@ std::vector<FrfForce> parse_forces(TomlReader& r) {
 Eigen::MatrixXd parse_square_matrix(TomlReader& r, const std::string& key, size_t n) {
   const toml::array& rows = r.array(key);
   if (rows.size() != n) r.fail(key, fmt::format("needs {} rows, one per DOF in 'dofs', found {}", n, rows.size()));
+  // Every row is checked before the n x n matrix is allocated: its size is then written in the file.
+  for (size_t i = 0; i < n; ++i)
+    if (const toml::array* row = rows[i].as_array(); !row || row->size() != n)
+      r.fail(key, fmt::format("row {} must be a list of {} numbers", i + 1, n));
   Eigen::MatrixXd m(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   for (size_t i = 0; i < n; ++i) {
     const toml::array* row = rows[i].as_array();
-    if (!row || row->size() != n) r.fail(key, fmt::format("row {} must be a list of {} numbers", i + 1, n));
     for (size_t j = 0; j < n; ++j) {
       const std::optional<double> v = (*row)[j].value<double>();
       if (!v || !std::isfinite(*v)) r.fail(key, fmt::format("entry ({}, {}) is not a finite number", i + 1, j + 1));

@@ -84,16 +84,15 @@ ReducedModel parse_matrices(TomlReader& r) {
 
 RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
   RomSpec rom;
-  rom.name = r.string("name");
-  if (rom.name.empty() || rom.name == "full" || rom.name.find_first_of(" ./") != std::string::npos)
-    r.fail("name",
-           fmt::format("'{}': choose a short name without spaces, dots or slashes, other than \"full\"", rom.name));
+  // The name becomes file names (reduced_models/<name>.toml) and table names (peaks_<name>).
+  rom.name = r.name("name");
+  if (rom.name == "full") r.fail("name", "\"full\" names the full mesh's curves; choose another name");
   if (static_cast<int>(r.has("file")) + static_cast<int>(r.has("masters")) + static_cast<int>(r.has("stiffness")) != 1)
     r.fail("masters",
            "give one of 'masters' (Craig-Bampton), 'file' (a reduced model on disk) or 'stiffness' + 'mass' + 'dofs' "
            "(matrices)");
   if (r.has("file")) {
-    rom.file = folder / r.string("file");
+    rom.file = r.input_file("file", folder);
   } else if (r.has("stiffness")) {
     rom.matrices = parse_matrices(r);
   } else {

@@ -245,6 +245,7 @@ ReducedModel read_reduced_model(const fs::path& sidecar) {
   const auto n = static_cast<Eigen::Index>(model.dofs.size());
   auto read_matrix = [&](const std::string& key, const std::string& name) {
     const fs::path file = sidecar.parent_path() / name;
+    if (fs::is_directory(file)) r.fail(key, fmt::format("matrix file '{}' is a folder", file.string()));
     if (!fs::is_regular_file(file)) r.fail(key, fmt::format("matrix file '{}' not found", file.string()));
     return format == "csv" ? read_csv_matrix(file, n) : read_matrix_market(file, n);
   };

@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
+
+#include "common/user_text.hpp"
+#include "report/output_folder.hpp"
 
 namespace bb {
 namespace {
@@ -26,13 +30,30 @@ std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
+// Every string of `j`, keys too, through printable(): summary.json shows user bytes as the
+// terminal and report.md do (\xHH), and its writer cannot fail on them.
+nlohmann::json printable_json(const nlohmann::json& j) {
+  if (j.is_string()) return printable(j.get_ref<const std::string&>(), true);
+  if (j.is_array()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const nlohmann::json& e : j) out.push_back(printable_json(e));
+    return out;
+  }
+  if (j.is_object()) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [k, v] : j.items()) out[printable(k)] = printable_json(v);
+    return out;
+  }
+  return j;
+}
+
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.4e}", v) : std::string("inf"); }
 
 // A result table row by row, with its text labels and, where a check compared a row, the
 // reference value, the signed relative error, whether every check of that row passed and the
 // tightest tolerance among them (relative to the reference).
 // Every row of `table` as a markdown table, numbers to 4 significant digits.
-void write_table_rows(std::ofstream& out, const ResultTable& table) {
+void write_table_rows(std::ostream& out, const ResultTable& table) {
   std::vector<std::string> header = table.columns;
   header.insert(header.end(), table.text_columns.begin(), table.text_columns.end());
   std::string rule = "|";
@@ -46,7 +67,7 @@ void write_table_rows(std::ofstream& out, const ResultTable& table) {
   }
 }
 
-void write_listed_table(std::ofstream& out, const RunRecord& run, const ResultTable& table) {
+void write_listed_table(std::ostream& out, const RunRecord& run, const ResultTable& table) {
   std::vector<const CheckEntry*> entries;  // checks of this table
   for (const CheckEntry& e : run.checks)
     for (const CheckSpec& spec : run.check_specs)
@@ -131,7 +152,7 @@ void write_table_csv(const ResultTable& table, const std::filesystem::path& file
   for (Eigen::Index r = 0; r < table.values.rows(); ++r) {
     out << std::lround(table.values(r, 0));
     for (Eigen::Index c = 1; c < table.values.cols(); ++c) out << fmt::format(",{:.12g}", table.values(r, c));
-    for (const auto& column : table.text) out << ',' << csv_field(column[static_cast<size_t>(r)]);
+    for (const auto& column : table.text) out << ',' << csv_field(printable(column[static_cast<size_t>(r)], true));
     out << '\n';
   }
   if (!out) throw std::runtime_error("failed writing " + file.string());
@@ -161,12 +182,13 @@ void write_summary_json(const RunRecord& run, const std::filesystem::path& file)
   j["facts"] = facts;
   j["tables"] = run.tables;
   std::ofstream out = open_for_writing(file);
-  out << j.dump(2) << '\n';
+  // printable_json escapes every invalid byte; `replace` is the backstop that keeps dump() from throwing.
+  out << printable_json(j).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
   if (!out) throw std::runtime_error("failed writing " + file.string());
 }
 
 void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
-  std::ofstream out = open_for_writing(file);
+  std::ostringstream out;  // written through printable() at the end
   out << fmt::format("# {}\n\n", run.title);
   out << fmt::format("Case `{}` (`{}`): **{}** in {:.3f} s.\n\n", run.case_name, run.case_file.string(),
                      status_name(run.status), run.wall_seconds);
@@ -291,11 +313,13 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     out << '\n';
     plots(run.study_plots);
   }
-  if (!out) throw std::runtime_error("failed writing " + file.string());
+  std::ofstream report = open_for_writing(file);
+  report << printable(out.str(), true);
+  if (!report) throw std::runtime_error("failed writing " + file.string());
 }
 
 void write_index_md(const std::vector<IndexEntry>& entries, const std::filesystem::path& file) {
-  std::ofstream out = open_for_writing(file);
+  std::ostringstream out;
   int passed = 0;
   for (const auto& e : entries) passed += exit_code(e.status) == 0 ? 1 : 0;
   out << "# bladebench validation index\n\n";
@@ -304,7 +328,7 @@ void write_index_md(const std::vector<IndexEntry>& entries, const std::filesyste
   for (const auto& e : entries)
     out << fmt::format("| [{}]({}) | {} | {} | {} | {:.3f} | {} |\n", e.case_name, e.report.generic_string(),
                        status_name(e.status), e.checks, e.failed, e.wall_seconds, e.message);
-  if (!out) throw std::runtime_error("failed writing " + file.string());
+  write_file_atomically(file, printable(out.str(), true));
 }
 
 }  // namespace bb

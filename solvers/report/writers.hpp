@@ -1,4 +1,5 @@
-// Output files of a run: result CSVs, summary.json, report.md.
+// Output files of a run: result CSVs, summary.json, report.md. User text reaches them only through
+// printable() (common/user_text.hpp), so no input byte can make a writer fail or a report lie.
 #pragma once
 #include <filesystem>
 

@@ -92,8 +92,7 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     run.checks.insert(run.checks.end(), entries.begin(), entries.end());
   }
   for (const auto& [name, table] : tables) {
-    write_table_csv(table, out / (name + ".csv"));
-    run.tables.push_back(name + ".csv");
+    write_result_csv(table, out, run);
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);
   }
   write_analysis_files(spec.analysis, results, out, run);
@@ -115,6 +114,7 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
 void drop_results(RunRecord& run) {
   run.checks.clear();
   run.tables.clear();
+  run.non_finite.clear();
   run.listed_tables.clear();
   run.plots.clear();
   run.study.reset();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -45,6 +46,36 @@ nlohmann::json printable_json(const nlohmann::json& j) {
     return out;
   }
   return j;
+}
+
+// "3, 7, 9" or "1, 2, 3, 4, 5, ... (40 rows)".
+std::string key_list(const std::vector<long>& keys) {
+  constexpr size_t kShown = 12;
+  if (keys.size() <= kShown) return fmt::format("{}", fmt::join(keys, ", "));
+  return fmt::format("{}, ... ({} rows)", fmt::join(keys.begin(), keys.begin() + kShown, ", "), keys.size());
+}
+
+// The checks that read an entry of a non-finite column (each such entry fails).
+std::string readers_of(const RunRecord& run, const NonFiniteColumn& n) {
+  std::set<std::string> names;
+  for (const CheckEntry& e : run.checks)
+    for (const CheckSpec& spec : run.check_specs)
+      if (spec.name == e.group && spec.result + ".csv" == n.file && e.column == n.column &&
+          std::find(n.keys.begin(), n.keys.end(), e.computed_key) != n.keys.end())
+        names.insert(spec.name);
+  return names.empty() ? std::string("none") : fmt::format("{} (failed)", fmt::join(names, "; "));
+}
+
+void write_non_finite(std::ostream& out, const RunRecord& run) {
+  if (run.non_finite.empty()) return;
+  out << "### Entries without a value\n\n"
+         "These columns hold NaN or inf entries, written as `nan` / `inf`: values that do not apply to the row (no "
+         "peak found, no closed form, a variant that diverged). A check that reads one fails.\n\n"
+         "| file | column | rows (by key) | read by a check |\n|---|---|---|---|\n";
+  for (const NonFiniteColumn& n : run.non_finite)
+    out << fmt::format("| {} | {} | {} = {} | {} |\n", n.file, n.column, n.key_column, key_list(n.keys),
+                       readers_of(run, n));
+  out << '\n';
 }
 
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.4e}", v) : std::string("inf"); }
@@ -158,6 +189,22 @@ void write_table_csv(const ResultTable& table, const std::filesystem::path& file
   if (!out) throw std::runtime_error("failed writing " + file.string());
 }
 
+void write_result_csv(const ResultTable& table, const std::filesystem::path& folder, RunRecord& run,
+                      const std::string& file) {
+  const std::string name = file.empty() ? table.name + ".csv" : file;
+  // Table names made of user names (reduced models, cases) were checked by the case parser.
+  if (name.find_first_of(std::string("/\\\0", 3)) != std::string::npos || name.starts_with("."))
+    throw std::logic_error(fmt::format("result table '{}' cannot name a file", printable(table.name)));
+  write_table_csv(table, folder / name);
+  if (file.empty()) run.tables.push_back(name);
+  for (Eigen::Index c = 1; c < table.values.cols(); ++c) {
+    NonFiniteColumn n{name, table.columns[static_cast<size_t>(c)], table.columns.front(), {}};
+    for (Eigen::Index r = 0; r < table.values.rows(); ++r)
+      if (!std::isfinite(table.values(r, c))) n.keys.push_back(std::lround(table.values(r, 0)));
+    if (!n.keys.empty()) run.non_finite.push_back(std::move(n));
+  }
+}
+
 void write_summary_json(const RunRecord& run, const std::filesystem::path& file) {
   nlohmann::json j;
   j["case"] = run.case_name;
@@ -181,6 +228,9 @@ void write_summary_json(const RunRecord& run, const std::filesystem::path& file)
   for (const auto& [k, v] : run.facts) facts[k] = v;
   j["facts"] = facts;
   j["tables"] = run.tables;
+  j["non_finite"] = nlohmann::json::array();
+  for (const NonFiniteColumn& n : run.non_finite)
+    j["non_finite"].push_back({{"file", n.file}, {"column", n.column}, {"key_column", n.key_column}, {"keys", n.keys}});
   std::ofstream out = open_for_writing(file);
   // printable_json escapes every invalid byte; `replace` is the backstop that keeps dump() from throwing.
   out << printable_json(j).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
@@ -248,6 +298,7 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     for (const std::string& t : run.tables) out << fmt::format("- [`{}`]({})\n", t, t);
     out << '\n';
   }
+  write_non_finite(out, run);
   auto plots = [&out](const std::vector<Plot>& list) {
     for (const Plot& p : list) {
       if (p.file.empty()) {

@@ -1,6 +1,6 @@
 // What a report says and where it goes (report/writers, report/output_folder): summary.json is
-// written whatever bytes the inputs echo, and a report folder appears complete or not at all,
-// never outside the folder it was given.
+// written whatever bytes the inputs echo, columns with NaN / inf entries are listed, and a report
+// folder appears complete or not at all, never outside the folder it was given.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -65,6 +65,54 @@ TEST_F(ReportText, SummaryJsonIsWrittenWhateverBytesTheInputsEcho) {
   EXPECT_EQ(md.find('\x1b'), std::string::npos);
 }
 
+ResultTable table_with_gaps() {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  return table_from_rows("oscillation", {"mode", "modal_hz", "measured_hz", "amplitude_m"},
+                         {{1, 100.0, 99.5, 1e-3}, {2, 300.0, nan, 2e-6}, {3, 500.0, inf, nan}});
+}
+
+TEST_F(ReportText, ColumnsWithNanOrInfAreListedInTheSummaryAndTheReport) {
+  RunRecord run;
+  run.status = RunStatus::pass;
+  write_result_csv(table_with_gaps(), dir_, run);
+  ASSERT_EQ(run.tables, std::vector<std::string>{"oscillation.csv"});
+  ASSERT_EQ(run.non_finite.size(), 2u);
+  EXPECT_EQ(run.non_finite[0].column, "measured_hz");
+  EXPECT_EQ(run.non_finite[0].keys, (std::vector<long>{2, 3}));
+  EXPECT_EQ(run.non_finite[1].column, "amplitude_m");
+  EXPECT_EQ(run.non_finite[1].keys, std::vector<long>{3});
+  EXPECT_NE(read_text(dir_ / "oscillation.csv").find("2,300,nan,"), std::string::npos);
+
+  write_summary_json(run, dir_ / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(read_text(dir_ / "summary.json"));
+  ASSERT_EQ(j["non_finite"].size(), 2u);
+  EXPECT_EQ(j["non_finite"][0]["file"], "oscillation.csv");
+  EXPECT_EQ(j["non_finite"][0]["column"], "measured_hz");
+  EXPECT_EQ(j["non_finite"][0]["key_column"], "mode");
+  EXPECT_EQ(j["non_finite"][0]["keys"], nlohmann::json::array({2, 3}));
+
+  write_report_md(run, dir_ / "report.md");
+  const std::string md = read_text(dir_ / "report.md");
+  EXPECT_NE(md.find("Entries without a value"), std::string::npos);
+  EXPECT_NE(md.find("| oscillation.csv | measured_hz | mode = 2, 3 | none |"), std::string::npos);
+}
+
+// loop_summary.csv of the lift-off loop has no closed-form energy (that closed form is for a constant
+// normal load): it holds nan there, and the passing run says so in summary.json.
+TEST_F(ReportText, APassingRunListsTheNotApplicableEntriesItWrote) {
+  const fs::path case_file = fs::path(BB_SOURCE_DIR) / "cases" / "verification" / "jenkins_loop_lift_off.toml";
+  const RunOutcome o = run_case(case_file, {.out_dir = dir_ / "out", .study = false, .plots = false});
+  ASSERT_EQ(o.record.status, RunStatus::pass) << o.record.message;
+  ASSERT_TRUE(o.written);
+  const nlohmann::json j = nlohmann::json::parse(read_text(dir_ / "out" / "summary.json"));
+  bool listed = false;
+  for (const nlohmann::json& n : j["non_finite"])
+    listed = listed || (n["file"] == "loop_summary.csv" && n["column"] == "closed_form_energy_j");
+  EXPECT_TRUE(listed) << j["non_finite"].dump();
+  EXPECT_NE(read_text(dir_ / "out" / "loop_summary.csv").find(",nan,"), std::string::npos);
+  EXPECT_EQ(entries(dir_).front(), "out") << "no temporary folder left beside the report";
+}
+
 // A refused case writes the refusal only: the tables computed before a check found its unknown
 // column are not left beside it to be read as results.
 TEST_F(ReportText, ABadInputRunWritesItsReportAndNothingElse) {
@@ -75,6 +123,32 @@ TEST_F(ReportText, ABadInputRunWritesItsReportAndNothingElse) {
   const nlohmann::json j = nlohmann::json::parse(read_text(dir_ / "out" / "summary.json"));
   EXPECT_TRUE(j["tables"].empty());
   EXPECT_TRUE(j["checks"].empty());
+}
+
+TEST_F(ReportText, TheReportNamesTheCheckThatReadANonFiniteEntry) {
+  RunRecord run;
+  write_result_csv(table_with_gaps(), dir_, run);
+  CheckSpec spec;
+  spec.name = "second mode";
+  spec.result = "oscillation";
+  run.check_specs.push_back(spec);
+  CheckEntry e;
+  e.group = "second mode";
+  e.column = "measured_hz";
+  e.key = e.computed_key = 2;
+  run.checks.push_back(e);
+  write_report_md(run, dir_ / "report.md");
+  EXPECT_NE(
+      read_text(dir_ / "report.md").find("| oscillation.csv | measured_hz | mode = 2, 3 | second mode (failed) |"),
+      std::string::npos);
+}
+
+TEST_F(ReportText, ATableNameThatIsAPathIsNeverWritten) {
+  RunRecord run;
+  ResultTable t = table_with_gaps();
+  t.name = "../escape";
+  EXPECT_THROW(write_result_csv(t, dir_ / "out", run), std::logic_error);
+  EXPECT_FALSE(fs::exists(dir_ / "escape.csv"));
 }
 
 class StagedReport : public test::TempFolderTest {};

@@ -9,6 +9,7 @@
 #include "cases/case_parameter.hpp"
 #include "common/errors.hpp"
 #include "common/toml_reader.hpp"
+#include "common/user_text.hpp"
 
 namespace bb {
 
@@ -57,9 +58,9 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   d.at = r.location();
   const std::string kind = r.choice("kind", {"peaks", "frf", "hysteresis"});
   const DataKind k = kind == "peaks" ? DataKind::peaks : kind == "frf" ? DataKind::frf : DataKind::hysteresis;
-  const std::filesystem::path file = case_file.parent_path() / r.string("file");
+  const std::filesystem::path file = r.input_file("file", case_file.parent_path());
   d.data = read_measured_data(file, k);
-  d.name = r.optional_string("name").value_or(file.stem().string());
+  d.name = r.optional_label("name").value_or(printable(file.stem().string()));
   d.table = r.string("table");
   const KindColumns allowed = kind_columns(k);
   for (const auto& [key, value] : r.table("columns")) {

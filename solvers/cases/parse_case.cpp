@@ -16,6 +16,7 @@
 #include "cases/parse_study.hpp"
 #include "cases/parse_time.hpp"
 #include "common/errors.hpp"
+#include "common/user_text.hpp"
 
 namespace bb {
 namespace {
@@ -76,14 +77,14 @@ ModelNeed model_need(const RotatingSpec&) { return ModelNeed::mesh; }
 CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   CheckSpec c;
   c.at = r.location();
-  c.name = r.string("name");
-  c.result = r.string("result");  // whether the analysis makes it is known only when it runs
+  c.name = r.label("name");
+  c.result = r.label("result");  // whether the analysis makes it is known only when it runs
   if (r.has("reference") == r.has("reference_result"))
     r.fail("reference", "give either 'reference' (a CSV file) or 'reference_result' (a result table of this run)");
   if (r.has("reference"))
-    c.reference = folder / r.string("reference");
+    c.reference = r.input_file("reference", folder);
   else
-    c.reference_result = r.string("reference_result");
+    c.reference_result = r.label("reference_result");
   const std::string match = r.choice("match", {"key", "mac", "label"}, "key");
   c.match = match == "mac" ? CheckSpec::Match::mac : match == "label" ? CheckSpec::Match::label : CheckSpec::Match::key;
   if (r.has("reference_case")) {
@@ -93,7 +94,7 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
       r.fail("reference_case",
              "names the case whose result table 'reference_result' is compared with (or, with match = \"mac\", "
              "whose modes the keys of 'reference' number)");
-    c.reference_case = folder / r.string("reference_case");
+    c.reference_case = r.input_file("reference_case", folder);
     if (!fs::is_regular_file(c.reference_case))
       r.fail("reference_case", fmt::format("no case file {}", c.reference_case.string()));
   }
@@ -113,16 +114,19 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   if (r.has("labels")) {
     if (c.match != CheckSpec::Match::label) r.fail("labels", "applies to match = \"label\" only");
     c.labels = r.string_array("labels");
+    for (const std::string& label : c.labels)
+      if (const std::string problem = label_problem(label); !problem.empty()) r.fail("labels", problem);
   }
   if (c.match == CheckSpec::Match::label && c.labels.empty())
     r.fail("match", "\"label\" pairs rows by text columns: give labels = [\"type\", ...]");
-  c.key = r.string("key");
+  c.key = r.label("key");
   if (c.match == CheckSpec::Match::mac && c.key != "mode")
     r.fail("key", "match = \"mac\" pairs modes: the key is \"mode\"");
   TomlReader compare(r.table("compare"), r.path() + ".compare", r.file());
+  compare.labels_as_keys();
   for (const auto& [k, v] : r.table("compare")) {
     const std::string result_column(k.str());
-    c.compare.emplace_back(result_column, compare.string(result_column));
+    c.compare.emplace_back(result_column, compare.label(result_column));
   }
   if (c.compare.empty()) r.fail("compare", "needs at least one 'result_column = \"reference_column\"' pair");
   if (r.has("keys")) {
@@ -135,7 +139,7 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   if (!r.has("abs_tol") && !r.has("rel_tol")) r.fail("", "a check needs abs_tol and/or rel_tol");
   c.abs_tol = r.non_negative("abs_tol", 0.0);
   c.rel_tol = r.non_negative("rel_tol", 0.0);
-  c.source = r.optional_string("source").value_or("");
+  c.source = r.optional_label("source").value_or("");
   r.finish();
   return c;
 }
@@ -157,6 +161,12 @@ toml::table read_case_table(const fs::path& file, int depth) {
   if (!from->is_string()) throw InputError(fmt::format("{}: 'case.model_from': expected a case file name", at.where()));
   if (depth > 8) throw InputError(fmt::format("{}: 'case.model_from': more than 8 levels (a cycle?)", at.where()));
   const fs::path base_file = file.parent_path() / from->value<std::string>().value();
+  if (fs::is_directory(base_file))
+    throw InputError(printable(
+        fmt::format("{}: 'case.model_from': {} is a folder; name a case file", at.where(), base_file.string())));
+  if (!fs::is_regular_file(base_file))
+    throw InputError(
+        printable(fmt::format("{}: 'case.model_from': case file {} not found", at.where(), base_file.string())));
   const toml::table base = read_case_table(base_file, depth + 1);
   parse_case_table(base, base_file);  // errors in the base name the base file and its lines
   for (const char* key : {"material", "mesh", "sets", "bc", "section"}) {
@@ -181,9 +191,20 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   spec.file = file;
   {
     TomlReader c(top.table("case"), "case", file);
-    spec.name = c.optional_string("name").value_or(file.stem().string());
-    spec.title = c.optional_string("title").value_or(spec.name);
-    spec.description = c.optional_string("description").value_or("");
+    // The name is the report folder's name (bladebench run without --out): no path may hide in it.
+    if (c.has("name")) {
+      spec.name = c.string("name");
+      if (const std::string problem = dotted_name_problem(spec.name); !problem.empty())
+        c.fail("name", problem + "; a case name is the name of its report folder");
+    } else {
+      spec.name = file.stem().string();
+      if (const std::string problem = dotted_name_problem(spec.name); !problem.empty())
+        throw InputError(printable(fmt::format(
+            "{}: the file name cannot be the case name (the name of its report folder): {}; give [case] name",
+            file.string(), problem)));
+    }
+    spec.title = c.optional_label("title").value_or(spec.name);
+    spec.description = c.optional_label("description", true).value_or("");
     if (const auto from = c.optional_string("model_from")) spec.model_from = folder / *from;
     c.finish();
   }

@@ -47,10 +47,13 @@ std::vector<FrfForce> parse_forces(TomlReader& r) {
 Eigen::MatrixXd parse_square_matrix(TomlReader& r, const std::string& key, size_t n) {
   const toml::array& rows = r.array(key);
   if (rows.size() != n) r.fail(key, fmt::format("needs {} rows, one per DOF in 'dofs', found {}", n, rows.size()));
+  // Every row is checked before the n x n matrix is allocated: its size is then written in the file.
+  for (size_t i = 0; i < n; ++i)
+    if (const toml::array* row = rows[i].as_array(); !row || row->size() != n)
+      r.fail(key, fmt::format("row {} must be a list of {} numbers", i + 1, n));
   Eigen::MatrixXd m(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   for (size_t i = 0; i < n; ++i) {
     const toml::array* row = rows[i].as_array();
-    if (!row || row->size() != n) r.fail(key, fmt::format("row {} must be a list of {} numbers", i + 1, n));
     for (size_t j = 0; j < n; ++j) {
       const std::optional<double> v = (*row)[j].value<double>();
       if (!v || !std::isfinite(*v)) r.fail(key, fmt::format("entry ({}, {}) is not a finite number", i + 1, j + 1));
@@ -81,16 +84,15 @@ ReducedModel parse_matrices(TomlReader& r) {
 
 RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
   RomSpec rom;
-  rom.name = r.string("name");
-  if (rom.name.empty() || rom.name == "full" || rom.name.find_first_of(" ./") != std::string::npos)
-    r.fail("name",
-           fmt::format("'{}': choose a short name without spaces, dots or slashes, other than \"full\"", rom.name));
+  // The name becomes file names (reduced_models/<name>.toml) and table names (peaks_<name>).
+  rom.name = r.name("name");
+  if (rom.name == "full") r.fail("name", "\"full\" names the full mesh's curves; choose another name");
   if (static_cast<int>(r.has("file")) + static_cast<int>(r.has("masters")) + static_cast<int>(r.has("stiffness")) != 1)
     r.fail("masters",
            "give one of 'masters' (Craig-Bampton), 'file' (a reduced model on disk) or 'stiffness' + 'mass' + 'dofs' "
            "(matrices)");
   if (r.has("file")) {
-    rom.file = folder / r.string("file");
+    rom.file = r.input_file("file", folder);
   } else if (r.has("stiffness")) {
     rom.matrices = parse_matrices(r);
   } else {

@@ -46,7 +46,7 @@ contact::JenkinsParameters parse_law(TomlReader& r, bool preload) {
 HbmContactSpec parse_contact(TomlReader r) {
   HbmContactSpec c;
   c.at = r.location();
-  c.name = r.string("name");
+  c.name = r.name("name");
   c.law = parse_law(r, true);
   c.tangential = parse_combination(r, "tangential");
   if (r.has("normal")) c.normal = parse_combination(r, "normal");
@@ -79,7 +79,7 @@ DamperSpec parse_damper(TomlReader r) {
     if (!n.is_table()) r.fail("points", "write each point as { name = \"L1\", face = \"left\", point = \"L1\" }");
     TomlReader p(*n.as_table(), fmt::format("{}.points[{}]", r.path(), i++), r.file());
     DamperPointSpec s;
-    s.name = p.string("name");
+    s.name = p.name("name");
     if (!names.insert(s.name).second) p.fail("name", fmt::format("a damper point named '{}' exists already", s.name));
     s.left_face = p.choice("face", {"left", "right"}) == "left";
     s.point = p.optional_string("point").value_or("");

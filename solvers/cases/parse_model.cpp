@@ -7,6 +7,7 @@
 
 #include "cases/parse_common.hpp"
 #include "common/errors.hpp"
+#include "common/user_text.hpp"
 
 namespace bb {
 namespace {
@@ -141,7 +142,7 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
     m.merge_tolerance = r.non_negative("merge_tolerance", m.merge_tolerance);
     if (kind == "gmsh") {
       m.kind = MeshSpec::Kind::gmsh;
-      m.gmsh_file = folder / r.string("file");
+      m.gmsh_file = r.input_file("file", folder);
     } else {
       m.kind = MeshSpec::Kind::hex_blocks;
       int index = 0;
@@ -157,8 +158,8 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
   }
   if (kind == "csv") {
     m.kind = MeshSpec::Kind::csv;
-    m.nodes_csv = folder / r.string("nodes");
-    m.elements_csv = folder / r.string("elements");
+    m.nodes_csv = r.input_file("nodes", folder);
+    m.elements_csv = r.input_file("elements", folder);
     r.finish();
     return m;
   }
@@ -213,7 +214,7 @@ NodeSetSpec parse_set(TomlReader r, const std::string& name) {
     s.ids = r.integer_array("ids");
     if (s.ids.empty()) r.fail("ids", "empty id list");
   }
-  s.group = r.optional_string("group").value_or("");
+  s.group = r.optional_label("group").value_or("");
   static const char* axes[] = {"x", "y", "z"};
   bool predicate = false;
   for (int a = 0; a < 3; ++a) {
@@ -346,6 +347,9 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
   if (const toml::table* sets = top.optional_table("sets")) {
     for (const auto& [k, v] : *sets) {
       const std::string name(k.str());
+      // Set names become DOF names ("tip.x"), CSV column names and plot file names.
+      if (const std::string problem = name_problem(name); !problem.empty())
+        TomlReader(*sets, "sets", file).fail(name, problem);
       if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
       spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
       if (spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::blade_section) {

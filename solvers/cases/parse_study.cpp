@@ -92,6 +92,7 @@ RomStudySpec parse_rom_study(TomlReader r) {
   }
   if (s.modes.empty()) r.fail("modes", "needs at least one mode count");
   TomlReader sets(r.table("master_sets"), r.path() + ".master_sets", r.file());
+  sets.labels_as_keys();
   for (const auto& [k, v] : r.table("master_sets")) {
     const std::string name(k.str());
     s.master_sets.emplace_back(name, sets.string_array(name));

@@ -263,7 +263,9 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
           e.pass = e.computed >= e.reference - e.tolerance;
           break;
       }
-      e.pass = e.pass && std::isfinite(e.computed);
+      // A NaN or inf on either side (a value that does not apply, e.g. a reference_result row
+      // without a peak) fails the entry, whatever the relation: a run cannot pass on it.
+      e.pass = e.pass && std::isfinite(e.computed) && std::isfinite(e.reference);
       entries.push_back(e);
     }
   }

@@ -15,12 +15,14 @@
 #include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
+#include "common/user_text.hpp"
 #include "identify/synthetic_data.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/calibrate_case.hpp"
 #include "pipeline/run_case.hpp"
 #include "report/calculix_export.hpp"
 #include "report/calibration_report.hpp"
+#include "report/output_folder.hpp"
 #include "report/writers.hpp"
 
 namespace fs = std::filesystem;
@@ -32,17 +34,20 @@ int failed_count(const bb::RunRecord& r) {
       std::count_if(r.checks.begin(), r.checks.end(), [](const bb::CheckEntry& e) { return !e.pass; }));
 }
 
+// User text reaches the terminal through printable(): no control character or invalid byte.
 void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
   const bb::RunRecord& r = o.record;
-  std::fprintf(stderr, "%s%s: %s (%zu checks, %d failed, %.3f s) -> %s\n", prefix.c_str(), r.case_name.c_str(),
-               bb::status_name(r.status).c_str(), r.checks.size(), failed_count(r), r.wall_seconds,
-               (o.out_dir / "report.md").string().c_str());
-  if (!r.message.empty()) std::fprintf(stderr, "  error: %s\n", r.message.c_str());
-  for (const std::string& w : r.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
+  const std::string report = o.written ? (o.out_dir / "report.md").string() : std::string("no report written");
+  std::fprintf(stderr, "%s%s: %s (%zu checks, %d failed, %.3f s) -> %s\n", prefix.c_str(),
+               bb::printable(r.case_name).c_str(), bb::status_name(r.status).c_str(), r.checks.size(), failed_count(r),
+               r.wall_seconds, bb::printable(report).c_str());
+  if (!r.message.empty()) std::fprintf(stderr, "  error: %s\n", bb::printable(r.message).c_str());
+  for (const std::string& w : r.warnings) std::fprintf(stderr, "  warning: %s\n", bb::printable(w).c_str());
   for (const bb::CheckEntry& e : r.checks)
     if (!e.pass)
       std::fprintf(stderr, "  FAIL %s: computed %.9g, expected %s reference %.9g (tolerance %.3g, |error| %.3g)\n",
-                   e.name.c_str(), e.computed, bb::relation_symbol(e.relation), e.reference, e.tolerance, e.abs_error);
+                   bb::printable(e.name).c_str(), e.computed, bb::relation_symbol(e.relation), e.reference, e.tolerance,
+                   e.abs_error);
 }
 
 // A subcommand's body: bad input -> exit 2, any other failure -> exit 3, the message on stderr.
@@ -50,10 +55,10 @@ int guarded(const std::function<int()>& body) {
   try {
     return body();
   } catch (const bb::InputError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    std::fprintf(stderr, "error: %s\n", bb::printable(e.what()).c_str());
     return bb::exit_bad_input;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    std::fprintf(stderr, "error: %s\n", bb::printable(e.what()).c_str());
     return bb::exit_solver_failed;
   }
 }
@@ -72,6 +77,9 @@ struct RunArgs {
 };
 
 int run_command(const RunArgs& a) {
+  // With several cases --out is the parent of their report folders; with one, the folder itself
+  // (checked by the run, which then reports where it could not write).
+  if (a.cases.size() > 1 && !a.out.empty()) bb::prepare_output_parent(a.out, "--out");
   int rc = bb::exit_pass;
   for (const std::string& c : a.cases) {
     bb::RunOptions opt;
@@ -117,6 +125,7 @@ int validate_command(const ValidateArgs& a) {
     std::fprintf(stderr, "error: no *.toml case file under %s\n", a.dir.c_str());
     return bb::exit_bad_input;
   }
+  bb::prepare_output_parent(a.out, "--out");
   std::vector<bb::IndexEntry> index;
   std::map<std::string, fs::path> seen;
   int rc = bb::exit_pass;
@@ -137,7 +146,7 @@ int validate_command(const ValidateArgs& a) {
       e.status = bb::RunStatus::bad_input;
       e.message = fmt::format("two case files share the name '{}': {} and {}", files[i].stem().string(),
                               it->second.string(), files[i].string());
-      std::fprintf(stderr, "  error: %s\n", e.message.c_str());
+      std::fprintf(stderr, "  error: %s\n", bb::printable(e.message).c_str());
       code = bb::exit_bad_input;
     }
     index.push_back(e);
@@ -165,6 +174,8 @@ int calibrate_command(const CalibrateArgs& a) {
   const fs::path out =
       a.out.empty() ? fs::path("reports") / (fs::path(a.case_file).stem().string() + "-calibration") : fs::path(a.out);
   return guarded([&] {
+    // Before the fit, which may take minutes: an unusable --out fails now.
+    bb::StagedFolder stage(out);
     bb::FitProgress progress;
     int last_start = 0;
     if (isatty(STDERR_FILENO))
@@ -177,14 +188,15 @@ int calibrate_command(const CalibrateArgs& a) {
     const bb::CalibrationOutcome o = bb::calibrate_case(a.case_file, progress);
     if (last_start != 0) std::fputc('\n', stderr);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    bb::write_calibration_outputs(o, a.case_file, wall, out, !a.no_plots);
+    bb::write_calibration_outputs(o, a.case_file, wall, stage.path(), !a.no_plots);
+    stage.commit();
     std::fprintf(stderr, "%s: %s, cost %.6g -> %.6g in %.1f s -> %s\n", a.case_file.c_str(),
                  o.converged ? "converged" : "NOT converged", o.initial_cost, o.final_cost, wall,
                  (out / "report.md").string().c_str());
     for (size_t i = 0; i < o.values.size(); ++i)
       std::fprintf(stderr, "  %s = %.8g (start %.8g, std %.3g)\n", o.spec.parameters[i].path.c_str(), o.values[i],
                    o.spec.parameters[i].start, o.std_devs[i]);
-    for (const auto& w : o.warnings) std::fprintf(stderr, "  warning: %s\n", w.c_str());
+    for (const auto& w : o.warnings) std::fprintf(stderr, "  warning: %s\n", bb::printable(w).c_str());
     for (const bb::CheckEntry& e : o.cross_check)
       if (!e.pass)
         std::fprintf(stderr, "  cross-check FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n",
@@ -240,7 +252,7 @@ int export_command(const ExportArgs& a) {
     std::fprintf(stderr, "%s: CalculiX deck, %d modes -> %s\n", a.case_file.c_str(), modes, a.out.c_str());
     return bb::exit_pass;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    std::fprintf(stderr, "error: %s\n", bb::printable(e.what()).c_str());
     return bb::exit_bad_input;
   }
 }
@@ -326,6 +338,6 @@ int main(int argc, char** argv) {
     return synthesize_command(synth);
   }
   if (*export_ccx) return export_command(export_args);
-  if (*run) return run_command(run_args);
-  return validate_command(validate_args);
+  if (*run) return guarded([&] { return run_command(run_args); });
+  return guarded([&] { return validate_command(validate_args); });
 }

@@ -18,6 +18,13 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The output folder cannot be used (a file where a folder should be, no permission, a folder that is
+// not a report). Bad input too (exit 2): the user named the place.
+class OutputError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 // A solver could not produce a trustworthy answer (no convergence, breakdown).
 class SolverError : public std::runtime_error {
  public:

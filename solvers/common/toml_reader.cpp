@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/user_text.hpp"
 
 namespace bb {
 namespace {
@@ -46,7 +47,8 @@ SourceLocation TomlReader::location(const std::string& key) const {
 void TomlReader::fail(const std::string& key, const std::string& message) const {
   const std::string name =
       key.empty() ? fmt::format("[{}]", path_) : (path_.empty() ? key : fmt::format("{}.{}", path_, key));
-  throw InputError(fmt::format("{}: '{}': {}", location(key).where(), name, message));
+  // Keys and messages may echo user bytes: printable() keeps them safe for terminals and reports.
+  throw InputError(printable(fmt::format("{}: '{}': {}", location(key).where(), name, message)));
 }
 
 bool TomlReader::has(const std::string& key) const {
@@ -114,6 +116,40 @@ std::string TomlReader::string(const std::string& key) {
 std::optional<std::string> TomlReader::optional_string(const std::string& key) {
   if (!has(key)) return std::nullopt;
   return string(key);
+}
+
+std::string TomlReader::name(const std::string& key) {
+  std::string v = string(key);
+  if (const std::string problem = name_problem(v); !problem.empty()) fail(key, problem);
+  return v;
+}
+
+std::string TomlReader::label(const std::string& key) {
+  std::string v = string(key);
+  if (const std::string problem = label_problem(v); !problem.empty()) fail(key, problem);
+  return v;
+}
+
+std::optional<std::string> TomlReader::optional_label(const std::string& key, bool multiline) {
+  if (!has(key)) return std::nullopt;
+  std::string v = string(key);
+  if (const std::string problem = label_problem(v, multiline); !problem.empty()) fail(key, problem);
+  return v;
+}
+
+std::filesystem::path TomlReader::input_file(const std::string& key, const std::filesystem::path& folder) {
+  const std::string v = string(key);
+  if (v.empty()) fail(key, "an empty file name");
+  if (v.find('\0') != std::string::npos) fail(key, "a file name with a NUL byte");
+  const std::filesystem::path file = folder / v;
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) fail(key, fmt::format("{} is a folder; name a file", file.string()));
+  return file;
+}
+
+void TomlReader::labels_as_keys() const {
+  for (const auto& [k, v] : table_)
+    if (const std::string problem = label_problem(k.str()); !problem.empty()) fail(std::string(k.str()), problem);
 }
 
 std::string TomlReader::choice(const std::string& key, const std::vector<std::string>& choices,

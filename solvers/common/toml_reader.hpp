@@ -27,6 +27,13 @@ class TomlReader {
   bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key);
   std::optional<std::string> optional_string(const std::string& key);
+  // A string that is a name or a label (common/user_text.hpp), else an error naming file, line, key.
+  std::string name(const std::string& key);
+  std::string label(const std::string& key);
+  std::optional<std::string> optional_label(const std::string& key, bool multiline = false);
+  // A file named relative to `folder`; it may be missing (its reader says so), but a folder is an
+  // error naming the key.
+  std::filesystem::path input_file(const std::string& key, const std::filesystem::path& folder);
   // One of `choices`; the error lists them.
   std::string choice(const std::string& key, const std::vector<std::string>& choices,
                      std::optional<std::string> fallback = std::nullopt);
@@ -37,6 +44,8 @@ class TomlReader {
   const toml::table& table(const std::string& key);
   const toml::table* optional_table(const std::string& key);
 
+  // Throws unless every key of the table is a label (e.g. the column names of a check's compare).
+  void labels_as_keys() const;
   // Throws for any key that was never read.
   void finish() const;
   SourceLocation location(const std::string& key = {}) const;

@@ -53,6 +53,8 @@ class MshLexer {
     std::ifstream in(file_, std::ios::binary);
     if (!in) throw InputError(fmt::format("{}: cannot open the Gmsh mesh file", file_.string()));
     for (std::string line; std::getline(in, line);) lines_.push_back(std::move(line));
+    rest_.assign(lines_.size() + 1, 0);
+    for (size_t i = lines_.size(); i-- > 0;) rest_[i] = rest_[i + 1] + lines_[i].size() + 1;
   }
 
   [[noreturn]] void fail(int line, std::string_view message) const {
@@ -117,9 +119,15 @@ class MshLexer {
     return static_cast<int>(value);
   }
 
-  size_t next_count(std::string_view what) {
+  // A count of things that follow, each `tokens_each` tokens at least. A count the rest of the file
+  // cannot hold is refused here, before anything is reserved for it (4294967295 elements would
+  // otherwise end in std::bad_alloc).
+  size_t next_count(std::string_view what, size_t tokens_each = 1) {
     const long value = next_long(what);
     if (value < 0) fail(fmt::format("{} must not be negative, found {}", what, value));
+    const size_t most = tokens_left() / tokens_each;
+    if (static_cast<unsigned long>(value) > most)
+      fail(fmt::format("{} is {}, more than the rest of the file can hold (at most {})", what, value, most));
     return static_cast<size_t>(value);
   }
 
@@ -156,11 +164,18 @@ class MshLexer {
   }
 
  private:
+  // An upper bound on the tokens after the read position: each takes a character and a separator.
+  size_t tokens_left() const {
+    if (row_ >= lines_.size()) return 0;
+    return (rest_[row_] - std::min(col_, lines_[row_].size()) + 1) / 2;
+  }
+
   static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
 
   std::filesystem::path file_;
   std::vector<std::string> lines_;
-  size_t row_ = 0;  // position of the next character to read
+  std::vector<size_t> rest_;  // characters (with line ends) from the start of each line to the end
+  size_t row_ = 0;            // position of the next character to read
   size_t col_ = 0;
   int line_ = 1;
 };
@@ -202,7 +217,7 @@ void read_mesh_format(MshLexer& lex) {
 }
 
 void read_physical_names(MshLexer& lex, std::map<EntityKey, std::string>& names) {
-  const size_t n = lex.next_count("the number of physical names");
+  const size_t n = lex.next_count("the number of physical names", 3);
   for (size_t i = 0; i < n; ++i) {
     const int dim = lex.next_int("a physical group dimension");
     const int tag = lex.next_int("a physical group tag");
@@ -236,8 +251,8 @@ void read_entities(MshLexer& lex, std::map<EntityKey, std::vector<int>>& physica
 
 void read_nodes(MshLexer& lex, RawNodes& nodes) {
   if (!nodes.tags.empty()) lex.fail("a second $Nodes section");
-  const size_t n_blocks = lex.next_count("the number of node blocks");
-  const size_t n_nodes = lex.next_count("the number of nodes");
+  const size_t n_blocks = lex.next_count("the number of node blocks", 4);
+  const size_t n_nodes = lex.next_count("the number of nodes", 4);  // a tag and three coordinates
   lex.next_long("the smallest node tag");
   lex.next_long("the largest node tag");
   nodes.tags.reserve(n_nodes);
@@ -249,7 +264,7 @@ void read_nodes(MshLexer& lex, RawNodes& nodes) {
     if (entity_dim < 0 || entity_dim > 3) lex.fail(fmt::format("entity dimension {} is not 0 to 3", entity_dim));
     lex.next_int("an entity tag");
     const int parametric = lex.next_int("the parametric flag");
-    const size_t in_block = lex.next_count("the number of nodes in the block");
+    const size_t in_block = lex.next_count("the number of nodes in the block", 4);
     const size_t first = nodes.tags.size();
     for (size_t i = 0; i < in_block; ++i) {
       const long tag = lex.next_long("a node tag");
@@ -274,8 +289,8 @@ void read_nodes(MshLexer& lex, RawNodes& nodes) {
 
 void read_elements(MshLexer& lex, std::vector<RawBlock>& blocks) {
   if (!blocks.empty()) lex.fail("a second $Elements section");
-  const size_t n_blocks = lex.next_count("the number of element blocks");
-  const size_t n_elements = lex.next_count("the number of elements");
+  const size_t n_blocks = lex.next_count("the number of element blocks", 4);
+  const size_t n_elements = lex.next_count("the number of elements", 2);  // a tag and a node at least
   lex.next_long("the smallest element tag");
   lex.next_long("the largest element tag");
   size_t total = 0;
@@ -287,7 +302,7 @@ void read_elements(MshLexer& lex, std::vector<RawBlock>& blocks) {
       lex.fail(fmt::format("entity dimension {} is not 0 to 3", block.entity_dim));
     block.entity_tag = lex.next_int("an entity tag");
     block.type = lex.next_int("an element type");
-    const size_t in_block = lex.next_count("the number of elements in the block");
+    const size_t in_block = lex.next_count("the number of elements in the block", 2);
     const std::optional<int> expected = gmsh_node_count(block.type);
     block.elements.reserve(in_block);
     for (size_t i = 0; i < in_block; ++i) {

@@ -14,11 +14,13 @@
 #include "checks/checks.hpp"
 #include "checks/mode_matching.hpp"
 #include "common/errors.hpp"
+#include "common/user_text.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/run_study.hpp"
 #include "report/analysis_files.hpp"
 #include "report/analysis_plots.hpp"
 #include "report/describe_analysis.hpp"
+#include "report/output_folder.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
 
@@ -89,10 +91,8 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
     auto entries = evaluate_check(c, tables, reference, pairing ? &*pairing : nullptr);
     run.checks.insert(run.checks.end(), entries.begin(), entries.end());
   }
-  fs::create_directories(out);
   for (const auto& [name, table] : tables) {
-    write_table_csv(table, out / (name + ".csv"));
-    run.tables.push_back(name + ".csv");
+    write_result_csv(table, out, run);
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);
   }
   write_analysis_files(spec.analysis, results, out, run);
@@ -108,6 +108,21 @@ void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, cons
   run.status = run.checks.empty() ? RunStatus::no_checks : (all_pass ? RunStatus::pass : RunStatus::fail);
 }
 
+// A refused case reports the refusal and nothing that looks like a result: what was written before
+// the error was found (the tables of a run whose check names an unknown column, their plots) goes
+// with its temporary folder, and the record forgets it.
+void drop_results(RunRecord& run) {
+  run.checks.clear();
+  run.tables.clear();
+  run.non_finite.clear();
+  run.listed_tables.clear();
+  run.plots.clear();
+  run.study.reset();
+  run.modal_study.reset();
+  run.study_tables.clear();
+  run.study_plots.clear();
+}
+
 }  // namespace
 
 RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
@@ -118,6 +133,8 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
   run.case_name = case_file.stem().string();
   run.title = run.case_name;
   outcome.out_dir = options.out_dir.value_or(fs::path("reports") / run.case_name);
+  // Everything is written to a temporary sibling of the report folder, moved into place at the end.
+  std::optional<StagedFolder> stage;
   try {
     const toml::table case_table = read_case_table(case_file);
     const CaseSpec spec = parse_case_table(case_table, case_file);
@@ -128,12 +145,11 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     run.description = spec.description;
     run.check_specs = spec.checks;
     outcome.out_dir = options.out_dir.value_or(fs::path("reports") / spec.name);
-    fs::create_directories(outcome.out_dir);
-    fs::remove(outcome.out_dir / "summary.json");  // a stale success must not survive a failed rerun
+    stage.emplace(outcome.out_dir);
     const Model model = build_model(spec.model);
     describe_model(spec.model, std::holds_alternative<ContactLoopSpec>(spec.analysis), model, run);
     try {
-      analyse(spec, model, outcome.out_dir, options, run);
+      analyse(spec, model, stage->path(), options, run);
     } catch (const InputError& e) {
       // Errors found by the solvers concern the model as a whole: name the case they came from.
       const std::string what = e.what();
@@ -141,22 +157,34 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     }
   } catch (const InputError& e) {
     run.status = RunStatus::bad_input;
-    run.message = e.what();
+    run.message = printable(e.what());
   } catch (const SolverError& e) {
     run.status = RunStatus::solver_failed;
-    run.message = e.what();
+    run.message = printable(e.what());
   } catch (const std::exception& e) {
     run.status = RunStatus::solver_failed;
-    run.message = fmt::format("internal error: {}", e.what());
+    run.message = printable(fmt::format("internal error: {}", e.what()));
   }
   run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (run.status == RunStatus::bad_input) {
+    stage.reset();
+    drop_results(run);
+  }
   try {
-    fs::create_directories(outcome.out_dir);
-    write_report_md(run, outcome.out_dir / "report.md");
-    write_summary_json(run, outcome.out_dir / "summary.json");
+    if (!stage) stage.emplace(outcome.out_dir);
+    write_report_md(run, stage->path() / "report.md");
+    write_summary_json(run, stage->path() / "summary.json");
+    stage->commit();
+    outcome.written = true;
+  } catch (const OutputError& e) {
+    // Nowhere to write: the message (also of an earlier error) goes to the terminal only.
+    const std::string what = printable(e.what());
+    if (run.message != what)
+      run.message = run.message.empty() ? what : fmt::format("{}; and no report: {}", run.message, what);
+    run.status = RunStatus::bad_input;
   } catch (const std::exception& e) {
     run.status = RunStatus::solver_failed;
-    run.message = fmt::format("could not write the report: {}", e.what());
+    run.message = printable(fmt::format("could not write the report: {}", e.what()));
   }
   return outcome;
 }

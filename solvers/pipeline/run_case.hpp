@@ -16,10 +16,13 @@ struct RunOptions {
 struct RunOutcome {
   RunRecord record;
   std::filesystem::path out_dir;
+  bool written = false;  // the report folder is in place (false: the folder could not be written)
 };
 
-// Never throws for bad input or solver failure: the record carries the status and message,
-// and summary.json is written last, so a half-written folder never reads as a success.
+// Never throws for bad input or solver failure: the record carries the status and message. The
+// report is written to a temporary folder beside out_dir and moved into place complete (report/
+// output_folder.hpp), so a failed or interrupted run never leaves a half-written report; a bad
+// input still gets its report (status bad_input) when the folder can be written.
 RunOutcome run_case(const std::filesystem::path& case_file, const RunOptions& options);
 
 }  // namespace bb

@@ -62,7 +62,7 @@ struct StudyRun {
              Plot plot) const {
     run.study_tables.push_back(std::move(t));
     run.study_note = note;
-    write_table_csv(run.study_tables.back(), out / (name + ".csv"));
+    write_result_csv(run.study_tables.back(), out, run, name + ".csv");
     if (plots) run.study_plots.push_back(plot(run.study_tables.back(), out, plot_name));
   }
 };

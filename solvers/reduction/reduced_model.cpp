@@ -11,18 +11,17 @@
 #include <map>
 
 #include "common/errors.hpp"
+#include "common/user_text.hpp"
 
 namespace bb {
 namespace {
 
 constexpr char kAxes[] = {'x', 'y', 'z'};
 
-// A label is whatever the exporter calls the node ("T2", "N1034"); whitespace would make the
-// sidecar's names ambiguous to read back, so it is refused.
-bool valid_label(const std::string& label) {
-  return !label.empty() &&
-         std::none_of(label.begin(), label.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
-}
+// A label is what the exporter calls the node ("T2", "N1034", "root.7"). It becomes CSV column
+// names and plot titles ("T2.x_amp_m"), so it is a name (common/user_text.hpp) that may hold dots:
+// no whitespace (the sidecar's names would be ambiguous), no comma, quote, path or control byte.
+bool valid_label(const std::string& label) { return dotted_name_problem(label).empty(); }
 
 // "K(2, 3) ('T2.y', 'mode 1')" for messages; 1-based like the matrix files.
 std::string entry(const char* matrix, const ReducedModel& model, Eigen::Index i, Eigen::Index j) {

@@ -27,6 +27,10 @@ namespace bb {
 namespace fs = std::filesystem;
 namespace {
 
+// The most DOFs a reduced-model file may name (documented in cases/README.md): its K and M are
+// dense, 800 MB each at this size, far beyond any Craig-Bampton model of a blade.
+constexpr size_t kMaxFileDofs = 10'000;
+
 // ---------------------------------------------------------------- writing
 
 void write_matrix_market(const Eigen::MatrixXd& a, const fs::path& file, const std::string& what) {
@@ -224,6 +228,11 @@ ReducedModel read_reduced_model(const fs::path& sidecar) {
   const std::string k_file = r.string("stiffness"), m_file = r.string("mass");
   ReducedModel model;
   const std::vector<std::string> names = r.string_array("dofs");
+  // The matrices are read into dense n x n arrays: a count taken from the file must not be able to
+  // ask for gigabytes before a single entry is read.
+  if (names.size() > kMaxFileDofs)
+    r.fail("dofs", fmt::format("names {} DOFs; a reduced-model file holds at most {} (dense matrices of {} MB each)",
+                               names.size(), kMaxFileDofs, kMaxFileDofs * kMaxFileDofs * 8 / 1'000'000));
   for (size_t i = 0; i < names.size(); ++i) {
     const auto dof = ReducedDof::parse(names[i]);
     if (!dof)
@@ -236,6 +245,7 @@ ReducedModel read_reduced_model(const fs::path& sidecar) {
   const auto n = static_cast<Eigen::Index>(model.dofs.size());
   auto read_matrix = [&](const std::string& key, const std::string& name) {
     const fs::path file = sidecar.parent_path() / name;
+    if (fs::is_directory(file)) r.fail(key, fmt::format("matrix file '{}' is a folder", file.string()));
     if (!fs::is_regular_file(file)) r.fail(key, fmt::format("matrix file '{}' not found", file.string()));
     return format == "csv" ? read_csv_matrix(file, n) : read_matrix_market(file, n);
   };

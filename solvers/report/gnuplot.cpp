@@ -11,11 +11,23 @@ namespace fs = std::filesystem;
 
 const char* kTerminal = "set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'\n";
 
+// A word for sh -c: single-quoted, a quote inside written '\''. The report folder comes from
+// --out, which may hold any character.
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
 }  // namespace
 
 std::string gnuplot_quote(const std::string& s) {
   std::string out;
-  for (char c : s) out += (c == '\'' ? std::string("''") : std::string(1, c));
+  // Doubled quotes inside '...'; a line break would end the string and start a gnuplot command.
+  for (char c : s)
+    out += c == '\''                                           ? std::string("''")
+           : static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? std::string(" ")
+                                                               : std::string(1, c);
   return out;
 }
 
@@ -26,9 +38,10 @@ Plot draw(const fs::path& out_dir, const std::string& stem, const std::string& t
   const fs::path gp = dir / (stem + ".gp");
   {
     std::ofstream out(gp);
-    out << kTerminal << fmt::format("set output '{}.svg'\n", stem) << script;
+    out << kTerminal << fmt::format("set output '{}.svg'\n", gnuplot_quote(stem)) << script;
   }
-  const std::string cmd = fmt::format("cd '{}' && gnuplot '{}.gp' > '{}.log' 2>&1", dir.string(), stem, stem);
+  const std::string cmd = fmt::format("cd {} && gnuplot {} > {} 2>&1", shell_quote(dir.string()),
+                                      shell_quote(stem + ".gp"), shell_quote(stem + ".log"));
   const int rc = std::system(cmd.c_str());
   if (rc != 0 || !fs::exists(dir / (stem + ".svg"))) {
     return {title, "", fmt::format("gnuplot failed or is not installed; see plots/{}.log", stem)};

@@ -23,6 +23,16 @@ struct Plot {
   std::string note;  // why it was not drawn
 };
 
+// A result column written with NaN or inf entries: values that do not apply (no peak found, a
+// closed form that does not exist for the row, a run that diverged). Listed in the report so that a
+// passing run never hides them; a check that reads one fails.
+struct NonFiniteColumn {
+  std::string file;  // the CSV, relative to the report folder
+  std::string column;
+  std::string key_column;
+  std::vector<long> keys;  // rows holding a non-finite value
+};
+
 struct RunRecord {
   std::filesystem::path case_file;
   std::string case_name;
@@ -35,8 +45,9 @@ struct RunRecord {
   std::vector<std::pair<std::string, std::string>> facts;  // inputs and solver statistics
   std::vector<CheckSpec> check_specs;
   std::vector<CheckEntry> checks;
-  std::vector<std::string> tables;         // CSV files written
-  std::vector<ResultTable> listed_tables;  // shown row by row in the report (tables with text labels)
+  std::vector<std::string> tables;          // CSV files written
+  std::vector<NonFiniteColumn> non_finite;  // their columns with NaN / inf entries
+  std::vector<ResultTable> listed_tables;   // shown row by row in the report (tables with text labels)
   std::vector<Plot> plots;
   std::optional<RefinementResult> study;
   std::string study_note;

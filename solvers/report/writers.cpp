@@ -6,7 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <stdexcept>
+
+#include "common/user_text.hpp"
+#include "report/output_folder.hpp"
 
 namespace bb {
 namespace {
@@ -26,13 +31,60 @@ std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
+// Every string of `j`, keys too, through printable(): summary.json shows user bytes as the
+// terminal and report.md do (\xHH), and its writer cannot fail on them.
+nlohmann::json printable_json(const nlohmann::json& j) {
+  if (j.is_string()) return printable(j.get_ref<const std::string&>(), true);
+  if (j.is_array()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const nlohmann::json& e : j) out.push_back(printable_json(e));
+    return out;
+  }
+  if (j.is_object()) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [k, v] : j.items()) out[printable(k)] = printable_json(v);
+    return out;
+  }
+  return j;
+}
+
+// "3, 7, 9" or "1, 2, 3, 4, 5, ... (40 rows)".
+std::string key_list(const std::vector<long>& keys) {
+  constexpr size_t kShown = 12;
+  if (keys.size() <= kShown) return fmt::format("{}", fmt::join(keys, ", "));
+  return fmt::format("{}, ... ({} rows)", fmt::join(keys.begin(), keys.begin() + kShown, ", "), keys.size());
+}
+
+// The checks that read an entry of a non-finite column (each such entry fails).
+std::string readers_of(const RunRecord& run, const NonFiniteColumn& n) {
+  std::set<std::string> names;
+  for (const CheckEntry& e : run.checks)
+    for (const CheckSpec& spec : run.check_specs)
+      if (spec.name == e.group && spec.result + ".csv" == n.file && e.column == n.column &&
+          std::find(n.keys.begin(), n.keys.end(), e.computed_key) != n.keys.end())
+        names.insert(spec.name);
+  return names.empty() ? std::string("none") : fmt::format("{} (failed)", fmt::join(names, "; "));
+}
+
+void write_non_finite(std::ostream& out, const RunRecord& run) {
+  if (run.non_finite.empty()) return;
+  out << "### Entries without a value\n\n"
+         "These columns hold NaN or inf entries, written as `nan` / `inf`: values that do not apply to the row (no "
+         "peak found, no closed form, a variant that diverged). A check that reads one fails.\n\n"
+         "| file | column | rows (by key) | read by a check |\n|---|---|---|---|\n";
+  for (const NonFiniteColumn& n : run.non_finite)
+    out << fmt::format("| {} | {} | {} = {} | {} |\n", n.file, n.column, n.key_column, key_list(n.keys),
+                       readers_of(run, n));
+  out << '\n';
+}
+
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.4e}", v) : std::string("inf"); }
 
 // A result table row by row, with its text labels and, where a check compared a row, the
 // reference value, the signed relative error, whether every check of that row passed and the
 // tightest tolerance among them (relative to the reference).
 // Every row of `table` as a markdown table, numbers to 4 significant digits.
-void write_table_rows(std::ofstream& out, const ResultTable& table) {
+void write_table_rows(std::ostream& out, const ResultTable& table) {
   std::vector<std::string> header = table.columns;
   header.insert(header.end(), table.text_columns.begin(), table.text_columns.end());
   std::string rule = "|";
@@ -46,7 +98,7 @@ void write_table_rows(std::ofstream& out, const ResultTable& table) {
   }
 }
 
-void write_listed_table(std::ofstream& out, const RunRecord& run, const ResultTable& table) {
+void write_listed_table(std::ostream& out, const RunRecord& run, const ResultTable& table) {
   std::vector<const CheckEntry*> entries;  // checks of this table
   for (const CheckEntry& e : run.checks)
     for (const CheckSpec& spec : run.check_specs)
@@ -131,10 +183,26 @@ void write_table_csv(const ResultTable& table, const std::filesystem::path& file
   for (Eigen::Index r = 0; r < table.values.rows(); ++r) {
     out << std::lround(table.values(r, 0));
     for (Eigen::Index c = 1; c < table.values.cols(); ++c) out << fmt::format(",{:.12g}", table.values(r, c));
-    for (const auto& column : table.text) out << ',' << csv_field(column[static_cast<size_t>(r)]);
+    for (const auto& column : table.text) out << ',' << csv_field(printable(column[static_cast<size_t>(r)], true));
     out << '\n';
   }
   if (!out) throw std::runtime_error("failed writing " + file.string());
+}
+
+void write_result_csv(const ResultTable& table, const std::filesystem::path& folder, RunRecord& run,
+                      const std::string& file) {
+  const std::string name = file.empty() ? table.name + ".csv" : file;
+  // Table names made of user names (reduced models, cases) were checked by the case parser.
+  if (name.find_first_of(std::string("/\\\0", 3)) != std::string::npos || name.starts_with("."))
+    throw std::logic_error(fmt::format("result table '{}' cannot name a file", printable(table.name)));
+  write_table_csv(table, folder / name);
+  if (file.empty()) run.tables.push_back(name);
+  for (Eigen::Index c = 1; c < table.values.cols(); ++c) {
+    NonFiniteColumn n{name, table.columns[static_cast<size_t>(c)], table.columns.front(), {}};
+    for (Eigen::Index r = 0; r < table.values.rows(); ++r)
+      if (!std::isfinite(table.values(r, c))) n.keys.push_back(std::lround(table.values(r, 0)));
+    if (!n.keys.empty()) run.non_finite.push_back(std::move(n));
+  }
 }
 
 void write_summary_json(const RunRecord& run, const std::filesystem::path& file) {
@@ -160,13 +228,17 @@ void write_summary_json(const RunRecord& run, const std::filesystem::path& file)
   for (const auto& [k, v] : run.facts) facts[k] = v;
   j["facts"] = facts;
   j["tables"] = run.tables;
+  j["non_finite"] = nlohmann::json::array();
+  for (const NonFiniteColumn& n : run.non_finite)
+    j["non_finite"].push_back({{"file", n.file}, {"column", n.column}, {"key_column", n.key_column}, {"keys", n.keys}});
   std::ofstream out = open_for_writing(file);
-  out << j.dump(2) << '\n';
+  // printable_json escapes every invalid byte; `replace` is the backstop that keeps dump() from throwing.
+  out << printable_json(j).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
   if (!out) throw std::runtime_error("failed writing " + file.string());
 }
 
 void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
-  std::ofstream out = open_for_writing(file);
+  std::ostringstream out;  // written through printable() at the end
   out << fmt::format("# {}\n\n", run.title);
   out << fmt::format("Case `{}` (`{}`): **{}** in {:.3f} s.\n\n", run.case_name, run.case_file.string(),
                      status_name(run.status), run.wall_seconds);
@@ -226,6 +298,7 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     for (const std::string& t : run.tables) out << fmt::format("- [`{}`]({})\n", t, t);
     out << '\n';
   }
+  write_non_finite(out, run);
   auto plots = [&out](const std::vector<Plot>& list) {
     for (const Plot& p : list) {
       if (p.file.empty()) {
@@ -291,11 +364,13 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     out << '\n';
     plots(run.study_plots);
   }
-  if (!out) throw std::runtime_error("failed writing " + file.string());
+  std::ofstream report = open_for_writing(file);
+  report << printable(out.str(), true);
+  if (!report) throw std::runtime_error("failed writing " + file.string());
 }
 
 void write_index_md(const std::vector<IndexEntry>& entries, const std::filesystem::path& file) {
-  std::ofstream out = open_for_writing(file);
+  std::ostringstream out;
   int passed = 0;
   for (const auto& e : entries) passed += exit_code(e.status) == 0 ? 1 : 0;
   out << "# bladebench validation index\n\n";
@@ -304,7 +379,7 @@ void write_index_md(const std::vector<IndexEntry>& entries, const std::filesyste
   for (const auto& e : entries)
     out << fmt::format("| [{}]({}) | {} | {} | {} | {:.3f} | {} |\n", e.case_name, e.report.generic_string(),
                        status_name(e.status), e.checks, e.failed, e.wall_seconds, e.message);
-  if (!out) throw std::runtime_error("failed writing " + file.string());
+  write_file_atomically(file, printable(out.str(), true));
 }
 
 }  // namespace bb

@@ -1,4 +1,5 @@
-// Output files of a run: result CSVs, summary.json, report.md.
+// Output files of a run: result CSVs, summary.json, report.md. User text reaches them only through
+// printable() (common/user_text.hpp), so no input byte can make a writer fail or a report lie.
 #pragma once
 #include <filesystem>
 
@@ -7,8 +8,12 @@
 
 namespace bb {
 
-// Header row = column names; the key column is written as an integer.
+// Header row = column names; the key column is written as an integer, NaN and inf as nan and inf.
 void write_table_csv(const ResultTable& table, const std::filesystem::path& file);
+// Writes `folder/<table.name>.csv` (or `folder/<file>`) and records in `run` its file name (in
+// run.tables unless a file name is given: a study table) and its columns with NaN / inf entries.
+void write_result_csv(const ResultTable& table, const std::filesystem::path& folder, RunRecord& run,
+                      const std::string& file = {});
 void write_summary_json(const RunRecord& run, const std::filesystem::path& file);
 void write_report_md(const RunRecord& run, const std::filesystem::path& file);
 

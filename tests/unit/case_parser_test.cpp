@@ -11,6 +11,7 @@
 #include "analysis/static_analysis.hpp"
 #include "assembly/load_vector.hpp"
 #include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
 #include "common/errors.hpp"
 #include "model/build_model.hpp"
 #include "temp_folder.hpp"
@@ -21,6 +22,22 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kThesisCases = fs::path(BB_SOURCE_DIR) / "cases" / "thesis";
+
+// Every shipped case keeps to the rules for names, labels and file keys (cases/README.md, "Names
+// and labels"): tightening them must not refuse a case that validates today.
+TEST(ShippedCases, EveryCaseAndItsCalibrationParse) {
+  int parsed = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(fs::path(BB_SOURCE_DIR) / "cases")) {
+    const fs::path& file = entry.path();
+    if (file.extension() != ".toml" || file.string().find("/data/") != std::string::npos) continue;
+    EXPECT_NO_THROW({
+      const toml::table table = read_case_table(file);
+      parse_calibration(table, file, parse_case_table(table, file));
+    }) << file;
+    ++parsed;
+  }
+  EXPECT_GE(parsed, 40);
+}
 
 TEST(ThesisCases, TableTwoCaseParsesIntoItsStatedValues) {
   const CaseSpec spec = parse_case_file(kThesisCases / "table02_q4_cantilever.toml");

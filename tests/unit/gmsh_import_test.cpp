@@ -242,5 +242,26 @@ TEST(GmshImport, MalformedFilesThrowInputErrorNamingFileAndLine) {
   EXPECT_NE(missing.find("no_such_file.msh"), std::string::npos) << missing;
 }
 
+// Counts are checked against what the rest of the file can hold before anything is reserved for
+// them: 4294967295 elements or 1e12 nodes end in a message naming the line, not std::bad_alloc.
+TEST(GmshImport, CountsTheFileCannotHoldAreRefusedNamingTheLine) {
+  const std::filesystem::path bad_input = std::filesystem::path(BB_SOURCE_DIR) / "tests" / "bad_input" / "data";
+  auto message = [&](const std::string& name) {
+    try {
+      read_gmsh_msh41(bad_input / name);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string elements = message("gmsh_huge_element_count.msh");
+  EXPECT_NE(elements.find("gmsh_huge_element_count.msh:68: the number of elements in the block is 4294967295"),
+            std::string::npos)
+      << elements;
+  const std::string nodes = message("gmsh_huge_node_count.msh");
+  EXPECT_NE(nodes.find("gmsh_huge_node_count.msh:22: the number of nodes is 1000000000000"), std::string::npos)
+      << nodes;
+}
+
 }  // namespace
 }  // namespace bb

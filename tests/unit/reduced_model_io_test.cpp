@@ -196,6 +196,17 @@ TEST_F(ReducedModelIo, RejectsABadMatrixMarketHeader) {
   }
 }
 
+TEST_F(ReducedModelIo, RefusesMoreDofsThanADenseMatrixMayHoldBeforeAllocating) {
+  // 20001 names in a small file would ask for two dense 20001 x 20001 matrices (6.4 GB).
+  std::string dofs = "[";
+  for (int i = 1; i <= 20001; ++i) dofs += "\"mode " + std::to_string(i) + "\",";
+  write_good_mass_mtx();
+  write("%%MatrixMarket matrix coordinate real symmetric\n20001 20001 1\n1 1 1.0\n", "K.mtx");
+  const std::string message = read_error(sidecar("matrix_market", "mtx", dofs + "]"));
+  EXPECT_TRUE(contains(message, "rom.toml:5: 'reduced_model.dofs': names 20001 DOFs")) << message;
+  EXPECT_TRUE(contains(message, "at most 10000")) << message;
+}
+
 TEST_F(ReducedModelIo, RejectsAnEntryIndexOutOfRange) {
   write("%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n1 1 2\n3 1 -1\n2 2 3\n", "K.mtx");
   write_good_mass_mtx();

@@ -1,0 +1,135 @@
+#include "report/output_folder.hpp"
+
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include "common/errors.hpp"
+#include "common/user_text.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string shown(const fs::path& path) { return printable(path.string()); }
+
+// The permissions a folder or file made by mkdir/open would get (mkdtemp and mkstemp use 0700/0600).
+fs::perms default_perms(bool folder) {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return static_cast<fs::perms>((folder ? 0777 : 0666) & ~mask);
+}
+
+// A new folder `parent/<prefix>XXXXXX`.
+fs::path make_temp_folder(const fs::path& parent, const std::string& prefix, const fs::path& for_whom) {
+  std::string name = (parent / fmt::format("{}XXXXXX", prefix)).string();
+  if (!::mkdtemp(name.data()))
+    throw OutputError(
+        fmt::format("report folder {}: cannot write in {} ({})", shown(for_whom), shown(parent), std::strerror(errno)));
+  std::error_code ignored;
+  fs::permissions(name, default_perms(true), ignored);
+  return name;
+}
+
+// Creates `folder` (and its parents) unless it exists; throws OutputError naming `what`.
+void ensure_folder(const fs::path& folder, const std::string& what) {
+  std::error_code ec;
+  for (fs::path p = folder; !p.empty() && p != p.parent_path(); p = p.parent_path())  // "file/sub": name the file
+    if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+      throw OutputError(fmt::format("{}: {} exists and is not a folder", what, shown(p)));
+  fs::create_directories(folder, ec);
+  if (ec) throw OutputError(fmt::format("{}: cannot create the folder {} ({})", what, shown(folder), ec.message()));
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw OutputError(fmt::format("{}: cannot write in the folder {} ({})", what, shown(folder), std::strerror(errno)));
+}
+
+}  // namespace
+
+StagedFolder::StagedFolder(fs::path destination) : destination_(std::move(destination)) {
+  if (!destination_.has_filename()) destination_ = destination_.parent_path();  // "reports/x/"
+  const std::string name = destination_.filename().string();
+  const std::string what = "report folder " + shown(destination_);
+  if (name.empty() || name == "." || name == "..")
+    throw OutputError(
+        fmt::format("{}: names no folder of its own (the report replaces its folder); give one, e.g. "
+                    "reports/<case-name>",
+                    what));
+  std::error_code ec;
+  const fs::file_status status = fs::status(destination_, ec);
+  if (fs::exists(status) && !fs::is_directory(status))
+    throw OutputError(fmt::format("{}: exists and is not a folder", what));
+  if (fs::is_directory(status) && !fs::is_empty(destination_, ec) && !fs::exists(destination_ / "summary.json") &&
+      !fs::exists(destination_ / "report.md"))
+    throw OutputError(
+        fmt::format("{}: an existing folder that holds no bladebench report (no summary.json or "
+                    "report.md); the report would replace it: give a new or empty folder",
+                    what));
+  fs::path parent = destination_.parent_path();
+  if (parent.empty()) parent = ".";
+  ensure_folder(parent, what);
+  temp_ = make_temp_folder(parent, fmt::format(".{}.tmp-", name), destination_);
+}
+
+StagedFolder::~StagedFolder() {
+  if (committed_) return;
+  std::error_code ignored;
+  fs::remove_all(temp_, ignored);
+}
+
+void StagedFolder::commit() {
+  const std::string what = "report folder " + shown(destination_);
+  std::error_code ec;
+  fs::path old;  // the earlier report, moved aside until the new one is in place
+  if (fs::symlink_status(destination_, ec).type() != fs::file_type::not_found) {
+    old =
+        make_temp_folder(temp_.parent_path(), fmt::format(".{}.old-", destination_.filename().string()), destination_);
+    fs::remove(old, ec);  // a free name: rename() cannot put a symbolic link or a file onto a folder
+    if (std::rename(destination_.c_str(), old.c_str()) != 0)
+      throw OutputError(fmt::format("{}: cannot replace the earlier report ({})", what, std::strerror(errno)));
+  }
+  if (std::rename(temp_.c_str(), destination_.c_str()) != 0) {
+    const int error = errno;
+    if (!old.empty()) std::rename(old.c_str(), destination_.c_str());
+    throw OutputError(fmt::format("{}: cannot move the report into place ({})", what, std::strerror(error)));
+  }
+  committed_ = true;
+  if (!old.empty()) fs::remove_all(old, ec);
+}
+
+void prepare_output_parent(const fs::path& folder, const std::string& option) {
+  ensure_folder(folder, option + " " + shown(folder));
+}
+
+void write_file_atomically(const fs::path& file, const std::string& text) {
+  fs::path parent = file.parent_path();
+  if (parent.empty()) parent = ".";
+  std::string temp = (parent / fmt::format(".{}.tmp-XXXXXX", file.filename().string())).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) throw OutputError(fmt::format("{}: cannot write ({})", shown(file), std::strerror(errno)));
+  ::close(fd);
+  std::error_code ignored;
+  fs::permissions(temp, default_perms(false), ignored);
+  {
+    std::ofstream out(temp, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) {
+      fs::remove(temp, ignored);
+      throw OutputError(fmt::format("{}: write failed", shown(file)));
+    }
+  }
+  if (std::rename(temp.c_str(), file.c_str()) != 0) {
+    const int error = errno;
+    fs::remove(temp, ignored);
+    throw OutputError(fmt::format("{}: cannot write ({})", shown(file), std::strerror(error)));
+  }
+}
+
+}  // namespace bb

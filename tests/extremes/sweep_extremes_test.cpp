@@ -90,7 +90,9 @@ TEST(SweepExtremes, EverySweepReachesItsEndOrSaysWhereAndNoPeakSitsOnAFailure) {
       }
       // A failed frequency between the peak's neighbours must have made it doubtful.
       for (double f : level.failed_hz)
-        if (std::abs(f - pk.frequency_hz) < 0.5 * spec.sweep.step_hz) EXPECT_FALSE(pk.trusted) << where;
+        if (std::abs(f - pk.frequency_hz) < 0.5 * spec.sweep.step_hz) {
+          EXPECT_FALSE(pk.trusted) << where;
+        }
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 
+#include "common/errors.hpp"
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
@@ -195,7 +196,21 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     }
     // Peaks on the grid (parabola through the largest point and its neighbours), the same way for
     // the time integration and the linear model, so that the two compare like for like.
-    const auto peaks_of = [&](const Eigen::MatrixXd& amplitude, const Eigen::MatrixXd& components) {
+    // A peak of the integration is a result only where the grid point it rests on and both its
+    // neighbours reached the steady state: an amplitude still changing from period to period can
+    // look like a peak (or hide one) and would be checked as if it were the answer.
+    const auto require_steady = [&](size_t kind, Index at, double f) {
+      for (Index i = std::max<Index>(at - 1, 0); i <= std::min<Index>(at + 1, nf - 1); ++i)
+        if (!level.steady[static_cast<size_t>(i)])
+          throw SolverError(fmt::format(
+              "time integration at Fe = {:g} N: the {} ({:.4f} Hz) rests on {:.4f} Hz, which did not reach "
+              "the steady state within {} periods (cycle-to-cycle change above {:g}); raise max_cycles or "
+              "steady_tolerance, or refine steps_per_period",
+              level.force,
+              kinds[kind] == "peak" ? std::string("peak") : (kinds[kind] == "ip" ? "IP" : "OOP") + std::string(" peak"),
+              f, frequencies[static_cast<size_t>(i)], spec.max_cycles, spec.steady_tolerance));
+    };
+    const auto peaks_of = [&](const Eigen::MatrixXd& amplitude, const Eigen::MatrixXd& components, bool integrated) {
       std::vector<double> prow = {static_cast<double>(l + 1), level.force};
       for (size_t k = 0; k < kinds.size(); ++k) {
         const Eigen::VectorXd values =
@@ -207,14 +222,15 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
         if (std::isfinite(f))
           at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
         at = std::clamp<Index>(at, 0, nf - 1);
+        if (integrated) require_steady(k, at, f);
         // The right (or first) response: the parabola's value without ip_oop, else the nearest grid value.
         const double amp = !pair ? v : right < nr ? amplitude(at, right) : v;
         prow.insert(prow.end(), {f, amp, amp / level.force});
       }
       return prow;
     };
-    peak_rows.push_back(peaks_of(level.amplitude, level.components));
-    linear_peak_rows.push_back(peaks_of(level.linear, level.linear_components));
+    peak_rows.push_back(peaks_of(level.amplitude, level.components, true));
+    linear_peak_rows.push_back(peaks_of(level.linear, level.linear_components, false));
     if (level.hbm) {
       std::vector<double> hrow = {static_cast<double>(l + 1), level.force};
       for (const HbmPeak& pk : level.hbm->peaks)

@@ -275,3 +275,31 @@ TEST_F(HbmSolverFailure, ASweepWithNoSolutionFailsTheRunWithItsReason) {
 
 }  // namespace
 }  // namespace bb
+
+namespace bb {
+namespace {
+
+class TimeSolverFailure : public test::TempFolderTest {};
+
+// A stepped sine stopped after 3 periods per frequency never reaches the steady state: its peak is
+// a transient amplitude, so the run fails (exit 3) naming the frequency, instead of passing a check.
+TEST_F(TimeSolverFailure, APeakOnAFrequencyThatIsNotSteadyFailsTheRun) {
+  test::OscillatorCase c;
+  c.levels = "[0.1]";
+  c.range = "[200.0, 250.0]";
+  c.step = "1.0";
+  std::string text = test::oscillator_case_text(c);
+  const std::string from = "type = \"hbm\"";
+  text.replace(text.find(from), from.size(), "type = \"time\"\nsteps_per_period = 64\nmax_cycles = 3");
+  text +=
+      "[[check]]\nname = \"peak\"\nresult = \"peaks\"\nreference_result = \"peaks\"\nkey = \"level\"\n"
+      "compare = { peak_hz = \"peak_hz\" }\nrel_tol = 1e-9\n";
+  const RunOutcome o = run_case(write(text), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
+  EXPECT_NE(o.record.message.find("did not reach the steady state within 3 periods"), std::string::npos)
+      << o.record.message;
+  EXPECT_EQ(exit_code(o.record.status), exit_solver_failed);
+}
+
+}  // namespace
+}  // namespace bb

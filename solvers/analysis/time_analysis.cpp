@@ -222,7 +222,7 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
         if (std::isfinite(f))
           at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
         at = std::clamp<Index>(at, 0, nf - 1);
-        if (integrated) require_steady(k, at, f);
+        if (integrated && spec.require_steady_peaks) require_steady(k, at, f);
         // The right (or first) response: the parabola's value without ip_oop, else the nearest grid value.
         const double amp = !pair ? v : right < nr ? amplitude(at, right) : v;
         prow.insert(prow.end(), {f, amp, amp / level.force});

@@ -13,6 +13,7 @@
 #include "analysis/hbm_nonlinear_modes.hpp"
 #include "analysis/hbm_response.hpp"
 #include "common/errors.hpp"
+#include "contact/state_fractions.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
 
@@ -78,19 +79,10 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
            std::abs(e.excitation - e.viscous - e.friction - e.normal) / std::max(std::abs(e.excitation), 1e-300)});
       for (size_t c = 0; c < pk.solution.contacts.size(); ++c) {
         const contact::AftResult& a = pk.solution.contacts[c];
-        double stick = 0, slip = 0, lift = 0;
-        for (const contact::ContactState s : a.state) {
-          if (s == contact::ContactState::stick)
-            ++stick;
-          else if (s == contact::ContactState::lift_off)
-            ++lift;
-          else
-            ++slip;
-        }
-        const double nt = static_cast<double>(a.state.size());
+        const contact::StateFractions f = contact::state_fractions(a.state);
         state_rows.push_back({key * 1000 + static_cast<double>(k + 1) * 100 + static_cast<double>(c + 1), level.force,
-                              pk.frequency_hz, stick / nt, slip / nt, lift / nt, a.normal[0], a.n.minCoeff(),
-                              a.n.maxCoeff(), friction_work(a)});
+                              pk.frequency_hz, f.stick, f.slip, f.lift_off, a.normal[0], a.n.minCoeff(), a.n.maxCoeff(),
+                              friction_work(a)});
         state_contacts.push_back(p.contact_names[c]);
         state_peaks.push_back(pk.kind);
       }

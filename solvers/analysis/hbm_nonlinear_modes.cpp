@@ -10,7 +10,9 @@
 #include <optional>
 #include <utility>
 
+#include "analysis/hbm_response.hpp"
 #include "common/errors.hpp"
+#include "contact/state_fractions.hpp"
 
 namespace bb {
 namespace {
@@ -45,17 +47,14 @@ BackbonePoint backbone_point(const PreparedHbm& p, const hbm::NonlinearModePoint
   b.force_for_peak = modal_force > 0 ? pt.kappa * pt.omega * pt.modal_amplitude / modal_force : kNan;
   for (Index r : p.responses) b.responses.push_back(std::abs(z[r]));
   if (p.ip_oop) {
-    b.ip = std::abs(z[p.ip_oop->first] + z[p.ip_oop->second]) / 2;
-    b.oop = std::abs(z[p.ip_oop->second] - z[p.ip_oop->first]) / 2;
+    b.ip = peak_values(p, z, 0).component;
+    b.oop = peak_values(p, z, 1).component;
   }
-  double samples = 0;
-  for (const contact::AftResult& a : pt.contacts)
-    for (const contact::ContactState s : a.state) {
-      samples += 1;
-      if (s == contact::ContactState::stick) b.stick += 1;
-      if (s == contact::ContactState::lift_off) b.lift += 1;
-    }
-  if (samples > 0) b.stick /= samples, b.lift /= samples;
+  for (const contact::AftResult& a : pt.contacts) {  // every contact has the same samples
+    const contact::StateFractions f = contact::state_fractions(a.state);
+    b.stick += f.stick / static_cast<double>(pt.contacts.size());
+    b.lift += f.lift_off / static_cast<double>(pt.contacts.size());
+  }
   return b;
 }
 

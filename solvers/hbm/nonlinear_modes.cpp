@@ -37,8 +37,6 @@ class EpmcSystem {
     a_ = a;
     s0_ = static_scale;
   }
-  double amplitude() const { return a_; }
-  double static_scale() const { return s0_; }
 
   Eigen::MatrixXd coefficients(const Eigen::VectorXd& z) const {
     Eigen::MatrixXd q = Eigen::Map<const Eigen::MatrixXd>(z.data(), n_, size_ / n_);

@@ -147,6 +147,7 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
     std::vector<std::string> cols = {"point", "frequency_hz"};
     for (const std::string& r : p.response_names) cols.push_back(r + "_amp_m");
     for (const std::string& r : p.response_names) cols.push_back(r + "_phase_deg");
+    for (const std::string& r : p.response_names) cols.push_back(r + "_max_m");
     if (p.ip_oop) cols.insert(cols.end(), {"ip_component_m", "oop_component_m"});
     cols.insert(cols.end(), {"residual_n", "iterations"});
     for (const HbmParameter& parameter : spec.sensitivities)
@@ -157,6 +158,7 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
       std::vector<double> row = {static_cast<double>(i + 1), level.frequency_hz[i]};
       for (Index r = 0; r < level.amplitude.cols(); ++r) row.push_back(level.amplitude(static_cast<Index>(i), r));
       for (Index r = 0; r < level.phase_deg.cols(); ++r) row.push_back(level.phase_deg(static_cast<Index>(i), r));
+      for (Index r = 0; r < level.excursion.cols(); ++r) row.push_back(level.excursion(static_cast<Index>(i), r));
       if (p.ip_oop)
         row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
       row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});

@@ -69,6 +69,7 @@ struct HbmLevel {
   std::vector<double> frequency_hz;  // of the path points
   Eigen::MatrixXd amplitude;         // path points x responses, first harmonic [m]
   Eigen::MatrixXd phase_deg;         // path points x responses, first harmonic's phase to the force
+  Eigen::MatrixXd excursion;         // path points x responses, largest |u(t)| over a period, all harmonics [m]
   Eigen::MatrixXd components;        // path points x (IP, OOP) [m] when ip_oop is set
   // Per path of spec.sensitivities: path points x responses, p d|z|/dp [m] and p d phase/dp [deg]
   // at fixed frequency (hbm/sensitivity.hpp); NaN where the sensitivity is not defined.

@@ -11,6 +11,11 @@ namespace bb {
 // First-harmonic complex amplitude of each model DOF (Re(Z e^{i theta}) = a cos + b sin).
 Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega);
 
+// Largest |x(t)| over a period of the signal x(t) = c0 + sum_h c(2h-1) cos(h theta) + c(2h) sin(h
+// theta) (one row of HarmonicBalance::recover): every harmonic counts, as in the displacement a
+// gauge or a clearance sees. Sampled, then refined by golden section around the largest sample.
+double largest_excursion(const Eigen::RowVectorXd& coefficients);
+
 // What a peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) measures in a response
 // z: the component that peaks, and the amplitude of the right (or first) response.
 struct PeakValues {

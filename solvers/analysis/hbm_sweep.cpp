@@ -22,6 +22,26 @@ Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen:
   return q.col(1).cast<std::complex<double>>() - std::complex<double>(0.0, 1.0) * q.col(2).cast<std::complex<double>>();
 }
 
+double largest_excursion(const Eigen::RowVectorXd& c) {
+  using Eigen::Index;
+  const Index harmonics = (c.size() - 1) / 2;
+  const auto x = [&](double theta) {
+    double v = c[0];
+    for (Index h = 1; h <= harmonics; ++h)
+      v += c[2 * h - 1] * std::cos(static_cast<double>(h) * theta) + c[2 * h] * std::sin(static_cast<double>(h) * theta);
+    return std::abs(v);
+  };
+  const int n = 32 * static_cast<int>(2 * harmonics + 1);
+  const double dt = 2 * std::numbers::pi / n;
+  int best = 0;
+  double best_value = -1.0;
+  for (int i = 0; i < n; ++i)
+    if (const double v = x(i * dt); v > best_value) best_value = v, best = i;
+  const GoldenSearch g = golden_section_maximum([&](double t) { return std::optional<double>(x(t)); },
+                                                (best - 1) * dt, (best + 1) * dt, 40);
+  return std::max(best_value, x(0.5 * (g.a + g.b)));
+}
+
 PeakValues peak_values(const PreparedHbm& p, const Eigen::VectorXcd& z, int kind) {
   if (!p.ip_oop) return {std::abs(z[p.responses.front()]), std::abs(z[p.responses.front()])};
   const auto [l, r] = *p.ip_oop;
@@ -336,13 +356,17 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   const size_t n_points = path.points.size();
   level.amplitude.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
   level.phase_deg.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
+  level.excursion.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
   if (p.ip_oop) level.components.resize(static_cast<Index>(n_points), 2);
   for (size_t i = 0; i < n_points; ++i) {
     const hbm::ContinuationPoint& pt = path.points[i];
     level.frequency_hz.push_back(pt.omega / kTwoPi);
-    const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
+    const Eigen::MatrixXd q = system.recover(pt.x, pt.omega);
+    const Eigen::VectorXcd z =
+        q.col(1).cast<std::complex<double>>() - std::complex<double>(0.0, 1.0) * q.col(2).cast<std::complex<double>>();
     for (size_t r = 0; r < p.responses.size(); ++r) {
       level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
+      level.excursion(static_cast<Index>(i), static_cast<Index>(r)) = largest_excursion(q.row(p.responses[r]));
       level.phase_deg(static_cast<Index>(i), static_cast<Index>(r)) =
           std::arg(z[p.responses[r]]) * 180.0 / std::numbers::pi;
     }

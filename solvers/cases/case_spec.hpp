@@ -12,6 +12,7 @@
 #include "analysis/analysis_spec.hpp"
 #include "checks/check_spec.hpp"
 #include "model/model_spec.hpp"
+#include "study/fidelity_spec.hpp"
 #include "study/study_spec.hpp"
 
 namespace bb {
@@ -26,6 +27,7 @@ struct CaseSpec {
   AnalysisSpec analysis;
   std::vector<CheckSpec> checks;
   std::optional<StudySpec> study;
+  std::optional<FidelitySpec> fidelity;  // what `run --fidelity` may vary, and the accuracy it must meet
 };
 
 // Throws InputError naming file, line and key for every malformed or missing entry.

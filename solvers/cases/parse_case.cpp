@@ -13,6 +13,7 @@
 #include "cases/parse_modal.hpp"
 #include "cases/parse_model.hpp"
 #include "cases/parse_rotating.hpp"
+#include "cases/parse_fidelity.hpp"
 #include "cases/parse_study.hpp"
 #include "cases/parse_time.hpp"
 #include "common/errors.hpp"
@@ -228,6 +229,7 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   for_each_table_in_array(top, "check",
                           [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });
   if (top.has("study")) spec.study = parse_study(top, spec.model, spec.analysis);
+  if (top.has("fidelity")) spec.fidelity = parse_fidelity(top, spec);
   top.has("calibration");  // read by parse_calibration (cases/parse_calibration.hpp)
   top.finish();
   return spec;

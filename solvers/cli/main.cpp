@@ -74,7 +74,20 @@ struct RunArgs {
   std::vector<std::string> cases;
   std::string out;
   bool study = false, no_plots = false;
+  bb::FidelityMode fidelity = bb::FidelityMode::fixed;
 };
+
+// --fidelity on run and validate: the case's settings unless asked (see cases/README.md, "Fidelity").
+void add_fidelity_option(CLI::App* app, bb::FidelityMode& mode) {
+  static const std::map<std::string, bb::FidelityMode> modes = {{"fixed", bb::FidelityMode::fixed},
+                                                                 {"fast", bb::FidelityMode::fast},
+                                                                 {"auto", bb::FidelityMode::automatic},
+                                                                 {"reference", bb::FidelityMode::reference}};
+  app->add_option("--fidelity", mode,
+                  "fixed: the case's own settings (default); fast / reference: the cheapest / finest level of every "
+                  "[fidelity] axis; auto: the cheapest levels whose estimated error meets the [fidelity] target")
+      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
+}
 
 int run_command(const RunArgs& a) {
   // With several cases --out is the parent of their report folders; with one, the folder itself
@@ -85,6 +98,7 @@ int run_command(const RunArgs& a) {
     bb::RunOptions opt;
     opt.study = a.study;
     opt.plots = !a.no_plots;
+    opt.fidelity = a.fidelity;
     if (!a.out.empty()) opt.out_dir = a.cases.size() == 1 ? fs::path(a.out) : fs::path(a.out) / fs::path(c).stem();
     const bb::RunOutcome o = bb::run_case(c, opt);
     print_outcome(o, "");
@@ -96,6 +110,7 @@ int run_command(const RunArgs& a) {
 struct ValidateArgs {
   std::string dir = "cases", out = "reports";
   bool study = false, no_plots = false;
+  bb::FidelityMode fidelity = bb::FidelityMode::fixed;
 };
 
 // "3 passed", "1 failed", "2 bad input": a status as the final line of validate says it.
@@ -133,6 +148,7 @@ int validate_command(const ValidateArgs& a) {
     bb::RunOptions opt;
     opt.study = a.study;
     opt.plots = !a.no_plots;
+    opt.fidelity = a.fidelity;
     // Output folder by file stem first; the case name is only known after parsing.
     opt.out_dir = fs::path(a.out) / files[i].stem();
     const bb::RunOutcome o = bb::run_case(files[i], opt);
@@ -141,7 +157,7 @@ int validate_command(const ValidateArgs& a) {
     bb::IndexEntry e{o.record.case_name,     fs::relative(o.out_dir / "report.md", a.out),
                      o.record.status,        static_cast<int>(o.record.checks.size()),
                      failed_count(o.record), o.record.wall_seconds,
-                     o.record.message};
+                     o.record.message,       o.record.fidelity};
     if (auto [it, fresh] = seen.emplace(files[i].stem().string(), files[i]); !fresh) {
       e.status = bb::RunStatus::bad_input;
       e.message = fmt::format("two case files share the name '{}': {} and {}", files[i].stem().string(),
@@ -273,6 +289,7 @@ int main(int argc, char** argv) {
                   "Output folder (default reports/<case-name>; with several cases, a parent folder)");
   run->add_flag("--study", run_args.study, "Also run the case's [study] (mesh refinement, accuracy vs cost)");
   run->add_flag("--no-plots", run_args.no_plots, "Skip gnuplot figures");
+  add_fidelity_option(run, run_args.fidelity);
 
   ValidateArgs validate_args;
   CLI::App* validate = app.add_subcommand("validate", "Run every case under a folder and write reports/index.md");
@@ -281,6 +298,7 @@ int main(int argc, char** argv) {
   validate->add_option("--out", validate_args.out, "Report folder; each case goes to <out>/<case-name>");
   validate->add_flag("--study", validate_args.study, "Also run every case's [study]");
   validate->add_flag("--no-plots", validate_args.no_plots, "Skip gnuplot figures");
+  add_fidelity_option(validate, validate_args.fidelity);
 
   CalibrateArgs calibrate_args;
   CLI::App* calibrate = app.add_subcommand(

@@ -1,6 +1,7 @@
 #include "pipeline/run_case.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -16,10 +17,12 @@
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 #include "model/build_model.hpp"
+#include "pipeline/run_fidelity.hpp"
 #include "pipeline/run_study.hpp"
 #include "report/analysis_files.hpp"
 #include "report/analysis_plots.hpp"
 #include "report/describe_analysis.hpp"
+#include "report/fidelity_plots.hpp"
 #include "report/output_folder.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
@@ -29,13 +32,52 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void analyse(const CaseSpec& spec, const Model& model, const fs::path& out, const RunOptions& options, RunRecord& run) {
-  // Long sweeps report progress on a terminal only (one line, rewritten in place).
-  HbmProgress progress;
-  if (isatty(STDERR_FILENO))
-    progress = [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
-  const AnalysisResults results = run_analysis(spec.analysis, model, progress);
-  if (progress) std::fputs("\r\033[K", stderr);
+// Long sweeps report progress on a terminal only (one line, rewritten in place).
+HbmProgress terminal_progress() {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [](const std::string& line) { std::fprintf(stderr, "\r\033[K%s", line.c_str()); };
+}
+
+// The run's fidelity: the frontier table, its plot, the facts, and in automatic mode an entry that
+// fails when the estimated error misses the target.
+void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityChoice& choice, const fs::path& out,
+                     bool plots, RunRecord& run) {
+  const char* mode_name = mode == FidelityMode::automatic ? "auto" : mode == FidelityMode::fast ? "fast" : "reference";
+  run.fidelity = fmt::format("{}: {}", mode_name, choice.settings);
+  if (mode == FidelityMode::automatic) run.fidelity += fmt::format(" (est. {:.2g})", choice.estimated_error);
+  run.facts.emplace_back("fidelity", fmt::format("--fidelity {}: {}", mode_name, choice.settings));
+  if (mode == FidelityMode::automatic) {
+    run.facts.emplace_back(
+        "fidelity target",
+        fmt::format("{:.3g} on {} of {} (each axis climbed to target / {} against its next level); estimated error "
+                    "{:.3g}{}",
+                    f.target, fmt::join(f.columns, ", "), f.result, f.axes.size(), choice.estimated_error,
+                    choice.met ? "" : ": NOT MET"));
+    CheckEntry e;
+    e.group = "Fidelity target";
+    e.name = fmt::format("Fidelity target: estimated error of {} ({})", f.result, choice.settings);
+    e.column = "estimated_error";
+    e.computed = choice.estimated_error;
+    e.abs_error = choice.estimated_error;
+    e.rel_error = choice.estimated_error;
+    e.tolerance = f.target;
+    e.relation = CheckSpec::Relation::at_most;
+    e.pass = choice.met;
+    run.checks.push_back(e);
+    if (!choice.met)
+      run.warnings.push_back(fmt::format(
+          "the fidelity target {:.3g} is not met: the finest levels' estimated error is {:.3g} (NaN: the "
+          "differences between levels did not decrease, so no estimate)",
+          f.target, choice.estimated_error));
+  }
+  if (!f.note.empty()) run.facts.emplace_back("fidelity note", f.note);
+  write_result_csv(choice.frontier, out, run);
+  run.listed_tables.push_back(choice.frontier);
+  if (plots) run.plots.push_back(plot_fidelity_frontier(choice.frontier, f, out, "fidelity_frontier"));
+}
+
+void analyse(const CaseSpec& spec, const Model& model, const AnalysisResults& results, const fs::path& out,
+             const RunOptions& options, RunRecord& run) {
   describe_analysis(spec.analysis, results, model, run);
   // Runs of the cases some checks compare with (their analyses only), each run once.
   struct OtherRun {
@@ -146,10 +188,20 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     run.check_specs = spec.checks;
     outcome.out_dir = options.out_dir.value_or(fs::path("reports") / spec.name);
     stage.emplace(outcome.out_dir);
-    const Model model = build_model(spec.model);
-    describe_model(spec.model, std::holds_alternative<ContactLoopSpec>(spec.analysis), model, run);
+    const HbmProgress progress = terminal_progress();
+    std::optional<FidelityChoice> choice;
+    if (options.fidelity != FidelityMode::fixed && !spec.fidelity)
+      run.warnings.push_back("--fidelity: the case has no [fidelity] section; it ran at its own settings");
+    if (options.fidelity != FidelityMode::fixed && spec.fidelity)
+      choice.emplace(run_with_fidelity(spec, options.fidelity, progress));
+    const CaseSpec& used = choice ? choice->spec : spec;
+    const Model model = choice ? std::move(choice->model) : build_model(spec.model);
+    describe_model(used.model, std::holds_alternative<ContactLoopSpec>(used.analysis), model, run);
     try {
-      analyse(spec, model, stage->path(), options, run);
+      const AnalysisResults results = choice ? std::move(choice->results) : run_analysis(used.analysis, model, progress);
+      if (progress) std::fputs("\r\033[K", stderr);
+      if (choice) report_fidelity(*spec.fidelity, options.fidelity, *choice, stage->path(), options.plots, run);
+      analyse(used, model, results, stage->path(), options, run);
     } catch (const InputError& e) {
       // Errors found by the solvers concern the model as a whole: name the case they came from.
       const std::string what = e.what();

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "report/run_record.hpp"
+#include "study/fidelity_spec.hpp"
 
 namespace bb {
 
@@ -11,6 +12,7 @@ struct RunOptions {
   std::optional<std::filesystem::path> out_dir;  // default reports/<case-name>
   bool study = false;                            // also run the case's [study]
   bool plots = true;
+  FidelityMode fidelity = FidelityMode::fixed;   // fixed: the case's own settings; else its [fidelity] axes
 };
 
 struct RunOutcome {

@@ -42,6 +42,7 @@ struct RunRecord {
   std::string message;                // error message for bad_input / solver_failed
   std::vector<std::string> warnings;  // results to read with care (e.g. a peak next to a failed solve)
   double wall_seconds = 0.0;
+  std::string fidelity;  // the settings `--fidelity` chose, e.g. "auto: analysis.harmonics = 5 (est. 3e-4)"; empty: the case's
   std::vector<std::pair<std::string, std::string>> facts;  // inputs and solver statistics
   std::vector<CheckSpec> check_specs;
   std::vector<CheckEntry> checks;

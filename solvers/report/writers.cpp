@@ -211,6 +211,7 @@ void write_summary_json(const RunRecord& run, const std::filesystem::path& file)
   j["case_file"] = run.case_file.string();
   j["status"] = status_name(run.status);
   j["wall_time_s"] = run.wall_seconds;
+  j["fidelity"] = run.fidelity.empty() ? std::string("case settings") : run.fidelity;
   if (!run.message.empty()) j["message"] = run.message;
   if (!run.warnings.empty()) j["warnings"] = run.warnings;
   j["checks"] = nlohmann::json::array();
@@ -375,10 +376,11 @@ void write_index_md(const std::vector<IndexEntry>& entries, const std::filesyste
   for (const auto& e : entries) passed += exit_code(e.status) == 0 ? 1 : 0;
   out << "# bladebench validation index\n\n";
   out << fmt::format("{} of {} cases passed.\n\n", passed, entries.size());
-  out << "| case | status | checks | failed | wall time [s] | note |\n|---|---|---|---|---|---|\n";
+  out << "| case | status | checks | failed | wall time [s] | fidelity | note |\n|---|---|---|---|---|---|---|\n";
   for (const auto& e : entries)
-    out << fmt::format("| [{}]({}) | {} | {} | {} | {:.3f} | {} |\n", e.case_name, e.report.generic_string(),
-                       status_name(e.status), e.checks, e.failed, e.wall_seconds, e.message);
+    out << fmt::format("| [{}]({}) | {} | {} | {} | {:.3f} | {} | {} |\n", e.case_name, e.report.generic_string(),
+                       status_name(e.status), e.checks, e.failed, e.wall_seconds,
+                       e.fidelity.empty() ? std::string("case settings") : e.fidelity, e.message);
   write_file_atomically(file, printable(out.str(), true));
 }
 

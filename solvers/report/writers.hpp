@@ -25,6 +25,7 @@ struct IndexEntry {
   int failed = 0;
   double wall_seconds = 0.0;
   std::string message;
+  std::string fidelity;  // RunRecord::fidelity
 };
 void write_index_md(const std::vector<IndexEntry>& entries, const std::filesystem::path& file);
 

@@ -1,0 +1,48 @@
+// A case run at the fidelity `run --fidelity` asks for: the cheapest level of every axis (fast),
+// the finest (reference), or the cheapest combination whose estimated error meets the case's
+// [fidelity] target (automatic). The climb starts from the cheapest level of every axis; at each
+// combination every axis is probed one level finer, its error estimated by Richardson
+// extrapolation with the order fitted to its last two differences (power_law_error; the plain
+// difference at an axis's first level), and the axis with the largest estimate is refined, until
+// the estimates' sum meets the target or every axis is at its finest.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "results/table.hpp"
+
+namespace bb {
+
+struct FidelityChoice {
+  CaseSpec spec;  // the case at the chosen levels
+  Model model;
+  AnalysisResults results;
+  ResultTable frontier;           // every level tried: levels, unknowns, seconds, difference, estimated_error, chosen
+  double estimated_error = 0.0;   // of the chosen run: the sum over axes; NaN when unknown
+  bool met = false;               // automatic: estimated_error <= target
+  std::string settings;           // "analysis.harmonics = 5, analysis.time_samples = 256"
+};
+
+// Largest relative difference of `columns` between two runs' tables, rows paired by equal values
+// of `key` (empty: the tables' key column): |a - b| / |b| per value (|a - b| / max |b| of the
+// column where b = 0; inf where either is not finite). Throws InputError when a column is missing
+// or no row pairs.
+double relative_difference(const ResultTable& coarse, const ResultTable& fine, const std::vector<std::string>& columns,
+                           const std::string& key = {});
+
+// The error of level x1 when the error falls as a power law e = C x^-p of the level (harmonics,
+// samples, refinement; 1 / tolerance), fitted through the differences d_before = e(x0) - e(x1) and
+// d = e(x1) - e(x2) of three successive levels x0 < x1 < x2: C x1^-p. Infinite when the
+// differences do not decrease as any such law allows (no convergence seen), d itself when the
+// convergence is faster than x^-30.
+double power_law_error(const std::array<double, 3>& x, double d_before, double d);
+
+// Runs the case's analysis at the levels `mode` asks for (fixed is not a mode here).
+// Throws InputError when the case has no [fidelity] or the result table lacks a column, and
+// whatever the analysis throws.
+FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress = {});
+
+}  // namespace bb

@@ -27,6 +27,7 @@
 #include "../tests/extremes/hbm_models.hpp"
 #include "contact/aft.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/hill_stability.hpp"
 #include "hbm/sensitivity.hpp"
 
 namespace {
@@ -78,6 +79,31 @@ void BM_HbmNewtonSolve(benchmark::State& state) {
   state.counters["omega"] = omega;
 }
 BENCHMARK(BM_HbmNewtonSolve)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
+
+// Hill's method at the stuck resonance (hbm/hill_stability.hpp): one eigenproblem of size
+// 2 n (2H + 1) = 14 (2H + 1) on the full model, against the Newton solve above that produced it.
+void BM_HillStability(benchmark::State& state) {
+  const HarmonicBalance system = planar_system(static_cast<int>(state.range(0)));
+  const double omega = bb::hbm::models::stuck_resonance(system.model(), 0);
+  const bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(system, omega);
+  if (!s.converged) {
+    state.SkipWithError(("solve did not converge: " + s.failure).c_str());
+    return;
+  }
+  double max_real = 0.0;
+  for (auto _ : state) {
+    const bb::hbm::HillStability st = bb::hbm::hill_stability(system, s.x, omega);
+    if (!st.ok) {
+      state.SkipWithError(st.failure.c_str());
+      return;
+    }
+    max_real = st.max_real;
+  }
+  state.counters["eigenproblem_size"] =
+      2.0 * static_cast<double>(system.model().mass.rows()) * static_cast<double>(2 * state.range(0) + 1);
+  state.counters["max_real"] = max_real;
+}
+BENCHMARK(BM_HillStability)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMillisecond);
 
 // Continuation from 0.8 to 1.2 times the stuck resonance (the stick-slip resonance lies inside).
 void BM_HbmContinuationSweep(benchmark::State& state) {

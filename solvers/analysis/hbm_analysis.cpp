@@ -90,6 +90,13 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     row.push_back(level.path.converged ? 1.0 : 0.0);
     for (const HbmPeak& pk : level.peaks) row.push_back(pk.trusted ? 1.0 : 0.0);
     for (const HbmPeak& pk : level.peaks) row.push_back(pk.sampling_error);
+    if (spec.stability != HbmSpec::Stability::none) {
+      constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+      for (const HbmPeak& pk : level.peaks)
+        row.push_back(pk.stability ? pk.stability->verdict() : nan);
+      for (const HbmPeak& pk : level.peaks)
+        row.push_back(pk.stability && pk.stability->ok ? pk.stability->max_real : nan);
+    }
     peak_rows.push_back(row);
     cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()),
                          static_cast<double>(level.path.corrector_iterations),
@@ -105,6 +112,10 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   peak_columns.push_back("reached_end");
   for (const std::string& k : kinds) peak_columns.push_back(k + "_trusted");
   for (const std::string& k : kinds) peak_columns.push_back(k + "_aft_error");
+  if (spec.stability != HbmSpec::Stability::none) {
+    for (const std::string& k : kinds) peak_columns.push_back(k + "_stable");
+    for (const std::string& k : kinds) peak_columns.push_back(k + "_floquet_max_re");
+  }
   o.tables.emplace("peaks", table_from_rows("peaks", peak_columns, peak_rows));
   o.tables.emplace("energy_balance", table_from_rows("energy_balance",
                                                      {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j",
@@ -140,6 +151,51 @@ void add_sampling_table(HbmOutcome& o) {
                                                    rows));
 }
 
+// turning_points and coexisting_solutions: where an arclength path folds back in frequency, and the
+// frequency bands between its turning points in which it holds several solutions at once (counted
+// as the path segments crossing the band's middle; with stability on the path, the stable ones).
+void add_fold_tables(HbmOutcome& o) {
+  std::vector<std::vector<double>> turns, bands;
+  for (size_t l = 0; l < o.levels.size(); ++l) {
+    const HbmLevel& level = o.levels[l];
+    const auto& pts = level.path.points;
+    std::vector<double> breaks;
+    for (size_t i = 1; i < pts.size(); ++i)
+      if ((pts[i].tangent_omega > 0) != (pts[i - 1].tangent_omega > 0)) {
+        turns.push_back({static_cast<double>(turns.size() + 1), static_cast<double>(l + 1), level.force,
+                         level.frequency_hz[i], level.amplitude(static_cast<Index>(i), 0),
+                         pts[i].tangent_omega > 0 ? 1.0 : -1.0});
+        breaks.push_back(level.frequency_hz[i]);
+      }
+    if (breaks.empty()) continue;
+    std::sort(breaks.begin(), breaks.end());
+    for (size_t b = 0; b + 1 < breaks.size(); ++b) {
+      const double mid = 0.5 * (breaks[b] + breaks[b + 1]);
+      int crossing = 0, stable = 0;
+      for (size_t i = 1; i < pts.size(); ++i) {
+        const double f0 = level.frequency_hz[i - 1], f1 = level.frequency_hz[i];
+        if ((f0 - mid) * (f1 - mid) > 0) continue;
+        ++crossing;
+        if (!level.stable.empty() && level.stable[i - 1] == 1.0 && level.stable[i] == 1.0) ++stable;
+      }
+      if (crossing >= 2)
+        bands.push_back({static_cast<double>(bands.size() + 1), static_cast<double>(l + 1), level.force, breaks[b],
+                         breaks[b + 1], static_cast<double>(crossing),
+                         level.stable.empty() ? std::numeric_limits<double>::quiet_NaN() : static_cast<double>(stable)});
+    }
+  }
+  if (turns.empty()) return;
+  o.tables.emplace("turning_points", table_from_rows("turning_points",
+                                                     {"turn", "level", "fe_n", "frequency_hz", "amplitude_m",
+                                                      "direction_after"},
+                                                     turns));
+  if (!bands.empty())
+    o.tables.emplace("coexisting_solutions",
+                     table_from_rows("coexisting_solutions",
+                                     {"band", "level", "fe_n", "from_hz", "to_hz", "solutions", "stable_solutions"},
+                                     bands));
+}
+
 // frf_<Fe>: the path points of each level in order.
 void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
   const PreparedHbm& p = o.prepared;
@@ -150,6 +206,7 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
     for (const std::string& r : p.response_names) cols.push_back(r + "_max_m");
     if (p.ip_oop) cols.insert(cols.end(), {"ip_component_m", "oop_component_m"});
     cols.insert(cols.end(), {"residual_n", "iterations"});
+    if (!level.stable.empty()) cols.insert(cols.end(), {"stable", "floquet_max_re"});
     for (const HbmParameter& parameter : spec.sensitivities)
       for (const char* q : {"_amp_m_dlog_", "_phase_deg_dlog_"})
         for (const std::string& r : p.response_names) cols.push_back(r + q + parameter.label);
@@ -162,6 +219,7 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
       if (p.ip_oop)
         row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
       row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});
+      if (!level.stable.empty()) row.insert(row.end(), {level.stable[i], level.floquet_max_real[i]});
       for (size_t j = 0; j < level.amplitude_dlog.size(); ++j)
         for (const Eigen::MatrixXd* d : {&level.amplitude_dlog[j], &level.phase_dlog_deg[j]})
           for (Index r = 0; r < d->cols(); ++r) row.push_back((*d)(static_cast<Index>(i), r));
@@ -295,6 +353,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   require_solutions(o);
   add_peak_tables(o, spec);
   add_sampling_table(o);
+  add_fold_tables(o);
   add_frf_tables(o, spec);
   add_limit_tables(o, spec);
   add_damper_table(o);

@@ -13,6 +13,7 @@
 #include "analysis/hbm_spec.hpp"
 #include "damper/rigid_damper.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/hill_stability.hpp"
 #include "hbm/nonlinear_modes.hpp"
 #include "model/model.hpp"
 #include "reduction/craig_bampton.hpp"
@@ -61,6 +62,8 @@ struct HbmPeak {
   // samples against those the solve used, as a residual of the balance (hbm::HarmonicBalance::
   // force_scale, the solve's convergence measure): the time-sampling error the solution carries.
   double sampling_error = 0.0;
+  // With HbmSpec::stability: the Floquet exponents of the peak's solution (Hill's method).
+  std::optional<hbm::HillStability> stability;
 };
 
 struct HbmLevel {
@@ -71,6 +74,9 @@ struct HbmLevel {
   Eigen::MatrixXd phase_deg;         // path points x responses, first harmonic's phase to the force
   Eigen::MatrixXd excursion;         // path points x responses, largest |u(t)| over a period, all harmonics [m]
   Eigen::MatrixXd components;        // path points x (IP, OOP) [m] when ip_oop is set
+  // With HbmSpec::Stability::path, per path point: 1 stable, 0 unstable, NaN not computed; the largest
+  // real part of its Floquet exponents [1/s].
+  std::vector<double> stable, floquet_max_real;
   // Per path of spec.sensitivities: path points x responses, p d|z|/dp [m] and p d phase/dp [deg]
   // at fixed frequency (hbm/sensitivity.hpp); NaN where the sensitivity is not defined.
   std::vector<Eigen::MatrixXd> amplitude_dlog, phase_dlog_deg;

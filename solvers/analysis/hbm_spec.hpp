@@ -101,6 +101,9 @@ struct HbmSpec {
   // Parameters whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp). Empty = none.
   std::vector<HbmParameter> sensitivities;
   std::optional<NonlinearModesSpec> nonlinear_modes;
+  // Floquet exponents by Hill's method (hbm/hill_stability.hpp): at no point, at the peaks, or at
+  // every path point (and the peaks). The path costs one eigenproblem of size 2 n (2H + 1) per point.
+  enum class Stability { none, peaks, path } stability = Stability::none;
   SourceLocation at;  // of [analysis], for errors found when the model is built
 };
 

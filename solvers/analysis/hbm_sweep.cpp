@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -376,6 +377,15 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   if (!spec.sensitivities.empty()) add_sensitivities(p, spec, system, level);
   if (n_points > 0)
     for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, level, k));
+  if (spec.stability == HbmSpec::Stability::path)
+    for (const hbm::ContinuationPoint& pt : path.points) {
+      const hbm::HillStability st = hbm::hill_stability(system, pt.x, pt.omega);
+      level.stable.push_back(st.verdict());
+      level.floquet_max_real.push_back(st.ok ? st.max_real : std::numeric_limits<double>::quiet_NaN());
+    }
+  if (spec.stability != HbmSpec::Stability::none)
+    for (HbmPeak& pk : level.peaks)
+      if (pk.solution.converged) pk.stability = hbm::hill_stability(system, pk.solution.x, pk.solution.omega);
   level.seconds = seconds_since(t0);
   return level;
 }

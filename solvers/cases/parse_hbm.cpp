@@ -267,6 +267,12 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     if (!contacts_required) r.fail("sensitivities", "only a harmonic balance analysis computes sensitivities");
     s.sensitivities = parse_sensitivities(r, s);
   }
+  if (r.has("stability")) {
+    if (!contacts_required) r.fail("stability", "only a harmonic balance analysis computes the stability of its solutions");
+    const std::string st = r.choice("stability", {"none", "peaks", "path"});
+    s.stability = st == "path" ? HbmSpec::Stability::path
+                               : st == "peaks" ? HbmSpec::Stability::peaks : HbmSpec::Stability::none;
+  }
   if (const toml::table* t = r.optional_table("nonlinear_modes")) {
     if (!contacts_required) r.fail("nonlinear_modes", "only a harmonic balance analysis computes nonlinear modes");
     s.nonlinear_modes = parse_nonlinear_modes(TomlReader(*t, r.path() + ".nonlinear_modes", r.file()), s);

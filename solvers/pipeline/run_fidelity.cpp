@@ -166,6 +166,14 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
   const FidelitySpec& f = *spec.fidelity;
   const size_t n_axes = f.axes.size();
   Climber climber(spec, progress);
+  // Differences between two runs; a missing column or key names the [fidelity] section.
+  const auto difference = [&](const LevelRun& coarse, const LevelRun& fine) {
+    try {
+      return relative_difference(climber.table(coarse), climber.table(fine), f.columns, f.key);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", f.at.where(), e.what()));
+    }
+  };
   std::vector<FrontierRow> rows;
   std::vector<int> index(n_axes, 0);
   std::vector<double> axis_error(n_axes, kNaN);
@@ -196,8 +204,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
         } else {
           std::vector<int> finer = index;
           ++finer[a];
-          const double d = relative_difference(climber.table(climber.run(index)), climber.table(climber.at(finer)),
-                                               f.columns, f.key);
+          const double d = difference(climber.run(index), climber.at(finer));
           rows.push_back({finer, a, d, kNaN});
           history[a].resize(static_cast<size_t>(i));  // d_0 .. d_(i-1): the differences below level i
           if (!history[a].empty()) {
@@ -206,8 +213,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
             // One difference fixes no order: probe a second level on, e(x_i) = d_i + e(x_(i+1)).
             std::vector<int> two_on = finer;
             ++two_on[a];
-            const double d_next = relative_difference(climber.table(climber.run(finer)),
-                                                      climber.table(climber.at(two_on)), f.columns, f.key);
+            const double d_next = difference(climber.run(finer), climber.at(two_on));
             rows.push_back({two_on, a, d_next, kNaN});
             estimate[a] = d + power_law_error({x(i), x(i + 1), x(i + 2)}, d, d_next);
           } else {
@@ -229,6 +235,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
   }
   FidelityChoice choice;
   LevelRun& chosen = climber.run(index);
+  difference(chosen, chosen);  // fast and reference too: the columns must exist
   choice.spec = chosen.spec;
   choice.model = std::move(*chosen.model);
   choice.results = std::move(chosen.results);

@@ -85,6 +85,37 @@ void describe_nonlinear_modes(const HbmSpec& spec, const HbmOutcome& hbm, RunRec
 
 }  // namespace
 
+// Stability by Hill's method: unstable path points per level, and a warning for every peak that
+// lies on an unstable solution (a grid sweep can converge onto the middle branch of a fold).
+void describe_stability(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
+  if (spec.stability == HbmSpec::Stability::none) return;
+  const auto g = [](double v) { return fmt::format("{:g}", v); };
+  if (spec.stability == HbmSpec::Stability::path) {
+    std::string per_level;
+    for (const HbmLevel& l : hbm.levels) {
+      int unstable = 0, unknown = 0;
+      for (double s : l.stable) unstable += s == 0.0 ? 1 : 0, unknown += std::isnan(s) ? 1 : 0;  // NaN: unresolved
+      per_level += fmt::format("{}{} N: {} of {}{}", per_level.empty() ? "" : "; ", g(l.force), unstable,
+                               l.stable.size(), unknown ? fmt::format(" ({} unknown: growth beyond the band H resolves)", unknown) : "");
+    }
+    run.facts.emplace_back("unstable path points (Hill's method; frf_<Fe> columns stable, floquet_max_re)", per_level);
+  }
+  for (const HbmLevel& l : hbm.levels)
+    for (const HbmPeak& pk : l.peaks) {
+      if (!pk.stability || !pk.stability->ok)
+        run.warnings.push_back(fmt::format("the stability of the {} at Fe = {} N was not computed: {}", pk.kind,
+                                           g(l.force), pk.stability ? pk.stability->failure : "no converged solution"));
+      else if (!pk.stability->growing && !pk.stability->unresolved.empty())
+        run.warnings.push_back(fmt::format("the stability of the {} at Fe = {} N ({:.4f} Hz) is unknown: {}", pk.kind,
+                                           g(l.force), pk.frequency_hz, pk.stability->unresolved));
+      else if (pk.stability->growing)
+        run.warnings.push_back(fmt::format(
+            "the {} at Fe = {} N ({:.4f} Hz) lies on an unstable solution (largest Floquet exponent real part {:.3g} "
+            "1/s): the motion would leave it",
+            pk.kind, g(l.force), pk.frequency_hz, pk.stability->max_real));
+    }
+}
+
 void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const PreparedHbm& p = hbm.prepared;
   std::string levels;
@@ -165,6 +196,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
         fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples or set "
                     "aft_tolerance (samples raised automatically)",
                     worst, where));
+  describe_stability(spec, hbm, run);
   describe_nonlinear_modes(spec, hbm, run);
 }
 

@@ -32,12 +32,21 @@ Plot plot_hbm_levels(const HbmOutcome& hbm, size_t response, bool per_newton, co
   {
     std::ofstream out = open_plot_data(out_dir, stem);
     for (const HbmLevel& l : hbm.levels) {
-      out << "# Fe = " << l.force << " N: frequency_hz amplitude\n";
-      for (size_t i = 0; i < l.frequency_hz.size(); ++i)
-        out << l.frequency_hz[i] << ' '
-            << l.amplitude(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(response)) /
-                   (per_newton ? l.force : 1.0)
-            << '\n';
+      // Column 2 holds the stable points (solid), column 3 the unstable ones and their neighbours
+      // (dashed, so that the two join); without a stability analysis every point is in column 2.
+      out << "# Fe = " << l.force << " N: frequency_hz amplitude_stable amplitude_unstable\n";
+      const auto unstable = [&](size_t i) { return i < l.stable.size() && l.stable[i] == 0.0; };
+      for (size_t i = 0; i < l.frequency_hz.size(); ++i) {
+        const double a = l.amplitude(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(response)) /
+                         (per_newton ? l.force : 1.0);
+        const bool near_unstable = unstable(i) || (i > 0 && unstable(i - 1)) || unstable(i + 1);
+        out << l.frequency_hz[i] << ' ';
+        if (unstable(i)) out << "nan ";
+        else out << a << ' ';
+        if (near_unstable) out << a;
+        else out << "nan";
+        out << '\n';
+      }
       out << "\n\n";
     }
     if (per_newton) {
@@ -54,9 +63,16 @@ Plot plot_hbm_levels(const HbmOutcome& hbm, size_t response, bool per_newton, co
       "set title '{}'\nset logscale y\nset format y '10^{{%L}}'\nset xlabel 'frequency [Hz]'\n"
       "set ylabel '{}'\nset grid\nset key outside right\nplot ",
       gnuplot_quote(title), per_newton ? "amplitude / Fe [m/N]" : "amplitude [m]");
-  for (size_t i = 0; i < hbm.levels.size(); ++i)
+  bool any_unstable = false;
+  for (const HbmLevel& l : hbm.levels)
+    for (double st : l.stable) any_unstable = any_unstable || st == 0.0;
+  for (size_t i = 0; i < hbm.levels.size(); ++i) {
     script += fmt::format("{}'{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N'",
                           i ? ", \\\n     " : "", stem, i, kColours[i % 8], hbm.levels[i].force);
+    if (any_unstable)
+      script += fmt::format(", \\\n     '{}.dat' index {} using 1:3 with lines dt 2 lc rgb '{}' {}", stem, i,
+                            kColours[i % 8], i == 0 ? "title 'unstable (Hill)'" : "notitle");
+  }
   if (per_newton)
     script += fmt::format(
         ", \\\n     '{0}.dat' index {1} using 1:2 with lines lw 2 dt 2 lc rgb '#000000' title 'free (no damper)', \\\n"

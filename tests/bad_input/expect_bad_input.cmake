@@ -1,5 +1,6 @@
 # Runs one malformed case and fails unless bladebench rejects it as bad input:
-#   cmake -DBIN=<bladebench> -DCASE=<case.toml> -DEXPECT=<substring> -DOUT=<dir> -P expect_bad_input.cmake
+#   cmake -DBIN=<bladebench> -DCASE=<case.toml> -DEXPECT=<substring> -DOUT=<dir> [-DARGS=<options>]
+#         -P expect_bad_input.cmake
 # Passes only if
 #   - the exit code is exactly 2 (bad input; not 0/1, not 3 = solver failure, not a crash),
 #   - stderr has an "  error: " line and contains EXPECT. The case's own folder is stripped
@@ -14,8 +15,9 @@ endforeach()
 # A stale summary.json from an earlier run must not count.
 file(REMOVE_RECURSE "${OUT}")
 
+separate_arguments(extra_args UNIX_COMMAND "${ARGS}")
 execute_process(
-  COMMAND "${BIN}" run "${CASE}" --no-plots --out "${OUT}"
+  COMMAND "${BIN}" run "${CASE}" --no-plots --out "${OUT}" ${extra_args}
   RESULT_VARIABLE rc
   OUTPUT_VARIABLE out
   ERROR_VARIABLE err

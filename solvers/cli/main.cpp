@@ -17,6 +17,7 @@
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 #include "identify/synthetic_data.hpp"
+#include "identify/uff58.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/calibrate_case.hpp"
 #include "pipeline/run_case.hpp"
@@ -248,7 +249,18 @@ int synthesize_command(SynthesizeArgs a) {
     const auto t = results.tables.find(a.table);
     if (t == results.tables.end())
       throw bb::InputError(fmt::format("{}: the case computes no table '{}'", a.case_file, a.table));
-    bb::write_synthetic_data(t->second, a.options, a.out);
+    if (bb::is_universal_file(a.out)) {
+      // A Universal File carries no sigma columns: the CSV is written, read back and converted.
+      if (a.options.kind != bb::DataKind::frf)
+        throw bb::InputError(fmt::format("--out {}: a Universal File (dataset 58) holds an FRF: use --kind frf", a.out));
+      const fs::path csv = a.out + ".csv.tmp";
+      bb::write_synthetic_data(t->second, a.options, csv);
+      const bb::MeasuredData data = bb::read_measured_data(csv, bb::DataKind::frf);
+      fs::remove(csv);
+      bb::write_uff58_frf(data, a.out, "bladebench synthesize: " + a.case_file + " table " + a.table);
+    } else {
+      bb::write_synthetic_data(t->second, a.options, a.out);
+    }
     std::fprintf(stderr, "%s: table %s -> %s\n", a.case_file.c_str(), a.table.c_str(), a.out.c_str());
     return bb::exit_pass;
   });

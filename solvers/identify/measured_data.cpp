@@ -1,5 +1,6 @@
 // Measured curves from CSV with units in the header (see measured_data.hpp for the format).
 #include "identify/measured_data.hpp"
+#include "identify/uff58.hpp"
 
 #include <fmt/format.h>
 
@@ -180,6 +181,13 @@ std::string MeasuredData::where(Eigen::Index row) const {
 
 MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
   const std::string fname = file.string();
+  if (is_universal_file(file)) {
+    if (kind != DataKind::frf)
+      throw InputError(fmt::format("{}: a Universal File (dataset 58) holds an FRF; give kind = \"frf\" or a CSV file "
+                                   "for {} data",
+                                   fname, data_kind_name(kind)));
+    return read_uff58_frf(file);
+  }
   const auto fail = [&](unsigned line, const std::string& what) {
     return InputError(fmt::format("{}:{}: {}", fname, line, what));
   };

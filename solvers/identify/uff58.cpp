@@ -1,0 +1,281 @@
+#include "identify/uff58.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+#include "common/errors.hpp"
+#include "common/user_text.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string trim(std::string_view s) {
+  size_t a = 0, b = s.size();
+  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+  return std::string(s.substr(a, b - a));
+}
+
+// Characters [from, from + width) of a fixed-format record, trimmed (empty past the line's end).
+std::string field(const std::string& line, size_t from, size_t width) {
+  return from < line.size() ? trim(std::string_view(line).substr(from, width)) : std::string();
+}
+
+std::vector<std::string> tokens(const std::string& line) {
+  std::vector<std::string> out;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    size_t j = i;
+    while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
+    if (j > i) out.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
+std::optional<double> number(const std::string& s) {
+  std::string t = s;
+  std::replace(t.begin(), t.end(), 'D', 'E');  // Fortran double-precision exponents
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::optional<long> integer(const std::string& s) {
+  long v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+struct Axis {
+  long type = 0;
+  std::string label, units;
+};
+
+}  // namespace
+
+bool is_universal_file(const fs::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".uff" || ext == ".unv";
+}
+
+std::vector<Uff58Function> read_uff58(const fs::path& file) {
+  if (fs::is_directory(file)) throw InputError(fmt::format("{}: is a folder, not a Universal File", file.string()));
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot open", file.string()));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  std::vector<Uff58Function> out;
+  size_t i = 0;
+  int dataset = 0;
+  while (i + 1 < lines.size()) {
+    if (trim(lines[i]) != "-1") {
+      ++i;
+      continue;
+    }
+    const std::string kind = trim(lines[i + 1]);
+    const size_t start = i;
+    // The dataset's end: the next "-1" line.
+    size_t end = i + 2;
+    while (end < lines.size() && trim(lines[end]) != "-1") ++end;
+    if (kind != "58" && kind != "58b") {
+      i = end + 1;
+      continue;
+    }
+    ++dataset;
+    const auto fail = [&](size_t at, int record, const std::string& what) {
+      return InputError(printable(fmt::format("{}:{}: dataset 58 #{} (from line {}), record {}: {}", file.string(),
+                                              at + 1, dataset, start + 1, record, what)));
+    };
+    if (kind == "58b") throw fail(i + 1, 0, "binary dataset 58b is not read; export ASCII dataset 58");
+    if (end >= lines.size()) throw fail(end - 1, 12, "the dataset has no closing '-1' line");
+    const size_t r1 = i + 2;  // record 1
+    if (end < r1 + 12) throw fail(end, static_cast<int>(end - r1) + 1, "the dataset ends before record 12");
+    Uff58Function f;
+    f.line = static_cast<int>(start + 1);
+    for (int r = 0; r < 5; ++r) f.id_lines.push_back(trim(lines[r1 + static_cast<size_t>(r)]));
+    // Record 6: Format(2(I5,I10),2(1X,10A1,I10,I4)).
+    const std::string& r6 = lines[r1 + 5];
+    const auto r6_int = [&](size_t from, size_t width, const char* what) {
+      const auto v = integer(field(r6, from, width));
+      if (!v) throw fail(r1 + 5, 6, fmt::format("{} '{}' is not an integer", what, field(r6, from, width)));
+      return *v;
+    };
+    f.function_type = static_cast<int>(r6_int(0, 5, "function type"));
+    f.response_node = r6_int(41, 10, "response node");
+    f.response_direction = static_cast<int>(r6_int(51, 4, "response direction"));
+    f.reference_node = r6_int(66, 10, "reference node");
+    f.reference_direction = static_cast<int>(r6_int(76, 4, "reference direction"));
+    // Record 7: Format(3I10,3E13.5).
+    const auto r7 = tokens(lines[r1 + 6]);
+    if (r7.size() < 5) throw fail(r1 + 6, 7, fmt::format("{} fields where 6 are expected", r7.size()));
+    const auto data_type = integer(r7[0]), count = integer(r7[1]), spacing = integer(r7[2]);
+    const auto first = number(r7[3]), step = number(r7[4]);
+    if (!data_type || (*data_type != 2 && *data_type != 4 && *data_type != 5 && *data_type != 6))
+      throw fail(r1 + 6, 7, fmt::format("ordinate data type '{}' is not 2, 4 (real) or 5, 6 (complex)", r7[0]));
+    if (!count || *count < 1 || *count > 10000000)
+      throw fail(r1 + 6, 7, fmt::format("number of values '{}' is not in [1, 1e7]", r7[1]));
+    if (!spacing || (*spacing != 0 && *spacing != 1))
+      throw fail(r1 + 6, 7, fmt::format("abscissa spacing '{}' is not 0 (uneven) or 1 (even)", r7[2]));
+    if (!first || !step) throw fail(r1 + 6, 7, "abscissa minimum or increment is not a finite number");
+    // Records 8-11: Format(I10,3I5,2(1X,20A1)).
+    std::array<Axis, 3> axes;
+    for (int a = 0; a < 3; ++a) {
+      const std::string& r = lines[r1 + 7 + static_cast<size_t>(a)];
+      const auto type = integer(field(r, 0, 10));
+      if (!type) throw fail(r1 + 7 + static_cast<size_t>(a), 8 + a, "specific data type is not an integer");
+      axes[static_cast<size_t>(a)] = {*type, field(r, 26, 20), field(r, 47, 20)};
+    }
+    // Record 12: the values, blank-separated, until the closing "-1".
+    const bool complex = *data_type >= 5, even = *spacing == 1;
+    const size_t per_point = (complex ? 2 : 1) + (even ? 0 : 1);
+    std::vector<double> numbers;
+    std::vector<size_t> number_line;
+    for (size_t l = r1 + 11; l < end; ++l)
+      for (const std::string& t : tokens(lines[l])) {
+        const auto v = number(t);
+        if (!v) throw fail(l, 12, fmt::format("value '{}' is not a finite number", t));
+        numbers.push_back(*v);
+        number_line.push_back(l);
+      }
+    const size_t expected = static_cast<size_t>(*count) * per_point;
+    if (numbers.size() != expected)
+      throw fail(r1 + 11, 12,
+                 fmt::format("{} numbers where record 7 announces {} {} values ({} numbers)", numbers.size(), *count,
+                             complex ? "complex" : "real", expected));
+    for (long p = 0; p < *count; ++p) {
+      const size_t k = static_cast<size_t>(p) * per_point;
+      f.abscissa.push_back(even ? *first + static_cast<double>(p) * *step : numbers[k]);
+      const size_t v = even ? k : k + 1;
+      f.values.emplace_back(numbers[v], complex ? numbers[v + 1] : 0.0);
+    }
+    // Units from the records: the unit labels, else the specific data types in SI.
+    const auto unit_of = [&](const Axis& a, int record, size_t at) -> std::optional<Unit> {
+      if (!a.units.empty() && a.units != "NONE") {
+        if (auto u = parse_unit(a.units)) return u;
+        throw fail(at, record, fmt::format("unit label '{}' is not a known unit", a.units));
+      }
+      switch (a.type) {
+        case 18:
+          return parse_unit("Hz");
+        case 8:
+          return parse_unit("m");
+        case 9:
+        case 13:
+          return parse_unit("N");
+        case 11:
+        case 12:
+          throw fail(at, record,
+                     fmt::format("the ordinate is a {} (specific data type {}): bladebench fits receptances "
+                                 "(displacement / force); export those",
+                                 a.type == 11 ? "velocity" : "acceleration", a.type));
+        default:
+          return std::nullopt;
+      }
+    };
+    const auto abscissa = unit_of(axes[0], 8, r1 + 7);
+    if (!abscissa || abscissa->dimension != Dimension::frequency)
+      throw fail(r1 + 7, 8,
+                 fmt::format("the abscissa is not a frequency (specific data type {}, unit label '{}')", axes[0].type,
+                             axes[0].units));
+    const auto numerator = unit_of(axes[1], 9, r1 + 8);
+    if (!numerator || numerator->dimension != Dimension::length)
+      throw fail(r1 + 8, 9,
+                 fmt::format("the ordinate is not a displacement (specific data type {}, unit label '{}')",
+                             axes[1].type, axes[1].units));
+    const auto denominator = unit_of(axes[2], 10, r1 + 9);
+    if (denominator && denominator->dimension != Dimension::force)
+      throw fail(r1 + 9, 10,
+                 fmt::format("the denominator is not a force (specific data type {}, unit label '{}')", axes[2].type,
+                             axes[2].units));
+    f.abscissa_unit = *abscissa;
+    f.ordinate_unit = denominator ? Unit{numerator->symbol + "/" + denominator->symbol, Dimension::compliance,
+                                         numerator->to_si / denominator->to_si}
+                                  : *numerator;
+    out.push_back(std::move(f));
+    // Keep the line of each point's first number for messages.
+    out.back().line = static_cast<int>(start + 1);
+    i = end + 1;
+  }
+  if (out.empty()) throw InputError(fmt::format("{}: no dataset 58 (a measured function) in the file", file.string()));
+  return out;
+}
+
+MeasuredData read_uff58_frf(const fs::path& file) {
+  const Uff58Function f = read_uff58(file).front();
+  const Eigen::Index n = static_cast<Eigen::Index>(f.values.size());
+  MeasuredData d;
+  d.file = file;
+  d.kind = DataKind::frf;
+  Eigen::VectorXd frequency(n), amplitude(n), phase(n);
+  bool complex = false;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    frequency[i] = f.abscissa[k] * f.abscissa_unit.to_si;
+    amplitude[i] = std::abs(f.values[k]) * f.ordinate_unit.to_si;
+    phase[i] = std::arg(f.values[k]);
+    complex = complex || f.values[k].imag() != 0.0;
+    d.lines.push_back(f.line);
+    const auto where = [&] { return fmt::format("{}:{}: dataset 58 #1, record 12, value {}", file.string(), f.line, i + 1); };
+    if (!(amplitude[i] > 0.0)) throw InputError(fmt::format("{}: the amplitude is zero", where()));
+    if (i > 0 && !(frequency[i] > frequency[i - 1]))
+      throw InputError(fmt::format("{}: frequency {} Hz is not above the previous value's {} Hz (values must be "
+                                   "sorted by increasing frequency, without duplicates)",
+                                   where(), frequency[i], frequency[i - 1]));
+  }
+  d.columns["frequency"] = frequency;
+  d.units["frequency"] = f.abscissa_unit;
+  d.columns["amplitude"] = amplitude;
+  d.units["amplitude"] = f.ordinate_unit;
+  if (complex) {
+    d.columns["phase"] = phase;
+    d.units["phase"] = *parse_unit("rad");
+  }
+  return d;
+}
+
+void write_uff58_frf(const MeasuredData& data, const fs::path& file, const std::string& title) {
+  if (data.kind != DataKind::frf || !data.has("frequency") || !data.has("amplitude"))
+    throw InputError(fmt::format("{}: a Universal File holds an FRF: frequency and amplitude", file.string()));
+  const bool compliance = data.units.at("amplitude").dimension == Dimension::compliance;
+  const Eigen::VectorXd& f = data.column("frequency");
+  const Eigen::VectorXd& a = data.column("amplitude");
+  const Eigen::VectorXd phase = data.has("phase") ? data.column("phase") : Eigen::VectorXd::Zero(f.size());
+  std::ofstream out(file);
+  if (!out) throw InputError(fmt::format("{}: cannot write", file.string()));
+  const auto axis = [](int type, int length, int force, const char* label, const char* units) {
+    return fmt::format("{:10d}{:5d}{:5d}{:5d} {:<20} {:<20}\n", type, length, force, 0, label, units);
+  };
+  out << "    -1\n    58\n";
+  out << fmt::format("{}\n", title.substr(0, 80)) << "bladebench\nNONE\nNONE\nNONE\n";
+  out << fmt::format("{:5d}{:10d}{:5d}{:10d} {:<10}{:10d}{:4d} {:<10}{:10d}{:4d}\n", compliance ? 4 : 1, 1, 1, 0,
+                     "NONE", 1, 1, "NONE", 1, 1);
+  out << fmt::format("{:10d}{:10d}{:10d}{:13.5E}{:13.5E}{:13.5E}\n", 6, f.size(), 0, 0.0, 0.0, 0.0);
+  out << axis(18, 0, 0, "Frequency", "Hz");
+  out << axis(8, 1, 0, "Displacement", "m");
+  out << (compliance ? axis(13, 0, 1, "Force", "N") : axis(0, 0, 0, "NONE", "NONE"));
+  out << axis(0, 0, 0, "NONE", "NONE");
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    const std::complex<double> h = std::polar(a[i], phase[i]);
+    out << fmt::format("{:13.5E}{:20.12E}{:20.12E}\n", f[i], h.real(), h.imag());
+  }
+  out << "    -1\n";
+  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+}
+
+}  // namespace bb

@@ -1,0 +1,122 @@
+// Universal File dataset 58 (identify/uff58): round trip of an FRF, units from the records, and a
+// refusal naming the record for every malformed part.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "common/errors.hpp"
+#include "identify/measured_data.hpp"
+#include "identify/uff58.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "bladebench_uff58_test";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+// A hand-written file in the layout of the format's description: complex single precision, even
+// spacing, receptance in mm/N (labels), 4 points from 100 Hz by 10 Hz, and a dataset 151 to skip.
+std::string even_mm_per_n() {
+  return "    -1\n   151\nmodel\n    -1\n"
+         "    -1\n    58\nFRF T2 / F\nrig 3\n24-Nov-26\nNONE\nNONE\n"
+         "    4         1    1         0 NONE               2   1 NONE               7   3\n"
+         "         5         4         1  1.00000E+02  1.00000E+01  0.00000E+00\n"
+         "        18    0    0    0 Frequency            Hz                  \n"
+         "         8    1    0    0 Displacement         mm                  \n"
+         "        13    0    1    0 Force                N                   \n"
+         "         0    0    0    0 NONE                 NONE                \n"
+         "  1.00000E-03  0.00000E+00  0.00000E+00 -2.00000E-03 -1.00000E-03  0.00000E+00\n"
+         "  5.00000E-04  5.00000E-04\n"
+         "    -1\n";
+}
+
+void write(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
+
+TEST(Uff58, ReadsUnitsFromTheRecordsAndConvertsToSi) {
+  const fs::path file = scratch("even.uff");
+  write(file, even_mm_per_n());
+  const MeasuredData d = read_measured_data(file, DataKind::frf);
+  ASSERT_EQ(d.rows(), 4);
+  EXPECT_EQ(d.column("frequency")[3], 130.0);
+  EXPECT_EQ(d.units.at("amplitude").dimension, Dimension::compliance);
+  EXPECT_NEAR(d.column("amplitude")[0], 1e-6, 1e-18);  // 1e-3 mm/N
+  EXPECT_NEAR(d.column("amplitude")[1], 2e-6, 1e-18);
+  EXPECT_NEAR(d.column("phase")[1], -std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(d.column("amplitude")[3], std::hypot(5e-7, 5e-7), 1e-18);
+  const auto f = read_uff58(file);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].function_type, 4);
+  EXPECT_EQ(f[0].response_node, 2);
+  EXPECT_EQ(f[0].reference_direction, 3);
+}
+
+TEST(Uff58, WrittenFrfReadsBackToThirteenDigits) {
+  MeasuredData d;
+  d.kind = DataKind::frf;
+  const Eigen::Index n = 50;
+  Eigen::VectorXd f(n), a(n), p(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    f[i] = 140.0 + 0.5 * static_cast<double>(i);
+    a[i] = 1e-6 / std::abs(std::complex<double>(1.0 - std::pow(f[i] / 175.0, 2), 0.02 * f[i] / 175.0));
+    p[i] = -std::atan2(0.02 * f[i] / 175.0, 1.0 - std::pow(f[i] / 175.0, 2));
+  }
+  d.columns = {{"frequency", f}, {"amplitude", a}, {"phase", p}};
+  d.units = {{"frequency", *parse_unit("Hz")}, {"amplitude", *parse_unit("m/N")}, {"phase", *parse_unit("rad")}};
+  const fs::path file = scratch("round_trip.unv");
+  write_uff58_frf(d, file, "round trip");
+  const MeasuredData back = read_measured_data(file, DataKind::frf);
+  ASSERT_EQ(back.rows(), n);
+  EXPECT_EQ(back.units.at("amplitude").dimension, Dimension::compliance);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    EXPECT_NEAR(back.column("frequency")[i], f[i], 1e-9 * f[i]);
+    EXPECT_NEAR(back.column("amplitude")[i], a[i], 1e-12 * a[i]);
+    EXPECT_NEAR(back.column("phase")[i], p[i], 1e-11);
+  }
+}
+
+// Each malformation of the even_mm_per_n file, and the words its message must contain.
+TEST(Uff58, MalformedFilesNameTheRecord) {
+  const std::string good = even_mm_per_n();
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    std::string s = good;
+    s.replace(s.find(from), from.size(), to);
+    return s;
+  };
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {replace("         5         4         1", "         3         4         1"), "record 7: ordinate data type"},
+      {replace("         5         4         1", "         5         5         1"), "record 12: 8 numbers where record 7 announces 5 complex values"},
+      {replace("  5.00000E-04  5.00000E-04\n", "  5.00000E-04  nan\n"), "record 12: value 'nan'"},
+      {replace("         8    1    0    0 Displacement         mm", "        12    0    0    0 Acceleration         NONE"),
+       "record 9: the ordinate is a acceleration"},
+      {replace("Frequency            Hz", "Frequency            furlong"), "record 8: unit label 'furlong'"},
+      {replace("    58\nFRF", "   58b\nFRF"), "binary dataset 58b"},
+      {replace("    4         1    1", "    x         1    1"), "record 6: function type"},
+      {"    -1\n   151\nmodel\n    -1\n", "no dataset 58"},
+  };
+  for (const auto& [text, expect] : cases) {
+    const fs::path file = scratch("bad.uff");
+    write(file, text);
+    try {
+      read_measured_data(file, DataKind::frf);
+      ADD_FAILURE() << "accepted; expected: " << expect;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expect), std::string::npos) << e.what();
+    }
+  }
+  const fs::path file = scratch("peaks.uff");
+  write(file, good);
+  EXPECT_THROW(read_measured_data(file, DataKind::peaks), InputError);
+}
+
+}  // namespace
+}  // namespace bb

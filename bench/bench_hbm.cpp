@@ -51,6 +51,31 @@ void BM_AftJenkins(benchmark::State& state) {
 }
 BENCHMARK(BM_AftJenkins)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMicrosecond);
 
+// The same AFT (with its exact Jacobian) against the number of samples, at H = 1 and 7: the cost
+// is linear in the samples (the transforms are products with the n x (2H + 1) synthesis matrix,
+// and the Jacobian's chain rule through the slider is a row of 2 (2H + 1) per sample). Samples
+// that are not powers of two cost the same per sample.
+void BM_AftJenkinsSamples(benchmark::State& state) {
+  const int harmonics = static_cast<int>(state.range(0));
+  const int samples = static_cast<int>(state.range(1));
+  const bb::contact::JenkinsParameters law{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0};
+  const Eigen::Index m = bb::contact::harmonic_size(harmonics);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(m), v = Eigen::VectorXd::Zero(m);
+  u[1] = 1e-5;
+  v[0] = 2e-5;
+  v[2] = 5e-6;
+  for (int h = 2; h <= harmonics; ++h) u[2 * h - 1] = 1e-6 / h, v[2 * h] = 5e-7 / h;
+  const bb::contact::AftOptions options{.samples = samples};
+  for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(law, u, v, options));
+  state.counters["ns_per_sample"] = benchmark::Counter(static_cast<double>(samples),
+                                                       benchmark::Counter::kIsIterationInvariantRate |
+                                                           benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_AftJenkinsSamples)
+    ->ArgNames({"H", "samples"})
+    ->ArgsProduct({{1, 7}, {64, 240, 256, 512, 1000, 1024, 4096, 16384}})
+    ->Unit(benchmark::kMicrosecond);
+
 HarmonicBalance planar_system(int harmonics) {
   return HarmonicBalance(bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2),
                          {.harmonics = harmonics});

@@ -1,0 +1,116 @@
+#include "fuzz_targets.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <string_view>
+
+#include "cases/case_spec.hpp"
+#include "cases/parse_calibration.hpp"
+#include "common/errors.hpp"
+#include "identify/measured_data.hpp"
+#include "mesh/csv_mesh.hpp"
+#include "mesh/gmsh_import.hpp"
+#include "reduction/reduced_model_io.hpp"
+
+namespace bb::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of this process for the input's files, emptied per input.
+fs::path work_folder() {
+  static const fs::path dir = fs::temp_directory_path() / ("bladebench_fuzz_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& file, std::string_view bytes) {
+  std::ofstream out(file, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::vector<std::string_view> split(std::string_view all, size_t parts) {
+  std::vector<std::string_view> out;
+  const std::string_view sep(kSeparator);
+  while (out.size() + 1 < parts) {
+    const size_t at = all.find(sep);
+    if (at == std::string_view::npos) break;
+    out.push_back(all.substr(0, at));
+    all.remove_prefix(at + sep.size());
+  }
+  out.push_back(all);
+  while (out.size() < parts) out.emplace_back();
+  return out;
+}
+
+// Runs `read`: InputError is the refusal of bad input; anything else escapes as a defect.
+template <typename Fn>
+void refuse_or_read(Fn&& read) {
+  try {
+    read();
+  } catch (const InputError&) {
+  }
+}
+
+}  // namespace
+
+void case_file(const uint8_t* data, size_t size) {
+  const fs::path file = work_folder() / "case.toml";
+  write(file, {reinterpret_cast<const char*>(data), size});
+  refuse_or_read([&] {
+    const toml::table table = read_case_table(file);
+    parse_calibration(table, file, parse_case_table(table, file));
+  });
+}
+
+void measured_data(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  static constexpr std::array<DataKind, 4> kinds = {DataKind::peaks, DataKind::frf, DataKind::hysteresis,
+                                                    DataKind::frf};
+  const size_t pick = data[0] % 4;
+  const fs::path file = work_folder() / (pick == 3 ? "data.uff" : "data.csv");
+  write(file, {reinterpret_cast<const char*>(data) + 1, size - 1});
+  refuse_or_read([&] { read_measured_data(file, kinds[pick]); });
+}
+
+void reduced_model(const uint8_t* data, size_t size) {
+  const auto parts = split({reinterpret_cast<const char*>(data), size}, 3);
+  const fs::path dir = work_folder();
+  write(dir / "rom.toml", parts[0]);
+  write(dir / "rom.K", parts[1]);
+  write(dir / "rom.M", parts[2]);
+  refuse_or_read([&] { read_reduced_model(dir / "rom.toml"); });
+}
+
+void csv_mesh(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  static constexpr std::array<ElementType, 5> types = {ElementType::q4, ElementType::cst, ElementType::hex8,
+                                                       ElementType::hex8i, ElementType::hex20};
+  const auto parts = split({reinterpret_cast<const char*>(data) + 1, size - 1}, 2);
+  const fs::path dir = work_folder();
+  write(dir / "nodes.csv", parts[0]);
+  write(dir / "elements.csv", parts[1]);
+  refuse_or_read([&] { read_csv_mesh(dir / "nodes.csv", dir / "elements.csv", types[data[0] % 5]); });
+}
+
+void gmsh_mesh(const uint8_t* data, size_t size) {
+  const fs::path file = work_folder() / "mesh.msh";
+  write(file, {reinterpret_cast<const char*>(data), size});
+  refuse_or_read([&] { read_gmsh_msh41(file); });
+}
+
+const std::vector<Target>& targets() {
+  static const std::vector<Target> all = {{"case_file", case_file},
+                                          {"measured_data", measured_data},
+                                          {"reduced_model", reduced_model},
+                                          {"csv_mesh", csv_mesh},
+                                          {"gmsh_mesh", gmsh_mesh}};
+  return all;
+}
+
+}  // namespace bb::fuzz

@@ -166,9 +166,14 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
   const int n = options.samples;
   const Eigen::Index m = u.size();
   // A sweep calls this thousands of times with the same H and n: keep the last pair of matrices.
+  // The march reads and writes one row per sample, so the per-sample matrices are row-major: in
+  // column-major storage a row is strided by n doubles, and a power-of-two n maps the row onto a
+  // few L1 sets (measured: 256 samples cost 1.7x per sample what 240 did at H = 7).
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   thread_local struct {
     int harmonics = -1, samples = -1;
-    Eigen::MatrixXd synthesis, analysis;
+    RowMajor synthesis;
+    Eigen::MatrixXd analysis;
   } cache;
   if (cache.harmonics != harmonics || cache.samples != n) {
     cache.synthesis = synthesis_matrix(harmonics, n);
@@ -176,7 +181,7 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
     cache.harmonics = harmonics;
     cache.samples = n;
   }
-  const Eigen::MatrixXd& synthesis = cache.synthesis;
+  const RowMajor& synthesis = cache.synthesis;
   const Eigen::MatrixXd& analysis = cache.analysis;
 
   AftResult r;
@@ -188,13 +193,13 @@ AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
   r.state.assign(static_cast<size_t>(n), ContactState::stick);
 
   // Rows of d(T_k)/d[u; v] and d(N_k)/d[u; v] over the current period.
-  Eigen::MatrixXd dt_rows = Eigen::MatrixXd::Zero(n, 2 * m);
-  Eigen::MatrixXd dn_rows = Eigen::MatrixXd::Zero(n, 2 * m);
+  RowMajor dt_rows = RowMajor::Zero(n, 2 * m);
+  RowMajor dn_rows = RowMajor::Zero(n, 2 * m);
   Eigen::RowVectorXd dw = Eigen::RowVectorXd::Zero(2 * m);
   Eigen::RowVectorXd dn(2 * m), dt(2 * m);
   const bool with_law = options.law_derivatives;
-  Eigen::Matrix<double, Eigen::Dynamic, 4> dt_law, dn_law;
-  if (with_law) dt_law = dn_law = Eigen::Matrix<double, Eigen::Dynamic, 4>::Zero(n, 4);
+  Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> dt_law, dn_law;
+  if (with_law) dt_law = dn_law = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>::Zero(n, 4);
   Eigen::RowVector4d dw_law = Eigen::RowVector4d::Zero(), dn_p = Eigen::RowVector4d::Zero();
 
   double slider = options.initial_slider;

@@ -22,6 +22,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../tests/extremes/hbm_models.hpp"
@@ -36,15 +37,24 @@ using bb::hbm::HarmonicBalance;
 
 // Stick-slip with a varying normal load that never opens: u of 1e-5 m (about three times the
 // stick limit mu N0 / kt = 3e-6 m) and v of 5e-6 m about a static 2e-5 m, plus small higher harmonics.
-void BM_AftJenkins(benchmark::State& state) {
-  const int harmonics = static_cast<int>(state.range(0));
-  const bb::contact::JenkinsParameters law{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0};
+const bb::contact::JenkinsParameters kStickSlipLaw{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0};
+
+// The tangential (u) and normal (v) coefficients of that motion with H harmonics.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> stick_slip_motion(int harmonics) {
   const Eigen::Index m = bb::contact::harmonic_size(harmonics);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(m), v = Eigen::VectorXd::Zero(m);
   u[1] = 1e-5;
   v[0] = 2e-5;
   v[2] = 5e-6;
   for (int h = 2; h <= harmonics; ++h) u[2 * h - 1] = 1e-6 / h, v[2 * h] = 5e-7 / h;
+  return {u, v};
+}
+
+void BM_AftJenkins(benchmark::State& state) {
+  const int harmonics = static_cast<int>(state.range(0));
+  const bb::contact::JenkinsParameters& law = kStickSlipLaw;
+  const auto [u, v] = stick_slip_motion(harmonics);
+  const Eigen::Index m = u.size();
   const bb::contact::AftOptions options{.samples = std::max(64, 16 * static_cast<int>(m))};
   for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(law, u, v, options));
   state.counters["samples"] = options.samples;
@@ -58,13 +68,8 @@ BENCHMARK(BM_AftJenkins)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMicrose
 void BM_AftJenkinsSamples(benchmark::State& state) {
   const int harmonics = static_cast<int>(state.range(0));
   const int samples = static_cast<int>(state.range(1));
-  const bb::contact::JenkinsParameters law{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0};
-  const Eigen::Index m = bb::contact::harmonic_size(harmonics);
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(m), v = Eigen::VectorXd::Zero(m);
-  u[1] = 1e-5;
-  v[0] = 2e-5;
-  v[2] = 5e-6;
-  for (int h = 2; h <= harmonics; ++h) u[2 * h - 1] = 1e-6 / h, v[2 * h] = 5e-7 / h;
+  const bb::contact::JenkinsParameters& law = kStickSlipLaw;
+  const auto [u, v] = stick_slip_motion(harmonics);
   const bb::contact::AftOptions options{.samples = samples};
   for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(law, u, v, options));
   state.counters["ns_per_sample"] = benchmark::Counter(static_cast<double>(samples),

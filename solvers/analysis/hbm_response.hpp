@@ -10,6 +10,8 @@ namespace bb {
 
 // First-harmonic complex amplitude of each model DOF (Re(Z e^{i theta}) = a cos + b sin).
 Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega);
+// The same from the recovered coefficients (HarmonicBalance::recover: rows DOFs, columns c0, a1, b1, ...).
+Eigen::VectorXcd first_harmonic(const Eigen::MatrixXd& q);
 
 // Largest |x(t)| over a period of the signal x(t) = c0 + sum_h c(2h-1) cos(h theta) + c(2h) sin(h
 // theta) (one row of HarmonicBalance::recover): every harmonic counts, as in the displacement a

@@ -18,9 +18,12 @@
 
 namespace bb {
 
-Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega) {
-  const Eigen::MatrixXd q = system.recover(x, omega);
+Eigen::VectorXcd first_harmonic(const Eigen::MatrixXd& q) {
   return q.col(1).cast<std::complex<double>>() - std::complex<double>(0.0, 1.0) * q.col(2).cast<std::complex<double>>();
+}
+
+Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen::VectorXd& x, double omega) {
+  return first_harmonic(system.recover(x, omega));
 }
 
 double largest_excursion(const Eigen::RowVectorXd& c) {
@@ -363,8 +366,7 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     const hbm::ContinuationPoint& pt = path.points[i];
     level.frequency_hz.push_back(pt.omega / kTwoPi);
     const Eigen::MatrixXd q = system.recover(pt.x, pt.omega);
-    const Eigen::VectorXcd z =
-        q.col(1).cast<std::complex<double>>() - std::complex<double>(0.0, 1.0) * q.col(2).cast<std::complex<double>>();
+    const Eigen::VectorXcd z = first_harmonic(q);
     for (size_t r = 0; r < p.responses.size(); ++r) {
       level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
       level.excursion(static_cast<Index>(i), static_cast<Index>(r)) = largest_excursion(q.row(p.responses[r]));
@@ -377,17 +379,25 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   if (!spec.sensitivities.empty()) add_sensitivities(p, spec, system, level);
   if (n_points > 0)
     for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, level, k));
+  level.seconds = seconds_since(t0);
+  return level;
+}
+
+// The Floquet exponents spec.stability asks for, on the sweep a level keeps (not on the sampling
+// trials it discards).
+void add_stability(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, HbmLevel& level) {
+  if (spec.stability == HbmSpec::Stability::none) return;
+  const auto t0 = Clock::now();
+  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, level.samples);
   if (spec.stability == HbmSpec::Stability::path)
-    for (const hbm::ContinuationPoint& pt : path.points) {
+    for (const hbm::ContinuationPoint& pt : level.path.points) {
       const hbm::HillStability st = hbm::hill_stability(system, pt.x, pt.omega);
       level.stable.push_back(st.verdict());
       level.floquet_max_real.push_back(st.ok ? st.max_real : std::numeric_limits<double>::quiet_NaN());
     }
-  if (spec.stability != HbmSpec::Stability::none)
-    for (HbmPeak& pk : level.peaks)
-      if (pk.solution.converged) pk.stability = hbm::hill_stability(system, pk.solution.x, pk.solution.omega);
-  level.seconds = seconds_since(t0);
-  return level;
+  for (HbmPeak& pk : level.peaks)
+    if (pk.solution.converged) pk.stability = hbm::hill_stability(system, pk.solution.x, pk.solution.omega);
+  level.seconds += seconds_since(t0);
 }
 
 }  // namespace
@@ -395,7 +405,10 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
 HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
                          const HbmProgress& progress) {
   HbmLevel level = sweep_at_samples(p, spec, force, harmonics, spec.time_samples, progress);
-  if (!(spec.aft_tolerance > 0.0)) return level;
+  if (!(spec.aft_tolerance > 0.0)) {
+    add_stability(p, spec, force, harmonics, level);
+    return level;
+  }
   std::vector<HbmLevel::SamplingTrial> trials;
   double seconds = 0.0;
   for (;;) {
@@ -422,6 +435,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
   }
   level.sampling_trials = std::move(trials);
   level.seconds = seconds;  // the cost of reaching the tolerance, every trial included
+  add_stability(p, spec, force, harmonics, level);
   return level;
 }
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <optional>
 
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 
@@ -17,16 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string trim(std::string_view s) {
-  size_t a = 0, b = s.size();
-  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-  return std::string(s.substr(a, b - a));
-}
-
 // Characters [from, from + width) of a fixed-format record, trimmed (empty past the line's end).
 std::string field(const std::string& line, size_t from, size_t width) {
-  return from < line.size() ? trim(std::string_view(line).substr(from, width)) : std::string();
+  return from < line.size() ? std::string(trim(std::string_view(line).substr(from, width))) : std::string();
 }
 
 std::vector<std::string> tokens(const std::string& line) {
@@ -88,7 +82,7 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
       ++i;
       continue;
     }
-    const std::string kind = trim(lines[i + 1]);
+    const std::string_view kind = trim(lines[i + 1]);
     const size_t start = i;
     // The dataset's end: the next "-1" line.
     size_t end = i + 2;
@@ -108,7 +102,7 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
     if (end < r1 + 12) throw fail(end, static_cast<int>(end - r1) + 1, "the dataset ends before record 12");
     Uff58Function f;
     f.line = static_cast<int>(start + 1);
-    for (int r = 0; r < 5; ++r) f.id_lines.push_back(trim(lines[r1 + static_cast<size_t>(r)]));
+    for (int r = 0; r < 5; ++r) f.id_lines.emplace_back(trim(lines[r1 + static_cast<size_t>(r)]));
     // Record 6: Format(2(I5,I10),2(1X,10A1,I10,I4)).
     const std::string& r6 = lines[r1 + 5];
     const auto r6_int = [&](size_t from, size_t width, const char* what) {
@@ -208,8 +202,6 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
                                          numerator->to_si / denominator->to_si}
                                   : *numerator;
     out.push_back(std::move(f));
-    // Keep the line of each point's first number for messages.
-    out.back().line = static_cast<int>(start + 1);
     i = end + 1;
   }
   if (out.empty()) throw InputError(fmt::format("{}: no dataset 58 (a measured function) in the file", file.string()));

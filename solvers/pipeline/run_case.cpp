@@ -49,8 +49,8 @@ void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityCho
   if (mode == FidelityMode::automatic) {
     run.facts.emplace_back(
         "fidelity target",
-        fmt::format("{:.3g} on {} of {} (each axis climbed to target / {} against its next level); estimated error "
-                    "{:.3g}{}",
+        fmt::format("{:.3g} on {} of {} (the sum over the {} axes of each one's error, extrapolated from its "
+                    "differences between levels); estimated error {:.3g}{}",
                     f.target, fmt::join(f.columns, ", "), f.result, f.axes.size(), choice.estimated_error,
                     choice.met ? "" : ": NOT MET"));
     CheckEntry e;
@@ -66,8 +66,8 @@ void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityCho
     run.checks.push_back(e);
     if (!choice.met)
       run.warnings.push_back(fmt::format(
-          "the fidelity target {:.3g} is not met: the finest levels' estimated error is {:.3g} (NaN: the "
-          "differences between levels did not decrease, so no estimate)",
+          "the fidelity target {:.3g} is not met: the estimated error at the levels reached is {:.3g} (inf or NaN: "
+          "the differences between levels did not converge, so no finite estimate)",
           f.target, choice.estimated_error));
   }
   if (!f.note.empty()) run.facts.emplace_back("fidelity note", f.note);

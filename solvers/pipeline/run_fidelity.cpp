@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <utility>
 
 #include "cases/parse_fidelity.hpp"
 #include "common/errors.hpp"
@@ -29,7 +30,6 @@ double unknowns(const AnalysisSpec& spec, const Model& model, const AnalysisResu
 }
 
 struct LevelRun {
-  std::vector<int> index;  // level index per axis
   CaseSpec spec;
   std::unique_ptr<Model> model;
   AnalysisResults results;
@@ -46,7 +46,6 @@ class Climber {
     auto it = runs_.find(index);
     if (it != runs_.end()) return *it->second;
     auto run = std::make_unique<LevelRun>();
-    run->index = index;
     run->spec = base_;
     for (size_t a = 0; a < f_.axes.size(); ++a)
       apply_fidelity_level(run->spec, f_.axes[a], f_.axes[a].levels[static_cast<size_t>(index[a])]);
@@ -56,7 +55,6 @@ class Climber {
     run->results = run_analysis(run->spec.analysis, *run->model, progress_);
     run->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run->unknowns = unknowns(run->spec.analysis, *run->model, run->results);
-    order_.push_back(index);
     return *runs_.emplace(index, std::move(run)).first->second;
   }
 
@@ -79,7 +77,6 @@ class Climber {
     return s;
   }
 
-  const std::vector<std::vector<int>>& order() const { return order_; }
   LevelRun& run(const std::vector<int>& index) { return *runs_.at(index); }
 
  private:
@@ -87,7 +84,6 @@ class Climber {
   const FidelitySpec& f_;
   HbmProgress progress_;
   std::map<std::vector<int>, std::unique_ptr<LevelRun>> runs_;
-  std::vector<std::vector<int>> order_;
 };
 
 // The level as the abscissa of the power law e = C x^-p: the count itself, or 1 / tolerance.
@@ -114,31 +110,32 @@ double relative_difference(const ResultTable& coarse, const ResultTable& fine, c
     return *k;
   };
   const int kc = key_of(coarse), kf = key_of(fine);
-  // Rows pair by equal keys (to 1e-9 relative: frequencies of one grid computed twice).
-  const auto partner = [&](double k) {
-    for (Eigen::Index r = 0; r < coarse.values.rows(); ++r)
-      if (std::abs(coarse.values(r, kc) - k) <= 1e-9 * std::max(1.0, std::abs(k))) return static_cast<int>(r);
-    return -1;
-  };
+  // Rows pair by equal keys (to 1e-9 relative: frequencies of one grid computed twice), once for
+  // every column.
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> pairs;  // (coarse row, fine row)
+  for (Eigen::Index r = 0; r < fine.values.rows(); ++r) {
+    const double k = fine.values(r, kf);
+    for (Eigen::Index rc = 0; rc < coarse.values.rows(); ++rc)
+      if (std::abs(coarse.values(rc, kc) - k) <= 1e-9 * std::max(1.0, std::abs(k))) {
+        pairs.emplace_back(rc, r);
+        break;
+      }
+  }
   double worst = 0.0;
   for (const std::string& c : columns) {
     const auto ic = coarse.column_index(c), jf = fine.column_index(c);
     if (!ic || !jf) throw InputError(fmt::format("fidelity.columns: table '{}' has no column '{}'", fine.name, c));
+    if (pairs.empty())
+      throw InputError(fmt::format("fidelity: no row of table '{}' pairs between two levels (keys differ)", fine.name));
     double scale = 0.0;
     for (Eigen::Index r = 0; r < fine.values.rows(); ++r)
       if (std::isfinite(fine.values(r, *jf))) scale = std::max(scale, std::abs(fine.values(r, *jf)));
-    int paired = 0;
-    for (Eigen::Index r = 0; r < fine.values.rows(); ++r) {
-      const int rc = partner(fine.values(r, kf));
-      if (rc < 0) continue;
-      ++paired;
+    for (const auto& [rc, r] : pairs) {
       const double a = coarse.values(rc, *ic), b = fine.values(r, *jf);
       if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::infinity();
       const double d = std::abs(a - b);
       worst = std::max(worst, b != 0 ? d / std::abs(b) : (scale > 0 ? d / scale : d));
     }
-    if (paired == 0)
-      throw InputError(fmt::format("fidelity: no row of table '{}' pairs between two levels (keys differ)", fine.name));
   }
   return worst;
 }

@@ -89,7 +89,6 @@ void describe_nonlinear_modes(const HbmSpec& spec, const HbmOutcome& hbm, RunRec
 // lies on an unstable solution (a grid sweep can converge onto the middle branch of a fold).
 void describe_stability(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   if (spec.stability == HbmSpec::Stability::none) return;
-  const auto g = [](double v) { return fmt::format("{:g}", v); };
   if (spec.stability == HbmSpec::Stability::path) {
     std::string per_level;
     for (const HbmLevel& l : hbm.levels) {

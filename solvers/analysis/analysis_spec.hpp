@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "analysis/contact_loop_spec.hpp"
+#include "analysis/contact_modal_spec.hpp"
 #include "analysis/frf_spec.hpp"
 #include "analysis/hbm_spec.hpp"
 #include "analysis/modal_spec.hpp"
@@ -14,7 +15,8 @@
 
 namespace bb {
 
-using AnalysisSpec = std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec>;
+using AnalysisSpec = std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec,
+                                  ContactModalSpec>;
 
 // The case file's name of each type (`type = "..."` in [analysis]).
 constexpr std::string_view analysis_type_name(const StaticSpec&) { return "static"; }
@@ -24,6 +26,7 @@ constexpr std::string_view analysis_type_name(const HbmSpec&) { return "hbm"; }
 constexpr std::string_view analysis_type_name(const TimeSpec&) { return "time"; }
 constexpr std::string_view analysis_type_name(const ContactLoopSpec&) { return "contact_loop"; }
 constexpr std::string_view analysis_type_name(const RotatingSpec&) { return "rotating"; }
+constexpr std::string_view analysis_type_name(const ContactModalSpec&) { return "contact_modal"; }
 inline std::string_view analysis_type_name(const AnalysisSpec& a) {
   return std::visit([](const auto& s) { return analysis_type_name(s); }, a);
 }

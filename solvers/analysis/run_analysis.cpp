@@ -66,6 +66,12 @@ AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgr
   return {std::move(tables), std::move(o)};
 }
 
+AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress&) {
+  ContactModalOutcome o = run_contact_modal(model, spec);
+  ResultTables tables = o.tables;
+  return {std::move(tables), std::move(o)};
+}
+
 }  // namespace
 
 AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress) {

@@ -8,6 +8,7 @@
 
 #include "analysis/analysis_spec.hpp"
 #include "analysis/contact_loop_analysis.hpp"
+#include "analysis/contact_modal_analysis.hpp"
 #include "analysis/frf_analysis.hpp"
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
@@ -19,8 +20,8 @@
 
 namespace bb {
 
-using AnalysisOutcome =
-    std::variant<StaticOutcome, ModalOutcome, FrfOutcome, HbmOutcome, TimeOutcome, ContactLoopOutcome, RotatingOutcome>;
+using AnalysisOutcome = std::variant<StaticOutcome, ModalOutcome, FrfOutcome, HbmOutcome, TimeOutcome,
+                                     ContactLoopOutcome, RotatingOutcome, ContactModalOutcome>;
 
 template <typename Spec>
 struct OutcomeOf;
@@ -51,6 +52,10 @@ struct OutcomeOf<ContactLoopSpec> {
 template <>
 struct OutcomeOf<RotatingSpec> {
   using type = RotatingOutcome;
+};
+template <>
+struct OutcomeOf<ContactModalSpec> {
+  using type = ContactModalOutcome;
 };
 static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<AnalysisSpec>,
               "one outcome per analysis type");

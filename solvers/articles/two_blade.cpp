@@ -92,6 +92,12 @@ std::span<const char* const> two_blade_set_names() {
   return names;
 }
 
+std::span<const char* const> two_blade_contact_set_names() {
+  static const char* const names[] = {"root1_top", "arm1_bottom", "root1_bottom", "wedge1_top",
+                                      "root2_top", "arm2_bottom", "root2_bottom", "wedge2_top"};
+  return names;
+}
+
 void TwoBladeDimensions::validate() const {
   for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
     if (std::string_view(f.name) != "w_t") require_positive(f.name, this->*f.member);

@@ -128,4 +128,9 @@ TwoBladeArticle two_blade_article(const TwoBladeDimensions& dims, ElementType el
 // above, "fixture_base", "fixture_left", "fixture_right", "tip1", "tip2".
 std::span<const char* const> two_blade_set_names();
 
+// The surfaces of the root interfaces a mesh with glue = false names for contact pairs (b = 1, 2):
+// "root<b>_top" (the blade's root shoulders) under "arm<b>_bottom" (the fixture arms above them),
+// "root<b>_bottom" (the blade's root base) on "wedge<b>_top". The wedges stay glued to the fixture.
+std::span<const char* const> two_blade_contact_set_names();
+
 }  // namespace bb

@@ -8,6 +8,7 @@
 #include "cases/case_spec.hpp"
 #include "cases/parse_common.hpp"
 #include "cases/parse_contact_loop.hpp"
+#include "cases/parse_contact_modal.hpp"
 #include "cases/parse_frf.hpp"
 #include "cases/parse_hbm.hpp"
 #include "cases/parse_modal.hpp"
@@ -41,6 +42,7 @@ constexpr AnalysisParser kAnalysisParsers[] = {
     {"time", [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_time(r, folder); }},
     {"contact_loop", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_contact_loop(r); }},
     {"rotating", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_rotating(r); }},
+    {"contact_modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_contact_modal(r); }},
 };
 static_assert(std::size(kAnalysisParsers) == std::variant_size_v<AnalysisSpec>, "one parser per analysis type");
 
@@ -74,6 +76,7 @@ ModelNeed model_need(const HbmSpec& s) { return s.model.masters.empty() ? ModelN
 ModelNeed model_need(const TimeSpec& s) { return model_need(s.system); }
 ModelNeed model_need(const ContactLoopSpec&) { return ModelNeed::nothing; }
 ModelNeed model_need(const RotatingSpec&) { return ModelNeed::mesh; }
+ModelNeed model_need(const ContactModalSpec&) { return ModelNeed::mesh; }
 
 CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   CheckSpec c;
@@ -225,6 +228,10 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
     spec.model.mesh.kind = MeshSpec::Kind::none;
   } else {
     spec.model = parse_model(top, folder, !std::holds_alternative<StaticSpec>(spec.analysis));
+    if (!spec.model.contact_pairs.empty() && !std::holds_alternative<ContactModalSpec>(spec.analysis))
+      throw InputError(fmt::format("{}: [[contact]] pairs are solved by type = \"contact_modal\" only; this "
+                                   "analysis would ignore them",
+                                   spec.model.contact_pairs.front().at.where()));
   }
   for_each_table_in_array(top, "check",
                           [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });

@@ -93,6 +93,7 @@ void parse_two_blade(TomlReader& r, MeshSpec& m) {
   d.refinement = small_integer(r, "refinement", 1, 64, d.refinement);
   d.thickness_divisions = small_integer(r, "thickness_divisions", 1, 1000, d.thickness_divisions);
   d.airfoil_divisions = small_integer(r, "airfoil_divisions", 1, 1000, d.airfoil_divisions);
+  m.glue = r.boolean("glue", true);
   parse_dimensions(r, d);
 }
 
@@ -319,6 +320,23 @@ void parse_load(TomlReader r, int dim, ModelSpec& spec) {
   spec.body_loads.push_back(l);
 }
 
+// [[contact]]: a pair of surfaces (node sets) of a solid mesh that may touch.
+void parse_contact_pair(TomlReader r, ModelSpec& spec) {
+  ContactPairSpec c;
+  c.at = r.location();
+  if (spec.mesh.dim() != 3) r.fail("", "contact pairs need a solid mesh (hex8, hex8i, hex20)");
+  c.name = r.name("name");
+  for (const ContactPairSpec& other : spec.contact_pairs)
+    if (other.name == c.name) r.fail("name", fmt::format("a second contact pair named '{}'", c.name));
+  c.contact = r.name("contact");
+  c.target = r.name("target");
+  if (c.contact == c.target)
+    r.fail("target", fmt::format("the same surface '{}' on both sides of the pair", c.target));
+  c.interference = r.boolean("interference", false);
+  r.finish();
+  spec.contact_pairs.push_back(std::move(c));
+}
+
 }  // namespace
 
 // Material, mesh, section, node sets, constraints and loads: the model when it has a mesh.
@@ -355,7 +373,10 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
       if (spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::blade_section) {
         const auto reserved =
             spec.mesh.kind == MeshSpec::Kind::two_blade ? two_blade_set_names() : blade_section_set_names();
-        if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
+        const auto contact_sets = two_blade_contact_set_names();
+        const bool contact_name = spec.mesh.kind == MeshSpec::Kind::two_blade &&
+                                  std::find(contact_sets.begin(), contact_sets.end(), name) != contact_sets.end();
+        if (contact_name || std::find(reserved.begin(), reserved.end(), name) != reserved.end())
           throw InputError(fmt::format("{}: 'sets.{}': the {} mesh defines this set itself ({}); choose another name",
                                        spec.sets.back().at.where(), name,
                                        spec.mesh.kind == MeshSpec::Kind::two_blade ? "two_blade" : "blade_section",
@@ -365,6 +386,7 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
   }
   for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
   for_each_table_in_array(top, "load", [&](TomlReader r) { parse_load(std::move(r), spec.mesh.dim(), spec); });
+  for_each_table_in_array(top, "contact", [&](TomlReader r) { parse_contact_pair(std::move(r), spec); });
   if (!spec.body_loads.empty() && !(spec.section.density > 0))
     throw InputError(fmt::format(
         "{}: a {} load acts through the mass: 'material.rho' must be > 0", spec.body_loads.front().at.where(),

@@ -1,38 +1,13 @@
 // Consistent nodal forces of facet loads (see the header). SI units.
 #include "fe/surface_load.hpp"
 
+#include "fe/face_shape.hpp"
+
 namespace bb::fe {
 namespace {
 
 constexpr double kG2 = 0.57735026918962576451;  // 1/sqrt(3)
 constexpr double kG3 = 0.77459666924148337704;  // sqrt(3/5)
-
-// Natural coordinates of a face's nodes: corners counterclockwise, then mid-edge nodes.
-constexpr double kFaceNodes[8][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-
-template <int N>
-void face_shape(double xi, double eta, Eigen::Matrix<double, N, 1>& n, Eigen::Matrix<double, 2, N>& dn) {
-  for (int a = 0; a < N; ++a) {
-    const double xa = kFaceNodes[a][0], ya = kFaceNodes[a][1];
-    if (N == 4) {
-      n[a] = 0.25 * (1 + xa * xi) * (1 + ya * eta);
-      dn(0, a) = 0.25 * xa * (1 + ya * eta);
-      dn(1, a) = 0.25 * (1 + xa * xi) * ya;
-    } else if (a < 4) {  // serendipity corner: (1/4)(1 + xi xa)(1 + eta ya)(xi xa + eta ya - 1)
-      n[a] = 0.25 * (1 + xa * xi) * (1 + ya * eta) * (xa * xi + ya * eta - 1);
-      dn(0, a) = 0.25 * xa * (1 + ya * eta) * (2 * xa * xi + ya * eta);
-      dn(1, a) = 0.25 * ya * (1 + xa * xi) * (xa * xi + 2 * ya * eta);
-    } else if (xa == 0) {  // mid-edge node on eta = ya: (1/2)(1 - xi^2)(1 + eta ya)
-      n[a] = 0.5 * (1 - xi * xi) * (1 + ya * eta);
-      dn(0, a) = -xi * (1 + ya * eta);
-      dn(1, a) = 0.5 * (1 - xi * xi) * ya;
-    } else {  // mid-edge node on xi = xa
-      n[a] = 0.5 * (1 + xa * xi) * (1 - eta * eta);
-      dn(0, a) = 0.5 * xa * (1 - eta * eta);
-      dn(1, a) = -(1 + xa * xi) * eta;
-    }
-  }
-}
 
 template <int N, int G>
 Eigen::Matrix<double, 3 * N, 1> face_load(const Eigen::Matrix<double, N, 3>& xyz, double pressure,

@@ -161,7 +161,11 @@ Mesh generate_hex_block(const HexBlockSpec& spec) {
   return mesh;
 }
 
-Mesh merge_meshes(const std::vector<Mesh>& parts, double tolerance, std::vector<std::vector<int>>* node_origin) {
+namespace {
+
+// merge_meshes, or with merge = false a plain concatenation that keeps coincident nodes apart.
+Mesh combine_meshes(const std::vector<Mesh>& parts, double tolerance, bool merge,
+                    std::vector<std::vector<int>>* node_origin) {
   if (parts.empty()) throw std::invalid_argument("merge_meshes: no meshes to merge");
   if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
     throw std::invalid_argument("merge_meshes: tolerance must be a finite number >= 0");
@@ -206,7 +210,7 @@ Mesh merge_meshes(const std::vector<Mesh>& parts, double tolerance, std::vector<
       const CellKey key = bucket_of(x);
       int match = -1;
       const std::int64_t dk = dim == 3 ? 1 : 0;
-      for (std::int64_t a = -1; a <= 1; ++a)
+      for (std::int64_t a = -1; a <= 1 && merge; ++a)
         for (std::int64_t b = -1; b <= 1; ++b)
           for (std::int64_t c = -dk; c <= dk; ++c) {
             auto it = buckets.find({key.i + a, key.j + b, key.k + c});
@@ -281,6 +285,16 @@ Mesh merge_meshes(const std::vector<Mesh>& parts, double tolerance, std::vector<
   out.rebuild_index();
   if (node_origin) *node_origin = std::move(origin);
   return out;
+}
+
+}  // namespace
+
+Mesh merge_meshes(const std::vector<Mesh>& parts, double tolerance, std::vector<std::vector<int>>* node_origin) {
+  return combine_meshes(parts, tolerance, true, node_origin);
+}
+
+Mesh concatenate_meshes(const std::vector<Mesh>& parts, std::vector<std::vector<int>>* node_origin) {
+  return combine_meshes(parts, 0.0, false, node_origin);
 }
 
 }  // namespace bb

@@ -30,4 +30,8 @@ Mesh generate_hex_block(const HexBlockSpec& spec);
 Mesh merge_meshes(const std::vector<Mesh>& parts, double tolerance,
                   std::vector<std::vector<int>>* node_origin = nullptr);
 
+// The same without merging: coincident nodes of different parts stay distinct (bodies that touch
+// without being glued, e.g. the two sides of a contact pair).
+Mesh concatenate_meshes(const std::vector<Mesh>& parts, std::vector<std::vector<int>>* node_origin = nullptr);
+
 }  // namespace bb

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "model/contact_pairs.hpp"
 #include "mesh/boundary.hpp"
 #include "mesh/csv_mesh.hpp"
 #include "mesh/gmsh_import.hpp"
@@ -27,10 +28,28 @@ void require_file(const fs::path& file, const SourceLocation& at) {
 Mesh build_two_blade(const MeshSpec& spec, std::map<std::string, std::vector<int>>& sets) {
   const TwoBladeArticle article = two_blade_article(spec.two_blade, spec.element);
   Mesh mesh;
+  // Body of each node: blade 1, blade 2, or the fixture with its wedges (glued to its floor).
+  std::vector<int> body_of_node;
   try {
-    std::vector<Mesh> parts;
-    for (const HexBlockSpec& b : article.blocks) parts.push_back(generate_hex_block(b));
-    mesh = merge_meshes(parts, spec.merge_tolerance);
+    if (spec.glue) {
+      std::vector<Mesh> parts;
+      for (const HexBlockSpec& b : article.blocks) parts.push_back(generate_hex_block(b));
+      mesh = merge_meshes(parts, spec.merge_tolerance);
+    } else {
+      std::array<std::vector<Mesh>, 3> groups;
+      for (size_t i = 0; i < article.blocks.size(); ++i) {
+        const TwoBladeBody body = article.body[i];
+        const size_t g = body == TwoBladeBody::blade1 ? 0 : body == TwoBladeBody::blade2 ? 1 : 2;
+        groups[g].push_back(generate_hex_block(article.blocks[i]));
+      }
+      std::vector<Mesh> bodies;
+      for (const auto& g : groups) bodies.push_back(merge_meshes(g, spec.merge_tolerance));
+      std::vector<std::vector<int>> origin;
+      mesh = concatenate_meshes(bodies, &origin);
+      body_of_node.assign(static_cast<size_t>(mesh.n_nodes()), -1);
+      for (size_t g = 0; g < origin.size(); ++g)
+        for (int n : origin[g]) body_of_node[static_cast<size_t>(n)] = static_cast<int>(g);
+    }
   } catch (const std::invalid_argument& e) {
     throw InputError(fmt::format("{}: two_blade mesh: {}", spec.at.where(), e.what()));
   }
@@ -67,6 +86,29 @@ Mesh build_two_blade(const MeshSpec& spec, std::map<std::string, std::vector<int
     select(fmt::format("tip{}", b + 1), [&](double x, double y) {
       return std::abs(y - tip.y) <= kOnFace && x >= tip.x_min - kOnFace && x <= tip.x_max + kOnFace;
     });
+  }
+  if (spec.glue) return mesh;
+  // The root interfaces, by body: the shoulders are the root's x-intervals under the arms.
+  const TwoBladeDimensions& d = spec.two_blade;
+  const auto& Y = article.levels;
+  for (int b = 0; b < 2; ++b) {
+    const double o = b * d.p;
+    auto in = [&](double x, double x0, double x1) { return x >= o + x0 - kOnFace && x <= o + x1 + kOnFace; };
+    auto shoulder = [&](double x) { return in(x, 0.0, d.x_n0() - d.g_s) || in(x, d.x_n1 + d.g_s, d.B_r); };
+    auto on_body = [&](int n, int body) { return body_of_node[static_cast<size_t>(n)] == body; };
+    auto select_on = [&](const std::string& name, int body, double y, auto&& x_ok) {
+      std::vector<int>& nodes = sets[name];
+      for (int n = 0; n < mesh.n_nodes(); ++n)
+        if (on_body(n, body) && std::abs(mesh.coords(n, 1) - y) <= kOnFace && x_ok(mesh.coords(n, 0)))
+          nodes.push_back(n);
+      if (nodes.empty())
+        throw InputError(fmt::format("{}: two_blade mesh: set '{}' matches no node", spec.at.where(), name));
+    };
+    const std::string k = std::to_string(b + 1);
+    select_on("root" + k + "_top", b, Y[3], shoulder);
+    select_on("arm" + k + "_bottom", 2, Y[3], shoulder);
+    select_on("root" + k + "_bottom", b, Y[2], [&](double x) { return in(x, 0.0, d.B_r); });
+    select_on("wedge" + k + "_top", 2, Y[2], [&](double x) { return in(x, 0.0, d.B_r); });
   }
   return mesh;
 }
@@ -185,6 +227,7 @@ Model build_model(const ModelSpec& spec) {
     model.surface_loads.push_back(l.load);
   }
   for (const BodyLoadSpec& l : spec.body_loads) model.body_loads.push_back(l.load);
+  for (const ContactPairSpec& c : spec.contact_pairs) model.contact_pairs.push_back(build_contact_pair(model, c));
   return model;
 }
 

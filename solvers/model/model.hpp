@@ -55,6 +55,23 @@ struct BodyLoad {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();        // a point of the axis [m] (2D: z = 0)
 };
 
+// Two surfaces of a solid mesh that may touch without being glued (contact/surface_contact.hpp):
+// every facet of the contact surface faces a coincident facet of the target surface (conforming
+// meshes, as where bodies were meshed together and left unmerged).
+struct ContactFacetPair {
+  std::vector<int> contact;  // nodes of the contact surface's facet (order of facet_nodes)
+  std::vector<int> target;   // the coincident nodes of the target's facet, in the same order
+};
+
+struct ContactPair {
+  std::string name;
+  std::string contact_set, target_set;
+  // The analysis's interference (an initial overlap along the normal) acts on this pair: e.g. the
+  // wedge pushed up into the root. Other pairs start touching with no gap.
+  bool interference = false;
+  std::vector<ContactFacetPair> facets;
+};
+
 struct Model {
   Mesh mesh;
   fe::PlaneSection section;
@@ -63,6 +80,7 @@ struct Model {
   std::vector<NodalLoad> loads;
   std::vector<SurfaceLoad> surface_loads;
   std::vector<BodyLoad> body_loads;
+  std::vector<ContactPair> contact_pairs;
 };
 
 }  // namespace bb

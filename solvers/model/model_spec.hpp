@@ -36,6 +36,9 @@ struct MeshSpec {
   TwoBladeDimensions two_blade;           // two_blade and blade_section: the thesis's test article, validated
   BladeSectionDivisions blade_divisions;  // blade_section: the chapter-2 blade's divisions
   ElementType element = ElementType::q4;
+  // two_blade: false leaves the root interfaces (root on wedge, root shoulders under the fixture
+  // arms) unmerged and names their surfaces (two_blade_contact_set_names()) for contact pairs.
+  bool glue = true;
   SourceLocation at;
 
   int dim() const { return element_dimension(element); }
@@ -73,6 +76,13 @@ struct BodyLoadSpec {
   SourceLocation at;
 };
 
+struct ContactPairSpec {
+  std::string name;
+  std::string contact, target;  // node sets whose boundary facets face each other
+  bool interference = false;
+  SourceLocation at;
+};
+
 struct ModelSpec {
   MeshSpec mesh;
   fe::PlaneSection section;  // E, nu, rho (and the thickness of plane meshes)
@@ -81,6 +91,7 @@ struct ModelSpec {
   std::vector<LoadSpec> loads;
   std::vector<SurfaceLoadSpec> surface_loads;
   std::vector<BodyLoadSpec> body_loads;
+  std::vector<ContactPairSpec> contact_pairs;
 };
 
 }  // namespace bb

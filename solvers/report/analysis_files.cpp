@@ -29,6 +29,7 @@ void files(const ModalSpec&, const ModalOutcome&, const fs::path&, RunRecord&) {
 void files(const TimeSpec&, const TimeOutcome&, const fs::path&, RunRecord&) {}
 void files(const ContactLoopSpec&, const ContactLoopOutcome&, const fs::path&, RunRecord&) {}
 void files(const RotatingSpec&, const RotatingOutcome&, const fs::path&, RunRecord&) {}
+void files(const ContactModalSpec&, const ContactModalOutcome&, const fs::path&, RunRecord&) {}
 
 }  // namespace
 

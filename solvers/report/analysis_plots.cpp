@@ -6,6 +6,7 @@
 #include <string>
 
 #include "report/contact_loop_plots.hpp"
+#include "report/contact_modal_plots.hpp"
 #include "report/contour_plots.hpp"
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
@@ -107,6 +108,12 @@ void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget&
   t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(o.steady_stresses), "Pa", t.out,
                                            "steady_von_mises",
                                            "von Mises stress of the steady centrifugal deflection (nodal averages)"));
+}
+
+void plots(const ContactModalSpec& spec, const ContactModalOutcome& o, const PlotTarget& t) {
+  for (int m = 1; m <= spec.modes; ++m)
+    t.run.plots.push_back(plot_contact_mode(o, spec, m, t.out, fmt::format("contact_mode{}", m)));
+  if (o.tables.count("contact_state")) t.run.plots.push_back(plot_contact_pressure(o, t.out, "contact_pressure"));
 }
 
 }  // namespace

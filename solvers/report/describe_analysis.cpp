@@ -373,6 +373,38 @@ void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run
                     g(o.modes_at_speed.speed), o.modes_at_speed.max_growth_rate));
 }
 
+void describe(const ContactModalSpec& spec, const ContactModalOutcome& o, RunRecord& run) {
+  run.facts.emplace_back(
+      "analysis",
+      fmt::format("static contact (penalty, status iterations) and modes about it, at {} interferences x {} penalty "
+                  "factors; kn = FKN E / h (h: the contact face's size), tangential {}; stress stiffening {}",
+                  spec.interferences.size(), spec.penalty_factors.size(),
+                  spec.sticking ? fmt::format("sticking, kt = {} kn", g(spec.tangential_ratio)) : "frictionless",
+                  spec.prestress ? "on" : "off"));
+  run.facts.emplace_back("contact pairs",
+                         fmt::format("{} ({} Gauss points), {} free DOFs", fmt::join(o.pair_names, ", "),
+                                     o.contact_points, o.free_dofs));
+  double static_s = 0, modal_s = 0;
+  int iterations = 0, most = 0;
+  for (const ContactGridPoint& p : o.grid) {
+    static_s += p.static_seconds;
+    modal_s += p.modal_seconds;
+    iterations += p.static_iterations;
+    most = std::max(most, p.static_iterations);
+  }
+  const double n = static_cast<double>(std::max<size_t>(o.grid.size(), 1));
+  run.facts.emplace_back("cost per grid point [s]",
+                         fmt::format("static contact {:.3f} ({:.1f} status iterations on average, at most {}), modes "
+                                     "{:.3f}; setup {:.3f}; glued reference {:.3f}",
+                                     static_s / n, iterations / n, most, modal_s / n, o.setup_seconds,
+                                     o.glued_seconds));
+  if (o.glued_hz.size() > 0) {
+    std::string glued;
+    for (Eigen::Index m = 0; m < o.glued_hz.size(); ++m) glued += fmt::format("{}{:.2f}", m ? ", " : "", o.glued_hz[m]);
+    run.facts.emplace_back("glued model [Hz]", glued);
+  }
+}
+
 }  // namespace
 
 void describe_model(const ModelSpec& spec, bool driven_contact, const Model& model, RunRecord& run) {

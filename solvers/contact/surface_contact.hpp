@@ -1,0 +1,50 @@
+// Penalty contact between facing facets of a solid mesh (Model::contact_pairs), integrated at the
+// Gauss points of the contact facets: at each point the gap is
+//   g = g0 + n . (u_target - u_contact),
+// n the contact facet's outward unit normal, g0 the initial gap (< 0: an interference), and a closed
+// point carries the pressure p = -kn g and, sticking, the shear traction -kt (I - n n^T)(u_t - u_c).
+// That is the energy 1/2 integral (kn <-g>^2 + kt |slip|^2) dA of a penalty (Ansys's pure penalty,
+// or augmented Lagrange with one augmentation); on matching facets it is the segment-to-segment
+// form, which passes the constant-pressure patch test exactly (Wriggers, Computational Contact
+// Mechanics, 2nd ed., sec. 9.5). Small displacements: n and the pairing stay those of the mesh.
+#pragma once
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace bb {
+
+struct ContactPoint {
+  int pair = 0;                                      // index into the model's contact pairs
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // [m]
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // outward from the contact surface, into the target
+  double area = 0.0;                                  // Gauss weight times the surface Jacobian [m^2]
+  double facet_size = 0.0;                            // sqrt of the facet's area [m]
+  const ContactFacetPair* facet = nullptr;            // nodes of both sides (owned by the Model)
+  Eigen::VectorXd shape;                              // the facet's shape functions at the point
+};
+
+// 2x2 Gauss points on 4-node facets, 3x3 on 8-node ones.
+std::vector<ContactPoint> contact_points(const Mesh& mesh, const std::vector<ContactPair>& pairs);
+
+// u_target - u_contact at the point, from the displacement of every DOF (node * 3 + direction).
+Eigen::Vector3d relative_displacement(const ContactPoint& p, const Eigen::VectorXd& u);
+
+// Penalty stiffnesses of each point [N/m^3 = Pa/m].
+struct ContactPenalty {
+  Eigen::VectorXd normal;
+  Eigen::VectorXd tangential;  // 0: frictionless
+};
+
+// Stiffness of the closed points on every DOF (n_dofs = nodes * 3).
+Eigen::SparseMatrix<double> contact_stiffness(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
+                                              const ContactPenalty& penalty, int n_dofs);
+
+// The force the initial gaps of the closed points exert: -sum area kn g0 G^T n (every DOF).
+Eigen::VectorXd initial_gap_force(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
+                                  const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap, int n_dofs);
+
+}  // namespace bb

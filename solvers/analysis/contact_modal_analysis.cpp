@@ -99,14 +99,21 @@ ResultTable contact_state_table(const Model& model, const std::vector<ContactPoi
   return t;
 }
 
-// Per mode: how the grid's corners compare with each other and with the glued model.
+// Per mode, interference_effect: the frequency at the softest corner (smallest interference and
+// FKN) and the stiffest; the rise from the smallest to the largest interference, smallest and largest
+// over FKN, and how many interference steps lower it; the rise from the smallest to the largest FKN
+// at the smallest and the largest interference; the FKN rise and the interference rise (at the
+// smallest FKN) over the first pair's, and FKN's effect at the largest interference over that at the
+// smallest. glued_limit: both corners against the glued model.
 void add_summary_tables(ContactModalOutcome& o, const ContactModalSpec& spec) {
   const size_t n_i = spec.interferences.size(), n_p = spec.penalty_factors.size();
   auto at = [&](size_t i, size_t j) -> const ContactGridPoint& { return o.grid[i * n_p + j]; };
   std::vector<std::vector<double>> effect, limit;
   // The first pair's penalty effect, which the thesis finds the smallest (L1010).
   auto penalty_rise = [&](int m) { return at(0, n_p - 1).frequencies_hz[m] / at(0, 0).frequencies_hz[m] - 1; };
-  const double first_pair = spec.modes > 1 ? 0.5 * (penalty_rise(0) + penalty_rise(1)) : penalty_rise(0);
+  auto interference_rise = [&](int m) { return at(n_i - 1, 0).frequencies_hz[m] / at(0, 0).frequencies_hz[m] - 1; };
+  auto first_pair = [&](auto&& rise) { return spec.modes > 1 ? 0.5 * (rise(0) + rise(1)) : rise(0); };
+  auto ratio = [](double a, double b) { return b != 0 ? a / b : 0.0; };  // 0: nothing to compare with
   for (int m = 0; m < spec.modes; ++m) {
     auto f = [&](size_t i, size_t j) { return at(i, j).frequencies_hz[m]; };
     // Rise from the smallest to the largest interference, the smallest over the penalty factors.
@@ -122,7 +129,8 @@ void add_summary_tables(ContactModalOutcome& o, const ContactModalSpec& spec) {
     const double penalty_high = f(n_i - 1, n_p - 1) / f(n_i - 1, 0) - 1;
     effect.push_back({static_cast<double>(m + 1), f(0, 0), f(n_i - 1, n_p - 1), rise_min, rise_max,
                       static_cast<double>(decreasing), penalty_low, penalty_high,
-                      first_pair != 0 ? penalty_low / first_pair : 0.0});  // 0: nothing to compare with
+                      ratio(penalty_low, first_pair(penalty_rise)),
+                      ratio(interference_rise(m), first_pair(interference_rise)), ratio(penalty_high, penalty_low)});
     if (o.glued_hz.size() > 0) {
       const double g = o.glued_hz[m];
       limit.push_back({static_cast<double>(m + 1), g, f(n_i - 1, n_p - 1), f(0, 0), f(n_i - 1, n_p - 1) / g - 1,
@@ -133,7 +141,8 @@ void add_summary_tables(ContactModalOutcome& o, const ContactModalSpec& spec) {
                    table_from_rows("interference_effect",
                                    {"mode", "softest_hz", "stiffest_hz", "interference_rise_min",
                                     "interference_rise_max", "decreasing_steps", "penalty_rise_at_min_interference",
-                                    "penalty_rise_at_max_interference", "penalty_rise_vs_first_pair"},
+                                    "penalty_rise_at_max_interference", "penalty_rise_vs_first_pair",
+                                    "interference_rise_vs_first_pair", "penalty_effect_ratio"},
                                    effect));
   if (!limit.empty())
     o.tables.emplace("glued_limit", table_from_rows("glued_limit",
@@ -181,17 +190,27 @@ ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec
       penalty.normal[k] = spec.penalty_factors[j] * model.section.youngs_modulus / points[static_cast<size_t>(k)].facet_size;
       penalty.tangential[k] = spec.sticking ? spec.tangential_ratio * penalty.normal[k] : 0.0;
     }
-    std::vector<char> closed(points.size(), 1);  // the previous interference's status seeds the next
+    penalty.roughness = spec.roughness;
+    // The previous interference's state seeds the next.
+    std::vector<char> closed(points.size(), 1);
+    Eigen::VectorXd start;
     for (size_t i = 0; i < n_i; ++i) {
       ContactGridPoint& g = o.grid[i * n_p + j];
       g.interference = spec.interferences[i];
       g.penalty_factor = spec.penalty_factors[j];
       const auto t1 = Clock::now();
       const StaticContactSolution s =
-          solve_static_contact(global.stiffness, dofs, points, penalty, spec.interferences[i] * unit_gap, external, closed, {},
-                               static_cast<int>(i * n_p + j + 1), steps);
+          solve_static_contact(global.stiffness, dofs, points, penalty, spec.interferences[i] * unit_gap, external,
+                               closed, {},
+                               fmt::format("static contact at grid point {} of {} (interference {:g} m, FKN {:g})",
+                                           i * n_p + j + 1, steps, spec.interferences[i], spec.penalty_factors[j]),
+                               start);
       closed = s.closed;
+      // The next interference starts from this state scaled: the bodies' response is nearly linear in it.
+      start = s.displacement;
+      if (i + 1 < n_i && spec.interferences[i] > 0) start *= spec.interferences[i + 1] / spec.interferences[i];
       g.static_iterations = s.iterations;
+      g.newton_iterations = s.newton_iterations;
       g.status_changes = s.status_changes;
       g.closed_fraction = n_points > 0 ? static_cast<double>(std::count(closed.begin(), closed.end(), 1)) /
                                              static_cast<double>(n_points)
@@ -199,7 +218,11 @@ ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec
       g.max_pressure = s.pressure.size() > 0 ? s.pressure.maxCoeff() : 0.0;
       g.static_seconds = seconds_since(t1);
       const auto t2 = Clock::now();
-      Eigen::SparseMatrix<double> k = global.stiffness + contact_stiffness(points, s.closed, penalty, dofs.n_global());
+      // Linearized about the state: the law's tangent normal stiffness, and a sticking one in proportion.
+      ContactPenalty tangent = penalty;
+      tangent.normal = s.normal_stiffness;
+      if (spec.sticking) tangent.tangential = spec.tangential_ratio * s.normal_stiffness;
+      Eigen::SparseMatrix<double> k = global.stiffness + contact_stiffness(points, s.closed, tangent, dofs.n_global());
       if (spec.prestress) k += ffrf::assemble_geometric_stiffness(model.mesh, model.section, s.displacement);
       g.frequencies_hz = frequencies_of(partition(k, dofs).ff, mass, options);
       g.modal_seconds = seconds_since(t2);
@@ -229,12 +252,14 @@ ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec
   for (size_t p = 0; p < o.grid.size(); ++p) {
     const ContactGridPoint& g = o.grid[p];
     cost.push_back({static_cast<double>(p + 1), g.interference, g.penalty_factor, static_cast<double>(g.static_iterations),
+                    static_cast<double>(g.newton_iterations),
                     static_cast<double>(g.status_changes), g.closed_fraction, g.max_pressure, g.static_seconds,
                     g.modal_seconds});
   }
   o.tables.emplace("contact_grid",
                    table_from_rows("contact_grid",
-                                   {"point", "interference_m", "fkn", "static_iterations", "status_changes",
+                                   {"point", "interference_m", "fkn", "static_iterations", "newton_iterations",
+                                    "status_changes",
                                     "closed_fraction", "max_pressure_pa", "static_seconds", "modal_seconds"},
                                    cost));
   if (o.glued_hz.size() > 0) {

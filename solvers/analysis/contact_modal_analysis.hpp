@@ -17,7 +17,7 @@ struct ContactGridPoint {
   Eigen::VectorXd frequencies_hz;
   double closed_fraction = 0.0;  // of the contact points, pairs together
   double max_pressure = 0.0;     // [Pa]
-  int static_iterations = 0, status_changes = 0;
+  int static_iterations = 0, newton_iterations = 0, status_changes = 0;
   double static_seconds = 0.0, modal_seconds = 0.0;
 };
 

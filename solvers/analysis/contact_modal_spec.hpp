@@ -16,7 +16,8 @@ struct ContactModalSpec {
   std::vector<double> interferences;    // initial overlap of the pairs marked `interference` [m]
   std::vector<double> penalty_factors;  // FKN: kn = FKN E / h, h the contact facet's size [-]
   bool sticking = true;                 // tangential: sticking (kt = tangential_ratio kn) or frictionless
-  double tangential_ratio = 1.0;
+  double tangential_ratio = 1.0;        // kt / kn, both at the static state's pressure
+  double roughness = 0.0;               // sigma of the stiffening normal law [m]; 0: linear (contact/surface_contact.hpp)
   bool prestress = true;                // geometric stiffness of the static contact stresses
   bool glued_reference = true;          // also the modes with every pair's facing nodes tied
   // The grid point whose contact state (gap, pressure, status per point) is written: indices into

@@ -42,6 +42,12 @@ ContactModalSpec parse_contact_modal(TomlReader& r) {
     if (!(s.tangential_ratio > 0) || !std::isfinite(s.tangential_ratio))
       r.fail("tangential_ratio", fmt::format("must be a positive finite number, found {}", s.tangential_ratio));
   }
+  if (r.has("roughness_m")) {
+    s.roughness = r.number("roughness_m");
+    if (!(s.roughness >= 0) || !std::isfinite(s.roughness))
+      r.fail("roughness_m", fmt::format("must be a finite length >= 0 (0: the linear penalty law), found {}",
+                                        s.roughness));
+  }
   s.prestress = r.boolean("prestress", true);
   s.glued_reference = r.boolean("glued_reference", true);
   if (r.has("state_point")) {

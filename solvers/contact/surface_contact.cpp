@@ -1,5 +1,6 @@
 #include "contact/surface_contact.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "fe/face_shape.hpp"
@@ -107,6 +108,45 @@ Eigen::VectorXd initial_gap_force(const std::vector<ContactPoint>& points, const
     const ContactPoint& p = points[k];
     const double s = -p.area * penalty.normal[ki] * initial_gap[ki];
     for_each_dof(p, [&](int dof, int d, double n) { f[dof] += s * n * p.normal[d]; });
+  }
+  return f;
+}
+
+// Exponents beyond this overflow; a trial state that reaches it is rejected by the line search.
+constexpr double kMaxExponent = 700.0;
+
+double normal_pressure(double kn, double roughness, double gap) {
+  if (roughness <= 0) return -kn * gap;
+  return kn * roughness * std::expm1(std::min(-gap / roughness, kMaxExponent));
+}
+
+double normal_tangent(double kn, double roughness, double gap) {
+  if (roughness <= 0) return kn;
+  return kn * std::exp(std::min(-gap / roughness, kMaxExponent));
+}
+
+double normal_energy(double kn, double roughness, double gap) {
+  if (roughness <= 0) return 0.5 * kn * gap * gap;
+  const double x = -gap / roughness;
+  if (x > kMaxExponent) return INFINITY;
+  return kn * roughness * (roughness * std::expm1(x) + gap);
+}
+
+Eigen::VectorXd contact_force(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
+                              const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap,
+                              const Eigen::VectorXd& u) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(u.size());
+  for (size_t k = 0; k < points.size(); ++k) {
+    if (!closed[k]) continue;
+    const auto ki = static_cast<Eigen::Index>(k);
+    const ContactPoint& p = points[k];
+    const Eigen::Vector3d du = relative_displacement(p, u);
+    const double g = initial_gap[ki] + p.normal.dot(du);
+    const Eigen::Vector3d slip = du - p.normal.dot(du) * p.normal;
+    // Traction on the target: +p n (pushed away along n) and -kt slip.
+    const Eigen::Vector3d t = p.area * (normal_pressure(penalty.normal[ki], penalty.roughness, g) * p.normal -
+                                        penalty.tangential[ki] * slip);
+    for_each_dof(p, [&](int dof, int d, double n) { f[dof] += n * t[d]; });
   }
   return f;
 }

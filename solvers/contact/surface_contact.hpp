@@ -33,11 +33,22 @@ std::vector<ContactPoint> contact_points(const Mesh& mesh, const std::vector<Con
 // u_target - u_contact at the point, from the displacement of every DOF (node * 3 + direction).
 Eigen::Vector3d relative_displacement(const ContactPoint& p, const Eigen::VectorXd& u);
 
-// Penalty stiffnesses of each point [N/m^3 = Pa/m].
+// Penalty stiffnesses of each point [N/m^3 = Pa/m], and the normal law. With roughness sigma = 0 the
+// law is linear, p = -kn g. With sigma > 0 it stiffens with the pressure as a rough interface does,
+// dp/d(-g) = kn + p / sigma, i.e. p = kn sigma (exp(-g / sigma) - 1): the penalty kn at first touch,
+// and beyond a few sigma of penetration the stiffness p / sigma of Greenwood & Williamson's contact of
+// rough surfaces with exponentially distributed asperity heights (Proc. R. Soc. A 295, 1966).
 struct ContactPenalty {
   Eigen::VectorXd normal;
   Eigen::VectorXd tangential;  // 0: frictionless
+  double roughness = 0.0;      // sigma [m]
 };
+
+// The normal law at a gap g of a point with penalty kn: pressure [Pa], tangent stiffness
+// dp/d(-g) [Pa/m] and the stored energy per area [J/m^2] (zero at g = 0, convex in g).
+double normal_pressure(double kn, double roughness, double gap);
+double normal_tangent(double kn, double roughness, double gap);
+double normal_energy(double kn, double roughness, double gap);
 
 // Stiffness of the closed points on every DOF (n_dofs = nodes * 3).
 Eigen::SparseMatrix<double> contact_stiffness(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
@@ -46,5 +57,11 @@ Eigen::SparseMatrix<double> contact_stiffness(const std::vector<ContactPoint>& p
 // The force the initial gaps of the closed points exert: -sum area kn g0 G^T n (every DOF).
 Eigen::VectorXd initial_gap_force(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
                                   const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap, int n_dofs);
+
+// The force the closed points exert on the bodies at the displacement u, sum area G^T (p n - kt slip)
+// (every DOF), under the normal law: the contact's share of the internal force, with a minus sign.
+Eigen::VectorXd contact_force(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
+                              const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap,
+                              const Eigen::VectorXd& u);
 
 }  // namespace bb

@@ -3,14 +3,17 @@
 #include <cholmod.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace bb {
 
 struct SpdFactorization::Impl {
   cholmod_common common{};
   cholmod_factor* factor = nullptr;
+  std::vector<int> outer, inner;  // the pattern `factor` was analyzed for
   explicit Impl(FillOrdering ordering) {
     cholmod_start(&common);
     common.print = 0;
@@ -88,12 +91,24 @@ FactorStatus SpdFactorization::factorize(const Eigen::SparseMatrix<double>& a) {
     return status;
   }
   cholmod_common* c = &impl_->common;
-  if (impl_->factor) cholmod_free_factor(&impl_->factor, c);
   cholmod_sparse view = view_lower(a);
-  impl_->factor = cholmod_analyze(&view, c);
-  if (!impl_->factor) {
-    status.message = fmt::format("CHOLMOD analysis failed (status {})", c->status);
-    return status;
+  // The same pattern as the last matrix (a Newton iteration, a new load level): only the numbers change,
+  // so the fill-reducing ordering and the symbolic factorization are kept.
+  const int* outer = a.outerIndexPtr();
+  const int* inner = a.innerIndexPtr();
+  const bool same_pattern = impl_->factor && impl_->outer.size() == static_cast<size_t>(a.cols() + 1) &&
+                            impl_->inner.size() == static_cast<size_t>(a.nonZeros()) &&
+                            std::equal(impl_->outer.begin(), impl_->outer.end(), outer) &&
+                            std::equal(impl_->inner.begin(), impl_->inner.end(), inner);
+  if (!same_pattern) {
+    if (impl_->factor) cholmod_free_factor(&impl_->factor, c);
+    impl_->factor = cholmod_analyze(&view, c);
+    if (!impl_->factor) {
+      status.message = fmt::format("CHOLMOD analysis failed (status {})", c->status);
+      return status;
+    }
+    impl_->outer.assign(outer, outer + a.cols() + 1);
+    impl_->inner.assign(inner, inner + a.nonZeros());
   }
   cholmod_factorize(&view, impl_->factor, c);
   if (c->status == CHOLMOD_OUT_OF_MEMORY) {

@@ -377,8 +377,11 @@ void describe(const ContactModalSpec& spec, const ContactModalOutcome& o, RunRec
   run.facts.emplace_back(
       "analysis",
       fmt::format("static contact (penalty, status iterations) and modes about it, at {} interferences x {} penalty "
-                  "factors; kn = FKN E / h (h: the contact face's size), tangential {}; stress stiffening {}",
+                  "factors; kn = FKN E / h (h: the contact face's size), normal law {}, tangential {}; stress "
+                  "stiffening {}",
                   spec.interferences.size(), spec.penalty_factors.size(),
+                  spec.roughness > 0 ? fmt::format("stiffening with the pressure (roughness {:g} m)", spec.roughness)
+                                     : std::string("linear"),
                   spec.sticking ? fmt::format("sticking, kt = {} kn", g(spec.tangential_ratio)) : "frictionless",
                   spec.prestress ? "on" : "off"));
   run.facts.emplace_back("contact pairs",

@@ -201,7 +201,7 @@ ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec
       const auto t1 = Clock::now();
       const StaticContactSolution s =
           solve_static_contact(global.stiffness, dofs, points, penalty, spec.interferences[i] * unit_gap, external,
-                               closed, {},
+                               closed, {.max_iterations = spec.max_status_iterations},
                                fmt::format("static contact at grid point {} of {} (interference {:g} m, FKN {:g})",
                                            i * n_p + j + 1, steps, spec.interferences[i], spec.penalty_factors[j]),
                                start);

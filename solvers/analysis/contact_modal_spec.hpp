@@ -20,6 +20,7 @@ struct ContactModalSpec {
   double roughness = 0.0;               // sigma of the stiffening normal law [m]; 0: linear (contact/surface_contact.hpp)
   bool prestress = true;                // geometric stiffness of the static contact stresses
   bool glued_reference = true;          // also the modes with every pair's facing nodes tied
+  int max_status_iterations = 50;       // of each static contact solve (contact/static_contact.hpp)
   // The grid point whose contact state (gap, pressure, status per point) is written: indices into
   // the two lists; default the largest interference at the last penalty factor.
   int state_interference = -1, state_penalty = -1;

@@ -48,6 +48,10 @@ ContactModalSpec parse_contact_modal(TomlReader& r) {
       r.fail("roughness_m", fmt::format("must be a finite length >= 0 (0: the linear penalty law), found {}",
                                         s.roughness));
   }
+  if (const auto n = r.optional_integer("max_status_iterations")) {
+    if (*n < 1 || *n > 1000) r.fail("max_status_iterations", fmt::format("must lie in 1..1000, found {}", *n));
+    s.max_status_iterations = static_cast<int>(*n);
+  }
   s.prestress = r.boolean("prestress", true);
   s.glued_reference = r.boolean("glued_reference", true);
   if (r.has("state_point")) {

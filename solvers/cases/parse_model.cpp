@@ -42,8 +42,10 @@ int parse_divisions(TomlReader& r, const std::string& key) {
   return static_cast<int>(n);
 }
 
-HexBlockSpec parse_hex_block(TomlReader r, ElementType element) {
+HexBlockSpec parse_hex_block(TomlReader r, ElementType element, std::string& body) {
   HexBlockSpec b;
+  // Blocks of one body merge at coincident nodes; different bodies only touch (contact pairs).
+  body = r.has("body") ? r.name("body") : std::string("main");
   b.element = element;
   const auto corners = parse_points(r, "corners", 8);
   std::copy(corners.begin(), corners.end(), b.corners.begin());
@@ -149,8 +151,10 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
       int index = 0;
       for (const toml::node& n : r.array("block")) {
         if (!n.is_table()) r.fail("block", "write blocks as [[mesh.block]] tables");
-        m.blocks.push_back(
-            parse_hex_block(TomlReader(*n.as_table(), fmt::format("mesh.block[{}]", index++), r.file()), m.element));
+        std::string body;
+        m.blocks.push_back(parse_hex_block(TomlReader(*n.as_table(), fmt::format("mesh.block[{}]", index++), r.file()),
+                                           m.element, body));
+        m.block_bodies.push_back(body);
       }
       if (m.blocks.empty()) r.fail("block", "needs at least one [[mesh.block]]");
     }
@@ -232,6 +236,7 @@ NodeSetSpec parse_set(TomlReader r, const std::string& name) {
     }
   }
   s.tol = r.non_negative("tol", 1e-9);
+  if (r.has("body")) s.body = r.name("body");
   if (static_cast<int>(predicate) + static_cast<int>(!s.ids.empty()) + static_cast<int>(!s.group.empty()) != 1)
     r.fail("", "a node set needs exactly one of 'ids', 'group' or a coordinate predicate (x, y, z, x_range, ...)");
   r.finish();

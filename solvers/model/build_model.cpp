@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "common/errors.hpp"
@@ -157,6 +158,7 @@ std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set, const No
 Model build_model(const ModelSpec& spec) {
   Model model;
   NodeGroups groups;
+  NodeGroups body_nodes;  // hex_blocks: the nodes of each body
   switch (spec.mesh.kind) {
     case MeshSpec::Kind::csv:
       require_file(spec.mesh.nodes_csv, spec.mesh.at);
@@ -167,9 +169,29 @@ Model build_model(const ModelSpec& spec) {
       model.mesh = generate_mapped_quad(spec.mesh.mapped);
       break;
     case MeshSpec::Kind::hex_blocks: {
-      std::vector<Mesh> parts;
-      for (const HexBlockSpec& b : spec.mesh.blocks) parts.push_back(generate_hex_block(b));
-      model.mesh = parts.size() == 1 ? std::move(parts.front()) : merge_meshes(parts, spec.mesh.merge_tolerance);
+      // Bodies in order of first appearance; each merged, then set side by side unmerged.
+      std::vector<std::string> names;
+      std::vector<std::vector<Mesh>> bodies;
+      for (size_t i = 0; i < spec.mesh.blocks.size(); ++i) {
+        const std::string name = i < spec.mesh.block_bodies.size() ? spec.mesh.block_bodies[i] : "main";
+        const auto it = std::find(names.begin(), names.end(), name);
+        if (it == names.end()) {
+          names.push_back(name);
+          bodies.emplace_back();
+        }
+        bodies[static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin())].push_back(
+            generate_hex_block(spec.mesh.blocks[i]));
+      }
+      std::vector<Mesh> merged;
+      for (std::vector<Mesh>& parts : bodies)
+        merged.push_back(parts.size() == 1 ? std::move(parts.front()) : merge_meshes(parts, spec.mesh.merge_tolerance));
+      std::vector<std::vector<int>> origin;
+      model.mesh = concatenate_meshes(merged, &origin);
+      for (size_t b = 0; b < names.size(); ++b) {
+        std::vector<int>& nodes = body_nodes[names[b]];
+        nodes = origin[b];
+        std::sort(nodes.begin(), nodes.end());
+      }
       break;
     }
     case MeshSpec::Kind::two_blade:
@@ -198,7 +220,26 @@ Model build_model(const ModelSpec& spec) {
     }
   }
   model.section = spec.section;
-  for (const NodeSetSpec& s : spec.sets) model.node_sets[s.name] = select_nodes(model.mesh, s, &groups);
+  for (const NodeSetSpec& s : spec.sets) {
+    std::vector<int> nodes = select_nodes(model.mesh, s, &groups);
+    if (!s.body.empty()) {
+      const auto body = body_nodes.find(s.body);
+      if (body == body_nodes.end()) {
+        std::string known;
+        for (const auto& [name, members] : body_nodes) known += (known.empty() ? "" : ", ") + name;
+        throw InputError(fmt::format("{}: node set '{}': the mesh has no body '{}' ({})", s.at.where(), s.name, s.body,
+                                     known.empty() ? "bodies are named by [[mesh.block]] body = ..." : "bodies: " + known));
+      }
+      std::vector<int> in_body;
+      std::set_intersection(nodes.begin(), nodes.end(), body->second.begin(), body->second.end(),
+                            std::back_inserter(in_body));
+      if (in_body.empty())
+        throw InputError(
+            fmt::format("{}: node set '{}' matches no node of body '{}'", s.at.where(), s.name, s.body));
+      nodes = std::move(in_body);
+    }
+    model.node_sets[s.name] = std::move(nodes);
+  }
   auto require_set = [&](const std::string& name, const SourceLocation& at) {
     if (!model.node_sets.count(name)) throw InputError(fmt::format("{}: unknown node set '{}'", at.where(), name));
   };

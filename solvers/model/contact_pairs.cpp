@@ -22,18 +22,21 @@ Eigen::Vector3d centroid(const Mesh& mesh, const std::vector<int>& nodes) {
 ContactPair build_contact_pair(const Model& model, const ContactPairSpec& spec) {
   const Mesh& mesh = model.mesh;
   const std::string where = fmt::format("{}: contact pair '{}'", spec.at.where(), spec.name);
-  auto facets_of = [&](const std::string& key, const std::string& set) {
+  auto nodes_of = [&](const std::string& key, const std::string& set) {
     const auto it = model.node_sets.find(set);
     if (it == model.node_sets.end()) throw InputError(fmt::format("{}: '{}': unknown node set '{}'", where, key, set));
-    std::vector<Facet> facets = boundary_facets_within(mesh, it->second);
+    return &it->second;
+  };
+  auto facets_of = [&](const std::string& key, const std::string& set, const std::vector<int>& nodes) {
+    std::vector<Facet> facets = boundary_facets_within(mesh, nodes);
     if (facets.empty())
       throw InputError(fmt::format("{}: '{}': node set '{}' holds no boundary face of the mesh (a face counts when "
                                    "all its nodes lie in the set)",
                                    where, key, set));
-    return std::pair{&it->second, std::move(facets)};
+    return facets;
   };
-  const auto [contact_nodes, contact_facets] = facets_of("contact", spec.contact);
-  const auto [target_nodes, target_facets] = facets_of("target", spec.target);
+  const std::vector<int>* contact_nodes = nodes_of("contact", spec.contact);
+  const std::vector<int>* target_nodes = nodes_of("target", spec.target);
   std::vector<int> shared;
   std::set_intersection(contact_nodes->begin(), contact_nodes->end(), target_nodes->begin(), target_nodes->end(),
                         std::back_inserter(shared));
@@ -42,6 +45,8 @@ ContactPair build_contact_pair(const Model& model, const ContactPairSpec& spec) 
                                  "nodes), not in contact{}",
                                  where, mesh.node_ids[static_cast<size_t>(shared.front())], spec.contact, spec.target,
                                  shared.size() > 1 ? fmt::format(" ({} such nodes)", shared.size()) : ""));
+  const std::vector<Facet> contact_facets = facets_of("contact", spec.contact, *contact_nodes);
+  const std::vector<Facet> target_facets = facets_of("target", spec.target, *target_nodes);
 
   // Coincidence within a millionth of the smallest facet's size.
   double size = INFINITY;

@@ -30,7 +30,8 @@ struct MeshSpec {
   MappedQuadSpec mapped;
   std::filesystem::path nodes_csv;        // csv: columns id,x,y[,z]
   std::filesystem::path elements_csv;     // csv: columns id,n1..nN
-  std::vector<HexBlockSpec> blocks;       // hex_blocks: merged at coincident nodes
+  std::vector<HexBlockSpec> blocks;       // hex_blocks: merged at coincident nodes within a body
+  std::vector<std::string> block_bodies;  // hex_blocks: the body of each block
   double merge_tolerance = 1e-9;          // [m]
   std::filesystem::path gmsh_file;        // gmsh: .msh 4.1 ASCII
   TwoBladeDimensions two_blade;           // two_blade and blade_section: the thesis's test article, validated
@@ -52,6 +53,7 @@ struct NodeSetSpec {
   std::array<std::optional<double>, 3> equals;
   std::array<std::optional<std::pair<double, double>>, 3> range;
   double tol = 1e-9;
+  std::string body;  // hex_blocks with bodies: only that body's nodes (the sides of an unmerged interface)
   SourceLocation at;
 };
 

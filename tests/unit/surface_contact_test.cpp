@@ -15,6 +15,8 @@
 #include "contact/surface_contact.hpp"
 #include "mesh/hex_block.hpp"
 #include "model/contact_pairs.hpp"
+#include "pipeline/run_case.hpp"
+#include "temp_folder.hpp"
 
 namespace bb {
 namespace {
@@ -114,6 +116,43 @@ TEST_P(ContactPatch, InterferenceGivesTheSeriesSpringForceAndAUniformPressure) {
 INSTANTIATE_TEST_SUITE_P(Elements, ContactPatch, ::testing::Values(ElementType::hex8, ElementType::hex20),
                          [](const auto& info) { return std::string(element_name(info.param)); });
 
+// The stiffening law: its pressure is the energy's derivative and its tangent the pressure's, it starts
+// with the penalty's slope, and two blocks pressed by a deep interference settle where the law and
+// the blocks' series spring balance, p = kn s (exp(d / s) - 1) = E (delta - d) / (la + lb).
+TEST(StaticContact, TheRoughLawIsConsistentAndTheBlocksSettleOnItsClosedForm) {
+  const double kn = 3e13, sigma = 1e-6;
+  for (double g : {2e-6, 0.0, -1e-6, -8e-6}) {
+    const double h = 1e-10;
+    EXPECT_NEAR(normal_pressure(kn, sigma, g),
+                -(normal_energy(kn, sigma, g + h) - normal_energy(kn, sigma, g - h)) / (2 * h),
+                1e-6 * std::max(kn * sigma, std::abs(normal_pressure(kn, sigma, g))));
+    EXPECT_NEAR(normal_tangent(kn, sigma, g),
+                -(normal_pressure(kn, sigma, g + h) - normal_pressure(kn, sigma, g - h)) / (2 * h),
+                1e-5 * normal_tangent(kn, sigma, g));
+  }
+  EXPECT_DOUBLE_EQ(normal_tangent(kn, sigma, 0.0), kn);
+  EXPECT_DOUBLE_EQ(normal_pressure(kn, 0.0, -1e-6), kn * 1e-6);  // sigma = 0: linear
+  const double a = 0.02, la = 0.03, lb = 0.01, delta = 5e-5;
+  Model m = two_blocks(ElementType::hex8, a, la, lb, 2, 0.3);
+  add_rollers(m);
+  const DofMap dofs = number_dofs(m);
+  const GlobalMatrices k = assemble(m.mesh, m.section, {.stiffness = true, .mass = false});
+  const std::vector<ContactPoint> points = contact_points(m.mesh, m.contact_pairs);
+  const auto n = static_cast<Eigen::Index>(points.size());
+  ContactPenalty rough{Eigen::VectorXd::Constant(n, kn), Eigen::VectorXd::Constant(n, kn), sigma};
+  const StaticContactSolution s = solve_static_contact(k.stiffness, dofs, points, rough, Eigen::VectorXd::Constant(n, -delta),
+                                                       {}, std::vector<char>(points.size(), 1));
+  double lo = 0, hi = delta;  // penetration d
+  for (int i = 0; i < 200; ++i) {
+    const double d = 0.5 * (lo + hi);
+    (kn * sigma * std::expm1(d / sigma) > kE * (delta - d) / (la + lb) ? hi : lo) = d;
+  }
+  const double p = kE * (delta - lo) / (la + lb);
+  for (Eigen::Index i = 0; i < n; ++i) EXPECT_NEAR(s.pressure[i], p, 1e-8 * p);
+  EXPECT_GT(s.newton_iterations, 1);
+  EXPECT_NEAR(s.normal_stiffness[0], kn + p / sigma, 1e-6 * (kn + p / sigma));
+}
+
 TEST(StaticContact, AnInitialGapStaysOpenAndATiltedOneClosesPartOfTheInterface) {
   const double a = 0.02, la = 0.02, lb = 0.02;
   Model m = two_blocks(ElementType::hex8, a, la, lb, 6, 0.3);
@@ -141,6 +180,27 @@ TEST(StaticContact, AnInitialGapStaysOpenAndATiltedOneClosesPartOfTheInterface) 
   EXPECT_LT(closed, n);
   EXPECT_GT(part.solution.iterations, 1);
   EXPECT_GT(part.solution.status_changes, 0);
+}
+
+TEST(StaticContact, AStatusThatDoesNotSettleIsASolverErrorNamingTheStepAndTheChanges) {
+  Model m = two_blocks(ElementType::hex8, 0.02, 0.02, 0.02, 6, 0.3);
+  m.constraints = {{"a_bottom", {0, 1, 2}, 0.0}, {"b_top", {0, 1, 2}, 0.0}};
+  const DofMap dofs = number_dofs(m);
+  const GlobalMatrices k = assemble(m.mesh, m.section, {.stiffness = true, .mass = false});
+  const std::vector<ContactPoint> points = contact_points(m.mesh, m.contact_pairs);
+  const auto n = static_cast<Eigen::Index>(points.size());
+  Eigen::VectorXd tilted(n);
+  for (Eigen::Index i = 0; i < n; ++i) tilted[i] = 1e-5 * (points[static_cast<size_t>(i)].position.x() / 0.02 - 0.5);
+  ContactPenalty penalty{Eigen::VectorXd::Constant(n, 1e14), Eigen::VectorXd::Constant(n, 1e14)};
+  try {
+    solve_static_contact(k.stiffness, dofs, points, penalty, tilted, {}, std::vector<char>(points.size(), 1),
+                         {.max_iterations = 1}, "test");
+    ADD_FAILURE() << "expected SolverError";
+  } catch (const SolverError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("load step 1 of 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("status changes"), std::string::npos) << what;
+  }
 }
 
 TEST(StaticContact, ABodyHeldOnlyByFrictionlessContactIsASolverError) {
@@ -220,6 +280,149 @@ TEST(ContactPairs, GluedNodesAndNonConformingFacesAreRefused) {
                InputError);
   EXPECT_THROW(build_contact_pair(m, {.name = "p", .contact = "a_top", .target = "nothing", .interference = false, .at = {}}),
                InputError);
+}
+
+// Through the command line's pipeline: a body held by frictionless contact alone fails the run with
+// exit 3 and the load step, and writes no result table.
+class ContactCase : public test::TempFolderTest {};
+
+TEST_F(ContactCase, AFrictionlessFreeBodyFailsTheRunAsASolverFailure) {
+  std::string text = R"([case]
+name = "two_blocks_contact"
+title = "Two blocks pressed together"
+
+[material]
+E = 2.0e11
+nu = 0.3
+rho = 7800.0
+
+[mesh]
+kind = "hex_blocks"
+element = "hex8"
+
+[[mesh.block]]
+body = "lower"
+corners = [[0, 0, 0], [0.02, 0, 0], [0.02, 0.02, 0], [0, 0.02, 0], [0, 0, 0.02], [0.02, 0, 0.02], [0.02, 0.02, 0.02], [0, 0.02, 0.02]]
+nx = 4
+ny = 4
+nz = 2
+
+[[mesh.block]]
+body = "upper"
+corners = [[0, 0, 0.02], [0.02, 0, 0.02], [0.02, 0.02, 0.02], [0, 0.02, 0.02], [0, 0, 0.04], [0.02, 0, 0.04], [0.02, 0.02, 0.04], [0, 0.02, 0.04]]
+nx = 4
+ny = 4
+nz = 2
+
+[sets.bottom]
+z = 0.0
+
+[sets.top]
+z = 0.04
+
+[sets.lower_face]
+body = "lower"
+z = 0.02
+
+[sets.upper_face]
+body = "upper"
+z = 0.02
+
+[[bc]]
+set = "bottom"
+dofs = ["x", "y", "z"]
+
+[[bc]]
+set = "top"
+dofs = ["x", "y", "z"]
+
+[[contact]]
+name = "interface"
+contact = "lower_face"
+target = "upper_face"
+interference = true
+
+[analysis]
+type = "contact_modal"
+modes = 4
+interference_m = [1e-6]
+penalty_factor = [1.0]
+)";
+  // The upper block loses its clamp and its tangential contact.
+  text.replace(text.find("[[bc]]\nset = \"top\""), std::string("[[bc]]\nset = \"top\"\ndofs = [\"x\", \"y\", \"z\"]").size(), "");
+  text += "tangential = \"frictionless\"\n";
+  const RunOutcome o = run_case(write(text), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
+  EXPECT_EQ(exit_code(o.record.status), exit_solver_failed);
+  EXPECT_NE(o.record.message.find("load step"), std::string::npos) << o.record.message;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "out" / "frequencies_grid.csv"));
+}
+
+TEST_F(ContactCase, TwoBodiesOfHexBlocksPressedTogetherRunThroughTheCommandLinePipeline) {
+  const RunOutcome o = run_case(write(R"([case]
+name = "two_blocks_contact"
+title = "Two blocks pressed together"
+
+[material]
+E = 2.0e11
+nu = 0.3
+rho = 7800.0
+
+[mesh]
+kind = "hex_blocks"
+element = "hex8"
+
+[[mesh.block]]
+body = "lower"
+corners = [[0, 0, 0], [0.02, 0, 0], [0.02, 0.02, 0], [0, 0.02, 0], [0, 0, 0.02], [0.02, 0, 0.02], [0.02, 0.02, 0.02], [0, 0.02, 0.02]]
+nx = 4
+ny = 4
+nz = 2
+
+[[mesh.block]]
+body = "upper"
+corners = [[0, 0, 0.02], [0.02, 0, 0.02], [0.02, 0.02, 0.02], [0, 0.02, 0.02], [0, 0, 0.04], [0.02, 0, 0.04], [0.02, 0.02, 0.04], [0, 0.02, 0.04]]
+nx = 4
+ny = 4
+nz = 2
+
+[sets.bottom]
+z = 0.0
+
+[sets.top]
+z = 0.04
+
+[sets.lower_face]
+body = "lower"
+z = 0.02
+
+[sets.upper_face]
+body = "upper"
+z = 0.02
+
+[[bc]]
+set = "bottom"
+dofs = ["x", "y", "z"]
+
+[[bc]]
+set = "top"
+dofs = ["x", "y", "z"]
+
+[[contact]]
+name = "interface"
+contact = "lower_face"
+target = "upper_face"
+interference = true
+
+[analysis]
+type = "contact_modal"
+modes = 4
+interference_m = [1e-6]
+penalty_factor = [1.0]
+)"), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  EXPECT_EQ(o.record.status, RunStatus::no_checks) << o.record.message;
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "frequencies_grid.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "contact_state.csv"));
 }
 
 }  // namespace

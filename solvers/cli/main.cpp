@@ -275,7 +275,24 @@ int export_command(const ExportArgs& a) {
   try {
     const bb::CaseSpec spec = bb::parse_case_file(a.case_file);
     const auto* modal = std::get_if<bb::ModalSpec>(&spec.analysis);
-    const int modes = a.modes > 0 ? a.modes : modal ? modal->modes.lowest : bb::ModeSelection{}.lowest;
+    const auto* contact = std::get_if<bb::ContactModalSpec>(&spec.analysis);
+    const int modes = a.modes > 0   ? a.modes
+                      : modal       ? modal->modes.lowest
+                      : contact     ? contact->modes
+                                    : bb::ModeSelection{}.lowest;
+    if (contact) {
+      // The state point of the grid (default: the largest interference at the last FKN).
+      const auto i = static_cast<size_t>(contact->state_interference >= 0 ? contact->state_interference
+                                                                          : static_cast<int>(contact->interferences.size()) - 1);
+      const auto j = static_cast<size_t>(contact->state_penalty >= 0 ? contact->state_penalty
+                                                                     : static_cast<int>(contact->penalty_factors.size()) - 1);
+      const bb::CalculixContact c{contact->interferences[i], contact->penalty_factors[j], contact->tangential_ratio,
+                                  contact->sticking, contact->roughness};
+      bb::write_calculix_frequency_deck(bb::build_model(spec.model), modes, a.out, &c);
+      std::fprintf(stderr, "%s: CalculiX deck with contact at interference %g m, FKN %g, %d modes -> %s\n",
+                   a.case_file.c_str(), c.interference, c.penalty_factor, modes, a.out.c_str());
+      return bb::exit_pass;
+    }
     bb::write_calculix_frequency_deck(bb::build_model(spec.model), modes, a.out);
     std::fprintf(stderr, "%s: CalculiX deck, %d modes -> %s\n", a.case_file.c_str(), modes, a.out.c_str());
     return bb::exit_pass;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "mesh/boundary.hpp"
 
 namespace bb {
 namespace {
@@ -65,9 +66,68 @@ void write_list(std::ofstream& out, const std::vector<long>& values, size_t per_
   out << (continued ? ",\n" : "\n");
 }
 
+// Contact pairs as ccx surfaces, interactions and pairs. ccx face k of a hexahedron is our facet k - 1
+// (mesh/element_topology.cpp lists them in CalculiX's order: S1 = 1-2-3-4, S2 = 5-8-7-6, ...).
+void write_contact(std::ofstream& out, const Model& model, const CalculixContact& c) {
+  if (c.roughness > 0)
+    throw InputError("CalculiX export: the stiffening (rough) contact law has no ccx counterpart; export a case with "
+                     "roughness_m = 0 (ccx's PRESSURE-OVERCLOSURE=LINEAR is the linear penalty law)");
+  const Mesh& mesh = model.mesh;
+  std::vector<long> first_element(mesh.blocks.size() + 1, 1);
+  for (size_t k = 0; k < mesh.blocks.size(); ++k)
+    first_element[k + 1] = first_element[k] + static_cast<long>(mesh.blocks[k].conn.rows());
+  auto sorted = [](std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  int group = 0;
+  for (const ContactPair& pair : model.contact_pairs) {
+    std::map<std::vector<int>, Facet> by_nodes;  // boundary facets of either side, by their sorted nodes
+    for (const std::string& set : {pair.contact_set, pair.target_set})
+      for (Facet& f : boundary_facets_within(mesh, model.node_sets.at(set))) by_nodes.emplace(sorted(f.nodes), f);
+    // Faces of equal size share a penalty kn = FKN E / h: one ccx interaction per size.
+    std::map<long, std::pair<std::vector<const Facet*>, std::vector<const Facet*>>> by_size;
+    double h_of_key = 0.0;
+    std::map<long, double> size_of;
+    for (const ContactFacetPair& f : pair.facets) {
+      const Facet& slave = by_nodes.at(sorted(f.contact));
+      const Facet& master = by_nodes.at(sorted(f.target));
+      // Facet size as the analysis measures it: sqrt of the area of the (planar) contact face.
+      const Eigen::Vector3d a = mesh.coords.row(f.contact[0]), b = mesh.coords.row(f.contact[1]),
+                            cc = mesh.coords.row(f.contact[2]), d = mesh.coords.row(f.contact[3]);
+      const double h = std::sqrt(0.5 * ((cc - a).cross(d - b)).norm());
+      h_of_key = h;
+      const long key = std::lround(h * 1e9);
+      size_of[key] = h_of_key;
+      by_size[key].first.push_back(&slave);
+      by_size[key].second.push_back(&master);
+    }
+    for (const auto& [key, sides] : by_size) {
+      ++group;
+      const double kn = c.penalty_factor * model.section.youngs_modulus / size_of.at(key);
+      for (int side = 0; side < 2; ++side) {
+        out << fmt::format("*SURFACE, NAME={}{}, TYPE=ELEMENT\n", side == 0 ? "SLAVE" : "MASTER", group);
+        for (const Facet* f : side == 0 ? sides.first : sides.second)
+          out << fmt::format("{}, S{}\n", first_element[static_cast<size_t>(f->block)] + f->element, f->local + 1);
+      }
+      out << fmt::format("** pair '{}', faces of size {:.6g} m: kn = FKN E / h = {:.6g} Pa/m\n", pair.name,
+                         size_of.at(key), kn);
+      out << fmt::format("*CONTACT PAIR, INTERACTION=SI{}, TYPE=SURFACE TO SURFACE\nSLAVE{}, MASTER{}\n", group, group,
+                         group);
+      out << fmt::format("*SURFACE INTERACTION, NAME=SI{}\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}, 0.\n",
+                         group, ccx_real(kn));
+      if (c.sticking) out << fmt::format("*FRICTION\n1000., {}\n", ccx_real(c.tangential_ratio * kn));
+      if (pair.interference && c.interference > 0)
+        out << fmt::format("*CLEARANCE, MASTER=MASTER{}, SLAVE=SLAVE{}, VALUE={}\n", group, group,
+                           ccx_real(-c.interference));
+    }
+  }
+}
+
 }  // namespace
 
-void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp) {
+void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp,
+                                   const CalculixContact* contact) {
   const Mesh& mesh = model.mesh;
   if (mesh.dim != 3) throw InputError("CalculiX export: only 3D solid meshes (hex8, hex8i, hex20) are exported");
   if (n_modes < 1) throw InputError(fmt::format("CalculiX export: asked for {} modes; give at least 1", n_modes));
@@ -134,7 +194,13 @@ void write_calculix_frequency_deck(const Model& model, int n_modes, const std::f
   for (size_t k = 0; k < mesh.blocks.size(); ++k)
     out << fmt::format("*SOLID SECTION, ELSET=E{}, MATERIAL=MAT\n", k + 1);
 
-  out << "*STEP\n*FREQUENCY\n"
+  if (contact) {
+    write_contact(out, model, *contact);
+    out << "*STEP\n*STATIC\n*END STEP\n*STEP, PERTURBATION\n";
+  } else {
+    out << "*STEP\n";
+  }
+  out << "*FREQUENCY\n"
       << n_modes << '\n'
       << "** add '*NODE FILE' and 'U' here to write the mode shapes to the .frd file\n"
          "*END STEP\n";

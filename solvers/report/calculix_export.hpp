@@ -15,6 +15,22 @@ namespace bb {
 // (no *NODE FILE), so ccx writes the eigenvalues to the .dat file only.
 // Throws InputError for a 2D mesh, a nonzero prescribed displacement, or n_modes < 1, and
 // std::runtime_error when the file cannot be written.
-void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp);
+//
+// With `contact`, the model's contact pairs become ccx face-to-face penalty contact (*CONTACT PAIR,
+// TYPE=SURFACE TO SURFACE; slave = the contact surface, master = the target), a linear
+// pressure-overclosure of slope kn = FKN E / h per group of equal-sized faces (one interaction per
+// group), sticking friction of slope kt (a friction coefficient of 1e3), and *CLEARANCE = -interference
+// on the interference pairs; a *STATIC step loads the interference and the *FREQUENCY step is a
+// PERTURBATION of it (ccx linearizes its contact there). Throws InputError for the rough law (ccx's
+// linear law is the only common one).
+struct CalculixContact {
+  double interference = 0.0;    // [m]
+  double penalty_factor = 1.0;  // FKN
+  double tangential_ratio = 1.0;
+  bool sticking = true;
+  double roughness = 0.0;
+};
+void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp,
+                                   const CalculixContact* contact = nullptr);
 
 }  // namespace bb

@@ -11,6 +11,7 @@
 #include "assembly/assemble.hpp"
 #include "assembly/load_vector.hpp"
 #include "common/errors.hpp"
+#include "common/progress_clock.hpp"
 #include "contact/static_contact.hpp"
 #include "ffrf/body_assembly.hpp"
 #include "linalg/spd_factor.hpp"
@@ -153,7 +154,7 @@ void add_summary_tables(ContactModalOutcome& o, const ContactModalSpec& spec) {
 
 }  // namespace
 
-ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec& spec) {
+ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec& spec, const HbmProgress& progress) {
   const auto t0 = Clock::now();
   ContactModalOutcome o;
   const std::vector<ContactPoint> points = contact_points(model.mesh, model.contact_pairs);
@@ -182,6 +183,8 @@ ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec
   const size_t state_i = spec.state_interference >= 0 ? static_cast<size_t>(spec.state_interference) : n_i - 1;
   const size_t state_p = spec.state_penalty >= 0 ? static_cast<size_t>(spec.state_penalty) : n_p - 1;
   const int steps = static_cast<int>(n_i * n_p);
+  ProgressClock clock(steps);
+  int finished = 0;
   for (size_t j = 0; j < n_p; ++j) {
     ContactPenalty penalty;
     penalty.normal.resize(n_points);
@@ -227,6 +230,11 @@ ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec
       g.frequencies_hz = frequencies_of(partition(k, dofs).ff, mass, options);
       g.modal_seconds = seconds_since(t2);
       if (i == state_i && j == state_p) o.tables.emplace("contact_state", contact_state_table(model, points, s));
+      clock.finished(++finished);
+      if (progress)
+        progress(fmt::format("interference {:g} m, FKN {:g}: f1 = {:.3f} Hz, {} of the contact points closed  [{}]",
+                             g.interference, g.penalty_factor, g.frequencies_hz[0], std::count(closed.begin(), closed.end(), 1),
+                             clock.status()));
     }
   }
   if (spec.glued_reference) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/contact_modal_spec.hpp"
+#include "analysis/hbm_analysis.hpp"
 #include "contact/surface_contact.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
@@ -32,6 +33,8 @@ struct ContactModalOutcome {
 
 // Throws InputError when the model has no contact pair or the interference is not small against
 // the contact facets, SolverError when a contact solve or an eigensolve fails.
-ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec& spec);
+// `progress` receives one line per grid point with the time left (none when empty).
+ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec& spec,
+                                      const HbmProgress& progress = {});
 
 }  // namespace bb

@@ -13,6 +13,7 @@
 #include "analysis/hbm_nonlinear_modes.hpp"
 #include "analysis/hbm_response.hpp"
 #include "common/errors.hpp"
+#include "common/progress_clock.hpp"
 #include "contact/state_fractions.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
@@ -348,7 +349,12 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   HbmOutcome o;
   o.prepared = prepare_hbm(model, spec);
   const auto t0 = Clock::now();
-  for (double f : spec.force_levels) o.levels.push_back(sweep_hbm_level(o.prepared, spec, f, spec.harmonics, progress));
+  ProgressClock clock(static_cast<int>(spec.force_levels.size()));
+  const HbmProgress timed = with_clock(progress, clock);
+  for (double f : spec.force_levels) {
+    o.levels.push_back(sweep_hbm_level(o.prepared, spec, f, spec.harmonics, timed));
+    clock.finished(static_cast<int>(o.levels.size()));
+  }
   o.sweep_seconds = seconds_since(t0);
   require_solutions(o);
   add_peak_tables(o, spec);

@@ -66,8 +66,8 @@ AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgr
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress&) {
-  ContactModalOutcome o = run_contact_modal(model, spec);
+AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress& progress) {
+  ContactModalOutcome o = run_contact_modal(model, spec, progress);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o)};
 }

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "common/progress_clock.hpp"
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
@@ -346,8 +347,12 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   options.newmark.alpha = spec.alpha;
   const std::vector<double> frequencies =
       fixed_grid(spec.system.sweep.f_min, spec.system.sweep.f_max, spec.system.sweep.step_hz);
-  for (double force : spec.system.force_levels)
-    o.levels.push_back(sweep_level(p, spec, options, tracked, frequencies, force, progress));
+  ProgressClock clock(static_cast<int>(spec.system.force_levels.size()));
+  const HbmProgress timed = with_clock(progress, clock);
+  for (double force : spec.system.force_levels) {
+    o.levels.push_back(sweep_level(p, spec, options, tracked, frequencies, force, timed));
+    clock.finished(static_cast<int>(o.levels.size()));
+  }
   if (spec.history_hz) o.record = record_history(p, spec, options);
   o.seconds = seconds_since(t_start);
   add_sweep_tables(o, spec, frequencies, tracked.pair);

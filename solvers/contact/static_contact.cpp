@@ -15,18 +15,8 @@ namespace {
 double potential(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& external,
                  const std::vector<ContactPoint>& points, const std::vector<char>& closed,
                  const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap, const Eigen::VectorXd& u) {
-  double e = 0.5 * u.dot(k * u) - (external.size() ? external.dot(u) : 0.0);
-  for (size_t i = 0; i < points.size(); ++i) {
-    if (!closed[i]) continue;
-    const auto ki = static_cast<Eigen::Index>(i);
-    const ContactPoint& p = points[i];
-    const Eigen::Vector3d du = relative_displacement(p, u);
-    const double g = initial_gap[ki] + p.normal.dot(du);
-    const Eigen::Vector3d slip = du - p.normal.dot(du) * p.normal;
-    e += p.area * (normal_energy(penalty.normal[ki], penalty.roughness, g) +
-                   0.5 * penalty.tangential[ki] * slip.squaredNorm());
-  }
-  return e;
+  return 0.5 * u.dot(k * u) - (external.size() ? external.dot(u) : 0.0) +
+         contact_energy(points, closed, penalty, initial_gap, u);
 }
 
 StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, const DofMap& dofs,
@@ -70,8 +60,7 @@ StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, c
                                       r.norm() / std::max(force_scale, 1e-300)));
       ContactPenalty tangent = penalty;
       for (Eigen::Index k = 0; k < n_points; ++k) {
-        const ContactPoint& p = points[static_cast<size_t>(k)];
-        const double g = initial_gap[k] + p.normal.dot(relative_displacement(p, s.displacement));
+        const double g = point_motion(points[static_cast<size_t>(k)], initial_gap[k], s.displacement).gap;
         tangent.normal[k] = normal_tangent(penalty.normal[k], penalty.roughness, g);
       }
       const Partitioned k = partition(stiffness + contact_stiffness(points, closed, tangent, n), dofs);
@@ -104,8 +93,7 @@ StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, c
     const double tol = options.gap_tolerance * std::max(gap_scale, s.displacement.cwiseAbs().maxCoeff());
     int changes = 0;
     for (Eigen::Index k = 0; k < n_points; ++k) {
-      const ContactPoint& p = points[static_cast<size_t>(k)];
-      s.gap[k] = initial_gap[k] + p.normal.dot(relative_displacement(p, s.displacement));
+      s.gap[k] = point_motion(points[static_cast<size_t>(k)], initial_gap[k], s.displacement).gap;
       char& c = closed[static_cast<size_t>(k)];
       const char now = c ? s.gap[k] <= tol : s.gap[k] < -tol;
       changes += now != c;
@@ -167,11 +155,10 @@ StaticContactSolution solve_static_contact(const Eigen::SparseMatrix<double>& st
   s.normal_stiffness = Eigen::VectorXd::Zero(n_points);
   for (Eigen::Index k = 0; k < n_points; ++k) {
     if (!s.closed[static_cast<size_t>(k)]) continue;
-    const ContactPoint& p = points[static_cast<size_t>(k)];
     s.pressure[k] = std::max(normal_pressure(penalty.normal[k], penalty.roughness, s.gap[k]), 0.0);
     s.normal_stiffness[k] = normal_tangent(penalty.normal[k], penalty.roughness, s.gap[k]);
-    const Eigen::Vector3d du = relative_displacement(p, s.displacement);
-    s.shear[k] = penalty.tangential[k] * (du - p.normal.dot(du) * p.normal).norm();
+    s.shear[k] = penalty.tangential[k] *
+                 point_motion(points[static_cast<size_t>(k)], initial_gap[k], s.displacement).slip.norm();
   }
   return s;
 }

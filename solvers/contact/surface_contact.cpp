@@ -132,6 +132,25 @@ double normal_energy(double kn, double roughness, double gap) {
   return kn * roughness * (roughness * std::expm1(x) + gap);
 }
 
+PointMotion point_motion(const ContactPoint& p, double initial_gap, const Eigen::VectorXd& u) {
+  const Eigen::Vector3d du = relative_displacement(p, u);
+  const double normal = p.normal.dot(du);
+  return {initial_gap + normal, du - normal * p.normal};
+}
+
+double contact_energy(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
+                      const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap, const Eigen::VectorXd& u) {
+  double e = 0.0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    if (!closed[k]) continue;
+    const auto ki = static_cast<Eigen::Index>(k);
+    const PointMotion m = point_motion(points[k], initial_gap[ki], u);
+    e += points[k].area * (normal_energy(penalty.normal[ki], penalty.roughness, m.gap) +
+                           0.5 * penalty.tangential[ki] * m.slip.squaredNorm());
+  }
+  return e;
+}
+
 Eigen::VectorXd contact_force(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
                               const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap,
                               const Eigen::VectorXd& u) {
@@ -140,12 +159,10 @@ Eigen::VectorXd contact_force(const std::vector<ContactPoint>& points, const std
     if (!closed[k]) continue;
     const auto ki = static_cast<Eigen::Index>(k);
     const ContactPoint& p = points[k];
-    const Eigen::Vector3d du = relative_displacement(p, u);
-    const double g = initial_gap[ki] + p.normal.dot(du);
-    const Eigen::Vector3d slip = du - p.normal.dot(du) * p.normal;
+    const PointMotion m = point_motion(p, initial_gap[ki], u);
     // Traction on the target: +p n (pushed away along n) and -kt slip.
-    const Eigen::Vector3d t = p.area * (normal_pressure(penalty.normal[ki], penalty.roughness, g) * p.normal -
-                                        penalty.tangential[ki] * slip);
+    const Eigen::Vector3d t = p.area * (normal_pressure(penalty.normal[ki], penalty.roughness, m.gap) * p.normal -
+                                        penalty.tangential[ki] * m.slip);
     for_each_dof(p, [&](int dof, int d, double n) { f[dof] += n * t[d]; });
   }
   return f;

@@ -33,6 +33,13 @@ std::vector<ContactPoint> contact_points(const Mesh& mesh, const std::vector<Con
 // u_target - u_contact at the point, from the displacement of every DOF (node * 3 + direction).
 Eigen::Vector3d relative_displacement(const ContactPoint& p, const Eigen::VectorXd& u);
 
+// The gap g = g0 + n . du and the tangential slip (I - n n^T) du of a point at u.
+struct PointMotion {
+  double gap = 0.0;
+  Eigen::Vector3d slip = Eigen::Vector3d::Zero();
+};
+PointMotion point_motion(const ContactPoint& p, double initial_gap, const Eigen::VectorXd& u);
+
 // Penalty stiffnesses of each point [N/m^3 = Pa/m], and the normal law. With roughness sigma = 0 the
 // law is linear, p = -kn g. With sigma > 0 it stiffens with the pressure as a rough interface does,
 // dp/d(-g) = kn + p / sigma, i.e. p = kn sigma (exp(-g / sigma) - 1): the penalty kn at first touch,
@@ -57,6 +64,10 @@ Eigen::SparseMatrix<double> contact_stiffness(const std::vector<ContactPoint>& p
 // The force the initial gaps of the closed points exert: -sum area kn g0 G^T n (every DOF).
 Eigen::VectorXd initial_gap_force(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
                                   const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap, int n_dofs);
+
+// The energy stored in the closed points at u: the normal law's and 1/2 kt |slip|^2, over the areas.
+double contact_energy(const std::vector<ContactPoint>& points, const std::vector<char>& closed,
+                      const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap, const Eigen::VectorXd& u);
 
 // The force the closed points exert on the bodies at the displacement u, sum area G^T (p n - kt slip)
 // (every DOF), under the normal law: the contact's share of the internal force, with a minus sign.

@@ -286,8 +286,8 @@ TEST(ContactPairs, GluedNodesAndNonConformingFacesAreRefused) {
 // exit 3 and the load step, and writes no result table.
 class ContactCase : public test::TempFolderTest {};
 
-TEST_F(ContactCase, AFrictionlessFreeBodyFailsTheRunAsASolverFailure) {
-  std::string text = R"([case]
+// Two hex8 blocks (bodies "lower" and "upper") clamped at their far ends, pressed by 1e-6 m.
+const char* const kTwoBlocksCase = R"([case]
 name = "two_blocks_contact"
 title = "Two blocks pressed together"
 
@@ -348,6 +348,9 @@ modes = 4
 interference_m = [1e-6]
 penalty_factor = [1.0]
 )";
+
+TEST_F(ContactCase, AFrictionlessFreeBodyFailsTheRunAsASolverFailure) {
+  std::string text = kTwoBlocksCase;
   // The upper block loses its clamp and its tangential contact.
   text.replace(text.find("[[bc]]\nset = \"top\""), std::string("[[bc]]\nset = \"top\"\ndofs = [\"x\", \"y\", \"z\"]").size(), "");
   text += "tangential = \"frictionless\"\n";
@@ -359,67 +362,7 @@ penalty_factor = [1.0]
 }
 
 TEST_F(ContactCase, TwoBodiesOfHexBlocksPressedTogetherRunThroughTheCommandLinePipeline) {
-  const RunOutcome o = run_case(write(R"([case]
-name = "two_blocks_contact"
-title = "Two blocks pressed together"
-
-[material]
-E = 2.0e11
-nu = 0.3
-rho = 7800.0
-
-[mesh]
-kind = "hex_blocks"
-element = "hex8"
-
-[[mesh.block]]
-body = "lower"
-corners = [[0, 0, 0], [0.02, 0, 0], [0.02, 0.02, 0], [0, 0.02, 0], [0, 0, 0.02], [0.02, 0, 0.02], [0.02, 0.02, 0.02], [0, 0.02, 0.02]]
-nx = 4
-ny = 4
-nz = 2
-
-[[mesh.block]]
-body = "upper"
-corners = [[0, 0, 0.02], [0.02, 0, 0.02], [0.02, 0.02, 0.02], [0, 0.02, 0.02], [0, 0, 0.04], [0.02, 0, 0.04], [0.02, 0.02, 0.04], [0, 0.02, 0.04]]
-nx = 4
-ny = 4
-nz = 2
-
-[sets.bottom]
-z = 0.0
-
-[sets.top]
-z = 0.04
-
-[sets.lower_face]
-body = "lower"
-z = 0.02
-
-[sets.upper_face]
-body = "upper"
-z = 0.02
-
-[[bc]]
-set = "bottom"
-dofs = ["x", "y", "z"]
-
-[[bc]]
-set = "top"
-dofs = ["x", "y", "z"]
-
-[[contact]]
-name = "interface"
-contact = "lower_face"
-target = "upper_face"
-interference = true
-
-[analysis]
-type = "contact_modal"
-modes = 4
-interference_m = [1e-6]
-penalty_factor = [1.0]
-)"), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  const RunOutcome o = run_case(write(kTwoBlocksCase), {.out_dir = dir_ / "out", .study = false, .plots = false});
   EXPECT_EQ(o.record.status, RunStatus::no_checks) << o.record.message;
   EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "frequencies_grid.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "contact_state.csv"));

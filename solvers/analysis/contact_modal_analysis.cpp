@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <limits>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -190,7 +189,8 @@ ContactModalOutcome run_contact_modal(const Model& model, const ContactModalSpec
     penalty.normal.resize(n_points);
     penalty.tangential.resize(n_points);
     for (Index k = 0; k < n_points; ++k) {
-      penalty.normal[k] = spec.penalty_factors[j] * model.section.youngs_modulus / points[static_cast<size_t>(k)].facet_size;
+      penalty.normal[k] = penalty_from_factor(spec.penalty_factors[j], model.section.youngs_modulus,
+                                              points[static_cast<size_t>(k)].facet_size);
       penalty.tangential[k] = spec.sticking ? spec.tangential_ratio * penalty.normal[k] : 0.0;
     }
     penalty.roughness = spec.roughness;

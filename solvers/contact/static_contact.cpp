@@ -11,11 +11,12 @@
 namespace bb {
 namespace {
 
-// The total potential energy at u for a fixed status: elastic, external and contact energies.
-double potential(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& external,
-                 const std::vector<ContactPoint>& points, const std::vector<char>& closed,
-                 const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap, const Eigen::VectorXd& u) {
-  return 0.5 * u.dot(k * u) - (external.size() ? external.dot(u) : 0.0) +
+// The total potential energy at u for a fixed status (elastic, external and contact energies), given
+// ku = K u.
+double potential(const Eigen::VectorXd& ku, const Eigen::VectorXd& external, const std::vector<ContactPoint>& points,
+                 const std::vector<char>& closed, const ContactPenalty& penalty, const Eigen::VectorXd& initial_gap,
+                 const Eigen::VectorXd& u) {
+  return 0.5 * u.dot(ku) - (external.size() ? external.dot(u) : 0.0) +
          contact_energy(points, closed, penalty, initial_gap, u);
 }
 
@@ -42,15 +43,15 @@ StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, c
   for (s.iterations = 1; s.iterations <= options.max_iterations; ++s.iterations) {
     double force_scale = 0.0;
     for (int newton = 0;; ++newton) {
-      Eigen::VectorXd r_all = stiffness * s.displacement -
-                              contact_force(points, closed, penalty, initial_gap, s.displacement);
+      const Eigen::VectorXd ku = stiffness * s.displacement;
+      Eigen::VectorXd r_all = ku - contact_force(points, closed, penalty, initial_gap, s.displacement);
       if (external.size() != 0) r_all -= external;
       const Eigen::VectorXd r = free_part(r_all);
       if (newton == 0) {
         // The linear law's force of the initial gaps: the exponential one at u = 0 would be astronomic.
         force_scale = free_part(initial_gap_force(points, closed, penalty, initial_gap, n)).norm();
         if (external.size() != 0) force_scale = std::max(force_scale, free_part(external).norm());
-        force_scale = std::max(force_scale, free_part(stiffness * s.displacement).norm());
+        force_scale = std::max(force_scale, free_part(ku).norm());
       }
       if (r.norm() <= options.residual_tolerance * std::max(force_scale, 1e-300)) break;
       if (newton >= options.max_newton_iterations)
@@ -72,12 +73,12 @@ StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, c
       const Eigen::VectorXd du = -factor.solve(r);
       Eigen::VectorXd du_all = Eigen::VectorXd::Zero(n);
       for (int i = 0; i < dofs.n_free; ++i) du_all[dofs.free_dofs[static_cast<size_t>(i)]] = du[i];
-      const double e0 = potential(stiffness, external, points, closed, penalty, initial_gap, s.displacement);
+      const double e0 = potential(ku, external, points, closed, penalty, initial_gap, s.displacement);
       const double slope = r.dot(du);
       double alpha = 1.0;
       for (int halving = 0;; ++halving) {
         const Eigen::VectorXd trial = s.displacement + alpha * du_all;
-        const double e = potential(stiffness, external, points, closed, penalty, initial_gap, trial);
+        const double e = potential(stiffness * trial, external, points, closed, penalty, initial_gap, trial);
         if (std::isfinite(e) && e <= e0 + 1e-4 * alpha * slope + 1e-14 * std::abs(e0)) {
           s.displacement = trial;
           break;

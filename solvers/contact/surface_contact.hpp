@@ -51,6 +51,12 @@ struct ContactPenalty {
   double roughness = 0.0;      // sigma [m]
 };
 
+// The penalty of a point for the normal penalty factor FKN: kn = FKN E / h, h the contact face's size
+// (Ansys scales its default contact stiffness with the underlying modulus and element size).
+inline double penalty_from_factor(double fkn, double youngs_modulus, double facet_size) {
+  return fkn * youngs_modulus / facet_size;
+}
+
 // The normal law at a gap g of a point with penalty kn: pressure [Pa], tangent stiffness
 // dp/d(-g) [Pa/m] and the stored energy per area [J/m^2] (zero at g = 0, convex in g).
 double normal_pressure(double kn, double roughness, double gap);

@@ -174,13 +174,12 @@ Model build_model(const ModelSpec& spec) {
       std::vector<std::vector<Mesh>> bodies;
       for (size_t i = 0; i < spec.mesh.blocks.size(); ++i) {
         const std::string name = i < spec.mesh.block_bodies.size() ? spec.mesh.block_bodies[i] : "main";
-        const auto it = std::find(names.begin(), names.end(), name);
-        if (it == names.end()) {
+        const auto b = static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+        if (b == names.size()) {
           names.push_back(name);
           bodies.emplace_back();
         }
-        bodies[static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin())].push_back(
-            generate_hex_block(spec.mesh.blocks[i]));
+        bodies[b].push_back(generate_hex_block(spec.mesh.blocks[i]));
       }
       std::vector<Mesh> merged;
       for (std::vector<Mesh>& parts : bodies)

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "contact/surface_contact.hpp"
 #include "mesh/boundary.hpp"
 
 namespace bb {
@@ -80,6 +81,9 @@ void write_contact(std::ofstream& out, const Model& model, const CalculixContact
     std::sort(v.begin(), v.end());
     return v;
   };
+  // Each face's size as the analysis measures it (contact/surface_contact), so kn is the analysis's.
+  std::map<const ContactFacetPair*, double> facet_size;
+  for (const ContactPoint& p : contact_points(mesh, model.contact_pairs)) facet_size[p.facet] = p.facet_size;
   int group = 0;
   for (const ContactPair& pair : model.contact_pairs) {
     std::map<std::vector<int>, Facet> by_nodes;  // boundary facets of either side, by their sorted nodes
@@ -87,24 +91,19 @@ void write_contact(std::ofstream& out, const Model& model, const CalculixContact
       for (Facet& f : boundary_facets_within(mesh, model.node_sets.at(set))) by_nodes.emplace(sorted(f.nodes), f);
     // Faces of equal size share a penalty kn = FKN E / h: one ccx interaction per size.
     std::map<long, std::pair<std::vector<const Facet*>, std::vector<const Facet*>>> by_size;
-    double h_of_key = 0.0;
     std::map<long, double> size_of;
     for (const ContactFacetPair& f : pair.facets) {
       const Facet& slave = by_nodes.at(sorted(f.contact));
       const Facet& master = by_nodes.at(sorted(f.target));
-      // Facet size as the analysis measures it: sqrt of the area of the (planar) contact face.
-      const Eigen::Vector3d a = mesh.coords.row(f.contact[0]), b = mesh.coords.row(f.contact[1]),
-                            cc = mesh.coords.row(f.contact[2]), d = mesh.coords.row(f.contact[3]);
-      const double h = std::sqrt(0.5 * ((cc - a).cross(d - b)).norm());
-      h_of_key = h;
+      const double h = facet_size.at(&f);
       const long key = std::lround(h * 1e9);
-      size_of[key] = h_of_key;
+      size_of[key] = h;
       by_size[key].first.push_back(&slave);
       by_size[key].second.push_back(&master);
     }
     for (const auto& [key, sides] : by_size) {
       ++group;
-      const double kn = c.penalty_factor * model.section.youngs_modulus / size_of.at(key);
+      const double kn = penalty_from_factor(c.penalty_factor, model.section.youngs_modulus, size_of.at(key));
       for (int side = 0; side < 2; ++side) {
         out << fmt::format("*SURFACE, NAME={}{}, TYPE=ELEMENT\n", side == 0 ? "SLAVE" : "MASTER", group);
         for (const Facet* f : side == 0 ? sides.first : sides.second)

@@ -23,6 +23,7 @@
 #include "pipeline/run_case.hpp"
 #include "report/calculix_export.hpp"
 #include "report/calibration_report.hpp"
+#include "report/html_page.hpp"
 #include "report/output_folder.hpp"
 #include "report/writers.hpp"
 
@@ -170,6 +171,7 @@ int validate_command(const ValidateArgs& a) {
     rc = std::max(rc, code);
   }
   bb::write_index_md(index, fs::path(a.out) / "index.md");
+  bb::write_html_twin(fs::path(a.out) / "index.md");
   // The verdict a CI log is read for: every status that occurred, in the enum's order.
   std::map<bb::RunStatus, int> by_status;
   for (const bb::IndexEntry& e : index) ++by_status[e.status];

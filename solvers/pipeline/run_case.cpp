@@ -23,6 +23,7 @@
 #include "report/analysis_plots.hpp"
 #include "report/describe_analysis.hpp"
 #include "report/fidelity_plots.hpp"
+#include "report/html_page.hpp"
 #include "report/output_folder.hpp"
 #include "report/plots.hpp"
 #include "report/writers.hpp"
@@ -225,6 +226,7 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
   try {
     if (!stage) stage.emplace(outcome.out_dir);
     write_report_md(run, stage->path() / "report.md");
+    write_html_twin(stage->path() / "report.md");
     write_summary_json(run, stage->path() / "summary.json");
     stage->commit();
     outcome.written = true;

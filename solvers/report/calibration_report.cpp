@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "report/gnuplot.hpp"
+#include "report/html_page.hpp"
 #include "report/plots.hpp"
 
 namespace bb {
@@ -265,7 +266,9 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   md << fmt::format(
       "\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`, `fitted_points.csv`{}.\n",
       o.termination, o.converged ? ", `calibrated.toml`" : " (no `calibrated.toml`: the fit did not converge)");
+  md.close();
   if (!md) throw std::runtime_error("failed writing the calibration report");
+  write_html_twin(out_dir / "report.md");
 }
 
 }  // namespace bb

@@ -1,0 +1,25 @@
+// Reports readable without a Markdown viewer: report.md and index.md rendered as HTML pages that
+// carry their plots inside (one file to mail or archive) and link to each other's HTML.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace bb {
+
+// RFC 4648 base64 (with padding), the encoding of the pages' data: URIs.
+std::string base64(std::string_view bytes);
+
+// GitHub-flavoured Markdown (tables included) to an HTML fragment. Raw HTML in the Markdown is not
+// passed through (cmark-gfm's safe mode), so a label in a case file cannot inject markup.
+std::string markdown_to_html(const std::string& markdown);
+
+// The complete page for `markdown`, whose relative links are relative to `folder`: every local SVG
+// image that exists there becomes a data: URI (a missing one keeps its path, so a browser shows it
+// missing), and links to `report.md` / `index.md` point at their HTML twins.
+std::string html_page(const std::string& markdown, const std::filesystem::path& folder);
+
+// Writes `<markdown_file minus .md>.html` beside `markdown_file`, atomically.
+void write_html_twin(const std::filesystem::path& markdown_file);
+
+}  // namespace bb

@@ -1,0 +1,68 @@
+// The HTML pages of the reports: tables rendered, plots carried inside, links to the HTML twins,
+// user markup never passed through.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "report/html_page.hpp"
+#include "temp_folder.hpp"
+
+namespace bb {
+namespace {
+
+using test::TempFolderTest;
+
+TEST(Base64, MatchesTheTestVectorsOfRfc4648) {
+  EXPECT_EQ(base64(""), "");
+  EXPECT_EQ(base64("f"), "Zg==");
+  EXPECT_EQ(base64("fo"), "Zm8=");
+  EXPECT_EQ(base64("foo"), "Zm9v");
+  EXPECT_EQ(base64("foob"), "Zm9vYg==");
+  EXPECT_EQ(base64("fooba"), "Zm9vYmE=");
+  EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
+  EXPECT_EQ(base64(std::string("\xff\x00\x80", 3)), "/wCA");
+}
+
+TEST(MarkdownToHtml, RendersPipeTablesAsHtmlTables) {
+  const std::string html = markdown_to_html("| a | b |\n|---|---|\n| 1 | 2 |\n");
+  EXPECT_NE(html.find("<table>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>2</td>"), std::string::npos) << html;
+}
+
+TEST(MarkdownToHtml, DoesNotPassRawMarkupThrough) {
+  const std::string html = markdown_to_html("A label <script>alert(1)</script> and <b>bold</b>\n");
+  EXPECT_EQ(html.find("<script>"), std::string::npos) << html;
+  EXPECT_EQ(html.find("<b>"), std::string::npos) << html;
+}
+
+class HtmlPage : public TempFolderTest {};
+
+TEST_F(HtmlPage, InlinesLocalPlotsAndKeepsMissingOnesVisible) {
+  std::filesystem::create_directories(dir_ / "plots");
+  const std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10\" height=\"10\"/>";
+  write(svg, "plots/frf.svg");
+  const std::string page = html_page("# Case\n\n![FRF](plots/frf.svg)\n\n![gone](plots/gone.svg)\n", dir_);
+  EXPECT_NE(page.find("<title>Case</title>"), std::string::npos);
+  EXPECT_NE(page.find("src=\"data:image/svg+xml;base64," + base64(svg) + "\""), std::string::npos) << page;
+  EXPECT_NE(page.find("src=\"plots/gone.svg\""), std::string::npos) << page;
+}
+
+TEST_F(HtmlPage, LinksToReportsPointAtTheirHtmlPages) {
+  const std::string page =
+      html_page("[a](table02/report.md) [csv](frf_5.csv) [web](https://example.org/report.md)\n", dir_);
+  EXPECT_NE(page.find("href=\"table02/report.html\""), std::string::npos) << page;
+  EXPECT_NE(page.find("href=\"frf_5.csv\""), std::string::npos) << page;
+  EXPECT_NE(page.find("href=\"https://example.org/report.md\""), std::string::npos) << page;
+}
+
+TEST_F(HtmlPage, TwinIsWrittenBesideTheMarkdown) {
+  const auto md = write("# Index\n\n| case | status |\n|---|---|\n| x | pass |\n", "index.md");
+  write_html_twin(md);
+  std::ifstream in(dir_ / "index.html");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_TRUE(text.starts_with("<!DOCTYPE html>"));
+  EXPECT_NE(text.find("<td>pass</td>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace bb

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "frf/receptance.hpp"
+#include "reduction/cached_craig_bampton.hpp"
 #include "reduction/reduced_model_io.hpp"
 
 namespace bb {
@@ -320,7 +321,7 @@ ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, c
   CraigBamptonOptions options;
   options.n_modes = rom.modes;
   options.ordering = ordering_for_dimension(model.mesh.dim);
-  return craig_bampton(system.stiffness, system.mass, masters, names, options, timing);
+  return cached_craig_bampton(system.stiffness, system.mass, masters, names, options, timing);
 }
 
 Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& m) {

@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "analysis/run_analysis.hpp"
+#include "cache/model_cache.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
@@ -304,6 +305,26 @@ int export_command(const ExportArgs& a) {
   }
 }
 
+// The model cache (cache/model_cache.hpp) for the subcommands that compute.
+struct CacheArgs {
+  std::string dir;
+  bool off = false;
+};
+
+void add_cache_options(CLI::App* command, CacheArgs& args) {
+  command->add_option("--cache-dir", args.dir,
+                      "Model cache folder (default $BLADEBENCH_CACHE_DIR, else $XDG_CACHE_HOME/bladebench, else "
+                      "~/.cache/bladebench)");
+  command->add_flag("--no-cache", args.off, "Build every reduced model here; read and write no cache");
+}
+
+void configure_cache(const CacheArgs& args) {
+  if (args.off) return bb::configure_model_cache(std::nullopt);
+  const std::optional<fs::path> folder = args.dir.empty() ? bb::default_model_cache_folder() : fs::path(args.dir);
+  if (!folder) return bb::configure_model_cache(std::nullopt);
+  bb::configure_model_cache(bb::ModelCacheSettings{*folder});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -321,6 +342,8 @@ int main(int argc, char** argv) {
   run->add_flag("--study", run_args.study, "Also run the case's [study] (mesh refinement, accuracy vs cost)");
   run->add_flag("--no-plots", run_args.no_plots, "Skip gnuplot figures");
   add_fidelity_option(run, run_args.fidelity);
+  CacheArgs cache_args;
+  add_cache_options(run, cache_args);
 
   ValidateArgs validate_args;
   CLI::App* validate = app.add_subcommand("validate", "Run every case under a folder and write reports/index.md");
@@ -330,6 +353,7 @@ int main(int argc, char** argv) {
   validate->add_flag("--study", validate_args.study, "Also run every case's [study]");
   validate->add_flag("--no-plots", validate_args.no_plots, "Skip gnuplot figures");
   add_fidelity_option(validate, validate_args.fidelity);
+  add_cache_options(validate, cache_args);
 
   CalibrateArgs calibrate_args;
   CLI::App* calibrate = app.add_subcommand(
@@ -340,6 +364,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   calibrate->add_option("--out", calibrate_args.out, "Output folder (default reports/<case-name>-calibration)");
   calibrate->add_flag("--no-plots", calibrate_args.no_plots, "Skip gnuplot figures");
+  add_cache_options(calibrate, cache_args);
 
   SynthesizeArgs synth;
   CLI::App* synthesize = app.add_subcommand(
@@ -363,6 +388,7 @@ int main(int argc, char** argv) {
   synthesize->add_option("--seed", synth.options.seed, "Random seed");
   synthesize->add_option("--every", synth.options.every, "Keep every n-th row")->check(CLI::PositiveNumber);
   synthesize->add_option("--out", synth.out, "CSV file to write")->required();
+  add_cache_options(synthesize, cache_args);
 
   ExportArgs export_args;
   CLI::App* export_ccx = app.add_subcommand(
@@ -380,6 +406,7 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : bb::exit_bad_input;
   }
+  configure_cache(cache_args);
   if (*calibrate) return calibrate_command(calibrate_args);
   if (*synthesize) {
     synth.command = "bladebench";

@@ -7,10 +7,26 @@
 #include <cmath>
 #include <numbers>
 
+#include "cache/model_cache.hpp"
+
 namespace bb {
 namespace {
 
 std::string g(double v) { return fmt::format("{:.6g}", v); }
+
+// Whether a Craig-Bampton reduction was built here or came from the model cache.
+void describe_cache(const std::string& rom, const CraigBamptonTiming& t, bool reduced, RunRecord& run) {
+  if (!reduced) return;
+  std::string use;
+  if (t.loaded_from_cache)
+    use = fmt::format("loaded in {:.2f} s (built by an earlier run in {:.2f} + {:.2f} + {:.2f} s)", t.cache_seconds,
+                      t.constraint_modes_seconds, t.fixed_interface_seconds, t.projection_seconds);
+  else if (model_cache_settings() && t.cache_note.empty())
+    use = fmt::format("built here and stored in {:.2f} s", t.cache_seconds);
+  else
+    use = t.cache_note.empty() ? "off (built here)" : t.cache_note;
+  run.facts.emplace_back(fmt::format("model cache ({})", rom), use);
+}
 
 void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
   std::string forces;
@@ -54,6 +70,7 @@ void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
         fmt::format("reduced model '{}': constraint modes / fixed-interface modes / projection / sweep [s]", r.name),
         fmt::format("{:.2f} / {:.2f} / {:.3f} / {:.4f}", r.timing.constraint_modes_seconds,
                     r.timing.fixed_interface_seconds, r.timing.projection_seconds, r.sweep_seconds));
+    describe_cache(fmt::format("reduced model '{}'", r.name), r.timing, rs.file.empty() && !rs.matrices, run);
   }
 }
 
@@ -151,6 +168,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   }
   run.facts.emplace_back("setup (reduction + matrices) / all sweeps [s]",
                          fmt::format("{:.2f} / {:.3f}", p.setup_seconds, hbm.sweep_seconds));
+  describe_cache("Craig-Bampton reduction", p.timing, spec.model.file.empty() && !spec.model.matrices, run);
   int reached = 0, points = 0;
   for (const HbmLevel& l : hbm.levels) {
     reached += l.path.converged ? 1 : 0;
@@ -220,6 +238,7 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
                     g(p.model.contacts[c].law.kn), g(p.model.contacts[c].law.kt), g(p.model.contacts[c].law.mu));
   run.facts.emplace_back("contacts", contacts.empty() ? "none (linear model)" : contacts);
   run.facts.emplace_back("model DOFs", std::to_string(p.model.mass.rows()));
+  describe_cache("Craig-Bampton reduction", p.timing, spec.system.model.file.empty() && !spec.system.model.matrices, run);
   long steps = 0, not_steady = 0;
   double seconds = 0;
   for (const TimeLevel& l : time.levels) {

@@ -1,0 +1,70 @@
+// The model cache: derived models that cost tens of seconds to compute (Craig-Bampton reductions of
+// the two-blade mesh) stored on disk under a content key, so the cases that share one compute it
+// once. Off unless the program turns it on (the CLI does, `--no-cache` to bypass; cases/README.md).
+//
+// An entry is one file `<key name>.bbcache`: a header line with the payload's size and checksum,
+// then the payload. An entry whose size or checksum disagrees, or that does not decode, is
+// reported, removed and rebuilt. A lock file per entry makes a second process that wants the same
+// entry wait for the first to store it instead of computing it too.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cache/content_key.hpp"
+
+namespace bb {
+
+struct ModelCacheSettings {
+  std::filesystem::path folder;
+  std::uintmax_t max_bytes = std::uintmax_t{4} << 30;  // least recently used entries go beyond this
+};
+
+// nullopt turns the cache off (the default of a program that never calls this).
+void configure_model_cache(std::optional<ModelCacheSettings> settings);
+const std::optional<ModelCacheSettings>& model_cache_settings();
+
+// The folder the CLI uses unless told otherwise: $BLADEBENCH_CACHE_DIR, else
+// $XDG_CACHE_HOME/bladebench, else $HOME/.cache/bladebench; nullopt when none is set.
+std::optional<std::filesystem::path> default_model_cache_folder();
+
+// What a lookup did, for the report.
+struct CacheUse {
+  enum class Outcome { off, stored, loaded };
+  Outcome outcome = Outcome::off;
+  std::string entry;      // file name of the entry
+  double seconds = 0.0;   // load or store time
+  std::string note;       // e.g. why an entry was rebuilt or could not be stored
+};
+
+// One entry, locked for as long as the object lives (when the cache is on).
+class CacheEntry {
+ public:
+  explicit CacheEntry(const ContentKey& key);
+  ~CacheEntry();
+  CacheEntry(const CacheEntry&) = delete;
+  CacheEntry& operator=(const CacheEntry&) = delete;
+
+  bool enabled() const { return enabled_; }
+  // The stored payload when the entry exists and is sound; otherwise nullopt, and a damaged entry
+  // is removed with the reason in note().
+  std::optional<std::vector<std::uint8_t>> load();
+  // Writes the entry (temporary file, then rename) and prunes the folder to its size bound. A
+  // failure to write leaves the cache as it was and says why in note(); it never fails the run.
+  void store(const std::vector<std::uint8_t>& payload);
+  // Call when the payload did not decode: the entry is removed.
+  void discard(const std::string& reason);
+
+  const std::filesystem::path& file() const { return file_; }
+  const std::string& note() const { return note_; }
+
+ private:
+  bool enabled_ = false;
+  std::filesystem::path file_;
+  int lock_fd_ = -1;
+  std::string note_;
+};
+
+}  // namespace bb

@@ -1,0 +1,151 @@
+// The model cache (cache/model_cache, reduction/cached_craig_bampton): keys change with any input,
+// a stored reduction comes back bit for bit, a damaged entry is detected and rebuilt, the folder
+// stays within its size bound, and with the cache off nothing is written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "cache/content_key.hpp"
+#include "cache/model_cache.hpp"
+#include "reduction/cached_craig_bampton.hpp"
+#include "temp_folder.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fixed-free chain of n unit masses and springs of stiffness k.
+Eigen::SparseMatrix<double> chain_stiffness(int n, double k = 1e4) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, i + 1 < n ? 2 * k : k);
+    if (i + 1 < n) {
+      t.emplace_back(i, i + 1, -k);
+      t.emplace_back(i + 1, i, -k);
+    }
+  }
+  Eigen::SparseMatrix<double> m(n, n);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+Eigen::SparseMatrix<double> unit_mass(int n) {
+  Eigen::SparseMatrix<double> m(n, n);
+  m.setIdentity();
+  return m;
+}
+
+std::string key_name(const Eigen::SparseMatrix<double>& k, std::string_view text) {
+  return ContentKey("test").add(k).add(text).name();
+}
+
+TEST(ContentKey, ChangesWithEveryInputAndOnlyWithThem) {
+  const auto k = chain_stiffness(20);
+  EXPECT_EQ(key_name(k, "a"), key_name(k, "a"));
+  EXPECT_NE(key_name(k, "a"), key_name(k, "b"));
+  auto changed = k;
+  changed.coeffRef(7, 7) *= 1.0 + 1e-15;
+  EXPECT_NE(key_name(k, "a"), key_name(changed, "a"));
+  EXPECT_NE(key_name(k, "a"), key_name(chain_stiffness(21), "a"));
+  // Texts are length-prefixed, so moving a boundary changes the key.
+  EXPECT_NE(ContentKey("t").add("ab").add("c").name(), ContentKey("t").add("a").add("bc").name());
+  EXPECT_TRUE(key_name(k, "a").starts_with("test-"));
+  EXPECT_FALSE(program_fingerprint().empty());
+}
+
+class ModelCache : public test::TempFolderTest {
+ protected:
+  void SetUp() override {
+    TempFolderTest::SetUp();
+    configure_model_cache(ModelCacheSettings{dir_ / "cache"});
+  }
+  void TearDown() override {
+    configure_model_cache(std::nullopt);
+    TempFolderTest::TearDown();
+  }
+  ReducedModel reduce(CraigBamptonTiming& t) const {
+    return cached_craig_bampton(k_, m_, {n_ - 1}, {ReducedDof{"tip", 0, 0}}, options_, &t);
+  }
+  std::vector<fs::path> entries() const {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(dir_ / "cache"))
+      if (e.path().extension() == ".bbcache") out.push_back(e.path());
+    return out;
+  }
+  int n_ = 30;
+  Eigen::SparseMatrix<double> k_ = chain_stiffness(n_), m_ = unit_mass(n_);
+  CraigBamptonOptions options_{.n_modes = 4};
+};
+
+TEST_F(ModelCache, SecondReductionIsLoadedBitForBit) {
+  CraigBamptonTiming first, second;
+  const ReducedModel a = reduce(first);
+  EXPECT_FALSE(first.loaded_from_cache);
+  EXPECT_TRUE(first.cache_note.empty()) << first.cache_note;
+  ASSERT_EQ(entries().size(), 1u);
+  const ReducedModel b = reduce(second);
+  EXPECT_TRUE(second.loaded_from_cache);
+  EXPECT_EQ(second.fixed_interface_seconds, first.fixed_interface_seconds);  // the build's own times
+  EXPECT_EQ(a.stiffness, b.stiffness);
+  EXPECT_EQ(a.mass, b.mass);
+  EXPECT_EQ(a.recovery, b.recovery);
+  EXPECT_EQ(a.fixed_interface_frequencies_hz, b.fixed_interface_frequencies_hz);
+  EXPECT_EQ(a.dofs, b.dofs);
+}
+
+TEST_F(ModelCache, OtherOptionsMakeAnotherEntry) {
+  CraigBamptonTiming t;
+  reduce(t);
+  options_.n_modes = 5;
+  reduce(t);
+  EXPECT_FALSE(t.loaded_from_cache);
+  EXPECT_EQ(entries().size(), 2u);
+}
+
+TEST_F(ModelCache, DamagedEntryIsDetectedAndRebuilt) {
+  CraigBamptonTiming t;
+  const ReducedModel a = reduce(t);
+  const fs::path entry = entries().at(0);
+  {
+    std::fstream f(entry, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(fs::file_size(entry) / 2));
+    f.put('\x5a');
+  }
+  const ReducedModel b = reduce(t);
+  EXPECT_FALSE(t.loaded_from_cache);
+  EXPECT_NE(t.cache_note.find("damaged"), std::string::npos) << t.cache_note;
+  EXPECT_EQ(a.stiffness, b.stiffness);
+  reduce(t);  // the rebuilt entry is sound
+  EXPECT_TRUE(t.loaded_from_cache);
+}
+
+TEST_F(ModelCache, TruncatedEntryIsDetectedAndRebuilt) {
+  CraigBamptonTiming t;
+  reduce(t);
+  const fs::path entry = entries().at(0);
+  fs::resize_file(entry, fs::file_size(entry) - 9);
+  reduce(t);
+  EXPECT_FALSE(t.loaded_from_cache);
+  EXPECT_NE(t.cache_note.find("damaged"), std::string::npos) << t.cache_note;
+}
+
+TEST_F(ModelCache, FolderIsPrunedToItsBound) {
+  configure_model_cache(ModelCacheSettings{dir_ / "cache", 1});  // every entry is over the bound
+  CraigBamptonTiming t;
+  reduce(t);
+  EXPECT_TRUE(entries().empty());
+  reduce(t);
+  EXPECT_FALSE(t.loaded_from_cache);
+}
+
+TEST_F(ModelCache, OffWritesNothing) {
+  configure_model_cache(std::nullopt);
+  CraigBamptonTiming t;
+  reduce(t);
+  EXPECT_FALSE(t.loaded_from_cache);
+  EXPECT_FALSE(fs::exists(dir_ / "cache"));
+}
+
+}  // namespace
+}  // namespace bb

@@ -1,16 +1,20 @@
 // bladebench command line: run and validate cases, calibrate, synthesize data, export decks. Exit
 // codes in common/errors.hpp. Progress goes to the terminal only: the library reports through callbacks.
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <numbers>
+#include <optional>
 
 #include "analysis/run_analysis.hpp"
 #include "cache/model_cache.hpp"
@@ -21,6 +25,7 @@
 #include "identify/uff58.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/calibrate_case.hpp"
+#include "pipeline/child_runs.hpp"
 #include "pipeline/run_case.hpp"
 #include "report/calculix_export.hpp"
 #include "report/calibration_report.hpp"
@@ -114,7 +119,63 @@ struct ValidateArgs {
   std::string dir = "cases", out = "reports";
   bool study = false, no_plots = false;
   bb::FidelityMode fidelity = bb::FidelityMode::fixed;
+  int jobs = 1;
 };
+
+std::string fidelity_word(bb::FidelityMode mode) {
+  switch (mode) {
+    case bb::FidelityMode::fixed:
+      return "fixed";
+    case bb::FidelityMode::fast:
+      return "fast";
+    case bb::FidelityMode::automatic:
+      return "auto";
+    case bb::FidelityMode::reference:
+      return "reference";
+  }
+  return "fixed";
+}
+
+// `bladebench run` of one case as validate would run it in-process, for a child process.
+std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& file, const fs::path& out_dir) {
+  std::vector<std::string> c = {fs::read_symlink("/proc/self/exe").string(), "run", file.string(), "--out",
+                                out_dir.string(), "--fidelity", fidelity_word(a.fidelity)};
+  if (a.study) c.emplace_back("--study");
+  if (a.no_plots) c.emplace_back("--no-plots");
+  if (const auto& cache = bb::model_cache_settings()) {
+    c.emplace_back("--cache-dir");
+    c.push_back(cache->folder.string());
+  } else {
+    c.emplace_back("--no-cache");
+  }
+  return c;
+}
+
+// A child's run read back from the summary.json it wrote; nullopt when it wrote none for this run.
+std::optional<bb::IndexEntry> entry_of_child(const fs::path& out_dir, const fs::path& index_dir,
+                                             const bb::ChildResult& r) {
+  if (r.exit_code < 0) return std::nullopt;
+  try {
+    std::ifstream in(out_dir / "summary.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    bb::IndexEntry e{j.at("case").get<std::string>(), fs::relative(out_dir / "report.md", index_dir),
+                     bb::RunStatus::solver_failed, 0, 0, j.at("wall_time_s").get<double>(),
+                     j.value("message", std::string()), j.value("fidelity", std::string())};
+    const std::string status = j.at("status").get<std::string>();
+    for (bb::RunStatus st : {bb::RunStatus::pass, bb::RunStatus::fail, bb::RunStatus::no_checks,
+                             bb::RunStatus::bad_input, bb::RunStatus::solver_failed})
+      if (bb::status_name(st) == status) e.status = st;
+    for (const auto& c : j.at("checks")) {
+      ++e.checks;
+      e.failed += c.at("pass").get<bool>() ? 0 : 1;
+    }
+    // An older summary (this run failed before writing its own) must not pass for this run.
+    if (bb::exit_code(e.status) != r.exit_code) return std::nullopt;
+    return e;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
 
 // "3 passed", "1 failed", "2 bad input": a status as the final line of validate says it.
 std::string status_verb(bb::RunStatus status) {
@@ -144,23 +205,10 @@ int validate_command(const ValidateArgs& a) {
     return bb::exit_bad_input;
   }
   bb::prepare_output_parent(a.out, "--out");
-  std::vector<bb::IndexEntry> index;
+  std::vector<std::pair<size_t, bb::IndexEntry>> done;  // (file, entry) in the order runs finish
   std::map<std::string, fs::path> seen;
   int rc = bb::exit_pass;
-  for (size_t i = 0; i < files.size(); ++i) {
-    bb::RunOptions opt;
-    opt.study = a.study;
-    opt.plots = !a.no_plots;
-    opt.fidelity = a.fidelity;
-    // Output folder by file stem first; the case name is only known after parsing.
-    opt.out_dir = fs::path(a.out) / files[i].stem();
-    const bb::RunOutcome o = bb::run_case(files[i], opt);
-    print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
-    int code = bb::exit_code(o.record.status);
-    bb::IndexEntry e{o.record.case_name,     fs::relative(o.out_dir / "report.md", a.out),
-                     o.record.status,        static_cast<int>(o.record.checks.size()),
-                     failed_count(o.record), o.record.wall_seconds,
-                     o.record.message,       o.record.fidelity};
+  auto record = [&](size_t i, bb::IndexEntry e, int code) {
     if (auto [it, fresh] = seen.emplace(files[i].stem().string(), files[i]); !fresh) {
       e.status = bb::RunStatus::bad_input;
       e.message = fmt::format("two case files share the name '{}': {} and {}", files[i].stem().string(),
@@ -168,9 +216,56 @@ int validate_command(const ValidateArgs& a) {
       std::fprintf(stderr, "  error: %s\n", bb::printable(e.message).c_str());
       code = bb::exit_bad_input;
     }
-    index.push_back(e);
+    done.emplace_back(i, e);
     rc = std::max(rc, code);
+  };
+  if (a.jobs > 1) {
+    // Two case files with one stem would write one folder at once: refuse before starting any.
+    std::map<std::string, fs::path> stems;
+    for (const fs::path& f : files)
+      if (auto [it, fresh] = stems.emplace(f.stem().string(), f); !fresh)
+        throw bb::InputError(fmt::format("two case files share the name '{}': {} and {} (validate -j needs one "
+                                         "report folder per case)",
+                                         f.stem().string(), it->second.string(), f.string()));
+    std::vector<std::vector<std::string>> commands;
+    for (const fs::path& f : files) commands.push_back(child_command(a, f, fs::path(a.out) / f.stem()));
+    size_t finished = 0;
+    bb::run_children(commands, a.jobs, [&](size_t i, const bb::ChildResult& r) {
+      const fs::path out_dir = fs::path(a.out) / files[i].stem();
+      // The child's own verdict lines, whole, under this run's counter.
+      std::fprintf(stderr, "[%zu/%zu] %s", ++finished, files.size(), bb::printable(r.output, true).c_str());
+      std::optional<bb::IndexEntry> e = entry_of_child(out_dir, a.out, r);
+      if (!e) {
+        e = bb::IndexEntry{files[i].stem().string(), fs::relative(out_dir / "report.md", a.out),
+                           r.exit_code == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed,
+                           0, 0, 0.0,
+                           r.signal ? fmt::format("the run was killed by signal {} ({})", r.signal, strsignal(r.signal))
+                                    : fmt::format("the run exited with code {} and no report", r.exit_code),
+                           ""};
+        std::fprintf(stderr, "  error: %s: %s\n", files[i].string().c_str(), e->message.c_str());
+      }
+      record(i, *e, bb::exit_code(e->status));
+    });
+  } else {
+    for (size_t i = 0; i < files.size(); ++i) {
+      bb::RunOptions opt;
+      opt.study = a.study;
+      opt.plots = !a.no_plots;
+      opt.fidelity = a.fidelity;
+      // Output folder by file stem first; the case name is only known after parsing.
+      opt.out_dir = fs::path(a.out) / files[i].stem();
+      const bb::RunOutcome o = bb::run_case(files[i], opt);
+      print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
+      record(i,
+             bb::IndexEntry{o.record.case_name, fs::relative(o.out_dir / "report.md", a.out), o.record.status,
+                            static_cast<int>(o.record.checks.size()), failed_count(o.record), o.record.wall_seconds,
+                            o.record.message, o.record.fidelity},
+             bb::exit_code(o.record.status));
+    }
   }
+  std::sort(done.begin(), done.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<bb::IndexEntry> index;
+  for (auto& [i, e] : done) index.push_back(std::move(e));
   bb::write_index_md(index, fs::path(a.out) / "index.md");
   bb::write_html_twin(fs::path(a.out) / "index.md");
   // The verdict a CI log is read for: every status that occurred, in the enum's order.
@@ -353,6 +448,9 @@ int main(int argc, char** argv) {
   validate->add_flag("--study", validate_args.study, "Also run every case's [study]");
   validate->add_flag("--no-plots", validate_args.no_plots, "Skip gnuplot figures");
   add_fidelity_option(validate, validate_args.fidelity);
+  validate->add_option("-j,--jobs", validate_args.jobs,
+                       "Cases run at once, each in its own process (default 1; the machine's cores: the fastest)")
+      ->check(CLI::Range(1, 256));
   add_cache_options(validate, cache_args);
 
   CalibrateArgs calibrate_args;

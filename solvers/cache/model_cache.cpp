@@ -116,8 +116,8 @@ std::optional<std::vector<std::uint8_t>> CacheEntry::load() {
   return std::nullopt;
 }
 
-void CacheEntry::store(const std::vector<std::uint8_t>& payload) {
-  if (!enabled_) return;
+bool CacheEntry::store(const std::vector<std::uint8_t>& payload, double build_seconds) {
+  if (!enabled_ || build_seconds < settings()->min_build_seconds) return false;
   const fs::path temp = file_.string() + fmt::format(".tmp-{}", ::getpid());
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
@@ -128,7 +128,7 @@ void CacheEntry::store(const std::vector<std::uint8_t>& payload) {
       std::error_code ec;
       fs::remove(temp, ec);
       note_ = fmt::format("could not write {}: not cached", file_.string());
-      return;
+      return false;
     }
   }
   std::error_code ec;
@@ -136,9 +136,10 @@ void CacheEntry::store(const std::vector<std::uint8_t>& payload) {
   if (ec) {
     fs::remove(temp, ec);
     note_ = fmt::format("could not write {}: not cached", file_.string());
-    return;
+    return false;
   }
   prune(file_.parent_path(), settings()->max_bytes);
+  return true;
 }
 
 void CacheEntry::discard(const std::string& reason) {

@@ -20,6 +20,7 @@ namespace bb {
 struct ModelCacheSettings {
   std::filesystem::path folder;
   std::uintmax_t max_bytes = std::uintmax_t{4} << 30;  // least recently used entries go beyond this
+  double min_build_seconds = 1.0;  // cheaper results are not worth an entry (and its disk space)
 };
 
 // nullopt turns the cache off (the default of a program that never calls this).
@@ -32,11 +33,11 @@ std::optional<std::filesystem::path> default_model_cache_folder();
 
 // What a lookup did, for the report.
 struct CacheUse {
-  enum class Outcome { off, stored, loaded };
+  enum class Outcome { off, loaded, stored, not_stored };
   Outcome outcome = Outcome::off;
-  std::string entry;      // file name of the entry
-  double seconds = 0.0;   // load or store time
-  std::string note;       // e.g. why an entry was rebuilt or could not be stored
+  double seconds = 0.0;        // to load or to store the entry
+  double build_seconds = 0.0;  // to compute it, here or in the run that stored it
+  std::string note;            // why the cache was not used, or an entry was rebuilt or not written
 };
 
 // One entry, locked for as long as the object lives (when the cache is on).
@@ -51,9 +52,10 @@ class CacheEntry {
   // The stored payload when the entry exists and is sound; otherwise nullopt, and a damaged entry
   // is removed with the reason in note().
   std::optional<std::vector<std::uint8_t>> load();
-  // Writes the entry (temporary file, then rename) and prunes the folder to its size bound. A
-  // failure to write leaves the cache as it was and says why in note(); it never fails the run.
-  void store(const std::vector<std::uint8_t>& payload);
+  // Writes the entry (temporary file, then rename) and prunes the folder to its size bound; returns
+  // false, writing nothing, when `build_seconds` is below the settings' minimum. A failure to write
+  // leaves the cache as it was and says why in note(); it never fails the run.
+  bool store(const std::vector<std::uint8_t>& payload, double build_seconds);
   // Call when the payload did not decode: the entry is removed.
   void discard(const std::string& reason);
 

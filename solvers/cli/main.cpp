@@ -1,19 +1,21 @@
 // bladebench command line: run and validate cases, calibrate, synthesize data, export decks. Exit
 // codes in common/errors.hpp. Progress goes to the terminal only: the library reports through callbacks.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <optional>
 
 #include "analysis/run_analysis.hpp"
@@ -227,10 +229,23 @@ int validate_command(const ValidateArgs& a) {
         throw bb::InputError(fmt::format("two case files share the name '{}': {} and {} (validate -j needs one "
                                          "report folder per case)",
                                          f.stem().string(), it->second.string(), f.string()));
+    // Longest first, by the wall time of each case's previous report (none yet: first of all), so
+    // that a long case does not start last and run alone.
+    std::vector<double> previous(files.size(), std::numeric_limits<double>::infinity());
+    for (size_t i = 0; i < files.size(); ++i) {
+      std::ifstream in(fs::path(a.out) / files[i].stem() / "summary.json");
+      const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+      if (!j.is_discarded() && j.contains("wall_time_s") && j["wall_time_s"].is_number())
+        previous[i] = j["wall_time_s"].get<double>();
+    }
+    std::vector<size_t> order(files.size());
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return previous[x] > previous[y]; });
     std::vector<std::vector<std::string>> commands;
-    for (const fs::path& f : files) commands.push_back(child_command(a, f, fs::path(a.out) / f.stem()));
+    for (size_t i : order) commands.push_back(child_command(a, files[i], fs::path(a.out) / files[i].stem()));
     size_t finished = 0;
-    bb::run_children(commands, a.jobs, [&](size_t i, const bb::ChildResult& r) {
+    bb::run_children(commands, a.jobs, [&](size_t started, const bb::ChildResult& r) {
+      const size_t i = order[started];
       const fs::path out_dir = fs::path(a.out) / files[i].stem();
       // The child's own verdict lines, whole, under this run's counter.
       std::fprintf(stderr, "[%zu/%zu] %s", ++finished, files.size(), bb::printable(r.output, true).c_str());

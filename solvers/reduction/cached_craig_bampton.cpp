@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
-#include <cstring>
 
+#include "cache/cbor_matrix.hpp"
 #include "cache/model_cache.hpp"
 
 namespace bb {
@@ -15,30 +15,13 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-json encode_matrix(const Eigen::MatrixXd& m) {
-  const auto* bytes = reinterpret_cast<const std::uint8_t*>(m.data());
-  return {{"rows", m.rows()},
-          {"cols", m.cols()},
-          {"data", json::binary(std::vector<std::uint8_t>(bytes, bytes + m.size() * sizeof(double)))}};
-}
-
-Eigen::MatrixXd decode_matrix(const json& j) {
-  const auto rows = j.at("rows").get<Eigen::Index>(), cols = j.at("cols").get<Eigen::Index>();
-  const auto& data = j.at("data").get_binary();
-  if (rows < 0 || cols < 0 || data.size() != static_cast<size_t>(rows * cols) * sizeof(double))
-    throw std::runtime_error("a matrix's size does not match its data");
-  Eigen::MatrixXd m(rows, cols);
-  std::memcpy(m.data(), data.data(), data.size());
-  return m;
-}
-
 std::vector<std::uint8_t> encode(const ReducedModel& m, const CraigBamptonTiming& t) {
   json dofs = json::array();
   for (const ReducedDof& d : m.dofs) dofs.push_back({d.label, d.direction, d.mode});
-  const json j = {{"stiffness", encode_matrix(m.stiffness)},
-                  {"mass", encode_matrix(m.mass)},
-                  {"recovery", encode_matrix(m.recovery)},
-                  {"fixed_interface_frequencies_hz", encode_matrix(m.fixed_interface_frequencies_hz)},
+  const json j = {{"stiffness", matrix_to_json(m.stiffness)},
+                  {"mass", matrix_to_json(m.mass)},
+                  {"recovery", matrix_to_json(m.recovery)},
+                  {"fixed_interface_frequencies_hz", matrix_to_json(m.fixed_interface_frequencies_hz)},
                   {"dofs", dofs},
                   {"timing", {t.constraint_modes_seconds, t.fixed_interface_seconds, t.projection_seconds}}};
   return json::to_cbor(j);
@@ -47,10 +30,10 @@ std::vector<std::uint8_t> encode(const ReducedModel& m, const CraigBamptonTiming
 ReducedModel decode(const std::vector<std::uint8_t>& payload, CraigBamptonTiming& t) {
   const json j = json::from_cbor(payload);
   ReducedModel m;
-  m.stiffness = decode_matrix(j.at("stiffness"));
-  m.mass = decode_matrix(j.at("mass"));
-  m.recovery = decode_matrix(j.at("recovery"));
-  m.fixed_interface_frequencies_hz = decode_matrix(j.at("fixed_interface_frequencies_hz"));
+  m.stiffness = matrix_from_json(j.at("stiffness"));
+  m.mass = matrix_from_json(j.at("mass"));
+  m.recovery = matrix_from_json(j.at("recovery"));
+  m.fixed_interface_frequencies_hz = matrix_from_json(j.at("fixed_interface_frequencies_hz"));
   for (const json& d : j.at("dofs")) m.dofs.push_back({d.at(0).get<std::string>(), d.at(1).get<int>(), d.at(2).get<int>()});
   const json& times = j.at("timing");
   t.constraint_modes_seconds = times.at(0).get<double>();
@@ -67,6 +50,7 @@ ReducedModel cached_craig_bampton(const Eigen::SparseMatrix<double>& stiffness, 
   CraigBamptonTiming local;
   CraigBamptonTiming& t = timing ? *timing : local;
   if (!model_cache_settings()) return craig_bampton(stiffness, mass, masters, master_names, options, &t);
+  t.cache.outcome = CacheUse::Outcome::not_stored;
 
   ContentKey key("craig_bampton");
   key.add(program_fingerprint()).add(stiffness).add(mass);
@@ -85,18 +69,21 @@ ReducedModel cached_craig_bampton(const Eigen::SparseMatrix<double>& stiffness, 
       if (m.size() != static_cast<int>(masters.size()) + options.n_modes || m.recovery.rows() != stiffness.rows())
         throw std::runtime_error("its sizes do not match the model");
       t = stored;
-      t.loaded_from_cache = true;
-      t.cache_seconds = seconds_since(t0);
+      t.cache.outcome = CacheUse::Outcome::loaded;
+      t.cache.seconds = seconds_since(t0);
+      t.cache.build_seconds = stored.constraint_modes_seconds + stored.fixed_interface_seconds + stored.projection_seconds;
       return m;
     } catch (const std::exception& e) {
       entry.discard(e.what());
     }
   }
   ReducedModel m = craig_bampton(stiffness, mass, masters, master_names, options, &t);
+  t.cache.build_seconds = t.constraint_modes_seconds + t.fixed_interface_seconds + t.projection_seconds;
   t0 = Clock::now();
-  entry.store(encode(m, t));
-  t.cache_seconds = seconds_since(t0);
-  t.cache_note = entry.note();
+  const bool stored = entry.store(encode(m, t), t.cache.build_seconds);
+  t.cache.seconds = seconds_since(t0);
+  t.cache.outcome = stored ? CacheUse::Outcome::stored : CacheUse::Outcome::not_stored;
+  t.cache.note = entry.note();
   return m;
 }
 

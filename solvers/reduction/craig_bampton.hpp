@@ -4,9 +4,9 @@
 #pragma once
 #include <Eigen/Sparse>
 
-#include <string>
 #include <vector>
 
+#include "cache/model_cache.hpp"
 #include "linalg/spd_factor.hpp"
 #include "reduction/reduced_model.hpp"
 
@@ -22,10 +22,8 @@ struct CraigBamptonTiming {
   double constraint_modes_seconds = 0.0;  // factor K_ss, solve for Psi
   double fixed_interface_seconds = 0.0;   // eigenproblem of the clamped slaves
   double projection_seconds = 0.0;        // T^T K T, T^T M T
-  // Set by cached_craig_bampton: the three times above are then those of the run that built it.
-  bool loaded_from_cache = false;
-  double cache_seconds = 0.0;  // to load (or to store) the entry
-  std::string cache_note;      // why the cache was not used, or an entry rebuilt; empty otherwise
+  // Set by cached_craig_bampton; when loaded, the three times above are those of the run that built it.
+  CacheUse cache;
 };
 
 // `stiffness`, `mass`: over the free DOFs (both symmetric, full storage). `masters[i]` is a free-DOF

@@ -14,18 +14,25 @@ namespace {
 
 std::string g(double v) { return fmt::format("{:.6g}", v); }
 
-// Whether a Craig-Bampton reduction was built here or came from the model cache.
-void describe_cache(const std::string& rom, const CraigBamptonTiming& t, bool reduced, RunRecord& run) {
-  if (!reduced) return;
+// Whether a reduction or a set of modes was computed here or came from the model cache.
+void describe_cache(const std::string& what, const CacheUse& u, RunRecord& run) {
   std::string use;
-  if (t.loaded_from_cache)
-    use = fmt::format("loaded in {:.2f} s (built by an earlier run in {:.2f} + {:.2f} + {:.2f} s)", t.cache_seconds,
-                      t.constraint_modes_seconds, t.fixed_interface_seconds, t.projection_seconds);
-  else if (model_cache_settings() && t.cache_note.empty())
-    use = fmt::format("built here and stored in {:.2f} s", t.cache_seconds);
-  else
-    use = t.cache_note.empty() ? "off (built here)" : t.cache_note;
-  run.facts.emplace_back(fmt::format("model cache ({})", rom), use);
+  switch (u.outcome) {
+    case CacheUse::Outcome::off:
+      use = u.note.empty() ? "off" : u.note;
+      break;
+    case CacheUse::Outcome::loaded:
+      use = fmt::format("loaded in {:.2f} s (computed by an earlier run in {:.2f} s)", u.seconds, u.build_seconds);
+      break;
+    case CacheUse::Outcome::stored:
+      use = fmt::format("computed here in {:.2f} s and stored in {:.2f} s", u.build_seconds, u.seconds);
+      break;
+    case CacheUse::Outcome::not_stored:
+      use = u.note.empty() ? fmt::format("computed here in {:.2f} s; too quick to be worth an entry", u.build_seconds)
+                           : u.note;
+      break;
+  }
+  run.facts.emplace_back(fmt::format("model cache ({})", what), use);
 }
 
 void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
@@ -54,6 +61,7 @@ void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
     run.facts.emplace_back("full mesh: assembly / modes + residual / sweep [s]",
                            fmt::format("{:.2f} / {:.2f} / {:.4f}", frf.full_modal->assembly_seconds,
                                        frf.full_setup_seconds, frf.full_sweep_seconds));
+    describe_cache("full mesh modes", frf.full_modal->cache, run);
   }
   for (size_t i = 0; i < frf.roms.size(); ++i) {
     const RomOutcome& r = frf.roms[i];
@@ -70,7 +78,7 @@ void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
         fmt::format("reduced model '{}': constraint modes / fixed-interface modes / projection / sweep [s]", r.name),
         fmt::format("{:.2f} / {:.2f} / {:.3f} / {:.4f}", r.timing.constraint_modes_seconds,
                     r.timing.fixed_interface_seconds, r.timing.projection_seconds, r.sweep_seconds));
-    describe_cache(fmt::format("reduced model '{}'", r.name), r.timing, rs.file.empty() && !rs.matrices, run);
+    if (rs.file.empty() && !rs.matrices) describe_cache(fmt::format("reduced model '{}'", r.name), r.timing.cache, run);
   }
 }
 
@@ -168,7 +176,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   }
   run.facts.emplace_back("setup (reduction + matrices) / all sweeps [s]",
                          fmt::format("{:.2f} / {:.3f}", p.setup_seconds, hbm.sweep_seconds));
-  describe_cache("Craig-Bampton reduction", p.timing, spec.model.file.empty() && !spec.model.matrices, run);
+  if (spec.model.file.empty() && !spec.model.matrices) describe_cache("Craig-Bampton reduction", p.timing.cache, run);
   int reached = 0, points = 0;
   for (const HbmLevel& l : hbm.levels) {
     reached += l.path.converged ? 1 : 0;
@@ -238,7 +246,8 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
                     g(p.model.contacts[c].law.kn), g(p.model.contacts[c].law.kt), g(p.model.contacts[c].law.mu));
   run.facts.emplace_back("contacts", contacts.empty() ? "none (linear model)" : contacts);
   run.facts.emplace_back("model DOFs", std::to_string(p.model.mass.rows()));
-  describe_cache("Craig-Bampton reduction", p.timing, spec.system.model.file.empty() && !spec.system.model.matrices, run);
+  if (spec.system.model.file.empty() && !spec.system.model.matrices)
+    describe_cache("Craig-Bampton reduction", p.timing.cache, run);
   long steps = 0, not_steady = 0;
   double seconds = 0;
   for (const TimeLevel& l : time.levels) {
@@ -338,6 +347,7 @@ void describe(const ModalSpec& spec, const ModalOutcome& outcome, const Model& m
   run.facts.emplace_back("max eigen-residual (backward error)", fmt::format("{:.3e}", modal.max_residual));
   run.facts.emplace_back("assembly / eigensolve [s]",
                          fmt::format("{:.4f} / {:.4f}", modal.assembly_seconds, modal.solve_seconds));
+  describe_cache("modes", modal.cache, run);
   if (spec.pairs) {
     const ModePairSpec& p = *spec.pairs;
     run.facts.emplace_back("mode labels",

@@ -1,12 +1,14 @@
 // The model cache (cache/model_cache, reduction/cached_craig_bampton): keys change with any input,
 // a stored reduction comes back bit for bit, a damaged entry is detected and rebuilt, the folder
-// stays within its size bound, and with the cache off nothing is written.
+// stays within its size bound, quick results are not stored, and with the cache off nothing is
+// written.
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "cache/content_key.hpp"
 #include "cache/model_cache.hpp"
+#include "linalg/cached_modes.hpp"
 #include "reduction/cached_craig_bampton.hpp"
 #include "temp_folder.hpp"
 
@@ -58,7 +60,7 @@ class ModelCache : public test::TempFolderTest {
  protected:
   void SetUp() override {
     TempFolderTest::SetUp();
-    configure_model_cache(ModelCacheSettings{dir_ / "cache"});
+    configure_model_cache(ModelCacheSettings{.folder = dir_ / "cache", .min_build_seconds = 0.0});
   }
   void TearDown() override {
     configure_model_cache(std::nullopt);
@@ -81,11 +83,11 @@ class ModelCache : public test::TempFolderTest {
 TEST_F(ModelCache, SecondReductionIsLoadedBitForBit) {
   CraigBamptonTiming first, second;
   const ReducedModel a = reduce(first);
-  EXPECT_FALSE(first.loaded_from_cache);
-  EXPECT_TRUE(first.cache_note.empty()) << first.cache_note;
+  EXPECT_EQ(first.cache.outcome, CacheUse::Outcome::stored);
+  EXPECT_TRUE(first.cache.note.empty()) << first.cache.note;
   ASSERT_EQ(entries().size(), 1u);
   const ReducedModel b = reduce(second);
-  EXPECT_TRUE(second.loaded_from_cache);
+  EXPECT_EQ(second.cache.outcome, CacheUse::Outcome::loaded);
   EXPECT_EQ(second.fixed_interface_seconds, first.fixed_interface_seconds);  // the build's own times
   EXPECT_EQ(a.stiffness, b.stiffness);
   EXPECT_EQ(a.mass, b.mass);
@@ -99,7 +101,7 @@ TEST_F(ModelCache, OtherOptionsMakeAnotherEntry) {
   reduce(t);
   options_.n_modes = 5;
   reduce(t);
-  EXPECT_FALSE(t.loaded_from_cache);
+  EXPECT_NE(t.cache.outcome, CacheUse::Outcome::loaded);
   EXPECT_EQ(entries().size(), 2u);
 }
 
@@ -113,11 +115,11 @@ TEST_F(ModelCache, DamagedEntryIsDetectedAndRebuilt) {
     f.put('\x5a');
   }
   const ReducedModel b = reduce(t);
-  EXPECT_FALSE(t.loaded_from_cache);
-  EXPECT_NE(t.cache_note.find("damaged"), std::string::npos) << t.cache_note;
+  EXPECT_NE(t.cache.outcome, CacheUse::Outcome::loaded);
+  EXPECT_NE(t.cache.note.find("damaged"), std::string::npos) << t.cache.note;
   EXPECT_EQ(a.stiffness, b.stiffness);
   reduce(t);  // the rebuilt entry is sound
-  EXPECT_TRUE(t.loaded_from_cache);
+  EXPECT_EQ(t.cache.outcome, CacheUse::Outcome::loaded);
 }
 
 TEST_F(ModelCache, TruncatedEntryIsDetectedAndRebuilt) {
@@ -126,24 +128,51 @@ TEST_F(ModelCache, TruncatedEntryIsDetectedAndRebuilt) {
   const fs::path entry = entries().at(0);
   fs::resize_file(entry, fs::file_size(entry) - 9);
   reduce(t);
-  EXPECT_FALSE(t.loaded_from_cache);
-  EXPECT_NE(t.cache_note.find("damaged"), std::string::npos) << t.cache_note;
+  EXPECT_NE(t.cache.outcome, CacheUse::Outcome::loaded);
+  EXPECT_NE(t.cache.note.find("damaged"), std::string::npos) << t.cache.note;
 }
 
 TEST_F(ModelCache, FolderIsPrunedToItsBound) {
-  configure_model_cache(ModelCacheSettings{dir_ / "cache", 1});  // every entry is over the bound
+  configure_model_cache(ModelCacheSettings{.folder = dir_ / "cache", .max_bytes = 1, .min_build_seconds = 0.0});
   CraigBamptonTiming t;
   reduce(t);
   EXPECT_TRUE(entries().empty());
   reduce(t);
-  EXPECT_FALSE(t.loaded_from_cache);
+  EXPECT_NE(t.cache.outcome, CacheUse::Outcome::loaded);
+}
+
+TEST_F(ModelCache, QuickResultsAreNotStored) {
+  configure_model_cache(ModelCacheSettings{.folder = dir_ / "cache", .min_build_seconds = 1e9});
+  CraigBamptonTiming t;
+  reduce(t);
+  EXPECT_EQ(t.cache.outcome, CacheUse::Outcome::not_stored);
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(ModelCache, ModesComeBackBitForBitWithTheirCompletenessCount) {
+  ModalOptions options;
+  options.n_modes = 5;
+  CacheUse first, second;
+  const ModalSolution a = cached_lowest_modes(k_, m_, options, &first);
+  const ModalSolution b = cached_lowest_modes(k_, m_, options, &second);
+  EXPECT_EQ(first.outcome, CacheUse::Outcome::stored);
+  EXPECT_EQ(second.outcome, CacheUse::Outcome::loaded);
+  EXPECT_EQ(second.build_seconds, first.build_seconds);
+  EXPECT_EQ(a.eigenvalues, b.eigenvalues);
+  EXPECT_EQ(a.shapes, b.shapes);
+  EXPECT_EQ(a.sturm_count, b.sturm_count);
+  EXPECT_GE(b.sturm_count, 5);
+  options.n_modes = 6;
+  CacheUse third;
+  cached_lowest_modes(k_, m_, options, &third);
+  EXPECT_EQ(third.outcome, CacheUse::Outcome::stored);
 }
 
 TEST_F(ModelCache, OffWritesNothing) {
   configure_model_cache(std::nullopt);
   CraigBamptonTiming t;
   reduce(t);
-  EXPECT_FALSE(t.loaded_from_cache);
+  EXPECT_NE(t.cache.outcome, CacheUse::Outcome::loaded);
   EXPECT_FALSE(fs::exists(dir_ / "cache"));
 }
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # bladebench's two set-up commands (see README.md):
 #   ./run.sh all   install missing packages, build Release, run every case (with studies), write reports/
-#   ./run.sh test  install missing packages, build Release, run the default test set (ctest, no 'study' label)
-# Extra: ./run.sh asan  builds with AddressSanitizer + UBSan and runs the default test set under it.
+#   ./run.sh test  install missing packages, build Release, run the default test set (ctest, no 'study'
+#                  label), then build with AddressSanitizer + UBSan and run the unit and bad-input tests
+# Extra: ./run.sh asan  only the sanitizer part of 'test'.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -41,6 +42,8 @@ case "${1:-}" in
     ensure_packages
     build release
     ctest --preset release -j "$(nproc)"
+    build asan
+    ctest --preset asan -j "$(nproc)"
     ;;
   asan)
     ensure_packages

@@ -54,7 +54,9 @@ Condensation<Scalar>::Condensation(const Matrix& a, const std::vector<Index>& co
   }
   a_co_ = a(contact_dofs_, other_dofs_);
   lu_oo_.compute(a(other_dofs_, other_dofs_));
-  static_modes_ = lu_oo_.solve(Matrix(a(other_dofs_, contact_dofs_)));
+  // No contact DOFs: no static modes (and no empty right-hand side, on which Eigen's triangular
+  // solve would bind a reference to a null pointer).
+  static_modes_ = contact_dofs_.empty() ? Matrix(other_, 0) : Matrix(lu_oo_.solve(Matrix(a(other_dofs_, contact_dofs_))));
   reduced_ = a_cc - a_co_ * static_modes_;
 }
 

@@ -119,7 +119,8 @@ TEST_F(ReportText, ABadInputRunWritesItsReportAndNothingElse) {
   const fs::path case_file = fs::path(BB_SOURCE_DIR) / "tests" / "bad_input" / "unknown_result_column.toml";
   const RunOutcome o = run_case(case_file, {.out_dir = dir_ / "out", .study = false, .plots = false});
   ASSERT_EQ(o.record.status, RunStatus::bad_input);
-  EXPECT_EQ(entries(dir_), (std::vector<std::string>{"out", "out/report.md", "out/summary.json"}));
+  EXPECT_EQ(entries(dir_),
+            (std::vector<std::string>{"out", "out/report.html", "out/report.md", "out/summary.json"}));
   const nlohmann::json j = nlohmann::json::parse(read_text(dir_ / "out" / "summary.json"));
   EXPECT_TRUE(j["tables"].empty());
   EXPECT_TRUE(j["checks"].empty());

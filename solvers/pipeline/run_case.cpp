@@ -145,7 +145,11 @@ void analyse(const CaseSpec& spec, const Model& model, const AnalysisResults& re
     for (const CheckSpec& c : spec.checks)
       run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
   }
-  if (options.study && spec.study) run_study(*spec.study, spec, model, results, out, options.plots, run);
+  if (options.study && spec.study) {
+    const HbmProgress progress = terminal_progress();
+    run_study(*spec.study, spec, model, results, out, options.plots, run, progress);
+    if (progress) std::fputs("\r\033[K", stderr);
+  }
   bool all_pass = true;
   for (const CheckEntry& e : run.checks) all_pass = all_pass && e.pass;
   run.status = run.checks.empty() ? RunStatus::no_checks : (all_pass ? RunStatus::pass : RunStatus::fail);

@@ -9,7 +9,8 @@
 
 namespace bb {
 
+// `progress` (may be empty) receives one line per finished variant: how many are done and the time left.
 void run_study(const StudySpec& study, const CaseSpec& spec, const Model& model, const AnalysisResults& results,
-               const std::filesystem::path& out, bool plots, RunRecord& run);
+               const std::filesystem::path& out, bool plots, RunRecord& run, const HbmProgress& progress = {});
 
 }  // namespace bb

@@ -7,7 +7,7 @@
 namespace bb {
 
 ResultTable run_hbm_harmonics_study(const HbmSpec& spec, const PreparedHbm& prepared,
-                                    const HbmHarmonicsStudySpec& study) {
+                                    const HbmHarmonicsStudySpec& study, const StudyProgress& progress) {
   const int h_ref = *std::max_element(study.harmonics.begin(), study.harmonics.end());
   const size_t kinds = prepared.ip_oop ? 2 : 1;
   HbmSpec s = spec;
@@ -18,9 +18,13 @@ ResultTable run_hbm_harmonics_study(const HbmSpec& spec, const PreparedHbm& prep
     HbmLevel result;
   };
   std::vector<Row> rows;
+  const int total = static_cast<int>(study.harmonics.size() * study.force_levels.size());
+  if (progress) progress(0, total);
   for (int h : study.harmonics)
-    for (size_t l = 0; l < study.force_levels.size(); ++l)
+    for (size_t l = 0; l < study.force_levels.size(); ++l) {
       rows.push_back({h, l, sweep_hbm_level(prepared, s, study.force_levels[l], h)});
+      if (progress) progress(static_cast<int>(rows.size()), total);
+    }
 
   ResultTable t;
   t.name = "hbm_harmonics_study";

@@ -3,6 +3,7 @@
 #pragma once
 #include "analysis/hbm_analysis.hpp"
 #include "results/table.hpp"
+#include "study/study_progress.hpp"
 #include "study/study_spec.hpp"
 
 namespace bb {
@@ -11,6 +12,6 @@ namespace bb {
 // peak kind (ip, oop, or peak) <k>_hz, <k>_amp_m, <k>_hz_error, <k>_amp_error (relative, against
 // the largest H of the same level), and unknowns, newton_iterations, failed_points, seconds.
 ResultTable run_hbm_harmonics_study(const HbmSpec& spec, const PreparedHbm& prepared,
-                                    const HbmHarmonicsStudySpec& study);
+                                    const HbmHarmonicsStudySpec& study, const StudyProgress& progress = {});
 
 }  // namespace bb

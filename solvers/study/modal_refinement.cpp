@@ -8,9 +8,12 @@
 namespace bb {
 
 ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal_spec,
-                                                 const ModalRefinementStudySpec& s) {
+                                                 const ModalRefinementStudySpec& s,
+                                                 const StudyProgress& progress) {
   ModalRefinementResult out;
   out.modes = s.modes;
+  const int total = static_cast<int>(s.elements.size() * s.refinements.size());
+  if (progress) progress(0, total);
   for (ElementType element : s.elements) {
     for (int r : s.refinements) {
       ModelSpec level = spec;
@@ -38,6 +41,7 @@ ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const Mo
       row.assembly_seconds = modal.assembly_seconds;
       row.solve_seconds = modal.solve_seconds;
       out.rows.push_back(std::move(row));
+      if (progress) progress(static_cast<int>(out.rows.size()), total);
     }
   }
   for (size_t i = 0; i < out.rows.size(); ++i)

@@ -6,6 +6,7 @@
 
 #include "analysis/modal_spec.hpp"
 #include "model/model_spec.hpp"
+#include "study/study_progress.hpp"
 #include "study/study_spec.hpp"
 
 namespace bb {
@@ -28,6 +29,7 @@ struct ModalRefinementResult {
 };
 
 ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal,
-                                                 const ModalRefinementStudySpec& study);
+                                                 const ModalRefinementStudySpec& study,
+                                                 const StudyProgress& progress = {});
 
 }  // namespace bb

@@ -8,7 +8,8 @@
 
 namespace bb {
 
-RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStudySpec& s) {
+RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStudySpec& s,
+                                      const StudyProgress& progress) {
   RefinementResult out;
   const RectangularBeam beam{s.beam_length,
                              s.beam_height,
@@ -19,6 +20,8 @@ RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStu
   out.beam_deflection = timoshenko_tip_deflection(beam, s.beam_load);
   out.bending_only = euler_bernoulli_tip_deflection(beam, s.beam_load);
 
+  const int total = static_cast<int>(s.levels.size());
+  if (progress) progress(0, total);
   for (int level : s.levels) {
     ModelSpec refined = spec;
     refined.mesh.mapped.nx *= level;
@@ -43,6 +46,7 @@ RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStu
     row.assembly_seconds = sol.assembly_seconds;
     row.solve_seconds = sol.solve_seconds;
     out.rows.push_back(row);
+    if (progress) progress(static_cast<int>(out.rows.size()), total);
   }
   // Observed order from three consecutive levels: p = log(d_{k-1} / d_k) / log(r), d_k = u_k - u_{k-1}.
   for (size_t k = 2; k < out.rows.size(); ++k) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "model/model_spec.hpp"
+#include "study/study_progress.hpp"
 #include "study/study_spec.hpp"
 
 namespace bb {
@@ -29,6 +30,7 @@ struct RefinementResult {
   double extrapolation_order = 0.0;  // order used for it
 };
 
-RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStudySpec& study);
+RefinementResult run_refinement_study(const ModelSpec& spec, const RefinementStudySpec& study,
+                                      const StudyProgress& progress = {});
 
 }  // namespace bb

@@ -9,7 +9,8 @@
 
 namespace bb {
 
-ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model) {
+ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model,
+                          const StudyProgress& progress) {
   FrfSpec frf = spec;
   frf.pairs.reset();  // the study compares frequencies by index: no labels
   frf.force_levels.clear();
@@ -24,7 +25,9 @@ ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const 
       frf.roms.push_back(rom);
       set_of_variant.push_back(set);
     }
+  if (progress) progress(0, 1);
   const FrfOutcome o = run_frf(model, frf);
+  if (progress) progress(1, 1);
   const Eigen::VectorXd& full = o.full_modal->frequencies_hz;
   const ResultTable& full_peaks = o.tables.at("peaks_full");
   const double n_frequencies = static_cast<double>(o.sweep.frequency_hz.size());

@@ -5,6 +5,7 @@
 #include "analysis/frf_spec.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
+#include "study/study_progress.hpp"
 #include "study/study_spec.hpp"
 
 namespace bb {
@@ -13,6 +14,8 @@ namespace bb {
 // max_freq_error, rms_freq_error (first compare_modes, by index), peak_freq_error,
 // peak_amp_error (first peak of each response, the worst), reduction_s, solve_us_per_frequency;
 // text column master_set.
-ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model);
+// `progress` hears of the start and the end only: the variants share one sweep.
+ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model,
+                          const StudyProgress& progress = {});
 
 }  // namespace bb

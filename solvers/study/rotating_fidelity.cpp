@@ -81,15 +81,23 @@ double relative(double value, double reference) {
 }  // namespace
 
 ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& spec,
-                                        const RotatingFidelityStudySpec& study) {
+                                        const RotatingFidelityStudySpec& study, const StudyProgress& progress) {
+  // static, linear, one per basis size, and the nodal reference
+  const int total = 3 + static_cast<int>(study.basis_modes.size());
   std::vector<Level> levels;
+  const auto done = [&] {
+    if (progress) progress(static_cast<int>(levels.size()), total);
+  };
+  if (progress) progress(0, total);
   levels.push_back(static_level(model, spec));
+  done();
   RotatingSpec linear = spec;
   linear.stiffening = false;
   linear.compare_stiffening = false;
   linear.modal_basis = true;
   linear.basis_modes = *std::max_element(study.basis_modes.begin(), study.basis_modes.end());
   levels.push_back(time_level(model, linear, fmt::format("no stiffening, {} modes", linear.basis_modes)));
+  done();
   for (int n : study.basis_modes) {
     RotatingSpec modal = spec;
     modal.stiffening = true;
@@ -97,12 +105,14 @@ ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& 
     modal.modal_basis = true;
     modal.basis_modes = n;
     levels.push_back(time_level(model, modal, fmt::format("stiffening, {} modes", n)));
+    done();
   }
   RotatingSpec nodal = spec;
   nodal.stiffening = true;
   nodal.compare_stiffening = false;
   nodal.modal_basis = false;
   levels.push_back(time_level(model, nodal, "stiffening, every free DOF (reference)"));
+  done();
   const Level& ref = levels.back();
   // The compared components: the largest mean and the largest motion of the reference.
   Eigen::Index mean_dir = 0, motion_dir = 0;

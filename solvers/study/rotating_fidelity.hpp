@@ -5,6 +5,7 @@
 #include "analysis/rotating_spec.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
+#include "study/study_progress.hpp"
 #include "study/study_spec.hpp"
 
 namespace bb {
@@ -15,6 +16,6 @@ namespace bb {
 // displacement component, its largest |u| over the run, and the frequency of the first rotating mode
 // (measured on the run's histories; the static level's from the rotating eigenproblem).
 ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& spec,
-                                        const RotatingFidelityStudySpec& study);
+                                        const RotatingFidelityStudySpec& study, const StudyProgress& progress = {});
 
 }  // namespace bb

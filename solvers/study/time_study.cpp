@@ -6,13 +6,16 @@
 
 namespace bb {
 
-ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const TimeStepStudySpec& study) {
+ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const TimeStepStudySpec& study,
+                                const StudyProgress& progress) {
   struct Variant {
     int steps;
     double tolerance;
     TimeOutcome outcome;
   };
   std::vector<Variant> variants;
+  const int total = static_cast<int>(study.steps_per_period.size() * study.steady_tolerances.size());
+  if (progress) progress(0, total);
   for (int n : study.steps_per_period)
     for (double t : study.steady_tolerances) {
       TimeSpec s = spec;
@@ -23,6 +26,7 @@ ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const 
       s.require_steady_peaks = false;  // a coarse variant's unsteady peak is the error this study measures
       s.system.force_levels = {spec.system.force_levels.front()};
       variants.push_back({n, t, run_time(model, s)});
+      if (progress) progress(static_cast<int>(variants.size()), total);
     }
   // The reference: most steps per period, then the smallest tolerance.
   const auto ref = std::max_element(variants.begin(), variants.end(), [](const Variant& a, const Variant& b) {

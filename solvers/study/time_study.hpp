@@ -4,6 +4,7 @@
 #pragma once
 #include "analysis/time_analysis.hpp"
 #include "results/table.hpp"
+#include "study/study_progress.hpp"
 #include "study/study_spec.hpp"
 
 namespace bb {
@@ -11,6 +12,7 @@ namespace bb {
 // One row per variant: key "variant" (1-based); columns steps_per_period, steady_tolerance, then
 // per peak kind <k>_hz_error, <k>_amp_error (first level, relative to the finest variant),
 // max_amp_error (first response over the grid), steps, mean_cycles, not_steady, seconds.
-ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const TimeStepStudySpec& study);
+ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const TimeStepStudySpec& study,
+                                const StudyProgress& progress = {});
 
 }  // namespace bb

@@ -11,7 +11,7 @@ if [ -z "$browser" ]; then
   exit 1
 fi
 rm -rf "$work" && mkdir -p "$work"
-"$bin" run "$case_file" --out "$work/report" >/dev/null
+"$bin" run "$case_file" --out "$work/report" --no-cache >/dev/null
 page=$work/report/report.html
 [ -s "$page" ] || { echo "FAIL: no report.html in $work/report" >&2; exit 1; }
 expected=$(grep -o '!\[' "$work/report/report.md" | wc -l)

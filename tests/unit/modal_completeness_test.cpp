@@ -113,7 +113,9 @@ TEST(ModalCompleteness, UncheckedLanczosMissesAMemberOfAPairThatTheCountCatches)
     const ModalSolution checked = lowest_modes(p.free.stiffness, p.free.mass, o);
     missed += wrong ? 1 : 0;
     rerun += checked.lanczos_runs > 1 ? 1 : 0;
-    if (wrong) EXPECT_GT(checked.lanczos_runs, 1) << "n = " << n << ": a missed mode went unnoticed";
+    if (wrong) {
+      EXPECT_GT(checked.lanczos_runs, 1) << "n = " << n << ": a missed mode went unnoticed";
+    }
   }
   std::printf("  requested counts 4..24: %d unchecked runs miss a mode, %d checked runs needed a second Lanczos run\n",
               missed, rerun);

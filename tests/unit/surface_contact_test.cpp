@@ -114,7 +114,7 @@ TEST_P(ContactPatch, InterferenceGivesTheSeriesSpringForceAndAUniformPressure) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Elements, ContactPatch, ::testing::Values(ElementType::hex8, ElementType::hex20),
-                         [](const auto& info) { return std::string(element_name(info.param)); });
+                         [](const auto& test_info) { return std::string(element_name(test_info.param)); });
 
 // The stiffening law: its pressure is the energy's derivative and its tangent the pressure's, it starts
 // with the penalty's slope, and two blocks pressed by a deep interference settle where the law and

@@ -7,10 +7,14 @@
 // reported, removed and rebuilt. A lock file per entry makes a second process that wants the same
 // entry wait for the first to store it instead of computing it too.
 #pragma once
+#include <nlohmann/json.hpp>
+
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cache/content_key.hpp"
@@ -68,5 +72,54 @@ class CacheEntry {
   int lock_fd_ = -1;
   std::string note_;
 };
+
+// The protocol every kind of entry follows. With the cache off, `build()` runs, timed. Otherwise
+// the entry keyed by `kind`, the program and what `fill_key(ContentKey&)` adds is locked and looked
+// up: `decode(json)` turns a sound entry back into the result (and throws on one that does not
+// fit the model, which is then discarded and rebuilt); failing that, `build()` runs, timed, and
+// `encode(result)` (json) is stored with its build time when that was long enough. `use` says what
+// happened; `use.build_seconds` is the build time, here or in the run that stored the entry.
+template <class Result, class FillKey, class Build, class Encode, class Decode>
+Result through_model_cache(std::string_view kind, FillKey fill_key, Build build, Encode encode, Decode decode,
+                           CacheUse& use) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds_since = [](Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  };
+  auto t0 = Clock::now();
+  if (!model_cache_settings()) {
+    Result result = build();
+    use.outcome = CacheUse::Outcome::off;
+    use.build_seconds = seconds_since(t0);
+    return result;
+  }
+  ContentKey key(kind);
+  key.add(program_fingerprint());
+  fill_key(key);
+  CacheEntry entry(key);
+  t0 = Clock::now();
+  if (const auto payload = entry.load()) {
+    try {
+      const nlohmann::json j = nlohmann::json::from_cbor(*payload);
+      Result result = decode(j.at("result"));
+      use.outcome = CacheUse::Outcome::loaded;
+      use.build_seconds = j.at("build_seconds").template get<double>();
+      use.seconds = seconds_since(t0);
+      return result;
+    } catch (const std::exception& e) {
+      entry.discard(e.what());
+    }
+  }
+  t0 = Clock::now();
+  Result result = build();
+  use.build_seconds = seconds_since(t0);
+  t0 = Clock::now();
+  const nlohmann::json j = {{"build_seconds", use.build_seconds}, {"result", encode(result)}};
+  const bool stored = entry.store(nlohmann::json::to_cbor(j), use.build_seconds);
+  use.seconds = seconds_since(t0);
+  use.outcome = stored ? CacheUse::Outcome::stored : CacheUse::Outcome::not_stored;
+  use.note = entry.note();
+  return result;
+}
 
 }  // namespace bb

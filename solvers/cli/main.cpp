@@ -89,10 +89,11 @@ struct RunArgs {
 
 // --fidelity on run and validate: the case's settings unless asked (see cases/README.md, "Fidelity").
 void add_fidelity_option(CLI::App* app, bb::FidelityMode& mode) {
-  static const std::map<std::string, bb::FidelityMode> modes = {{"fixed", bb::FidelityMode::fixed},
-                                                                 {"fast", bb::FidelityMode::fast},
-                                                                 {"auto", bb::FidelityMode::automatic},
-                                                                 {"reference", bb::FidelityMode::reference}};
+  static const std::map<std::string, bb::FidelityMode> modes = [] {
+    std::map<std::string, bb::FidelityMode> m;
+    for (bb::FidelityMode each : bb::kFidelityModes) m.emplace(bb::fidelity_mode_name(each), each);
+    return m;
+  }();
   app->add_option("--fidelity", mode,
                   "fixed: the case's own settings (default); fast / reference: the cheapest / finest level of every "
                   "[fidelity] axis; auto: the cheapest levels whose estimated error meets the [fidelity] target")
@@ -124,24 +125,10 @@ struct ValidateArgs {
   int jobs = 1;
 };
 
-std::string fidelity_word(bb::FidelityMode mode) {
-  switch (mode) {
-    case bb::FidelityMode::fixed:
-      return "fixed";
-    case bb::FidelityMode::fast:
-      return "fast";
-    case bb::FidelityMode::automatic:
-      return "auto";
-    case bb::FidelityMode::reference:
-      return "reference";
-  }
-  return "fixed";
-}
-
 // `bladebench run` of one case as validate would run it in-process, for a child process.
 std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& file, const fs::path& out_dir) {
   std::vector<std::string> c = {fs::read_symlink("/proc/self/exe").string(), "run", file.string(), "--out",
-                                out_dir.string(), "--fidelity", fidelity_word(a.fidelity)};
+                                out_dir.string(), "--fidelity", bb::fidelity_mode_name(a.fidelity)};
   if (a.study) c.emplace_back("--study");
   if (a.no_plots) c.emplace_back("--no-plots");
   if (const auto& cache = bb::model_cache_settings()) {

@@ -43,7 +43,7 @@ HbmProgress terminal_progress() {
 // fails when the estimated error misses the target.
 void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityChoice& choice, const fs::path& out,
                      bool plots, RunRecord& run) {
-  const char* mode_name = mode == FidelityMode::automatic ? "auto" : mode == FidelityMode::fast ? "fast" : "reference";
+  const char* mode_name = fidelity_mode_name(mode);
   run.fidelity = fmt::format("{}: {}", mode_name, choice.settings);
   if (mode == FidelityMode::automatic) run.fidelity += fmt::format(" (est. {:.2g})", choice.estimated_error);
   run.facts.emplace_back("fidelity", fmt::format("--fidelity {}: {}", mode_name, choice.settings));

@@ -28,6 +28,23 @@ struct FidelityAxisSpec {
 // How a run picks its settings: the case's own (fixed), the cheapest or the finest level of every
 // axis, or the cheapest combination whose estimated error meets the target (automatic).
 enum class FidelityMode { fixed, fast, automatic, reference };
+inline constexpr FidelityMode kFidelityModes[] = {FidelityMode::fixed, FidelityMode::fast, FidelityMode::automatic,
+                                                  FidelityMode::reference};
+
+// The word `--fidelity` takes for `mode`, as reports show it.
+constexpr const char* fidelity_mode_name(FidelityMode mode) {
+  switch (mode) {
+    case FidelityMode::fixed:
+      return "fixed";
+    case FidelityMode::fast:
+      return "fast";
+    case FidelityMode::automatic:
+      return "auto";
+    case FidelityMode::reference:
+      return "reference";
+  }
+  return "fixed";
+}
 
 struct FidelitySpec {
   double target = 0.0;               // largest estimated relative error of the compared columns

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "cache/content_key.hpp"
@@ -73,12 +74,21 @@ class CacheEntry {
   std::string note_;
 };
 
+namespace detail {
+template <class T>
+struct IsOptional : std::false_type {};
+template <class T>
+struct IsOptional<std::optional<T>> : std::true_type {};
+}  // namespace detail
+
 // The protocol every kind of entry follows. With the cache off, `build()` runs, timed. Otherwise
 // the entry keyed by `kind`, the program and what `fill_key(ContentKey&)` adds is locked and looked
 // up: `decode(json)` turns a sound entry back into the result (and throws on one that does not
-// fit the model, which is then discarded and rebuilt); failing that, `build()` runs, timed, and
-// `encode(result)` (json) is stored with its build time when that was long enough. `use` says what
-// happened; `use.build_seconds` is the build time, here or in the run that stored the entry.
+// fit the model, which is then discarded and rebuilt); a `decode` that returns std::optional may
+// answer nullopt for a sound entry that does not cover this request (fewer modes than asked), which
+// is then rebuilt and replaced. Failing that, `build()` runs, timed, and `encode(result)` (json) is
+// stored with its build time when that was long enough. `use` says what happened;
+// `use.build_seconds` is the build time, here or in the run that stored the entry.
 template <class Result, class FillKey, class Build, class Encode, class Decode>
 Result through_model_cache(std::string_view kind, FillKey fill_key, Build build, Encode encode, Decode decode,
                            CacheUse& use) {
@@ -101,11 +111,17 @@ Result through_model_cache(std::string_view kind, FillKey fill_key, Build build,
   if (const auto payload = entry.load()) {
     try {
       const nlohmann::json j = nlohmann::json::from_cbor(*payload);
-      Result result = decode(j.at("result"));
-      use.outcome = CacheUse::Outcome::loaded;
-      use.build_seconds = j.at("build_seconds").template get<double>();
-      use.seconds = seconds_since(t0);
-      return result;
+      std::optional<Result> result;
+      if constexpr (detail::IsOptional<decltype(decode(j.at("result")))>::value)
+        result = decode(j.at("result"));
+      else
+        result.emplace(decode(j.at("result")));
+      if (result) {
+        use.outcome = CacheUse::Outcome::loaded;
+        use.build_seconds = j.at("build_seconds").template get<double>();
+        use.seconds = seconds_since(t0);
+        return std::move(*result);
+      }
     } catch (const std::exception& e) {
       entry.discard(e.what());
     }

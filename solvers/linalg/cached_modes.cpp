@@ -1,5 +1,6 @@
 #include "linalg/cached_modes.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "cache/cbor_matrix.hpp"
@@ -11,11 +12,14 @@ ModalSolution cached_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, 
                                   const ModalOptions& options, CacheUse* use) {
   using nlohmann::json;
   CacheUse local;
-  return through_model_cache<ModalSolution>(
+  CacheUse& used = use ? *use : local;
+  std::string subset;
+  ModalSolution result = through_model_cache<ModalSolution>(
       "modes",
       [&](ContentKey& key) {
         key.add(stiffness).add(mass);
-        key.add(std::int64_t{options.n_modes}).add(options.shift_frequency_hz).add(std::int64_t{options.max_iterations});
+        // Not the number of modes: an entry holding more serves a request for fewer (leading_modes).
+        key.add(options.shift_frequency_hz).add(std::int64_t{options.max_iterations});
         key.add(options.tolerance).add(std::int64_t{options.subspace_size});
         key.add(std::int64_t{static_cast<int>(options.ordering)}).add(std::int64_t{options.verify_count});
         key.add(options.cluster_tolerance).add(std::int64_t{options.max_reruns});
@@ -36,8 +40,7 @@ ModalSolution cached_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, 
         ModalSolution s;
         s.eigenvalues = matrix_from_json(j.at("eigenvalues"));
         s.shapes = matrix_from_json(j.at("shapes"));
-        if (s.shapes.rows() != stiffness.rows() || s.shapes.cols() != s.eigenvalues.size() ||
-            s.eigenvalues.size() < options.n_modes)
+        if (s.shapes.rows() != stiffness.rows() || s.shapes.cols() != s.eigenvalues.size())
           throw std::runtime_error("its sizes do not match the model");
         s.iterations = j.at("iterations").get<int>();
         s.converged_modes = j.at("converged_modes").get<int>();
@@ -46,9 +49,14 @@ ModalSolution cached_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, 
         s.sturm_shift = j.at("sturm_shift").get<double>();
         s.lanczos_runs = j.at("lanczos_runs").get<int>();
         s.sturm_seconds = j.at("sturm_seconds").get<double>();
-        return s;
+        std::optional<ModalSolution> wanted = leading_modes(s, options);
+        if (wanted && wanted->eigenvalues.size() < s.eigenvalues.size())
+          subset = fmt::format("the lowest {} of {} stored modes", wanted->eigenvalues.size(), s.eigenvalues.size());
+        return wanted;
       },
-      use ? *use : local);
+      used);
+  if (used.outcome == CacheUse::Outcome::loaded) used.note = subset;
+  return result;
 }
 
 }  // namespace bb

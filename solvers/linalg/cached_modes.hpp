@@ -1,6 +1,7 @@
 // lowest_modes() through the model cache (cache/model_cache.hpp): the modes of the two-blade mesh,
-// solved for Table VI and again for Table IX's full model, are computed once. The key is K, M,
-// every modal option and the program itself.
+// solved for Table VI (20) and for Tables VIII-IX's full model (24), are computed once. The key is
+// K, M, every modal option but the number of modes, and the program itself: an entry holding more
+// modes serves a request for fewer; one holding fewer is replaced by the larger solution.
 #pragma once
 #include "cache/model_cache.hpp"
 #include "linalg/modal_solver.hpp"

@@ -167,4 +167,15 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
   }
 }
 
+std::optional<ModalSolution> leading_modes(const ModalSolution& sol, const ModalOptions& options) {
+  const int n = options.n_modes;
+  if (n < 1 || sol.eigenvalues.size() < n) return std::nullopt;
+  const std::optional<double> cut =
+      options.verify_count ? count_shift(sol.eigenvalues, n, options.cluster_tolerance) : std::nullopt;
+  if (!cut) return first_modes(sol, n);
+  if (sol.sturm_count < 0 || *cut > sol.sturm_shift) return std::nullopt;
+  // The count of the larger solution proves the leading ones complete too, so it is kept.
+  return first_modes(sol, std::max(n, static_cast<int>((sol.eigenvalues.array() <= *cut).count())));
+}
+
 }  // namespace bb

@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <optional>
+
 #include "linalg/spd_factor.hpp"
 
 namespace bb {
@@ -45,5 +47,10 @@ struct ModalSolution {
 // be factored, or the Sturm count still disagrees after max_reruns larger runs.
 ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                            const ModalOptions& options);
+
+// What lowest_modes would return for `options` (the lowest n, a straddling cluster whole), taken
+// from a solution of the same problem that holds more modes; nullopt when `sol` cannot prove them
+// complete: fewer modes than asked, or a cut above the shift of its Sturm count.
+std::optional<ModalSolution> leading_modes(const ModalSolution& sol, const ModalOptions& options);
 
 }  // namespace bb

@@ -22,7 +22,8 @@ void describe_cache(const std::string& what, const CacheUse& u, RunRecord& run) 
       use = u.note.empty() ? "off" : u.note;
       break;
     case CacheUse::Outcome::loaded:
-      use = fmt::format("loaded in {:.2f} s (computed by an earlier run in {:.2f} s)", u.seconds, u.build_seconds);
+      use = fmt::format("loaded in {:.2f} s (computed by an earlier run in {:.2f} s{})", u.seconds, u.build_seconds,
+                        u.note.empty() ? "" : "; " + u.note);
       break;
     case CacheUse::Outcome::stored:
       use = fmt::format("computed here in {:.2f} s and stored in {:.2f} s", u.build_seconds, u.seconds);

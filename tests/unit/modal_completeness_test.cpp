@@ -136,6 +136,34 @@ TEST(ModalCompleteness, APairThatStraddlesTheCountIsReturnedWhole) {
   EXPECT_NEAR(s.eigenvalues[straddle], s.eigenvalues[straddle - 1], 1e-8 * s.eigenvalues[straddle]);
 }
 
+// A larger verified solution serves a smaller request (the model cache does this) exactly as a run
+// for that request would: the straddling pair whole, and nothing beyond what its count proves.
+TEST(ModalCompleteness, LeadingModesOfALargerSolutionFollowTheSameRules) {
+  const PlateSystem& p = plate();
+  int straddle = 0;
+  for (Eigen::Index k = 1; k < p.reference.size() && straddle == 0; ++k)
+    if (p.reference[k] - p.reference[k - 1] < 1e-8 * p.reference[k] && k >= 3) straddle = static_cast<int>(k);
+  ASSERT_GT(straddle, 0);
+  ModalOptions o;
+  o.n_modes = straddle + 4;
+  o.ordering = FillOrdering::metis;
+  const ModalSolution large = lowest_modes(p.free.stiffness, p.free.mass, o);
+  o.n_modes = straddle;
+  const std::optional<ModalSolution> served = leading_modes(large, o);
+  ASSERT_TRUE(served.has_value());
+  const ModalSolution direct = lowest_modes(p.free.stiffness, p.free.mass, o);
+  ASSERT_EQ(served->eigenvalues.size(), direct.eigenvalues.size());  // straddle + 1: the pair whole
+  for (Eigen::Index k = 0; k < direct.eigenvalues.size(); ++k)
+    EXPECT_NEAR(served->eigenvalues[k], direct.eigenvalues[k], 1e-9 * direct.eigenvalues[k]);
+  EXPECT_EQ(served->sturm_count, large.sturm_count);
+  o.n_modes = static_cast<int>(large.eigenvalues.size()) + 1;
+  EXPECT_FALSE(leading_modes(large, o).has_value());  // more than it holds
+  ModalSolution unproven = large;
+  unproven.sturm_shift = 0.5 * large.eigenvalues[straddle - 1];
+  o.n_modes = straddle;
+  EXPECT_FALSE(leading_modes(unproven, o).has_value());  // a cut above its count's shift
+}
+
 TEST(ModalCompleteness, ABandIsSizedByTheSturmCount) {
   const PlateSystem& p = plate();
   const Model model = square_plate();

@@ -164,8 +164,18 @@ TEST_F(ModelCache, ModesComeBackBitForBitWithTheirCompletenessCount) {
   EXPECT_GE(b.sturm_count, 5);
   options.n_modes = 6;
   CacheUse third;
-  cached_lowest_modes(k_, m_, options, &third);
-  EXPECT_EQ(third.outcome, CacheUse::Outcome::stored);
+  const ModalSolution six = cached_lowest_modes(k_, m_, options, &third);
+  EXPECT_EQ(third.outcome, CacheUse::Outcome::stored);  // five stored modes cannot serve six
+  // Fewer modes than stored: the leading ones of the larger solution, said so in the note.
+  options.n_modes = 4;
+  CacheUse fourth;
+  const ModalSolution four = cached_lowest_modes(k_, m_, options, &fourth);
+  EXPECT_EQ(fourth.outcome, CacheUse::Outcome::loaded);
+  EXPECT_EQ(fourth.note, "the lowest 4 of 6 stored modes");
+  ASSERT_EQ(four.eigenvalues.size(), 4);
+  EXPECT_EQ(four.eigenvalues, six.eigenvalues.head(4));
+  EXPECT_EQ(four.shapes, six.shapes.leftCols(4));
+  EXPECT_EQ(four.sturm_count, six.sturm_count);
 }
 
 TEST_F(ModelCache, OffWritesNothing) {

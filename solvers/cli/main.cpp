@@ -73,6 +73,15 @@ int guarded(const std::function<int()>& body) {
   }
 }
 
+int html_command(const std::string& folder) {
+  const std::vector<fs::path> pages = bb::write_html_twins(folder);
+  if (pages.empty())
+    throw bb::InputError(fmt::format("{}: no report.md or index.md under this folder", bb::printable(folder)));
+  std::printf("%zu pages written (report.html / index.html beside each report.md / index.md under %s)\n",
+              pages.size(), bb::printable(folder).c_str());
+  return 0;
+}
+
 // Files under a "data" folder are inputs of cases (CSV meshes, reduced-model sidecars), not cases.
 bool in_data_folder(const fs::path& file, const fs::path& root) {
   for (const auto& part : fs::relative(file.parent_path(), root))
@@ -500,6 +509,11 @@ int main(int argc, char** argv) {
   export_ccx->add_option("--modes", export_args.modes, "Modes to ask for (default: the case's analysis.modes)")
       ->check(CLI::PositiveNumber);
 
+  std::string html_folder;
+  CLI::App* html = app.add_subcommand(
+      "html", "Write report.html beside every report.md and index.md under a folder (reports from an older build)");
+  html->add_option("DIR", html_folder, "Report folder, searched recursively")->required()->check(CLI::ExistingDirectory);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -514,6 +528,7 @@ int main(int argc, char** argv) {
     return synthesize_command(synth);
   }
   if (*export_ccx) return export_command(export_args);
+  if (*html) return guarded([&] { return html_command(html_folder); });
   if (*run) return guarded([&] { return run_command(run_args); });
   return guarded([&] { return validate_command(validate_args); });
 }

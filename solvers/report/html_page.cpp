@@ -3,6 +3,7 @@
 #include <cmark-gfm-core-extensions.h>
 #include <cmark-gfm.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -146,6 +147,16 @@ void write_html_twin(const fs::path& markdown_file) {
   fs::path html_file = markdown_file;
   html_file.replace_extension(".html");
   write_file_atomically(html_file, html_page(read_bytes(markdown_file), markdown_file.parent_path()));
+}
+
+std::vector<fs::path> write_html_twins(const fs::path& folder) {
+  std::vector<fs::path> pages;
+  for (const auto& e : fs::recursive_directory_iterator(folder))
+    if (e.is_regular_file() && (e.path().filename() == "report.md" || e.path().filename() == "index.md"))
+      pages.push_back(e.path());
+  std::sort(pages.begin(), pages.end());
+  for (const fs::path& md : pages) write_html_twin(md);
+  return pages;
 }
 
 }  // namespace bb

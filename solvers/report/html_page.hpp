@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace bb {
 
@@ -21,5 +22,9 @@ std::string html_page(const std::string& markdown, const std::filesystem::path& 
 
 // Writes `<markdown_file minus .md>.html` beside `markdown_file`, atomically.
 void write_html_twin(const std::filesystem::path& markdown_file);
+
+// The HTML twin of every report.md and index.md under `folder` (reports written before their
+// pages were, or edited by hand); returns the Markdown files rendered, in path order.
+std::vector<std::filesystem::path> write_html_twins(const std::filesystem::path& folder);
 
 }  // namespace bb

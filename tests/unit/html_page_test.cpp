@@ -64,5 +64,17 @@ TEST_F(HtmlPage, TwinIsWrittenBesideTheMarkdown) {
   EXPECT_NE(text.find("<td>pass</td>"), std::string::npos);
 }
 
+TEST_F(HtmlPage, EveryReportUnderAFolderGetsItsPage) {
+  write("# Index\n\n[a](a/report.md)\n", "index.md");
+  std::filesystem::create_directories(dir_ / "a");
+  write("# A\n", "a/report.md");
+  write("# notes, not a report\n", "a/notes.md");
+  const auto pages = write_html_twins(dir_);
+  ASSERT_EQ(pages.size(), 2u);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "index.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "a" / "report.html"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "a" / "notes.html"));
+}
+
 }  // namespace
 }  // namespace bb

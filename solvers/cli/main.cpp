@@ -22,6 +22,7 @@
 #include "cache/model_cache.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
+#include "common/progress_clock.hpp"
 #include "common/user_text.hpp"
 #include "identify/synthetic_data.hpp"
 #include "identify/uff58.hpp"
@@ -304,12 +305,18 @@ int calibrate_command(const CalibrateArgs& a) {
     bb::StagedFolder stage(out);
     bb::FitProgress progress;
     int last_start = 0;
+    std::optional<bb::ProgressClock> clock;  // over the iterations the cap allows, every start
     if (isatty(STDERR_FILENO))
       progress = [&](const bb::FitIteration& s) {
         if (last_start != 0 && s.start != last_start) std::fputc('\n', stderr);
         last_start = s.start;
-        std::fprintf(stderr, "\r  calibration: start %d of %d, iteration %3d  cost %.6e  |gradient| %.3e  step %s   ",
-                     s.start, s.starts, s.iteration, s.cost, s.gradient_max_norm, s.accepted ? "accepted" : "rejected");
+        if (!clock) clock.emplace(s.starts * (s.max_iterations + 1));
+        clock->finished((s.start - 1) * (s.max_iterations + 1) + s.iteration + 1);
+        std::fprintf(stderr,
+                     "\r\033[K  calibration: start %d of %d, iteration %3d of at most %d  cost %.6e  |gradient| %.3e  "
+                     "step %s  %s",
+                     s.start, s.starts, s.iteration, s.max_iterations, s.cost, s.gradient_max_norm,
+                     s.accepted ? "accepted" : "rejected", clock->bound().c_str());
       };
     const bb::CalibrationOutcome o = bb::calibrate_case(a.case_file, progress);
     if (last_start != 0) std::fputc('\n', stderr);

@@ -18,14 +18,24 @@ class ProgressClock {
   // "3 of 15 done, about 40 s left"; "1 of 15 running" before any is done.
   std::string status() const {
     if (done_ <= 0 || total_ <= 0) return fmt::format("1 of {} running", total_);
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double left = elapsed / done_ * (total_ - done_);
-    const std::string time = left >= 120 ? fmt::format("{:.0f} min", left / 60) : fmt::format("{:.0f} s", left);
     return done_ >= total_ ? fmt::format("{} of {} done", done_, total_)
-                           : fmt::format("{} of {} done, about {} left", done_, total_, time);
+                           : fmt::format("{} of {} done, about {} left", done_, total_, time_left());
+  }
+
+  // For loops that may stop early (an optimizer's iterations against its cap): "at most 3 min
+  // left", the time per item so far times the items the cap still allows; empty before any item.
+  std::string bound() const {
+    if (done_ <= 0 || total_ <= 0 || done_ >= total_) return {};
+    return fmt::format("at most {} left", time_left());
   }
 
  private:
+  std::string time_left() const {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double left = elapsed / done_ * (total_ - done_);
+    return left >= 120 ? fmt::format("{:.0f} min", left / 60) : fmt::format("{:.0f} s", left);
+  }
+
   int total_ = 0, done_ = 0;
   std::chrono::steady_clock::time_point start_;
 };

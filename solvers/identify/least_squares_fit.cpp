@@ -74,18 +74,20 @@ class AnalyticResidual : public ceres::CostFunction {
 
 class IterationTrace : public ceres::IterationCallback {
  public:
-  IterationTrace(const FitProgress& progress, std::vector<std::pair<int, double>>& history, int start, int starts)
-      : progress_(progress), history_(history), start_(start), starts_(starts) {}
+  IterationTrace(const FitProgress& progress, std::vector<std::pair<int, double>>& history, int start, int starts,
+                 int max_iterations)
+      : progress_(progress), history_(history), start_(start), starts_(starts), max_iterations_(max_iterations) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     history_.emplace_back(s.iteration, s.cost);
-    if (progress_) progress_({start_, starts_, s.iteration, s.cost, s.gradient_max_norm, s.step_is_successful});
+    if (progress_)
+      progress_({start_, starts_, s.iteration, max_iterations_, s.cost, s.gradient_max_norm, s.step_is_successful});
     return ceres::SOLVER_CONTINUE;
   }
 
  private:
   const FitProgress& progress_;
   std::vector<std::pair<int, double>>& history_;
-  int start_, starts_;
+  int start_, starts_, max_iterations_;
 };
 
 // The spec's values, then starts - 1 points of a Latin hypercube in log space within the bounds.
@@ -217,7 +219,8 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     ceres::Problem problem;
     build(xs, problem);
     std::vector<std::pair<int, double>> history;
-    IterationTrace trace(progress, history, static_cast<int>(s + 1), static_cast<int>(starts.size()));
+    IterationTrace trace(progress, history, static_cast<int>(s + 1), static_cast<int>(starts.size()),
+                         cal.max_iterations);
     ceres::Solver::Options o = options;
     o.callbacks.push_back(&trace);
     ceres::Solver::Summary summary;

@@ -16,7 +16,7 @@ using FitEvaluator = std::function<std::vector<FitPoint>(const std::vector<doubl
 
 // One line of progress per trust-region iteration; the caller decides where it goes.
 struct FitIteration {
-  int start = 0, starts = 0, iteration = 0;
+  int start = 0, starts = 0, iteration = 0, max_iterations = 0;
   double cost = 0.0, gradient_max_norm = 0.0;
   bool accepted = false;
 };

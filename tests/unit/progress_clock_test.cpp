@@ -19,6 +19,17 @@ TEST(ProgressClock, SaysWhichItemRunsThenHowManyAreDoneAndWhatIsLeft) {
   EXPECT_EQ(clock.status(), "4 of 4 done");
 }
 
+// An optimizer's iterations against its cap: the time left is a bound, said as one.
+TEST(ProgressClock, BoundIsSaidAsABoundAndOnlyOnceTimeIsKnown) {
+  ProgressClock clock(10);
+  EXPECT_EQ(clock.bound(), "");
+  clock.finished(3);
+  EXPECT_TRUE(clock.bound().starts_with("at most ")) << clock.bound();
+  EXPECT_TRUE(clock.bound().ends_with(" left")) << clock.bound();
+  clock.finished(10);
+  EXPECT_EQ(clock.bound(), "");
+}
+
 TEST(ProgressClock, AppendsItsStatusToEveryLineAndStaysSilentWithoutAReceiver) {
   ProgressClock clock(2);
   std::string seen;

@@ -340,8 +340,11 @@ struct PreparedFrf {
   double full_setup_seconds = 0.0;
 };
 
-std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec) {
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built) {
   auto p = std::make_shared<PreparedFrf>();
+  const int models = (spec.full_model ? 1 : 0) + static_cast<int>(spec.roms.size());
+  int done = 0;
+  if (built) built(done, models);
   // A model of matrices only has no mesh to assemble.
   FreeSystem system;
   if (model.mesh.n_nodes() > 0) system = assemble_free_system(model);
@@ -371,11 +374,13 @@ std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec
     for (const PointDof& d : spec.responses) outputs.push_back(d.name());
     p->curves.push_back({"full", outputs, p->columns});
     p->columns += static_cast<int>(outputs.size());
+    if (built) built(++done, models);
   }
   for (const RomSpec& rom : spec.roms) {
     p->roms.push_back(reduced_response(model, system, spec, rom));
     p->curves.push_back({rom.name, p->roms.back().outputs, p->columns});
     p->columns += static_cast<int>(p->roms.back().outputs.size());
+    if (built) built(++done, models);
   }
   return p;
 }
@@ -468,6 +473,8 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
   return o;
 }
 
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec) { return sweep_frf(*prepare_frf(model, spec), spec); }
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built) {
+  return sweep_frf(*prepare_frf(model, spec, built), spec);
+}
 
 }  // namespace bb

@@ -2,6 +2,7 @@
 // static residual of the truncated modes) and any number of reduced models (Craig-Bampton or
 // imported), swept over one frequency grid, with peaks and the modes they belong to.
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,8 +54,10 @@ Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& mo
 
 // The models of an analysis made ready to respond (modes, residual flexibility, reductions):
 // the expensive part, done once. Throws as run_frf.
+// `built(done, total)` follows the models (the full one, then each reduced one) as they are made.
 struct PreparedFrf;
-std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec);
+using ModelsBuilt = std::function<void(int done, int total)>;
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built = {});
 const std::vector<FrfCurveSet>& frf_curves(const PreparedFrf& prepared);
 // The outputs of model `curve` (an index into frf_curves) at one frequency, for the spec's forces.
 Eigen::VectorXcd frf_respond(const PreparedFrf& prepared, size_t curve, double frequency_hz);
@@ -63,6 +66,6 @@ FrfOutcome sweep_frf(const PreparedFrf& prepared, const FrfSpec& spec);
 
 // prepare_frf + sweep_frf. Throws InputError for points that are not one-node sets, constrained DOFs, masters that
 // repeat, responses or forces a reduced model does not hold; SolverError from the solvers.
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec);
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built = {});
 
 }  // namespace bb

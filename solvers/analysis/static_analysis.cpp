@@ -27,8 +27,7 @@ StaticSolution solve_static(const Model& model) {
   sol.assembly_seconds = seconds_since(t0);
   sol.n_free_dofs = dofs.n_free;
 
-  Eigen::VectorXd rhs(dofs.n_free);
-  for (int i = 0; i < dofs.n_free; ++i) rhs[i] = f[dofs.free_dofs[i]];
+  Eigen::VectorXd rhs = free_part(dofs, f);
   if (dofs.prescribed.size() > 0) rhs -= k.fc * dofs.prescribed;
 
   t0 = std::chrono::steady_clock::now();
@@ -49,10 +48,7 @@ StaticSolution solve_static(const Model& model) {
   sol.relative_residual = rhs_norm > 0 ? (k.ff * u_free - rhs).norm() / rhs_norm : (k.ff * u_free).norm();
   if (!u_free.allFinite()) throw SolverError("static solve produced non-finite displacements");
 
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs.n_global());
-  for (int i = 0; i < dofs.n_free; ++i) u[dofs.free_dofs[i]] = u_free[i];
-  for (size_t i = 0; i < dofs.constrained_dofs.size(); ++i)
-    u[dofs.constrained_dofs[i]] = dofs.prescribed[static_cast<Eigen::Index>(i)];
+  const Eigen::VectorXd u = to_global(dofs, u_free, true);
   Eigen::VectorXd r = Eigen::VectorXd::Zero(dofs.n_global());
   if (!dofs.constrained_dofs.empty()) {
     const Eigen::VectorXd ku = global.stiffness * u;

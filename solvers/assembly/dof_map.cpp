@@ -8,6 +8,21 @@
 
 namespace bb {
 
+Eigen::VectorXd free_part(const DofMap& dofs, const Eigen::VectorXd& global) {
+  Eigen::VectorXd out(dofs.n_free);
+  for (int i = 0; i < dofs.n_free; ++i) out[i] = global[dofs.free_dofs[static_cast<size_t>(i)]];
+  return out;
+}
+
+Eigen::VectorXd to_global(const DofMap& dofs, const Eigen::VectorXd& free, bool with_prescribed) {
+  Eigen::VectorXd all = Eigen::VectorXd::Zero(dofs.n_global());
+  for (int i = 0; i < dofs.n_free; ++i) all[dofs.free_dofs[static_cast<size_t>(i)]] = free[i];
+  if (with_prescribed)
+    for (size_t c = 0; c < dofs.constrained_dofs.size(); ++c)
+      all[dofs.constrained_dofs[c]] = dofs.prescribed[static_cast<Eigen::Index>(c)];
+  return all;
+}
+
 DofMap number_dofs(const Model& model) {
   DofMap map;
   map.dim = model.mesh.dim;

@@ -19,6 +19,12 @@ struct DofMap {
   int n_global() const { return static_cast<int>(equation.size()); }
 };
 
+// The free equations' entries of a vector over every nodal DOF.
+Eigen::VectorXd free_part(const DofMap& dofs, const Eigen::VectorXd& global);
+// A vector over every nodal DOF from the free equations' values: the constrained ones take their
+// prescribed values, or zero (an increment, a shape) when `with_prescribed` is false.
+Eigen::VectorXd to_global(const DofMap& dofs, const Eigen::VectorXd& free, bool with_prescribed);
+
 // Throws InputError when a constraint names an unknown set.
 DofMap number_dofs(const Model& model);
 

@@ -32,11 +32,6 @@ StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, c
   s.displacement = start.size() == n ? start : Eigen::VectorXd::Zero(n);
   for (size_t c = 0; c < dofs.constrained_dofs.size(); ++c)
     s.displacement[dofs.constrained_dofs[c]] = dofs.prescribed[static_cast<Eigen::Index>(c)];
-  auto free_part = [&](const Eigen::VectorXd& all) {
-    Eigen::VectorXd f(dofs.n_free);
-    for (int i = 0; i < dofs.n_free; ++i) f[i] = all[dofs.free_dofs[static_cast<size_t>(i)]];
-    return f;
-  };
   SpdFactorization factor(FillOrdering::metis);
   // Outer: the status. Inner: Newton on the smooth convex energy of that status, with a backtracking
   // line search (one step when the normal law is linear, the energy then quadratic).
@@ -46,12 +41,12 @@ StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, c
       const Eigen::VectorXd ku = stiffness * s.displacement;
       Eigen::VectorXd r_all = ku - contact_force(points, closed, penalty, initial_gap, s.displacement);
       if (external.size() != 0) r_all -= external;
-      const Eigen::VectorXd r = free_part(r_all);
+      const Eigen::VectorXd r = free_part(dofs, r_all);
       if (newton == 0) {
         // The linear law's force of the initial gaps: the exponential one at u = 0 would be astronomic.
-        force_scale = free_part(initial_gap_force(points, closed, penalty, initial_gap, n)).norm();
-        if (external.size() != 0) force_scale = std::max(force_scale, free_part(external).norm());
-        force_scale = std::max(force_scale, free_part(ku).norm());
+        force_scale = free_part(dofs, initial_gap_force(points, closed, penalty, initial_gap, n)).norm();
+        if (external.size() != 0) force_scale = std::max(force_scale, free_part(dofs, external).norm());
+        force_scale = std::max(force_scale, free_part(dofs, ku).norm());
       }
       if (r.norm() <= options.residual_tolerance * std::max(force_scale, 1e-300)) break;
       if (newton >= options.max_newton_iterations)
@@ -71,8 +66,7 @@ StaticContactSolution solve_step(const Eigen::SparseMatrix<double>& stiffness, c
                                       "needs every closed point sticking or a constraint",
                                       step, status.message));
       const Eigen::VectorXd du = -factor.solve(r);
-      Eigen::VectorXd du_all = Eigen::VectorXd::Zero(n);
-      for (int i = 0; i < dofs.n_free; ++i) du_all[dofs.free_dofs[static_cast<size_t>(i)]] = du[i];
+      const Eigen::VectorXd du_all = to_global(dofs, du, false);
       const double e0 = potential(ku, external, points, closed, penalty, initial_gap, s.displacement);
       const double slope = r.dot(du);
       double alpha = 1.0;

@@ -38,12 +38,6 @@ Eigen::MatrixXd translations(int n_nodes, int dim) {
   return e;
 }
 
-Eigen::VectorXd free_rows(const Eigen::VectorXd& all, const DofMap& dofs) {
-  Eigen::VectorXd out(dofs.n_free);
-  for (int i = 0; i < dofs.n_free; ++i) out[i] = all[dofs.free_dofs[static_cast<size_t>(i)]];
-  return out;
-}
-
 Eigen::MatrixXd axis_skew(const RotatingBody& body) {
   const Eigen::Vector3d& a = body.axis.direction;
   if (body.dim == 2) return a.z() * (Eigen::Matrix2d() << 0, -1, 1, 0).finished();
@@ -94,12 +88,12 @@ RotatingBody build_rotating_body(const Model& model, const RotationAxis& axis) {
 
   // f_c = integral rho S^T P (x - p): exact for isoparametric elements, S interpolating x.
   const Eigen::VectorXd mp_x = inertia.projected_mass * relative;
-  body.centrifugal_load = free_rows(mp_x, body.dofs);
-  body.euler_load = -free_rows(inertia.gyroscopic * relative, body.dofs);
+  body.centrifugal_load = free_part(body.dofs, mp_x);
+  body.euler_load = -free_part(body.dofs, inertia.gyroscopic * relative);
   const Eigen::MatrixXd e = translations(n_nodes, dim);
   const Eigen::MatrixXd me = inertia.mass * e;  // integral rho S^T dV per direction
   body.gravity_load.resize(body.dofs.n_free, dim);
-  for (int d = 0; d < dim; ++d) body.gravity_load.col(d) = free_rows(me.col(d), body.dofs);
+  for (int d = 0; d < dim; ++d) body.gravity_load.col(d) = free_part(body.dofs, me.col(d));
 
   body.mass_properties.mass = e.col(0).dot(me.col(0));
   body.mass_properties.first_moment = me.transpose() * relative;
@@ -126,15 +120,13 @@ Eigen::MatrixXd axis_rotation_derivative(const RotatingBody& body, double theta,
 }
 
 Eigen::VectorXd expand_to_global(const RotatingBody& body, const Eigen::VectorXd& free_values) {
-  Eigen::VectorXd all = Eigen::VectorXd::Zero(body.dofs.n_global());
-  for (int i = 0; i < body.dofs.n_free; ++i) all[body.dofs.free_dofs[static_cast<size_t>(i)]] = free_values[i];
-  return all;
+  return to_global(body.dofs, free_values, false);
 }
 
 Eigen::VectorXd restrict_to_free(const RotatingBody& body, const Eigen::VectorXd& global_values) {
   if (global_values.size() != body.dofs.n_global())
     throw std::invalid_argument("restrict_to_free: vector size is not the number of nodal DOFs");
-  return free_rows(global_values, body.dofs);
+  return free_part(body.dofs, global_values);
 }
 
 }  // namespace bb::ffrf

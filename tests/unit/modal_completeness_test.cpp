@@ -122,11 +122,16 @@ TEST(ModalCompleteness, UncheckedLanczosMissesAMemberOfAPairThatTheCountCatches)
   EXPECT_GT(missed, 0) << "this plate no longer exposes the defect: the test would pass without the count";
 }
 
+// The first n >= 3 such that modes n and n + 1 are a repeated pair; 0 when there is none.
+int first_straddling_count(const Eigen::VectorXd& reference) {
+  for (Eigen::Index k = 3; k < reference.size(); ++k)
+    if (reference[k] - reference[k - 1] < 1e-8 * reference[k]) return static_cast<int>(k);
+  return 0;
+}
+
 TEST(ModalCompleteness, APairThatStraddlesTheCountIsReturnedWhole) {
   const PlateSystem& p = plate();
-  int straddle = 0;  // n such that modes n and n + 1 are a repeated pair
-  for (Eigen::Index k = 1; k < p.reference.size() && straddle == 0; ++k)
-    if (p.reference[k] - p.reference[k - 1] < 1e-8 * p.reference[k] && k >= 3) straddle = static_cast<int>(k);
+  const int straddle = first_straddling_count(p.reference);
   ASSERT_GT(straddle, 0);
   ModalOptions o;
   o.n_modes = straddle;
@@ -140,9 +145,7 @@ TEST(ModalCompleteness, APairThatStraddlesTheCountIsReturnedWhole) {
 // for that request would: the straddling pair whole, and nothing beyond what its count proves.
 TEST(ModalCompleteness, LeadingModesOfALargerSolutionFollowTheSameRules) {
   const PlateSystem& p = plate();
-  int straddle = 0;
-  for (Eigen::Index k = 1; k < p.reference.size() && straddle == 0; ++k)
-    if (p.reference[k] - p.reference[k - 1] < 1e-8 * p.reference[k] && k >= 3) straddle = static_cast<int>(k);
+  const int straddle = first_straddling_count(p.reference);
   ASSERT_GT(straddle, 0);
   ModalOptions o;
   o.n_modes = straddle + 4;

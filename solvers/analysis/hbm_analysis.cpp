@@ -91,6 +91,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     row.push_back(level.path.converged ? 1.0 : 0.0);
     for (const HbmPeak& pk : level.peaks) row.push_back(pk.trusted ? 1.0 : 0.0);
     for (const HbmPeak& pk : level.peaks) row.push_back(pk.sampling_error);
+    for (const HbmPeak& pk : level.peaks) row.push_back(pk.truncation.largest());
+    row.push_back(static_cast<double>(level.harmonics));
     if (spec.stability != HbmSpec::Stability::none) {
       constexpr double nan = std::numeric_limits<double>::quiet_NaN();
       for (const HbmPeak& pk : level.peaks)
@@ -103,7 +105,7 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
                          static_cast<double>(level.path.corrector_iterations),
                          static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
                          static_cast<double>(level.path.jumps), level.path.converged ? 1.0 : 0.0,
-                         static_cast<double>(level.samples), level.seconds});
+                         static_cast<double>(level.samples), static_cast<double>(level.harmonics), level.seconds});
   }
   std::vector<std::string> peak_columns = {"level", "fe_n"};
   if (spec.damper) peak_columns.push_back("cf_over_fe");
@@ -113,6 +115,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   peak_columns.push_back("reached_end");
   for (const std::string& k : kinds) peak_columns.push_back(k + "_trusted");
   for (const std::string& k : kinds) peak_columns.push_back(k + "_aft_error");
+  for (const std::string& k : kinds) peak_columns.push_back(k + "_harmonic_share");
+  peak_columns.push_back("harmonics");
   if (spec.stability != HbmSpec::Stability::none) {
     for (const std::string& k : kinds) peak_columns.push_back(k + "_stable");
     for (const std::string& k : kinds) peak_columns.push_back(k + "_floquet_max_re");
@@ -131,7 +135,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   o.tables.emplace("contact_states", std::move(states));
   o.tables.emplace("sweep_cost", table_from_rows("sweep_cost",
                                                  {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
-                                                  "turning_points", "jumps", "reached_end", "samples", "seconds"},
+                                                  "turning_points", "jumps", "reached_end", "samples", "harmonics",
+                                                  "seconds"},
                                                  cost_rows));
 }
 
@@ -150,6 +155,22 @@ void add_sampling_table(HbmOutcome& o) {
                                                    {"trial", "level", "fe_n", "samples", "aft_error", "reached_end",
                                                     "trusted", "seconds", "chosen"},
                                                    rows));
+}
+
+// harmonic_selection: with harmonic_tolerance, every H each level tried on the way to its choice.
+void add_harmonic_table(HbmOutcome& o) {
+  std::vector<std::vector<double>> rows;
+  for (size_t l = 0; l < o.levels.size(); ++l)
+    for (const HbmLevel::HarmonicTrial& t : o.levels[l].harmonic_trials)
+      rows.push_back({static_cast<double>(rows.size() + 1), static_cast<double>(l + 1), o.levels[l].force,
+                      static_cast<double>(t.harmonics), static_cast<double>(t.samples), t.share,
+                      t.reached_end ? 1.0 : 0.0, t.trusted ? 1.0 : 0.0, t.seconds, t.chosen ? 1.0 : 0.0});
+  if (rows.empty()) return;
+  o.tables.emplace("harmonic_selection",
+                   table_from_rows("harmonic_selection",
+                                   {"trial", "level", "fe_n", "harmonics", "samples", "harmonic_share", "reached_end",
+                                    "trusted", "seconds", "chosen"},
+                                   rows));
 }
 
 // turning_points and coexisting_solutions: where an arclength path folds back in frequency, and the
@@ -208,6 +229,7 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
     if (p.ip_oop) cols.insert(cols.end(), {"ip_component_m", "oop_component_m"});
     cols.insert(cols.end(), {"residual_n", "iterations"});
     if (!level.stable.empty()) cols.insert(cols.end(), {"stable", "floquet_max_re"});
+    if (!level.harmonic_share.empty()) cols.push_back("harmonic_share");
     for (const HbmParameter& parameter : spec.sensitivities)
       for (const char* q : {"_amp_m_dlog_", "_phase_deg_dlog_"})
         for (const std::string& r : p.response_names) cols.push_back(r + q + parameter.label);
@@ -221,6 +243,7 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
         row.insert(row.end(), {level.components(static_cast<Index>(i), 0), level.components(static_cast<Index>(i), 1)});
       row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});
       if (!level.stable.empty()) row.insert(row.end(), {level.stable[i], level.floquet_max_real[i]});
+      if (!level.harmonic_share.empty()) row.push_back(level.harmonic_share[i]);
       for (size_t j = 0; j < level.amplitude_dlog.size(); ++j)
         for (const Eigen::MatrixXd* d : {&level.amplitude_dlog[j], &level.phase_dlog_deg[j]})
           for (Index r = 0; r < d->cols(); ++r) row.push_back((*d)(static_cast<Index>(i), r));
@@ -352,13 +375,15 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   ProgressClock clock(static_cast<int>(spec.force_levels.size()));
   const HbmProgress timed = with_clock(progress, clock);
   for (double f : spec.force_levels) {
-    o.levels.push_back(sweep_hbm_level(o.prepared, spec, f, spec.harmonics, timed));
+    o.levels.push_back(spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(o.prepared, spec, f, timed)
+                                                     : sweep_hbm_level(o.prepared, spec, f, spec.harmonics, timed));
     clock.finished(static_cast<int>(o.levels.size()));
   }
   o.sweep_seconds = seconds_since(t0);
   require_solutions(o);
   add_peak_tables(o, spec);
   add_sampling_table(o);
+  add_harmonic_table(o);
   add_fold_tables(o);
   add_frf_tables(o, spec);
   add_limit_tables(o, spec);

@@ -13,6 +13,7 @@
 #include "analysis/hbm_spec.hpp"
 #include "damper/rigid_damper.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/harmonic_truncation.hpp"
 #include "hbm/hill_stability.hpp"
 #include "hbm/nonlinear_modes.hpp"
 #include "model/model.hpp"
@@ -62,6 +63,9 @@ struct HbmPeak {
   // samples against those the solve used, as a residual of the balance (hbm::HarmonicBalance::
   // force_scale, the solve's convergence measure): the time-sampling error the solution carries.
   double sampling_error = 0.0;
+  // The shares of the peak's motion that the harmonics above the level's H would add
+  // (hbm/harmonic_truncation.hpp): the truncation error the solution carries.
+  hbm::HarmonicTruncation truncation;
   // With HbmSpec::stability: the Floquet exponents of the peak's solution (Hill's method).
   std::optional<hbm::HillStability> stability;
 };
@@ -81,8 +85,13 @@ struct HbmLevel {
   // at fixed frequency (hbm/sensitivity.hpp); NaN where the sensitivity is not defined.
   std::vector<Eigen::MatrixXd> amplitude_dlog, phase_dlog_deg;
   std::vector<HbmPeak> peaks;
+  // With HbmSpec::harmonic_tolerance, per path point: the largest share of its motion the harmonics
+  // above H would add (hbm/harmonic_truncation.hpp); and the highest harmonic any point needs.
+  std::vector<double> harmonic_share;
+  int harmonics_needed = 0;
   std::vector<double> failed_hz;  // grid frequencies that did not converge
   int samples = 0;                // AFT samples per period the level was solved with
+  int harmonics = 0;              // H the level was solved with
   double seconds = 0.0;
   // With HbmSpec::aft_tolerance: every sweep tried, coarsest first; the level holds the last one.
   struct SamplingTrial {
@@ -92,6 +101,14 @@ struct HbmLevel {
     double seconds = 0.0;
   };
   std::vector<SamplingTrial> sampling_trials;
+  // With HbmSpec::harmonic_tolerance: every H tried, lowest first; `chosen` marks the one kept.
+  struct HarmonicTrial {
+    int harmonics = 0, samples = 0;
+    double share = 0.0;  // largest share over the sweep's points and peaks
+    bool reached_end = false, trusted = false, chosen = false;
+    double seconds = 0.0;
+  };
+  std::vector<HarmonicTrial> harmonic_trials;
 };
 
 // The sweep of one force level with H harmonics. A continuation that stops is reported in
@@ -101,6 +118,14 @@ struct HbmLevel {
 // under-sampled stick-slip residual is too rough for the corrector), up to spec.max_time_samples.
 HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, double force, int harmonics,
                          const HbmProgress& progress = {});
+
+// The sweep of one force level with the harmonics it needs: from spec.harmonics, H is raised to
+// the highest harmonic whose share of the motion, at any path point or peak, exceeds spec.harmonic_tolerance (at most
+// spec.max_harmonics), until the shares meet it with the sweep at its end and its peaks trusted.
+// Keeps the first H that meets it; when none does, the highest H whose sweep reached its end with
+// trusted peaks (else the last), so a failed sweep at a higher H never replaces a good one.
+HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& prepared, const HbmSpec& spec, double force,
+                                  const HbmProgress& progress = {});
 
 struct HbmOutcome {
   ResultTables tables;
@@ -114,7 +139,7 @@ struct HbmOutcome {
 };
 
 // prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost, aft_sampling,
-// limits, limit_peaks, damper_static. Throws SolverError when a level finds no solution at all or a
+// harmonic_selection, limits, limit_peaks, damper_static. Throws SolverError when a level finds no solution at all or a
 // peak's refinement does not converge: a peak is never reported at a failed solve.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
 

@@ -93,6 +93,11 @@ struct HbmSpec {
   // HbmPeak::sampling_error) and its sweep reaches the end with trusted peaks. 0 = fixed samples.
   double aft_tolerance = 0.0;
   int max_time_samples = 4096;
+  // When > 0, each level's H is raised from `harmonics` (up to max_harmonics) until the share of
+  // its motion the harmonics above H would add (hbm/harmonic_truncation.hpp), at every path point
+  // and peak, is at most this, with the sweep at its end and its peaks trusted. 0 = H fixed.
+  double harmonic_tolerance = 0.0;
+  int max_harmonics = 9;
   double tolerance = 1e-9;  // relative, hbm::HbmOptions
   // Newton iterations per start (a solve tries up to three starts). On a sweep a converging point
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.

@@ -126,6 +126,7 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
     const hbm::HarmonicBalance twice(system.model(), finer);
     const Eigen::VectorXd g = system.contact_forces(best.x).force;
     peak.sampling_error = (twice.contact_forces(best.x).force - g).norm() / std::max(system.force_scale(), 1e-300);
+    peak.truncation = hbm::harmonic_truncation(system, best.x, best.omega);
   }
   return peak;
 }
@@ -275,6 +276,7 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   level.force = force;
   const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, samples);
   level.samples = system.aft_options().samples;
+  level.harmonics = harmonics;
   const double omega_start = kTwoPi * spec.sweep.f_min, omega_end = kTwoPi * spec.sweep.f_max;
   std::optional<Eigen::VectorXd> initial;
   if (p.damper_static) {
@@ -375,6 +377,11 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     }
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
+    if (spec.harmonic_tolerance > 0.0) {
+      const hbm::HarmonicTruncation t = hbm::harmonic_truncation(system, pt.x, pt.omega);
+      level.harmonic_share.push_back(t.ok ? t.largest() : 1.0);  // not evaluated: as if nothing were resolved
+      level.harmonics_needed = std::max(level.harmonics_needed, t.needed(spec.harmonic_tolerance));
+    }
   }
   if (!spec.sensitivities.empty()) add_sensitivities(p, spec, system, level);
   if (n_points > 0)
@@ -437,6 +444,46 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
   level.seconds = seconds;  // the cost of reaching the tolerance, every trial included
   add_stability(p, spec, force, harmonics, level);
   return level;
+}
+
+HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, double force,
+                                  const HbmProgress& progress) {
+  std::vector<HbmLevel::HarmonicTrial> trials;
+  std::optional<HbmLevel> kept;  // the highest H so far whose sweep reached its end with trusted peaks
+  double seconds = 0.0;
+  for (int h = spec.harmonics;;) {
+    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress);
+    HbmLevel::HarmonicTrial t;
+    t.harmonics = h;
+    t.samples = level.samples;
+    t.reached_end = level.path.converged;
+    t.trusted = !level.peaks.empty();
+    // The whole path counts, not only its peaks: a check may read any frequency.
+    int needed = std::max(h, level.harmonics_needed);
+    for (double share : level.harmonic_share) t.share = std::max(t.share, share);
+    for (const HbmPeak& pk : level.peaks) {
+      t.share = std::max(t.share, pk.truncation.largest());
+      t.trusted = t.trusted && pk.trusted && pk.solution.converged;
+      needed = std::max(needed, pk.truncation.needed(spec.harmonic_tolerance));
+    }
+    t.seconds = level.seconds;
+    seconds += level.seconds;
+    trials.push_back(t);
+    const bool good = t.reached_end && t.trusted;
+    const bool met = good && t.share <= spec.harmonic_tolerance;
+    if (good) kept = level;
+    if (met || h >= spec.max_harmonics) {
+      if (!kept) kept = std::move(level);
+      break;
+    }
+    // Straight to the highest harmonic the peaks need; one more when the shares were met but the
+    // sweep failed (a higher H may smooth the residual the corrector stalled on).
+    h = std::min(spec.max_harmonics, std::max(h + 1, needed));
+  }
+  for (HbmLevel::HarmonicTrial& t : trials) t.chosen = t.harmonics == kept->harmonics;
+  kept->harmonic_trials = std::move(trials);
+  kept->seconds = seconds;  // the cost of the choice, every H tried included
+  return std::move(*kept);
 }
 
 }  // namespace bb

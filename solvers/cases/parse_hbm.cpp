@@ -182,6 +182,24 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
       r.fail("max_time_samples", fmt::format("must lie in [{}, 100000] (at least time_samples and 2H + 1)", start));
     s.max_time_samples = static_cast<int>(*most);
   }
+  if (r.has("harmonic_tolerance")) {
+    s.harmonic_tolerance = r.positive("harmonic_tolerance");
+    if (s.harmonic_tolerance >= 1.0)
+      r.fail("harmonic_tolerance", "must be below 1 (a share of the motion relative to the solution's)");
+  }
+  if (const auto most = r.optional_integer("max_harmonics")) {
+    if (!r.has("harmonic_tolerance")) r.fail("max_harmonics", "applies only with harmonic_tolerance (H raised)");
+    if (*most < h || *most > 50)
+      r.fail("max_harmonics", fmt::format("must lie in [{}, 50] (at least harmonics = {})", h, h));
+    s.max_harmonics = static_cast<int>(*most);
+  } else if (s.harmonic_tolerance > 0.0) {
+    s.max_harmonics = std::max(s.max_harmonics, s.harmonics);
+  }
+  if (s.harmonic_tolerance > 0.0 && samples != 0 && samples < 2 * s.max_harmonics + 1)
+    r.fail(r.has("max_harmonics") ? "max_harmonics" : "time_samples",
+           fmt::format("time_samples = {} resolve at most H = {}; max_harmonics = {} needs at least {} (or "
+                       "time_samples = 0: automatic)",
+                       samples, (samples - 1) / 2, s.max_harmonics, 2 * s.max_harmonics + 1));
   if (r.has("tolerance")) {
     s.tolerance = r.positive("tolerance");
     if (s.tolerance >= 1e-2) r.fail("tolerance", "must be below 1e-2 (relative force balance)");

@@ -36,6 +36,8 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     t.compare_harmonics = static_cast<int>(*n);
   }
   t.system = parse_hbm(r, folder, false);
+  if (t.system.harmonic_tolerance > 0.0)
+    r.fail("harmonic_tolerance", "applies to an hbm analysis (a time integration carries every harmonic)");
   if (t.system.sweep.method != HbmSweepSpec::Method::grid)
     r.fail("sweep", "a time-domain analysis steps through a grid: sweep = \"grid\"");
   if (2 * (t.system.harmonics + 1) > t.steps_per_period)

@@ -141,6 +141,43 @@ void describe_stability(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
     }
 }
 
+// The harmonics each level kept and the truncation they leave at the peaks.
+void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
+  double worst = 0.0;
+  std::string where;
+  for (const HbmLevel& l : hbm.levels)
+    for (const HbmPeak& pk : l.peaks)
+      if (const double share = pk.truncation.largest(); share > worst)
+        worst = share, where = fmt::format("{} at Fe = {} N, H = {}", pk.kind == "peak" ? "peak" : pk.kind + " peak",
+                                           g(l.force), l.harmonics);
+  run.facts.emplace_back(
+      "Harmonic truncation at the peaks (share of the motion the harmonics above H would add, up to 3 H)",
+      worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (nothing above H excited)"));
+  if (spec.harmonic_tolerance > 0.0) {
+    std::string per_level;
+    for (const HbmLevel& l : hbm.levels) {
+      std::string tried;
+      for (const HbmLevel::HarmonicTrial& t : l.harmonic_trials) tried += fmt::format("{}{}", tried.empty() ? "" : ", ", t.harmonics);
+      per_level += fmt::format("{}{} N: H = {} (tried {})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried);
+    }
+    run.facts.emplace_back(fmt::format("Harmonics per level, raised until the peaks' truncation share <= {} and the "
+                                       "sweep reaches its end with trusted peaks (at most H = {}; table "
+                                       "harmonic_selection)",
+                                       g(spec.harmonic_tolerance), spec.max_harmonics),
+                           per_level);
+    if (worst > spec.harmonic_tolerance)
+      run.warnings.push_back(fmt::format(
+          "the harmonic truncation share {:.2e} at the {} exceeds harmonic_tolerance = {}: no H up to max_harmonics = "
+          "{} met it with a sweep that reached its end and trusted peaks",
+          worst, where, g(spec.harmonic_tolerance), spec.max_harmonics));
+  } else if (worst > 1e-2) {
+    run.warnings.push_back(
+        fmt::format("the harmonics above H would add {:.1f} % of the motion at the {}: raise harmonics or set "
+                    "harmonic_tolerance (H chosen per level)",
+                    100.0 * worst, where));
+  }
+}
+
 void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const PreparedHbm& p = hbm.prepared;
   std::string levels;
@@ -222,6 +259,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
         fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples or set "
                     "aft_tolerance (samples raised automatically)",
                     worst, where));
+  describe_harmonics(spec, hbm, run);
   describe_stability(spec, hbm, run);
   describe_nonlinear_modes(spec, hbm, run);
 }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -230,6 +231,49 @@ TEST_F(HbmAnalysis, AftToleranceRaisesTheSamplesUntilTheStiffContactIsResolved) 
   EXPECT_LE(raised.peaks[0].sampling_error, 1e-3);
   EXPECT_LT(relative(raised.peaks[0]), 1e-3);
   EXPECT_NEAR(raised.peaks[0].frequency_hz, reference.frequency_hz, 1e-3 * reference.frequency_hz);
+}
+
+// A Coulomb-like contact (kt = 100 k) near its stick-slip resonance: the single harmonic leaves a
+// few percent of the motion in harmonics 3 and 5. harmonic_tolerance raises H per level until the
+// estimated share is met; the peak is then closer to a fixed H = 15 sweep than the H = 1 peak,
+// the table lists every H tried, and a failed or unmet trial is never the one kept.
+TEST_F(HbmAnalysis, HarmonicToleranceRaisesHUntilTheTruncationShareIsMet) {
+  test::OscillatorCase c;
+  c.kt = "1.0e8";
+  c.levels = "[12.0]";
+  c.range = "[130.0, 220.0]";
+  c.step = "1.0";
+  c.samples = "2048";
+  const std::string h1_text = test::oscillator_case_text(c);
+  std::string reference_text = h1_text;
+  reference_text.replace(reference_text.find("harmonics = 1\n"), 14, "harmonics = 15\n");
+  const HbmPeak reference = run(reference_text).levels[0].peaks[0];
+  const HbmLevel single = run(h1_text).levels[0];
+  c.analysis_extra = "harmonic_tolerance = 1e-2\nmax_harmonics = 15\n";
+  const HbmOutcome adaptive = run(test::oscillator_case_text(c));
+  const HbmLevel& chosen = adaptive.levels[0];
+
+  const auto error = [&](const HbmPeak& pk) { return std::abs(pk.amplitude / reference.amplitude - 1); };
+  std::printf("  H = 1: share %.3e, amplitude error %.3e; chosen H = %d: share %.3e, error %.3e (%zu trials)\n",
+              single.peaks[0].truncation.largest(), error(single.peaks[0]), chosen.harmonics,
+              chosen.peaks[0].truncation.largest(), error(chosen.peaks[0]), chosen.harmonic_trials.size());
+  EXPECT_GT(single.peaks[0].truncation.largest(), 1e-2);
+  EXPECT_GT(chosen.harmonics, 1);
+  EXPECT_LE(chosen.peaks[0].truncation.largest(), 1e-2);
+  EXPECT_LT(error(chosen.peaks[0]), error(single.peaks[0]));
+  ASSERT_GE(chosen.harmonic_trials.size(), 2u);
+  EXPECT_EQ(chosen.harmonic_trials.front().harmonics, 1);
+  int kept = 0;
+  for (const HbmLevel::HarmonicTrial& t : chosen.harmonic_trials)
+    if (t.chosen) {
+      ++kept;
+      EXPECT_EQ(t.harmonics, chosen.harmonics);
+      EXPECT_TRUE(t.reached_end && t.trusted);
+      EXPECT_LE(t.share, 1e-2);
+    }
+  EXPECT_EQ(kept, 1);
+  ASSERT_TRUE(adaptive.tables.count("harmonic_selection"));
+  EXPECT_EQ(adaptive.tables.at("harmonic_selection").values.rows(), static_cast<Eigen::Index>(chosen.harmonic_trials.size()));
 }
 
 TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {

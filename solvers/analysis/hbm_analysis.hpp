@@ -85,8 +85,9 @@ struct HbmLevel {
   // at fixed frequency (hbm/sensitivity.hpp); NaN where the sensitivity is not defined.
   std::vector<Eigen::MatrixXd> amplitude_dlog, phase_dlog_deg;
   std::vector<HbmPeak> peaks;
-  // With HbmSpec::harmonic_tolerance, per path point: the largest share of its motion the harmonics
-  // above H would add (hbm/harmonic_truncation.hpp); and the highest harmonic any point needs.
+  // With HbmSpec::harmonic_tolerance, per path point: the largest amplitude the harmonics above H
+  // would add at a response, relative to that response's largest first-harmonic amplitude over the
+  // path (hbm/harmonic_truncation.hpp); and the highest harmonic any point needs.
   std::vector<double> harmonic_share;
   int harmonics_needed = 0;
   std::vector<double> failed_hz;  // grid frequencies that did not converge

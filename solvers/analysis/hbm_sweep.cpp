@@ -126,7 +126,7 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
     const hbm::HarmonicBalance twice(system.model(), finer);
     const Eigen::VectorXd g = system.contact_forces(best.x).force;
     peak.sampling_error = (twice.contact_forces(best.x).force - g).norm() / std::max(system.force_scale(), 1e-300);
-    peak.truncation = hbm::harmonic_truncation(system, best.x, best.omega);
+    peak.truncation = hbm::harmonic_truncation(system, best.x, best.omega, p.responses);
   }
   return peak;
 }
@@ -377,8 +377,15 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     }
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
-    if (spec.harmonic_tolerance > 0.0) {
-      const hbm::HarmonicTruncation t = hbm::harmonic_truncation(system, pt.x, pt.omega);
+  }
+  if (spec.harmonic_tolerance > 0.0 && n_points > 0) {
+    // Each point on the scale of the curve (the response's largest first-harmonic amplitude over
+    // the path): far from resonance the motion is small and its harmonics large beside it, but
+    // small on the curve a check or a plot reads.
+    std::vector<double> scales;
+    for (Index r = 0; r < level.amplitude.cols(); ++r) scales.push_back(level.amplitude.col(r).maxCoeff());
+    for (const hbm::ContinuationPoint& pt : path.points) {
+      const hbm::HarmonicTruncation t = hbm::harmonic_truncation(system, pt.x, pt.omega, p.responses, scales);
       level.harmonic_share.push_back(t.ok ? t.largest() : 1.0);  // not evaluated: as if nothing were resolved
       level.harmonics_needed = std::max(level.harmonics_needed, t.needed(spec.harmonic_tolerance));
     }

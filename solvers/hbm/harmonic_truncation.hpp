@@ -1,14 +1,18 @@
-// What a harmonic-balance solution with H harmonics leaves out: the motion of the harmonics above H
-// that its own contact forces excite. Units: SI.
+// What a harmonic-balance solution with H harmonics leaves out: the harmonics above H that its
+// own contact forces excite. Units: SI.
 //
-// The solution x (H harmonics) is embedded in a balance of P > H harmonics with zero higher
-// coefficients. Its residual there is the contact forces' content at harmonics H+1..P (the
-// excitation has none); one Newton step on those harmonics alone, J_hh d_h = -R_h with J = L + dg/dx
-// of the larger balance (contact stiffness included, so a stuck contact is not taken as free), gives
-// the motion they would add. Each harmonic's share is the norm of its added coefficients over all
-// contact DOFs, relative to the norm of the solution's harmonic part. This is the response-based
-// criterion of adaptive harmonic balance (Jaumouille, Sinou & Petitjean, J. Sound Vib. 329 (2010)
-// 4048-4067), evaluated with the exact AFT Jacobian.
+// The solution x (H harmonics) is embedded in a balance of P > H harmonics, its higher
+// coefficients zero. Its residual there is the contact forces' content at harmonics H+1..P (the
+// excitation has none). One Newton step on those harmonics, the lower ones held, J_hh d_h = -R_h
+// with J = L + dg/dx of the larger balance (exact AFT Jacobian, so a stuck contact's stiffness
+// counts), gives the motion they would add at the contact DOFs; the recovery of the other DOFs (no
+// load above the first harmonic) carries it to every DOF. A harmonic's share at a response DOF is
+// the amplitude it would add there relative to the amplitude of the solution's harmonics 1..H
+// there; the share of the harmonic is the largest over the response DOFs (per DOF, so that units
+// do not mix, a damper's rotation against blade displacements, and the DOFs a user reads decide).
+// This is the response-based criterion of adaptive harmonic balance (Jaumouille, Sinou &
+// Petitjean, J. Sound Vib. 329 (2010) 4048-4067). It measures the waveform the truncation leaves
+// out, not how much the harmonics kept would move if more were admitted.
 #pragma once
 #include <Eigen/Dense>
 
@@ -19,10 +23,10 @@
 namespace bb::hbm {
 
 struct HarmonicTruncation {
-  int harmonics = 0;            // H of the solution
-  int probe_harmonics = 0;      // P: the shares cover harmonics H+1..P
-  std::vector<double> share;    // share[k] of harmonic H + 1 + k, relative to the solution's motion
-  bool ok = false;              // false when the larger balance could not be evaluated at x
+  int harmonics = 0;          // H of the solution
+  int probe_harmonics = 0;    // P: the shares cover harmonics H+1..P
+  std::vector<double> share;  // share[k] of harmonic H + 1 + k (largest over the response DOFs)
+  bool ok = false;            // false when the larger balance could not be evaluated at x
 
   // The largest share (0 when nothing above H could be resolved).
   double largest() const;
@@ -30,10 +34,15 @@ struct HarmonicTruncation {
   int needed(double tolerance) const;
 };
 
-// The shares of harmonics H+1..P for the solution x at omega of `system` (H harmonics). P is
-// 3 H, or less when the system's AFT samples resolve fewer harmonics ((samples - 1) / 2): the
-// probe uses the same samples, so that it measures the harmonics and not the sampling.
+// The shares of harmonics H+1..P for the solution x at omega of `system` (H harmonics), at the model
+// DOFs `responses` (empty: the contact DOFs), each relative to the amplitude of the solution's
+// harmonics 1..H at that DOF, or to scales[i] when given (e.g. the largest amplitude of a sweep,
+// so that a point far from resonance, whose own motion is small, is judged on the curve's scale).
+// P is 3 H, or less when the system's AFT samples resolve fewer harmonics ((samples - 1) / 2): the
+// probe uses the same samples, so that it measures the harmonics and not the sampling. ok = false
+// when the larger balance cannot be evaluated at x (a loop that does not close, a singular D_oo).
 [[nodiscard]] HarmonicTruncation harmonic_truncation(const HarmonicBalance& system, const Eigen::VectorXd& x,
-                                                     double omega);
+                                                     double omega, const std::vector<Eigen::Index>& responses = {},
+                                                     const std::vector<double>& scales = {});
 
 }  // namespace bb::hbm

@@ -98,6 +98,9 @@ struct HbmSpec {
   // and peak, is at most this, with the sweep at its end and its peaks trusted. 0 = H fixed.
   double harmonic_tolerance = 0.0;
   int max_harmonics = 9;
+  // Where the shares must meet it: every path point and peak (a check may read any frequency), or
+  // the peaks alone (what a peaks table reports).
+  enum class HarmonicScope { path, peaks } harmonic_scope = HarmonicScope::path;
   double tolerance = 1e-9;  // relative, hbm::HbmOptions
   // Newton iterations per start (a solve tries up to three starts). On a sweep a converging point
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.

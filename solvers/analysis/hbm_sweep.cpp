@@ -378,7 +378,7 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
   }
-  if (spec.harmonic_tolerance > 0.0 && n_points > 0) {
+  if (spec.harmonic_tolerance > 0.0 && spec.harmonic_scope == HbmSpec::HarmonicScope::path && n_points > 0) {
     // Each point on the scale of the curve (the response's largest first-harmonic amplitude over
     // the path): far from resonance the motion is small and its harmonics large beside it, but
     // small on the curve a check or a plot reads.

@@ -195,6 +195,11 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   } else if (s.harmonic_tolerance > 0.0) {
     s.max_harmonics = std::max(s.max_harmonics, s.harmonics);
   }
+  if (r.has("harmonic_scope")) {
+    if (!r.has("harmonic_tolerance")) r.fail("harmonic_scope", "applies only with harmonic_tolerance (H raised)");
+    s.harmonic_scope = r.choice("harmonic_scope", {"path", "peaks"}) == "peaks" ? HbmSpec::HarmonicScope::peaks
+                                                                                 : HbmSpec::HarmonicScope::path;
+  }
   if (s.harmonic_tolerance > 0.0 && samples != 0 && samples < 2 * s.max_harmonics + 1)
     r.fail(r.has("max_harmonics") ? "max_harmonics" : "time_samples",
            fmt::format("time_samples = {} resolve at most H = {}; max_harmonics = {} needs at least {} (or "

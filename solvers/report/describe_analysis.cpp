@@ -160,9 +160,11 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
       for (const HbmLevel::HarmonicTrial& t : l.harmonic_trials) tried += fmt::format("{}{}", tried.empty() ? "" : ", ", t.harmonics);
       per_level += fmt::format("{}{} N: H = {} (tried {})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried);
     }
-    run.facts.emplace_back(fmt::format("Harmonics per level, raised until the peaks' truncation share <= {} and the "
+    run.facts.emplace_back(fmt::format("Harmonics per level, raised until the truncation share at {} <= {} and the "
                                        "sweep reaches its end with trusted peaks (at most H = {}; table "
                                        "harmonic_selection)",
+                                       spec.harmonic_scope == HbmSpec::HarmonicScope::peaks ? "the peaks"
+                                                                                           : "every point and peak",
                                        g(spec.harmonic_tolerance), spec.max_harmonics),
                            per_level);
     if (worst > spec.harmonic_tolerance)

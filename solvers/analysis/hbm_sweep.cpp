@@ -465,7 +465,7 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
     t.samples = level.samples;
     t.reached_end = level.path.converged;
     t.trusted = !level.peaks.empty();
-    // The whole path counts, not only its peaks: a check may read any frequency.
+    // With the path scope every point counts (a check may read any frequency), else the peaks.
     int needed = std::max(h, level.harmonics_needed);
     for (double share : level.harmonic_share) t.share = std::max(t.share, share);
     for (const HbmPeak& pk : level.peaks) {
@@ -483,8 +483,8 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
       if (!kept) kept = std::move(level);
       break;
     }
-    // Straight to the highest harmonic the peaks need; one more when the shares were met but the
-    // sweep failed (a higher H may smooth the residual the corrector stalled on).
+    // Straight to the highest harmonic the points or peaks need; one more when the shares were met
+    // but the sweep failed (a higher H may smooth the residual the corrector stalled on).
     h = std::min(spec.max_harmonics, std::max(h + 1, needed));
   }
   for (HbmLevel::HarmonicTrial& t : trials) t.chosen = t.harmonics == kept->harmonics;

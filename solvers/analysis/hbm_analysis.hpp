@@ -121,8 +121,9 @@ HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, doubl
                          const HbmProgress& progress = {});
 
 // The sweep of one force level with the harmonics it needs: from spec.harmonics, H is raised to
-// the highest harmonic whose share of the motion, at any path point or peak, exceeds spec.harmonic_tolerance (at most
-// spec.max_harmonics), until the shares meet it with the sweep at its end and its peaks trusted.
+// the highest harmonic whose share of the motion (at the path points and peaks, or the peaks alone:
+// spec.harmonic_scope) exceeds spec.harmonic_tolerance (at most spec.max_harmonics), until the
+// shares meet it with the sweep at its end and its peaks trusted.
 // Keeps the first H that meets it; when none does, the highest H whose sweep reached its end with
 // trusted peaks (else the last), so a failed sweep at a higher H never replaces a good one.
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& prepared, const HbmSpec& spec, double force,
@@ -140,8 +141,8 @@ struct HbmOutcome {
 };
 
 // prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost, aft_sampling,
-// harmonic_selection, limits, limit_peaks, damper_static. Throws SolverError when a level finds no solution at all or a
-// peak's refinement does not converge: a peak is never reported at a failed solve.
+// harmonic_selection, limits, limit_peaks, damper_static. Throws SolverError when a level finds no
+// solution at all or a peak's refinement does not converge: a peak is never reported at a failed solve.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
 
 // The name of level `force`'s FRF table, e.g. "frf_300" or "frf_0.5".

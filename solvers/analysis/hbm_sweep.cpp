@@ -66,7 +66,8 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 // The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
 // by golden-section search between the path's neighbours of the largest point (where the path does
 // not fold there), each trial a Newton solve from the nearest path point.
-HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, const HbmLevel& level, int kind) {
+HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, const hbm::TruncationProbe& truncation,
+                  const HbmLevel& level, int kind) {
   const auto& pts = level.path.points;
   const Eigen::VectorXd values = p.ip_oop ? level.components.col(kind) : level.amplitude.col(0);
   Index k = 0;
@@ -126,7 +127,7 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
     const hbm::HarmonicBalance twice(system.model(), finer);
     const Eigen::VectorXd g = system.contact_forces(best.x).force;
     peak.sampling_error = (twice.contact_forces(best.x).force - g).norm() / std::max(system.force_scale(), 1e-300);
-    peak.truncation = hbm::harmonic_truncation(system, best.x, best.omega, p.responses);
+    peak.truncation = truncation.at(best.x, best.omega, p.responses);
   }
   return peak;
 }
@@ -275,6 +276,7 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   HbmLevel level;
   level.force = force;
   const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, samples);
+  const hbm::TruncationProbe truncation(system);
   level.samples = system.aft_options().samples;
   level.harmonics = harmonics;
   const double omega_start = kTwoPi * spec.sweep.f_min, omega_end = kTwoPi * spec.sweep.f_max;
@@ -385,16 +387,23 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     std::vector<double> scales;
     for (Index r = 0; r < level.amplitude.cols(); ++r) scales.push_back(level.amplitude.col(r).maxCoeff());
     for (const hbm::ContinuationPoint& pt : path.points) {
-      const hbm::HarmonicTruncation t = hbm::harmonic_truncation(system, pt.x, pt.omega, p.responses, scales);
+      const hbm::HarmonicTruncation t = truncation.at(pt.x, pt.omega, p.responses, scales);
       level.harmonic_share.push_back(t.ok ? t.largest() : 1.0);  // not evaluated: as if nothing were resolved
       level.harmonics_needed = std::max(level.harmonics_needed, t.needed(spec.harmonic_tolerance));
     }
   }
   if (!spec.sensitivities.empty()) add_sensitivities(p, spec, system, level);
   if (n_points > 0)
-    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, level, k));
+    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, truncation, level, k));
   level.seconds = seconds_since(t0);
   return level;
+}
+
+// Every peak of the level trusted and its solve converged (and there is at least one).
+bool peaks_trusted(const HbmLevel& level) {
+  return !level.peaks.empty() && std::all_of(level.peaks.begin(), level.peaks.end(), [](const HbmPeak& pk) {
+           return pk.trusted && pk.solution.converged;
+         });
 }
 
 // The Floquet exponents spec.stability asks for, on the sweep a level keeps (not on the sampling
@@ -429,11 +438,8 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     HbmLevel::SamplingTrial t;
     t.samples = level.samples;
     t.reached_end = level.path.converged;
-    t.trusted = !level.peaks.empty();
-    for (const HbmPeak& pk : level.peaks) {
-      t.aft_error = std::max(t.aft_error, pk.sampling_error);
-      t.trusted = t.trusted && pk.trusted && pk.solution.converged;
-    }
+    t.trusted = peaks_trusted(level);
+    for (const HbmPeak& pk : level.peaks) t.aft_error = std::max(t.aft_error, pk.sampling_error);
     t.seconds = level.seconds;
     seconds += level.seconds;
     trials.push_back(t);
@@ -464,13 +470,12 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
     t.harmonics = h;
     t.samples = level.samples;
     t.reached_end = level.path.converged;
-    t.trusted = !level.peaks.empty();
+    t.trusted = peaks_trusted(level);
     // With the path scope every point counts (a check may read any frequency), else the peaks.
     int needed = std::max(h, level.harmonics_needed);
     for (double share : level.harmonic_share) t.share = std::max(t.share, share);
     for (const HbmPeak& pk : level.peaks) {
       t.share = std::max(t.share, pk.truncation.largest());
-      t.trusted = t.trusted && pk.trusted && pk.solution.converged;
       needed = std::max(needed, pk.truncation.needed(spec.harmonic_tolerance));
     }
     t.seconds = level.seconds;

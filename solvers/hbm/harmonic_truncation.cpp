@@ -15,22 +15,29 @@ int HarmonicTruncation::needed(double tolerance) const {
   return harmonics;
 }
 
-HarmonicTruncation harmonic_truncation(const HarmonicBalance& system, const Eigen::VectorXd& x, double omega,
-                                       const std::vector<Eigen::Index>& responses, const std::vector<double>& scales) {
+TruncationProbe::TruncationProbe(const HarmonicBalance& system)
+    : system_(system),
+      harmonics_(system.options().harmonics),
+      probe_harmonics_(std::max(harmonics_, std::min(3 * harmonics_, (system.aft_options().samples - 1) / 2))) {
+  if (probe_harmonics_ == harmonics_) return;
+  HbmOptions options = system.options();
+  options.harmonics = probe_harmonics_;
+  options.aft.samples = system.aft_options().samples;
+  probe_.emplace(system.model(), options);
+}
+
+HarmonicTruncation TruncationProbe::at(const Eigen::VectorXd& x, double omega,
+                                       const std::vector<Eigen::Index>& responses,
+                                       const std::vector<double>& scales) const {
   using Eigen::Index;
   HarmonicTruncation t;
-  t.harmonics = system.options().harmonics;
-  const int samples = system.aft_options().samples;
-  t.probe_harmonics = std::min(3 * t.harmonics, (samples - 1) / 2);
-  if (t.probe_harmonics <= t.harmonics) {
-    t.probe_harmonics = t.harmonics;
+  t.harmonics = harmonics_;
+  t.probe_harmonics = probe_harmonics_;
+  if (!probe_) {
     t.ok = true;
     return t;
   }
-  HbmOptions options = system.options();
-  options.harmonics = t.probe_harmonics;
-  options.aft.samples = samples;
-  const HarmonicBalance probe(system.model(), options);
+  const HarmonicBalance& probe = *probe_;
   Eigen::VectorXd padded = Eigen::VectorXd::Zero(probe.unknowns());
   padded.head(x.size()) = x;  // layout [c0, a1, b1, ...] per contact DOF: the higher harmonics follow
   const auto linear = probe.condense(omega);
@@ -56,7 +63,7 @@ HarmonicTruncation harmonic_truncation(const HarmonicBalance& system, const Eige
   } catch (const std::exception&) {
     return t;  // D_oo singular at some harmonic: no estimate
   }
-  const std::vector<Index>& dofs = responses.empty() ? system.contact_dofs() : responses;
+  const std::vector<Index>& dofs = responses.empty() ? system_.contact_dofs() : responses;
   t.share.assign(static_cast<size_t>(t.probe_harmonics - t.harmonics), 0.0);
   for (size_t i = 0; i < dofs.size(); ++i) {
     const Index dof = dofs[i];
@@ -69,6 +76,11 @@ HarmonicTruncation harmonic_truncation(const HarmonicBalance& system, const Eige
   }
   t.ok = true;
   return t;
+}
+
+HarmonicTruncation harmonic_truncation(const HarmonicBalance& system, const Eigen::VectorXd& x, double omega,
+                                       const std::vector<Eigen::Index>& responses, const std::vector<double>& scales) {
+  return TruncationProbe(system).at(x, omega, responses, scales);
 }
 
 }  // namespace bb::hbm

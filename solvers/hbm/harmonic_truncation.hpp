@@ -16,6 +16,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <optional>
 #include <vector>
 
 #include "hbm/condensed_balance.hpp"
@@ -34,13 +35,30 @@ struct HarmonicTruncation {
   int needed(double tolerance) const;
 };
 
-// The shares of harmonics H+1..P for the solution x at omega of `system` (H harmonics), at the model
-// DOFs `responses` (empty: the contact DOFs), each relative to the amplitude of the solution's
-// harmonics 1..H at that DOF, or to scales[i] when given (e.g. the largest amplitude of a sweep,
-// so that a point far from resonance, whose own motion is small, is judged on the curve's scale).
-// P is 3 H, or less when the system's AFT samples resolve fewer harmonics ((samples - 1) / 2): the
-// probe uses the same samples, so that it measures the harmonics and not the sampling. ok = false
-// when the larger balance cannot be evaluated at x (a loop that does not close, a singular D_oo).
+// The larger balance of P harmonics for the solutions of `system` (H harmonics), built once and
+// evaluated at any number of them. P is 3 H, or less when the system's AFT samples resolve fewer
+// harmonics ((samples - 1) / 2): the probe uses the same samples, so that it measures the
+// harmonics and not the sampling.
+class TruncationProbe {
+ public:
+  explicit TruncationProbe(const HarmonicBalance& system);
+
+  // The shares of harmonics H+1..P for the solution x at omega, at the model DOFs `responses`
+  // (empty: the contact DOFs), each relative to the amplitude of the solution's harmonics 1..H at
+  // that DOF, or to scales[i] when given (e.g. the largest amplitude of a sweep, so that a point
+  // far from resonance, whose own motion is small, is judged on the curve's scale). ok = false
+  // when the larger balance cannot be evaluated at x (a loop that does not close, a singular D_oo).
+  [[nodiscard]] HarmonicTruncation at(const Eigen::VectorXd& x, double omega,
+                                      const std::vector<Eigen::Index>& responses = {},
+                                      const std::vector<double>& scales = {}) const;
+
+ private:
+  const HarmonicBalance& system_;
+  int harmonics_ = 0, probe_harmonics_ = 0;
+  std::optional<HarmonicBalance> probe_;  // none when P = H
+};
+
+// One evaluation: TruncationProbe(system).at(x, omega, responses, scales).
 [[nodiscard]] HarmonicTruncation harmonic_truncation(const HarmonicBalance& system, const Eigen::VectorXd& x,
                                                      double omega, const std::vector<Eigen::Index>& responses = {},
                                                      const std::vector<double>& scales = {});

@@ -85,6 +85,27 @@ void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
 
 namespace {
 
+// The peak with the largest `value` over every level (none when no value is positive), named as
+// the report's facts and warnings name it: "OOP peak at Fe = 30 N".
+struct WorstPeak {
+  double value = 0.0;
+  const HbmLevel* level = nullptr;
+  const HbmPeak* peak = nullptr;
+  std::string name() const {
+    return peak ? fmt::format("{} at Fe = {} N", peak->kind == "peak" ? "peak" : peak->kind + " peak", g(level->force))
+                : std::string();
+  }
+};
+
+template <class Value>
+WorstPeak worst_peak(const HbmOutcome& hbm, Value value) {
+  WorstPeak w;
+  for (const HbmLevel& l : hbm.levels)
+    for (const HbmPeak& pk : l.peaks)
+      if (const double v = value(pk); v > w.value) w = {v, &l, &pk};
+  return w;
+}
+
 void describe_nonlinear_modes(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   if (!spec.nonlinear_modes) return;
   const NonlinearModesSpec& nm = *spec.nonlinear_modes;
@@ -143,13 +164,10 @@ void describe_stability(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
 
 // The harmonics each level kept and the truncation they leave at the peaks.
 void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
-  double worst = 0.0;
-  std::string where;
-  for (const HbmLevel& l : hbm.levels)
-    for (const HbmPeak& pk : l.peaks)
-      if (const double share = pk.truncation.largest(); share > worst)
-        worst = share, where = fmt::format("{} at Fe = {} N, H = {}", pk.kind == "peak" ? "peak" : pk.kind + " peak",
-                                           g(l.force), l.harmonics);
+  const WorstPeak truncated = worst_peak(hbm, [](const HbmPeak& pk) { return pk.truncation.largest(); });
+  const double worst = truncated.value;
+  const std::string where =
+      truncated.peak ? fmt::format("{}, H = {}", truncated.name(), truncated.level->harmonics) : std::string();
   run.facts.emplace_back(
       "Harmonic truncation at the peaks (share of the motion the harmonics above H would add, up to 3 H)",
       worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (nothing above H excited)"));
@@ -157,8 +175,10 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
     std::string per_level;
     for (const HbmLevel& l : hbm.levels) {
       std::string tried;
-      for (const HbmLevel::HarmonicTrial& t : l.harmonic_trials) tried += fmt::format("{}{}", tried.empty() ? "" : ", ", t.harmonics);
-      per_level += fmt::format("{}{} N: H = {} (tried {})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried);
+      for (const HbmLevel::HarmonicTrial& t : l.harmonic_trials)
+        tried += fmt::format("{}{}", tried.empty() ? "" : ", ", t.harmonics);
+      per_level +=
+          fmt::format("{}{} N: H = {} (tried {})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried);
     }
     run.facts.emplace_back(fmt::format("Harmonics per level, raised until the truncation share at {} <= {} and the "
                                        "sweep reaches its end with trusted peaks (at most H = {}; table "
@@ -231,13 +251,9 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
       if (!pk.trusted)
         run.warnings.push_back(fmt::format("{} peak at Fe = {} N ({:.4f} Hz) is doubtful: {}", pk.kind, g(l.force),
                                            pk.frequency_hz, pk.doubt));
-  double worst = 0.0;
-  std::string where;
-  for (const HbmLevel& l : hbm.levels)
-    for (const HbmPeak& pk : l.peaks)
-      if (pk.sampling_error > worst)
-        worst = pk.sampling_error,
-        where = fmt::format("{} at Fe = {} N", pk.kind == "peak" ? "peak" : pk.kind + " peak", g(l.force));
+  const WorstPeak sampled = worst_peak(hbm, [](const HbmPeak& pk) { return pk.sampling_error; });
+  const double worst = sampled.value;
+  const std::string where = sampled.name();
   run.facts.emplace_back(
       "AFT sampling error at the peaks (contact-force change with twice the samples, relative to the force scale)",
       worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (every peak stuck)"));

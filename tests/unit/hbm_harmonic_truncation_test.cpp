@@ -2,16 +2,16 @@
 // linear contact, only odd harmonics for friction under a constant normal load (half-wave
 // symmetry), a one-step estimate of the third harmonic that agrees with the H = 3 solution, and
 // shares that fall as H grows. Units: SI.
-#include "hbm/harmonic_truncation.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <optional>
 
 #include "../extremes/hbm_models.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/harmonic_truncation.hpp"
 
 namespace bb::hbm {
 namespace {
@@ -26,9 +26,8 @@ HbmModel friction_oscillator(double kt, double mu, double force) {
   m.mass = MatrixXd::Identity(1, 1);
   m.stiffness = MatrixXd::Constant(1, 1, 1.0e6);
   m.damping = MatrixXd::Constant(1, 1, 20.0);
-  m.contacts.push_back({{.kn = 1.0e6, .kt = kt, .mu = mu, .n0 = 30.0},
-                        Eigen::RowVectorXd::Ones(1),
-                        Eigen::RowVectorXd::Zero(1)});
+  m.contacts.push_back(
+      {{.kn = 1.0e6, .kt = kt, .mu = mu, .n0 = 30.0}, Eigen::RowVectorXd::Ones(1), Eigen::RowVectorXd::Zero(1)});
   m.harmonic_load = Eigen::VectorXcd::Constant(1, force);
   return m;
 }
@@ -54,7 +53,7 @@ TEST(HarmonicTruncation, LinearContactExcitesNothingAboveH) {
 
 TEST(HarmonicTruncation, FrictionUnderConstantLoadExcitesOddHarmonicsOnly) {
   const HarmonicBalance system(friction_oscillator(1.0e6, 0.3, 10.0), {.harmonics = 1, .aft = {.samples = 1024}});
-  const HbmSolution s = solve(system, 2 * M_PI * 170.0);  // stick-slip near the resonance
+  const HbmSolution s = solve(system, 2 * std::numbers::pi * 170.0);  // stick-slip near the resonance
   const HarmonicTruncation t = harmonic_truncation(system, s.x, s.omega);
   ASSERT_TRUE(t.ok);
   ASSERT_EQ(t.share.size(), 2u);  // harmonics 2 and 3
@@ -70,7 +69,7 @@ TEST(HarmonicTruncation, FrictionUnderConstantLoadExcitesOddHarmonicsOnly) {
 // first only through the slip phases it shifts).
 TEST(HarmonicTruncation, OneStepEstimateMatchesTheThirdHarmonicOfTheLargerBalance) {
   const HbmModel model = friction_oscillator(1.0e6, 0.3, 10.0);
-  const double omega = 2 * M_PI * 170.0;
+  const double omega = 2 * std::numbers::pi * 170.0;
   const HarmonicBalance h1(model, {.harmonics = 1, .aft = {.samples = 1024}});
   const HarmonicBalance h3(model, {.harmonics = 3, .aft = {.samples = 1024}});
   const HbmSolution s1 = solve(h1, omega), s3 = solve(h3, omega);
@@ -84,7 +83,7 @@ TEST(HarmonicTruncation, SharesFallAsHarmonicsAreAdded) {
   // Coulomb-like (stiff stick) in gross slip: F = 30 N against a slip force of 9 N. (Near F = mu N0
   // the stuck and sliding branches coexist and each H may land on another one.)
   const HbmModel model = friction_oscillator(1.0e8, 0.3, 30.0);
-  const double omega = 2 * M_PI * 200.0;  // above the resonance: the motion never sticks long
+  const double omega = 2 * std::numbers::pi * 200.0;  // above the resonance: the motion never sticks long
   double previous = 1.0;
   VectorXd warm;  // the previous H's solution, its higher coefficients zero
   for (const int h : {1, 3, 5, 9}) {

@@ -203,29 +203,23 @@ int validate_command(const ValidateArgs& a) {
     std::fprintf(stderr, "error: no *.toml case file under %s\n", a.dir.c_str());
     return bb::exit_bad_input;
   }
+  // Two case files with one stem would write one report folder: refuse before running any, so that
+  // neither report is overwritten by the other.
+  std::map<std::string, fs::path> stems;
+  for (const fs::path& f : files)
+    if (auto [it, fresh] = stems.emplace(f.stem().string(), f); !fresh)
+      throw bb::InputError(fmt::format("two case files share the name '{}': {} and {} (validate writes one report "
+                                       "folder per case file name)",
+                                       bb::printable(f.stem().string()), bb::printable(it->second.string()),
+                                       bb::printable(f.string())));
   bb::prepare_output_parent(a.out, "--out");
   std::vector<std::pair<size_t, bb::IndexEntry>> done;  // (file, entry) in the order runs finish
-  std::map<std::string, fs::path> seen;
   int rc = bb::exit_pass;
   auto record = [&](size_t i, bb::IndexEntry e, int code) {
-    if (auto [it, fresh] = seen.emplace(files[i].stem().string(), files[i]); !fresh) {
-      e.status = bb::RunStatus::bad_input;
-      e.message = fmt::format("two case files share the name '{}': {} and {}", files[i].stem().string(),
-                              it->second.string(), files[i].string());
-      std::fprintf(stderr, "  error: %s\n", bb::printable(e.message).c_str());
-      code = bb::exit_bad_input;
-    }
     done.emplace_back(i, e);
     rc = std::max(rc, code);
   };
   if (a.jobs > 1) {
-    // Two case files with one stem would write one folder at once: refuse before starting any.
-    std::map<std::string, fs::path> stems;
-    for (const fs::path& f : files)
-      if (auto [it, fresh] = stems.emplace(f.stem().string(), f); !fresh)
-        throw bb::InputError(fmt::format("two case files share the name '{}': {} and {} (validate -j needs one "
-                                         "report folder per case)",
-                                         f.stem().string(), it->second.string(), f.string()));
     // Longest first, by the wall time of each case's previous report (none yet: first of all), so
     // that a long case does not start last and run alone.
     std::vector<double> previous(files.size(), std::numeric_limits<double>::infinity());

@@ -71,6 +71,8 @@ void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityCho
           "the differences between levels did not converge, so no finite estimate)",
           f.target, choice.estimated_error));
   }
+  for (const std::string& failure : choice.failures)
+    run.warnings.push_back(fmt::format("fidelity: a level passed over because its solve failed ({})", failure));
   if (!f.note.empty()) run.facts.emplace_back("fidelity note", f.note);
   write_result_csv(choice.frontier, out, run);
   run.listed_tables.push_back(choice.frontier);

@@ -35,6 +35,7 @@ struct LevelRun {
   AnalysisResults results;
   double seconds = 0.0;
   double unknowns = 0.0;
+  std::string failure;  // the solver's message when these levels gave no trustworthy answer
 };
 
 class Climber {
@@ -52,9 +53,15 @@ class Climber {
     if (progress_) progress_(fmt::format("fidelity: {}", settings_of(index)));
     const auto t0 = std::chrono::steady_clock::now();
     run->model = std::make_unique<Model>(build_model(run->spec.model));
-    run->results = run_analysis(run->spec.analysis, *run->model, progress_);
+    // A level too coarse to solve (a sweep that cannot reach the steady state, say) is a level whose
+    // error is unbounded: the climb records it and goes on.
+    try {
+      run->results = run_analysis(run->spec.analysis, *run->model, progress_);
+    } catch (const SolverError& e) {
+      run->failure = e.what();
+    }
     run->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    run->unknowns = unknowns(run->spec.analysis, *run->model, run->results);
+    run->unknowns = run->failure.empty() ? unknowns(run->spec.analysis, *run->model, run->results) : kNaN;
     return *runs_.emplace(index, std::move(run)).first->second;
   }
 
@@ -78,6 +85,7 @@ class Climber {
   }
 
   LevelRun& run(const std::vector<int>& index) { return *runs_.at(index); }
+  const std::map<std::vector<int>, std::unique_ptr<LevelRun>>& runs() const { return runs_; }
 
  private:
   const CaseSpec& base_;
@@ -130,11 +138,14 @@ double relative_difference(const ResultTable& coarse, const ResultTable& fine, c
     double scale = 0.0;
     for (Eigen::Index r = 0; r < fine.values.rows(); ++r)
       if (std::isfinite(fine.values(r, *jf))) scale = std::max(scale, std::abs(fine.values(r, *jf)));
+    // A value below 1e-6 of the column's largest is a numerical zero (a rigid-body mode's 3e-5 Hz
+    // against 200 Hz): its change is measured on the column's scale, not on itself.
+    const double zero = 1e-6 * scale;
     for (const auto& [rc, r] : pairs) {
       const double a = coarse.values(rc, *ic), b = fine.values(r, *jf);
       if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::infinity();
       const double d = std::abs(a - b);
-      worst = std::max(worst, b != 0 ? d / std::abs(b) : (scale > 0 ? d / scale : d));
+      worst = std::max(worst, std::abs(b) > zero ? d / std::abs(b) : (scale > 0 ? d / scale : d));
     }
   }
   return worst;
@@ -165,6 +176,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
   Climber climber(spec, progress);
   // Differences between two runs; a missing column or key names the [fidelity] section.
   const auto difference = [&](const LevelRun& coarse, const LevelRun& fine) {
+    if (!coarse.failure.empty() || !fine.failure.empty()) return std::numeric_limits<double>::infinity();
     try {
       return relative_difference(climber.table(coarse), climber.table(fine), f.columns, f.key);
     } catch (const InputError& e) {
@@ -202,6 +214,13 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
           std::vector<int> finer = index;
           ++finer[a];
           const double d = difference(climber.run(index), climber.at(finer));
+          if (!climber.run(finer).failure.empty()) {
+            // The finer level does not solve: this axis cannot be refined, and its error is unknown.
+            rows.push_back({finer, a, d, kNaN});
+            estimate[a] = std::numeric_limits<double>::infinity();
+            total += estimate[a];
+            continue;
+          }
           rows.push_back({finer, a, d, kNaN});
           history[a].resize(static_cast<size_t>(i));  // d_0 .. d_(i-1): the differences below level i
           if (!history[a].empty()) {
@@ -232,6 +251,9 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
   }
   FidelityChoice choice;
   LevelRun& chosen = climber.run(index);
+  if (!chosen.failure.empty())
+    throw SolverError(fmt::format("fidelity {}: the run at {} failed: {}", fidelity_mode_name(mode),
+                                  climber.settings_of(index), chosen.failure));
   difference(chosen, chosen);  // fast and reference too: the columns must exist
   choice.spec = chosen.spec;
   choice.model = std::move(*chosen.model);
@@ -244,7 +266,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
   // frontier: the combinations the climb stood on (axis "combined", with the summed estimate) and
   // the one-level-finer probes of each axis (with their difference to the combination below).
   std::vector<std::string> cols = {"run",        "level",           "unknowns", "seconds",
-                                   "difference", "estimated_error", "chosen"};
+                                   "difference", "estimated_error", "chosen",   "failed"};
   for (const FidelityAxisSpec& axis : f.axes) cols.push_back(axis.path);
   std::vector<std::vector<double>> values;
   std::vector<std::string> axis_names;
@@ -259,11 +281,14 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
                                run.seconds,
                                r.difference,
                                r.estimated_error,
-                               is_chosen ? 1.0 : 0.0};
+                               is_chosen ? 1.0 : 0.0,
+                               run.failure.empty() ? 0.0 : 1.0};
     for (size_t a = 0; a < n_axes; ++a) row.push_back(f.axes[a].levels[static_cast<size_t>(r.index[a])]);
     values.push_back(row);
     axis_names.push_back(combined ? std::string("combined") : f.axes[r.axis].path);
   }
+  for (const auto& [levels, run] : climber.runs())
+    if (!run->failure.empty()) choice.failures.push_back(fmt::format("{}: {}", climber.settings_of(levels), run->failure));
   choice.frontier = table_from_rows("frontier", cols, values);
   choice.frontier.add_text_column("axis", axis_names);
   return choice;

@@ -20,10 +20,11 @@ struct FidelityChoice {
   CaseSpec spec;  // the case at the chosen levels
   Model model;
   AnalysisResults results;
-  ResultTable frontier;           // every level tried: levels, unknowns, seconds, difference, estimated_error, chosen
+  ResultTable frontier;  // every level tried: levels, unknowns, seconds, difference, estimated_error, chosen, failed
   double estimated_error = 0.0;   // of the chosen run: the sum over axes; NaN when unknown
   bool met = false;               // automatic: estimated_error <= target
   std::string settings;           // "analysis.harmonics = 5, analysis.time_samples = 256"
+  std::vector<std::string> failures;  // "settings: message" of every level whose solve failed
 };
 
 // Largest relative difference of `columns` between two runs' tables, rows paired by equal values
@@ -40,9 +41,10 @@ double relative_difference(const ResultTable& coarse, const ResultTable& fine, c
 // convergence is faster than x^-30.
 double power_law_error(const std::array<double, 3>& x, double d_before, double d);
 
-// Runs the case's analysis at the levels `mode` asks for (fixed is not a mode here).
+// Runs the case's analysis at the levels `mode` asks for (fixed is not a mode here). A level whose
+// solve fails (SolverError) has an infinite difference to its neighbours, so the climb passes it.
 // Throws InputError when the case has no [fidelity] or the result table lacks a column, and
-// whatever the analysis throws.
+// SolverError when the chosen levels failed.
 FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress = {});
 
 }  // namespace bb

@@ -5,7 +5,9 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "pipeline/run_case.hpp"
 #include "pipeline/run_fidelity.hpp"
+#include "temp_folder.hpp"
 
 namespace bb {
 namespace {
@@ -50,6 +52,85 @@ TEST(Fidelity, RelativeDifferencePairsSweepRowsByFrequencyNotByPointNumber) {
   EXPECT_NEAR(relative_difference(coarse, fine, {"amp"}, "frequency_hz"), 0.03 / 3.03, 1e-12);
   EXPECT_GT(relative_difference(coarse, fine, {"amp"}), 0.3);  // by point number: wrong partners
   EXPECT_THROW(relative_difference(coarse, fine, {"amp"}, "omega"), InputError);
+}
+
+TEST(Fidelity, RelativeDifferenceMeasuresNumericalZerosOnTheColumnsScale) {
+  // Rigid-body modes: exactly 0 Hz on one mesh, 3e-5 Hz on the next. Their change is 1.5e-7 of the
+  // largest frequency, not 100 % of itself; the elastic mode's 1 % still counts on its own value.
+  const ResultTable coarse = table_from_rows("frequencies", {"mode", "f"}, {{1, 0.0}, {2, 202.0}});
+  const ResultTable fine = table_from_rows("frequencies", {"mode", "f"}, {{1, 3e-5}, {2, 200.0}});
+  EXPECT_NEAR(relative_difference(coarse, fine, {"f"}), 0.01, 1e-12);
+  const ResultTable fine_rigid_only = table_from_rows("frequencies", {"mode", "f"}, {{1, 3e-5}, {2, 202.0}});
+  EXPECT_NEAR(relative_difference(coarse, fine_rigid_only, {"f"}), 3e-5 / 202.0, 1e-15);
+  // Above 1e-6 of the scale a value is its own measure.
+  const ResultTable small = table_from_rows("frequencies", {"mode", "f"}, {{1, 1e-3}, {2, 202.0}});
+  const ResultTable small_fine = table_from_rows("frequencies", {"mode", "f"}, {{1, 2e-3}, {2, 202.0}});
+  EXPECT_NEAR(relative_difference(small, small_fine, {"f"}), 0.5, 1e-12);
+}
+
+// A friction oscillator integrated in time for at most 40 periods per frequency: a 1e-2
+// cycle-to-cycle change is reached there, 1e-8 and 1e-9 are not, and a peak on a frequency that is
+// not steady is a solver failure.
+std::string time_case(const std::string& tolerances) {
+  return R"([case]
+name = "time_fidelity"
+[analysis]
+type = "time"
+frequency_hz = [150.0, 170.0]
+step_hz = 2.0
+steps_per_period = 64
+steady_tolerance = 1e-2
+max_cycles = 40
+modal_damping = 0.05
+forces = [{ dof = "A.x", amplitude = 1.0 }]
+force_levels = [10.0]
+responses = ["A.x"]
+[analysis.model]
+name = "oscillator"
+dofs = ["A.x"]
+stiffness = [[1.0e6]]
+mass = [[1.0]]
+[[analysis.contact]]
+name = "ground"
+tangential = { "A.x" = 1.0 }
+kn = 1.0e6
+kt = 1.0e6
+mu = 0.3
+n0 = 30.0
+[fidelity]
+target = 1e-2
+result = "frf"
+columns = ["A.x_amp_m"]
+key = "frequency_hz"
+axes = [{ setting = "analysis.steady_tolerance", levels = )" +
+         tolerances + " }]\n";
+}
+
+class FidelityClimb : public test::TempFolderTest {};
+
+TEST_F(FidelityClimb, AFinerLevelThatFailsIsPassedOverAndTheTargetIsNotMet) {
+  RunOptions opt;
+  opt.out_dir = dir_ / "out";
+  opt.plots = false;
+  opt.fidelity = FidelityMode::automatic;
+  const RunOutcome o = run_case(write(time_case("[1e-2, 1e-9]")), opt);
+  // The 1e-2 run stands; its error is unknown, so the target check fails (exit 1, not 3).
+  EXPECT_EQ(o.record.status, RunStatus::fail);
+  EXPECT_NE(o.record.fidelity.find("steady_tolerance = 0.01"), std::string::npos) << o.record.fidelity;
+  bool warned = false;
+  for (const std::string& w : o.record.warnings) warned |= w.find("passed over because its solve failed") != w.npos;
+  EXPECT_TRUE(warned);
+  ASSERT_TRUE(std::filesystem::exists(dir_ / "out" / "frontier.csv"));
+}
+
+TEST_F(FidelityClimb, WhenEveryLevelFailsTheRunIsASolverFailure) {
+  RunOptions opt;
+  opt.out_dir = dir_ / "out";
+  opt.plots = false;
+  opt.fidelity = FidelityMode::automatic;
+  const RunOutcome o = run_case(write(time_case("[1e-8, 1e-9]")), opt);
+  EXPECT_EQ(o.record.status, RunStatus::solver_failed);
+  EXPECT_NE(o.record.message.find("failed"), std::string::npos) << o.record.message;
 }
 
 }  // namespace

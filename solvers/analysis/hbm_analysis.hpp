@@ -116,9 +116,11 @@ struct HbmLevel {
 // path.failure (with frequency and residual) and the level keeps the points reached. With
 // spec.aft_tolerance > 0 the level is swept again with more AFT samples while its peaks'
 // sampling error exceeds the tolerance, the sweep stops short or a peak is doubtful (an
-// under-sampled stick-slip residual is too rough for the corrector), up to spec.max_time_samples.
+// under-sampled stick-slip residual is too rough for the corrector), up to spec.max_time_samples;
+// with retry_failures = false, a sweep that stops short or a doubtful peak ends the raising (the
+// caller has a cheaper remedy: another H).
 HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, double force, int harmonics,
-                         const HbmProgress& progress = {});
+                         const HbmProgress& progress = {}, bool retry_failures = true);
 
 // The sweep of one force level with the harmonics it needs: from spec.harmonics, H is raised to
 // the highest harmonic whose share of the motion (at the path points and peaks, or the peaks alone:
@@ -126,6 +128,8 @@ HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, doubl
 // shares meet it with the sweep at its end and its peaks trusted.
 // Keeps the first H that meets it; when none does, the highest H whose sweep reached its end with
 // trusted peaks (else the last), so a failed sweep at a higher H never replaces a good one.
+// Below max_harmonics a failed sweep moves on to the next H instead of raising its AFT samples
+// (on Table XI such retries at 2048-4096 samples cost 30-170 s a level and still failed).
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& prepared, const HbmSpec& spec, double force,
                                   const HbmProgress& progress = {});
 

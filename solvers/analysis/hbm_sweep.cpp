@@ -426,7 +426,7 @@ void add_stability(const PreparedHbm& p, const HbmSpec& spec, double force, int 
 }  // namespace
 
 HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
-                         const HbmProgress& progress) {
+                         const HbmProgress& progress, bool retry_failures) {
   HbmLevel level = sweep_at_samples(p, spec, force, harmonics, spec.time_samples, progress);
   if (!(spec.aft_tolerance > 0.0)) {
     add_stability(p, spec, force, harmonics, level);
@@ -444,7 +444,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     seconds += level.seconds;
     trials.push_back(t);
     const bool met = t.aft_error <= spec.aft_tolerance && t.reached_end && t.trusted;
-    if (met || level.samples >= spec.max_time_samples) break;
+    if (met || level.samples >= spec.max_time_samples || (!retry_failures && !(t.reached_end && t.trusted))) break;
     // The error falls as 1 / n (a stick-slip kink lies between two samples), so when it alone is
     // the reason, jump to the power-of-two multiple that should meet the tolerance; else double.
     int factor = 2;
@@ -465,7 +465,7 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
   std::optional<HbmLevel> kept;  // the highest H so far whose sweep reached its end with trusted peaks
   double seconds = 0.0;
   for (int h = spec.harmonics;;) {
-    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress);
+    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress, h >= spec.max_harmonics);
     HbmLevel::HarmonicTrial t;
     t.harmonics = h;
     t.samples = level.samples;

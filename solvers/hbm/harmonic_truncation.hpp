@@ -5,7 +5,8 @@
 // coefficients zero. Its residual there is the contact forces' content at harmonics H+1..P (the
 // excitation has none). One Newton step on those harmonics, the lower ones held, J_hh d_h = -R_h
 // with J = L + dg/dx of the larger balance (exact AFT Jacobian, so a stuck contact's stiffness
-// counts), gives the motion they would add at the contact DOFs; the recovery of the other DOFs (no
+// counts; directions restrained by less than 1e-6 of the block's stiffest, mechanisms, left out),
+// gives the motion they would add at the contact DOFs; the recovery of the other DOFs (no
 // load above the first harmonic) carries it to every DOF. A harmonic's share at a response DOF is
 // the amplitude it would add there relative to the amplitude of the solution's harmonics 1..H
 // there; the share of the harmonic is the largest over the response DOFs (per DOF, so that units

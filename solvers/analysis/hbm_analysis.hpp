@@ -128,8 +128,8 @@ HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, doubl
 // shares meet it with the sweep at its end and its peaks trusted.
 // Keeps the first H that meets it; when none does, the highest H whose sweep reached its end with
 // trusted peaks (else the last), so a failed sweep at a higher H never replaces a good one.
-// Below max_harmonics a failed sweep moves on to the next H instead of raising its AFT samples
-// (on Table XI such retries at 2048-4096 samples cost 30-170 s a level and still failed).
+// Once one H has succeeded, a failed sweep moves on to the next H instead of raising its AFT
+// samples (on Table XI such retries at 2048-4096 samples cost 30-275 s a level and still failed).
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& prepared, const HbmSpec& spec, double force,
                                   const HbmProgress& progress = {});
 

@@ -465,7 +465,9 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
   std::optional<HbmLevel> kept;  // the highest H so far whose sweep reached its end with trusted peaks
   double seconds = 0.0;
   for (int h = spec.harmonics;;) {
-    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress, h >= spec.max_harmonics);
+    // More samples rescue a sweep only while no H has succeeded; after that a failed sweep is left
+    // for the next H (on Table XI, 150 N at H = 7 took 275 s at 4096 samples and still failed).
+    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress, !kept);
     HbmLevel::HarmonicTrial t;
     t.harmonics = h;
     t.samples = level.samples;

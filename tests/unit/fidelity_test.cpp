@@ -106,14 +106,19 @@ axes = [{ setting = "analysis.steady_tolerance", levels = )" +
          tolerances + " }]\n";
 }
 
-class FidelityClimb : public test::TempFolderTest {};
+class FidelityClimb : public test::TempFolderTest {
+ protected:
+  RunOutcome run_auto(const std::string& tolerances) const {
+    RunOptions opt;
+    opt.out_dir = dir_ / "out";
+    opt.plots = false;
+    opt.fidelity = FidelityMode::automatic;
+    return run_case(write(time_case(tolerances)), opt);
+  }
+};
 
 TEST_F(FidelityClimb, AFinerLevelThatFailsIsPassedOverAndTheTargetIsNotMet) {
-  RunOptions opt;
-  opt.out_dir = dir_ / "out";
-  opt.plots = false;
-  opt.fidelity = FidelityMode::automatic;
-  const RunOutcome o = run_case(write(time_case("[1e-2, 1e-9]")), opt);
+  const RunOutcome o = run_auto("[1e-2, 1e-9]");
   // The 1e-2 run stands; its error is unknown, so the target check fails (exit 1, not 3).
   EXPECT_EQ(o.record.status, RunStatus::fail);
   EXPECT_NE(o.record.fidelity.find("steady_tolerance = 0.01"), std::string::npos) << o.record.fidelity;
@@ -124,11 +129,7 @@ TEST_F(FidelityClimb, AFinerLevelThatFailsIsPassedOverAndTheTargetIsNotMet) {
 }
 
 TEST_F(FidelityClimb, WhenEveryLevelFailsTheRunIsASolverFailure) {
-  RunOptions opt;
-  opt.out_dir = dir_ / "out";
-  opt.plots = false;
-  opt.fidelity = FidelityMode::automatic;
-  const RunOutcome o = run_case(write(time_case("[1e-8, 1e-9]")), opt);
+  const RunOutcome o = run_auto("[1e-8, 1e-9]");
   EXPECT_EQ(o.record.status, RunStatus::solver_failed);
   EXPECT_NE(o.record.message.find("failed"), std::string::npos) << o.record.message;
 }

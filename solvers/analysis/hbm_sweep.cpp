@@ -32,7 +32,8 @@ double largest_excursion(const Eigen::RowVectorXd& c) {
   const auto x = [&](double theta) {
     double v = c[0];
     for (Index h = 1; h <= harmonics; ++h)
-      v += c[2 * h - 1] * std::cos(static_cast<double>(h) * theta) + c[2 * h] * std::sin(static_cast<double>(h) * theta);
+      v +=
+          c[2 * h - 1] * std::cos(static_cast<double>(h) * theta) + c[2 * h] * std::sin(static_cast<double>(h) * theta);
     return std::abs(v);
   };
   const int n = 32 * static_cast<int>(2 * harmonics + 1);
@@ -41,8 +42,8 @@ double largest_excursion(const Eigen::RowVectorXd& c) {
   double best_value = -1.0;
   for (int i = 0; i < n; ++i)
     if (const double v = x(i * dt); v > best_value) best_value = v, best = i;
-  const GoldenSearch g = golden_section_maximum([&](double t) { return std::optional<double>(x(t)); },
-                                                (best - 1) * dt, (best + 1) * dt, 40);
+  const GoldenSearch g = golden_section_maximum([&](double t) { return std::optional<double>(x(t)); }, (best - 1) * dt,
+                                                (best + 1) * dt, 40);
   return std::max(best_value, x(0.5 * (g.a + g.b)));
 }
 
@@ -401,9 +402,8 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
 
 // Every peak of the level trusted and its solve converged (and there is at least one).
 bool peaks_trusted(const HbmLevel& level) {
-  return !level.peaks.empty() && std::all_of(level.peaks.begin(), level.peaks.end(), [](const HbmPeak& pk) {
-           return pk.trusted && pk.solution.converged;
-         });
+  return !level.peaks.empty() && std::all_of(level.peaks.begin(), level.peaks.end(),
+                                             [](const HbmPeak& pk) { return pk.trusted && pk.solution.converged; });
 }
 
 // The Floquet exponents spec.stability asks for, on the sweep a level keeps (not on the sampling

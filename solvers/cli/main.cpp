@@ -78,8 +78,8 @@ int html_command(const std::string& folder) {
   const std::vector<fs::path> pages = bb::write_html_twins(folder);
   if (pages.empty())
     throw bb::InputError(fmt::format("{}: no report.md or index.md under this folder", bb::printable(folder)));
-  std::printf("%zu pages written (report.html / index.html beside each report.md / index.md under %s)\n",
-              pages.size(), bb::printable(folder).c_str());
+  std::printf("%zu pages written (report.html / index.html beside each report.md / index.md under %s)\n", pages.size(),
+              bb::printable(folder).c_str());
   return 0;
 }
 
@@ -137,8 +137,9 @@ struct ValidateArgs {
 
 // `bladebench run` of one case as validate would run it in-process, for a child process.
 std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& file, const fs::path& out_dir) {
-  std::vector<std::string> c = {fs::read_symlink("/proc/self/exe").string(), "run", file.string(), "--out",
-                                out_dir.string(), "--fidelity", bb::fidelity_mode_name(a.fidelity)};
+  std::vector<std::string> c = {
+      fs::read_symlink("/proc/self/exe").string(), "run", file.string(), "--out", out_dir.string(), "--fidelity",
+      bb::fidelity_mode_name(a.fidelity)};
   if (a.study) c.emplace_back("--study");
   if (a.no_plots) c.emplace_back("--no-plots");
   if (const auto& cache = bb::model_cache_settings()) {
@@ -157,9 +158,14 @@ std::optional<bb::IndexEntry> entry_of_child(const fs::path& out_dir, const fs::
   try {
     std::ifstream in(out_dir / "summary.json");
     const nlohmann::json j = nlohmann::json::parse(in);
-    bb::IndexEntry e{j.at("case").get<std::string>(), fs::relative(out_dir / "report.md", index_dir),
-                     bb::RunStatus::solver_failed, 0, 0, j.at("wall_time_s").get<double>(),
-                     j.value("message", std::string()), j.value("fidelity", std::string())};
+    bb::IndexEntry e{j.at("case").get<std::string>(),
+                     fs::relative(out_dir / "report.md", index_dir),
+                     bb::RunStatus::solver_failed,
+                     0,
+                     0,
+                     j.at("wall_time_s").get<double>(),
+                     j.value("message", std::string()),
+                     j.value("fidelity", std::string())};
     const std::string status = j.at("status").get<std::string>();
     for (bb::RunStatus st : {bb::RunStatus::pass, bb::RunStatus::fail, bb::RunStatus::no_checks,
                              bb::RunStatus::bad_input, bb::RunStatus::solver_failed})
@@ -208,10 +214,10 @@ int validate_command(const ValidateArgs& a) {
   std::map<std::string, fs::path> stems;
   for (const fs::path& f : files)
     if (auto [it, fresh] = stems.emplace(f.stem().string(), f); !fresh)
-      throw bb::InputError(fmt::format("two case files share the name '{}': {} and {} (validate writes one report "
-                                       "folder per case file name)",
-                                       bb::printable(f.stem().string()), bb::printable(it->second.string()),
-                                       bb::printable(f.string())));
+      throw bb::InputError(
+          fmt::format("two case files share the name '{}': {} and {} (validate writes one report "
+                      "folder per case file name)",
+                      bb::printable(f.stem().string()), bb::printable(it->second.string()), bb::printable(f.string())));
   bb::prepare_output_parent(a.out, "--out");
   std::vector<std::pair<size_t, bb::IndexEntry>> done;  // (file, entry) in the order runs finish
   int rc = bb::exit_pass;
@@ -242,9 +248,12 @@ int validate_command(const ValidateArgs& a) {
       std::fprintf(stderr, "[%zu/%zu] %s", ++finished, files.size(), bb::printable(r.output, true).c_str());
       std::optional<bb::IndexEntry> e = entry_of_child(out_dir, a.out, r);
       if (!e) {
-        e = bb::IndexEntry{files[i].stem().string(), fs::relative(out_dir / "report.md", a.out),
+        e = bb::IndexEntry{files[i].stem().string(),
+                           fs::relative(out_dir / "report.md", a.out),
                            r.exit_code == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed,
-                           0, 0, 0.0,
+                           0,
+                           0,
+                           0.0,
                            r.signal ? fmt::format("the run was killed by signal {} ({})", r.signal, strsignal(r.signal))
                                     : fmt::format("the run exited with code {} and no report", r.exit_code),
                            ""};
@@ -362,7 +371,8 @@ int synthesize_command(SynthesizeArgs a) {
     if (bb::is_universal_file(a.out)) {
       // A Universal File carries no sigma columns: the CSV is written, read back and converted.
       if (a.options.kind != bb::DataKind::frf)
-        throw bb::InputError(fmt::format("--out {}: a Universal File (dataset 58) holds an FRF: use --kind frf", a.out));
+        throw bb::InputError(
+            fmt::format("--out {}: a Universal File (dataset 58) holds an FRF: use --kind frf", a.out));
       const fs::path csv = a.out + ".csv.tmp";
       bb::write_synthetic_data(t->second, a.options, csv);
       const bb::MeasuredData data = bb::read_measured_data(csv, bb::DataKind::frf);
@@ -386,16 +396,17 @@ int export_command(const ExportArgs& a) {
     const bb::CaseSpec spec = bb::parse_case_file(a.case_file);
     const auto* modal = std::get_if<bb::ModalSpec>(&spec.analysis);
     const auto* contact = std::get_if<bb::ContactModalSpec>(&spec.analysis);
-    const int modes = a.modes > 0   ? a.modes
-                      : modal       ? modal->modes.lowest
-                      : contact     ? contact->modes
-                                    : bb::ModeSelection{}.lowest;
+    const int modes = a.modes > 0 ? a.modes
+                      : modal     ? modal->modes.lowest
+                      : contact   ? contact->modes
+                                  : bb::ModeSelection{}.lowest;
     if (contact) {
       // The state point of the grid (default: the largest interference at the last FKN).
-      const auto i = static_cast<size_t>(contact->state_interference >= 0 ? contact->state_interference
-                                                                          : static_cast<int>(contact->interferences.size()) - 1);
-      const auto j = static_cast<size_t>(contact->state_penalty >= 0 ? contact->state_penalty
-                                                                     : static_cast<int>(contact->penalty_factors.size()) - 1);
+      const auto i =
+          static_cast<size_t>(contact->state_interference >= 0 ? contact->state_interference
+                                                               : static_cast<int>(contact->interferences.size()) - 1);
+      const auto j = static_cast<size_t>(
+          contact->state_penalty >= 0 ? contact->state_penalty : static_cast<int>(contact->penalty_factors.size()) - 1);
       const bb::CalculixContact c{contact->interferences[i], contact->penalty_factors[j], contact->tangential_ratio,
                                   contact->sticking, contact->roughness};
       bb::write_calculix_frequency_deck(bb::build_model(spec.model), modes, a.out, &c);
@@ -460,8 +471,9 @@ int main(int argc, char** argv) {
   validate->add_flag("--study", validate_args.study, "Also run every case's [study]");
   validate->add_flag("--no-plots", validate_args.no_plots, "Skip gnuplot figures");
   add_fidelity_option(validate, validate_args.fidelity);
-  validate->add_option("-j,--jobs", validate_args.jobs,
-                       "Cases run at once, each in its own process (default 1; the machine's cores: the fastest)")
+  validate
+      ->add_option("-j,--jobs", validate_args.jobs,
+                   "Cases run at once, each in its own process (default 1; the machine's cores: the fastest)")
       ->check(CLI::Range(1, 256));
   add_cache_options(validate, cache_args);
 
@@ -513,7 +525,9 @@ int main(int argc, char** argv) {
   std::string html_folder;
   CLI::App* html = app.add_subcommand(
       "html", "Write report.html beside every report.md and index.md under a folder (reports from an older build)");
-  html->add_option("DIR", html_folder, "Report folder, searched recursively")->required()->check(CLI::ExistingDirectory);
+  html->add_option("DIR", html_folder, "Report folder, searched recursively")
+      ->required()
+      ->check(CLI::ExistingDirectory);
 
   try {
     app.parse(argc, argv);

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -65,11 +66,16 @@ void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityCho
     e.relation = CheckSpec::Relation::at_most;
     e.pass = choice.met;
     run.checks.push_back(e);
-    if (!choice.met)
-      run.warnings.push_back(fmt::format(
-          "the fidelity target {:.3g} is not met: the estimated error at the levels reached is {:.3g} (inf or NaN: "
-          "the differences between levels did not converge, so no finite estimate)",
-          f.target, choice.estimated_error));
+    if (!choice.met) {
+      const double estimate = choice.estimated_error;
+      const char* why = std::isnan(estimate)       ? " (an axis at its finest level has too few levels to extrapolate)"
+                        : std::isfinite(estimate)  ? ""
+                        : !choice.failures.empty() ? " (a finer level's solve failed, so its difference is unknown)"
+                                                   : " (the differences between levels do not fall as a power law)";
+      run.warnings.push_back(
+          fmt::format("the fidelity target {:.3g} is not met: the estimated error at the levels reached is {:.3g}{}",
+                      f.target, estimate, why));
+    }
   }
   for (const std::string& failure : choice.failures)
     run.warnings.push_back(fmt::format("fidelity: a level passed over because its solve failed ({})", failure));
@@ -205,7 +211,8 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     const Model model = choice ? std::move(choice->model) : build_model(spec.model);
     describe_model(used.model, std::holds_alternative<ContactLoopSpec>(used.analysis), model, run);
     try {
-      const AnalysisResults results = choice ? std::move(choice->results) : run_analysis(used.analysis, model, progress);
+      const AnalysisResults results =
+          choice ? std::move(choice->results) : run_analysis(used.analysis, model, progress);
       if (progress) std::fputs("\r\033[K", stderr);
       if (choice) report_fidelity(*spec.fidelity, options.fidelity, *choice, stage->path(), options.plots, run);
       analyse(used, model, results, stage->path(), options, run);

@@ -288,7 +288,8 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
     axis_names.push_back(combined ? std::string("combined") : f.axes[r.axis].path);
   }
   for (const auto& [levels, run] : climber.runs())
-    if (!run->failure.empty()) choice.failures.push_back(fmt::format("{}: {}", climber.settings_of(levels), run->failure));
+    if (!run->failure.empty())
+      choice.failures.push_back(fmt::format("{}: {}", climber.settings_of(levels), run->failure));
   choice.frontier = table_from_rows("frontier", cols, values);
   choice.frontier.add_text_column("axis", axis_names);
   return choice;

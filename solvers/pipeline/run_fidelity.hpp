@@ -21,9 +21,9 @@ struct FidelityChoice {
   Model model;
   AnalysisResults results;
   ResultTable frontier;  // every level tried: levels, unknowns, seconds, difference, estimated_error, chosen, failed
-  double estimated_error = 0.0;   // of the chosen run: the sum over axes; NaN when unknown
-  bool met = false;               // automatic: estimated_error <= target
-  std::string settings;           // "analysis.harmonics = 5, analysis.time_samples = 256"
+  double estimated_error = 0.0;       // of the chosen run: the sum over axes; NaN when unknown
+  bool met = false;                   // automatic: estimated_error <= target
+  std::string settings;               // "analysis.harmonics = 5, analysis.time_samples = 256"
   std::vector<std::string> failures;  // "settings: message" of every level whose solve failed
 };
 

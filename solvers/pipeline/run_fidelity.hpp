@@ -29,8 +29,8 @@ struct FidelityChoice {
 
 // Largest relative difference of `columns` between two runs' tables, rows paired by equal values
 // of `key` (empty: the tables' key column): |a - b| / |b| per value (|a - b| / max |b| of the
-// column where b = 0; inf where either is not finite). Throws InputError when a column is missing
-// or no row pairs.
+// column where |b| is below 1e-6 of that maximum, a numerical zero; inf where either is not
+// finite). Throws InputError when a column is missing or no row pairs.
 double relative_difference(const ResultTable& coarse, const ResultTable& fine, const std::vector<std::string>& columns,
                            const std::string& key = {});
 

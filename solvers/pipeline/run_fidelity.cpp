@@ -85,7 +85,13 @@ class Climber {
   }
 
   LevelRun& run(const std::vector<int>& index) { return *runs_.at(index); }
-  const std::map<std::vector<int>, std::unique_ptr<LevelRun>>& runs() const { return runs_; }
+  // "settings: message" of every run whose solve failed.
+  std::vector<std::string> failures() const {
+    std::vector<std::string> out;
+    for (const auto& [index, run] : runs_)
+      if (!run->failure.empty()) out.push_back(fmt::format("{}: {}", settings_of(index), run->failure));
+    return out;
+  }
 
  private:
   const CaseSpec& base_;
@@ -214,14 +220,13 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
           std::vector<int> finer = index;
           ++finer[a];
           const double d = difference(climber.run(index), climber.at(finer));
+          rows.push_back({finer, a, d, kNaN});
           if (!climber.run(finer).failure.empty()) {
             // The finer level does not solve: this axis cannot be refined, and its error is unknown.
-            rows.push_back({finer, a, d, kNaN});
             estimate[a] = std::numeric_limits<double>::infinity();
             total += estimate[a];
             continue;
           }
-          rows.push_back({finer, a, d, kNaN});
           history[a].resize(static_cast<size_t>(i));  // d_0 .. d_(i-1): the differences below level i
           if (!history[a].empty()) {
             estimate[a] = power_law_error({x(i - 1), x(i), x(i + 1)}, history[a].back(), d);
@@ -287,9 +292,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
     values.push_back(row);
     axis_names.push_back(combined ? std::string("combined") : f.axes[r.axis].path);
   }
-  for (const auto& [levels, run] : climber.runs())
-    if (!run->failure.empty())
-      choice.failures.push_back(fmt::format("{}: {}", climber.settings_of(levels), run->failure));
+  choice.failures = climber.failures();
   choice.frontier = table_from_rows("frontier", cols, values);
   choice.frontier.add_text_column("axis", axis_names);
   return choice;

@@ -95,8 +95,7 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     row.push_back(static_cast<double>(level.harmonics));
     if (spec.stability != HbmSpec::Stability::none) {
       constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-      for (const HbmPeak& pk : level.peaks)
-        row.push_back(pk.stability ? pk.stability->verdict() : nan);
+      for (const HbmPeak& pk : level.peaks) row.push_back(pk.stability ? pk.stability->verdict() : nan);
       for (const HbmPeak& pk : level.peaks)
         row.push_back(pk.stability && pk.stability->ok ? pk.stability->max_real : nan);
     }
@@ -133,11 +132,11 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   states.add_text_column("peak", state_peaks);
   states.add_text_column("contact", state_contacts);
   o.tables.emplace("contact_states", std::move(states));
-  o.tables.emplace("sweep_cost", table_from_rows("sweep_cost",
-                                                 {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
-                                                  "turning_points", "jumps", "reached_end", "samples", "harmonics",
-                                                  "seconds"},
-                                                 cost_rows));
+  o.tables.emplace("sweep_cost",
+                   table_from_rows("sweep_cost",
+                                   {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
+                                    "turning_points", "jumps", "reached_end", "samples", "harmonics", "seconds"},
+                                   cost_rows));
 }
 
 // aft_sampling: with aft_tolerance, every sweep each level took on the way to its samples.
@@ -163,13 +162,14 @@ void add_harmonic_table(HbmOutcome& o) {
   for (size_t l = 0; l < o.levels.size(); ++l)
     for (const HbmLevel::HarmonicTrial& t : o.levels[l].harmonic_trials)
       rows.push_back({static_cast<double>(rows.size() + 1), static_cast<double>(l + 1), o.levels[l].force,
-                      static_cast<double>(t.harmonics), static_cast<double>(t.samples), t.share,
-                      t.reached_end ? 1.0 : 0.0, t.trusted ? 1.0 : 0.0, t.seconds, t.chosen ? 1.0 : 0.0});
+                      static_cast<double>(t.harmonics), static_cast<double>(t.samples), t.share, t.change,
+                      t.estimated_error, t.reached_end ? 1.0 : 0.0, t.trusted ? 1.0 : 0.0, t.seconds,
+                      t.chosen ? 1.0 : 0.0});
   if (rows.empty()) return;
   o.tables.emplace("harmonic_selection",
                    table_from_rows("harmonic_selection",
-                                   {"trial", "level", "fe_n", "harmonics", "samples", "harmonic_share", "reached_end",
-                                    "trusted", "seconds", "chosen"},
+                                   {"trial", "level", "fe_n", "harmonics", "samples", "harmonic_share", "change",
+                                    "estimated_error", "reached_end", "trusted", "seconds", "chosen"},
                                    rows));
 }
 
@@ -201,21 +201,21 @@ void add_fold_tables(HbmOutcome& o) {
         if (!level.stable.empty() && level.stable[i - 1] == 1.0 && level.stable[i] == 1.0) ++stable;
       }
       if (crossing >= 2)
-        bands.push_back({static_cast<double>(bands.size() + 1), static_cast<double>(l + 1), level.force, breaks[b],
-                         breaks[b + 1], static_cast<double>(crossing),
-                         level.stable.empty() ? std::numeric_limits<double>::quiet_NaN() : static_cast<double>(stable)});
+        bands.push_back(
+            {static_cast<double>(bands.size() + 1), static_cast<double>(l + 1), level.force, breaks[b], breaks[b + 1],
+             static_cast<double>(crossing),
+             level.stable.empty() ? std::numeric_limits<double>::quiet_NaN() : static_cast<double>(stable)});
     }
   }
   if (turns.empty()) return;
-  o.tables.emplace("turning_points", table_from_rows("turning_points",
-                                                     {"turn", "level", "fe_n", "frequency_hz", "amplitude_m",
-                                                      "direction_after"},
-                                                     turns));
+  o.tables.emplace("turning_points",
+                   table_from_rows("turning_points",
+                                   {"turn", "level", "fe_n", "frequency_hz", "amplitude_m", "direction_after"}, turns));
   if (!bands.empty())
-    o.tables.emplace("coexisting_solutions",
-                     table_from_rows("coexisting_solutions",
-                                     {"band", "level", "fe_n", "from_hz", "to_hz", "solutions", "stable_solutions"},
-                                     bands));
+    o.tables.emplace(
+        "coexisting_solutions",
+        table_from_rows("coexisting_solutions",
+                        {"band", "level", "fe_n", "from_hz", "to_hz", "solutions", "stable_solutions"}, bands));
 }
 
 // frf_<Fe>: the path points of each level in order.

@@ -5,6 +5,7 @@
 // contact states and energy balance at each peak, the free and fully stuck linear limits.
 #pragma once
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -106,6 +107,12 @@ struct HbmLevel {
   struct HarmonicTrial {
     int harmonics = 0, samples = 0;
     double share = 0.0;  // largest share over the sweep's points and peaks
+    // With HarmonicCriterion::change: the largest relative change against the previous H whose
+    // sweep reached its end with trusted peaks (NaN for the first such H, or a failed sweep).
+    double change = std::numeric_limits<double>::quiet_NaN();
+    // With it: the error of this H, the changes of the last three good H fitted by a power law of H
+    // (power_law_error; NaN with fewer, infinite where they do not fall as one).
+    double estimated_error = std::numeric_limits<double>::quiet_NaN();
     bool reached_end = false, trusted = false, chosen = false;
     double seconds = 0.0;
   };
@@ -128,6 +135,9 @@ HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, doubl
 // shares meet it with the sweep at its end and its peaks trusted.
 // Keeps the first H that meets it; when none does, the highest H whose sweep reached its end with
 // trusted peaks (else the last), so a failed sweep at a higher H never replaces a good one.
+// With spec.harmonic_criterion = change, H rises by spec.harmonic_step until the result (the
+// peaks, and with the path scope the curve) changes by at most the tolerance from the previous H
+// whose sweep reached its end; the higher H of that pair is kept.
 // Once one H has succeeded, a failed sweep moves on to the next H instead of raising its AFT
 // samples (on Table XI such retries at 2048-4096 samples cost 30-275 s a level and still failed).
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& prepared, const HbmSpec& spec, double force,

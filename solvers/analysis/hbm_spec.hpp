@@ -101,6 +101,12 @@ struct HbmSpec {
   // Where the shares must meet it: every path point and peak (a check may read any frequency), or
   // the peaks alone (what a peaks table reports).
   enum class HarmonicScope { path, peaks } harmonic_scope = HarmonicScope::path;
+  // What harmonic_tolerance bounds: the share the harmonics above H would add (estimated from one
+  // sweep), or the change of the result from the previous H that reached its end (measured, one
+  // more sweep per level): the peaks' frequency and component, and with the path scope the largest
+  // displacement along the curve, relative to the higher H's.
+  enum class HarmonicCriterion { share, change } harmonic_criterion = HarmonicCriterion::share;
+  int harmonic_step = 1;    // the smallest raise of H between two sweeps (2: odd harmonics compared)
   double tolerance = 1e-9;  // relative, hbm::HbmOptions
   // Newton iterations per start (a solve tries up to three starts). On a sweep a converging point
   // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.

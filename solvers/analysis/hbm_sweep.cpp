@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -13,6 +15,7 @@
 
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/hbm_response.hpp"
+#include "common/power_law.hpp"
 #include "frf/sweep.hpp"
 #include "hbm/sensitivity.hpp"
 
@@ -381,7 +384,8 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     if (p.ip_oop)
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
   }
-  if (spec.harmonic_tolerance > 0.0 && spec.harmonic_scope == HbmSpec::HarmonicScope::path && n_points > 0) {
+  if (spec.harmonic_tolerance > 0.0 && spec.harmonic_criterion == HbmSpec::HarmonicCriterion::share &&
+      spec.harmonic_scope == HbmSpec::HarmonicScope::path && n_points > 0) {
     // Each point on the scale of the curve (the response's largest first-harmonic amplitude over
     // the path): far from resonance the motion is small and its harmonics large beside it, but
     // small on the curve a check or a plot reads.
@@ -423,6 +427,40 @@ void add_stability(const PreparedHbm& p, const HbmSpec& spec, double force, int 
   level.seconds += seconds_since(t0);
 }
 
+bool increasing(const std::vector<double>& f) { return std::is_sorted(f.begin(), f.end(), std::less_equal<>()); }
+
+// The largest relative change from `lower` to `higher` (two sweeps of one level at different H):
+// each peak's frequency and component against the higher H's; with the path scope also each
+// response's largest displacement along the curve, the lower path interpolated at the higher one's
+// frequencies, on the scale of the higher curve's largest (a folding path: the peaks alone).
+double result_change(const HbmSpec& spec, const HbmLevel& lower, const HbmLevel& higher) {
+  double change = 0.0;
+  const auto relative = [](double a, double b) { return b > 0.0 ? std::abs(a - b) / b : (a == b ? 0.0 : 1.0); };
+  const size_t n = std::min(lower.peaks.size(), higher.peaks.size());
+  for (size_t k = 0; k < n; ++k) {
+    change = std::max(change, relative(lower.peaks[k].frequency_hz, higher.peaks[k].frequency_hz));
+    change = std::max(change, relative(lower.peaks[k].component, higher.peaks[k].component));
+  }
+  if (spec.harmonic_scope != HbmSpec::HarmonicScope::path || !increasing(lower.frequency_hz) ||
+      !increasing(higher.frequency_hz) || lower.frequency_hz.size() < 2)
+    return change;
+  const std::vector<double>& fl = lower.frequency_hz;
+  for (Index r = 0; r < higher.excursion.cols(); ++r) {
+    const double scale = higher.excursion.col(r).maxCoeff();
+    if (!(scale > 0.0)) continue;
+    for (size_t i = 0; i < higher.frequency_hz.size(); ++i) {
+      const double f = higher.frequency_hz[i];
+      if (f < fl.front() || f > fl.back()) continue;
+      const size_t j = std::min<size_t>(std::upper_bound(fl.begin(), fl.end(), f) - fl.begin(), fl.size() - 1);
+      const double t = fl[j] > fl[j - 1] ? (f - fl[j - 1]) / (fl[j] - fl[j - 1]) : 1.0;
+      const double e =
+          (1 - t) * lower.excursion(static_cast<Index>(j - 1), r) + t * lower.excursion(static_cast<Index>(j), r);
+      change = std::max(change, std::abs(e - higher.excursion(static_cast<Index>(i), r)) / scale);
+    }
+  }
+  return change;
+}
+
 }  // namespace
 
 HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
@@ -462,7 +500,8 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, double force,
                                   const HbmProgress& progress) {
   std::vector<HbmLevel::HarmonicTrial> trials;
-  std::optional<HbmLevel> kept;  // the highest H so far whose sweep reached its end with trusted peaks
+  std::vector<size_t> good_trials;  // of the sweeps that reached their end (or covered the band) with trusted peaks
+  std::optional<HbmLevel> kept;     // the highest H so far among them
   double seconds = 0.0;
   for (int h = spec.harmonics;;) {
     // More samples rescue a sweep only while no H has succeeded; after that a failed sweep is left
@@ -482,17 +521,37 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
     }
     t.seconds = level.seconds;
     seconds += level.seconds;
+    // For a peaks table, a grid sweep that covered the band counts when its peaks are trusted: a
+    // frequency that failed away from them (a super-harmonic resonance near 170.5 Hz on Table XI
+    // at H >= 3) does not move them, and one next to them makes them doubtful.
+    const bool covered = spec.harmonic_scope == HbmSpec::HarmonicScope::peaks &&
+                         spec.sweep.method == HbmSweepSpec::Method::grid && !level.frequency_hz.empty() &&
+                         level.frequency_hz.back() >= spec.sweep.f_max - 0.5 * spec.sweep.step_hz;
+    const bool good = t.trusted && (t.reached_end || covered);
+    const bool by_change = spec.harmonic_criterion == HbmSpec::HarmonicCriterion::change;
+    if (by_change && good && kept) {
+      t.change = result_change(spec, *kept, level);
+      if (good_trials.size() >= 2) {  // the last good trial holds the change from the one before it
+        const HbmLevel::HarmonicTrial& a = trials[good_trials[good_trials.size() - 2]];
+        const HbmLevel::HarmonicTrial& b = trials[good_trials.back()];
+        const std::array<double, 3> hs{static_cast<double>(a.harmonics), static_cast<double>(b.harmonics),
+                                       static_cast<double>(h)};
+        t.estimated_error = power_law_error(hs, b.change, t.change) - t.change;  // e(H) = e(H_b) - d
+      }
+    }
+    if (good) good_trials.push_back(trials.size());
     trials.push_back(t);
-    const bool good = t.reached_end && t.trusted;
-    const bool met = good && t.share <= spec.harmonic_tolerance;
+    // The change is met by the higher H of the pair, which is kept (the better of the two).
+    const bool met = good && (by_change ? t.change <= spec.harmonic_tolerance : t.share <= spec.harmonic_tolerance);
     if (good) kept = level;
     if (met || h >= spec.max_harmonics) {
       if (!kept) kept = std::move(level);
       break;
     }
-    // Straight to the highest harmonic the points or peaks need; one more when the shares were met
-    // but the sweep failed (a higher H may smooth the residual the corrector stalled on).
-    h = std::min(spec.max_harmonics, std::max(h + 1, needed));
+    // By share: straight to the highest harmonic the points or peaks need; one more when the
+    // shares were met but the sweep failed (a higher H may smooth the residual the corrector
+    // stalled on). By change: the next step.
+    h = std::min(spec.max_harmonics, std::max(h + spec.harmonic_step, by_change ? 0 : needed));
   }
   for (HbmLevel::HarmonicTrial& t : trials) t.chosen = t.harmonics == kept->harmonics;
   kept->harmonic_trials = std::move(trials);

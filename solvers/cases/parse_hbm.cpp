@@ -198,8 +198,25 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   if (r.has("harmonic_scope")) {
     if (!r.has("harmonic_tolerance")) r.fail("harmonic_scope", "applies only with harmonic_tolerance (H raised)");
     s.harmonic_scope = r.choice("harmonic_scope", {"path", "peaks"}) == "peaks" ? HbmSpec::HarmonicScope::peaks
-                                                                                 : HbmSpec::HarmonicScope::path;
+                                                                                : HbmSpec::HarmonicScope::path;
   }
+  if (r.has("harmonic_criterion")) {
+    if (!r.has("harmonic_tolerance")) r.fail("harmonic_criterion", "applies only with harmonic_tolerance (H raised)");
+    s.harmonic_criterion = r.choice("harmonic_criterion", {"share", "change"}) == "change"
+                               ? HbmSpec::HarmonicCriterion::change
+                               : HbmSpec::HarmonicCriterion::share;
+  }
+  if (const auto step = r.optional_integer("harmonic_step")) {
+    if (!r.has("harmonic_tolerance")) r.fail("harmonic_step", "applies only with harmonic_tolerance (H raised)");
+    if (*step < 1 || *step > 10) r.fail("harmonic_step", "must lie in [1, 10]");
+    s.harmonic_step = static_cast<int>(*step);
+  }
+  if (s.harmonic_criterion == HbmSpec::HarmonicCriterion::change && s.max_harmonics < s.harmonics + s.harmonic_step)
+    r.fail(
+        r.has("max_harmonics") ? "max_harmonics" : "harmonic_criterion",
+        fmt::format("harmonic_criterion = \"change\" compares two H: max_harmonics = {} must be at least harmonics + "
+                    "harmonic_step = {}",
+                    s.max_harmonics, s.harmonics + s.harmonic_step));
   if (s.harmonic_tolerance > 0.0 && samples != 0 && samples < 2 * s.max_harmonics + 1)
     r.fail(r.has("max_harmonics") ? "max_harmonics" : "time_samples",
            fmt::format("time_samples = {} resolve at most H = {}; max_harmonics = {} needs at least {} (or "
@@ -291,10 +308,12 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     s.sensitivities = parse_sensitivities(r, s);
   }
   if (r.has("stability")) {
-    if (!contacts_required) r.fail("stability", "only a harmonic balance analysis computes the stability of its solutions");
+    if (!contacts_required)
+      r.fail("stability", "only a harmonic balance analysis computes the stability of its solutions");
     const std::string st = r.choice("stability", {"none", "peaks", "path"});
-    s.stability = st == "path" ? HbmSpec::Stability::path
-                               : st == "peaks" ? HbmSpec::Stability::peaks : HbmSpec::Stability::none;
+    s.stability = st == "path"    ? HbmSpec::Stability::path
+                  : st == "peaks" ? HbmSpec::Stability::peaks
+                                  : HbmSpec::Stability::none;
   }
   if (const toml::table* t = r.optional_table("nonlinear_modes")) {
     if (!contacts_required) r.fail("nonlinear_modes", "only a harmonic balance analysis computes nonlinear modes");

@@ -6,7 +6,6 @@
 // difference at an axis's first level), and the axis with the largest estimate is refined, until
 // the estimates' sum meets the target or every axis is at its finest.
 #pragma once
-#include <array>
 #include <string>
 #include <vector>
 
@@ -33,13 +32,6 @@ struct FidelityChoice {
 // finite). Throws InputError when a column is missing or no row pairs.
 double relative_difference(const ResultTable& coarse, const ResultTable& fine, const std::vector<std::string>& columns,
                            const std::string& key = {});
-
-// The error of level x1 when the error falls as a power law e = C x^-p of the level (harmonics,
-// samples, refinement; 1 / tolerance), fitted through the differences d_before = e(x0) - e(x1) and
-// d = e(x1) - e(x2) of three successive levels x0 < x1 < x2: C x1^-p. Infinite when the
-// differences do not decrease as any such law allows (no convergence seen), d itself when the
-// convergence is faster than x^-30.
-double power_law_error(const std::array<double, 3>& x, double d_before, double d);
 
 // Runs the case's analysis at the levels `mode` asks for (fixed is not a mode here). A level whose
 // solve fails (SolverError) has an infinite difference to its neighbours, so the climb passes it.

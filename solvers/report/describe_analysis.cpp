@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "cache/model_cache.hpp"
@@ -141,8 +142,9 @@ void describe_stability(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
     for (const HbmLevel& l : hbm.levels) {
       int unstable = 0, unknown = 0;
       for (double s : l.stable) unstable += s == 0.0 ? 1 : 0, unknown += std::isnan(s) ? 1 : 0;  // NaN: unresolved
-      per_level += fmt::format("{}{} N: {} of {}{}", per_level.empty() ? "" : "; ", g(l.force), unstable,
-                               l.stable.size(), unknown ? fmt::format(" ({} unknown: growth beyond the band H resolves)", unknown) : "");
+      per_level +=
+          fmt::format("{}{} N: {} of {}{}", per_level.empty() ? "" : "; ", g(l.force), unstable, l.stable.size(),
+                      unknown ? fmt::format(" ({} unknown: growth beyond the band H resolves)", unknown) : "");
     }
     run.facts.emplace_back("unstable path points (Hill's method; frf_<Fe> columns stable, floquet_max_re)", per_level);
   }
@@ -171,23 +173,46 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
   run.facts.emplace_back(
       "Harmonic truncation at the peaks (share of the motion the harmonics above H would add, up to 3 H)",
       worst > 0 ? fmt::format("at most {:.2e} ({})", worst, where) : std::string("0 (nothing above H excited)"));
+  const bool by_change = spec.harmonic_criterion == HbmSpec::HarmonicCriterion::change;
   if (spec.harmonic_tolerance > 0.0) {
-    std::string per_level;
+    std::string per_level, unmet, beyond;
     for (const HbmLevel& l : hbm.levels) {
       std::string tried;
-      for (const HbmLevel::HarmonicTrial& t : l.harmonic_trials)
+      double change = std::numeric_limits<double>::quiet_NaN(), estimate = change;
+      for (const HbmLevel::HarmonicTrial& t : l.harmonic_trials) {
         tried += fmt::format("{}{}", tried.empty() ? "" : ", ", t.harmonics);
-      per_level +=
-          fmt::format("{}{} N: H = {} (tried {})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried);
+        if (t.chosen) change = t.change, estimate = t.estimated_error;
+      }
+      per_level += fmt::format(
+          "{}{} N: H = {} (tried {}{})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried,
+          by_change ? fmt::format("; change {:.2e}, estimated error {:.2e}", change, estimate) : std::string());
+      if (by_change && !(change <= spec.harmonic_tolerance))
+        unmet += fmt::format("{}{} N (H = {})", unmet.empty() ? "" : ", ", g(l.force), l.harmonics);
+      else if (by_change && estimate > spec.harmonic_tolerance)
+        beyond += fmt::format("{}{} N (H = {}: {:.2e})", beyond.empty() ? "" : ", ", g(l.force), l.harmonics, estimate);
     }
-    run.facts.emplace_back(fmt::format("Harmonics per level, raised until the truncation share at {} <= {} and the "
-                                       "sweep reaches its end with trusted peaks (at most H = {}; table "
-                                       "harmonic_selection)",
-                                       spec.harmonic_scope == HbmSpec::HarmonicScope::peaks ? "the peaks"
-                                                                                           : "every point and peak",
-                                       g(spec.harmonic_tolerance), spec.max_harmonics),
-                           per_level);
-    if (worst > spec.harmonic_tolerance)
+    const std::string scope =
+        spec.harmonic_scope == HbmSpec::HarmonicScope::peaks ? "the peaks" : "every point and peak";
+    run.facts.emplace_back(
+        by_change ? fmt::format("Harmonics per level, raised by {} until the change of the result at {} from the "
+                                "previous H that reached its end is <= {} (at most H = {}; table harmonic_selection)",
+                                spec.harmonic_step, scope, g(spec.harmonic_tolerance), spec.max_harmonics)
+                  : fmt::format("Harmonics per level, raised until the truncation share at {} <= {} and the sweep "
+                                "reaches its end with trusted peaks (at most H = {}; table harmonic_selection)",
+                                scope, g(spec.harmonic_tolerance), spec.max_harmonics),
+        per_level);
+    if (by_change) {
+      if (!unmet.empty())
+        run.warnings.push_back(fmt::format(
+            "the change with H did not fall to harmonic_tolerance = {} at {}: no two H up to max_harmonics = {} "
+            "that reached their ends agreed (table harmonic_selection)",
+            g(spec.harmonic_tolerance), unmet, spec.max_harmonics));
+      if (!beyond.empty())
+        run.warnings.push_back(fmt::format(
+            "the change with H met harmonic_tolerance = {} but the power law through the last three H puts the "
+            "error above it at {}: the result converges slowly in H, the change understates its error",
+            g(spec.harmonic_tolerance), beyond));
+    } else if (worst > spec.harmonic_tolerance)
       run.warnings.push_back(fmt::format(
           "the harmonic truncation share {:.2e} at the {} exceeds harmonic_tolerance = {}: no H up to max_harmonics = "
           "{} met it with a sweep that reached its end and trusted peaks",
@@ -470,9 +495,8 @@ void describe(const ContactModalSpec& spec, const ContactModalOutcome& o, RunRec
                                      : std::string("linear"),
                   spec.sticking ? fmt::format("sticking, kt = {} kn", g(spec.tangential_ratio)) : "frictionless",
                   spec.prestress ? "on" : "off"));
-  run.facts.emplace_back("contact pairs",
-                         fmt::format("{} ({} Gauss points), {} free DOFs", fmt::join(o.pair_names, ", "),
-                                     o.contact_points, o.free_dofs));
+  run.facts.emplace_back("contact pairs", fmt::format("{} ({} Gauss points), {} free DOFs",
+                                                      fmt::join(o.pair_names, ", "), o.contact_points, o.free_dofs));
   double static_s = 0, modal_s = 0;
   int iterations = 0, most = 0;
   for (const ContactGridPoint& p : o.grid) {
@@ -482,11 +506,11 @@ void describe(const ContactModalSpec& spec, const ContactModalOutcome& o, RunRec
     most = std::max(most, p.static_iterations);
   }
   const double n = static_cast<double>(std::max<size_t>(o.grid.size(), 1));
-  run.facts.emplace_back("cost per grid point [s]",
-                         fmt::format("static contact {:.3f} ({:.1f} status iterations on average, at most {}), modes "
-                                     "{:.3f}; setup {:.3f}; glued reference {:.3f}",
-                                     static_s / n, iterations / n, most, modal_s / n, o.setup_seconds,
-                                     o.glued_seconds));
+  run.facts.emplace_back(
+      "cost per grid point [s]",
+      fmt::format("static contact {:.3f} ({:.1f} status iterations on average, at most {}), modes "
+                  "{:.3f}; setup {:.3f}; glued reference {:.3f}",
+                  static_s / n, iterations / n, most, modal_s / n, o.setup_seconds, o.glued_seconds));
   if (o.glued_hz.size() > 0) {
     std::string glued;
     for (Eigen::Index m = 0; m < o.glued_hz.size(); ++m) glued += fmt::format("{}{:.2f}", m ? ", " : "", o.glued_hz[m]);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/power_law.hpp"
 #include "pipeline/run_case.hpp"
 #include "pipeline/run_fidelity.hpp"
 #include "temp_folder.hpp"

@@ -4,6 +4,7 @@
 // blades coupled by a contact, and a contact naming an unknown DOF. Units: SI.
 #include "analysis/hbm_analysis.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -273,7 +274,56 @@ TEST_F(HbmAnalysis, HarmonicToleranceRaisesHUntilTheTruncationShareIsMet) {
     }
   EXPECT_EQ(kept, 1);
   ASSERT_TRUE(adaptive.tables.count("harmonic_selection"));
-  EXPECT_EQ(adaptive.tables.at("harmonic_selection").values.rows(), static_cast<Eigen::Index>(chosen.harmonic_trials.size()));
+  EXPECT_EQ(adaptive.tables.at("harmonic_selection").values.rows(),
+            static_cast<Eigen::Index>(chosen.harmonic_trials.size()));
+}
+
+// The same oscillator with H raised until the peak itself stops moving: the change each trial
+// reports is the difference between fixed-H sweeps at the two H (measured, not estimated), the
+// higher H of the pair that meets it is kept, and it is closer to H = 15 than H = 1 is.
+TEST_F(HbmAnalysis, HarmonicChangeCriterionKeepsTheHigherHOfThePairThatAgrees) {
+  test::OscillatorCase c;
+  c.kt = "1.0e8";
+  c.levels = "[12.0]";
+  c.range = "[130.0, 220.0]";
+  c.step = "1.0";
+  c.samples = "2048";
+  const std::string h1_text = test::oscillator_case_text(c);
+  const auto fixed = [&](int h) {
+    std::string text = h1_text;
+    text.replace(text.find("harmonics = 1\n"), 14, fmt::format("harmonics = {}\n", h));
+    return run(text).levels[0].peaks[0];
+  };
+  const HbmPeak reference = fixed(15);
+  const HbmPeak single = fixed(1);
+  c.analysis_extra =
+      "harmonic_tolerance = 2e-3\nmax_harmonics = 15\nharmonic_criterion = \"change\"\nharmonic_step = 2\n"
+      "harmonic_scope = \"peaks\"\n";
+  const HbmOutcome adaptive = run(test::oscillator_case_text(c));
+  const HbmLevel& chosen = adaptive.levels[0];
+  const auto& trials = chosen.harmonic_trials;
+
+  const auto error = [&](const HbmPeak& pk) { return std::abs(pk.component / reference.component - 1); };
+  std::printf("  H = 1: error %.3e; chosen H = %d: change %.3e, error %.3e (%zu trials)\n", error(single),
+              chosen.harmonics, trials.empty() ? 0.0 : trials.back().change, error(chosen.peaks[0]), trials.size());
+  for (const HbmLevel::HarmonicTrial& t : trials)
+    std::printf("    H = %d: change %.3e, estimated error %.3e\n", t.harmonics, t.change, t.estimated_error);
+  ASSERT_GE(trials.size(), 2u);
+  EXPECT_TRUE(std::isnan(trials.front().change));
+  EXPECT_TRUE(trials.back().chosen);
+  EXPECT_EQ(trials.back().harmonics, chosen.harmonics);
+  EXPECT_LE(trials.back().change, 2e-3);
+  for (size_t t = 1; t + 1 < trials.size(); ++t) EXPECT_GT(trials[t].change, 2e-3);
+  const HbmPeak lower = fixed(trials[trials.size() - 2].harmonics), higher = fixed(chosen.harmonics);
+  const double measured = std::max(std::abs(lower.frequency_hz / higher.frequency_hz - 1),
+                                   std::abs(lower.component / higher.component - 1));
+  EXPECT_NEAR(trials.back().change, measured, 1e-9);
+  EXPECT_LT(error(chosen.peaks[0]), 0.2 * error(single));
+  // Friction converges slowly in H: the last change understates the error, the power law through
+  // the last three H bounds it.
+  ASSERT_GE(trials.size(), 3u);
+  EXPECT_GE(trials.back().estimated_error, error(chosen.peaks[0]));
+  EXPECT_LT(trials.back().estimated_error, 5 * error(chosen.peaks[0]));
 }
 
 TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {

@@ -427,7 +427,9 @@ void add_stability(const PreparedHbm& p, const HbmSpec& spec, double force, int 
   level.seconds += seconds_since(t0);
 }
 
-bool increasing(const std::vector<double>& f) { return std::is_sorted(f.begin(), f.end(), std::less_equal<>()); }
+bool increasing(const std::vector<double>& f) {
+  return std::adjacent_find(f.begin(), f.end(), std::greater_equal<>()) == f.end();
+}
 
 // The largest relative change from `lower` to `higher` (two sweeps of one level at different H):
 // each peak's frequency and component against the higher H's; with the path scope also each
@@ -522,8 +524,8 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
     t.seconds = level.seconds;
     seconds += level.seconds;
     // For a peaks table, a grid sweep that covered the band counts when its peaks are trusted: a
-    // frequency that failed away from them (a super-harmonic resonance near 170.5 Hz on Table XI
-    // at H >= 3) does not move them, and one next to them makes them doubtful.
+    // frequency that failed away from them (on Table XI at H >= 3, near 170.5 Hz, 4 Hz below the
+    // peaks) does not move them, and one next to them makes them doubtful.
     const bool covered = spec.harmonic_scope == HbmSpec::HarmonicScope::peaks &&
                          spec.sweep.method == HbmSweepSpec::Method::grid && !level.frequency_hz.empty() &&
                          level.frequency_hz.back() >= spec.sweep.f_max - 0.5 * spec.sweep.step_hz;

@@ -234,17 +234,23 @@ TEST_F(HbmAnalysis, AftToleranceRaisesTheSamplesUntilTheStiffContactIsResolved) 
   EXPECT_NEAR(raised.peaks[0].frequency_hz, reference.frequency_hz, 1e-3 * reference.frequency_hz);
 }
 
-// A Coulomb-like contact (kt = 100 k) near its stick-slip resonance: the single harmonic leaves a
-// few percent of the motion in harmonics 3 and 5. harmonic_tolerance raises H per level until the
-// estimated share is met; the peak is then closer to a fixed H = 15 sweep than the H = 1 peak,
-// the table lists every H tried, and a failed or unmet trial is never the one kept.
-TEST_F(HbmAnalysis, HarmonicToleranceRaisesHUntilTheTruncationShareIsMet) {
+// A Coulomb-like contact (kt = 100 k) swept through its stick-slip resonance at one level.
+test::OscillatorCase coulomb_like_near_resonance() {
   test::OscillatorCase c;
   c.kt = "1.0e8";
   c.levels = "[12.0]";
   c.range = "[130.0, 220.0]";
   c.step = "1.0";
   c.samples = "2048";
+  return c;
+}
+
+// A Coulomb-like contact (kt = 100 k) near its stick-slip resonance: the single harmonic leaves a
+// few percent of the motion in harmonics 3 and 5. harmonic_tolerance raises H per level until the
+// estimated share is met; the peak is then closer to a fixed H = 15 sweep than the H = 1 peak,
+// the table lists every H tried, and a failed or unmet trial is never the one kept.
+TEST_F(HbmAnalysis, HarmonicToleranceRaisesHUntilTheTruncationShareIsMet) {
+  test::OscillatorCase c = coulomb_like_near_resonance();
   const std::string h1_text = test::oscillator_case_text(c);
   std::string reference_text = h1_text;
   reference_text.replace(reference_text.find("harmonics = 1\n"), 14, "harmonics = 15\n");
@@ -282,12 +288,7 @@ TEST_F(HbmAnalysis, HarmonicToleranceRaisesHUntilTheTruncationShareIsMet) {
 // reports is the difference between fixed-H sweeps at the two H (measured, not estimated), the
 // higher H of the pair that meets it is kept, and it is closer to H = 15 than H = 1 is.
 TEST_F(HbmAnalysis, HarmonicChangeCriterionKeepsTheHigherHOfThePairThatAgrees) {
-  test::OscillatorCase c;
-  c.kt = "1.0e8";
-  c.levels = "[12.0]";
-  c.range = "[130.0, 220.0]";
-  c.step = "1.0";
-  c.samples = "2048";
+  test::OscillatorCase c = coulomb_like_near_resonance();
   const std::string h1_text = test::oscillator_case_text(c);
   const auto fixed = [&](int h) {
     std::string text = h1_text;

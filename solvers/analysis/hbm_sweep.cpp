@@ -524,8 +524,8 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
     t.seconds = level.seconds;
     seconds += level.seconds;
     // For a peaks table, a grid sweep that covered the band counts when its peaks are trusted: a
-    // frequency that failed away from them (on Table XI at H >= 3, near 170.5 Hz, 4 Hz below the
-    // peaks) does not move them, and one next to them makes them doubtful.
+    // frequency that failed away from them (on Table XI at H >= 3, 1-13 of 401 between 171.6 and
+    // 178.4 Hz) does not move them, and one next to them makes them doubtful.
     const bool covered = spec.harmonic_scope == HbmSpec::HarmonicScope::peaks &&
                          spec.sweep.method == HbmSweepSpec::Method::grid && !level.frequency_hz.empty() &&
                          level.frequency_hz.back() >= spec.sweep.f_max - 0.5 * spec.sweep.step_hz;

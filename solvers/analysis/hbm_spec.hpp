@@ -102,7 +102,7 @@ struct HbmSpec {
   // the peaks alone (what a peaks table reports).
   enum class HarmonicScope { path, peaks } harmonic_scope = HarmonicScope::path;
   // What harmonic_tolerance bounds: the share the harmonics above H would add (estimated from one
-  // sweep), or the change of the result from the previous H that reached its end (measured, one
+  // sweep), or the change of the result from the previous good H (measured, one
   // more sweep per level): the peaks' frequency and component, and with the path scope the largest
   // displacement along the curve, relative to the higher H's.
   enum class HarmonicCriterion { share, change } harmonic_criterion = HarmonicCriterion::share;

@@ -195,7 +195,9 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
         spec.harmonic_scope == HbmSpec::HarmonicScope::peaks ? "the peaks" : "every point and peak";
     run.facts.emplace_back(
         by_change ? fmt::format("Harmonics per level, raised by {} until the change of the result at {} from the "
-                                "previous H that reached its end is <= {} (at most H = {}; table harmonic_selection)",
+                                "previous good H (its sweep at its end, or over the band for the peaks, with trusted "
+                                "peaks) is <= {} (at most "
+                                "H = {}; table harmonic_selection)",
                                 spec.harmonic_step, scope, g(spec.harmonic_tolerance), spec.max_harmonics)
                   : fmt::format("Harmonics per level, raised until the truncation share at {} <= {} and the sweep "
                                 "reaches its end with trusted peaks (at most H = {}; table harmonic_selection)",
@@ -204,8 +206,8 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
     if (by_change) {
       if (!unmet.empty())
         run.warnings.push_back(fmt::format(
-            "the change with H did not fall to harmonic_tolerance = {} at {}: no two H up to max_harmonics = {} "
-            "that reached their ends agreed (table harmonic_selection)",
+            "the change with H did not fall to harmonic_tolerance = {} at {}: no two good H up to max_harmonics = {} "
+            "agreed (table harmonic_selection)",
             g(spec.harmonic_tolerance), unmet, spec.max_harmonics));
       if (!beyond.empty())
         run.warnings.push_back(fmt::format(

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 
@@ -173,6 +174,27 @@ void add_harmonic_table(HbmOutcome& o) {
                                    rows));
 }
 
+// harmonics_per_point: with the point scope, how many path points of each level were solved at
+// each H, and how many of them kept it without two H agreeing.
+void add_point_harmonics_table(HbmOutcome& o, const HbmSpec& spec) {
+  std::vector<std::vector<double>> rows;
+  for (size_t l = 0; l < o.levels.size(); ++l) {
+    const HbmLevel& level = o.levels[l];
+    std::map<int, std::pair<int, int>> by_h;  // H -> (points, unmet)
+    for (size_t i = 0; i < level.point_harmonics.size(); ++i) {
+      auto& [points, unmet] = by_h[level.point_harmonics[i]];
+      ++points;
+      if (!(level.point_change[i] <= spec.harmonic_tolerance)) ++unmet;
+    }
+    for (const auto& [h, n] : by_h)
+      rows.push_back({static_cast<double>(l + 1), level.force, static_cast<double>(h), static_cast<double>(n.first),
+                      static_cast<double>(n.second)});
+  }
+  if (rows.empty()) return;
+  o.tables.emplace("harmonics_per_point",
+                   table_from_rows("harmonics_per_point", {"level", "fe_n", "harmonics", "points", "unmet"}, rows));
+}
+
 // turning_points and coexisting_solutions: where an arclength path folds back in frequency, and the
 // frequency bands between its turning points in which it holds several solutions at once (counted
 // as the path segments crossing the band's middle; with stability on the path, the stable ones).
@@ -230,6 +252,7 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
     cols.insert(cols.end(), {"residual_n", "iterations"});
     if (!level.stable.empty()) cols.insert(cols.end(), {"stable", "floquet_max_re"});
     if (!level.harmonic_share.empty()) cols.push_back("harmonic_share");
+    if (!level.point_harmonics.empty()) cols.insert(cols.end(), {"harmonics", "harmonic_change"});
     for (const HbmParameter& parameter : spec.sensitivities)
       for (const char* q : {"_amp_m_dlog_", "_phase_deg_dlog_"})
         for (const std::string& r : p.response_names) cols.push_back(r + q + parameter.label);
@@ -244,6 +267,8 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
       row.insert(row.end(), {level.path.points[i].residual, static_cast<double>(level.path.points[i].iterations)});
       if (!level.stable.empty()) row.insert(row.end(), {level.stable[i], level.floquet_max_real[i]});
       if (!level.harmonic_share.empty()) row.push_back(level.harmonic_share[i]);
+      if (!level.point_harmonics.empty())
+        row.insert(row.end(), {static_cast<double>(level.point_harmonics[i]), level.point_change[i]});
       for (size_t j = 0; j < level.amplitude_dlog.size(); ++j)
         for (const Eigen::MatrixXd* d : {&level.amplitude_dlog[j], &level.phase_dlog_deg[j]})
           for (Index r = 0; r < d->cols(); ++r) row.push_back((*d)(static_cast<Index>(i), r));
@@ -384,6 +409,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   add_peak_tables(o, spec);
   add_sampling_table(o);
   add_harmonic_table(o);
+  add_point_harmonics_table(o, spec);
   add_fold_tables(o);
   add_frf_tables(o, spec);
   add_limit_tables(o, spec);

@@ -69,6 +69,7 @@ struct HbmPeak {
   hbm::HarmonicTruncation truncation;
   // With HbmSpec::stability: the Floquet exponents of the peak's solution (Hill's method).
   std::optional<hbm::HillStability> stability;
+  int harmonics = 0;  // H of `solution` (the level's, or with the point scope the largest of its neighbours)
 };
 
 struct HbmLevel {
@@ -91,9 +92,15 @@ struct HbmLevel {
   // path (hbm/harmonic_truncation.hpp); and the highest harmonic any point needs.
   std::vector<double> harmonic_share;
   int harmonics_needed = 0;
+  // With HbmSpec::HarmonicScope::point, per path point: the H it was solved with, and the largest
+  // relative change of its responses from the H one step below (NaN where no pair of H converged
+  // and agreed: the point keeps its highest converged H, see points_unmet).
+  std::vector<int> point_harmonics;
+  std::vector<double> point_change;
+  int points_unmet = 0;
   std::vector<double> failed_hz;  // grid frequencies that did not converge
   int samples = 0;                // AFT samples per period the level was solved with
-  int harmonics = 0;              // H the level was solved with
+  int harmonics = 0;              // H the level was solved with (the point scope: the largest any point needed)
   double seconds = 0.0;
   // With HbmSpec::aft_tolerance: every sweep tried, coarsest first; the level holds the last one.
   struct SamplingTrial {

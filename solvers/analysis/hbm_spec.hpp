@@ -99,8 +99,11 @@ struct HbmSpec {
   double harmonic_tolerance = 0.0;
   int max_harmonics = 9;
   // Where the shares must meet it: every path point and peak (a check may read any frequency), or
-  // the peaks alone (what a peaks table reports).
-  enum class HarmonicScope { path, peaks } harmonic_scope = HarmonicScope::path;
+  // the peaks alone (what a peaks table reports). `point`: each frequency of a grid sweep gets its
+  // own H (criterion change only), raised by harmonic_step until its responses (largest
+  // displacement, first harmonic, IP/OOP components) move by at most the tolerance; the next
+  // frequency starts one step lower, so H falls again away from resonance.
+  enum class HarmonicScope { path, peaks, point } harmonic_scope = HarmonicScope::path;
   // What harmonic_tolerance bounds: the share the harmonics above H would add (estimated from one
   // sweep), or the change of the result from the previous good H (measured, one
   // more sweep per level): the peaks' frequency and component, and with the path scope the largest

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "analysis/hbm_analysis.hpp"
+#include "analysis/hbm_level_system.hpp"
 #include "analysis/hbm_response.hpp"
 #include "common/power_law.hpp"
 #include "frf/sweep.hpp"
@@ -59,6 +60,17 @@ PeakValues peak_values(const PreparedHbm& p, const Eigen::VectorXcd& z, int kind
 
 std::string hbm_frf_table_name(double force) { return fmt::format("frf_{:g}", force); }
 
+hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples) {
+  hbm::HbmModel m = p.model;
+  m.harmonic_load *= force;
+  hbm::HbmOptions options;
+  options.harmonics = harmonics;
+  options.aft.samples = samples;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  return hbm::HarmonicBalance(std::move(m), options);
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -70,19 +82,27 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 // The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
 // by golden-section search between the path's neighbours of the largest point (where the path does
 // not fold there), each trial a Newton solve from the nearest path point.
-HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, const hbm::TruncationProbe& truncation,
-                  const HbmLevel& level, int kind) {
+// With the point scope the peak is solved at the largest H of the maximum and its neighbours.
+HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLevel& level, int kind) {
   const auto& pts = level.path.points;
   const Eigen::VectorXd values = p.ip_oop ? level.components.col(kind) : level.amplitude.col(0);
   Index k = 0;
   values.maxCoeff(&k);
   HbmPeak peak;
   peak.kind = p.ip_oop ? (kind == 0 ? "IP" : "OOP") : "peak";
+  peak.harmonics = level.harmonics;
+  if (!level.point_harmonics.empty()) {
+    peak.harmonics = 0;
+    for (Index j = std::max<Index>(k - 1, 0); j <= std::min<Index>(k + 1, static_cast<Index>(pts.size()) - 1); ++j)
+      peak.harmonics = std::max(peak.harmonics, level.point_harmonics[static_cast<size_t>(j)]);
+  }
+  const hbm::HarmonicBalance& system = systems.at(peak.harmonics);
+  const Index nc = static_cast<Index>(system.contact_dofs().size());
   auto solve = [&](double omega) {
     size_t nearest = 0;
     for (size_t i = 1; i < pts.size(); ++i)
       if (std::abs(pts[i].omega - omega) < std::abs(pts[nearest].omega - omega)) nearest = i;
-    return hbm::solve_at_frequency(system, omega, pts[nearest].x);
+    return hbm::solve_at_frequency(system, omega, with_harmonics(pts[nearest].x, nc, peak.harmonics));
   };
   auto value = [&](const hbm::HbmSolution& s) { return peak_values(p, first_harmonic(system, s.x, s.omega), kind); };
   hbm::HbmSolution best = solve(pts[static_cast<size_t>(k)].omega);
@@ -131,21 +151,9 @@ HbmPeak find_peak(const PreparedHbm& p, const hbm::HarmonicBalance& system, cons
     const hbm::HarmonicBalance twice(system.model(), finer);
     const Eigen::VectorXd g = system.contact_forces(best.x).force;
     peak.sampling_error = (twice.contact_forces(best.x).force - g).norm() / std::max(system.force_scale(), 1e-300);
-    peak.truncation = truncation.at(best.x, best.omega, p.responses);
+    peak.truncation = hbm::TruncationProbe(system).at(best.x, best.omega, p.responses);
   }
   return peak;
-}
-
-// The balance of one level; samples = 0 leaves the choice to hbm::HarmonicBalance.
-hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples) {
-  hbm::HbmModel m = p.model;
-  m.harmonic_load *= force;
-  hbm::HbmOptions options;
-  options.harmonics = harmonics;
-  options.aft.samples = samples;
-  options.tolerance = spec.tolerance;
-  options.max_iterations = spec.max_iterations;
-  return hbm::HarmonicBalance(std::move(m), options);
 }
 
 // The first frequency's solution. Direct Newton from the static pre-solve (or the linear limits)
@@ -219,14 +227,15 @@ std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const Hb
 
 // Fills level.amplitude_dlog and phase_dlog_deg from the converged path points: with z the
 // first-harmonic amplitude (Z = a1 - i b1), d|z| = Re(conj z dz) / |z| and d arg z = Im(conj z dz) / |z|^2.
-void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const hbm::HarmonicBalance& system, HbmLevel& level) {
-  const std::vector<hbm::ModelDerivative> derivatives = log_derivatives(p, spec, system.model());
+void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, HbmLevel& level) {
+  const std::vector<hbm::ModelDerivative> derivatives = log_derivatives(p, spec, systems.at(level.harmonics).model());
   const Index n_points = static_cast<Index>(level.path.points.size()), n_resp = static_cast<Index>(p.responses.size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   level.amplitude_dlog.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
   level.phase_dlog_deg.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
   for (Index i = 0; i < n_points; ++i) {
     const hbm::ContinuationPoint& pt = level.path.points[static_cast<size_t>(i)];
+    const hbm::HarmonicBalance& system = systems.at(point_h(level, static_cast<size_t>(i)));
     hbm::HbmSolution s;
     s.x = pt.x;
     s.omega = pt.omega;
@@ -250,59 +259,42 @@ void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const hbm::Har
   }
 }
 
-// Traces the branch by pseudo-arclength from the path's last point past grid[i] to grid[i + 1] (or
-// the last grid point), through a fold if there is one, and appends the traced points. Returns the
-// grid index reached (the sweep resumes after it), or i when the continuation failed too.
-int bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<double>& grid, int i,
-                        hbm::ContinuationResult& path) {
-  const int target = std::min(i + 1, static_cast<int>(grid.size()) - 1);
-  hbm::ContinuationOptions c;
-  c.omega_start = path.points.back().omega;
-  c.omega_end = kTwoPi * grid[static_cast<size_t>(target)];
-  c.initial = path.points.back().x;
-  c.initial_step = 0.01 * (c.omega_end - c.omega_start) / c.omega_start;  // a hundredth of the gap, scaled
-  c.max_step = 0.25 * (c.omega_end - c.omega_start) / c.omega_start;
-  c.min_step = 1e-4 * c.initial_step;
-  c.max_points = 2000;
-  const hbm::ContinuationResult bridge = hbm::continue_in_frequency(system, c);
-  path.corrector_iterations += bridge.corrector_iterations;
-  path.rejected_steps += bridge.rejected_steps;
-  if (!bridge.converged || bridge.points.size() < 2) return i;
-  path.turning_points += bridge.turning_points;
-  path.jumps += bridge.jumps;
-  path.points.insert(path.points.end(), bridge.points.begin() + 1, bridge.points.end());
-  return target;
-}
-
 HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
                           const HbmProgress& progress) {
   const auto t0 = Clock::now();
   HbmLevel level;
   level.force = force;
-  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, samples);
-  const hbm::TruncationProbe truncation(system);
-  level.samples = system.aft_options().samples;
+  const LevelSystems systems(p, spec, force, samples);
+  level.samples = systems.at(harmonics).aft_options().samples;
   level.harmonics = harmonics;
   const double omega_start = kTwoPi * spec.sweep.f_min, omega_end = kTwoPi * spec.sweep.f_max;
-  std::optional<Eigen::VectorXd> initial;
-  if (p.damper_static) {
-    // Start from the static pre-solve: the damper seated by CF, the vibration of the stuck limit.
-    initial = system.linearized(omega_start, true);
-    if (initial) {
-      const auto& dofs = system.contact_dofs();
-      for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
+  const FirstSolution first = [&](int h) {
+    const hbm::HarmonicBalance& system = systems.at(h);
+    std::optional<Eigen::VectorXd> initial;
+    if (p.damper_static) {
+      // Start from the static pre-solve: the damper seated by CF, the vibration of the stuck limit.
+      initial = system.linearized(omega_start, true);
+      if (initial) {
+        const auto& dofs = system.contact_dofs();
+        for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
+      }
     }
-  }
-  const hbm::HbmSolution first = first_solution(p, spec, force, harmonics, samples, omega_start, initial);
-  hbm::ContinuationResult& path = level.path;
-  auto report = [&](double omega, int point, int iterations) {
-    if (progress && point % 25 == 0)
-      progress(fmt::format("Fe = {:g} N, H = {}, {} samples: {:.3f} Hz, point {}, {} iterations", force, harmonics,
-                           level.samples, omega / kTwoPi, point, iterations));
+    return first_solution(p, spec, force, h, samples, omega_start, initial);
   };
-  if (!first.converged) {
-    path.failure = "first point: " + first.failure;
-  } else if (spec.sweep.method == HbmSweepSpec::Method::arclength) {
+  hbm::ContinuationResult& path = level.path;
+  const SweepReport report = [&](double omega, int point, int iterations) {
+    if (progress && point % 25 == 0)
+      progress(
+          fmt::format("Fe = {:g} N, H = {}, {} samples: {:.3f} Hz, point {}, {} iterations", force,
+                      spec.harmonic_scope == HbmSpec::HarmonicScope::point ? "per point" : fmt::to_string(harmonics),
+                      level.samples, omega / kTwoPi, point, iterations));
+  };
+  if (spec.sweep.method == HbmSweepSpec::Method::grid) {
+    sweep_grid(p, spec, systems, first, level, report);
+    level.samples = systems.at(level.harmonics).aft_options().samples;
+  } else if (const hbm::HbmSolution start = first(harmonics); !start.converged) {
+    path.failure = "first point: " + start.failure;
+  } else {
     hbm::ContinuationOptions c;
     c.omega_start = omega_start;
     c.omega_end = omega_end;
@@ -310,60 +302,9 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     c.max_step = spec.sweep.max_step;
     c.min_step = spec.sweep.min_step;
     c.max_points = 20000;
-    c.initial = first.x;
+    c.initial = start.x;
     c.progress = [&](const hbm::ContinuationProgress& s) { report(s.omega, s.point, s.iterations); };
-    path = hbm::continue_in_frequency(system, c);
-  } else {
-    // Grid: every frequency solved from the secant extrapolation of the last two converged points.
-    const std::vector<double> grid = fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz);
-    const int n = static_cast<int>(grid.size());
-    path.points.push_back({first.omega, first.x, first.residual, first.iterations, 0.0, 1.0});
-    path.corrector_iterations = first.iterations;
-    std::vector<double> failed;
-    std::string last_failure;
-    for (int i = 1; i < n; ++i) {
-      const double omega = kTwoPi * grid[static_cast<size_t>(i)];
-      const auto& pts = path.points;
-      Eigen::VectorXd guess = pts.back().x;
-      if (pts.size() >= 2) {
-        const auto& a = pts[pts.size() - 2];
-        const auto& b = pts.back();
-        guess += (b.x - a.x) * ((omega - b.omega) / (b.omega - a.omega));
-      }
-      hbm::HbmSolution s = hbm::solve_at_frequency(system, omega, guess);
-      path.corrector_iterations += s.iterations;
-      if (!s.converged) {
-        // Approach it in smaller steps from the last converged point (a kink between the two).
-        Eigen::VectorXd x = pts.back().x;
-        const double w0 = pts.back().omega;
-        for (int k = 1; k <= 8; ++k) {
-          s = hbm::solve_at_frequency(system, w0 + (omega - w0) * k / 8.0, x);
-          path.corrector_iterations += s.iterations;
-          if (!s.converged) break;
-          x = s.x;
-        }
-      }
-      report(omega, i, s.iterations);
-      if (!s.converged) {
-        // A fold (the branch turns back) or a kink the grid cannot step over: trace the branch by
-        // arclength from the last converged point to the next grid frequency, through the fold.
-        if (const int reached = bridge_by_arclength(system, grid, i, path); reached > i) {
-          i = reached;
-          continue;
-        }
-        failed.push_back(omega / kTwoPi);
-        level.failed_hz.push_back(omega / kTwoPi);
-        last_failure = s.failure;
-        ++path.rejected_steps;
-        continue;
-      }
-      path.points.push_back({omega, std::move(s.x), s.residual, s.iterations, 0.0, 1.0});
-    }
-    path.converged = failed.empty();
-    if (!failed.empty())
-      path.failure =
-          fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})",
-                      failed.size(), n, failed.front(), failed.back(), last_failure);
+    path = hbm::continue_in_frequency(systems.at(harmonics), c);
   }
   const size_t n_points = path.points.size();
   level.amplitude.resize(static_cast<Index>(n_points), static_cast<Index>(p.responses.size()));
@@ -373,7 +314,7 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   for (size_t i = 0; i < n_points; ++i) {
     const hbm::ContinuationPoint& pt = path.points[i];
     level.frequency_hz.push_back(pt.omega / kTwoPi);
-    const Eigen::MatrixXd q = system.recover(pt.x, pt.omega);
+    const Eigen::MatrixXd q = systems.at(point_h(level, i)).recover(pt.x, pt.omega);
     const Eigen::VectorXcd z = first_harmonic(q);
     for (size_t r = 0; r < p.responses.size(); ++r) {
       level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
@@ -391,15 +332,16 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     // small on the curve a check or a plot reads.
     std::vector<double> scales;
     for (Index r = 0; r < level.amplitude.cols(); ++r) scales.push_back(level.amplitude.col(r).maxCoeff());
+    const hbm::TruncationProbe truncation(systems.at(harmonics));
     for (const hbm::ContinuationPoint& pt : path.points) {
       const hbm::HarmonicTruncation t = truncation.at(pt.x, pt.omega, p.responses, scales);
       level.harmonic_share.push_back(t.ok ? t.largest() : 1.0);  // not evaluated: as if nothing were resolved
       level.harmonics_needed = std::max(level.harmonics_needed, t.needed(spec.harmonic_tolerance));
     }
   }
-  if (!spec.sensitivities.empty()) add_sensitivities(p, spec, system, level);
+  if (!spec.sensitivities.empty()) add_sensitivities(p, spec, systems, level);
   if (n_points > 0)
-    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, system, truncation, level, k));
+    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, systems, level, k));
   level.seconds = seconds_since(t0);
   return level;
 }
@@ -412,18 +354,21 @@ bool peaks_trusted(const HbmLevel& level) {
 
 // The Floquet exponents spec.stability asks for, on the sweep a level keeps (not on the sampling
 // trials it discards).
-void add_stability(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, HbmLevel& level) {
+// `samples` as the level's sweep asked for them (0: automatic per H).
+void add_stability(const PreparedHbm& p, const HbmSpec& spec, double force, int samples, HbmLevel& level) {
   if (spec.stability == HbmSpec::Stability::none) return;
   const auto t0 = Clock::now();
-  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, level.samples);
+  const LevelSystems systems(p, spec, force, samples);
   if (spec.stability == HbmSpec::Stability::path)
-    for (const hbm::ContinuationPoint& pt : level.path.points) {
-      const hbm::HillStability st = hbm::hill_stability(system, pt.x, pt.omega);
+    for (size_t i = 0; i < level.path.points.size(); ++i) {
+      const hbm::ContinuationPoint& pt = level.path.points[i];
+      const hbm::HillStability st = hbm::hill_stability(systems.at(point_h(level, i)), pt.x, pt.omega);
       level.stable.push_back(st.verdict());
       level.floquet_max_real.push_back(st.ok ? st.max_real : std::numeric_limits<double>::quiet_NaN());
     }
   for (HbmPeak& pk : level.peaks)
-    if (pk.solution.converged) pk.stability = hbm::hill_stability(system, pk.solution.x, pk.solution.omega);
+    if (pk.solution.converged)
+      pk.stability = hbm::hill_stability(systems.at(pk.harmonics), pk.solution.x, pk.solution.omega);
   level.seconds += seconds_since(t0);
 }
 
@@ -467,9 +412,10 @@ double result_change(const HbmSpec& spec, const HbmLevel& lower, const HbmLevel&
 
 HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
                          const HbmProgress& progress, bool retry_failures) {
-  HbmLevel level = sweep_at_samples(p, spec, force, harmonics, spec.time_samples, progress);
+  int samples = spec.time_samples;
+  HbmLevel level = sweep_at_samples(p, spec, force, harmonics, samples, progress);
   if (!(spec.aft_tolerance > 0.0)) {
-    add_stability(p, spec, force, harmonics, level);
+    add_stability(p, spec, force, samples, level);
     return level;
   }
   std::vector<HbmLevel::SamplingTrial> trials;
@@ -490,17 +436,20 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     int factor = 2;
     if (t.reached_end && t.trusted)
       while (factor < 64 && t.aft_error / factor > spec.aft_tolerance) factor *= 2;
-    const int next = std::min(factor * level.samples, spec.max_time_samples);
-    level = sweep_at_samples(p, spec, force, harmonics, next, progress);
+    samples = std::min(factor * level.samples, spec.max_time_samples);
+    level = sweep_at_samples(p, spec, force, harmonics, samples, progress);
   }
   level.sampling_trials = std::move(trials);
   level.seconds = seconds;  // the cost of reaching the tolerance, every trial included
-  add_stability(p, spec, force, harmonics, level);
+  add_stability(p, spec, force, samples, level);
   return level;
 }
 
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, double force,
                                   const HbmProgress& progress) {
+  // The point scope chooses H inside the one sweep, frequency by frequency.
+  if (spec.harmonic_scope == HbmSpec::HarmonicScope::point)
+    return sweep_hbm_level(p, spec, force, spec.harmonics, progress);
   std::vector<HbmLevel::HarmonicTrial> trials;
   std::vector<size_t> good_trials;  // of the sweeps that reached their end (or covered the band) with trusted peaks
   std::optional<HbmLevel> kept;     // the highest H so far among them

@@ -197,8 +197,10 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   }
   if (r.has("harmonic_scope")) {
     if (!r.has("harmonic_tolerance")) r.fail("harmonic_scope", "applies only with harmonic_tolerance (H raised)");
-    s.harmonic_scope = r.choice("harmonic_scope", {"path", "peaks"}) == "peaks" ? HbmSpec::HarmonicScope::peaks
-                                                                                : HbmSpec::HarmonicScope::path;
+    const std::string scope = r.choice("harmonic_scope", {"path", "peaks", "point"});
+    s.harmonic_scope = scope == "peaks"   ? HbmSpec::HarmonicScope::peaks
+                       : scope == "point" ? HbmSpec::HarmonicScope::point
+                                          : HbmSpec::HarmonicScope::path;
   }
   if (r.has("harmonic_criterion")) {
     if (!r.has("harmonic_tolerance")) r.fail("harmonic_criterion", "applies only with harmonic_tolerance (H raised)");
@@ -211,6 +213,9 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     if (*step < 1 || *step > 10) r.fail("harmonic_step", "must lie in [1, 10]");
     s.harmonic_step = static_cast<int>(*step);
   }
+  if (s.harmonic_scope == HbmSpec::HarmonicScope::point && s.harmonic_criterion != HbmSpec::HarmonicCriterion::change)
+    r.fail("harmonic_scope",
+           "harmonic_scope = \"point\" compares two H at each frequency: it needs harmonic_criterion = \"change\"");
   if (s.harmonic_criterion == HbmSpec::HarmonicCriterion::change && s.max_harmonics < s.harmonics + s.harmonic_step)
     r.fail(
         r.has("max_harmonics") ? "max_harmonics" : "harmonic_criterion",
@@ -286,6 +291,8 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     r.fail("contact", "an hbm analysis needs at least one [[analysis.contact]] or an [analysis.damper]");
   s.sweep.method = r.choice("sweep", {"grid", "arclength"}, "grid") == "grid" ? HbmSweepSpec::Method::grid
                                                                               : HbmSweepSpec::Method::arclength;
+  if (s.harmonic_scope == HbmSpec::HarmonicScope::point && s.sweep.method != HbmSweepSpec::Method::grid)
+    r.fail("sweep", "harmonic_scope = \"point\" chooses H at each frequency of a grid: it needs sweep = \"grid\"");
   if (s.sweep.method == HbmSweepSpec::Method::grid) {
     s.sweep.step_hz = r.positive("step_hz");
     if ((s.sweep.f_max - s.sweep.f_min) / s.sweep.step_hz > 1e6)

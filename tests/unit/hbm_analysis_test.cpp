@@ -10,6 +10,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <map>
 #include <numbers>
 #include <string>
 
@@ -325,6 +326,67 @@ TEST_F(HbmAnalysis, HarmonicChangeCriterionKeepsTheHigherHOfThePairThatAgrees) {
   ASSERT_GE(trials.size(), 3u);
   EXPECT_GE(trials.back().estimated_error, error(chosen.peaks[0]));
   EXPECT_LT(trials.back().estimated_error, 5 * error(chosen.peaks[0]));
+}
+
+// H per frequency (harmonic_scope = "point"): far from the stuck resonance the contact sticks, the
+// motion is linear and the first pair (H = 1, 3) agrees; near it the contact slips and H rises.
+// Each point holds the fixed-H solution at its H, its change is the difference of the fixed-H
+// sweeps of its pair, and it is closer to H = 15 than H = 1 is.
+TEST_F(HbmAnalysis, PointScopeRaisesHOnlyWhereTheContactSlips) {
+  test::OscillatorCase c;
+  c.step = "1.0";
+  c.samples = "256";
+  c.levels = "[3.0]";
+  const std::string h1_text = test::oscillator_case_text(c);
+  std::map<int, HbmLevel> fixed;
+  const auto at_h = [&](int h) -> const HbmLevel& {
+    if (!fixed.count(h)) {
+      std::string text = h1_text;
+      text.replace(text.find("harmonics = 1\n"), 14, fmt::format("harmonics = {}\n", h));
+      fixed.emplace(h, run(text).levels[0]);
+    }
+    return fixed.at(h);
+  };
+  c.analysis_extra =
+      "harmonic_tolerance = 1e-4\nmax_harmonics = 11\nharmonic_criterion = \"change\"\nharmonic_step = 2\n"
+      "harmonic_scope = \"point\"\n";
+  const HbmOutcome outcome = run(test::oscillator_case_text(c));
+  const HbmLevel& level = outcome.levels[0];
+  ASSERT_TRUE(level.path.converged);
+  const size_t n = level.path.points.size();
+  ASSERT_EQ(n, 131u);
+  ASSERT_EQ(level.point_harmonics.size(), n);
+  ASSERT_EQ(level.point_change.size(), n);
+  EXPECT_EQ(level.points_unmet, 0);
+  EXPECT_EQ(level.point_harmonics.front(), 3);
+  EXPECT_EQ(level.point_harmonics.back(), 3);
+  EXPECT_LT(level.point_change.front(), 1e-6);
+  EXPECT_GT(level.harmonics, 3);
+  EXPECT_GT(level.peaks[0].harmonics, 3);  // the largest H of the maximum and its neighbours
+
+  double error = 0.0, error_h1 = 0.0;
+  const HbmLevel& reference = at_h(15);
+  for (size_t i = 0; i < n; ++i) {
+    const int h = level.point_harmonics[i];
+    const HbmLevel &upper = at_h(h), &lower = at_h(h - 2);
+    ASSERT_EQ(upper.frequency_hz.size(), n);
+    ASSERT_EQ(lower.frequency_hz.size(), n);
+    const Eigen::Index r = static_cast<Eigen::Index>(i);
+    EXPECT_NEAR(level.excursion(r, 0) / upper.excursion(r, 0), 1.0, 1e-7) << "point " << i;
+    const double measured = std::max(std::abs(lower.excursion(r, 0) / upper.excursion(r, 0) - 1),
+                                     std::abs(lower.amplitude(r, 0) / upper.amplitude(r, 0) - 1));
+    EXPECT_NEAR(level.point_change[i], measured, 1e-6) << "point " << i;
+    const double exact = reference.excursion(r, 0);
+    error = std::max(error, std::abs(level.excursion(r, 0) / exact - 1));
+    error_h1 = std::max(error_h1, std::abs(at_h(1).excursion(r, 0) / exact - 1));
+  }
+  int raised = 0;
+  for (int h : level.point_harmonics) raised += h > 3;
+  std::printf("  H per point 3-%d, %d of %zu points above H = 3; largest error vs H = 15: %.2e (H = 1: %.2e)\n",
+              level.harmonics, raised, n, error, error_h1);
+  EXPECT_LT(raised, static_cast<int>(n) / 2);
+  EXPECT_LT(error, 0.2 * error_h1);
+  ASSERT_TRUE(outcome.tables.count("harmonics_per_point"));
 }
 
 TEST_F(HbmAnalysis, ContactOnAnUnknownDofIsAnInputErrorNamingTheDof) {

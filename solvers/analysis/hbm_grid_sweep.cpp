@@ -1,0 +1,238 @@
+// The grid sweep of one force level, with one H for the level or an H per frequency.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "analysis/hbm_level_system.hpp"
+#include "analysis/hbm_response.hpp"
+#include "frf/sweep.hpp"
+
+namespace bb {
+
+using Eigen::Index;
+
+const hbm::HarmonicBalance& LevelSystems::at(int harmonics) const {
+  std::unique_ptr<hbm::HarmonicBalance>& s = systems_[harmonics];
+  if (!s) s = std::make_unique<hbm::HarmonicBalance>(level_system(p_, spec_, force_, harmonics, samples_));
+  return *s;
+}
+
+Eigen::VectorXd with_harmonics(const Eigen::VectorXd& x, Index contact_dofs, int harmonics) {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(contact_dofs * (2 * harmonics + 1));
+  const Index n = std::min(x.size(), y.size());
+  y.head(n) = x.head(n);  // coefficient-major layout: the lower harmonics come first
+  return y;
+}
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Traces the branch by pseudo-arclength from the path's last point past grid[i] to grid[i + 1] (or
+// the last grid point), through a fold if there is one, and appends the traced points. Returns the
+// grid index reached (the sweep resumes after it), or i when the continuation failed too.
+int bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<double>& grid, int i,
+                        hbm::ContinuationResult& path) {
+  const int target = std::min(i + 1, static_cast<int>(grid.size()) - 1);
+  hbm::ContinuationOptions c;
+  c.omega_start = path.points.back().omega;
+  c.omega_end = kTwoPi * grid[static_cast<size_t>(target)];
+  c.initial = path.points.back().x;
+  c.initial_step = 0.01 * (c.omega_end - c.omega_start) / c.omega_start;  // a hundredth of the gap, scaled
+  c.max_step = 0.25 * (c.omega_end - c.omega_start) / c.omega_start;
+  c.min_step = 1e-4 * c.initial_step;
+  c.max_points = 2000;
+  const hbm::ContinuationResult bridge = hbm::continue_in_frequency(system, c);
+  path.corrector_iterations += bridge.corrector_iterations;
+  path.rejected_steps += bridge.rejected_steps;
+  if (!bridge.converged || bridge.points.size() < 2) return i;
+  path.turning_points += bridge.turning_points;
+  path.jumps += bridge.jumps;
+  path.points.insert(path.points.end(), bridge.points.begin() + 1, bridge.points.end());
+  return target;
+}
+
+// What the point scope compares between two H at one frequency: each response's largest
+// displacement and first-harmonic amplitude, and the IP / OOP components.
+std::vector<double> point_values(const PreparedHbm& p, const hbm::HarmonicBalance& system, const Eigen::VectorXd& x,
+                                 double omega) {
+  const Eigen::MatrixXd q = system.recover(x, omega);
+  const Eigen::VectorXcd z = first_harmonic(q);
+  std::vector<double> v;
+  for (Index r : p.responses) {
+    v.push_back(largest_excursion(q.row(r)));
+    v.push_back(std::abs(z[r]));
+  }
+  if (p.ip_oop)
+    for (int k = 0; k < 2; ++k) v.push_back(peak_values(p, z, k).component);
+  return v;
+}
+
+double largest_relative_change(const std::vector<double>& lower, const std::vector<double>& higher) {
+  double change = 0.0;
+  for (size_t k = 0; k < higher.size(); ++k)
+    change = std::max(
+        change, higher[k] > 0.0 ? std::abs(lower[k] - higher[k]) / higher[k] : (lower[k] == higher[k] ? 0.0 : 1.0));
+  return change;
+}
+
+struct PointChoice {
+  hbm::HbmSolution solution;
+  int harmonics = 0;
+  double change = kNaN;  // from the H one step below; NaN when the pair did not both converge
+  int iterations = 0;
+};
+
+// Solves one frequency at H = start (clamped to [harmonics, max_harmonics - step]) and
+// start + step, then raises the pair by a step until the two agree to harmonic_tolerance or the
+// upper one reaches max_harmonics; keeps the upper H of the last pair (the lower where only it
+// converged). solve(h, from) solves at H = h from the lower H's solution, or from the sweep's
+// guess when from is null.
+PointChoice choose_harmonics(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, double omega,
+                             int start, const std::function<hbm::HbmSolution(int, const Eigen::VectorXd*)>& solve) {
+  const int step = spec.harmonic_step, top = spec.max_harmonics;
+  int a = std::clamp(start, spec.harmonics, std::max(spec.harmonics, top - step));
+  PointChoice c;
+  hbm::HbmSolution sa = solve(a, nullptr);
+  c.iterations += sa.iterations;
+  for (;;) {
+    const int b = std::min(a + step, top);
+    hbm::HbmSolution sb = solve(b, sa.converged ? &sa.x : nullptr);
+    c.iterations += sb.iterations;
+    double change = kNaN;
+    if (sa.converged && sb.converged)
+      change = largest_relative_change(point_values(p, systems.at(a), sa.x, omega),
+                                       point_values(p, systems.at(b), sb.x, omega));
+    if (change <= spec.harmonic_tolerance || b >= top) {
+      const bool upper = sb.converged || !sa.converged;
+      c.harmonics = upper ? b : a;
+      c.change = change;
+      c.solution = upper ? std::move(sb) : std::move(sa);
+      return c;
+    }
+    a = b;
+    sa = std::move(sb);
+  }
+}
+
+}  // namespace
+
+void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
+                HbmLevel& level, const SweepReport& report) {
+  const bool per_point = spec.harmonic_scope == HbmSpec::HarmonicScope::point;
+  hbm::ContinuationResult& path = level.path;
+  const std::vector<double> grid = fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz);
+  const int n = static_cast<int>(grid.size());
+  const Index nc = static_cast<Index>(systems.at(level.harmonics).contact_dofs().size());
+  int h_last = level.harmonics;  // H of the last point accepted
+  const auto accept = [&](double omega, hbm::HbmSolution& s, int h, double change, int iterations) {
+    path.points.push_back({omega, std::move(s.x), s.residual, iterations, 0.0, 1.0});
+    if (per_point) {
+      level.point_harmonics.push_back(h);
+      level.point_change.push_back(change);
+      if (!(change <= spec.harmonic_tolerance)) ++level.points_unmet;
+    }
+    h_last = h;
+  };
+
+  const double omega0 = kTwoPi * grid.front();
+  hbm::HbmSolution s0;
+  int h0 = level.harmonics;
+  double change0 = kNaN;
+  if (per_point) {
+    PointChoice c =
+        choose_harmonics(p, spec, systems, omega0, level.harmonics, [&](int h, const Eigen::VectorXd* from) {
+          if (from) {
+            hbm::HbmSolution s = hbm::solve_at_frequency(systems.at(h), omega0, with_harmonics(*from, nc, h));
+            if (s.converged) return s;
+          }
+          return first(h);
+        });
+    s0 = std::move(c.solution), h0 = c.harmonics, change0 = c.change;
+    s0.iterations = c.iterations;
+  } else {
+    s0 = first(level.harmonics);
+  }
+  path.corrector_iterations = s0.iterations;
+  if (!s0.converged) {
+    path.failure = "first point: " + s0.failure;
+    return;
+  }
+  accept(omega0, s0, h0, change0, s0.iterations);
+
+  std::vector<double> failed;
+  std::string last_failure;
+  for (int i = 1; i < n; ++i) {
+    const double omega = kTwoPi * grid[static_cast<size_t>(i)];
+    const auto& pts = path.points;
+    Eigen::VectorXd guess = pts.back().x;
+    if (pts.size() >= 2) {
+      const auto& a = pts[pts.size() - 2];
+      const auto& b = pts.back();
+      guess += (b.x - with_harmonics(a.x, nc, h_last)) * ((omega - b.omega) / (b.omega - a.omega));
+    }
+    hbm::HbmSolution s;
+    int h = h_last, iterations = 0;
+    double change = kNaN;
+    if (per_point) {
+      // Start one step below the previous point's pair, so that H falls again past a resonance.
+      PointChoice c = choose_harmonics(
+          p, spec, systems, omega, h_last - 2 * spec.harmonic_step, [&](int hh, const Eigen::VectorXd* from) {
+            return hbm::solve_at_frequency(systems.at(hh), omega, with_harmonics(from ? *from : guess, nc, hh));
+          });
+      s = std::move(c.solution), h = c.harmonics, change = c.change, iterations = c.iterations;
+    } else {
+      s = hbm::solve_at_frequency(systems.at(h_last), omega, guess);
+      iterations = s.iterations;
+    }
+    path.corrector_iterations += iterations;
+    if (!s.converged) {
+      // Approach it in smaller steps from the last converged point (a kink between the two).
+      h = h_last, change = kNaN;
+      const hbm::HarmonicBalance& system = systems.at(h_last);
+      Eigen::VectorXd x = pts.back().x;
+      const double w0 = pts.back().omega;
+      for (int k = 1; k <= 8; ++k) {
+        s = hbm::solve_at_frequency(system, w0 + (omega - w0) * k / 8.0, x);
+        path.corrector_iterations += s.iterations;
+        if (!s.converged) break;
+        x = s.x;
+      }
+      iterations = s.iterations;
+    }
+    report(omega, i, iterations);
+    if (!s.converged) {
+      // A fold (the branch turns back) or a kink the grid cannot step over: trace the branch by
+      // arclength from the last converged point to the next grid frequency, through the fold.
+      const size_t before = path.points.size();
+      if (const int reached = bridge_by_arclength(systems.at(h_last), grid, i, path); reached > i) {
+        if (per_point)
+          for (size_t k = before; k < path.points.size(); ++k) {
+            level.point_harmonics.push_back(h_last);
+            level.point_change.push_back(kNaN);
+            ++level.points_unmet;
+          }
+        i = reached;
+        continue;
+      }
+      failed.push_back(omega / kTwoPi);
+      level.failed_hz.push_back(omega / kTwoPi);
+      last_failure = s.failure;
+      ++path.rejected_steps;
+      continue;
+    }
+    accept(omega, s, h, change, iterations);
+  }
+  path.converged = failed.empty();
+  if (!failed.empty())
+    path.failure =
+        fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})",
+                    failed.size(), n, failed.front(), failed.back(), last_failure);
+  if (per_point) level.harmonics = *std::max_element(level.point_harmonics.begin(), level.point_harmonics.end());
+}
+
+}  // namespace bb

@@ -1,0 +1,58 @@
+// The balances one force level of an hbm analysis is solved with, and its grid sweep: shared by
+// the sweep of a level (hbm_sweep.cpp) and the grid with an H per frequency (hbm_grid_sweep.cpp).
+#pragma once
+#include <Eigen/Dense>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "analysis/hbm_analysis.hpp"
+#include "hbm/harmonic_balance.hpp"
+
+namespace bb {
+
+// The balance of one level; samples = 0 leaves the choice to hbm::HarmonicBalance.
+hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples);
+
+// The balances of one level, one per H, built on first use (the point scope solves its
+// frequencies at different H).
+class LevelSystems {
+ public:
+  LevelSystems(const PreparedHbm& p, const HbmSpec& spec, double force, int samples)
+      : p_(p), spec_(spec), force_(force), samples_(samples) {}
+  const hbm::HarmonicBalance& at(int harmonics) const;
+
+ private:
+  const PreparedHbm& p_;
+  const HbmSpec& spec_;
+  double force_;
+  int samples_;
+  mutable std::map<int, std::unique_ptr<hbm::HarmonicBalance>> systems_;
+};
+
+// x (contact-DOF harmonics, layout of hbm/condensed_balance.hpp) with `harmonics` harmonics: the
+// higher ones cut, or added as zero.
+Eigen::VectorXd with_harmonics(const Eigen::VectorXd& x, Eigen::Index contact_dofs, int harmonics);
+
+// The H of path point i: the level's, or with the point scope the point's own.
+inline int point_h(const HbmLevel& level, size_t i) {
+  return level.point_harmonics.empty() ? level.harmonics : level.point_harmonics[i];
+}
+
+// The first frequency's solution at H harmonics (Newton from the static pre-solve, else a
+// homotopy in the force).
+using FirstSolution = std::function<hbm::HbmSolution(int harmonics)>;
+// Progress of a sweep: (omega, point, iterations).
+using SweepReport = std::function<void(double, int, int)>;
+
+// The grid sweep of one level: every frequency from the secant extrapolation of the last two
+// converged points, a failed one approached in smaller steps, then bridged by arclength through a
+// fold. Fills level.path and level.failed_hz, and with the point scope level.point_harmonics,
+// point_change and points_unmet. level.harmonics is the H of a fixed-H sweep, and the start of a
+// point-scope one (which sets it to the largest H used).
+void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
+                HbmLevel& level, const SweepReport& report);
+
+}  // namespace bb

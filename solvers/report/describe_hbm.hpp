@@ -1,0 +1,16 @@
+// The facts an hbm analysis adds to its report (describe_analysis.hpp dispatches to it).
+#pragma once
+#include <string>
+
+#include "analysis/hbm_analysis.hpp"
+#include "cache/model_cache.hpp"
+#include "report/run_record.hpp"
+
+namespace bb {
+
+// Whether a reduction or a set of modes was computed here or came from the model cache.
+void describe_cache(const std::string& what, const CacheUse& use, RunRecord& run);
+
+void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run);
+
+}  // namespace bb

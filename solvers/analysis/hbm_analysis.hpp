@@ -93,11 +93,10 @@ struct HbmLevel {
   std::vector<double> harmonic_share;
   int harmonics_needed = 0;
   // With HbmSpec::HarmonicScope::point, per path point: the H it was solved with, and the largest
-  // relative change of its responses from the H one step below (NaN where no pair of H converged
-  // and agreed: the point keeps its highest converged H, see points_unmet).
+  // relative change of its responses from the H one step below (NaN where the last pair did not
+  // both converge). NaN or above the tolerance: the point kept its H without two H agreeing.
   std::vector<int> point_harmonics;
   std::vector<double> point_change;
-  int points_unmet = 0;
   std::vector<double> failed_hz;  // grid frequencies that did not converge
   int samples = 0;                // AFT samples per period the level was solved with
   int harmonics = 0;              // H the level was solved with (the point scope: the largest any point needed)

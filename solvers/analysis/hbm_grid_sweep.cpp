@@ -20,6 +20,16 @@ const hbm::HarmonicBalance& LevelSystems::at(int harmonics) const {
   return *s;
 }
 
+const hbm::TruncationProbe& LevelSystems::probe(int harmonics) const {
+  std::unique_ptr<hbm::TruncationProbe>& t = probes_[harmonics];
+  if (!t) t = std::make_unique<hbm::TruncationProbe>(at(harmonics));
+  return *t;
+}
+
+double relative_change(double value, double reference) {
+  return reference > 0.0 ? std::abs(value - reference) / reference : (value == reference ? 0.0 : 1.0);
+}
+
 Eigen::VectorXd with_harmonics(const Eigen::VectorXd& x, Index contact_dofs, int harmonics) {
   Eigen::VectorXd y = Eigen::VectorXd::Zero(contact_dofs * (2 * harmonics + 1));
   const Index n = std::min(x.size(), y.size());
@@ -74,9 +84,7 @@ std::vector<double> point_values(const PreparedHbm& p, const hbm::HarmonicBalanc
 
 double largest_relative_change(const std::vector<double>& lower, const std::vector<double>& higher) {
   double change = 0.0;
-  for (size_t k = 0; k < higher.size(); ++k)
-    change = std::max(
-        change, higher[k] > 0.0 ? std::abs(lower[k] - higher[k]) / higher[k] : (lower[k] == higher[k] ? 0.0 : 1.0));
+  for (size_t k = 0; k < higher.size(); ++k) change = std::max(change, relative_change(lower[k], higher[k]));
   return change;
 }
 
@@ -134,7 +142,6 @@ void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& s
     if (per_point) {
       level.point_harmonics.push_back(h);
       level.point_change.push_back(change);
-      if (!(change <= spec.harmonic_tolerance)) ++level.points_unmet;
     }
     h_last = h;
   };
@@ -214,7 +221,6 @@ void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& s
           for (size_t k = before; k < path.points.size(); ++k) {
             level.point_harmonics.push_back(h_last);
             level.point_change.push_back(kNaN);
-            ++level.points_unmet;
           }
         i = reached;
         continue;

@@ -10,6 +10,7 @@
 
 #include "analysis/hbm_analysis.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "hbm/harmonic_truncation.hpp"
 
 namespace bb {
 
@@ -23,6 +24,8 @@ class LevelSystems {
   LevelSystems(const PreparedHbm& p, const HbmSpec& spec, double force, int samples)
       : p_(p), spec_(spec), force_(force), samples_(samples) {}
   const hbm::HarmonicBalance& at(int harmonics) const;
+  // The truncation probe of at(harmonics), built once (it holds a balance of up to 3 H).
+  const hbm::TruncationProbe& probe(int harmonics) const;
 
  private:
   const PreparedHbm& p_;
@@ -30,7 +33,11 @@ class LevelSystems {
   double force_;
   int samples_;
   mutable std::map<int, std::unique_ptr<hbm::HarmonicBalance>> systems_;
+  mutable std::map<int, std::unique_ptr<hbm::TruncationProbe>> probes_;
 };
+
+// |value - reference| / reference; 0 when both are 0, 1 when only the reference is.
+double relative_change(double value, double reference);
 
 // x (contact-DOF harmonics, layout of hbm/condensed_balance.hpp) with `harmonics` harmonics: the
 // higher ones cut, or added as zero.
@@ -49,8 +56,8 @@ using SweepReport = std::function<void(double, int, int)>;
 
 // The grid sweep of one level: every frequency from the secant extrapolation of the last two
 // converged points, a failed one approached in smaller steps, then bridged by arclength through a
-// fold. Fills level.path and level.failed_hz, and with the point scope level.point_harmonics,
-// point_change and points_unmet. level.harmonics is the H of a fixed-H sweep, and the start of a
+// fold. Fills level.path and level.failed_hz, and with the point scope level.point_harmonics and
+// point_change. level.harmonics is the H of a fixed-H sweep, and the start of a
 // point-scope one (which sets it to the largest H used).
 void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
                 HbmLevel& level, const SweepReport& report);

@@ -151,7 +151,7 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
     const hbm::HarmonicBalance twice(system.model(), finer);
     const Eigen::VectorXd g = system.contact_forces(best.x).force;
     peak.sampling_error = (twice.contact_forces(best.x).force - g).norm() / std::max(system.force_scale(), 1e-300);
-    peak.truncation = hbm::TruncationProbe(system).at(best.x, best.omega, p.responses);
+    peak.truncation = systems.probe(peak.harmonics).at(best.x, best.omega, p.responses);
   }
   return peak;
 }
@@ -332,7 +332,7 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     // small on the curve a check or a plot reads.
     std::vector<double> scales;
     for (Index r = 0; r < level.amplitude.cols(); ++r) scales.push_back(level.amplitude.col(r).maxCoeff());
-    const hbm::TruncationProbe truncation(systems.at(harmonics));
+    const hbm::TruncationProbe& truncation = systems.probe(harmonics);
     for (const hbm::ContinuationPoint& pt : path.points) {
       const hbm::HarmonicTruncation t = truncation.at(pt.x, pt.omega, p.responses, scales);
       level.harmonic_share.push_back(t.ok ? t.largest() : 1.0);  // not evaluated: as if nothing were resolved
@@ -382,11 +382,10 @@ bool increasing(const std::vector<double>& f) {
 // frequencies, on the scale of the higher curve's largest (a folding path: the peaks alone).
 double result_change(const HbmSpec& spec, const HbmLevel& lower, const HbmLevel& higher) {
   double change = 0.0;
-  const auto relative = [](double a, double b) { return b > 0.0 ? std::abs(a - b) / b : (a == b ? 0.0 : 1.0); };
   const size_t n = std::min(lower.peaks.size(), higher.peaks.size());
   for (size_t k = 0; k < n; ++k) {
-    change = std::max(change, relative(lower.peaks[k].frequency_hz, higher.peaks[k].frequency_hz));
-    change = std::max(change, relative(lower.peaks[k].component, higher.peaks[k].component));
+    change = std::max(change, relative_change(lower.peaks[k].frequency_hz, higher.peaks[k].frequency_hz));
+    change = std::max(change, relative_change(lower.peaks[k].component, higher.peaks[k].component));
   }
   if (spec.harmonic_scope != HbmSpec::HarmonicScope::path || !increasing(lower.frequency_hz) ||
       !increasing(higher.frequency_hz) || lower.frequency_hz.size() < 2)

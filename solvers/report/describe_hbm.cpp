@@ -114,8 +114,10 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
       for (const HbmPeak& pk : l.peaks) at_peaks.push_back(pk.harmonics);
       per_level += fmt::format("{}{} N: H = {}-{} (mean {:.2f}; peaks at H = {})", per_level.empty() ? "" : "; ",
                                g(l.force), *lo, *hi, mean, fmt::join(at_peaks, ", "));
-      if (l.points_unmet > 0)
-        unmet += fmt::format("{}{} N ({} of {})", unmet.empty() ? "" : ", ", g(l.force), l.points_unmet,
+      const auto points_unmet = std::count_if(l.point_change.begin(), l.point_change.end(),
+                                              [&](double c) { return !(c <= spec.harmonic_tolerance); });
+      if (points_unmet > 0)
+        unmet += fmt::format("{}{} N ({} of {})", unmet.empty() ? "" : ", ", g(l.force), points_unmet,
                              l.point_harmonics.size());
     }
     run.facts.emplace_back(

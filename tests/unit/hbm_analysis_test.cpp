@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -357,7 +358,8 @@ TEST_F(HbmAnalysis, PointScopeRaisesHOnlyWhereTheContactSlips) {
   ASSERT_EQ(n, 131u);
   ASSERT_EQ(level.point_harmonics.size(), n);
   ASSERT_EQ(level.point_change.size(), n);
-  EXPECT_EQ(level.points_unmet, 0);
+  EXPECT_EQ(std::count_if(level.point_change.begin(), level.point_change.end(), [](double d) { return !(d <= 1e-3); }),
+            0);
   EXPECT_EQ(level.point_harmonics.front(), 3);
   EXPECT_EQ(level.point_harmonics.back(), 3);
   EXPECT_LT(level.point_change.front(), 1e-6);

@@ -154,7 +154,7 @@ void add_deflection_table(RotatingOutcome& o, const Model& model, const Rotating
 void add_oscillation_table(RotatingOutcome& o, const RotatingSpec& spec, const Eigen::MatrixXd& means) {
   const Index first = steady_start(o.history, spec);
   const Index n = means.rows() - first;
-  if (n < 64 || o.history.time.size() < 2) return;
+  if (n < 64 || o.history.time.size() < 2 || means.cols() == 0) return;  // no history recorded: nothing to measure
   const double dt = (o.history.time.back() - o.history.time[static_cast<size_t>(first)]) / static_cast<double>(n - 1);
   std::vector<AmplitudeSpectrum> spectra;
   for (Index c = 0; c < means.cols(); ++c) spectra.emplace_back(means.col(c).tail(n), dt);
@@ -277,6 +277,27 @@ void add_stiffening_table(RotatingOutcome& o, const Model& model, const Rotating
   o.tables.emplace("stiffening", std::move(t));
 }
 
+// The integration's steps, known once the time step is: each step a few dense solves of the basis
+// size, and a row of every recorded history (the statistics use every step).
+WorkEstimate step_work(const RotatingSpec& spec, double time_step, Index basis_size, size_t recorded_dofs) {
+  const double steps = std::ceil(spec.end_time / time_step);
+  const double n = static_cast<double>(basis_size) + 1.0;
+  WorkEstimate e;
+  e.operations = steps * 30.0 * n * n;
+  e.bytes = steps * (static_cast<double>(recorded_dofs) + 12.0) * 8.0;
+  e.basis =
+      fmt::format("{:.3g} steps of {:.3g} s{} over {} s, {} elastic coordinates", steps, time_step,
+                  spec.time_step > 0 ? "" : " (40 per period of the lowest rotating mode)", spec.end_time, basis_size);
+  e.at = spec.at;
+  e.key = spec.time_step > 0 ? "analysis.end_time_s, time_step_s" : "analysis.end_time_s";
+  if (steps > kMaxRotatingSteps)  // the limit the parser holds a given step to, for the automatic one
+    throw InputError(
+        fmt::format("{}: '{}': {} exceed the limit of {:.0e} steps: shorten end_time_s or give a larger "
+                    "time_step_s",
+                    e.at.where(), e.key, e.basis, kMaxRotatingSteps));
+  return e;
+}
+
 }  // namespace
 
 AmplitudeSpectrum::AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt) {
@@ -311,7 +332,7 @@ SpectralPeak AmplitudeSpectrum::peak(double f_lo, double f_hi) const {
   return {(static_cast<double>(k) + shift) * df_, y1 - 0.25 * (y0 - y2) * shift};
 }
 
-RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
+RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec, const WorkLimits& limits) {
   RotatingOutcome o;
   o.dim = model.mesh.dim;
   o.history_sets = spec.histories;
@@ -341,6 +362,7 @@ RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec) {
   o.time_step = spec.time_step > 0 ? spec.time_step
                                    : ffrf::time_step_resolving(modal_body, steady_speed(spec), 1, 40, mode_options);
   o.setup_seconds = seconds_since(t0);
+  require_within(step_work(spec, o.time_step, basis.size(), dofs.size()), limits);
 
   const ffrf::RotationProfile profile = profile_of(spec);
   o.profile = profile.describe();

@@ -7,6 +7,7 @@
 
 #include "analysis/rotating_spec.hpp"
 #include "assembly/stress_recovery.hpp"
+#include "common/work_limits.hpp"
 #include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"
 #include "model/model.hpp"
@@ -32,7 +33,7 @@ struct RotatingOutcome {
 
 // Throws InputError for a history set the model lacks or a basis the body cannot hold, SolverError
 // when the run diverges (energy blow-up, spin-softening divergence: the message names the time).
-RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec);
+RotatingOutcome run_rotating(const Model& model, const RotatingSpec& spec, const WorkLimits& limits = {});
 
 // The amplitude spectrum of a sampled signal (mean removed, Hann window, zero-padded FFT), and its
 // dominant peak in a band: the local maximum refined by a parabola; NaN when the maximum sits on the

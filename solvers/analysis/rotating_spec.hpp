@@ -12,6 +12,9 @@
 
 namespace bb {
 
+// The most steps one rotating run may take (each is kept in the history): given or automatic step.
+inline constexpr double kMaxRotatingSteps = 5e7;
+
 struct RotatingSpec {
   // The rotor's motion: a constant speed from t = 0 (the thesis: 300 rad/s), the smooth spin-up of
   // Kane, Ryan & Banerjee (1987) to `speed` over `spin_up_time`, or free under a constant torque.

@@ -4,6 +4,7 @@
 
 #include "analysis/mode_pairs.hpp"
 #include "analysis/stress_tables.hpp"
+#include "analysis/work_estimate.hpp"
 #include "common/errors.hpp"
 
 namespace bb {
@@ -60,8 +61,8 @@ AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgress&) {
-  RotatingOutcome o = run_rotating(model, spec);
+AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgress&, const WorkLimits& limits) {
+  RotatingOutcome o = run_rotating(model, spec, limits);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o)};
 }
@@ -74,8 +75,17 @@ AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmP
 
 }  // namespace
 
-AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress) {
-  return std::visit([&](const auto& s) { return run(s, model, progress); }, spec);
+AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,
+                             const WorkLimits& limits) {
+  require_within(estimate_work(spec, model), limits);
+  return std::visit(
+      [&](const auto& s) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, RotatingSpec>)
+          return run(s, model, progress, limits);
+        else
+          return run(s, model, progress);
+      },
+      spec);
 }
 
 }  // namespace bb

@@ -15,6 +15,7 @@
 #include "analysis/rotating_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "analysis/time_analysis.hpp"
+#include "common/work_limits.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
 
@@ -77,8 +78,10 @@ decltype(auto) visit_analysis(const AnalysisSpec& spec, const AnalysisResults& r
 }
 
 // Runs the analysis. `progress` receives the progress lines of long sweeps (none when empty).
-// Throws InputError for a spec the model cannot serve (unknown points, sets), SolverError when a
-// solver fails in a way the analysis does not report in its tables.
-AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress = {});
+// Throws InputError for a spec the model cannot serve (unknown points, sets) or whose estimated
+// work or memory exceeds `limits` (before any solve), SolverError when a solver fails in a way the
+// analysis does not report in its tables.
+AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress = {},
+                             const WorkLimits& limits = {});
 
 }  // namespace bb

@@ -59,7 +59,11 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   const std::string kind = r.choice("kind", {"peaks", "frf", "hysteresis"});
   const DataKind k = kind == "peaks" ? DataKind::peaks : kind == "frf" ? DataKind::frf : DataKind::hysteresis;
   const std::filesystem::path file = r.input_file("file", case_file.parent_path());
-  d.data = read_measured_data(file, k);
+  try {
+    d.data = read_measured_data(file, k);
+  } catch (const InputError& e) {
+    r.fail("file", e.what());  // the case, line and key that named the file, then the file's own error
+  }
   d.name = r.optional_label("name").value_or(printable(file.stem().string()));
   d.table = r.string("table");
   const KindColumns allowed = kind_columns(k);
@@ -156,8 +160,9 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
       const std::string name(key.str());
       if (std::find(c.fit_checks.begin(), c.fit_checks.end(), name) == c.fit_checks.end())
         r.fail("check_uncertainties", fmt::format("'{}' is not one of fit_checks", name));
-      const std::optional<double> sigma = value.value<double>();
-      if (!sigma || !(*sigma > 0.0)) r.fail("check_uncertainties", fmt::format("'{}' needs a positive number", name));
+      const std::optional<double> sigma = toml_number(value);
+      if (!sigma || !(*sigma > 0.0) || !number_problem(*sigma).empty())
+        r.fail("check_uncertainties", fmt::format("'{}' needs a positive number", name));
       c.check_uncertainties[name] = *sigma;
     }
   }
@@ -176,8 +181,7 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     if (*n < 1 || *n > 100) r.fail("starts", "must lie in [1, 100]");
     c.starts = static_cast<int>(*n);
   }
-  if (const auto n = r.optional_integer("seed")) {
-    if (*n < 0 || *n > 4294967295L) r.fail("seed", "must lie in [0, 2^32)");
+  if (const auto n = r.optional_integer("seed", 0, 4294967295L)) {
     c.seed = static_cast<unsigned>(*n);
   }
   if (const auto cross = r.optional_string("cross_check")) {

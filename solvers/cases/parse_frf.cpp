@@ -55,8 +55,9 @@ Eigen::MatrixXd parse_square_matrix(TomlReader& r, const std::string& key, size_
   for (size_t i = 0; i < n; ++i) {
     const toml::array* row = rows[i].as_array();
     for (size_t j = 0; j < n; ++j) {
-      const std::optional<double> v = (*row)[j].value<double>();
-      if (!v || !std::isfinite(*v)) r.fail(key, fmt::format("entry ({}, {}) is not a finite number", i + 1, j + 1));
+      const std::optional<double> v = toml_number((*row)[j]);
+      if (!v || !number_problem(*v).empty())
+        r.fail(key, fmt::format("entry ({}, {}) is not a finite number", i + 1, j + 1));
       m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *v;
     }
   }

@@ -19,8 +19,8 @@ namespace fs = std::filesystem;
 std::vector<std::pair<PointDof, double>> parse_combination(TomlReader& r, const std::string& key) {
   std::vector<std::pair<PointDof, double>> out;
   for (const auto& [name, value] : r.table(key)) {
-    const std::optional<double> c = value.value<double>();
-    if (!c || !std::isfinite(*c) || *c == 0.0)
+    const std::optional<double> c = toml_number(value);
+    if (!c || !number_problem(*c).empty() || *c == 0.0)
       r.fail(key, fmt::format("the coefficient of '{}' must be a finite nonzero number", name.str()));
     out.emplace_back(parse_point_dof(r, key, std::string(name.str())), *c);
   }
@@ -272,6 +272,12 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
       if ((*s.damping_matrix - s.damping_matrix->transpose()).cwiseAbs().maxCoeff() >
           1e-8 * s.damping_matrix->cwiseAbs().maxCoeff())
         m.fail("damping", "must be symmetric");
+      // Negative damping feeds energy in: no steady forced response exists to balance.
+      const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(*s.damping_matrix).eigenvalues();
+      if (eig.size() > 0 && eig.minCoeff() < -1e-12 * std::max(eig.cwiseAbs().maxCoeff(), 1e-300))
+        m.fail("damping",
+               fmt::format("must be positive semi-definite (negative damping); its smallest eigenvalue is {:.6g}",
+                           eig.minCoeff()));
     }
     s.model = parse_rom(m, folder);
     if (!s.model.forces.empty() || !s.model.responses.empty())

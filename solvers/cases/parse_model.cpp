@@ -29,11 +29,17 @@ std::vector<Eigen::Vector3d> parse_points(TomlReader& r, const std::string& key,
     const toml::array* p = points[i].as_array();
     if (!p || p->size() != 3 || !(*p)[0].is_number() || !(*p)[1].is_number() || !(*p)[2].is_number())
       r.fail(key, fmt::format("point {} must be [x, y, z] with three numbers", i + 1));
-    out.emplace_back((*p)[0].value<double>().value(), (*p)[1].value<double>().value(), (*p)[2].value<double>().value());
-    if (!out.back().allFinite()) r.fail(key, "coordinates must be finite");
+    out.emplace_back(*toml_number((*p)[0]), *toml_number((*p)[1]), *toml_number((*p)[2]));
+    for (double c : out.back())
+      if (const std::string problem = number_problem(c); !problem.empty())
+        r.fail(key, fmt::format("point {}: {}", i + 1,
+                                problem == "must be finite" ? "coordinates must be finite" : problem));
   }
   return out;
 }
+
+// The largest mesh the generators build (nodes): far beyond any that one machine factorizes.
+constexpr long kMaxGeneratedNodes = 20'000'000;
 
 int parse_divisions(TomlReader& r, const std::string& key) {
   const long n = r.integer(key);
@@ -52,11 +58,21 @@ HexBlockSpec parse_hex_block(TomlReader r, ElementType element, std::string& bod
   b.nx = parse_divisions(r, "nx");
   b.ny = parse_divisions(r, "ny");
   b.nz = parse_divisions(r, "nz");
+  if (const double nodes = (b.nx + 1.0) * (b.ny + 1.0) * (b.nz + 1.0) * (element == ElementType::hex20 ? 4.0 : 1.0);
+      nodes > static_cast<double>(kMaxGeneratedNodes))
+    r.fail("nx", fmt::format("{} x {} x {} {} divisions make about {:.3g} nodes, above the limit of {} for a "
+                             "generated mesh",
+                             b.nx, b.ny, b.nz, element_name(element), nodes, kMaxGeneratedNodes));
   // Orientation: corners 1-4 must run counterclockwise seen from corner 5's side.
   const Eigen::Vector3d e1 = b.corners[1] - b.corners[0], e2 = b.corners[3] - b.corners[0],
                         e3 = b.corners[4] - b.corners[0];
   if (!(e1.cross(e2).dot(e3) > 0))
     r.fail("corners", "corners 1-4 must run counterclockwise seen from corners 5-8 (positive volume)");
+  if (const int a = inverted_corner(b.corners); a > 0)
+    r.fail("corners", fmt::format("the block is twisted or inverted at corner {}: its elements there would have a "
+                                  "non-positive Jacobian (the three block edges leaving every corner must form a "
+                                  "right-handed frame)",
+                                  a));
   r.finish();
   return b;
 }
@@ -178,14 +194,17 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
     const toml::array* p = corners[i].as_array();
     if (!p || p->size() != 2 || !(*p)[0].is_number() || !(*p)[1].is_number())
       r.fail("corners", fmt::format("corner {} must be [x, y] with two numbers", i + 1));
-    q.corners[i] = {(*p)[0].value<double>().value(), (*p)[1].value<double>().value()};
-    if (!q.corners[i].allFinite()) r.fail("corners", "coordinates must be finite");
+    q.corners[i] = {*toml_number((*p)[0]), *toml_number((*p)[1])};
+    for (double c : q.corners[i])
+      if (const std::string problem = number_problem(c); !problem.empty())
+        r.fail("corners", problem == "must be finite" ? "coordinates must be finite" : problem);
   }
   const long nx = r.integer("nx"), ny = r.integer("ny");
   if (nx < 1) r.fail("nx", fmt::format("must be >= 1, found {}", nx));
   if (ny < 1) r.fail("ny", fmt::format("must be >= 1, found {}", ny));
-  // DOF numbers are int (CHOLMOD's int interface): keep 3 (nx+1)(ny+1) well inside its range.
-  constexpr long kMaxNodes = 200'000'000;
+  // Far beyond any mesh one machine factorizes (the work estimate refuses those, with the memory they
+  // need), and small enough that generating the mesh to estimate it stays quick.
+  constexpr long kMaxNodes = kMaxGeneratedNodes;
   if (nx > kMaxNodes || ny > kMaxNodes || (nx + 1) * (ny + 1) > kMaxNodes)
     r.fail(nx >= ny ? "nx" : "ny", fmt::format("{} x {} divisions exceed the limit of {} nodes", nx, ny, kMaxNodes));
   q.nx = static_cast<int>(nx);
@@ -335,8 +354,7 @@ void parse_contact_pair(TomlReader r, ModelSpec& spec) {
     if (other.name == c.name) r.fail("name", fmt::format("a second contact pair named '{}'", c.name));
   c.contact = r.name("contact");
   c.target = r.name("target");
-  if (c.contact == c.target)
-    r.fail("target", fmt::format("the same surface '{}' on both sides of the pair", c.target));
+  if (c.contact == c.target) r.fail("target", fmt::format("the same surface '{}' on both sides of the pair", c.target));
   c.interference = r.boolean("interference", false);
   r.finish();
   spec.contact_pairs.push_back(std::move(c));

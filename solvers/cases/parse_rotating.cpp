@@ -93,7 +93,8 @@ RotatingSpec parse_rotating(TomlReader& r) {
     s.time_step = finite_positive(r, "time_step_s");
     if (s.time_step > s.end_time)
       r.fail("time_step_s", fmt::format("{} s exceeds end_time_s = {} s", s.time_step, s.end_time));
-    if (s.end_time / s.time_step > 5e7) r.fail("time_step_s", "more than 5e7 steps: choose a larger step");
+    if (s.end_time / s.time_step > kMaxRotatingSteps)
+      r.fail("time_step_s", "more than 5e7 steps: choose a larger step");
   }
   if (r.has("rho_infinity")) {
     s.rho_infinity = r.number("rho_infinity");

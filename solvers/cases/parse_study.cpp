@@ -12,7 +12,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-RefinementStudySpec parse_refinement_study(TomlReader r) {
+// A node set the model defines (checked here, so that an unknown one fails with or without --study).
+std::string known_set(TomlReader& r, const std::string& key, const ModelSpec& model) {
+  const std::string name = r.string(key);
+  std::vector<std::string> names;
+  for (const NodeSetSpec& s : model.sets) names.push_back(s.name);
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    r.fail(key, fmt::format("no node set '{}' in [sets] (the sets are: {})", name,
+                            names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "))));
+  return name;
+}
+
+RefinementStudySpec parse_refinement_study(TomlReader r, const ModelSpec& model) {
   RefinementStudySpec s;
   s.at = r.location();
   r.choice("kind", {"refinement"});
@@ -21,10 +32,10 @@ RefinementStudySpec parse_refinement_study(TomlReader r) {
     s.levels.push_back(static_cast<int>(level));
   }
   if (s.levels.size() < 3) r.fail("levels", "need at least 3 levels to estimate a convergence order");
-  s.probe_set = r.string("probe_set");
+  s.probe_set = known_set(r, "probe_set", model);
   s.probe_direction = parse_direction(r, "probe_direction", r.string("probe_direction"));
   if (r.has("load_split")) s.load_split = parse_split(r, "load_split");
-  s.load_set = r.optional_string("load_set");
+  if (r.has("load_set")) s.load_set = known_set(r, "load_set", model);
   TomlReader ref(r.table("reference"), r.path() + ".reference", r.file());
   ref.choice("kind", {"timoshenko_cantilever"});
   s.beam_length = ref.positive("length");
@@ -186,10 +197,9 @@ StudySpec parse_study(TomlReader& top, const ModelSpec& model, const AnalysisSpe
       top.fail("study", "a modal_refinement study needs a two_blade or hex_blocks mesh and a modal analysis");
     return s;
   }
-  RefinementStudySpec s = parse_refinement_study(TomlReader(study, "study", file));
   if (model.mesh.kind != MeshSpec::Kind::mapped_quad || !std::holds_alternative<StaticSpec>(analysis))
     top.fail("study", "a refinement study needs a mapped_quad mesh and a static analysis");
-  return s;
+  return parse_refinement_study(TomlReader(study, "study", file), model);
 }
 
 }  // namespace bb

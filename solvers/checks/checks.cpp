@@ -18,6 +18,7 @@ ReferenceColumn read_reference_column(const std::filesystem::path& file, const s
                                       const std::string& value_column) {
   if (!std::filesystem::is_regular_file(file))
     throw InputError(fmt::format("reference file not found: {}", file.string()));
+  require_readable_file(file);
   ReferenceColumn out;
   try {
     CsvReader<2> in(file.string());
@@ -53,6 +54,7 @@ std::vector<std::pair<long, std::string>> read_reference_labels(const std::files
                                                                 const std::string& label_column) {
   if (!std::filesystem::is_regular_file(file))
     throw InputError(fmt::format("reference file not found: {}", file.string()));
+  require_readable_file(file);
   std::vector<std::pair<long, std::string>> out;
   try {
     CsvReader<2> in(file.string());
@@ -70,6 +72,21 @@ std::vector<std::pair<long, std::string>> read_reference_labels(const std::files
     throw InputError(fmt::format("{}: {}", file.string(), e.what()));
   }
   return out;
+}
+
+void require_check_references(const std::vector<CheckSpec>& checks) {
+  for (const CheckSpec& c : checks) {
+    try {
+      if (!c.reference_case.empty() && !std::filesystem::is_regular_file(c.reference_case))
+        throw InputError(fmt::format("reference case not found: {}", c.reference_case.string()));
+      if (c.reference.empty()) continue;
+      for (const auto& [result_column, reference_column] : c.compare)
+        read_reference_column(c.reference, c.key, reference_column);
+      for (const std::string& label : c.labels) read_reference_labels(c.reference, c.key, label);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: check '{}': {}", c.at.where(), c.name, e.what()));
+    }
+  }
 }
 
 namespace {

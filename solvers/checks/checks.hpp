@@ -42,6 +42,11 @@ std::vector<std::pair<long, std::string>> read_reference_labels(const std::files
                                                                 const std::string& key_column,
                                                                 const std::string& label_column);
 
+// Opens every reference the checks name (each compared column and label column of a reference
+// file, the file of a reference case), so that a missing file, column or number stops the run
+// before any solve instead of after it. InputError naming the check's line and name.
+void require_check_references(const std::vector<CheckSpec>& checks);
+
 // The computed row of each reference row when a check does not pair them by key (match = mac: from
 // checks/mode_matching; a reference key absent from `computed_key` has no partner and fails).
 struct RowMatch {

@@ -95,7 +95,26 @@ struct RunArgs {
   std::string out;
   bool study = false, no_plots = false;
   bb::FidelityMode fidelity = bb::FidelityMode::fixed;
+  bb::WorkLimits limits;
 };
+
+// --max-work and --max-memory: the bounds every analysis's estimate is held to before it starts.
+void add_limit_options(CLI::App* app, bb::WorkLimits& limits) {
+  app->add_option("--max-work", limits.operations,
+                  "Largest estimated floating-point operations of one analysis (default 1e12); a larger input is "
+                  "refused before it runs")
+      ->check(CLI::PositiveNumber);
+  app->add_option_function<double>(
+         "--max-memory", [&limits](double gb) { limits.bytes = gb * 1e9; },
+         "Largest estimated memory of one analysis [GB] (default: three quarters of this machine's)")
+      ->check(CLI::PositiveNumber);
+}
+
+// The same bounds as options of a child `bladebench run`.
+void append_limit_args(const bb::WorkLimits& limits, std::vector<std::string>& command) {
+  command.insert(command.end(), {"--max-work", fmt::format("{:.17g}", limits.operations)});
+  if (limits.bytes > 0) command.insert(command.end(), {"--max-memory", fmt::format("{:.17g}", limits.bytes / 1e9)});
+}
 
 // --fidelity on run and validate: the case's settings unless asked (see cases/README.md, "Fidelity").
 void add_fidelity_option(CLI::App* app, bb::FidelityMode& mode) {
@@ -120,6 +139,7 @@ int run_command(const RunArgs& a) {
     opt.study = a.study;
     opt.plots = !a.no_plots;
     opt.fidelity = a.fidelity;
+    opt.limits = a.limits;
     if (!a.out.empty()) opt.out_dir = a.cases.size() == 1 ? fs::path(a.out) : fs::path(a.out) / fs::path(c).stem();
     const bb::RunOutcome o = bb::run_case(c, opt);
     print_outcome(o, "");
@@ -133,6 +153,7 @@ struct ValidateArgs {
   bool study = false, no_plots = false;
   bb::FidelityMode fidelity = bb::FidelityMode::fixed;
   int jobs = 1;
+  bb::WorkLimits limits;
 };
 
 // `bladebench run` of one case as validate would run it in-process, for a child process.
@@ -142,6 +163,7 @@ std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& fi
       bb::fidelity_mode_name(a.fidelity)};
   if (a.study) c.emplace_back("--study");
   if (a.no_plots) c.emplace_back("--no-plots");
+  append_limit_args(a.limits, c);
   if (const auto& cache = bb::model_cache_settings()) {
     c.emplace_back("--cache-dir");
     c.push_back(cache->folder.string());
@@ -267,6 +289,7 @@ int validate_command(const ValidateArgs& a) {
       opt.study = a.study;
       opt.plots = !a.no_plots;
       opt.fidelity = a.fidelity;
+      opt.limits = a.limits;
       // Output folder by file stem first; the case name is only known after parsing.
       opt.out_dir = fs::path(a.out) / files[i].stem();
       const bb::RunOutcome o = bb::run_case(files[i], opt);
@@ -460,6 +483,7 @@ int main(int argc, char** argv) {
   run->add_flag("--study", run_args.study, "Also run the case's [study] (mesh refinement, accuracy vs cost)");
   run->add_flag("--no-plots", run_args.no_plots, "Skip gnuplot figures");
   add_fidelity_option(run, run_args.fidelity);
+  add_limit_options(run, run_args.limits);
   CacheArgs cache_args;
   add_cache_options(run, cache_args);
 
@@ -471,6 +495,7 @@ int main(int argc, char** argv) {
   validate->add_flag("--study", validate_args.study, "Also run every case's [study]");
   validate->add_flag("--no-plots", validate_args.no_plots, "Skip gnuplot figures");
   add_fidelity_option(validate, validate_args.fidelity);
+  add_limit_options(validate, validate_args.limits);
   validate
       ->add_option("-j,--jobs", validate_args.jobs,
                    "Cases run at once, each in its own process (default 1; the machine's cores: the fastest)")

@@ -2,13 +2,16 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+
 #include "common/errors.hpp"
 
 namespace bb {
 
 LineSource::LineSource(std::filesystem::path file) : file_(std::move(file)) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file_, ec)) throw InputError(file_.string() + ": cannot open (it is a directory)");
+  require_readable_file(file_);
   try {
     in_ = std::make_unique<io::LineReader>(file_.string());
   } catch (const io::error::can_not_open_file&) {
@@ -16,13 +19,48 @@ LineSource::LineSource(std::filesystem::path file) : file_(std::move(file)) {
   }
 }
 
+void require_readable_file(const std::filesystem::path& file, bool text) {
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::status(file, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw InputError(fmt::format("{}: cannot open ({})", file.string(), ec.message()));  // a symlink loop, say
+  if (!std::filesystem::exists(st)) throw InputError(file.string() + ": cannot open (no such file)");
+  if (std::filesystem::is_directory(st)) throw InputError(file.string() + ": cannot open (it is a directory)");
+  // A device (/dev/zero), a FIFO or a socket never ends or never is data.
+  if (!std::filesystem::is_regular_file(st))
+    throw InputError(file.string() + ": cannot open (not a regular file: a device, a FIFO or a socket)");
+  if (!text) return;
+  // The line readers end a line at a NUL byte: one inside a cell would silently cut its value.
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot open");
+  std::vector<char> block(1 << 16);
+  unsigned line = 1;
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    const auto n = static_cast<size_t>(in.gcount());
+    if (const void* nul = std::memchr(block.data(), '\0', n)) {
+      line += static_cast<unsigned>(
+          std::count(static_cast<const char*>(block.data()), static_cast<const char*>(nul), '\n'));
+      throw InputError(
+          fmt::format("{}:{}: a NUL byte in the file (binary data, or a corrupted text file)", file.string(), line));
+    }
+    line += static_cast<unsigned>(std::count(block.data(), block.data() + n, '\n'));
+  }
+}
+
 LineSource::~LineSource() = default;
 
 bool LineSource::next(std::string_view& line) {
-  const char* raw = in_->next_line();
+  const char* raw = nullptr;
+  try {
+    raw = in_->next_line();
+  } catch (const io::error::base& e) {  // a line longer than the reader's block, say
+    fail(e.what());
+  }
   if (!raw) return false;
   line_ = in_->get_file_line();
   line = raw;
+
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // files written on Windows
   return true;
 }

@@ -46,6 +46,11 @@ class LineSource {
   unsigned line_ = 0;
 };
 
+// InputError naming the file unless it is a regular file that exists (not a folder, a device such as
+// /dev/zero, a FIFO, a dangling link or a link loop) and, when `text`, holds no NUL byte (the line
+// readers would end a cell there silently).
+void require_readable_file(const std::filesystem::path& file, bool text = true);
+
 // Without leading and trailing blanks (spaces, tabs, \r).
 std::string_view trim(std::string_view text);
 

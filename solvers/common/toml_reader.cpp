@@ -31,6 +31,12 @@ std::string type_name(const toml::node& n) {
 
 }  // namespace
 
+std::optional<double> toml_number(const toml::node& n) {
+  if (const auto* i = n.as_integer()) return static_cast<double>(i->get());
+  if (const auto* f = n.as_floating_point()) return f->get();
+  return std::nullopt;
+}
+
 std::string SourceLocation::where() const {
   return line > 0 ? fmt::format("{}:{}", file.string(), line) : file.string();
 }
@@ -65,10 +71,10 @@ const toml::node& TomlReader::required(const std::string& key) {
 
 double TomlReader::number(const std::string& key) {
   const toml::node& n = required(key);
-  if (!n.is_number()) fail(key, "expected a number, found " + type_name(n));
-  const double v = n.value<double>().value();
-  if (!std::isfinite(v)) fail(key, "must be finite");
-  return v;
+  const std::optional<double> v = toml_number(n);
+  if (!v) fail(key, "expected a number, found " + type_name(n));
+  if (const std::string problem = number_problem(*v); !problem.empty()) fail(key, problem);
+  return *v;
 }
 
 std::optional<double> TomlReader::optional_number(const std::string& key) {
@@ -89,15 +95,17 @@ double TomlReader::positive(const std::string& key) {
   return v;
 }
 
-long TomlReader::integer(const std::string& key) {
+long TomlReader::integer(const std::string& key, long lo, long hi) {
   const toml::node& n = required(key);
   if (!n.is_integer()) fail(key, "expected an integer, found " + type_name(n));
-  return static_cast<long>(n.value<int64_t>().value());
+  const int64_t v = n.as_integer()->get();
+  if (v < lo || v > hi) fail(key, fmt::format("{} is out of range: must lie in {}..{}", v, lo, hi));
+  return static_cast<long>(v);
 }
 
-std::optional<long> TomlReader::optional_integer(const std::string& key) {
+std::optional<long> TomlReader::optional_integer(const std::string& key, long lo, long hi) {
   if (!has(key)) return std::nullopt;
-  return integer(key);
+  return integer(key, lo, hi);
 }
 
 bool TomlReader::boolean(const std::string& key, bool fallback) {
@@ -170,19 +178,22 @@ const toml::array& TomlReader::array(const std::string& key) {
 std::vector<double> TomlReader::number_array(const std::string& key) {
   std::vector<double> out;
   for (const toml::node& n : array(key)) {
-    if (!n.is_number()) fail(key, "expected an array of numbers, found " + type_name(n) + " in it");
-    const double v = n.value<double>().value();
-    if (!std::isfinite(v)) fail(key, "array entries must be finite");
-    out.push_back(v);
+    const std::optional<double> v = toml_number(n);
+    if (!v) fail(key, "expected an array of numbers, found " + type_name(n) + " in it");
+    if (!std::isfinite(*v)) fail(key, "array entries must be finite");
+    if (const std::string problem = number_problem(*v); !problem.empty()) fail(key, "an entry: " + problem);
+    out.push_back(*v);
   }
   return out;
 }
 
-std::vector<long> TomlReader::integer_array(const std::string& key) {
+std::vector<long> TomlReader::integer_array(const std::string& key, long lo, long hi) {
   std::vector<long> out;
   for (const toml::node& n : array(key)) {
     if (!n.is_integer()) fail(key, "expected an array of integers, found " + type_name(n) + " in it");
-    out.push_back(static_cast<long>(n.value<int64_t>().value()));
+    const int64_t v = n.as_integer()->get();
+    if (v < lo || v > hi) fail(key, fmt::format("an entry {} is out of range: must lie in {}..{}", v, lo, hi));
+    out.push_back(static_cast<long>(v));
   }
   return out;
 }

@@ -1,17 +1,24 @@
 // Typed access to one TOML table with errors that name file, line and key, and a final
-// check that rejects keys the case format does not know (typos must not pass silently).
+// check that rejects keys the case format does not know (typos must not pass silently). Every
+// number and integer of a case passes through here: its range, overflow and finiteness are
+// checked once, for every key.
 #pragma once
 #include <toml++/toml.h>
 
+#include <climits>
 #include <filesystem>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "common/input_number.hpp"
 #include "common/source_location.hpp"
 
 namespace bb {
+
+// The value of a number node (an integer converted exactly where it can be), else nullopt.
+std::optional<double> toml_number(const toml::node& n);
 
 class TomlReader {
  public:
@@ -22,8 +29,9 @@ class TomlReader {
   std::optional<double> optional_number(const std::string& key);
   double non_negative(const std::string& key, double fallback);
   double positive(const std::string& key);
-  long integer(const std::string& key);
-  std::optional<long> optional_integer(const std::string& key);
+  // An integer within [lo, hi]; by default the range of an int, so that no count or index wraps.
+  long integer(const std::string& key, long lo = INT_MIN, long hi = INT_MAX);
+  std::optional<long> optional_integer(const std::string& key, long lo = INT_MIN, long hi = INT_MAX);
   bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key);
   std::optional<std::string> optional_string(const std::string& key);
@@ -39,7 +47,7 @@ class TomlReader {
                      std::optional<std::string> fallback = std::nullopt);
   const toml::array& array(const std::string& key);
   std::vector<double> number_array(const std::string& key);
-  std::vector<long> integer_array(const std::string& key);
+  std::vector<long> integer_array(const std::string& key, long lo = INT_MIN, long hi = INT_MAX);
   std::vector<std::string> string_array(const std::string& key);
   const toml::table& table(const std::string& key);
   const toml::table* optional_table(const std::string& key);

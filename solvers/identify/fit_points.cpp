@@ -34,6 +34,15 @@ Eigen::VectorXd result_column(const CalibrationData& d, const ResultTable& t, co
   return t.values.col(*c) * column_to_si(name);
 }
 
+}  // namespace
+
+void require_data_columns(const CalibrationData& d, const ResultTables& tables) {
+  const ResultTable& t = table_of(d, tables);
+  for (const auto& [data_column, result] : d.columns) result_column(d, t, data_column);
+}
+
+namespace {
+
 double sigma_of(const MeasuredData& m, const std::string& column, Index row, double fallback) {
   return m.has(column + "_sigma") ? m.column(column + "_sigma")[row] : fallback;
 }

@@ -46,4 +46,8 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
 std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables,
                                   const std::vector<std::string>& parameters = {});
 
+// InputError (as data_points) when the case computes no table or column the data block names:
+// what `run` checks of a [calibration], whose values it does not fit.
+void require_data_columns(const CalibrationData& d, const ResultTables& tables);
+
 }  // namespace bb

@@ -1,6 +1,5 @@
 // Measured curves from CSV with units in the header (see measured_data.hpp for the format).
 #include "identify/measured_data.hpp"
-#include "identify/uff58.hpp"
 
 #include <fmt/format.h>
 
@@ -13,6 +12,8 @@
 
 #include "common/csv_reader.hpp"
 #include "common/errors.hpp"
+#include "common/input_number.hpp"
+#include "identify/uff58.hpp"
 
 namespace bb {
 namespace {
@@ -56,6 +57,7 @@ std::string cell_problem(std::string_view cell, bool positive, std::vector<doubl
   if (err == std::errc::result_out_of_range) return fmt::format("'{}' is out of range", cell);
   if (err != std::errc() || end != text.data() + text.size()) return fmt::format("'{}' is not a number", cell);
   if (!std::isfinite(v)) return fmt::format("'{}' is not a finite number", cell);
+  if (const std::string problem = number_problem(v); !problem.empty()) return problem;
   if (positive && !(v > 0.0)) return fmt::format("'{}' must be positive", cell);
   values.push_back(v);
   return {};
@@ -183,9 +185,10 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
   const std::string fname = file.string();
   if (is_universal_file(file)) {
     if (kind != DataKind::frf)
-      throw InputError(fmt::format("{}: a Universal File (dataset 58) holds an FRF; give kind = \"frf\" or a CSV file "
-                                   "for {} data",
-                                   fname, data_kind_name(kind)));
+      throw InputError(
+          fmt::format("{}: a Universal File (dataset 58) holds an FRF; give kind = \"frf\" or a CSV file "
+                      "for {} data",
+                      fname, data_kind_name(kind)));
     return read_uff58_frf(file);
   }
   const auto fail = [&](unsigned line, const std::string& what) {

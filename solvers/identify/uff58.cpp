@@ -67,6 +67,7 @@ bool is_universal_file(const fs::path& file) {
 
 std::vector<Uff58Function> read_uff58(const fs::path& file) {
   if (fs::is_directory(file)) throw InputError(fmt::format("{}: is a folder, not a Universal File", file.string()));
+  require_readable_file(file);
   std::ifstream in(file);
   if (!in) throw InputError(fmt::format("{}: cannot open", file.string()));
   std::vector<std::string> lines;
@@ -223,12 +224,15 @@ MeasuredData read_uff58_frf(const fs::path& file) {
     phase[i] = std::arg(f.values[k]);
     complex = complex || f.values[k].imag() != 0.0;
     d.lines.push_back(f.line);
-    const auto where = [&] { return fmt::format("{}:{}: dataset 58 #1, record 12, value {}", file.string(), f.line, i + 1); };
+    const auto where = [&] {
+      return fmt::format("{}:{}: dataset 58 #1, record 12, value {}", file.string(), f.line, i + 1);
+    };
     if (!(amplitude[i] > 0.0)) throw InputError(fmt::format("{}: the amplitude is zero", where()));
     if (i > 0 && !(frequency[i] > frequency[i - 1]))
-      throw InputError(fmt::format("{}: frequency {} Hz is not above the previous value's {} Hz (values must be "
-                                   "sorted by increasing frequency, without duplicates)",
-                                   where(), frequency[i], frequency[i - 1]));
+      throw InputError(
+          fmt::format("{}: frequency {} Hz is not above the previous value's {} Hz (values must be "
+                      "sorted by increasing frequency, without duplicates)",
+                      where(), frequency[i], frequency[i - 1]));
   }
   d.columns["frequency"] = frequency;
   d.units["frequency"] = f.abscissa_unit;

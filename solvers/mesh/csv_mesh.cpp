@@ -40,6 +40,7 @@ double signed_area(const Mesh& mesh, const int* c, int nn) {
 // Reads `N` columns named by `names` into an array per row; fn(row, line) for each row.
 template <unsigned N, typename Fn>
 void read_columns(const fs::path& file, const std::array<std::string, N>& names, Fn fn) {
+  require_readable_file(file);
   with_csv_errors(file, [&] {
     CsvReader<N> in(file.string());
     std::apply([&](const auto&... n) { in.read_header(io::ignore_extra_column, n...); }, names);

@@ -17,6 +17,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 
 namespace bb {
@@ -50,6 +51,7 @@ std::optional<ElementType> mesh_element(int gmsh_type, int dim, ElementType line
 class MshLexer {
  public:
   explicit MshLexer(std::filesystem::path file) : file_(std::move(file)) {
+    require_readable_file(file_, false);
     std::ifstream in(file_, std::ios::binary);
     if (!in) throw InputError(fmt::format("{}: cannot open the Gmsh mesh file", file_.string()));
     for (std::string line; std::getline(in, line);) lines_.push_back(std::move(line));

@@ -87,6 +87,12 @@ std::string element_label(const ElementBlock& b, Eigen::Index row) {
 
 }  // namespace
 
+int inverted_corner(const std::array<Eigen::Vector3d, 8>& corners) {
+  for (int a = 0; a < 8; ++a)
+    if (!(corner_jacobian(corners, a) > 0.0)) return a + 1;
+  return 0;
+}
+
 Mesh generate_hex_block(const HexBlockSpec& spec) {
   if (spec.nx < 1 || spec.ny < 1 || spec.nz < 1) throw std::invalid_argument("nx, ny and nz must be >= 1");
   if (spec.element != ElementType::hex8 && spec.element != ElementType::hex8i && spec.element != ElementType::hex20)
@@ -94,10 +100,9 @@ Mesh generate_hex_block(const HexBlockSpec& spec) {
                                 std::string(element_name(spec.element)));
   // Only a necessary condition for a valid block, but it catches the common mistake: corners
   // given clockwise, or 5-8 below 1-4, which would make every element inside-out.
-  for (int a = 0; a < 8; ++a)
-    if (!(corner_jacobian(spec.corners, a) > 0.0))
-      throw std::invalid_argument("hex block corner " + std::to_string(a + 1) +
-                                  ": corners 1->2, 1->4, 1->5 must form a right-handed frame (inverted or flat block)");
+  if (const int a = inverted_corner(spec.corners); a > 0)
+    throw std::invalid_argument("hex block corner " + std::to_string(a) +
+                                ": corners 1->2, 1->4, 1->5 must form a right-handed frame (inverted or flat block)");
 
   // Nodes live on a lattice of `step` points per division: every point for hex8; for hex20 the
   // doubled lattice without face and cell centres (points with two or three odd indices).

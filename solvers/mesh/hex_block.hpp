@@ -23,6 +23,10 @@ struct HexBlockSpec {
 // Throws std::invalid_argument for non-positive divisions or a non-solid element type.
 Mesh generate_hex_block(const HexBlockSpec& spec);
 
+// The first corner (1-8) at which the block's trilinear map has a non-positive Jacobian (the block
+// is twisted, inverted or flat there), or 0 when there is none.
+int inverted_corner(const std::array<Eigen::Vector3d, 8>& corners);
+
 // Concatenates meshes and merges nodes closer than `tolerance` [m] (spatial hashing, so
 // linear in the node count). Node ids are renumbered 1..n in order of first appearance and
 // element ids 1..m; `node_origin` (optional) receives, for every input mesh, the new internal

@@ -12,6 +12,7 @@
 #include "cases/case_parameter.hpp"
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
+#include "checks/checks.hpp"
 #include "common/errors.hpp"
 #include "model/build_model.hpp"
 
@@ -137,6 +138,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   CaseSpec spec = parse_case_table(table, case_file);
   const std::optional<CalibrationSpec> cal = parse_calibration(table, case_file, spec);
   if (!cal) throw InputError(fmt::format("{}: no [calibration] section", case_file.string()));
+  require_check_references(spec.checks);  // as `run` does: the whole case is valid before any solve
   const CalibratedCase base = with_parameters(std::move(spec), *cal);
   std::vector<double> start;
   for (const CalibrationParameter& p : cal->parameters) start.push_back(p.start);

@@ -17,6 +17,7 @@
 #include "checks/mode_matching.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
+#include "identify/fit_points.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/run_fidelity.hpp"
 #include "pipeline/run_study.hpp"
@@ -85,8 +86,11 @@ void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityCho
   if (plots) run.plots.push_back(plot_fidelity_frontier(choice.frontier, f, out, "fidelity_frontier"));
 }
 
-void analyse(const CaseSpec& spec, const Model& model, const AnalysisResults& results, const fs::path& out,
-             const RunOptions& options, RunRecord& run) {
+// Throws InputError after the result tables are written when a check cannot be evaluated on
+// them (an unknown result column, say): the solved tables are kept, the verdict is bad input.
+void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibration, const Model& model,
+             const AnalysisResults& results, const fs::path& out, const RunOptions& options, RunRecord& run,
+             bool& results_written) {
   describe_analysis(spec.analysis, results, model, run);
   // Runs of the cases some checks compare with (their analyses only), each run once.
   struct OtherRun {
@@ -99,7 +103,7 @@ void analyse(const CaseSpec& spec, const Model& model, const AnalysisResults& re
     if (it == other_cases.end()) {
       const CaseSpec other = parse_case_file(file);
       Model other_model = build_model(other.model);
-      AnalysisResults other_results = run_analysis(other.analysis, other_model);
+      AnalysisResults other_results = run_analysis(other.analysis, other_model, {}, options.limits);
       it = other_cases.emplace(file, OtherRun{std::move(other_model), std::move(other_results)}).first;
     }
     return it->second;
@@ -123,6 +127,7 @@ void analyse(const CaseSpec& spec, const Model& model, const AnalysisResults& re
                            fmt::format("MAC over the {} nodes the meshes share ({}.csv)", m.common_nodes, name));
     mode_matches.emplace(c.reference_case, m);
   }
+  std::vector<std::string> unevaluated;
   for (const CheckSpec& c : spec.checks) {
     const ResultTables* reference = c.reference_case.empty() ? nullptr : &other_run(c.reference_case).results.tables;
     std::optional<RowMatch> pairing;
@@ -139,13 +144,27 @@ void analyse(const CaseSpec& spec, const Model& model, const AnalysisResults& re
                                       : std::string("no mode left to pair");
       }
     }
-    auto entries = evaluate_check(c, tables, reference, pairing ? &*pairing : nullptr);
-    run.checks.insert(run.checks.end(), entries.begin(), entries.end());
+    try {
+      auto entries = evaluate_check(c, tables, reference, pairing ? &*pairing : nullptr);
+      run.checks.insert(run.checks.end(), entries.begin(), entries.end());
+    } catch (const InputError& e) {
+      unevaluated.emplace_back(e.what());
+    }
   }
+  // The curves a [calibration] would fit must exist, as `calibrate` requires.
+  if (calibration)
+    for (const CalibrationData& d : calibration->data) try {
+        require_data_columns(d, tables);
+      } catch (const InputError& e) {
+        unevaluated.emplace_back(e.what());
+      }
   for (const auto& [name, table] : tables) {
     write_result_csv(table, out, run);
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);
   }
+  results_written = true;
+  if (!unevaluated.empty())
+    throw InputError(fmt::format("{} (the result tables are written; no check verdict)", fmt::join(unevaluated, "; ")));
   write_analysis_files(spec.analysis, results, out, run);
   if (options.plots) {
     plot_analysis(spec.analysis, results, model, spec.checks, out, run);
@@ -163,9 +182,9 @@ void analyse(const CaseSpec& spec, const Model& model, const AnalysisResults& re
   run.status = run.checks.empty() ? RunStatus::no_checks : (all_pass ? RunStatus::pass : RunStatus::fail);
 }
 
-// A refused case reports the refusal and nothing that looks like a result: what was written before
-// the error was found (the tables of a run whose check names an unknown column, their plots) goes
-// with its temporary folder, and the record forgets it.
+// A case refused before its tables are written reports the refusal and nothing that looks like a
+// result: what was written before the error was found goes with its temporary folder, and the
+// record forgets it. (A check that cannot be evaluated after the solve keeps the tables.)
 void drop_results(RunRecord& run) {
   run.checks.clear();
   run.tables.clear();
@@ -190,11 +209,14 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
   outcome.out_dir = options.out_dir.value_or(fs::path("reports") / run.case_name);
   // Everything is written to a temporary sibling of the report folder, moved into place at the end.
   std::optional<StagedFolder> stage;
+  bool results_written = false;
   try {
     const toml::table case_table = read_case_table(case_file);
     const CaseSpec spec = parse_case_table(case_table, case_file);
-    parse_calibration(case_table, case_file,
-                      spec);  // a bad [calibration] or data file fails here too, not only in `calibrate`
+    // A bad [calibration] or data file, or a reference that cannot be read, fails here, before any
+    // solve, in `run` as in `calibrate`.
+    const std::optional<CalibrationSpec> calibration = parse_calibration(case_table, case_file, spec);
+    require_check_references(spec.checks);
     run.case_name = spec.name;
     run.title = spec.title;
     run.description = spec.description;
@@ -206,16 +228,16 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     if (options.fidelity != FidelityMode::fixed && !spec.fidelity)
       run.warnings.push_back("--fidelity: the case has no [fidelity] section; it ran at its own settings");
     if (options.fidelity != FidelityMode::fixed && spec.fidelity)
-      choice.emplace(run_with_fidelity(spec, options.fidelity, progress));
+      choice.emplace(run_with_fidelity(spec, options.fidelity, progress, options.limits));
     const CaseSpec& used = choice ? choice->spec : spec;
     const Model model = choice ? std::move(choice->model) : build_model(spec.model);
     describe_model(used.model, std::holds_alternative<ContactLoopSpec>(used.analysis), model, run);
     try {
       const AnalysisResults results =
-          choice ? std::move(choice->results) : run_analysis(used.analysis, model, progress);
+          choice ? std::move(choice->results) : run_analysis(used.analysis, model, progress, options.limits);
       if (progress) std::fputs("\r\033[K", stderr);
       if (choice) report_fidelity(*spec.fidelity, options.fidelity, *choice, stage->path(), options.plots, run);
-      analyse(used, model, results, stage->path(), options, run);
+      analyse(used, calibration, model, results, stage->path(), options, run, results_written);
     } catch (const InputError& e) {
       // Errors found by the solvers concern the model as a whole: name the case they came from.
       const std::string what = e.what();
@@ -232,7 +254,7 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     run.message = printable(fmt::format("internal error: {}", e.what()));
   }
   run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (run.status == RunStatus::bad_input) {
+  if (run.status == RunStatus::bad_input && !results_written) {
     stage.reset();
     drop_results(run);
   }

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "common/work_limits.hpp"
 #include "report/run_record.hpp"
 #include "study/fidelity_spec.hpp"
 
@@ -12,7 +13,8 @@ struct RunOptions {
   std::optional<std::filesystem::path> out_dir;  // default reports/<case-name>
   bool study = false;                            // also run the case's [study]
   bool plots = true;
-  FidelityMode fidelity = FidelityMode::fixed;   // fixed: the case's own settings; else its [fidelity] axes
+  FidelityMode fidelity = FidelityMode::fixed;  // fixed: the case's own settings; else its [fidelity] axes
+  WorkLimits limits = {};                       // every analysis of the run is estimated against these first
 };
 
 struct RunOutcome {

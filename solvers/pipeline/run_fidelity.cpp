@@ -41,7 +41,8 @@ struct LevelRun {
 
 class Climber {
  public:
-  Climber(const CaseSpec& spec, const HbmProgress& progress) : base_(spec), f_(*spec.fidelity), progress_(progress) {}
+  Climber(const CaseSpec& spec, const HbmProgress& progress, const WorkLimits& limits)
+      : base_(spec), f_(*spec.fidelity), progress_(progress), limits_(limits) {}
 
   // The run at these level indices, computed once.
   LevelRun& at(const std::vector<int>& index) {
@@ -57,7 +58,7 @@ class Climber {
     // A level too coarse to solve (a sweep that cannot reach the steady state, say) is a level whose
     // error is unbounded: the climb records it and goes on.
     try {
-      run->results = run_analysis(run->spec.analysis, *run->model, progress_);
+      run->results = run_analysis(run->spec.analysis, *run->model, progress_, limits_);
     } catch (const SolverError& e) {
       run->failure = e.what();
     }
@@ -98,6 +99,7 @@ class Climber {
   const CaseSpec& base_;
   const FidelitySpec& f_;
   HbmProgress progress_;
+  WorkLimits limits_;
   std::map<std::vector<int>, std::unique_ptr<LevelRun>> runs_;
 };
 
@@ -158,11 +160,12 @@ double relative_difference(const ResultTable& coarse, const ResultTable& fine, c
   return worst;
 }
 
-FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress) {
+FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress,
+                                 const WorkLimits& limits) {
   if (!spec.fidelity) throw InputError(fmt::format("{}: --fidelity needs a [fidelity] section", spec.file.string()));
   const FidelitySpec& f = *spec.fidelity;
   const size_t n_axes = f.axes.size();
-  Climber climber(spec, progress);
+  Climber climber(spec, progress, limits);
   // Differences between two runs; a missing column or key names the [fidelity] section.
   const auto difference = [&](const LevelRun& coarse, const LevelRun& fine) {
     if (!coarse.failure.empty() || !fine.failure.empty()) return std::numeric_limits<double>::infinity();

@@ -37,6 +37,7 @@ double relative_difference(const ResultTable& coarse, const ResultTable& fine, c
 // solve fails (SolverError) has an infinite difference to its neighbours, so the climb passes it.
 // Throws InputError when the case has no [fidelity] or the result table lacks a column, and
 // SolverError when the chosen levels failed.
-FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress = {});
+FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress = {},
+                                 const WorkLimits& limits = {});
 
 }  // namespace bb

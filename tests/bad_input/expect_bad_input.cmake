@@ -1,6 +1,6 @@
 # Runs one malformed case and fails unless bladebench rejects it as bad input:
 #   cmake -DBIN=<bladebench> -DCASE=<case.toml> -DEXPECT=<substring> -DOUT=<dir> [-DARGS=<options>]
-#         -P expect_bad_input.cmake
+#         [-DSUBCOMMAND=run|calibrate] -P expect_bad_input.cmake
 # Passes only if
 #   - the exit code is exactly 2 (bad input; not 0/1, not 3 = solver failure, not a crash),
 #   - stderr has an "  error: " line and contains EXPECT. The case's own folder is stripped
@@ -16,8 +16,11 @@ endforeach()
 file(REMOVE_RECURSE "${OUT}")
 
 separate_arguments(extra_args UNIX_COMMAND "${ARGS}")
+if(NOT SUBCOMMAND)
+  set(SUBCOMMAND run)
+endif()
 execute_process(
-  COMMAND "${BIN}" run "${CASE}" --no-plots --out "${OUT}" ${extra_args}
+  COMMAND "${BIN}" ${SUBCOMMAND} "${CASE}" --no-plots --out "${OUT}" ${extra_args}
   RESULT_VARIABLE rc
   OUTPUT_VARIABLE out
   ERROR_VARIABLE err
@@ -30,9 +33,15 @@ set(problems "")
 if(NOT "${rc}" STREQUAL "2")
   string(APPEND problems "\n  - exit code ${rc}, expected 2 (bad input)")
 endif()
-string(FIND "${err}" "  error: " pos)
+# run prints its verdict line, then "  error: ..."; calibrate prints "error: ..." alone.
+if(SUBCOMMAND STREQUAL "calibrate")
+  set(error_prefix "error: ")
+else()
+  set(error_prefix "  error: ")
+endif()
+string(FIND "${err}" "${error_prefix}" pos)
 if(pos LESS 0)
-  string(APPEND problems "\n  - stderr has no '  error: ' line")
+  string(APPEND problems "\n  - stderr has no '${error_prefix}' line")
 endif()
 string(FIND "${err_rel}" "${EXPECT}" pos)
 if(pos LESS 0)
@@ -40,7 +49,12 @@ if(pos LESS 0)
 endif()
 
 set(summary "${OUT}/summary.json")
-if(NOT EXISTS "${summary}")
+if(SUBCOMMAND STREQUAL "calibrate")
+  # calibrate writes its report only after a fit: a refused case leaves no folder at all.
+  if(EXISTS "${OUT}")
+    string(APPEND problems "\n  - ${OUT} was written for a refused calibration")
+  endif()
+elseif(NOT EXISTS "${summary}")
   string(APPEND problems "\n  - ${summary} was not written")
 else()
   file(READ "${summary}" summary_text)

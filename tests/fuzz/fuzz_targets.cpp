@@ -8,12 +8,14 @@
 #include <fstream>
 #include <string_view>
 
+#include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
 #include "common/errors.hpp"
 #include "identify/measured_data.hpp"
 #include "mesh/csv_mesh.hpp"
 #include "mesh/gmsh_import.hpp"
+#include "model/build_model.hpp"
 #include "reduction/reduced_model_io.hpp"
 
 namespace bb::fuzz {
@@ -68,6 +70,40 @@ void case_file(const uint8_t* data, size_t size) {
   });
 }
 
+namespace {
+
+// Nodes of a generated mesh, from its divisions (0 for meshes read from files).
+double generated_nodes(const MeshSpec& m) {
+  switch (m.kind) {
+    case MeshSpec::Kind::mapped_quad:
+      return (m.mapped.nx + 1.0) * (m.mapped.ny + 1.0);
+    case MeshSpec::Kind::hex_blocks: {
+      double n = 0.0;
+      for (const HexBlockSpec& b : m.blocks) n += 8.0 * (b.nx + 1.0) * (b.ny + 1.0) * (b.nz + 1.0);
+      return n;
+    }
+    default:
+      return m.kind == MeshSpec::Kind::two_blade ? 1e4 * m.two_blade.refinement * m.two_blade.refinement : 0.0;
+  }
+}
+
+}  // namespace
+
+void case_run(const uint8_t* data, size_t size) {
+  const fs::path file = work_folder() / "case.toml";
+  write(file, {reinterpret_cast<const char*>(data), size});
+  try {
+    const CaseSpec spec = parse_case_table(read_case_table(file), file);
+    if (generated_nodes(spec.model.mesh) > 2e4) return;  // the fuzzer's time, not a defect
+    WorkLimits limits;
+    limits.operations = 1e9;  // about a second of arithmetic
+    limits.bytes = 5e8;
+    run_analysis(spec.analysis, build_model(spec.model), {}, limits);
+  } catch (const InputError&) {
+  } catch (const SolverError&) {
+  }
+}
+
 void measured_data(const uint8_t* data, size_t size) {
   if (size == 0) return;
   static constexpr std::array<DataKind, 4> kinds = {DataKind::peaks, DataKind::frf, DataKind::hysteresis,
@@ -105,11 +141,9 @@ void gmsh_mesh(const uint8_t* data, size_t size) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {{"case_file", case_file},
-                                          {"measured_data", measured_data},
-                                          {"reduced_model", reduced_model},
-                                          {"csv_mesh", csv_mesh},
-                                          {"gmsh_mesh", gmsh_mesh}};
+  static const std::vector<Target> all = {{"case_file", case_file},         {"case_run", case_run},
+                                          {"measured_data", measured_data}, {"reduced_model", reduced_model},
+                                          {"csv_mesh", csv_mesh},           {"gmsh_mesh", gmsh_mesh}};
   return all;
 }
 

@@ -286,6 +286,23 @@ TEST_F(CaseFile, ValueOfTheWrongTypeIsNamedWithItsLine) {
   EXPECT_NE(msg.find(":16:"), std::string::npos) << msg;
 }
 
+// Every number and integer of a case passes one reader (common/toml_reader): a float key may be
+// written as any integer, an integer never wraps, and no magnitude beyond SI reason passes.
+TEST_F(CaseFile, NumbersAreReadOnceWithTheirRangeChecked) {
+  const CaseSpec big = parse_case_file(write(replace(kMinimalCase, "E = 2.0e11", "E = 9223372036854775807")));
+  EXPECT_DOUBLE_EQ(big.model.section.youngs_modulus, 9223372036854775807.0);
+  for (const char* wraps : {"nx = 2147483648", "nx = 4294967300", "nx = -9223372036854775808"}) {
+    const std::string msg = error_of(write(replace(kMinimalCase, "nx = 4", wraps)));
+    EXPECT_NE(msg.find("'mesh.nx'"), std::string::npos) << wraps << ": " << msg;
+    EXPECT_NE(msg.find("out of range"), std::string::npos) << wraps << ": " << msg;
+  }
+  for (const char* extreme : {"E = 1e101", "E = 1e-320", "E = -1e300"}) {
+    const std::string msg = error_of(write(replace(kMinimalCase, "E = 2.0e11", extreme)));
+    EXPECT_NE(msg.find("'material.E'"), std::string::npos) << extreme << ": " << msg;
+  }
+  EXPECT_EQ(error_of(write(replace(kMinimalCase, "E = 2.0e11", "E = 1e100"))), "");
+}
+
 TEST_F(CaseFile, PoissonRatioOutsidePhysicalRangeIsRejected) {
   EXPECT_NE(error_of(write(replace(kMinimalCase, "nu = 0.3", "nu = 0.5"))).find("nu"), std::string::npos);
   EXPECT_NE(error_of(write(replace(kMinimalCase, "nu = 0.3", "nu = -1.0"))).find("nu"), std::string::npos);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <numbers>
 #include <stdexcept>
@@ -181,8 +182,20 @@ TEST(MeasuredDataExamples, BadInputFilesAreRefusedForTheirOneProblem) {
 
 TEST_F(MeasuredDataFile, MissingFileCannotBeOpened) {
   const fs::path file = dir_ / "absent.csv";
-  EXPECT_EQ(refusal(file, DataKind::frf), file.string() + ": cannot open");
-  expect_contains(refusal(dir_, DataKind::frf), {": cannot open"});
+  EXPECT_EQ(refusal(file, DataKind::frf), file.string() + ": cannot open (no such file)");
+  expect_contains(refusal(dir_, DataKind::frf), {": cannot open (it is a directory)"});
+  // A device never ends; a link loop never resolves; a NUL byte would cut a cell: each is refused.
+  expect_contains(refusal("/dev/zero", DataKind::frf), {"/dev/zero: cannot open (not a regular file"});
+  fs::create_symlink("loop_b.csv", dir_ / "loop_a.csv");
+  fs::create_symlink("loop_a.csv", dir_ / "loop_b.csv");
+  expect_contains(refusal(dir_ / "loop_a.csv", DataKind::frf), {"loop_a.csv: cannot open ("});
+  {
+    std::ofstream out(dir_ / "nul.csv", std::ios::binary);
+    out << "frequency [Hz], amplitude [um]\n100.0, 1.0\n110.0, 2.";
+    out.put('\0');
+    out << "5\n";
+  }
+  expect_contains(refusal(dir_ / "nul.csv", DataKind::frf), {"nul.csv:3: a NUL byte in the file"});
 }
 
 TEST_F(MeasuredDataFile, EmptyOrCommentOnlyFileIsRefused) {

@@ -113,16 +113,28 @@ TEST_F(ReportText, APassingRunListsTheNotApplicableEntriesItWrote) {
   EXPECT_EQ(entries(dir_).front(), "out") << "no temporary folder left beside the report";
 }
 
-// A refused case writes the refusal only: the tables computed before a check found its unknown
-// column are not left beside it to be read as results.
+// A case refused before its solve writes the refusal only.
 TEST_F(ReportText, ABadInputRunWritesItsReportAndNothingElse) {
+  const fs::path case_file = fs::path(BB_SOURCE_DIR) / "tests" / "bad_input" / "negative_tolerance.toml";
+  const RunOutcome o = run_case(case_file, {.out_dir = dir_ / "out", .study = false, .plots = false});
+  ASSERT_EQ(o.record.status, RunStatus::bad_input);
+  EXPECT_EQ(entries(dir_), (std::vector<std::string>{"out", "out/report.html", "out/report.md", "out/summary.json"}));
+  const nlohmann::json j = nlohmann::json::parse(read_text(dir_ / "out" / "summary.json"));
+  EXPECT_TRUE(j["tables"].empty());
+  EXPECT_TRUE(j["checks"].empty());
+}
+
+// A check that cannot be evaluated on the solved tables (an unknown column) makes the run bad input,
+// but the solve is not thrown away: its tables are written beside the refusal, and no check passes.
+TEST_F(ReportText, ACheckThatCannotBeEvaluatedAfterTheSolveKeepsTheTables) {
   const fs::path case_file = fs::path(BB_SOURCE_DIR) / "tests" / "bad_input" / "unknown_result_column.toml";
   const RunOutcome o = run_case(case_file, {.out_dir = dir_ / "out", .study = false, .plots = false});
   ASSERT_EQ(o.record.status, RunStatus::bad_input);
-  EXPECT_EQ(entries(dir_),
-            (std::vector<std::string>{"out", "out/report.html", "out/report.md", "out/summary.json"}));
+  EXPECT_NE(o.record.message.find("the result tables are written"), std::string::npos) << o.record.message;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "nodal_displacements.csv"));
   const nlohmann::json j = nlohmann::json::parse(read_text(dir_ / "out" / "summary.json"));
-  EXPECT_TRUE(j["tables"].empty());
+  EXPECT_EQ(j["status"], "bad_input");
+  EXPECT_FALSE(j["tables"].empty());
   EXPECT_TRUE(j["checks"].empty());
 }
 

@@ -10,6 +10,7 @@
 
 #include "analysis/modal_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "common/errors.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/run_case.hpp"
 #include "temp_folder.hpp"
@@ -93,6 +94,47 @@ TEST_F(RotatingAnalysis, ARunThatDivergesFailsTheCaseNamingTheTime) {
   EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
   EXPECT_NE(o.record.message.find("t = "), std::string::npos) << o.record.message;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "out" / "histories.csv"));
+}
+
+TEST_F(RotatingAnalysis, RunsWithoutHistoriesAndMeasuresNoOscillation) {
+  std::string text = strip_case("speed_rad_s = 200.0\nend_time_s = 0.02\n");
+  text.erase(text.find("histories = [\"tip\"]\n"), std::string("histories = [\"tip\"]\n").size());
+  const CaseSpec spec = parse_case_file(write(text));
+  const RotatingOutcome o = run_rotating(build_model(spec.model), std::get<RotatingSpec>(spec.analysis));
+  EXPECT_EQ(o.tables.at("deflection").values.rows(), 0);
+  EXPECT_FALSE(o.tables.count("oscillation"));  // no history: nothing to measure
+  EXPECT_TRUE(o.tables.count("campbell") && o.tables.count("energy"));
+}
+
+TEST_F(RotatingAnalysis, AnAutomaticStepIsHeldToTheStepLimitOfAGivenOne) {
+  // 40 steps per period of the lowest rotating mode: about 1e9 steps over 1e5 s.
+  const CaseSpec spec = parse_case_file(write(strip_case("speed_rad_s = 200.0\nend_time_s = 1e5\n")));
+  try {
+    run_rotating(build_model(spec.model), std::get<RotatingSpec>(spec.analysis));
+    FAIL() << "not refused";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("'analysis.end_time_s'"), std::string::npos) << what;
+    EXPECT_NE(what.find("exceed the limit of 5e+07 steps"), std::string::npos) << what;
+  }
+}
+
+TEST_F(RotatingAnalysis, ARunAboveTheWorkBoundIsRefusedWithItsEstimate) {
+  const CaseSpec spec = parse_case_file(write(strip_case("speed_rad_s = 200.0\nend_time_s = 0.02\n")));
+  const Model model = build_model(spec.model);
+  WorkLimits limits;
+  limits.operations = 1e3;  // far below the few hundred steps of this run
+  try {
+    run_rotating(model, std::get<RotatingSpec>(spec.analysis), limits);
+    FAIL() << "not refused";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("floating-point operations"), std::string::npos) << what;
+    EXPECT_NE(what.find("steps of"), std::string::npos) << what;
+  }
+  limits.operations = 1e12;
+  limits.bytes = 1e3;  // and the memory bound, for the histories
+  EXPECT_THROW(run_rotating(model, std::get<RotatingSpec>(spec.analysis), limits), InputError);
 }
 
 }  // namespace

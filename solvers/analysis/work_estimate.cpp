@@ -1,0 +1,141 @@
+#include "analysis/work_estimate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace bb {
+namespace {
+
+// Nonzeros of a stiffness row: the DOFs of the nodes an element shares with a node.
+double row_nonzeros(ElementType type) {
+  switch (type) {
+    case ElementType::q4:
+      return 18.0;
+    case ElementType::cst:
+      return 14.0;
+    case ElementType::hex8:
+    case ElementType::hex8i:
+      return 81.0;
+    case ElementType::hex20:
+      return 180.0;
+  }
+  return 81.0;
+}
+
+// Adds b to a: operations and bytes summed, the basis and key of the larger part kept.
+WorkEstimate combine(WorkEstimate a, const WorkEstimate& b) {
+  const bool b_larger = b.operations > a.operations || b.bytes > a.bytes;
+  WorkEstimate out = b_larger ? b : a;
+  out.operations = a.operations + b.operations;
+  out.bytes = a.bytes + b.bytes;
+  return out;
+}
+
+double grid_points(double f_min, double f_max, double step) { return std::floor((f_max - f_min) / step + 1e-9) + 1.0; }
+
+// The sweeps of a harmonic-balance analysis: frequencies x levels x the H and samples it may climb
+// through x Newton iterations, each an AFT of every contact (DFT of the Jacobian: 4 S (2H+1)^2)
+// and the LU of the condensed Jacobian ((n (2H+1))^3 / 3).
+WorkEstimate hbm_work(const HbmSpec& s) {
+  double unknowns = 0.0, elements = static_cast<double>(s.contacts.size());
+  for (const HbmContactSpec& c : s.contacts) unknowns += static_cast<double>(c.tangential.size() + c.normal.size());
+  if (s.damper) {
+    unknowns += 3.0 + 2.0 * static_cast<double>(s.damper->points.size());
+    elements += static_cast<double>(s.damper->points.size());
+  }
+  unknowns = std::max(unknowns, 1.0);
+  elements = std::max(elements, 1.0);
+  const bool adaptive_h = s.harmonic_tolerance > 0.0;
+  const int top_h = adaptive_h ? std::max(s.max_harmonics, s.harmonics) : s.harmonics;
+  const double m = 2.0 * top_h + 1.0;
+  const double h_sweeps = adaptive_h ? std::floor((top_h - s.harmonics) / std::max(s.harmonic_step, 1)) + 1.0 : 1.0;
+  const double samples = s.aft_tolerance > 0.0 ? std::max(s.max_time_samples, s.time_samples)
+                         : s.time_samples > 0  ? s.time_samples
+                                               : std::max(64.0, 16.0 * m);
+  const double sample_sweeps = s.aft_tolerance > 0.0 ? std::log2(samples / std::max(s.time_samples, 64)) + 1.0 : 1.0;
+  const bool grid = s.sweep.method == HbmSweepSpec::Method::grid;
+  const double frequencies =
+      grid ? grid_points(s.sweep.f_min, s.sweep.f_max, s.sweep.step_hz) : 10.0 / std::max(s.sweep.max_step, 1e-6);
+  const double levels = static_cast<double>(std::max<size_t>(s.force_levels.size(), 1));
+  // The point scope solves each frequency at a pair of H, raised until they agree.
+  const double solves = s.harmonic_scope == HbmSpec::HarmonicScope::point ? h_sweeps + 1.0 : h_sweeps * sample_sweeps;
+  const double iteration = 4.0 * elements * samples * m * m + std::pow(unknowns * m, 3.0) / 3.0 +
+                           (s.stability == HbmSpec::Stability::path ? 10.0 * std::pow(2.0 * unknowns * m, 3.0) : 0.0);
+  const double per_solve_iterations = 5.0;
+  WorkEstimate e;
+  e.operations = frequencies * levels * solves * per_solve_iterations * iteration;
+  // The DFT matrices, and per point and level the solution and its output rows (about 40 numbers).
+  e.bytes = 2.0 * samples * m * 8.0 * elements + frequencies * levels * (unknowns * m + 40.0) * 8.0 * 3.0;
+  e.basis = fmt::format(
+      "{:.0f} frequencies x {:.0f} levels x {:.0f} sweeps, H up to {}, {:.0f} AFT samples, {:.0f} condensed unknowns",
+      frequencies, levels, solves, top_h, samples, unknowns);
+  e.at = s.at;
+  e.key = grid ? "analysis.step_hz, harmonics, time_samples" : "analysis.max_step, harmonics, time_samples";
+  return e;
+}
+
+// Newmark on the reduced model: every step of every cycle at every frequency and level.
+WorkEstimate time_work(const TimeSpec& t) {
+  const HbmSpec& s = t.system;
+  const double size = s.model.matrices ? static_cast<double>(s.model.matrices->size())
+                                       : 3.0 * static_cast<double>(s.model.masters.size()) + s.model.modes;
+  const double elements =
+      static_cast<double>(s.contacts.size()) + (s.damper ? static_cast<double>(s.damper->points.size()) : 0.0);
+  const double frequencies = grid_points(s.sweep.f_min, s.sweep.f_max, s.sweep.step_hz);
+  const double levels = static_cast<double>(std::max<size_t>(s.force_levels.size(), 1));
+  const double steps = frequencies * levels * t.max_cycles * t.steps_per_period;
+  WorkEstimate e;
+  e.operations = steps * (4.0 * size * size + 100.0 * std::max(elements, 1.0));
+  e.bytes = 8.0 * (t.history_cycles * t.steps_per_period * (size + 10.0) + frequencies * levels * 40.0);
+  e.basis = fmt::format("{:.0f} frequencies x {:.0f} levels x at most {} cycles x {} steps, {:.0f} DOFs", frequencies,
+                        levels, t.max_cycles, t.steps_per_period, size);
+  e.at = s.at;
+  e.key = "analysis.step_hz, max_cycles, steps_per_period";
+  return e;
+}
+
+WorkEstimate analysis_work(const HbmSpec& s, const Model& model) {
+  const WorkEstimate sweep = hbm_work(s);
+  return s.model.masters.empty() ? sweep : combine(estimate_mesh_work(model), sweep);
+}
+
+WorkEstimate analysis_work(const TimeSpec& t, const Model& model) {
+  const WorkEstimate steps = time_work(t);
+  return t.system.model.masters.empty() ? steps : combine(estimate_mesh_work(model), steps);
+}
+
+WorkEstimate analysis_work(const ContactLoopSpec&, const Model&) { return {}; }
+
+template <typename Spec>
+WorkEstimate analysis_work(const Spec&, const Model& model) {
+  return estimate_mesh_work(model);
+}
+
+}  // namespace
+
+WorkEstimate estimate_mesh_work(const Model& model) {
+  const Mesh& mesh = model.mesh;
+  const double n = static_cast<double>(mesh.n_nodes()) * mesh.dim;
+  if (n < 1.0 || mesh.blocks.empty()) return {};
+  double row = 0.0;
+  for (const ElementBlock& b : mesh.blocks) row = std::max(row, row_nonzeros(b.type));
+  // Nested-dissection fill: n log2 n in 2D, n^(4/3) in 3D (scaled by the element's coupling).
+  const double factor = mesh.dim == 2 ? 4.0 * n * std::log2(std::max(n, 2.0)) : row / 8.0 * std::pow(n, 4.0 / 3.0);
+  const double flops = mesh.dim == 2 ? 10.0 * std::pow(n, 1.5) : row / 8.0 * n * n;
+  WorkEstimate e;
+  e.operations = flops;
+  // K and M as triplets and compressed, the factor, a few vectors per DOF.
+  e.bytes = n * row * (16.0 + 24.0) + factor * 12.0 + n * 200.0;
+  e.basis = fmt::format("{:.0f} DOFs of {} {} elements, factor about {:.3g} nonzeros", n, mesh.n_elements(),
+                        element_name(mesh.blocks.front().type), factor);
+  e.key = "mesh";
+  return e;
+}
+
+WorkEstimate estimate_work(const AnalysisSpec& spec, const Model& model) {
+  return std::visit([&](const auto& s) { return analysis_work(s, model); }, spec);
+}
+
+}  // namespace bb

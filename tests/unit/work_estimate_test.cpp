@@ -1,0 +1,77 @@
+// The work estimate every analysis is held to before it runs (analysis/work_estimate,
+// common/work_limits): it scales as the arithmetic does, and a refusal names the key, the estimate
+// and the bound.
+#include "analysis/work_estimate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/errors.hpp"
+
+namespace bb {
+namespace {
+
+HbmSpec oscillator_sweep(double step_hz, int harmonics, int samples) {
+  HbmSpec s;
+  s.sweep.f_min = 100.0;
+  s.sweep.f_max = 200.0;
+  s.sweep.step_hz = step_hz;
+  s.harmonics = harmonics;
+  s.time_samples = samples;
+  s.force_levels = {1.0, 10.0};
+  HbmContactSpec c;
+  c.tangential = {{PointDof{"A", 0}, 1.0}};
+  s.contacts.push_back(c);
+  s.at = {"case.toml", 12};
+  return s;
+}
+
+TEST(WorkEstimate, HarmonicBalanceScalesWithFrequenciesLevelsSamplesAndHarmonics) {
+  const Model none;
+  const double base = estimate_work(oscillator_sweep(1.0, 3, 1024), none).operations;
+  ASSERT_GT(base, 0.0);
+  // 101 -> 201 frequencies.
+  EXPECT_NEAR(estimate_work(oscillator_sweep(0.5, 3, 1024), none).operations / base, 201.0 / 101.0, 1e-9);
+  // The AFT Jacobian dominates a one-contact model: linear in the samples, (2H + 1)^2 in H.
+  EXPECT_NEAR(estimate_work(oscillator_sweep(1.0, 3, 4096), none).operations / base, 4.0, 0.01);
+  EXPECT_NEAR(estimate_work(oscillator_sweep(1.0, 7, 1024), none).operations / base, 225.0 / 49.0, 0.01);
+}
+
+TEST(WorkEstimate, ARefusalNamesTheKeyTheEstimateAndTheBound) {
+  const WorkEstimate e = estimate_work(oscillator_sweep(1e-3, 50, 100000), Model{});
+  WorkLimits limits;
+  try {
+    require_within(e, limits);
+    FAIL() << "not refused: " << e.operations;
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("case.toml:12: 'analysis.step_hz"), std::string::npos) << what;
+    EXPECT_NE(what.find("H up to 50, 100000 AFT samples"), std::string::npos) << what;
+    EXPECT_NE(what.find("above the bound of 1e+12"), std::string::npos) << what;
+  }
+  limits.operations = 2.0 * e.operations;  // raised by one who means it
+  limits.bytes = 2.0 * e.bytes;
+  EXPECT_NO_THROW(require_within(e, limits));
+}
+
+TEST(WorkEstimate, MeshMemoryGrowsFasterThanItsDofs) {
+  auto strip = [](int nx) {
+    Model m;
+    m.mesh.dim = 2;
+    m.mesh.node_ids.resize(static_cast<size_t>(2 * (nx + 1)));
+    ElementBlock b;
+    b.type = ElementType::q4;
+    b.conn.resize(nx, 4);
+    m.mesh.blocks.push_back(b);
+    return m;
+  };
+  const WorkEstimate small = estimate_mesh_work(strip(1000)), large = estimate_mesh_work(strip(100000));
+  const double dofs = (2.0 * 100001) / (2.0 * 1001);
+  EXPECT_GT(large.bytes / small.bytes, dofs);  // the factor's fill: n log n
+  EXPECT_NEAR(large.operations / small.operations, std::pow(dofs, 1.5), 1e-9 * std::pow(dofs, 1.5));  // n^1.5
+  EXPECT_EQ(estimate_mesh_work(Model{}).bytes, 0.0);
+}
+
+}  // namespace
+}  // namespace bb

@@ -3,13 +3,17 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <exception>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <numbers>
 #include <optional>
+#include <thread>
 
 #include "analysis/hbm_nonlinear_modes.hpp"
 #include "analysis/hbm_response.hpp"
@@ -391,19 +395,54 @@ void add_damper_table(HbmOutcome& o) {
   }
 }
 
+// Every force level, each swept by one of `spec.threads` workers (levels share nothing but the
+// prepared model, read only). A level that throws stops none of the others; the first in level
+// order is rethrown, as the serial run would have stopped there.
+std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& spec, const HbmProgress& progress) {
+  const size_t n = spec.force_levels.size();
+  std::vector<HbmLevel> levels(n);
+  std::vector<std::exception_ptr> errors(n);
+  ProgressClock clock(static_cast<int>(n));
+  std::mutex report;  // the progress line and the clock, from every worker
+  int done = 0;
+  const HbmProgress timed = progress ? HbmProgress([&](const std::string& line) {
+    const std::lock_guard<std::mutex> lock(report);
+    progress(line + "  [" + clock.status() + "]");
+  })
+                                     : HbmProgress();
+  std::atomic<size_t> next{0};
+  const auto work = [&] {
+    for (size_t i = next++; i < n; i = next++) {
+      const double f = spec.force_levels[i];
+      try {
+        levels[i] = spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(prepared, spec, f, timed)
+                                                  : sweep_hbm_level(prepared, spec, f, spec.harmonics, timed);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+      const std::lock_guard<std::mutex> lock(report);
+      clock.finished(++done);
+    }
+  };
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const size_t workers = std::min<size_t>(n, spec.threads > 0 ? static_cast<size_t>(spec.threads) : cores);
+  {
+    std::vector<std::jthread> pool;
+    for (size_t k = 1; k < workers; ++k) pool.emplace_back(work);
+    work();
+  }  // joined
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return levels;
+}
+
 }  // namespace
 
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress) {
   HbmOutcome o;
   o.prepared = prepare_hbm(model, spec);
   const auto t0 = Clock::now();
-  ProgressClock clock(static_cast<int>(spec.force_levels.size()));
-  const HbmProgress timed = with_clock(progress, clock);
-  for (double f : spec.force_levels) {
-    o.levels.push_back(spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(o.prepared, spec, f, timed)
-                                                     : sweep_hbm_level(o.prepared, spec, f, spec.harmonics, timed));
-    clock.finished(static_cast<int>(o.levels.size()));
-  }
+  o.levels = sweep_levels(o.prepared, spec, progress);
   o.sweep_seconds = seconds_since(t0);
   require_solutions(o);
   add_peak_tables(o, spec);

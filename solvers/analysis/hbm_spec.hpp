@@ -121,6 +121,9 @@ struct HbmSpec {
   // Floquet exponents by Hill's method (hbm/hill_stability.hpp): at no point, at the peaks, or at
   // every path point (and the peaks). The path costs one eigenproblem of size 2 n (2H + 1) per point.
   enum class Stability { none, peaks, path } stability = Stability::none;
+  // Force levels swept at once, each on its own thread (they are independent: the results are
+  // those of the serial run, bit for bit). 0: one per core of the machine.
+  int threads = 0;
   SourceLocation at;  // of [analysis], for errors found when the model is built
 };
 

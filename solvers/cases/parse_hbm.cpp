@@ -235,6 +235,12 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     if (*it < 1 || *it > 1000) r.fail("max_iterations", "must lie in [1, 1000]");
     s.max_iterations = static_cast<int>(*it);
   }
+  if (const auto n = r.optional_integer("threads")) {
+    if (!contacts_required) r.fail("threads", "only a harmonic balance analysis sweeps its levels in parallel");
+    if (*n < 1 || *n > 256)
+      r.fail("threads", fmt::format("must lie in [1, 256] (force levels swept at once), found {}", *n));
+    s.threads = static_cast<int>(*n);
+  }
   s.forces = parse_forces(r);
   s.responses = parse_responses(r);
   s.force_levels = r.number_array("force_levels");

@@ -158,6 +158,32 @@ TEST_F(HbmAnalysis, EnergyBalancesAtEveryPeakFromStuckToGrossSlip) {
   }
 }
 
+// The levels share only the prepared model, read only: swept on three threads they give the tables
+// of the serial run, every bit (timings aside).
+TEST_F(HbmAnalysis, LevelsSweptInParallelAreTheSerialRunBitForBit) {
+  std::string text = kBladesCase;
+  text.replace(text.find("harmonics = 1\n"), 14, "harmonics = 1\nthreads = 1\n");
+  const HbmOutcome serial = run(text);
+  std::string parallel_text = text;
+  parallel_text.replace(parallel_text.find("threads = 1"), 11, "threads = 3");
+  const HbmOutcome parallel = run(parallel_text);
+  ASSERT_EQ(serial.tables.size(), parallel.tables.size());
+  for (const auto& [name, a] : serial.tables) {
+    const ResultTable& b = parallel.tables.at(name);
+    ASSERT_EQ(a.columns, b.columns) << name;
+    ASSERT_EQ(a.values.rows(), b.values.rows()) << name;
+    ASSERT_EQ(a.values.cols(), b.values.cols()) << name;
+    for (Eigen::Index r = 0; r < a.values.rows(); ++r)
+      for (Eigen::Index c = 0; c < a.values.cols(); ++c) {
+        if (a.columns[static_cast<size_t>(c)] == "seconds") continue;  // wall times
+        const double x = a.values(r, c), y = b.values(r, c);
+        EXPECT_TRUE(x == y || (std::isnan(x) && std::isnan(y)))
+            << name << "(" << r << ", " << c << "): " << x << " " << y;
+      }
+    EXPECT_EQ(a.text, b.text) << name;
+  }
+}
+
 TEST_F(HbmAnalysis, InPhasePeakOfSymmetricBladesIsTheClosedFormAtEveryLevel) {
   // a_t = (1, -1) is orthogonal to the IP mode (1, 1) and M, C, K are diagonal in (IP, OOP): the IP
   // component (q_A + q_B) / 2 is (F / 2m) / (w1^2 - w^2 + 2 i zeta w1 w), w1^2 = k / m, at any level.

@@ -36,8 +36,9 @@ WorkEstimate combine(WorkEstimate a, const WorkEstimate& b) {
 double grid_points(double f_min, double f_max, double step) { return std::floor((f_max - f_min) / step + 1e-9) + 1.0; }
 
 // The sweeps of a harmonic-balance analysis: frequencies x levels x the H and samples it may climb
-// through x Newton iterations, each an AFT of every contact (DFT of the Jacobian: 4 S (2H+1)^2)
-// and the LU of the condensed Jacobian ((n (2H+1))^3 / 3).
+// through (each climb counted at its top H: an upper bound) x Newton iterations, each an AFT of
+// every contact (DFT of the Jacobian: 4 S (2H+1)^2) and the LU of the condensed Jacobian
+// ((n (2H+1))^3 / 3).
 WorkEstimate hbm_work(const HbmSpec& s) {
   double unknowns = 0.0, elements = static_cast<double>(s.contacts.size());
   for (const HbmContactSpec& c : s.contacts) unknowns += static_cast<double>(c.tangential.size() + c.normal.size());
@@ -51,21 +52,31 @@ WorkEstimate hbm_work(const HbmSpec& s) {
   const int top_h = adaptive_h ? std::max(s.max_harmonics, s.harmonics) : s.harmonics;
   const double m = 2.0 * top_h + 1.0;
   const double h_sweeps = adaptive_h ? std::floor((top_h - s.harmonics) / std::max(s.harmonic_step, 1)) + 1.0 : 1.0;
-  const double samples = s.aft_tolerance > 0.0 ? std::max(s.max_time_samples, s.time_samples)
-                         : s.time_samples > 0  ? s.time_samples
-                                               : std::max(64.0, 16.0 * m);
-  const double sample_sweeps = s.aft_tolerance > 0.0 ? std::log2(samples / std::max(s.time_samples, 64)) + 1.0 : 1.0;
+  // The samples: fixed, or doubled from the start up to max_time_samples (aft_tolerance), whose
+  // sweeps together cost less than twice the last one.
+  const double first_samples = s.time_samples > 0 ? s.time_samples : std::max(64.0, 16.0 * m);
+  const double samples =
+      s.aft_tolerance > 0.0 ? std::max<double>(s.max_time_samples, first_samples) : first_samples;
+  double sample_sum = 0.0, sample_sweeps = 0.0;
+  for (double n = first_samples;; n = std::min(2.0 * n, samples)) {
+    sample_sum += n;
+    sample_sweeps += 1.0;
+    if (n >= samples) break;
+  }
   const bool grid = s.sweep.method == HbmSweepSpec::Method::grid;
   const double frequencies =
       grid ? grid_points(s.sweep.f_min, s.sweep.f_max, s.sweep.step_hz) : 10.0 / std::max(s.sweep.max_step, 1e-6);
   const double levels = static_cast<double>(std::max<size_t>(s.force_levels.size(), 1));
   // The point scope solves each frequency at a pair of H, raised until they agree.
-  const double solves = s.harmonic_scope == HbmSpec::HarmonicScope::point ? h_sweeps + 1.0 : h_sweeps * sample_sweeps;
-  const double iteration = 4.0 * elements * samples * m * m + std::pow(unknowns * m, 3.0) / 3.0 +
-                           (s.stability == HbmSpec::Stability::path ? 10.0 * std::pow(2.0 * unknowns * m, 3.0) : 0.0);
+  const double h_solves = s.harmonic_scope == HbmSpec::HarmonicScope::point ? h_sweeps + 1.0 : h_sweeps;
+  const double solves = h_solves * sample_sweeps;
+  const double per_point = h_solves * (4.0 * elements * sample_sum * m * m +
+                                       sample_sweeps * std::pow(unknowns * m, 3.0) / 3.0 +
+                                       (s.stability == HbmSpec::Stability::path ? 10.0 * std::pow(2.0 * unknowns * m, 3.0)
+                                                                                : 0.0));
   const double per_solve_iterations = 5.0;
   WorkEstimate e;
-  e.operations = frequencies * levels * solves * per_solve_iterations * iteration;
+  e.operations = frequencies * levels * per_solve_iterations * per_point;
   // The DFT matrices, and per point and level the solution and its output rows (about 40 numbers).
   e.bytes = 2.0 * samples * m * 8.0 * elements + frequencies * levels * (unknowns * m + 40.0) * 8.0 * 3.0;
   e.basis = fmt::format(

@@ -15,7 +15,7 @@ namespace bb::fuzz {
 inline constexpr const char* kSeparator = "\n@@\n";
 
 void case_file(const uint8_t* data, size_t size);  // TOML case: parse_case_table + parse_calibration
-// TOML case parsed, its model built and its analysis run (every type) under a small work bound;
+// TOML case parsed, its model built and its analysis run (every type) under a work bound of 2e7;
 // SolverError is a verdict too (exit 3). Generated meshes above 20 000 nodes are passed over.
 void case_run(const uint8_t* data, size_t size);
 void measured_data(const uint8_t* data, size_t size);  // byte 0 picks peaks / frf / hysteresis CSV or a .uff

@@ -152,12 +152,15 @@ void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibra
     }
   }
   // The curves a [calibration] would fit must exist, as `calibrate` requires.
-  if (calibration)
-    for (const CalibrationData& d : calibration->data) try {
+  if (calibration) {
+    for (const CalibrationData& d : calibration->data) {
+      try {
         require_data_columns(d, tables);
       } catch (const InputError& e) {
         unevaluated.emplace_back(e.what());
       }
+    }
+  }
   for (const auto& [name, table] : tables) {
     write_result_csv(table, out, run);
     if (!table.text_columns.empty()) run.listed_tables.push_back(table);

@@ -10,13 +10,13 @@
 namespace bb {
 namespace {
 
-AnalysisResults run(const StaticSpec& spec, const Model& model, const HbmProgress&) {
+AnalysisResults run(const StaticSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
   ResultTables tables;
   StaticOutcome o = run_static(model, spec, tables);
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress&) {
+AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
   if (spec.pairs) check_mode_pair_sets(model, *spec.pairs);
   ModalOutcome o{solve_modal(model, spec.modes, spec.options), {}};
   const ModalResult& modal = o.modal;
@@ -36,26 +36,26 @@ AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const FrfSpec& spec, const Model& model, const HbmProgress&) {
+AnalysisResults run(const FrfSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
   if (spec.pairs) check_mode_pair_sets(model, *spec.pairs);
   FrfOutcome o = run_frf(model, spec);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const HbmSpec& spec, const Model& model, const HbmProgress& progress) {
+AnalysisResults run(const HbmSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
   HbmOutcome o = run_hbm(model, spec, progress);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const TimeSpec& spec, const Model& model, const HbmProgress& progress) {
+AnalysisResults run(const TimeSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
   TimeOutcome o = run_time(model, spec, progress);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress&) {
+AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress&, const WorkLimits&) {
   ContactLoopOutcome o = run_contact_loop(spec);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o)};
@@ -67,7 +67,7 @@ AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgr
   return {std::move(tables), std::move(o)};
 }
 
-AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress& progress) {
+AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
   ContactModalOutcome o = run_contact_modal(model, spec, progress);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o)};
@@ -78,14 +78,7 @@ AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmP
 AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,
                              const WorkLimits& limits) {
   require_within(estimate_work(spec, model), limits);
-  return std::visit(
-      [&](const auto& s) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(s)>, RotatingSpec>)
-          return run(s, model, progress, limits);
-        else
-          return run(s, model, progress);
-      },
-      spec);
+  return std::visit([&](const auto& s) { return run(s, model, progress, limits); }, spec);
 }
 
 }  // namespace bb

@@ -21,6 +21,11 @@ ElementType parse_element(TomlReader& r) {
   r.fail("element", "unreachable");
 }
 
+// Why a corner coordinate cannot be read ("" when it can): common/input_number's rule, worded for coordinates.
+std::string coordinate_problem(double c) {
+  return std::isfinite(c) ? number_problem(c) : std::string("coordinates must be finite");
+}
+
 std::vector<Eigen::Vector3d> parse_points(TomlReader& r, const std::string& key, size_t count) {
   const toml::array& points = r.array(key);
   if (points.size() != count) r.fail(key, fmt::format("expected {} points, found {}", count, points.size()));
@@ -31,9 +36,8 @@ std::vector<Eigen::Vector3d> parse_points(TomlReader& r, const std::string& key,
       r.fail(key, fmt::format("point {} must be [x, y, z] with three numbers", i + 1));
     out.emplace_back(*toml_number((*p)[0]), *toml_number((*p)[1]), *toml_number((*p)[2]));
     for (double c : out.back())
-      if (const std::string problem = number_problem(c); !problem.empty())
-        r.fail(key, fmt::format("point {}: {}", i + 1,
-                                problem == "must be finite" ? "coordinates must be finite" : problem));
+      if (const std::string problem = coordinate_problem(c); !problem.empty())
+        r.fail(key, fmt::format("point {}: {}", i + 1, problem));
   }
   return out;
 }
@@ -196,8 +200,7 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
       r.fail("corners", fmt::format("corner {} must be [x, y] with two numbers", i + 1));
     q.corners[i] = {*toml_number((*p)[0]), *toml_number((*p)[1])};
     for (double c : q.corners[i])
-      if (const std::string problem = number_problem(c); !problem.empty())
-        r.fail("corners", problem == "must be finite" ? "coordinates must be finite" : problem);
+      if (const std::string problem = coordinate_problem(c); !problem.empty()) r.fail("corners", problem);
   }
   const long nx = r.integer("nx"), ny = r.integer("ny");
   if (nx < 1) r.fail("nx", fmt::format("must be >= 1, found {}", nx));

@@ -2,24 +2,20 @@
 // codes in common/errors.hpp. Progress goes to the terminal only: the library reports through callbacks.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <functional>
 #include <limits>
-#include <map>
 #include <numbers>
-#include <numeric>
 #include <optional>
 
 #include "analysis/run_analysis.hpp"
 #include "cache/model_cache.hpp"
+#include "cli/command_options.hpp"
+#include "cli/validate_command.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
 #include "common/progress_clock.hpp"
@@ -28,7 +24,6 @@
 #include "identify/uff58.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/calibrate_case.hpp"
-#include "pipeline/child_runs.hpp"
 #include "pipeline/run_case.hpp"
 #include "report/calculix_export.hpp"
 #include "report/calibration_report.hpp"
@@ -37,42 +32,9 @@
 #include "report/writers.hpp"
 
 namespace fs = std::filesystem;
+using namespace bb::cli;
 
 namespace {
-
-int failed_count(const bb::RunRecord& r) {
-  return static_cast<int>(
-      std::count_if(r.checks.begin(), r.checks.end(), [](const bb::CheckEntry& e) { return !e.pass; }));
-}
-
-// User text reaches the terminal through printable(): no control character or invalid byte.
-void print_outcome(const bb::RunOutcome& o, const std::string& prefix) {
-  const bb::RunRecord& r = o.record;
-  const std::string report = o.written ? (o.out_dir / "report.md").string() : std::string("no report written");
-  std::fprintf(stderr, "%s%s: %s (%zu checks, %d failed, %.3f s) -> %s\n", prefix.c_str(),
-               bb::printable(r.case_name).c_str(), bb::status_name(r.status).c_str(), r.checks.size(), failed_count(r),
-               r.wall_seconds, bb::printable(report).c_str());
-  if (!r.message.empty()) std::fprintf(stderr, "  error: %s\n", bb::printable(r.message).c_str());
-  for (const std::string& w : r.warnings) std::fprintf(stderr, "  warning: %s\n", bb::printable(w).c_str());
-  for (const bb::CheckEntry& e : r.checks)
-    if (!e.pass)
-      std::fprintf(stderr, "  FAIL %s: computed %.9g, expected %s reference %.9g (tolerance %.3g, |error| %.3g)\n",
-                   bb::printable(e.name).c_str(), e.computed, bb::relation_symbol(e.relation), e.reference, e.tolerance,
-                   e.abs_error);
-}
-
-// A subcommand's body: bad input -> exit 2, any other failure -> exit 3, the message on stderr.
-int guarded(const std::function<int()>& body) {
-  try {
-    return body();
-  } catch (const bb::InputError& e) {
-    std::fprintf(stderr, "error: %s\n", bb::printable(e.what()).c_str());
-    return bb::exit_bad_input;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", bb::printable(e.what()).c_str());
-    return bb::exit_solver_failed;
-  }
-}
 
 int html_command(const std::string& folder) {
   const std::vector<fs::path> pages = bb::write_html_twins(folder);
@@ -83,13 +45,6 @@ int html_command(const std::string& folder) {
   return 0;
 }
 
-// Files under a "data" folder are inputs of cases (CSV meshes, reduced-model sidecars), not cases.
-bool in_data_folder(const fs::path& file, const fs::path& root) {
-  for (const auto& part : fs::relative(file.parent_path(), root))
-    if (part == "data") return true;
-  return false;
-}
-
 struct RunArgs {
   std::vector<std::string> cases;
   std::string out;
@@ -97,37 +52,6 @@ struct RunArgs {
   bb::FidelityMode fidelity = bb::FidelityMode::fixed;
   bb::WorkLimits limits;
 };
-
-// --max-work and --max-memory: the bounds every analysis's estimate is held to before it starts.
-void add_limit_options(CLI::App* app, bb::WorkLimits& limits) {
-  app->add_option("--max-work", limits.operations,
-                  "Largest estimated floating-point operations of one analysis (default 1e12); a larger input is "
-                  "refused before it runs")
-      ->check(CLI::PositiveNumber);
-  app->add_option_function<double>(
-         "--max-memory", [&limits](double gb) { limits.bytes = gb * 1e9; },
-         "Largest estimated memory of one analysis [GB] (default: three quarters of this machine's)")
-      ->check(CLI::PositiveNumber);
-}
-
-// The same bounds as options of a child `bladebench run`.
-void append_limit_args(const bb::WorkLimits& limits, std::vector<std::string>& command) {
-  command.insert(command.end(), {"--max-work", fmt::format("{:.17g}", limits.operations)});
-  if (limits.bytes > 0) command.insert(command.end(), {"--max-memory", fmt::format("{:.17g}", limits.bytes / 1e9)});
-}
-
-// --fidelity on run and validate: the case's settings unless asked (see cases/README.md, "Fidelity").
-void add_fidelity_option(CLI::App* app, bb::FidelityMode& mode) {
-  static const std::map<std::string, bb::FidelityMode> modes = [] {
-    std::map<std::string, bb::FidelityMode> m;
-    for (bb::FidelityMode each : bb::kFidelityModes) m.emplace(bb::fidelity_mode_name(each), each);
-    return m;
-  }();
-  app->add_option("--fidelity", mode,
-                  "fixed: the case's own settings (default); fast / reference: the cheapest / finest level of every "
-                  "[fidelity] axis; auto: the cheapest levels whose estimated error meets the [fidelity] target")
-      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
-}
 
 int run_command(const RunArgs& a) {
   // With several cases --out is the parent of their report folders; with one, the folder itself
@@ -148,178 +72,10 @@ int run_command(const RunArgs& a) {
   return rc;
 }
 
-struct ValidateArgs {
-  std::string dir = "cases", out = "reports";
-  bool study = false, no_plots = false;
-  bb::FidelityMode fidelity = bb::FidelityMode::fixed;
-  int jobs = 1;
-  bb::WorkLimits limits;
-};
-
-// `bladebench run` of one case as validate would run it in-process, for a child process.
-std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& file, const fs::path& out_dir) {
-  std::vector<std::string> c = {
-      fs::read_symlink("/proc/self/exe").string(), "run", file.string(), "--out", out_dir.string(), "--fidelity",
-      bb::fidelity_mode_name(a.fidelity)};
-  if (a.study) c.emplace_back("--study");
-  if (a.no_plots) c.emplace_back("--no-plots");
-  append_limit_args(a.limits, c);
-  if (const auto& cache = bb::model_cache_settings()) {
-    c.emplace_back("--cache-dir");
-    c.push_back(cache->folder.string());
-  } else {
-    c.emplace_back("--no-cache");
-  }
-  return c;
-}
-
-// A child's run read back from the summary.json it wrote; nullopt when it wrote none for this run.
-std::optional<bb::IndexEntry> entry_of_child(const fs::path& out_dir, const fs::path& index_dir,
-                                             const bb::ChildResult& r) {
-  if (r.exit_code < 0) return std::nullopt;
-  try {
-    std::ifstream in(out_dir / "summary.json");
-    const nlohmann::json j = nlohmann::json::parse(in);
-    bb::IndexEntry e{j.at("case").get<std::string>(),
-                     fs::relative(out_dir / "report.md", index_dir),
-                     bb::RunStatus::solver_failed,
-                     0,
-                     0,
-                     j.at("wall_time_s").get<double>(),
-                     j.value("message", std::string()),
-                     j.value("fidelity", std::string())};
-    const std::string status = j.at("status").get<std::string>();
-    for (bb::RunStatus st : {bb::RunStatus::pass, bb::RunStatus::fail, bb::RunStatus::no_checks,
-                             bb::RunStatus::bad_input, bb::RunStatus::solver_failed})
-      if (bb::status_name(st) == status) e.status = st;
-    for (const auto& c : j.at("checks")) {
-      ++e.checks;
-      e.failed += c.at("pass").get<bool>() ? 0 : 1;
-    }
-    // An older summary (this run failed before writing its own) must not pass for this run.
-    if (bb::exit_code(e.status) != r.exit_code) return std::nullopt;
-    return e;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
-// "3 passed", "1 failed", "2 bad input": a status as the final line of validate says it.
-std::string status_verb(bb::RunStatus status) {
-  switch (status) {
-    case bb::RunStatus::pass:
-      return "passed";
-    case bb::RunStatus::fail:
-      return "failed";
-    case bb::RunStatus::no_checks:
-      return "without checks";
-    case bb::RunStatus::bad_input:
-      return "bad input";
-    case bb::RunStatus::solver_failed:
-      return "solver failed";
-  }
-  return "?";
-}
-
-int validate_command(const ValidateArgs& a) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(a.dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".toml" && !in_data_folder(entry.path(), a.dir))
-      files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  if (files.empty()) {
-    std::fprintf(stderr, "error: no *.toml case file under %s\n", a.dir.c_str());
-    return bb::exit_bad_input;
-  }
-  // Two case files with one stem would write one report folder: refuse before running any, so that
-  // neither report is overwritten by the other.
-  std::map<std::string, fs::path> stems;
-  for (const fs::path& f : files)
-    if (auto [it, fresh] = stems.emplace(f.stem().string(), f); !fresh)
-      throw bb::InputError(
-          fmt::format("two case files share the name '{}': {} and {} (validate writes one report "
-                      "folder per case file name)",
-                      bb::printable(f.stem().string()), bb::printable(it->second.string()), bb::printable(f.string())));
-  bb::prepare_output_parent(a.out, "--out");
-  std::vector<std::pair<size_t, bb::IndexEntry>> done;  // (file, entry) in the order runs finish
-  int rc = bb::exit_pass;
-  auto record = [&](size_t i, bb::IndexEntry e, int code) {
-    done.emplace_back(i, e);
-    rc = std::max(rc, code);
-  };
-  if (a.jobs > 1) {
-    // Longest first, by the wall time of each case's previous report (none yet: first of all), so
-    // that a long case does not start last and run alone.
-    std::vector<double> previous(files.size(), std::numeric_limits<double>::infinity());
-    for (size_t i = 0; i < files.size(); ++i) {
-      std::ifstream in(fs::path(a.out) / files[i].stem() / "summary.json");
-      const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-      if (!j.is_discarded() && j.contains("wall_time_s") && j["wall_time_s"].is_number())
-        previous[i] = j["wall_time_s"].get<double>();
-    }
-    std::vector<size_t> order(files.size());
-    std::iota(order.begin(), order.end(), size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return previous[x] > previous[y]; });
-    std::vector<std::vector<std::string>> commands;
-    for (size_t i : order) commands.push_back(child_command(a, files[i], fs::path(a.out) / files[i].stem()));
-    size_t finished = 0;
-    bb::run_children(commands, a.jobs, [&](size_t started, const bb::ChildResult& r) {
-      const size_t i = order[started];
-      const fs::path out_dir = fs::path(a.out) / files[i].stem();
-      // The child's own verdict lines, whole, under this run's counter.
-      std::fprintf(stderr, "[%zu/%zu] %s", ++finished, files.size(), bb::printable(r.output, true).c_str());
-      std::optional<bb::IndexEntry> e = entry_of_child(out_dir, a.out, r);
-      if (!e) {
-        e = bb::IndexEntry{files[i].stem().string(),
-                           fs::relative(out_dir / "report.md", a.out),
-                           r.exit_code == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed,
-                           0,
-                           0,
-                           0.0,
-                           r.signal ? fmt::format("the run was killed by signal {} ({})", r.signal, strsignal(r.signal))
-                                    : fmt::format("the run exited with code {} and no report", r.exit_code),
-                           ""};
-        std::fprintf(stderr, "  error: %s: %s\n", files[i].string().c_str(), e->message.c_str());
-      }
-      record(i, *e, bb::exit_code(e->status));
-    });
-  } else {
-    for (size_t i = 0; i < files.size(); ++i) {
-      bb::RunOptions opt;
-      opt.study = a.study;
-      opt.plots = !a.no_plots;
-      opt.fidelity = a.fidelity;
-      opt.limits = a.limits;
-      // Output folder by file stem first; the case name is only known after parsing.
-      opt.out_dir = fs::path(a.out) / files[i].stem();
-      const bb::RunOutcome o = bb::run_case(files[i], opt);
-      print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
-      record(i,
-             bb::IndexEntry{o.record.case_name, fs::relative(o.out_dir / "report.md", a.out), o.record.status,
-                            static_cast<int>(o.record.checks.size()), failed_count(o.record), o.record.wall_seconds,
-                            o.record.message, o.record.fidelity},
-             bb::exit_code(o.record.status));
-    }
-  }
-  std::sort(done.begin(), done.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::vector<bb::IndexEntry> index;
-  for (auto& [i, e] : done) index.push_back(std::move(e));
-  bb::write_index_md(index, fs::path(a.out) / "index.md");
-  bb::write_html_twin(fs::path(a.out) / "index.md");
-  // The verdict a CI log is read for: every status that occurred, in the enum's order.
-  std::map<bb::RunStatus, int> by_status;
-  for (const bb::IndexEntry& e : index) ++by_status[e.status];
-  std::string verdict;
-  for (const auto& [status, count] : by_status)
-    verdict += fmt::format("{}{} {}", verdict.empty() ? "" : ", ", count, status_verb(status));
-  std::fprintf(stderr, "%zu cases: %s; index: %s\n", files.size(), verdict.c_str(),
-               (fs::path(a.out) / "index.md").string().c_str());
-  return rc;
-}
-
 struct CalibrateArgs {
   std::string case_file, out;
   bool no_plots = false;
+  bb::WorkLimits limits;  // of each evaluation of the model
 };
 
 int calibrate_command(const CalibrateArgs& a) {
@@ -344,7 +100,7 @@ int calibrate_command(const CalibrateArgs& a) {
                      s.start, s.starts, s.iteration, s.max_iterations, s.cost, s.gradient_max_norm,
                      s.accepted ? "accepted" : "rejected", clock->bound().c_str());
       };
-    const bb::CalibrationOutcome o = bb::calibrate_case(a.case_file, progress);
+    const bb::CalibrationOutcome o = bb::calibrate_case(a.case_file, progress, a.limits);
     if (last_start != 0) std::fputc('\n', stderr);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bb::write_calibration_outputs(o, a.case_file, wall, stage.path(), !a.no_plots);
@@ -511,6 +267,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   calibrate->add_option("--out", calibrate_args.out, "Output folder (default reports/<case-name>-calibration)");
   calibrate->add_flag("--no-plots", calibrate_args.no_plots, "Skip gnuplot figures");
+  add_limit_options(calibrate, calibrate_args.limits);
   add_cache_options(calibrate, cache_args);
 
   SynthesizeArgs synth;

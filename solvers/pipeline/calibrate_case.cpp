@@ -55,10 +55,10 @@ std::vector<std::string> parameter_paths(const CalibrationSpec& cal) {
 // The fitted points of the case with the given parameter values, and the tables of its curves;
 // with `gradients`, frf points carry d r / d log p from the tables' sensitivity columns.
 std::vector<FitPoint> fitted_points(const CalibratedCase& base, const CalibrationSpec& cal,
-                                    const std::vector<double>& values, ResultTables* curves = nullptr,
-                                    bool gradients = false) {
+                                    const std::vector<double>& values, const WorkLimits& limits,
+                                    ResultTables* curves = nullptr, bool gradients = false) {
   const CaseSpec spec = with_values(base, values);
-  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model));
+  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits);
   std::vector<FitPoint> points;
   for (const CheckSpec& c : spec.checks) {
     if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
@@ -112,11 +112,11 @@ void set_number(toml::table& root, const std::string& path, double value) {
 }
 
 // The same parameter paths in an independent model (e.g. Newmark instead of the harmonic balance).
-void cross_check(const CalibrationSpec& cal, CalibrationOutcome& out) {
+void cross_check(const CalibrationSpec& cal, const WorkLimits& limits, CalibrationOutcome& out) {
   const auto t0 = std::chrono::steady_clock::now();
   const CalibratedCase cross = with_parameters(parse_case_file(cal.cross_check), cal);
   const CaseSpec spec = with_values(cross, out.values);
-  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model));
+  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits);
   for (const CheckSpec& c : spec.checks) {
     const auto e = evaluate_check(c, results.tables);
     out.cross_check.insert(out.cross_check.end(), e.begin(), e.end());
@@ -133,7 +133,7 @@ bool CalibrationOutcome::cross_check_passed() const {
   return std::all_of(cross_check.begin(), cross_check.end(), [](const CheckEntry& e) { return e.pass; });
 }
 
-CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& progress) {
+CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& progress, const WorkLimits& limits) {
   const toml::table table = read_case_table(case_file);
   CaseSpec spec = parse_case_table(table, case_file);
   const std::optional<CalibrationSpec> cal = parse_calibration(table, case_file, spec);
@@ -145,7 +145,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   const auto analytic_base = analytic_case(base, *cal);
   const CalibratedCase* sensitivity_base = std::get_if<CalibratedCase>(&analytic_base);
   ResultTables curves_before;
-  const std::vector<FitPoint> before = fitted_points(sensitivity_base ? *sensitivity_base : base, *cal, start,
+  const std::vector<FitPoint> before = fitted_points(sensitivity_base ? *sensitivity_base : base, *cal, start, limits,
                                                      &curves_before, sensitivity_base != nullptr);
   for (const FitPoint& p : before)
     if (!(p.sigma > 0.0))
@@ -160,7 +160,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   const bool analytic = numeric_reason.empty();
   const CalibratedCase& model = analytic ? *sensitivity_base : base;
   const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
-    return fitted_points(model, *cal, values, nullptr, gradients);
+    return fitted_points(model, *cal, values, limits, nullptr, gradients);
   };
   CalibrationOutcome out = fit_parameters(*cal, evaluate, analytic, static_cast<int>(before.size()), progress);
   out.before = before;
@@ -168,10 +168,10 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   out.derivatives = analytic ? "analytic (implicit function theorem, hbm/sensitivity.hpp)"
                              : fmt::format("central differences, relative step {:g} ({})", cal->derivative_step,
                                            cal->derivatives == "numeric" ? "as asked" : numeric_reason);
-  out.after = fitted_points(base, *cal, out.values, &out.curves_after);
+  out.after = fitted_points(base, *cal, out.values, limits, &out.curves_after);
   out.calibrated = table;
   for (size_t i = 0; i < out.values.size(); ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);
-  if (!cal->cross_check.empty()) cross_check(*cal, out);
+  if (!cal->cross_check.empty()) cross_check(*cal, limits, out);
   return out;
 }
 

@@ -7,13 +7,16 @@
 #pragma once
 #include <filesystem>
 
+#include "common/work_limits.hpp"
 #include "identify/calibration_outcome.hpp"
 #include "identify/least_squares_fit.hpp"
 
 namespace bb {
 
 // Throws InputError for a malformed case, [calibration] or data file; a failed fit is reported in
-// the outcome. `progress` receives every trust-region iteration (none when empty).
-CalibrationOutcome calibrate_case(const std::filesystem::path& case_file, const FitProgress& progress = {});
+// the outcome. `progress` receives every trust-region iteration (none when empty); every evaluation
+// of the model (and the cross-check) is held to `limits` before it runs.
+CalibrationOutcome calibrate_case(const std::filesystem::path& case_file, const FitProgress& progress = {},
+                                  const WorkLimits& limits = {});
 
 }  // namespace bb

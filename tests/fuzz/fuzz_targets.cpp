@@ -16,6 +16,7 @@
 #include "mesh/csv_mesh.hpp"
 #include "mesh/gmsh_import.hpp"
 #include "model/build_model.hpp"
+#include "pipeline/calibrate_case.hpp"
 #include "reduction/reduced_model_io.hpp"
 
 namespace bb::fuzz {
@@ -104,6 +105,27 @@ void case_run(const uint8_t* data, size_t size) {
   }
 }
 
+void calibration(const uint8_t* data, size_t size) {
+  const auto parts = split({reinterpret_cast<const char*>(data), size}, 3);
+  const fs::path dir = work_folder();
+  write(dir / "case.toml", parts[0]);
+  for (int i = 1; i <= 2; ++i)  // one data file under the names a case may give it
+    for (const char* ext : {".csv", ".uff", ".unv"}) write(dir / ("data" + std::to_string(i) + ext), parts[i]);
+  try {
+    const toml::table table = read_case_table(dir / "case.toml");
+    const CaseSpec spec = parse_case_table(table, dir / "case.toml");
+    const std::optional<CalibrationSpec> cal = parse_calibration(table, dir / "case.toml", spec);
+    // The fuzzer's time, not a defect: large meshes and long fits.
+    if (generated_nodes(spec.model.mesh) > 2e4 || (cal && static_cast<double>(cal->starts) * cal->max_iterations > 12.0)) return;
+    WorkLimits limits;
+    limits.operations = 2e7;
+    limits.bytes = 5e8;
+    calibrate_case(dir / "case.toml", {}, limits);
+  } catch (const InputError&) {
+  } catch (const SolverError&) {
+  }
+}
+
 void measured_data(const uint8_t* data, size_t size) {
   if (size == 0) return;
   static constexpr std::array<DataKind, 4> kinds = {DataKind::peaks, DataKind::frf, DataKind::hysteresis,
@@ -141,7 +163,7 @@ void gmsh_mesh(const uint8_t* data, size_t size) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {{"case_file", case_file},         {"case_run", case_run},
+  static const std::vector<Target> all = {{"case_file", case_file},         {"case_run", case_run},         {"calibration", calibration},
                                           {"measured_data", measured_data}, {"reduced_model", reduced_model},
                                           {"csv_mesh", csv_mesh},           {"gmsh_mesh", gmsh_mesh}};
   return all;

@@ -18,6 +18,10 @@ void case_file(const uint8_t* data, size_t size);  // TOML case: parse_case_tabl
 // TOML case parsed, its model built and its analysis run (every type) under a work bound of 2e7;
 // SolverError is a verdict too (exit 3). Generated meshes above 20 000 nodes are passed over.
 void case_run(const uint8_t* data, size_t size);
+// A case with [calibration] @@ its first data file @@ its second (written as data1 / data2 with
+// each extension a case may name), calibrated under the same bound per evaluation; fits of more
+// than 12 iterations in all are passed over.
+void calibration(const uint8_t* data, size_t size);
 void measured_data(const uint8_t* data, size_t size);  // byte 0 picks peaks / frf / hysteresis CSV or a .uff
 void reduced_model(const uint8_t* data, size_t size);  // sidecar @@ K @@ M (Matrix Market or CSV)
 void csv_mesh(const uint8_t* data, size_t size);       // byte 0 picks the element; nodes @@ elements

@@ -1,0 +1,202 @@
+#include "cli/validate_command.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <optional>
+
+#include "cache/model_cache.hpp"
+#include "cli/command_options.hpp"
+#include "common/errors.hpp"
+#include "common/user_text.hpp"
+#include "pipeline/child_runs.hpp"
+#include "report/html_page.hpp"
+#include "report/output_folder.hpp"
+#include "report/writers.hpp"
+
+namespace bb::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Files under a "data" folder are inputs of cases (CSV meshes, reduced-model sidecars), not cases.
+bool in_data_folder(const fs::path& file, const fs::path& root) {
+  for (const auto& part : fs::relative(file.parent_path(), root))
+    if (part == "data") return true;
+  return false;
+}
+
+
+// `bladebench run` of one case as validate would run it in-process, for a child process.
+std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& file, const fs::path& out_dir) {
+  std::vector<std::string> c = {
+      fs::read_symlink("/proc/self/exe").string(), "run", file.string(), "--out", out_dir.string(), "--fidelity",
+      bb::fidelity_mode_name(a.fidelity)};
+  if (a.study) c.emplace_back("--study");
+  if (a.no_plots) c.emplace_back("--no-plots");
+  append_limit_args(a.limits, c);
+  if (const auto& cache = bb::model_cache_settings()) {
+    c.emplace_back("--cache-dir");
+    c.push_back(cache->folder.string());
+  } else {
+    c.emplace_back("--no-cache");
+  }
+  return c;
+}
+
+// A child's run read back from the summary.json it wrote; nullopt when it wrote none for this run.
+std::optional<bb::IndexEntry> entry_of_child(const fs::path& out_dir, const fs::path& index_dir,
+                                             const bb::ChildResult& r) {
+  if (r.exit_code < 0) return std::nullopt;
+  try {
+    std::ifstream in(out_dir / "summary.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    bb::IndexEntry e{j.at("case").get<std::string>(),
+                     fs::relative(out_dir / "report.md", index_dir),
+                     bb::RunStatus::solver_failed,
+                     0,
+                     0,
+                     j.at("wall_time_s").get<double>(),
+                     j.value("message", std::string()),
+                     j.value("fidelity", std::string())};
+    const std::string status = j.at("status").get<std::string>();
+    for (bb::RunStatus st : {bb::RunStatus::pass, bb::RunStatus::fail, bb::RunStatus::no_checks,
+                             bb::RunStatus::bad_input, bb::RunStatus::solver_failed})
+      if (bb::status_name(st) == status) e.status = st;
+    for (const auto& c : j.at("checks")) {
+      ++e.checks;
+      e.failed += c.at("pass").get<bool>() ? 0 : 1;
+    }
+    // An older summary (this run failed before writing its own) must not pass for this run.
+    if (bb::exit_code(e.status) != r.exit_code) return std::nullopt;
+    return e;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// "3 passed", "1 failed", "2 bad input": a status as the final line of validate says it.
+std::string status_verb(bb::RunStatus status) {
+  switch (status) {
+    case bb::RunStatus::pass:
+      return "passed";
+    case bb::RunStatus::fail:
+      return "failed";
+    case bb::RunStatus::no_checks:
+      return "without checks";
+    case bb::RunStatus::bad_input:
+      return "bad input";
+    case bb::RunStatus::solver_failed:
+      return "solver failed";
+  }
+  return "?";
+}
+
+}  // namespace
+
+int validate_command(const ValidateArgs& a) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(a.dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".toml" && !in_data_folder(entry.path(), a.dir))
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  if (files.empty()) {
+    std::fprintf(stderr, "error: no *.toml case file under %s\n", a.dir.c_str());
+    return bb::exit_bad_input;
+  }
+  // Two case files with one stem would write one report folder: refuse before running any, so that
+  // neither report is overwritten by the other.
+  std::map<std::string, fs::path> stems;
+  for (const fs::path& f : files)
+    if (auto [it, fresh] = stems.emplace(f.stem().string(), f); !fresh)
+      throw bb::InputError(
+          fmt::format("two case files share the name '{}': {} and {} (validate writes one report "
+                      "folder per case file name)",
+                      bb::printable(f.stem().string()), bb::printable(it->second.string()), bb::printable(f.string())));
+  bb::prepare_output_parent(a.out, "--out");
+  std::vector<std::pair<size_t, bb::IndexEntry>> done;  // (file, entry) in the order runs finish
+  int rc = bb::exit_pass;
+  auto record = [&](size_t i, bb::IndexEntry e, int code) {
+    done.emplace_back(i, e);
+    rc = std::max(rc, code);
+  };
+  if (a.jobs > 1) {
+    // Longest first, by the wall time of each case's previous report (none yet: first of all), so
+    // that a long case does not start last and run alone.
+    std::vector<double> previous(files.size(), std::numeric_limits<double>::infinity());
+    for (size_t i = 0; i < files.size(); ++i) {
+      std::ifstream in(fs::path(a.out) / files[i].stem() / "summary.json");
+      const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+      if (!j.is_discarded() && j.contains("wall_time_s") && j["wall_time_s"].is_number())
+        previous[i] = j["wall_time_s"].get<double>();
+    }
+    std::vector<size_t> order(files.size());
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return previous[x] > previous[y]; });
+    std::vector<std::vector<std::string>> commands;
+    for (size_t i : order) commands.push_back(child_command(a, files[i], fs::path(a.out) / files[i].stem()));
+    size_t finished = 0;
+    bb::run_children(commands, a.jobs, [&](size_t started, const bb::ChildResult& r) {
+      const size_t i = order[started];
+      const fs::path out_dir = fs::path(a.out) / files[i].stem();
+      // The child's own verdict lines, whole, under this run's counter.
+      std::fprintf(stderr, "[%zu/%zu] %s", ++finished, files.size(), bb::printable(r.output, true).c_str());
+      std::optional<bb::IndexEntry> e = entry_of_child(out_dir, a.out, r);
+      if (!e) {
+        e = bb::IndexEntry{files[i].stem().string(),
+                           fs::relative(out_dir / "report.md", a.out),
+                           r.exit_code == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed,
+                           0,
+                           0,
+                           0.0,
+                           r.signal ? fmt::format("the run was killed by signal {} ({})", r.signal, strsignal(r.signal))
+                                    : fmt::format("the run exited with code {} and no report", r.exit_code),
+                           ""};
+        std::fprintf(stderr, "  error: %s: %s\n", files[i].string().c_str(), e->message.c_str());
+      }
+      record(i, *e, bb::exit_code(e->status));
+    });
+  } else {
+    for (size_t i = 0; i < files.size(); ++i) {
+      bb::RunOptions opt;
+      opt.study = a.study;
+      opt.plots = !a.no_plots;
+      opt.fidelity = a.fidelity;
+      opt.limits = a.limits;
+      // Output folder by file stem first; the case name is only known after parsing.
+      opt.out_dir = fs::path(a.out) / files[i].stem();
+      const bb::RunOutcome o = bb::run_case(files[i], opt);
+      print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
+      record(i,
+             bb::IndexEntry{o.record.case_name, fs::relative(o.out_dir / "report.md", a.out), o.record.status,
+                            static_cast<int>(o.record.checks.size()), failed_count(o.record), o.record.wall_seconds,
+                            o.record.message, o.record.fidelity},
+             bb::exit_code(o.record.status));
+    }
+  }
+  std::sort(done.begin(), done.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<bb::IndexEntry> index;
+  for (auto& [i, e] : done) index.push_back(std::move(e));
+  bb::write_index_md(index, fs::path(a.out) / "index.md");
+  bb::write_html_twin(fs::path(a.out) / "index.md");
+  // The verdict a CI log is read for: every status that occurred, in the enum's order.
+  std::map<bb::RunStatus, int> by_status;
+  for (const bb::IndexEntry& e : index) ++by_status[e.status];
+  std::string verdict;
+  for (const auto& [status, count] : by_status)
+    verdict += fmt::format("{}{} {}", verdict.empty() ? "" : ", ", count, status_verb(status));
+  std::fprintf(stderr, "%zu cases: %s; index: %s\n", files.size(), verdict.c_str(),
+               (fs::path(a.out) / "index.md").string().c_str());
+  return rc;
+}
+
+}  // namespace bb::cli

@@ -81,6 +81,20 @@ BENCHMARK(BM_AftJenkinsSamples)
     ->ArgsProduct({{1, 7}, {64, 240, 256, 512, 1000, 1024, 4096, 16384}})
     ->Unit(benchmark::kMicrosecond);
 
+// The event-resolved AFT (contact/aft_events.hpp) on the same motion against its sample intervals,
+// beside the sampled AFT above at the samples each needs for the same accuracy.
+void BM_AftJenkinsEvents(benchmark::State& state) {
+  const int harmonics = static_cast<int>(state.range(0));
+  const auto [u, v] = stick_slip_motion(harmonics);
+  bb::contact::AftOptions options{.samples = static_cast<int>(state.range(1))};
+  options.resolve_events = true;
+  for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(kStickSlipLaw, u, v, options));
+}
+BENCHMARK(BM_AftJenkinsEvents)
+    ->ArgNames({"H", "samples"})
+    ->ArgsProduct({{1, 7}, {16, 32, 64, 240}})
+    ->Unit(benchmark::kMicrosecond);
+
 HarmonicBalance planar_system(int harmonics) {
   return HarmonicBalance(bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2),
                          {.harmonics = harmonics});

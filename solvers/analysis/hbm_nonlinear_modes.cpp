@@ -85,6 +85,7 @@ void add_nonlinear_modes(HbmOutcome& o, const HbmSpec& spec) {
   hbm::NonlinearModeOptions options;
   options.harmonics = spec.harmonics;
   options.aft.samples = spec.time_samples;
+  options.aft.resolve_events = spec.aft_events;
   Eigen::VectorXd static_guess;
   if (p.damper_static) static_guess = p.damper_static->q;
   for (int mode : nm.linear_modes) {

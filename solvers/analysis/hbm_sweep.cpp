@@ -66,6 +66,7 @@ hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, dou
   hbm::HbmOptions options;
   options.harmonics = harmonics;
   options.aft.samples = samples;
+  options.aft.resolve_events = spec.aft_events;
   options.tolerance = spec.tolerance;
   options.max_iterations = spec.max_iterations;
   return hbm::HarmonicBalance(std::move(m), options);

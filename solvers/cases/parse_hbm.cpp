@@ -171,6 +171,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   if (samples != 0 && (samples < 2 * h + 1 || samples > 100000))
     r.fail("time_samples", fmt::format("must be 0 (automatic) or lie in [{}, 100000] (at least 2H + 1)", 2 * h + 1));
   s.time_samples = static_cast<int>(samples);
+  if (r.has("aft")) s.aft_events = r.choice("aft", {"samples", "events"}) == "events";
   if (r.has("aft_tolerance")) {
     s.aft_tolerance = r.positive("aft_tolerance");
     if (s.aft_tolerance >= 1.0) r.fail("aft_tolerance", "must be below 1 (a relative contact-force error)");

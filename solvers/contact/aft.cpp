@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "contact/aft_events.hpp"
+
 namespace bb::contact {
 
 Eigen::Index harmonic_size(int harmonics) {
@@ -162,6 +164,7 @@ void law_derivative_step(const JenkinsParameters& p, const JenkinsStep& s, doubl
 AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const AftOptions& options) {
   const int harmonics = checked_harmonics(p, u, v, options);
+  if (options.resolve_events) return aft_jenkins_events(p, u, v, options);
 
   const int n = options.samples;
   const Eigen::Index m = u.size();

@@ -52,6 +52,10 @@ struct AftOptions {
   // Also compute AftResult::dtangential_dlaw and dnormal_dlaw (sensitivity analysis, hbm/
   // sensitivity.hpp). Off by default: the Newton solves do not need them.
   bool law_derivatives = false;
+  // Locate every stick / slip / lift-off transition and integrate the forces between them
+  // (contact/aft_events.hpp) instead of taking the DFT of the samples: coefficients and Jacobian
+  // continuous in the inputs, their error independent of where a transition falls.
+  bool resolve_events = false;
 };
 
 // Column order of the law-parameter derivatives in AftResult.

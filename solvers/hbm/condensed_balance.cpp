@@ -69,7 +69,11 @@ HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options)
   }
 
   aft_ = options_.aft;
-  if (aft_.samples == 0) aft_.samples = std::max(64, 16 * (2 * options_.harmonics + 1));
+  // Sampled: 16 samples per coefficient keep the error at the peaks near 1e-3. Events: the samples
+  // only bracket the transitions, the integration is exact.
+  if (aft_.samples == 0)
+    aft_.samples = aft_.resolve_events ? std::max(32, 4 * (2 * options_.harmonics + 1))
+                                       : std::max(64, 16 * (2 * options_.harmonics + 1));
   if (aft_.samples < 2 * options_.harmonics + 1) fail("aft.samples must be >= 2H + 1");
 
   double preload = 0.0;

@@ -31,7 +31,8 @@ namespace bb::hbm {
 struct HbmOptions {
   int harmonics = 1;  // H >= 1
   // AFT options; samples = 0 picks max(64, 16 (2H + 1)), enough for coefficient errors ~1e-4 on
-  // stick-slip loops (the forces have kinks, their harmonics converge as 1 / n_t^2).
+  // stick-slip loops (the forces have kinks, their harmonics converge as 1 / n_t^2), or with
+  // resolve_events max(32, 4 (2H + 1)), which only bracket the transitions.
   contact::AftOptions aft{};
   int max_iterations = 50;  // Newton iterations per solve (bounded: never hangs)
   // Converged when ||R|| <= tolerance * force_scale, R the condensed harmonic force balance [N] and

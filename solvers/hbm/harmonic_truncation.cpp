@@ -22,7 +22,7 @@ TruncationProbe::TruncationProbe(const HarmonicBalance& system)
   if (probe_harmonics_ == harmonics_) return;
   HbmOptions options = system.options();
   options.harmonics = probe_harmonics_;
-  options.aft.samples = system.aft_options().samples;
+  options.aft = system.aft_options();
   probe_.emplace(system.model(), options);
 }
 

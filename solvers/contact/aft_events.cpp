@@ -1,0 +1,533 @@
+#include "contact/aft_events.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace bb::contact {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// [1, cos t, sin t, ..., cos Ht, sin Ht] and its derivative in theta.
+void basis_at(double theta, int harmonics, Eigen::RowVectorXd& phi, Eigen::RowVectorXd& dphi) {
+  phi.resize(2 * harmonics + 1);
+  dphi.resize(2 * harmonics + 1);
+  phi[0] = 1.0;
+  dphi[0] = 0.0;
+  const double c1 = std::cos(theta), s1 = std::sin(theta);
+  double c = 1.0, s = 0.0;
+  for (int h = 1; h <= harmonics; ++h) {
+    const double cn = c * c1 - s * s1;
+    s = s * c1 + c * s1;
+    c = cn;
+    phi[2 * h - 1] = c;
+    phi[2 * h] = s;
+    dphi[2 * h - 1] = -h * s;
+    dphi[2 * h] = h * c;
+  }
+}
+
+// The relative displacements and their theta-derivatives at one instant.
+struct Motion {
+  double theta = 0.0, u = 0.0, v = 0.0, du = 0.0, dv = 0.0, ddu = 0.0, ddv = 0.0;
+};
+
+// Regula falsi with the Illinois modification on [lo, hi], f(lo) and f(hi) of opposite signs: the
+// root to rounding, superlinear for a smooth f.
+template <typename F>
+double illinois(F&& f, double lo, double hi, double f_lo, double f_hi) {
+  const double resolution = 1e-15 * kTwoPi;
+  int side = 0;
+  for (int i = 0; i < 100 && hi - lo > resolution; ++i) {
+    double mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+    const double fm = f(mid);
+    if (std::abs(fm) <= 1e-15 * (std::abs(f_lo) + std::abs(f_hi))) return mid;
+    if ((fm > 0.0) == (f_hi > 0.0)) {
+      hi = mid;
+      f_hi = fm;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    } else {
+      lo = mid;
+      f_lo = fm;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    }
+  }
+  return hi;
+}
+
+// What ends a phase. The first four end stick or slip, the last two open or close the contact.
+enum class Event { slip_up, slip_down, stop_positive, stop_negative, open, close };
+
+// The stuck slider of a stick phase, with its derivatives: d w / d[u; v] and d w / d(law).
+struct StuckSlider {
+  double w = 0.0;
+  Eigen::RowVectorXd dw;
+  Eigen::RowVector4d dw_law = Eigen::RowVector4d::Zero();
+};
+
+// A piece of the period in one state, integrated after the march.
+struct Piece {
+  double a = 0.0, b = 0.0;
+  ContactState state = ContactState::stick;
+  int slider = -1;  // index into the march's stuck sliders (stick only)
+};
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// The basis and its derivative at the samples: a sweep evaluates thousands of motions of one H
+// and n, and most sample intervals hold no event.
+struct Grid {
+  int harmonics = -1, samples = -1;
+  RowMajor phi, dphi;  // (n + 1) x m at theta_k (k = n is 2 pi)
+
+  static const Grid& of(int harmonics, int samples) {
+    thread_local Grid grid;
+    if (grid.harmonics != harmonics || grid.samples != samples) {
+      const Eigen::Index m = harmonic_size(harmonics);
+      grid.phi.resize(samples + 1, m);
+      grid.dphi.resize(samples + 1, m);
+      Eigen::RowVectorXd phi, dphi;
+      for (int k = 0; k <= samples; ++k) {
+        basis_at(kTwoPi * k / samples, harmonics, phi, dphi);
+        grid.phi.row(k) = phi;
+        grid.dphi.row(k) = dphi;
+      }
+      grid.harmonics = harmonics;
+      grid.samples = samples;
+    }
+    return grid;
+  }
+  double theta(int k) const { return kTwoPi * k / samples; }
+};
+
+class EventMarch {
+ public:
+  EventMarch(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Grid& grid)
+      : p_(p),
+        u_(u),
+        v_(v),
+        harmonics_(harmonics_of(u.size())),
+        grid_(grid),
+        frictionless_(!(p.mu > 0.0)),
+        ddu_(u.size()),
+        ddv_(v.size()) {
+    // Coefficients of u'' and v'': -h^2 times those of u and v.
+    for (Eigen::Index i = 0; i < u.size(); ++i) {
+      const double h = static_cast<double>((i + 1) / 2);
+      ddu_[i] = -h * h * u[i];
+      ddv_[i] = -h * h * v[i];
+    }
+  }
+
+  Motion motion(double theta) {
+    basis_at(theta, harmonics_, phi_, dphi_);
+    return current(theta);
+  }
+  Motion sample(int k) {
+    phi_ = grid_.phi.row(k);
+    dphi_ = grid_.dphi.row(k);
+    return current(grid_.theta(k));
+  }
+  double normal_raw(const Motion& m) const { return p_.n0 + p_.kn * m.v; }
+
+  // The value whose sign change is the event, and whether `value` is past it.
+  double value(Event e, const Motion& m) const {
+    const double slip_rate = p_.mu * p_.kn * m.dv / p_.kt;
+    switch (e) {
+      case Event::slip_up:
+        return p_.kt * (m.u - stuck().w) - p_.mu * normal_raw(m);
+      case Event::slip_down:
+        return p_.kt * (m.u - stuck().w) + p_.mu * normal_raw(m);
+      case Event::stop_positive:
+        return m.du - slip_rate;
+      case Event::stop_negative:
+        return m.du + slip_rate;
+      case Event::open:
+      case Event::close:
+        return normal_raw(m);
+    }
+    return 0.0;
+  }
+  // The value's theta-derivative.
+  double rate(Event e, const Motion& m) const {
+    switch (e) {
+      case Event::slip_up:
+        return p_.kt * m.du - p_.mu * p_.kn * m.dv;
+      case Event::slip_down:
+        return p_.kt * m.du + p_.mu * p_.kn * m.dv;
+      case Event::stop_positive:
+        return m.ddu - p_.mu * p_.kn * m.ddv / p_.kt;
+      case Event::stop_negative:
+        return m.ddu + p_.mu * p_.kn * m.ddv / p_.kt;
+      case Event::open:
+      case Event::close:
+        return p_.kn * m.dv;
+    }
+    return 0.0;
+  }
+  // +1 where the event is a rise of its value through zero, -1 where it is a fall.
+  static double orientation(Event e) {
+    return e == Event::slip_up || e == Event::stop_negative || e == Event::close ? 1.0 : -1.0;
+  }
+  static bool past(Event e, double value) { return orientation(e) * value > 0.0; }
+
+  // The events that can end the current state (at most three).
+  struct Watched {
+    std::array<Event, 3> events;
+    int count = 0;
+  };
+  Watched watched() const {
+    switch (state_) {
+      case ContactState::stick:
+        return {{Event::slip_up, Event::slip_down, Event::open}, 3};
+      case ContactState::slip_positive:
+        return frictionless_ ? Watched{{Event::open}, 1} : Watched{{Event::stop_positive, Event::open}, 2};
+      case ContactState::slip_negative:
+        return frictionless_ ? Watched{{Event::open}, 1} : Watched{{Event::stop_negative, Event::open}, 2};
+      case ContactState::lift_off:
+        return {{Event::close}, 1};
+    }
+    return {};
+  }
+
+  // The first instant in (a, b] past the event; `a` is taken as before it. Bisection while the
+  // lower end's value is not clearly before the event (right after a transition it sits on that
+  // transition's root), then regula falsi.
+  double locate(Event e, double a, double b, double fb) {
+    double fa = value(e, motion(a));
+    const auto unclear = [&] { return past(e, fa) || std::abs(fa) <= 1e-12 * std::abs(fb); };
+    for (int i = 0; i < 60 && unclear() && b - a > 1e-15 * kTwoPi; ++i) {
+      const double mid = 0.5 * (a + b), fm = value(e, motion(mid));
+      (past(e, fm) ? b : a) = mid;
+      (past(e, fm) ? fb : fa) = fm;
+    }
+    if (unclear()) return b;
+    return illinois([&](double t) { return value(e, motion(t)); }, a, b, fa, fb);
+  }
+
+  // Where in (a, b) the value comes closest to the event, when it turns back inside the interval
+  // (its rate points towards the event at a and away at b); nullopt otherwise. A phase shorter
+  // than the interval starts and ends there.
+  std::optional<double> turning_point(Event e, double a, const Motion& begin, double b, const Motion& end) {
+    const double ra = orientation(e) * rate(e, begin), rb = orientation(e) * rate(e, end);
+    if (!(ra > 0.0 && rb < 0.0)) return std::nullopt;
+    return illinois([&](double t) { return orientation(e) * rate(e, motion(t)); }, a, b, ra, rb);
+  }
+
+  // Enters the state an event leads to, at the event's instant.
+  void apply(Event e, const Motion& m) {
+    switch (e) {
+      case Event::slip_up:
+        state_ = ContactState::slip_positive;
+        break;
+      case Event::slip_down:
+        state_ = ContactState::slip_negative;
+        break;
+      case Event::stop_positive:
+        stick_at_limit(m, 1.0);
+        break;
+      case Event::stop_negative:
+        stick_at_limit(m, -1.0);
+        break;
+      case Event::open:
+        state_ = ContactState::lift_off;
+        break;
+      case Event::close:
+        if (frictionless_) {
+          state_ = ContactState::slip_positive;
+        } else {
+          close_at(m);
+        }
+        break;
+    }
+  }
+
+  // The state at theta = 0 of the first period from a slider w: the step of jenkins_step.
+  void start(double w) {
+    const Motion m = sample(0);
+    const double n = normal_raw(m);
+    if (!(n > 0.0)) {
+      state_ = ContactState::lift_off;
+      return;
+    }
+    const double reach = p_.mu * n / p_.kt;
+    if (frictionless_) {
+      state_ = ContactState::slip_positive;
+    } else if (w < m.u - reach) {
+      if (past(Event::stop_positive, value(Event::stop_positive, m)))
+        stick_at_limit(m, 1.0);
+      else
+        state_ = ContactState::slip_positive;
+    } else if (w > m.u + reach) {
+      if (past(Event::stop_negative, value(Event::stop_negative, m)))
+        stick_at_limit(m, -1.0);
+      else
+        state_ = ContactState::slip_negative;
+    } else {
+      sliders_.push_back({w, Eigen::RowVectorXd::Zero(2 * u_.size()), Eigen::RowVector4d::Zero()});
+      state_ = ContactState::stick;
+    }
+  }
+
+  // The slider at an instant of the current state.
+  double slider(const Motion& m) const {
+    switch (state_) {
+      case ContactState::stick:
+        return stuck().w;
+      case ContactState::slip_positive:
+        return m.u - p_.mu * normal_raw(m) / p_.kt;
+      case ContactState::slip_negative:
+        return m.u + p_.mu * normal_raw(m) / p_.kt;
+      case ContactState::lift_off:
+        return m.u;
+    }
+    return 0.0;
+  }
+
+  // Marches sample interval k, splitting it at the events; appends its pieces.
+  void march_interval(int k, std::vector<Piece>& pieces) {
+    double a = grid_.theta(k);
+    const double b = grid_.theta(k + 1);
+    const Motion end = sample(k + 1);
+    Motion begin = sample(k);
+    for (int events = 0;; ++events) {
+      double first = b;
+      std::optional<Event> next;
+      if (events < 8)  // more in one interval is a grazing loop: the rest is marched in this state
+        for (const Watched w = watched(); Event e : std::span(w.events.data(), static_cast<size_t>(w.count))) {
+          double fb = value(e, end), until = b;
+          if (!past(e, fb)) {  // past and back within the interval?
+            const std::optional<double> turn = turning_point(e, a, begin, b, end);
+            if (!turn) continue;
+            fb = value(e, motion(*turn));
+            if (!past(e, fb)) continue;
+            until = *turn;
+          }
+          const double at = locate(e, a, until, fb);
+          if (at < first || !next) {
+            first = at;
+            next = e;
+          }
+        }
+      const int slider = state_ == ContactState::stick ? static_cast<int>(sliders_.size()) - 1 : -1;
+      if (!next) {
+        pieces.push_back({a, b, state_, slider});
+        return;
+      }
+      if (first > a) pieces.push_back({a, first, state_, slider});
+      begin = motion(first);
+      apply(*next, begin);
+      a = first;
+    }
+  }
+
+  ContactState state() const { return state_; }
+  const std::vector<StuckSlider>& sliders() const { return sliders_; }
+
+ private:
+  const StuckSlider& stuck() const { return sliders_.back(); }
+  Motion current(double theta) const {
+    return {theta,         phi_.dot(u_),  phi_.dot(v_),  dphi_.dot(u_),
+            dphi_.dot(v_), phi_.dot(ddu_), phi_.dot(ddv_)};
+  }
+
+  // Slip in direction `sign` stops: the slider stays where the Coulomb limit left it.
+  void stick_at_limit(const Motion& m, double sign) {
+    const Eigen::Index size = u_.size();
+    const double n = normal_raw(m);
+    StuckSlider s{m.u - sign * p_.mu * n / p_.kt, Eigen::RowVectorXd::Zero(2 * size), Eigen::RowVector4d::Zero()};
+    s.dw.head(size) = phi_;
+    s.dw.tail(size) = -sign * p_.mu * p_.kn / p_.kt * phi_;
+    s.dw_law[law_kn] = -sign * p_.mu * m.v / p_.kt;
+    s.dw_law[law_kt] = sign * p_.mu * n / (p_.kt * p_.kt);
+    s.dw_law[law_mu] = -sign * n / p_.kt;
+    s.dw_law[law_n0] = -sign * p_.mu / p_.kt;
+    sliders_.push_back(std::move(s));
+    state_ = ContactState::stick;
+  }
+
+  // The contact closes (N = 0 rising): it sticks with zero tangential force, w = u(theta_c).
+  void close_at(const Motion& m) {
+    const Eigen::Index size = u_.size();
+    StuckSlider s{m.u, Eigen::RowVectorXd::Zero(2 * size), Eigen::RowVector4d::Zero()};
+    s.dw.head(size) = phi_;
+    // theta_c moves with n0 + kn v(theta_c) = 0: d theta_c = -(kn dv + v dkn + dn0) / (kn v').
+    const double rate = p_.kn * m.dv;
+    if (std::abs(rate) > 0.0) {
+      s.dw.tail(size) = -m.du * p_.kn / rate * phi_;
+      s.dw_law[law_kn] = -m.du * m.v / rate;
+      s.dw_law[law_n0] = -m.du / rate;
+    }
+    sliders_.push_back(std::move(s));
+    state_ = ContactState::stick;
+  }
+
+  const JenkinsParameters& p_;
+  const Eigen::VectorXd& u_;
+  const Eigen::VectorXd& v_;
+  const int harmonics_;
+  const Grid& grid_;
+  const bool frictionless_;
+  ContactState state_ = ContactState::stick;
+  Eigen::VectorXd ddu_, ddv_;  // coefficients of u'' and v''
+  std::vector<StuckSlider> sliders_;
+  Eigen::RowVectorXd phi_, dphi_;  // the basis at the last motion() instant
+};
+
+// Antiderivatives at theta of the basis (m) and of the products of its functions (m x m),
+// unscaled: products of cosines and sines are sums of cos / sin (h +- g) theta, integrated exactly.
+void antiderivatives(double theta, int harmonics, Eigen::VectorXd& first, Eigen::MatrixXd& second) {
+  const int top = 2 * harmonics;
+  thread_local std::vector<double> c, s;
+  c.resize(static_cast<size_t>(top) + 1);
+  s.resize(static_cast<size_t>(top) + 1);
+  const double c1 = std::cos(theta), s1 = std::sin(theta);
+  c[0] = 1.0;
+  s[0] = 0.0;
+  for (int k = 1; k <= top; ++k) {
+    c[static_cast<size_t>(k)] = c[static_cast<size_t>(k) - 1] * c1 - s[static_cast<size_t>(k) - 1] * s1;
+    s[static_cast<size_t>(k)] = s[static_cast<size_t>(k) - 1] * c1 + c[static_cast<size_t>(k) - 1] * s1;
+  }
+  // int cos k = sin k / k (theta for k = 0), even in k; int sin k = -cos k / k (0 for k = 0), odd in k.
+  const auto int_cos = [&](int k) { return k == 0 ? theta : s[static_cast<size_t>(std::abs(k))] / std::abs(k); };
+  const auto int_sin = [&](int k) {
+    return k == 0 ? 0.0 : -c[static_cast<size_t>(std::abs(k))] / static_cast<double>(k);
+  };
+  const Eigen::Index m = 2 * harmonics + 1;
+  first.resize(m);
+  second.resize(m, m);
+  first[0] = second(0, 0) = theta;
+  for (int h = 1; h <= harmonics; ++h) {
+    first[2 * h - 1] = second(0, 2 * h - 1) = second(2 * h - 1, 0) = int_cos(h);
+    first[2 * h] = second(0, 2 * h) = second(2 * h, 0) = int_sin(h);
+    for (int g = 1; g <= harmonics; ++g) {
+      second(2 * h - 1, 2 * g - 1) = 0.5 * (int_cos(h - g) + int_cos(h + g));  // cos h cos g
+      second(2 * h, 2 * g) = 0.5 * (int_cos(h - g) - int_cos(h + g));          // sin h sin g
+      second(2 * h - 1, 2 * g) = second(2 * g, 2 * h - 1) = 0.5 * (int_sin(h + g) + int_sin(g - h));  // cos h sin g
+    }
+  }
+}
+
+// The coefficients of T and N and their derivatives from the pieces of one period. Within a piece
+// T and N are linear in the trigonometric polynomials u, v (stick: kt (u - w0), slip: +-mu N, N =
+// n0 + kn v), so each coefficient is a product with the basis's integral or its Gram matrix over
+// the piece, both in closed form: no quadrature error.
+void integrate(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+               const std::vector<Piece>& pieces, const std::vector<StuckSlider>& sliders, bool with_law,
+               AftResult& r) {
+  const Eigen::Index m = u.size();
+  const int harmonics = harmonics_of(m);
+  // c0 = (1 / 2 pi) int T, a_h = (1 / pi) int T cos h theta, b_h likewise with sin.
+  Eigen::VectorXd scale = Eigen::VectorXd::Constant(m, 1.0 / std::numbers::pi);
+  scale[0] *= 0.5;
+  r.tangential = Eigen::VectorXd::Zero(m);
+  r.normal = Eigen::VectorXd::Zero(m);
+  r.dtangential_du = Eigen::MatrixXd::Zero(m, m);
+  r.dtangential_dv = Eigen::MatrixXd::Zero(m, m);
+  r.dnormal_dv = Eigen::MatrixXd::Zero(m, m);
+  if (with_law) {
+    r.dtangential_dlaw = Eigen::MatrixXd::Zero(m, 4);
+    r.dnormal_dlaw = Eigen::MatrixXd::Zero(m, 4);
+  }
+  Eigen::VectorXd first_a, first_b, mean;
+  Eigen::MatrixXd second_a, second_b, gram;
+  size_t i = 0;
+  while (i < pieces.size()) {
+    // One run of pieces in one state (and one stuck slider).
+    size_t j = i + 1;
+    while (j < pieces.size() && pieces[j].state == pieces[i].state && pieces[j].slider == pieces[i].slider) ++j;
+    const ContactState state = pieces[i].state;
+    const double a = pieces[i].a, b = pieces[j - 1].b;
+    i = j;
+    if (state == ContactState::lift_off) continue;
+    antiderivatives(a, harmonics, first_a, second_a);
+    antiderivatives(b, harmonics, first_b, second_b);
+    mean = scale.cwiseProduct(first_b - first_a);           // (scaled) int phi
+    gram = scale.asDiagonal() * (second_b - second_a);      // (scaled) int phi phi^T
+    const Eigen::VectorXd normal = p.n0 * mean + p.kn * (gram * v);
+    r.normal += normal;
+    r.dnormal_dv += p.kn * gram;
+    if (with_law) {
+      r.dnormal_dlaw.col(law_kn) += gram * v;
+      r.dnormal_dlaw.col(law_n0) += mean;
+    }
+    if (state == ContactState::stick) {
+      const StuckSlider& s = sliders[static_cast<size_t>(pieces[j - 1].slider)];
+      const Eigen::VectorXd elongation = gram * u - s.w * mean;  // int phi (u - w0)
+      r.tangential += p.kt * elongation;
+      r.dtangential_du += p.kt * gram;
+      r.dtangential_du -= p.kt * mean * s.dw.head(m);
+      r.dtangential_dv -= p.kt * mean * s.dw.tail(m);
+      if (with_law) {
+        r.dtangential_dlaw -= p.kt * mean * s.dw_law;
+        r.dtangential_dlaw.col(law_kt) += elongation;
+      }
+    } else {
+      const double sign = state == ContactState::slip_positive ? 1.0 : -1.0;
+      r.tangential += sign * p.mu * normal;
+      r.dtangential_dv += sign * p.mu * p.kn * gram;
+      if (with_law) {
+        r.dtangential_dlaw.col(law_mu) += sign * normal;
+        r.dtangential_dlaw.col(law_kn) += sign * p.mu * (gram * v);
+        r.dtangential_dlaw.col(law_n0) += sign * p.mu * mean;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+AftResult aft_jenkins_events(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                             const AftOptions& options) {
+  const int n = options.samples;
+  const Grid& grid = Grid::of(harmonics_of(u.size()), n);
+  EventMarch march(p, u, v, grid);
+  AftResult r;
+  r.u.resize(n);
+  r.v.resize(n);
+  r.t.resize(n);
+  r.n.resize(n);
+  r.w.resize(n);
+  r.state.assign(static_cast<size_t>(n), ContactState::stick);
+  std::vector<Piece> pieces;
+  march.start(options.initial_slider);
+  double scale = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const Motion m = march.sample(k);
+    scale = std::max({scale, std::abs(m.u), p.mu * std::max(march.normal_raw(m), 0.0) / p.kt});
+  }
+  double slider = march.slider(march.sample(0));
+  for (int period = 1; period <= options.max_periods; ++period) {
+    const double start = slider;
+    pieces.clear();
+    for (int k = 0; k < n; ++k) {
+      const Motion m = march.sample(k);
+      r.u[k] = m.u;
+      r.v[k] = m.v;
+      r.state[static_cast<size_t>(k)] = march.state();
+      r.w[k] = march.slider(m);
+      r.n[k] = march.state() == ContactState::lift_off ? 0.0 : std::max(march.normal_raw(m), 0.0);
+      r.t[k] = march.state() == ContactState::lift_off ? 0.0 : p.kt * (m.u - r.w[k]);
+      march.march_interval(k, pieces);
+    }
+    slider = march.slider(march.sample(n));
+    r.periods = period;
+    r.closure_mismatch = std::abs(slider - start);
+    if (period >= 2 && r.closure_mismatch <= options.closure_tolerance * scale) {
+      r.closed = true;
+      break;
+    }
+  }
+  integrate(p, u, v, pieces, march.sliders(), options.law_derivatives, r);
+  return r;
+}
+
+}  // namespace bb::contact

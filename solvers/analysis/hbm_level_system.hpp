@@ -48,8 +48,12 @@ inline int point_h(const HbmLevel& level, size_t i) {
   return level.point_harmonics.empty() ? level.harmonics : level.point_harmonics[i];
 }
 
-// The first frequency's solution at H harmonics (Newton from the static pre-solve, else a
-// homotopy in the force).
+// The first frequency's solution of a level: direct Newton from `initial` (or the linear limits),
+// then a homotopy in the force, then (H > 1) the H = 1 solution lifted to H.
+hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
+                                double omega, const std::optional<Eigen::VectorXd>& initial);
+
+// The first frequency's solution at H harmonics (first_solution from the level's start).
 using FirstSolution = std::function<hbm::HbmSolution(int harmonics)>;
 // Progress of a sweep: (omega, point, iterations).
 using SweepReport = std::function<void(double, int, int)>;

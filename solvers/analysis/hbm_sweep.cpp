@@ -157,37 +157,6 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
   return peak;
 }
 
-// The first frequency's solution. Direct Newton from the static pre-solve (or the linear limits)
-// first; when that fails, a homotopy in the force: from 1/64 of it, each converged fraction the
-// start of the next, the increment halved on failure.
-hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
-                                double omega, const std::optional<Eigen::VectorXd>& initial) {
-  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, samples);
-  hbm::HbmSolution direct = hbm::solve_at_frequency(system, omega, initial);
-  if (direct.converged) return direct;
-  double done = 1.0 / 64, step = 1.0 / 64;
-  hbm::HbmSolution at =
-      hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics, samples), omega, initial);
-  int total = direct.iterations + at.iterations;
-  while (at.converged && done < 1.0 && step >= 1.0 / 4096) {
-    const double next = std::min(1.0, done + step);
-    hbm::HbmSolution trial =
-        hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics, samples), omega, at.x);
-    total += trial.iterations;
-    if (trial.converged) {
-      at = std::move(trial), done = next, step *= 2;
-    } else {
-      step /= 2;
-    }
-  }
-  if (at.converged && done == 1.0) {
-    at.iterations = total;
-    return at;
-  }
-  direct.failure += fmt::format("; force homotopy reached {:.4g} of the force", at.converged ? done : 0.0);
-  return direct;
-}
-
 // d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
 // value turns d/dp into d/d(log p). The damper's contacts come first in the model.
 std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec, const hbm::HbmModel& m) {

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 
+#include "analysis/hbm_analysis.hpp"
 #include "cases/case_parameter.hpp"
 #include "cases/parse_frf.hpp"
 
@@ -247,9 +249,15 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   s.force_levels = r.number_array("force_levels");
   if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level [N]");
   std::set<double> unique;
+  std::map<std::string, double> tables;  // each level writes its own table: no two may share a name
   for (double f : s.force_levels) {
     if (!(f > 0) || !std::isfinite(f)) r.fail("force_levels", "every level must be a positive force [N]");
     if (!unique.insert(f).second) r.fail("force_levels", fmt::format("level {} N is listed twice", f));
+    if (const auto [it, fresh] = tables.emplace(hbm_frf_table_name(f), f); !fresh)
+      r.fail("force_levels",
+             fmt::format("levels {:.17g} N and {:.17g} N would both write table '{}' (a level is named by its "
+                         "first 6 significant digits): make them differ there",
+                         it->second, f, it->first));
   }
   if (const toml::table* t = r.optional_table("ip_oop")) {
     TomlReader p(*t, r.path() + ".ip_oop", r.file());

@@ -255,7 +255,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     if (!unique.insert(f).second) r.fail("force_levels", fmt::format("level {} N is listed twice", f));
     if (const auto [it, fresh] = tables.emplace(hbm_frf_table_name(f), f); !fresh)
       r.fail("force_levels",
-             fmt::format("levels {:.17g} N and {:.17g} N would both write table '{}' (a level is named by its "
+             fmt::format("levels {} N and {} N would both write table '{}' (a level is named by its "
                          "first 6 significant digits): make them differ there",
                          it->second, f, it->first));
   }

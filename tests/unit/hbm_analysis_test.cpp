@@ -440,14 +440,15 @@ namespace {
 
 class HbmSolverFailure : public test::TempFolderTest {};
 
-// A sweep that cannot even start (one Newton iteration allowed, a strongly slipping first point)
-// must fail the run (exit 3, "solver_failed") with the reason, never pass with empty tables or NaN
-// peaks.
+// A sweep that cannot even start (a balance tolerance below rounding, one Newton iteration per
+// sweep point and ten for the first, a strongly slipping first point) must fail the run (exit 3,
+// "solver_failed") with the reason, never pass with empty tables or NaN peaks.
 TEST_F(HbmSolverFailure, ASweepWithNoSolutionFailsTheRunWithItsReason) {
   test::OscillatorCase c;
   c.levels = "[200.0]";
   c.range = "[150.0, 170.0]";
   c.analysis_extra = "max_iterations = 1\n";
+  c.tolerance = "1e-30";
   c.extra =
       "[[check]]\nname = \"peak\"\nresult = \"peaks\"\nreference_result = \"peaks\"\nkey = \"level\"\n"
       "compare = { peak_hz = \"peak_hz\" }\nrel_tol = 1e-9\n";

@@ -292,12 +292,11 @@ class EventMarch {
     return 0.0;
   }
 
-  // Marches sample interval k, splitting it at the events; appends its pieces.
-  void march_interval(int k, std::vector<Piece>& pieces) {
+  // Marches sample interval k from the motion at its start to the motion at its end, splitting it
+  // at the events; appends its pieces.
+  void march_interval(int k, Motion begin, const Motion& end, std::vector<Piece>& pieces) {
     double a = grid_.theta(k);
     const double b = grid_.theta(k + 1);
-    const Motion end = sample(k + 1);
-    Motion begin = sample(k);
     for (int events = 0;; ++events) {
       double first = b;
       std::optional<Event> next;
@@ -508,17 +507,19 @@ AftResult aft_jenkins_events(const JenkinsParameters& p, const Eigen::VectorXd& 
   for (int period = 1; period <= options.max_periods; ++period) {
     const double start = slider;
     pieces.clear();
+    Motion m = march.sample(0);
     for (int k = 0; k < n; ++k) {
-      const Motion m = march.sample(k);
+      const Motion next = march.sample(k + 1);
       r.u[k] = m.u;
       r.v[k] = m.v;
       r.state[static_cast<size_t>(k)] = march.state();
       r.w[k] = march.slider(m);
       r.n[k] = march.state() == ContactState::lift_off ? 0.0 : std::max(march.normal_raw(m), 0.0);
       r.t[k] = march.state() == ContactState::lift_off ? 0.0 : p.kt * (m.u - r.w[k]);
-      march.march_interval(k, pieces);
+      march.march_interval(k, m, next, pieces);
+      m = next;
     }
-    slider = march.slider(march.sample(n));
+    slider = march.slider(m);  // m is the motion at 2 pi
     r.periods = period;
     r.closure_mismatch = std::abs(slider - start);
     if (period >= 2 && r.closure_mismatch <= options.closure_tolerance * scale) {

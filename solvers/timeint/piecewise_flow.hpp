@@ -1,0 +1,104 @@
+// The exact flow of the friction system (hbm/friction_system.hpp) under a harmonic load, between and
+// across its contact transitions. Units: SI; time as the phase theta = omega t.
+//
+// Between transitions every contact force is affine in q and the sliders w: stick T = kt (u - w),
+// slip T = +-mu N, lift-off T = N = 0, N = N0 + kn v. With p = dq/dtheta the state z = (q, p, w, 1,
+// cos theta, sin theta) obeys the linear system z' = A_m z of the contact modes m (the load is carried
+// by the last three states), so z(theta + tau) = exp(A_m tau) z(theta) to rounding: no time-step
+// error. A transition is a zero of a function linear in z (stick -> slip: |kt (u - w)| = mu N;
+// slip -> stick: the slider's rate changes sign; lift-off and closing: N = 0), located by root finding
+// on that exact motion inside pieces of at most `step` and at most 1 rad of the fastest motion of the
+// modes (the eigenvalues of A_m: a stiff stuck contact rings), from a sign change at their ends or a
+// turning point of the function between them.
+//
+// The sensitivity dz/dz0 (the monodromy matrix at the end of a period) is the product of the
+// exponentials, with the sliders of contacts not stuck tied to q (they follow u) and one saltation
+// term: a contact that closes sticks at the u it closes at, which moves with the closing phase. All
+// other transitions keep the forces continuous, so they need none (a slip -> stick transition happens
+// where the slider's rate is zero).
+#pragma once
+#include <Eigen/Dense>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "hbm/friction_system.hpp"
+#include "timeint/contact_step.hpp"
+
+namespace bb::timeint {
+
+// The state (q, p = dq/dtheta, sliders) at a phase, with each contact's mode.
+struct FlowState {
+  double theta = 0.0;
+  Eigen::VectorXd q, p, w;
+  std::vector<contact::ContactState> modes;
+};
+
+class PiecewiseFlow {
+ public:
+  // `model` validated (hbm::validate_model) with an invertible mass; omega > 0 [rad/s].
+  // Throws std::invalid_argument when M is singular. `step` [rad]: the sub-interval whose
+  // exponentials are cached per combination of modes.
+  PiecewiseFlow(const hbm::HbmModel& model, double omega_rad_s, double step);
+
+  Eigen::Index dofs() const { return n_; }
+  Eigen::Index contacts() const { return nc_; }
+  Eigen::Index state_size() const { return 2 * n_ + nc_; }  // (q, p, w)
+  double omega() const { return omega_; }
+
+  // The modes a state is in: lift-off where N <= 0, slip where |kt (u - w)| exceeds mu N (or sits on
+  // it with the slider moving outwards), else stick; the sliders of contacts not stuck are set to
+  // their value in that mode (w = u -+ mu N / kt, or u when open).
+  void settle(FlowState& s) const;
+
+  // d(q, p, w)/d(q, p, w) at a settled state: the identity, the rows of sliders not stuck tied to q.
+  Eigen::MatrixXd start_jacobian(const FlowState& settled) const;
+
+  // Advances a settled `s` to phase theta_end, locating every transition, and, when `jacobian` is
+  // not null, carries d(q, p, w)/d(start) along (state_size() rows). With `extremes` (one entry per
+  // `watch` DOF), each entry becomes the largest of itself and |q_d| over the interval, the extremes
+  // of q_d located where dq_d/dtheta changes sign. A failure (more than max_events transitions,
+  // counted in `events` across calls) leaves the state where it stopped.
+  struct Advance {
+    int events = 0;
+    std::vector<char> switched;  // per contact: some transition passed
+    std::string failure;
+  };
+  void advance(FlowState& s, double theta_end, Eigen::MatrixXd* jacobian, int max_events, Advance& log,
+               const std::vector<Eigen::Index>& watch = {}, Eigen::VectorXd* extremes = nullptr) const;
+
+  // Contact k's kinematics and forces in state s (the conventions of timeint/contact_step.hpp).
+  ContactSample sample(const FlowState& s, Eigen::Index k) const;
+
+ private:
+  const Eigen::MatrixXd& generator(const std::vector<contact::ContactState>& modes) const;  // A_m, cached
+  Eigen::VectorXd pack(const FlowState& s) const;
+  void unpack(const Eigen::VectorXd& z, FlowState& s) const;
+  // Event function i of contact k in mode m as a row over z (> 0: the transition has happened).
+  struct Event {
+    Eigen::Index contact;
+    contact::ContactState next;
+    Eigen::RowVectorXd row;
+  };
+  std::vector<Event> events(const std::vector<contact::ContactState>& modes) const;
+  void tie_sliders(FlowState& s, Eigen::MatrixXd* jacobian) const;
+  void extremes_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z0, const Eigen::VectorXd& z1, double tau,
+                         const std::vector<Eigen::Index>& watch, Eigen::VectorXd& extremes) const;
+  double algebraic_slider(const FlowState& s, Eigen::Index k, contact::ContactState m) const;
+  Eigen::RowVectorXd slider_row(Eigen::Index k, contact::ContactState m) const;  // d w_k / dq in mode m
+
+  hbm::HbmModel model_;
+  double omega_, step_;
+  Eigen::Index n_, nc_, size_;  // DOFs, contacts, augmented size 2n + nc + 3
+  Eigen::MatrixXd mass_inverse_;
+  struct Generator {
+    Eigen::MatrixXd a;
+    double piece = 0.0;  // the longest piece searched for transitions at once [rad]
+    Eigen::MatrixXd piece_exponential;  // exp(a piece)
+  };
+  const Generator& mode_data(const std::vector<contact::ContactState>& modes) const;
+  mutable std::map<std::vector<contact::ContactState>, Generator> generators_;
+};
+
+}  // namespace bb::timeint

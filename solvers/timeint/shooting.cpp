@@ -1,0 +1,226 @@
+#include "timeint/shooting.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace bb::timeint {
+
+using contact::ContactState;
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+void validate(const hbm::HbmModel& model, double omega, const ShootingOptions& o) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("shooting: " + what); };
+  if (!(std::isfinite(omega) && omega > 0.0)) fail(fmt::format("omega must be finite and > 0 (got {})", omega));
+  if (o.dofs.empty()) fail("at least one DOF to report");
+  for (const Index d : o.dofs)
+    if (d < 0 || d >= model.mass.rows()) fail(fmt::format("DOF {} is not in [0, {})", d, model.mass.rows()));
+  if (o.harmonics < 0 || o.steps_per_period < 2 * (o.harmonics + 1))
+    fail("harmonics >= 0 and steps_per_period >= 2 (harmonics + 1)");
+  if (!(o.tolerance > 0.0) || o.max_iterations < 1 || o.warmup_periods < 0 || o.max_events < 1)
+    fail("tolerance > 0, max_iterations >= 1, warmup_periods >= 0 and max_events >= 1");
+}
+
+VectorXd stack(const FlowState& s) {
+  VectorXd x(s.q.size() + s.p.size() + s.w.size());
+  x << s.q, s.p, s.w;
+  return x;
+}
+
+FlowState unstack(const PiecewiseFlow& flow, const VectorXd& x) {
+  const Index n = flow.dofs();
+  FlowState s;
+  s.q = x.head(n);
+  s.p = x.segment(n, n);
+  s.w = x.tail(flow.contacts());
+  flow.settle(s);
+  return s;
+}
+
+// One period from x: the end state, the monodromy (when asked) and which sliders never moved.
+struct Period {
+  FlowState end;
+  MatrixXd monodromy;
+  std::vector<char> free_slider;  // stuck over the whole period
+  int transitions = 0;
+  std::string failure;
+};
+
+Period one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int max_events, bool jacobian) {
+  Period out;
+  out.end = unstack(flow, x);
+  const std::vector<ContactState> modes0 = out.end.modes;
+  if (jacobian) out.monodromy = flow.start_jacobian(out.end);
+  PiecewiseFlow::Advance log;
+  for (int k = 1; k <= steps && log.failure.empty(); ++k)
+    flow.advance(out.end, kTwoPi * k / steps, jacobian ? &out.monodromy : nullptr, max_events, log);
+  out.transitions = log.events;
+  out.failure = log.failure;
+  out.free_slider.resize(modes0.size());
+  for (size_t c = 0; c < modes0.size(); ++c)
+    out.free_slider[c] = modes0[c] == ContactState::stick && (log.switched.empty() || !log.switched[c]);
+  return out;
+}
+
+double scale_of(const PiecewiseFlow& flow, const VectorXd& x) {
+  return x.head(2 * flow.dofs()).cwiseAbs().maxCoeff();
+}
+
+// R = x(2 pi) - x(0), free sliders held.
+VectorXd residual(const PiecewiseFlow& flow, const Period& p, const VectorXd& x) {
+  VectorXd r = stack(p.end) - x;
+  for (size_t c = 0; c < p.free_slider.size(); ++c)
+    if (p.free_slider[c]) r[2 * flow.dofs() + static_cast<Index>(c)] = 0.0;
+  return r;
+}
+
+// The start: the static state, then periods marched until they nearly repeat.
+VectorXd warm_start(const hbm::HbmModel& model, const PiecewiseFlow& flow, const ShootingOptions& o, int& periods,
+                    std::string& failure) {
+  const StaticState st = static_initial_state(model, o.initial);
+  VectorXd x = VectorXd::Zero(flow.state_size());
+  if (st.converged) {
+    x.head(flow.dofs()) = st.q;
+    for (size_t c = 0; c < st.sliders.size(); ++c) x[2 * flow.dofs() + static_cast<Index>(c)] = st.sliders[c];
+  }
+  for (int k = 0; k < o.warmup_periods; ++k) {
+    const Period p = one_period(flow, x, o.steps_per_period, o.max_events, false);
+    ++periods;
+    if (!p.failure.empty()) {
+      failure = p.failure;
+      return x;
+    }
+    const VectorXd next = stack(p.end);
+    const double change = (next - x).head(2 * flow.dofs()).cwiseAbs().maxCoeff();
+    x = next;
+    if (change <= 1e-3 * scale_of(flow, x)) break;
+  }
+  return x;
+}
+
+// The recorded period: samples at the sub-interval ends, located extremes, harmonics.
+void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions& o, ShootingResult& out) {
+  const int n_t = o.steps_per_period;
+  const auto nd = static_cast<Index>(o.dofs.size());
+  FlowState s = unstack(flow, x);
+  out.start = s;
+  out.largest = VectorXd::Zero(nd);
+  MatrixXd samples(n_t, nd);
+  out.steady.contacts.assign(static_cast<size_t>(flow.contacts()), {});
+  PiecewiseFlow::Advance log;
+  for (int k = 0; k <= n_t; ++k) {
+    if (k > 0) flow.advance(s, kTwoPi * k / n_t, nullptr, o.max_events, log, o.dofs, &out.largest);
+    if (k < n_t)
+      for (Index j = 0; j < nd; ++j) samples(k, j) = s.q[o.dofs[static_cast<size_t>(j)]];
+    for (Index c = 0; c < flow.contacts(); ++c) out.steady.contacts[static_cast<size_t>(c)].push_back(flow.sample(s, c));
+  }
+  const int h_max = o.harmonics;
+  SteadyState& st = out.steady;
+  st.coefficients = MatrixXd::Zero(nd, 2 * h_max + 1);
+  for (int k = 0; k < n_t; ++k) {
+    const double theta = kTwoPi * k / n_t;
+    for (Index j = 0; j < nd; ++j) {
+      st.coefficients(j, 0) += samples(k, j) / n_t;
+      for (int h = 1; h <= h_max; ++h) {
+        st.coefficients(j, 2 * h - 1) += 2.0 * samples(k, j) * std::cos(h * theta) / n_t;
+        st.coefficients(j, 2 * h) += 2.0 * samples(k, j) * std::sin(h * theta) / n_t;
+      }
+    }
+  }
+  st.amplitude = MatrixXd::Zero(nd, h_max + 1);
+  st.phase = MatrixXd::Zero(nd, h_max + 1);
+  for (Index j = 0; j < nd; ++j) {
+    st.amplitude(j, 0) = std::abs(st.coefficients(j, 0));
+    for (int h = 1; h <= h_max; ++h) {
+      const double a = st.coefficients(j, 2 * h - 1), b = st.coefficients(j, 2 * h);
+      st.amplitude(j, h) = std::hypot(a, b);
+      st.phase(j, h) = std::atan2(-b, a);
+    }
+  }
+}
+
+void floquet(const PiecewiseFlow& flow, const Period& p, ShootingResult& out) {
+  std::vector<Index> kept;
+  for (Index i = 0; i < flow.state_size(); ++i)
+    if (i < 2 * flow.dofs() || !p.free_slider[static_cast<size_t>(i - 2 * flow.dofs())]) kept.push_back(i);
+  const MatrixXd m = p.monodromy(kept, kept);
+  out.multipliers = Eigen::EigenSolver<MatrixXd>(m, false).eigenvalues();
+  std::sort(out.multipliers.begin(), out.multipliers.end(),
+            [](const auto& a, const auto& b) { return std::abs(a) > std::abs(b); });
+  out.largest_multiplier = out.multipliers.size() > 0 ? std::abs(out.multipliers[0]) : 0.0;
+  out.stable = out.largest_multiplier < 1.0;
+}
+
+}  // namespace
+
+ShootingResult shooting(const hbm::HbmModel& input, double omega, const ShootingOptions& o,
+                        const std::optional<FlowState>& start) {
+  hbm::HbmModel model = input;
+  hbm::validate_model(model, "shooting");
+  validate(model, omega, o);
+  const PiecewiseFlow flow(model, omega, kTwoPi / o.steps_per_period);
+  ShootingResult out;
+  out.steady.omega = omega;
+  out.largest_multiplier = std::numeric_limits<double>::quiet_NaN();
+  int& periods = out.steady.cycles;
+  VectorXd x = start ? stack(*start) : warm_start(model, flow, o, periods, out.steady.failure);
+  if (!out.steady.failure.empty()) return out;
+  const auto fail = [&](const std::string& why) {
+    out.steady.failure = fmt::format("shooting at omega = {:.9g} rad/s: {} after {} Newton iterations, |R| = {:.3e} m",
+                                     omega, why, out.steady.total_iterations, out.residual);
+  };
+  Period p = one_period(flow, x, o.steps_per_period, o.max_events, true);
+  ++periods;
+  VectorXd r = residual(flow, p, x);
+  out.residual = r.cwiseAbs().maxCoeff();
+  while (true) {
+    if (!p.failure.empty()) return fail(p.failure), out;
+    if (out.residual <= o.tolerance * scale_of(flow, x)) break;
+    if (out.steady.total_iterations >= o.max_iterations) return fail("no convergence"), out;
+    ++out.steady.total_iterations;
+    MatrixXd g = p.monodromy - MatrixXd::Identity(x.size(), x.size());
+    for (size_t c = 0; c < p.free_slider.size(); ++c)
+      if (p.free_slider[c]) {
+        const Index row = 2 * flow.dofs() + static_cast<Index>(c);
+        g.row(row).setZero();
+        g(row, row) = 1.0;
+      }
+    const VectorXd dx = g.colPivHouseholderQr().solve(-r);
+    if (!dx.allFinite()) return fail("singular monodromy - I"), out;
+    // At the rounding floor |R| stops falling; a correction below the tolerance ends the iteration.
+    if (dx.head(2 * flow.dofs()).cwiseAbs().maxCoeff() <= o.tolerance * scale_of(flow, x)) {
+      x += dx;
+      break;
+    }
+    bool accepted = false;
+    for (double lambda = 1.0; lambda > 1e-4 && !accepted; lambda *= 0.5) {
+      const VectorXd trial = x + lambda * dx;
+      Period q = one_period(flow, trial, o.steps_per_period, o.max_events, true);
+      ++periods;
+      const VectorXd rq = residual(flow, q, trial);
+      const double norm = rq.cwiseAbs().maxCoeff();
+      if (q.failure.empty() && norm < (1.0 - 1e-4 * lambda) * out.residual) {
+        x = trial, p = std::move(q), r = rq, out.residual = norm, accepted = true;
+      }
+    }
+    if (!accepted) return fail("line search failed"), out;
+  }
+  out.steady.converged = true;
+  out.transitions = p.transitions;
+  if (o.floquet) floquet(flow, p, out);
+  record(flow, x, o, out);
+  ++periods;
+  return out;
+}
+
+}  // namespace bb::timeint

@@ -1,0 +1,160 @@
+// Shooting on the exact piecewise-linear flow (timeint/shooting.hpp): Den Hartog's closed form, the
+// linear limits, the monodromy against differences of the period map, Floquet multipliers of a
+// damped oscillator.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "friction_oscillator.hpp"
+#include "timeint/piecewise_flow.hpp"
+#include "timeint/shooting.hpp"
+
+namespace bb {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+constexpr double kPi = std::numbers::pi;
+
+// Den Hartog's largest displacement of the non-stop motion (references/verification/coulomb_den_hartog.py).
+double den_hartog(double m, double k, double slip_force, double force, double omega) {
+  const double r = omega / std::sqrt(k / m);
+  const double t = std::tan(kPi / (2 * r)) / r;
+  return force / k * std::sqrt(1 / std::pow(1 - r * r, 2) - std::pow(slip_force / force * t, 2));
+}
+
+test::FrictionOscillator coulomb(double slip_force, double kt) {
+  test::FrictionOscillator o{.mass = 1.0, .damping = 0.0, .stiffness = 1e6, .force = 10.0, .contact = {}};
+  o.contact = {.kn = 1e12, .kt = kt, .mu = slip_force / 10.0, .n0 = 10.0};
+  return o;
+}
+
+timeint::ShootingOptions options() {
+  timeint::ShootingOptions o;
+  o.dofs = {0};
+  o.floquet = true;
+  return o;
+}
+
+// The Jenkins element tends to Coulomb's law as kt grows, but not as 1 / kt: where the mass reverses,
+// it sticks on the spring kt with its acceleration u'' unbalanced, rings, and leaves the stick with a
+// velocity near sqrt(4 mu N u'' / kt) (a stiff spring on a mass), so the largest displacement differs
+// from Den Hartog's by about kt^-1/2 (measured at F/P = 0.5, 400 Hz: 4.3e-2 at kt = 1e10, 4.3e-3 at 1e12 = 1e6 k, 4.3e-4 at 1e14;
+// beyond, kt times the rounding of u - w puts Newton's floor near 1e-9 of the amplitude).
+TEST(Shooting, TendsToDenHartogsClosedFormAsTheContactStiffens) {
+  for (const double slip_force : {1.0, 3.0, 5.0})
+    for (const double hz : {200.0, 300.0, 400.0}) {
+      double error[3] = {};
+      for (int i = 0; i < 3; ++i) {
+        const double kt = std::pow(10.0, 10 + 2 * i);
+        const test::FrictionOscillator o = coulomb(slip_force, kt);
+        const double omega = 2 * kPi * hz;
+        const timeint::ShootingResult s = timeint::shooting(o.model(), omega, options());
+        ASSERT_TRUE(s.steady.converged) << s.steady.failure;
+        error[i] = std::abs(s.largest[0] / den_hartog(o.mass, o.stiffness, slip_force, o.force, omega) - 1.0);
+        EXPECT_LT(s.residual, 1e-8 * s.largest[0]);  // the Newton correction met 1e-9
+      }
+      EXPECT_LT(error[2], 5e-4) << slip_force << " N at " << hz << " Hz";
+      EXPECT_GT(error[0] / error[1], 5.0);
+      EXPECT_GT(error[1] / error[2], 5.0);
+    }
+}
+
+TEST(Shooting, StuckContactIsTheLinearSpringExactly) {
+  test::FrictionOscillator o{.mass = 2.0, .damping = 30.0, .stiffness = 1e6, .force = 1.0, .contact = {}};
+  o.contact = {.kn = 1e8, .kt = 4e5, .mu = 1.0, .n0 = 1e3};  // mu N far above any spring force
+  for (const double hz : {50.0, 130.0, 300.0}) {
+    const double omega = 2 * kPi * hz;
+    const timeint::ShootingResult s = timeint::shooting(o.model(), omega, options());
+    ASSERT_TRUE(s.steady.converged) << s.steady.failure;
+    const std::complex<double> d(o.stiffness + o.contact.kt - o.mass * omega * omega, omega * o.damping);
+    EXPECT_NEAR(s.steady.amplitude(0, 1) / (o.force / std::abs(d)), 1.0, 1e-9);
+    EXPECT_NEAR(s.largest[0] / (o.force / std::abs(d)), 1.0, 1e-9);
+    EXPECT_EQ(s.transitions, 0);
+    // The slider is free (neutral): left out; what remains are the two multipliers exp(lambda T).
+    ASSERT_EQ(s.multipliers.size(), 2);
+    const double zeta_wn = o.damping / (2 * o.mass);
+    EXPECT_NEAR(std::abs(s.multipliers[0]), std::exp(-zeta_wn * 2 * kPi / omega), 1e-10);
+    EXPECT_TRUE(s.stable);
+  }
+}
+
+TEST(Shooting, FrictionlessContactIsTheBareOscillator) {
+  test::FrictionOscillator o{.mass = 1.0, .damping = 20.0, .stiffness = 1e6, .force = 5.0, .contact = {}};
+  o.contact = {.kn = 1e8, .kt = 1e9, .mu = 0.0, .n0 = 10.0};
+  const double omega = 2 * kPi * 170.0;
+  const timeint::ShootingResult s = timeint::shooting(o.model(), omega, options());
+  ASSERT_TRUE(s.steady.converged) << s.steady.failure;
+  const std::complex<double> d(o.stiffness - o.mass * omega * omega, omega * o.damping);
+  EXPECT_NEAR(s.steady.amplitude(0, 1) / (o.force / std::abs(d)), 1.0, 1e-9);
+}
+
+// Two masses, a contact between them whose normal load follows their relative motion (it opens
+// and closes every period), so every kind of transition occurs.
+hbm::HbmModel lift_off_pair() {
+  hbm::HbmModel m;
+  m.mass = MatrixXd::Identity(2, 2);
+  m.damping = 5.0 * MatrixXd::Identity(2, 2);
+  m.stiffness = (MatrixXd(2, 2) << 2e6, -1e5, -1e5, 1e6).finished();
+  hbm::ContactElement c;
+  c.law = {.kn = 5e5, .kt = 2e6, .mu = 0.4, .n0 = 3.0};
+  c.tangential = (Eigen::RowVectorXd(2) << 1.0, -1.0).finished();
+  c.normal = (Eigen::RowVectorXd(2) << 0.6, 0.3).finished();
+  m.contacts.push_back(c);
+  m.harmonic_load = (Eigen::VectorXcd(2) << std::complex<double>(20.0, 0.0), std::complex<double>(0.0, 8.0)).finished();
+  return m;
+}
+
+TEST(Shooting, MonodromyEqualsDifferencesOfThePeriodMap) {
+  hbm::HbmModel m = lift_off_pair();
+  hbm::validate_model(m, "test");
+  const double omega = 2 * kPi * 180.0;
+  timeint::ShootingOptions o = options();
+  const timeint::ShootingResult s = timeint::shooting(m, omega, o);
+  ASSERT_TRUE(s.steady.converged) << s.steady.failure;
+  bool opened = false, slipped = false;
+  for (const timeint::ContactSample& c : s.steady.contacts[0]) {
+    opened |= c.state == contact::ContactState::lift_off;
+    slipped |= c.state == contact::ContactState::slip_positive || c.state == contact::ContactState::slip_negative;
+  }
+  ASSERT_TRUE(opened && slipped) << "the test needs lift-off and slip";
+  const timeint::PiecewiseFlow flow(m, omega, 2 * kPi / o.steps_per_period);
+  const auto period = [&](VectorXd x, MatrixXd* j) {
+    timeint::FlowState st;
+    st.q = x.head(2), st.p = x.segment(2, 2), st.w = x.tail(1);
+    flow.settle(st);
+    if (j) *j = flow.start_jacobian(st);
+    timeint::PiecewiseFlow::Advance log;
+    for (int k = 1; k <= o.steps_per_period; ++k) flow.advance(st, 2 * kPi * k / o.steps_per_period, j, 1000, log);
+    VectorXd out(5);
+    out << st.q, st.p, st.w;
+    return out;
+  };
+  VectorXd x(5);
+  x << s.start.q, s.start.p, s.start.w;
+  MatrixXd j;
+  period(x, &j);
+  for (int c = 0; c < 5; ++c) {
+    const double h = 1e-7 * x.head(4).cwiseAbs().maxCoeff();
+    VectorXd xp = x, xm = x;
+    xp[c] += h, xm[c] -= h;
+    const VectorXd fd = (period(xp, nullptr) - period(xm, nullptr)) / (2 * h);
+    EXPECT_LT((fd - j.col(c)).norm(), 1e-5 * std::max(1.0, j.col(c).norm())) << "column " << c;
+  }
+}
+
+TEST(Shooting, FailsWithItsResidualWhenNewtonIsCutShort) {
+  const test::FrictionOscillator o = coulomb(3.0, 1e12);
+  timeint::ShootingOptions opt = options();
+  opt.max_iterations = 1;
+  opt.tolerance = 1e-300;
+  const timeint::ShootingResult s = timeint::shooting(o.model(), 2 * kPi * 250.0, opt);
+  EXPECT_FALSE(s.steady.converged);
+  EXPECT_NE(s.steady.failure.find("|R| ="), std::string::npos) << s.steady.failure;
+  EXPECT_NE(s.steady.failure.find("1 Newton iterations"), std::string::npos) << s.steady.failure;
+}
+
+}  // namespace
+}  // namespace bb

@@ -14,6 +14,7 @@
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
+#include "analysis/time_sweeps.hpp"
 #include "timeint/newmark.hpp"
 
 namespace bb {
@@ -33,25 +34,6 @@ double loop_work(const std::vector<timeint::ContactSample>& s) {
   return w;
 }
 
-// The DOFs the steady states track: the responses, then the IP/OOP pair where not among them
-// (`pair`: their positions in `dofs`).
-struct TrackedDofs {
-  std::vector<Index> dofs;
-  std::optional<std::pair<Index, Index>> pair;
-};
-
-TrackedDofs tracked_dofs(const PreparedHbm& p) {
-  TrackedDofs t{p.responses, std::nullopt};
-  auto slot = [&](Index dof) {
-    const auto it = std::find(t.dofs.begin(), t.dofs.end(), dof);
-    if (it != t.dofs.end()) return static_cast<Index>(it - t.dofs.begin());
-    t.dofs.push_back(dof);
-    return static_cast<Index>(t.dofs.size() - 1);
-  };
-  if (p.ip_oop) t.pair.emplace(slot(p.ip_oop->first), slot(p.ip_oop->second));
-  return t;
-}
-
 // The stepped sine of one force level: the steady state at each grid frequency, each starting from
 // the previous one's final state.
 void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const hbm::HbmModel& m,
@@ -60,7 +42,6 @@ void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, 
   const auto nf = static_cast<Index>(frequencies.size());
   const auto nr = static_cast<Index>(p.responses.size());
   const std::vector<Index>& dofs = tracked.dofs;
-  const auto& pair = tracked.pair;
   const double force = level.force;
   std::optional<timeint::DynamicState> start;
   for (Index i = 0; i < nf; ++i) {
@@ -71,16 +52,10 @@ void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, 
     level.steps += static_cast<long>(s.cycles) * spec.steps_per_period;
     level.newton_iterations += s.total_iterations;
     level.max_step_iterations = std::max(level.max_step_iterations, s.max_iterations);
-    if (s.coefficients.rows() == static_cast<Index>(dofs.size()) && s.coefficients.allFinite()) {
-      Eigen::VectorXcd z(static_cast<Index>(dofs.size()));
-      for (Index j = 0; j < z.size(); ++j) z[j] = std::complex<double>(s.coefficients(j, 1), -s.coefficients(j, 2));
-      for (Index r = 0; r < nr; ++r) level.amplitude(i, r) = std::abs(z[r]);
-      if (pair) {
-        level.components(i, 0) = std::abs(z[pair->first] + z[pair->second]) / 2;
-        level.components(i, 1) = std::abs(z[pair->second] - z[pair->first]) / 2;
-      }
+    level.failure.push_back(s.failure);
+    if (s.coefficients.rows() == static_cast<Index>(dofs.size()) &&
+        store_first_harmonics(level, i, s.coefficients, tracked, nr))
       start = s.final_state;  // the next frequency starts from here (also when not yet steady)
-    }
     if (progress && i % 5 == 0)
       progress(fmt::format("Fe = {:g} N: {:.3f} Hz, {} cycles{}", force, frequencies[static_cast<size_t>(i)], s.cycles,
                            s.converged ? "" : " (not steady)"));
@@ -120,7 +95,10 @@ TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint:
   if (tracked.pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
   hbm::HbmModel m = p.model;
   m.harmonic_load *= force;
-  stepped_sine(level, p, spec, m, options, tracked, progress);
+  if (spec.method == TimeSpec::Method::shooting)
+    periodic_sweep(level, spec, m, tracked, nr, progress);
+  else
+    stepped_sine(level, p, spec, m, options, tracked, progress);
   linear_on_grid(level, p, m, tracked.pair.has_value());
   if (spec.compare_harmonics > 0) {
     HbmSpec h = spec.system;
@@ -168,6 +146,14 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
   for (const std::string& r : p.response_names) frf_cols.push_back(r + "_amp_m");
   if (pair) frf_cols.insert(frf_cols.end(), {"ip_component_m", "oop_component_m"});
   frf_cols.insert(frf_cols.end(), {"cycles", "steady"});
+  const bool shooting = spec.method == TimeSpec::Method::shooting;
+  std::vector<std::string> periodic_cols;  // shooting: also in one table per level, keyed 1..frequencies
+  if (shooting) {
+    for (const std::string& r : p.response_names) periodic_cols.push_back(r + "_max_m");
+    periodic_cols.insert(periodic_cols.end(), {"residual_m", "transitions"});
+    if (spec.floquet) periodic_cols.insert(periodic_cols.end(), {"floquet_max", "stable"});
+    frf_cols.insert(frf_cols.end(), periodic_cols.begin(), periodic_cols.end());
+  }
   const bool compare = spec.compare_harmonics > 0;
   for (const std::string& r : p.response_names) frf_cols.push_back("linear_" + r + "_amp_m");
   if (compare)
@@ -183,6 +169,7 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
           if (std::abs(level.hbm->frequency_hz[k] - frequencies[static_cast<size_t>(i)]) <
               1e-9 * frequencies[static_cast<size_t>(i)])
             hbm_amp[static_cast<size_t>(i)] = level.hbm->amplitude.row(static_cast<Index>(k)).transpose();
+    std::vector<std::vector<double>> level_rows;
     for (Index i = 0; i < nf; ++i) {
       std::vector<double> row = {static_cast<double>((l + 1) * 100000 + static_cast<size_t>(i) + 1), level.force,
                                  frequencies[static_cast<size_t>(i)]};
@@ -190,10 +177,32 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
       if (pair) row.insert(row.end(), {level.components(i, 0), level.components(i, 1)});
       row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]),
                              level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
+      std::vector<double> periodic;
+      if (shooting) {
+        const auto f = static_cast<size_t>(i);
+        for (Index r = 0; r < nr; ++r) periodic.push_back(level.largest(i, r));
+        periodic.insert(periodic.end(), {level.residual[f], static_cast<double>(level.transitions[f])});
+        if (spec.floquet)
+          periodic.insert(periodic.end(), {level.floquet_max[f], std::isfinite(level.floquet_max[f])
+                                                                     ? (level.floquet_max[f] < 1.0 ? 1.0 : 0.0)
+                                                                     : kNan});
+        row.insert(row.end(), periodic.begin(), periodic.end());
+        std::vector<double> own = {static_cast<double>(i + 1), frequencies[f]};
+        for (Index r = 0; r < nr; ++r) own.push_back(level.amplitude(i, r));
+        own.insert(own.end(), periodic.begin(), periodic.end());
+        level_rows.push_back(own);
+      }
       for (Index r = 0; r < nr; ++r) row.push_back(level.linear(i, r));
       if (compare)
         for (Index r = 0; r < nr; ++r) row.push_back(hbm_amp[static_cast<size_t>(i)][r]);
       frf_rows.push_back(row);
+    }
+    if (shooting) {
+      std::vector<std::string> cols = {"point", "frequency_hz"};
+      for (const std::string& r : p.response_names) cols.push_back(r + "_amp_m");
+      cols.insert(cols.end(), periodic_cols.begin(), periodic_cols.end());
+      const std::string name = fmt::format("frf_{:g}", level.force);
+      o.tables.emplace(name, table_from_rows(name, cols, level_rows));
     }
     // Peaks on the grid (parabola through the largest point and its neighbours), the same way for
     // the time integration and the linear model, so that the two compare like for like.
@@ -202,7 +211,11 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     // look like a peak (or hide one) and would be checked as if it were the answer.
     const auto require_steady = [&](size_t kind, Index at, double f) {
       for (Index i = std::max<Index>(at - 1, 0); i <= std::min<Index>(at + 1, nf - 1); ++i)
-        if (!level.steady[static_cast<size_t>(i)])
+        if (!level.steady[static_cast<size_t>(i)] && shooting)
+          throw SolverError(fmt::format("time analysis at Fe = {:g} N: the {} rests on {:.4f} Hz, where {}",
+                                        level.force, kinds[kind] == "peak" ? "peak" : kinds[kind] + " peak",
+                                        frequencies[static_cast<size_t>(i)], level.failure[static_cast<size_t>(i)]));
+        else if (!level.steady[static_cast<size_t>(i)])
           throw SolverError(fmt::format(
               "time integration at Fe = {:g} N: the {} ({:.4f} Hz) rests on {:.4f} Hz, which did not reach "
               "the steady state within {} periods (cycle-to-cycle change above {:g}); raise max_cycles or "
@@ -332,6 +345,31 @@ void add_history_tables(TimeOutcome& o, const TimeSpec& spec) {
 
 }  // namespace
 
+TrackedDofs tracked_dofs(const PreparedHbm& p) {
+  TrackedDofs t{p.responses, std::nullopt};
+  auto slot = [&](Index dof) {
+    const auto it = std::find(t.dofs.begin(), t.dofs.end(), dof);
+    if (it != t.dofs.end()) return static_cast<Index>(it - t.dofs.begin());
+    t.dofs.push_back(dof);
+    return static_cast<Index>(t.dofs.size() - 1);
+  };
+  if (p.ip_oop) t.pair.emplace(slot(p.ip_oop->first), slot(p.ip_oop->second));
+  return t;
+}
+
+bool store_first_harmonics(TimeLevel& level, Index i, const Eigen::MatrixXd& coefficients, const TrackedDofs& tracked,
+                           Index responses) {
+  if (!coefficients.allFinite()) return false;
+  Eigen::VectorXcd z(coefficients.rows());
+  for (Index j = 0; j < z.size(); ++j) z[j] = std::complex<double>(coefficients(j, 1), -coefficients(j, 2));
+  for (Index r = 0; r < responses; ++r) level.amplitude(i, r) = std::abs(z[r]);
+  if (const auto& pair = tracked.pair) {
+    level.components(i, 0) = std::abs(z[pair->first] + z[pair->second]) / 2;
+    level.components(i, 1) = std::abs(z[pair->second] - z[pair->first]) / 2;
+  }
+  return true;
+}
+
 TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress) {
   const auto t_start = Clock::now();
   TimeOutcome o;
@@ -353,7 +391,8 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
     o.levels.push_back(sweep_level(p, spec, options, tracked, frequencies, force, timed));
     clock.finished(static_cast<int>(o.levels.size()));
   }
-  if (spec.history_hz) o.record = record_history(p, spec, options);
+  if (spec.history_hz)
+    o.record = spec.method == TimeSpec::Method::shooting ? periodic_history(p, spec) : record_history(p, spec, options);
   o.seconds = seconds_since(t_start);
   add_sweep_tables(o, spec, frequencies, tracked.pair);
   add_history_tables(o, spec);

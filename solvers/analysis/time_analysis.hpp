@@ -22,7 +22,13 @@ struct TimeLevel {
   Eigen::MatrixXd amplitude;   // frequencies x responses, first harmonic [m]
   Eigen::MatrixXd components;  // frequencies x (IP, OOP) [m] when ip_oop is set
   std::vector<int> cycles;     // periods integrated per frequency
-  std::vector<bool> steady;    // the cycle-to-cycle criterion was met
+  std::vector<bool> steady;    // the cycle-to-cycle criterion was met (shooting: Newton converged)
+  std::vector<std::string> failure;  // per frequency, why it is not steady (shooting: |R|, iterations)
+  // Shooting only, per frequency: the largest |q| of each response over the period [m], the
+  // residual [m], transitions per period, and with floquet the largest multiplier's modulus.
+  Eigen::MatrixXd largest;
+  std::vector<double> residual, floquet_max;
+  std::vector<int> transitions;
   long steps = 0, newton_iterations = 0;
   int max_step_iterations = 0;
   double seconds = 0.0;

@@ -10,6 +10,12 @@
 namespace bb {
 
 struct TimeSpec {
+  // newmark: march period after period until the motion repeats (steady_tolerance, max_cycles).
+  // shooting: Newton on the period map of the exact flow (timeint/shooting.hpp), with the system's
+  // tolerance and max_iterations; steps_per_period sub-intervals bracket the transitions.
+  enum class Method { newmark, shooting };
+  Method method = Method::newmark;
+  bool floquet = false;              // shooting only: Floquet multipliers and stability per frequency
   HbmSpec system;                    // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
   int steps_per_period = 128;        // dt = T / steps_per_period (eq 3.42)
   int max_cycles = 2000;             // per frequency, then the point is reported as not steady

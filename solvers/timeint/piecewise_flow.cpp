@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
 
@@ -24,26 +26,55 @@ bool slipping(ContactState m) { return m == ContactState::slip_positive || m == 
 // Phases below this are one point: a transition is located to it (rad; the period is 2 pi).
 constexpr double kPhaseResolution = 1e-13;
 
-double value_at(const RowVectorXd& row, const MatrixXd& a, const VectorXd& z, double tau) {
-  return row.dot((a * tau).exp() * z);
-}
+// One linear function of the state along one piece, g(tau) = row . exp(a tau) z: by the modes of a
+// (O(size) per value) where their basis reproduces the piece's end, else by the exponential.
+class Trace {
+ public:
+  // modal: row V and lambda the eigenvalues of a (a = V diag(lambda) V^-1), coordinates V^-1 z; null
+  // without a usable basis.
+  Trace(const RowVectorXd& row, const MatrixXd& a, const VectorXd& z, const Eigen::RowVectorXcd* modal,
+        const Eigen::VectorXcd* lambda, const Eigen::VectorXcd* coordinates, double check_tau, double check_value)
+      : row_(row), a_(a), z_(z) {
+    if (!modal) return;
+    weights_ = modal->transpose().cwiseProduct(*coordinates);
+    lambda_ = *lambda;
+    const double scale = row.cwiseAbs().dot(z.cwiseAbs()) + std::abs(check_value);
+    spectral_ = std::abs(value(check_tau) - check_value) <= 1e-9 * scale;
+  }
+  double value(double tau) const {
+    if (tau == 0.0) return row_.dot(z_);
+    if (!spectral_) return row_.dot((a_ * tau).exp() * z_);
+    return (weights_.array() * (lambda_.array() * tau).exp()).sum().real();
+  }
+  double rate(double tau) const {
+    if (!spectral_) return (row_ * a_).dot((a_ * tau).exp() * z_);
+    return (weights_.array() * lambda_.array() * (lambda_.array() * tau).exp()).sum().real();
+  }
 
-// The first zero of g(tau) = row . exp(a tau) z in [lo, hi], g(lo) <= 0 < g(hi): Illinois, returning
-// a phase on the far side (g > 0), so the transition has happened there.
-double crossing(const RowVectorXd& row, const MatrixXd& a, const VectorXd& z, double lo, double hi) {
-  double g_lo = value_at(row, a, z, lo), g_hi = value_at(row, a, z, hi);
+ private:
+  const RowVectorXd& row_;
+  const MatrixXd& a_;
+  const VectorXd& z_;
+  Eigen::VectorXcd weights_, lambda_;
+  bool spectral_ = false;
+};
+
+// The first zero of g in [lo, hi], g(lo) <= 0 < g(hi): Illinois, returning a phase on the far side
+// (g > 0), so the transition has happened there.
+double crossing(const Trace& g, double lo, double hi) {
+  double g_lo = g.value(lo), g_hi = g.value(hi);
   if (g_lo > 0.0) return lo;
   int side = 0;
   for (int it = 0; it < 200 && hi - lo > kPhaseResolution; ++it) {
     double mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
     if (!(mid > lo && mid < hi) || it % 8 == 7) mid = 0.5 * (lo + hi);  // bisect now and then: bounded
-    const double g = value_at(row, a, z, mid);
-    if (g > 0.0) {
-      hi = mid, g_hi = g;
+    const double v = g.value(mid);
+    if (v > 0.0) {
+      hi = mid, g_hi = v;
       if (side == 1) g_lo *= 0.5;
       side = 1;
     } else {
-      lo = mid, g_lo = g;
+      lo = mid, g_lo = v;
       if (side == -1) g_hi *= 0.5;
       side = -1;
     }
@@ -51,13 +82,12 @@ double crossing(const RowVectorXd& row, const MatrixXd& a, const VectorXd& z, do
   return hi;
 }
 
-// The phase in (0, hi) where the derivative row . a exp(a tau) z changes from + to - (bisection).
-double turning_point(const RowVectorXd& row, const MatrixXd& a, const VectorXd& z, double hi) {
-  const RowVectorXd rate = row * a;
+// The phase in (0, hi) where g' changes from + to - (bisection).
+double turning_point(const Trace& g, double hi) {
   double lo = 0.0;
   for (int it = 0; it < 200 && hi - lo > kPhaseResolution; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (value_at(rate, a, z, mid) > 0.0 ? lo : hi) = mid;
+    (g.rate(mid) > 0.0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -120,9 +150,36 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
   const double fastest =
       Eigen::EigenSolver<MatrixXd>(a.topLeftCorner(2 * n_, 2 * n_), false).eigenvalues().cwiseAbs().maxCoeff();
   const int pieces = fastest * step_ > 1.0 ? static_cast<int>(std::ceil(fastest * step_)) : 1;
-  Generator g{.a = std::move(a), .piece = step_ / pieces, .piece_exponential = {}};
+  Generator g;
+  g.a = std::move(a);
+  g.piece = step_ / pieces;
   g.piece_exponential = (g.a * g.piece).exp();
+  g.events = events(modes);
+  const Eigen::EigenSolver<MatrixXd> solver(g.a, true);
+  if (solver.info() == Eigen::Success) {
+    g.lambda = solver.eigenvalues();
+    g.vectors = solver.eigenvectors();
+    g.basis.compute(g.vectors);
+    g.spectral = g.basis.rcond() > 1e-12;
+    for (const Event& ev : g.events) g.modal.push_back(ev.row.cast<std::complex<double>>() * g.vectors);
+  }
   return generators_.emplace(modes, std::move(g)).first->second;
+}
+
+int PiecewiseFlow::halvings(const Generator& mode, const Eigen::VectorXcd& coordinates) const {
+  const Eigen::VectorXd speed = mode.lambda.cwiseAbs();
+  int k = 0;
+  for (const Eigen::RowVectorXcd& modal : mode.modal) {
+    const Eigen::VectorXd weight = modal.transpose().cwiseProduct(coordinates).cwiseAbs();
+    const double total = weight.sum();
+    for (; k < 40; ++k) {
+      const double tau = step_ / std::ldexp(1.0, k);
+      double fast = 0.0;
+      for (Index i = 0; i < speed.size(); ++i) fast += speed[i] * tau > 1.0 ? weight[i] : 0.0;
+      if (fast <= 1e-9 * total) break;
+    }
+  }
+  return k;
 }
 
 VectorXd PiecewiseFlow::pack(const FlowState& s) const {
@@ -224,8 +281,9 @@ std::vector<PiecewiseFlow::Event> PiecewiseFlow::events(const std::vector<Contac
   return out;
 }
 
+template <class TraceOf>
 void PiecewiseFlow::extremes_in_piece(const MatrixXd& a, const VectorXd& z0, const VectorXd& z1, double tau,
-                                      const std::vector<Index>& watch, VectorXd& extremes) const {
+                                      const std::vector<Index>& watch, VectorXd& extremes, const TraceOf& trace) const {
   for (size_t i = 0; i < watch.size(); ++i) {
     const Index d = watch[i];
     const auto e = static_cast<Index>(i);
@@ -234,7 +292,7 @@ void PiecewiseFlow::extremes_in_piece(const MatrixXd& a, const VectorXd& z0, con
     if (!((r0 > 0.0 && r1 < 0.0) || (r0 < 0.0 && r1 > 0.0))) continue;
     RowVectorXd rate = RowVectorXd::Zero(size_);
     rate[n_ + d] = r0 > 0.0 ? -1.0 : 1.0;
-    const double at = crossing(rate, a, z0, 0.0, tau);
+    const double at = crossing(trace(rate, nullptr), 0.0, tau);
     extremes[e] = std::max(extremes[e], std::abs(((a * at).exp() * z0)[d]));
   }
 }
@@ -246,34 +304,60 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
   while (theta_end - s.theta > kPhaseResolution) {
     const Generator& mode = mode_data(s.modes);
     const MatrixXd& a = mode.a;
-    const bool whole = theta_end - s.theta >= mode.piece * (1.0 - 1e-12);
-    const double tau_end = whole ? mode.piece : theta_end - s.theta;
     const VectorXd z = pack(s);
-    MatrixXd e = whole ? mode.piece_exponential : MatrixXd((a * tau_end).exp());
+    Eigen::VectorXcd coordinates;
+    double piece = mode.piece;
+    const MatrixXd* piece_exponential = &mode.piece_exponential;
+    if (mode.spectral) {
+      coordinates = mode.basis.solve(z.cast<std::complex<double>>());
+      const int k = halvings(mode, coordinates);
+      piece = step_ / std::ldexp(1.0, k);
+      auto found = mode.halvings.find(k);
+      if (found == mode.halvings.end()) found = mode.halvings.emplace(k, (a * piece).exp()).first;
+      piece_exponential = &found->second;
+    }
+    const bool whole = theta_end - s.theta >= piece * (1.0 - 1e-12);
+    const double tau_end = whole ? piece : theta_end - s.theta;
+    MatrixXd e = whole ? *piece_exponential : MatrixXd((a * tau_end).exp());
     VectorXd z_end = e * z;
+    const auto trace = [&](const RowVectorXd& row, const Eigen::RowVectorXcd* modal) {
+      Eigen::RowVectorXcd own;
+      if (mode.spectral && !modal) own = row.cast<std::complex<double>>() * mode.vectors, modal = &own;
+      return Trace(row, a, z, mode.spectral ? modal : nullptr, &mode.lambda, &coordinates, tau_end, row.dot(z_end));
+    };
     // The earliest transition in (0, tau_end].
     double first = std::numeric_limits<double>::infinity();
     const Event* next = nullptr;
-    const std::vector<Event> candidates = events(s.modes);
-    for (const Event& ev : candidates) {
+    for (size_t i = 0; i < mode.events.size(); ++i) {
+      const Event& ev = mode.events[i];
+      const Eigen::RowVectorXcd* modal = mode.spectral ? &mode.modal[i] : nullptr;
       const double g_end = ev.row.dot(z_end);
       double hi = std::numeric_limits<double>::quiet_NaN();
+      std::optional<Trace> g;
       if (g_end > 0.0) {
         hi = tau_end;
       } else if (ev.row.dot(z) <= 0.0 && ev.row.dot(a * z) > 0.0 && ev.row.dot(a * z_end) < 0.0) {
-        const double peak = turning_point(ev.row, a, z, tau_end);
-        if (value_at(ev.row, a, z, peak) > 0.0) hi = peak;
+        g.emplace(trace(ev.row, modal));
+        const double peak = turning_point(*g, tau_end);
+        if (g->value(peak) > 0.0) hi = peak;
       }
       if (!(hi <= tau_end) || hi >= first) continue;
-      const double at = crossing(ev.row, a, z, 0.0, hi);
+      if (!g) g.emplace(trace(ev.row, modal));
+      const double at = crossing(*g, 0.0, hi);
       if (at < first) first = at, next = &ev;
     }
     if (next) {
-      e = (a * first).exp();
-      z_end = e * z;
+      // The exact state there must have crossed (the modal values carry rounding): step on until it has.
+      for (int polish = 0; polish < 8; ++polish) {
+        e = (a * first).exp();
+        z_end = e * z;
+        const double g = next->row.dot(z_end), rate = next->row.dot(a * z_end);
+        if (g > 0.0 || !(rate > 0.0) || first >= tau_end) break;
+        first = std::min(tau_end, first + std::max(-1.5 * g / rate, kPhaseResolution));
+      }
     }
     const double tau = next ? first : tau_end;
-    if (extremes) extremes_in_piece(a, z, z_end, tau, watch, *extremes);
+    if (extremes) extremes_in_piece(a, z, z_end, tau, watch, *extremes, trace);
     unpack(z_end, s);
     s.theta = next ? s.theta + first : (whole ? s.theta + tau_end : theta_end);
     if (jacobian) *jacobian = e.topLeftCorner(ns, ns) * *jacobian;

@@ -7,9 +7,10 @@
 // by the last three states), so z(theta + tau) = exp(A_m tau) z(theta) to rounding: no time-step
 // error. A transition is a zero of a function linear in z (stick -> slip: |kt (u - w)| = mu N;
 // slip -> stick: the slider's rate changes sign; lift-off and closing: N = 0), located by root finding
-// on that exact motion inside pieces of at most `step` and at most 1 rad of the fastest motion of the
-// modes (the eigenvalues of A_m: a stiff stuck contact rings), from a sign change at their ends or a
-// turning point of the function between them.
+// on that exact motion inside pieces, from a sign change at their ends or a turning point of the
+// function between them. A piece is `step` halved until the modes of A_m that turn by more than
+// 1 rad in it carry at most 1e-9 of each event function (a stiff stuck contact rings; a reduced
+// model has modes far above the excitation, mostly at rest), so that a function turns at most once.
 //
 // The sensitivity dz/dz0 (the monodromy matrix at the end of a period) is the product of the
 // exponentials, with the sliders of contacts not stuck tied to q (they follow u) and one saltation
@@ -72,19 +73,20 @@ class PiecewiseFlow {
   ContactSample sample(const FlowState& s, Eigen::Index k) const;
 
  private:
-  const Eigen::MatrixXd& generator(const std::vector<contact::ContactState>& modes) const;  // A_m, cached
-  Eigen::VectorXd pack(const FlowState& s) const;
-  void unpack(const Eigen::VectorXd& z, FlowState& s) const;
-  // Event function i of contact k in mode m as a row over z (> 0: the transition has happened).
+  // Event function of contact k in a mode as a row over z (> 0: the transition has happened).
   struct Event {
     Eigen::Index contact;
     contact::ContactState next;
     Eigen::RowVectorXd row;
   };
+  const Eigen::MatrixXd& generator(const std::vector<contact::ContactState>& modes) const;  // A_m, cached
+  Eigen::VectorXd pack(const FlowState& s) const;
+  void unpack(const Eigen::VectorXd& z, FlowState& s) const;
   std::vector<Event> events(const std::vector<contact::ContactState>& modes) const;
   void tie_sliders(FlowState& s, Eigen::MatrixXd* jacobian) const;
+  template <class TraceOf>
   void extremes_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z0, const Eigen::VectorXd& z1, double tau,
-                         const std::vector<Eigen::Index>& watch, Eigen::VectorXd& extremes) const;
+                         const std::vector<Eigen::Index>& watch, Eigen::VectorXd& extremes, const TraceOf& trace) const;
   double algebraic_slider(const FlowState& s, Eigen::Index k, contact::ContactState m) const;
   Eigen::RowVectorXd slider_row(Eigen::Index k, contact::ContactState m) const;  // d w_k / dq in mode m
 
@@ -94,10 +96,20 @@ class PiecewiseFlow {
   Eigen::MatrixXd mass_inverse_;
   struct Generator {
     Eigen::MatrixXd a;
-    double piece = 0.0;  // the longest piece searched for transitions at once [rad]
+    // Without a usable modal basis, pieces of at most 1 rad of the fastest motion.
+    double piece = 0.0;
     Eigen::MatrixXd piece_exponential;  // exp(a piece)
+    mutable std::map<int, Eigen::MatrixXd> halvings;  // exp(a step / 2^k)
+    std::vector<Event> events;
+    // a = V diag(lambda) V^-1 where V is well conditioned: event functions then cost O(size) a value.
+    Eigen::VectorXcd lambda;                  // eigenvalues
+    Eigen::MatrixXcd vectors;                 // V
+    std::vector<Eigen::RowVectorXcd> modal;   // each event's row times V
+    Eigen::PartialPivLU<Eigen::MatrixXcd> basis;
+    bool spectral = false;
   };
   const Generator& mode_data(const std::vector<contact::ContactState>& modes) const;
+  int halvings(const Generator& mode, const Eigen::VectorXcd& coordinates) const;  // of step, for a piece
   mutable std::map<std::vector<contact::ContactState>, Generator> generators_;
 };
 

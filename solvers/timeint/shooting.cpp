@@ -115,13 +115,13 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
   FlowState s = unstack(flow, x);
   out.start = s;
   out.largest = VectorXd::Zero(nd);
-  MatrixXd samples(n_t, nd);
+  MatrixXd& samples = out.samples;
+  samples.resize(n_t + 1, nd);
   out.steady.contacts.assign(static_cast<size_t>(flow.contacts()), {});
   PiecewiseFlow::Advance log;
   for (int k = 0; k <= n_t; ++k) {
     if (k > 0) flow.advance(s, kTwoPi * k / n_t, nullptr, o.max_events, log, o.dofs, &out.largest);
-    if (k < n_t)
-      for (Index j = 0; j < nd; ++j) samples(k, j) = s.q[o.dofs[static_cast<size_t>(j)]];
+    for (Index j = 0; j < nd; ++j) samples(k, j) = s.q[o.dofs[static_cast<size_t>(j)]];
     for (Index c = 0; c < flow.contacts(); ++c) out.steady.contacts[static_cast<size_t>(c)].push_back(flow.sample(s, c));
   }
   const int h_max = o.harmonics;

@@ -38,6 +38,7 @@ struct ShootingResult {
   // coefficients, amplitude, phase, contacts (steps_per_period + 1 samples), converged, failure;
   // cycles = periods integrated, total_iterations = Newton iterations.
   SteadyState steady;
+  Eigen::MatrixXd samples;     // (steps_per_period + 1) x reported DOFs: q at the sub-interval ends [m]
   Eigen::VectorXd largest;     // per reported DOF, max |q_d| over the period (extremes located) [m]
   double residual = 0.0;       // max |x(2 pi) - x(0)| at the answer [m]
   int transitions = 0;         // contact transitions over the period

@@ -487,5 +487,27 @@ TEST_F(TimeSolverFailure, APeakOnAFrequencyThatIsNotSteadyFailsTheRun) {
   EXPECT_EQ(exit_code(o.record.status), exit_solver_failed);
 }
 
+// Shooting cut to one Newton iteration below rounding cannot converge: the run fails (exit 3) with
+// the frequency, |R| and the iteration count.
+TEST_F(TimeSolverFailure, AShootingRunThatDoesNotConvergeFailsWithItsResidual) {
+  test::OscillatorCase c;
+  c.levels = "[0.1]";
+  c.range = "[200.0, 250.0]";
+  c.step = "5.0";
+  c.analysis_extra = "max_iterations = 1\n";
+  c.tolerance = "1e-30";
+  std::string text = test::oscillator_case_text(c);
+  const std::string from = "type = \"hbm\"";
+  text.replace(text.find(from), from.size(), "type = \"time\"\nmethod = \"shooting\"\nsteps_per_period = 32");
+  text +=
+      "[[check]]\nname = \"peak\"\nresult = \"peaks\"\nreference_result = \"peaks\"\nkey = \"level\"\n"
+      "compare = { peak_hz = \"peak_hz\" }\nrel_tol = 1e-9\n";
+  const RunOutcome o = run_case(write(text), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
+  EXPECT_NE(o.record.message.find("|R| ="), std::string::npos) << o.record.message;
+  EXPECT_NE(o.record.message.find("after 1 Newton iterations"), std::string::npos) << o.record.message;
+  EXPECT_EQ(exit_code(o.record.status), exit_solver_failed);
+}
+
 }  // namespace
 }  // namespace bb

@@ -1,0 +1,86 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <numbers>
+
+#include "analysis/time_sweeps.hpp"
+#include "timeint/shooting.hpp"
+
+namespace bb {
+namespace {
+
+using Eigen::Index;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+timeint::ShootingOptions shooting_options(const TimeSpec& spec, const std::vector<Index>& dofs) {
+  timeint::ShootingOptions o;
+  o.dofs = dofs;
+  o.steps_per_period = spec.steps_per_period;
+  o.harmonics = spec.system.harmonics;
+  o.tolerance = spec.system.tolerance;
+  o.max_iterations = spec.system.max_iterations;
+  o.floquet = spec.floquet;
+  return o;
+}
+
+}  // namespace
+
+void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const hbm::HbmModel& model, const TrackedDofs& tracked,
+                    Index responses, const HbmProgress& progress) {
+  const auto nf = static_cast<Index>(level.frequency_hz.size());
+  const timeint::ShootingOptions options = shooting_options(spec, tracked.dofs);
+  level.largest = Eigen::MatrixXd::Constant(nf, responses, std::numeric_limits<double>::quiet_NaN());
+  std::optional<timeint::FlowState> start;
+  for (Index i = 0; i < nf; ++i) {
+    const double hz = level.frequency_hz[static_cast<size_t>(i)];
+    timeint::ShootingResult s = timeint::shooting(model, kTwoPi * hz, options, start);
+    if (!s.steady.converged && start) s = timeint::shooting(model, kTwoPi * hz, options);  // from the static state
+    level.cycles.push_back(s.steady.cycles);
+    level.steady.push_back(s.steady.converged);
+    level.failure.push_back(s.steady.failure);
+    level.residual.push_back(s.residual);
+    level.transitions.push_back(s.transitions);
+    level.floquet_max.push_back(s.largest_multiplier);
+    level.steps += static_cast<long>(s.steady.cycles) * spec.steps_per_period;
+    level.newton_iterations += s.steady.total_iterations;
+    level.max_step_iterations = std::max(level.max_step_iterations, static_cast<int>(s.steady.total_iterations));
+    if (s.steady.converged && store_first_harmonics(level, i, s.steady.coefficients, tracked, responses)) {
+      level.largest.row(i) = s.largest.head(responses).transpose();
+      start = s.start;
+    }
+    if (progress && i % 5 == 0)
+      progress(fmt::format("Fe = {:g} N: {:.3f} Hz, shooting {} iterations{}", level.force, hz,
+                           s.steady.total_iterations, s.steady.converged ? "" : " (no periodic solution found)"));
+  }
+}
+
+TimeHistoryRecord periodic_history(const PreparedHbm& p, const TimeSpec& spec) {
+  TimeHistoryRecord rec;
+  rec.frequency_hz = *spec.history_hz;
+  rec.force = spec.system.force_levels.front();
+  hbm::HbmModel m = p.model;
+  m.harmonic_load *= rec.force;
+  const double omega = kTwoPi * rec.frequency_hz;
+  const timeint::ShootingResult s = timeint::shooting(m, omega, shooting_options(spec, p.responses));
+  rec.steady = s.steady;
+  if (!s.steady.converged) return rec;
+  // The period repeats: history_cycles copies of its samples.
+  timeint::TimeHistory& h = rec.history;
+  const int n_t = spec.steps_per_period;
+  const auto nr = static_cast<Index>(p.responses.size());
+  h.steps = spec.history_cycles * n_t;
+  h.displacement.resize(h.steps + 1, nr);
+  h.contacts.assign(s.steady.contacts.size(), {});
+  for (int k = 0; k <= h.steps; ++k) {
+    const int in_period = k % n_t;
+    h.time.push_back(kTwoPi * k / (omega * n_t));
+    h.displacement.row(k) = s.samples.row(in_period == 0 && k > 0 ? n_t : in_period);
+    for (size_t c = 0; c < h.contacts.size(); ++c)
+      h.contacts[c].push_back(s.steady.contacts[c][static_cast<size_t>(in_period == 0 && k > 0 ? n_t : in_period)]);
+  }
+  h.converged = true;
+  return rec;
+}
+
+}  // namespace bb

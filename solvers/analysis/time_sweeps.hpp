@@ -1,0 +1,37 @@
+// The per-frequency sweeps of a time analysis (analysis/time_analysis.hpp), shared by its two
+// methods: which DOFs they track and how a point's first harmonics enter a level.
+#pragma once
+#include <Eigen/Dense>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "analysis/hbm_analysis.hpp"
+#include "analysis/time_analysis.hpp"
+
+namespace bb {
+
+// The DOFs the sweeps track: the responses, then the IP/OOP pair where not among them (`pair`:
+// their positions in `dofs`).
+struct TrackedDofs {
+  std::vector<Eigen::Index> dofs;
+  std::optional<std::pair<Eigen::Index, Eigen::Index>> pair;
+};
+
+TrackedDofs tracked_dofs(const PreparedHbm& p);
+
+// Frequency i of `level` from the coefficients of the tracked DOFs (layout of timeint/steady_state.hpp):
+// the responses' first-harmonic amplitudes and the IP/OOP components. False when they are not finite.
+bool store_first_harmonics(TimeLevel& level, Eigen::Index i, const Eigen::MatrixXd& coefficients,
+                           const TrackedDofs& tracked, Eigen::Index responses);
+
+// The periodic responses of one level by shooting (timeint/shooting.hpp), each frequency started
+// from the previous one's periodic state.
+void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const hbm::HbmModel& model, const TrackedDofs& tracked,
+                    Eigen::Index responses, const HbmProgress& progress);
+
+// The periodic response at history_hz by shooting, history_cycles copies of its period recorded.
+TimeHistoryRecord periodic_history(const PreparedHbm& p, const TimeSpec& spec);
+
+}  // namespace bb

@@ -4,12 +4,15 @@
 // CF = 300 N, Fe = 10 N: stick-slip without lift-off) and on the same blades without contacts.
 // 128 steps per period at the stuck resonance. Measurement only: nothing here asserts a time.
 // Counters: dofs, contact_dofs, iterations (Newton per step), cycles (periods to the steady state).
+// Shooting (timeint/shooting.hpp) on the same point from the same start, and on Den Hartog's
+// oscillator: counters iterations (Newton), periods (integrated), transitions (per period).
 #include <benchmark/benchmark.h>
 
 #include <numbers>
 
 #include "../tests/extremes/hbm_models.hpp"
 #include "timeint/newmark.hpp"
+#include "timeint/shooting.hpp"
 #include "timeint/static_state.hpp"
 #include "timeint/steady_state.hpp"
 
@@ -82,5 +85,55 @@ void BM_SteadyStateFrequencyPoint(benchmark::State& state) {
   state.counters["cycles"] = cycles;
 }
 BENCHMARK(BM_SteadyStateFrequencyPoint)->Unit(benchmark::kMillisecond);
+
+// The same frequency point by shooting, started from the periodic state 1 % below.
+void BM_ShootingFrequencyPoint(benchmark::State& state) {
+  const HbmModel model = friction_model();
+  const double omega = bb::hbm::models::stuck_resonance(model, 0);
+  bb::timeint::ShootingOptions options;
+  options.dofs = {0, 2};
+  options.steps_per_period = 128;
+  const bb::timeint::ShootingResult below = bb::timeint::shooting(model, 0.99 * omega, options);
+  if (!below.steady.converged) {
+    state.SkipWithError(("no periodic state below: " + below.steady.failure).c_str());
+    return;
+  }
+  bb::timeint::ShootingResult s;
+  for (auto _ : state) {
+    s = bb::timeint::shooting(model, omega, options, below.start);
+    benchmark::DoNotOptimize(s.steady.amplitude);
+  }
+  state.counters["iterations"] = static_cast<double>(s.steady.total_iterations);
+  state.counters["periods"] = s.steady.cycles;
+  state.counters["transitions"] = s.transitions;
+}
+BENCHMARK(BM_ShootingFrequencyPoint)->Unit(benchmark::kMillisecond);
+
+// Den Hartog's oscillator (cases/verification/coulomb_oscillator_shooting.toml: kt = 1e14 N/m,
+// Ff/F0 = 0.3) at one frequency [Hz] from the static state, Floquet multipliers included.
+void BM_ShootingCoulombOscillator(benchmark::State& state) {
+  HbmModel m;
+  m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
+  m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
+  m.contacts.push_back({.law = {.kn = 1e12, .kt = 1e14, .mu = 0.3, .n0 = 10.0},
+                        .tangential = Eigen::RowVectorXd::Ones(1),
+                        .normal = Eigen::RowVectorXd::Zero(1)});
+  m.harmonic_load = Eigen::VectorXcd::Constant(1, 10.0);
+  bb::timeint::ShootingOptions options;
+  options.dofs = {0};
+  options.steps_per_period = 64;
+  options.harmonics = 3;
+  options.floquet = true;
+  const double omega = 2 * std::numbers::pi * static_cast<double>(state.range(0));
+  bb::timeint::ShootingResult s;
+  for (auto _ : state) {
+    s = bb::timeint::shooting(m, omega, options);
+    benchmark::DoNotOptimize(s.largest);
+  }
+  state.counters["iterations"] = static_cast<double>(s.steady.total_iterations);
+  state.counters["periods"] = s.steady.cycles;
+  state.counters["transitions"] = s.transitions;
+}
+BENCHMARK(BM_ShootingCoulombOscillator)->Arg(200)->Arg(300)->Arg(400)->Unit(benchmark::kMillisecond);
 
 }  // namespace

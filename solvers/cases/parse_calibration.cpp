@@ -181,6 +181,10 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     if (*n < 1 || *n > 100) r.fail("starts", "must lie in [1, 100]");
     c.starts = static_cast<int>(*n);
   }
+  if (const auto n = r.optional_integer("threads")) {
+    if (*n < 1 || *n > 1024) r.fail("threads", "must lie in [1, 1024] (starts solved at once; omit it for one per core)");
+    c.threads = static_cast<int>(*n);
+  }
   if (const auto n = r.optional_integer("seed", 0, 4294967295L)) {
     c.seed = static_cast<unsigned>(*n);
   }

@@ -59,6 +59,8 @@ struct CalibrationSpec {
   // within the bounds (seeded, so a run repeats); the lowest final cost wins.
   int starts = 1;
   unsigned seed = 1;
+  // Starts solved at once (each its own problem; the outcome is the serial one): 0 = one per core.
+  int threads = 0;
   // An independent model (e.g. the time integration) run with the identified values at the same
   // parameter paths; its checks must pass for the identification to count (empty: none).
   std::filesystem::path cross_check;

@@ -4,9 +4,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <numeric>
 #include <random>
+#include <thread>
 
 namespace bb {
 namespace {
@@ -185,13 +188,13 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   diff.relative_step_size =
       cal.derivative_step;  // default 1e-4: above the eigensolver's 1e-10 noise, below the model's curvature
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
-  const auto build = [&](std::vector<double>& x, ceres::Problem& problem) {
+  const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations) {
     ceres::CostFunction* cost = nullptr;
     if (analytic) {
-      cost = new AnalyticResidual(&evaluate, n, &out.residual_evaluations, residuals);
+      cost = new AnalyticResidual(&evaluate, n, evaluations, residuals);
     } else {
       auto* numeric = new ceres::DynamicNumericDiffCostFunction<NumericResidual, ceres::CENTRAL>(
-          new NumericResidual{&evaluate, n, &out.residual_evaluations}, ceres::TAKE_OWNERSHIP, diff);
+          new NumericResidual{&evaluate, n, evaluations}, ceres::TAKE_OWNERSHIP, diff);
       numeric->AddParameterBlock(static_cast<int>(n));
       numeric->SetNumResiduals(residuals);
       cost = numeric;
@@ -211,36 +214,72 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   options.function_tolerance = cal.function_tolerance;
   options.parameter_tolerance = 1e-8;
   options.update_state_every_iteration = true;
-  std::vector<double> x;
-  std::string message;
-  for (size_t s = 0; s < starts.size(); ++s) {
-    std::vector<double> xs(n);
-    for (size_t i = 0; i < n; ++i) xs[i] = std::log(starts[s][i]);
-    ceres::Problem problem;
-    build(xs, problem);
+  // Every start is its own problem: they run on `threads` workers, and the best is chosen in start
+  // order afterwards, so the outcome is the serial one whatever the workers' timing.
+  struct StartRun {
+    CalibrationStart result;
+    std::vector<double> x;
+    std::string message, brief;
     std::vector<std::pair<int, double>> history;
-    IterationTrace trace(progress, history, static_cast<int>(s + 1), static_cast<int>(starts.size()),
-                         cal.max_iterations);
+    int evaluations = 0;
+  };
+  std::vector<StartRun> runs(starts.size());
+  std::mutex progress_lock;
+  FitProgress locked_progress;  // the caller's, one line at a time
+  if (progress)
+    locked_progress = [&](const FitIteration& it) {
+      const std::lock_guard<std::mutex> guard(progress_lock);
+      progress(it);
+    };
+  const auto run_start = [&](size_t s) {
+    StartRun& run = runs[s];
+    run.x.resize(n);
+    for (size_t i = 0; i < n; ++i) run.x[i] = std::log(starts[s][i]);
+    ceres::Problem problem;
+    build(run.x, problem, &run.evaluations);
+    IterationTrace trace(locked_progress, run.history, static_cast<int>(s + 1),
+                         static_cast<int>(starts.size()), cal.max_iterations);
     ceres::Solver::Options o = options;
     o.callbacks.push_back(&trace);
     ceres::Solver::Summary summary;
     ceres::Solve(o, &problem, &summary);
-    CalibrationStart r;
+    CalibrationStart& r = run.result;
     r.start = starts[s];
-    for (double v : xs) r.values.push_back(std::exp(v));
+    for (double v : run.x) r.values.push_back(std::exp(v));
     r.initial_cost = summary.initial_cost;
     r.final_cost = summary.final_cost;
     r.iterations = static_cast<int>(summary.iterations.size());
     r.converged = summary.termination_type == ceres::CONVERGENCE;
+    run.message = summary.message;
+    run.brief = summary.BriefReport();
+  };
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const size_t workers = std::min(starts.size(), static_cast<size_t>(cal.threads > 0 ? cal.threads : cores));
+  if (workers <= 1) {
+    for (size_t s = 0; s < starts.size(); ++s) run_start(s);
+  } else {
+    std::atomic<size_t> next{0};
+    std::vector<std::thread> pool;
+    for (size_t w = 0; w < workers; ++w)
+      pool.emplace_back([&] {
+        for (size_t s = next++; s < starts.size(); s = next++) run_start(s);
+      });
+    for (std::thread& t : pool) t.join();
+  }
+  std::vector<double> x;
+  std::string message;
+  for (size_t s = 0; s < starts.size(); ++s) {
+    const CalibrationStart& r = runs[s].result;
+    out.residual_evaluations += runs[s].evaluations;
     out.starts.push_back(r);
     if (s == 0 ||
         (r.converged && (!out.starts[out.best].converged || r.final_cost < out.starts[out.best].final_cost)) ||
         (!out.starts[out.best].converged && r.final_cost < out.starts[out.best].final_cost)) {
       out.best = s;
-      x = xs;
-      message = summary.message;
-      out.termination = summary.BriefReport();
-      out.history = history;
+      x = runs[s].x;
+      message = runs[s].message;
+      out.termination = runs[s].brief;
+      out.history = runs[s].history;
     }
   }
   const CalibrationStart& chosen = out.starts[out.best];
@@ -252,7 +291,8 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
   if (starts.size() > 1) warn_other_minima(out, n);
   ceres::Problem problem;
-  build(x, problem);  // at the chosen optimum, for the covariance
+  int covariance_evaluations = 0;
+  build(x, problem, &covariance_evaluations);  // at the chosen optimum, for the covariance
   out.values.resize(n);
   for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
   add_covariance(problem, x, cal, out);

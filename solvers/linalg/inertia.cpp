@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <mutex>
 #include <vector>
 
 namespace bb {
@@ -36,6 +37,10 @@ InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, con
       }
   // The multifrontal LDL^T of a general symmetric matrix (SYM = 2, with 2x2 pivots): its inertia is
   // that of K - sigma M, and unlike CHOLMOD's simplicial LDL^T it runs on BLAS-3 fronts.
+  // The sequential MUMPS keeps global state (its MPI stand-in, load bookkeeping): one instance at a
+  // time in this process, whatever threads ask (calibration starts, force levels).
+  static std::mutex mumps;
+  const std::lock_guard<std::mutex> one_at_a_time(mumps);
   DMUMPS_STRUC_C id{};
   id.comm_fortran = kUseCommWorld;
   id.par = 1;

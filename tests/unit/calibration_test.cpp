@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
@@ -132,6 +134,35 @@ TEST_F(CalibrationRoundTrip, EveryStartOfALatinHypercubeIsReportedAndTheBestWins
   for (const CalibrationStart& r : o.starts) EXPECT_GE(r.final_cost, o.starts[o.best].final_cost);
   ASSERT_TRUE(o.converged);
   EXPECT_NEAR(o.values[0] / 2.1e11, 1.0, 1e-6);
+}
+
+// Starts solved at once on three workers give the serial outcome bit for bit: every start's values
+// and costs, the chosen start, the model runs counted.
+TEST_F(CalibrationRoundTrip, StartsInParallelGiveTheSerialOutcomeBitForBit) {
+  const fs::path c = write_case(
+      1.8e11, 7000.0,
+      R"({ path = "material.E", lower = 1e11, upper = 3e11 }, { path = "material.rho", lower = 5000.0, upper = 10000.0 })",
+      2.1e11, 7800.0);
+  std::ofstream(c, std::ios::app) << "starts = 5\nseed = 3\nthreads = 1\n";
+  const CalibrationOutcome serial = calibrate_case(c);
+  std::string text;
+  {
+    std::ifstream in(c);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  text.replace(text.find("threads = 1"), 11, "threads = 3");
+  std::ofstream(c) << text;
+  const CalibrationOutcome parallel = calibrate_case(c);
+  ASSERT_EQ(parallel.starts.size(), serial.starts.size());
+  for (size_t s = 0; s < serial.starts.size(); ++s) {
+    EXPECT_EQ(parallel.starts[s].values, serial.starts[s].values) << "start " << s + 1;
+    EXPECT_EQ(parallel.starts[s].final_cost, serial.starts[s].final_cost) << "start " << s + 1;
+    EXPECT_EQ(parallel.starts[s].iterations, serial.starts[s].iterations) << "start " << s + 1;
+  }
+  EXPECT_EQ(parallel.best, serial.best);
+  EXPECT_EQ(parallel.values, serial.values);
+  EXPECT_EQ(parallel.residual_evaluations, serial.residual_evaluations);
+  EXPECT_EQ(parallel.history, serial.history);
 }
 
 TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedCase) {

@@ -124,29 +124,7 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
     for (Index j = 0; j < nd; ++j) samples(k, j) = s.q[o.dofs[static_cast<size_t>(j)]];
     for (Index c = 0; c < flow.contacts(); ++c) out.steady.contacts[static_cast<size_t>(c)].push_back(flow.sample(s, c));
   }
-  const int h_max = o.harmonics;
-  SteadyState& st = out.steady;
-  st.coefficients = MatrixXd::Zero(nd, 2 * h_max + 1);
-  for (int k = 0; k < n_t; ++k) {
-    const double theta = kTwoPi * k / n_t;
-    for (Index j = 0; j < nd; ++j) {
-      st.coefficients(j, 0) += samples(k, j) / n_t;
-      for (int h = 1; h <= h_max; ++h) {
-        st.coefficients(j, 2 * h - 1) += 2.0 * samples(k, j) * std::cos(h * theta) / n_t;
-        st.coefficients(j, 2 * h) += 2.0 * samples(k, j) * std::sin(h * theta) / n_t;
-      }
-    }
-  }
-  st.amplitude = MatrixXd::Zero(nd, h_max + 1);
-  st.phase = MatrixXd::Zero(nd, h_max + 1);
-  for (Index j = 0; j < nd; ++j) {
-    st.amplitude(j, 0) = std::abs(st.coefficients(j, 0));
-    for (int h = 1; h <= h_max; ++h) {
-      const double a = st.coefficients(j, 2 * h - 1), b = st.coefficients(j, 2 * h);
-      st.amplitude(j, h) = std::hypot(a, b);
-      st.phase(j, h) = std::atan2(-b, a);
-    }
-  }
+  fill_harmonics({samples.topRows(n_t)}, o.harmonics, out.steady);
 }
 
 void floquet(const PiecewiseFlow& flow, const Period& p, ShootingResult& out) {

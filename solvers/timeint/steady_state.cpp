@@ -63,13 +63,10 @@ double period_change(const MatrixXd& x, const MatrixXd& previous, bool ignore_dr
   return change;
 }
 
-// DFT over the last whole periods: theta_k = 2 pi k / n_t exactly (every period starts at a whole
-// number of periods from t = 0). Fills coefficients, amplitude and phase.
+// DFT over the last whole periods, their linear trend removed when drift is ignored.
 void analyse(std::deque<MatrixXd>& periods, const SteadyStateOptions& options, SteadyState& out) {
-  const int n_t = options.steps_per_period, h_max = options.harmonics;
+  const int n_t = options.steps_per_period;
   const Index nd = static_cast<Index>(options.dofs.size());
-  out.coefficients = MatrixXd::Zero(nd, 2 * h_max + 1);
-  const double samples = static_cast<double>(n_t) * static_cast<double>(periods.size());
   if (options.ignore_drift && out.drift.size() == nd) {
     // Remove the linear trend (drift per period spread over the samples) from the analysed periods.
     for (size_t p = 0; p < periods.size(); ++p)
@@ -77,31 +74,39 @@ void analyse(std::deque<MatrixXd>& periods, const SteadyStateOptions& options, S
         periods[p].row(k) -= out.drift.transpose() *
                              ((static_cast<double>(p) * n_t + k) / n_t - 0.5 * static_cast<double>(periods.size()));
   }
+  fill_harmonics(periods, options.harmonics, out);
+}
+
+}  // namespace
+
+void fill_harmonics(const std::deque<MatrixXd>& periods, int harmonics, SteadyState& out) {
+  const Index nd = periods.front().cols();
+  const auto n_t = static_cast<int>(periods.front().rows());
+  const double samples = static_cast<double>(n_t) * static_cast<double>(periods.size());
+  out.coefficients = MatrixXd::Zero(nd, 2 * harmonics + 1);
   for (const MatrixXd& x : periods) {
     for (int k = 0; k < n_t; ++k) {
       const double theta = 2.0 * std::numbers::pi * k / n_t;
       for (Index j = 0; j < nd; ++j) {
         out.coefficients(j, 0) += x(k, j) / samples;
-        for (int h = 1; h <= h_max; ++h) {
+        for (int h = 1; h <= harmonics; ++h) {
           out.coefficients(j, 2 * h - 1) += 2.0 * x(k, j) * std::cos(h * theta) / samples;
           out.coefficients(j, 2 * h) += 2.0 * x(k, j) * std::sin(h * theta) / samples;
         }
       }
     }
   }
-  out.amplitude = MatrixXd::Zero(nd, h_max + 1);
-  out.phase = MatrixXd::Zero(nd, h_max + 1);
+  out.amplitude = MatrixXd::Zero(nd, harmonics + 1);
+  out.phase = MatrixXd::Zero(nd, harmonics + 1);
   for (Index j = 0; j < nd; ++j) {
     out.amplitude(j, 0) = std::abs(out.coefficients(j, 0));
-    for (int h = 1; h <= h_max; ++h) {
+    for (int h = 1; h <= harmonics; ++h) {
       const double a = out.coefficients(j, 2 * h - 1), b = out.coefficients(j, 2 * h);
       out.amplitude(j, h) = std::hypot(a, b);
       out.phase(j, h) = std::atan2(-b, a);
     }
   }
 }
-
-}  // namespace
 
 SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyStateOptions& options,
                          const std::optional<DynamicState>& start) {

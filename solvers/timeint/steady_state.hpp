@@ -11,6 +11,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +67,10 @@ struct SteadyState {
   double energy_change = 0.0;  // [J]
   DynamicState final_state;    // at a whole number of periods: start the next frequency from it
 };
+
+// Harmonics 0..H by the DFT of whole periods of samples at theta_k = 2 pi k / n_t (each period n_t
+// rows, one column per DOF, all periods alike): fills coefficients, amplitude and phase.
+void fill_harmonics(const std::deque<Eigen::MatrixXd>& periods, int harmonics, SteadyState& out);
 
 // From `start` (its displacements, velocities and sliders; its time is reset to 0, where the load
 // has the same value for any omega, so a sweep from the final state of the previous frequency sees

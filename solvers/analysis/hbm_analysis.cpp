@@ -3,21 +3,19 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <exception>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <numbers>
 #include <optional>
-#include <thread>
 
 #include "analysis/hbm_nonlinear_modes.hpp"
 #include "analysis/hbm_response.hpp"
 #include "common/errors.hpp"
+#include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
 #include "contact/state_fractions.hpp"
 #include "frf/receptance.hpp"
@@ -401,7 +399,6 @@ void add_damper_table(HbmOutcome& o) {
 std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& spec, const HbmProgress& progress) {
   const size_t n = spec.force_levels.size();
   std::vector<HbmLevel> levels(n);
-  std::vector<std::exception_ptr> errors(n);
   ProgressClock clock(static_cast<int>(n));
   std::mutex report;  // the progress line and the clock, from every worker
   int done = 0;
@@ -410,29 +407,13 @@ std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& s
     progress(line + "  [" + clock.status() + "]");
   })
                                      : HbmProgress();
-  std::atomic<size_t> next{0};
-  const auto work = [&] {
-    for (size_t i = next++; i < n; i = next++) {
-      const double f = spec.force_levels[i];
-      try {
-        levels[i] = spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(prepared, spec, f, timed)
-                                                  : sweep_hbm_level(prepared, spec, f, spec.harmonics, timed);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-      const std::lock_guard<std::mutex> lock(report);
-      clock.finished(++done);
-    }
-  };
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const size_t workers = std::min<size_t>(n, spec.threads > 0 ? static_cast<size_t>(spec.threads) : cores);
-  {
-    std::vector<std::jthread> pool;
-    for (size_t k = 1; k < workers; ++k) pool.emplace_back(work);
-    work();
-  }  // joined
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  for_each_index(n, worker_count(n, spec.threads), [&](size_t i) {
+    const double f = spec.force_levels[i];
+    levels[i] = spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(prepared, spec, f, timed)
+                                              : sweep_hbm_level(prepared, spec, f, spec.harmonics, timed);
+    const std::lock_guard<std::mutex> lock(report);
+    clock.finished(++done);
+  });
   return levels;
 }
 

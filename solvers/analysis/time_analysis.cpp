@@ -9,12 +9,12 @@
 #include <limits>
 #include <numbers>
 
+#include "analysis/time_sweeps.hpp"
 #include "common/errors.hpp"
 #include "common/progress_clock.hpp"
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
-#include "analysis/time_sweeps.hpp"
 #include "timeint/newmark.hpp"
 
 namespace bb {
@@ -183,9 +183,9 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
         for (Index r = 0; r < nr; ++r) periodic.push_back(level.largest(i, r));
         periodic.insert(periodic.end(), {level.residual[f], static_cast<double>(level.transitions[f])});
         if (spec.floquet)
-          periodic.insert(periodic.end(), {level.floquet_max[f], std::isfinite(level.floquet_max[f])
-                                                                     ? (level.floquet_max[f] < 1.0 ? 1.0 : 0.0)
-                                                                     : kNan});
+          periodic.insert(periodic.end(),
+                          {level.floquet_max[f],
+                           std::isfinite(level.floquet_max[f]) ? (level.floquet_max[f] < 1.0 ? 1.0 : 0.0) : kNan});
         row.insert(row.end(), periodic.begin(), periodic.end());
         std::vector<double> own = {static_cast<double>(i + 1), frequencies[f]};
         for (Index r = 0; r < nr; ++r) own.push_back(level.amplitude(i, r));
@@ -211,11 +211,13 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     // look like a peak (or hide one) and would be checked as if it were the answer.
     const auto require_steady = [&](size_t kind, Index at, double f) {
       for (Index i = std::max<Index>(at - 1, 0); i <= std::min<Index>(at + 1, nf - 1); ++i)
-        if (!level.steady[static_cast<size_t>(i)] && shooting)
+        if (level.steady[static_cast<size_t>(i)])
+          continue;
+        else if (shooting)
           throw SolverError(fmt::format("time analysis at Fe = {:g} N: the {} rests on {:.4f} Hz, where {}",
                                         level.force, kinds[kind] == "peak" ? "peak" : kinds[kind] + " peak",
                                         frequencies[static_cast<size_t>(i)], level.failure[static_cast<size_t>(i)]));
-        else if (!level.steady[static_cast<size_t>(i)])
+        else
           throw SolverError(fmt::format(
               "time integration at Fe = {:g} N: the {} ({:.4f} Hz) rests on {:.4f} Hz, which did not reach "
               "the steady state within {} periods (cycle-to-cycle change above {:g}); raise max_cycles or "

@@ -73,11 +73,11 @@ TimeHistoryRecord periodic_history(const PreparedHbm& p, const TimeSpec& spec) {
   h.displacement.resize(h.steps + 1, nr);
   h.contacts.assign(s.steady.contacts.size(), {});
   for (int k = 0; k <= h.steps; ++k) {
-    const int in_period = k % n_t;
+    const int sample = k > 0 && k % n_t == 0 ? n_t : k % n_t;  // a period's end closes its loop
     h.time.push_back(kTwoPi * k / (omega * n_t));
-    h.displacement.row(k) = s.samples.row(in_period == 0 && k > 0 ? n_t : in_period);
+    h.displacement.row(k) = s.samples.row(sample);
     for (size_t c = 0; c < h.contacts.size(); ++c)
-      h.contacts[c].push_back(s.steady.contacts[c][static_cast<size_t>(in_period == 0 && k > 0 ? n_t : in_period)]);
+      h.contacts[c].push_back(s.steady.contacts[c][static_cast<size_t>(sample)]);
   }
   h.converged = true;
   return rec;

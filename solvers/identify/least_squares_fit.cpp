@@ -4,12 +4,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <mutex>
 #include <numeric>
 #include <random>
-#include <thread>
+
+#include "common/parallel_indices.hpp"
 
 namespace bb {
 namespace {
@@ -237,8 +237,8 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     for (size_t i = 0; i < n; ++i) run.x[i] = std::log(starts[s][i]);
     ceres::Problem problem;
     build(run.x, problem, &run.evaluations);
-    IterationTrace trace(locked_progress, run.history, static_cast<int>(s + 1),
-                         static_cast<int>(starts.size()), cal.max_iterations);
+    IterationTrace trace(locked_progress, run.history, static_cast<int>(s + 1), static_cast<int>(starts.size()),
+                         cal.max_iterations);
     ceres::Solver::Options o = options;
     o.callbacks.push_back(&trace);
     ceres::Solver::Summary summary;
@@ -253,19 +253,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     run.message = summary.message;
     run.brief = summary.BriefReport();
   };
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const size_t workers = std::min(starts.size(), static_cast<size_t>(cal.threads > 0 ? cal.threads : cores));
-  if (workers <= 1) {
-    for (size_t s = 0; s < starts.size(); ++s) run_start(s);
-  } else {
-    std::atomic<size_t> next{0};
-    std::vector<std::thread> pool;
-    for (size_t w = 0; w < workers; ++w)
-      pool.emplace_back([&] {
-        for (size_t s = next++; s < starts.size(); s = next++) run_start(s);
-      });
-    for (std::thread& t : pool) t.join();
-  }
+  for_each_index(starts.size(), worker_count(starts.size(), cal.threads), run_start);
   std::vector<double> x;
   std::string message;
   for (size_t s = 0; s < starts.size(); ++s) {
@@ -291,8 +279,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
   if (starts.size() > 1) warn_other_minima(out, n);
   ceres::Problem problem;
-  int covariance_evaluations = 0;
-  build(x, problem, &covariance_evaluations);  // at the chosen optimum, for the covariance
+  build(x, problem, &out.residual_evaluations);  // at the chosen optimum, for the covariance
   out.values.resize(n);
   for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
   add_covariance(problem, x, cal, out);

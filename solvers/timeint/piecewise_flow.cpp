@@ -1,6 +1,7 @@
 #include "timeint/piecewise_flow.hpp"
 
 #include <fmt/format.h>
+#include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
-#include <unsupported/Eigen/MatrixFunctions>
 
 namespace bb::timeint {
 
@@ -107,10 +107,6 @@ PiecewiseFlow::PiecewiseFlow(const hbm::HbmModel& model, double omega_rad_s, dou
   mass_inverse_ = lu.inverse();
 }
 
-const MatrixXd& PiecewiseFlow::generator(const std::vector<ContactState>& modes) const {
-  return mode_data(modes).a;
-}
-
 const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<ContactState>& modes) const {
   const auto found = generators_.find(modes);
   if (found != generators_.end()) return found->second;
@@ -146,14 +142,8 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
   a.block(p, one + 2, n_, 1) = -mass_inverse_ * model_.harmonic_load.imag() / w2;
   a(one + 1, one + 2) = -1.0;  // (cos theta)' = -sin theta
   a(one + 2, one + 1) = 1.0;
-  // Pieces of at most 1 rad of the fastest motion: an event function then turns at most once in one.
-  const double fastest =
-      Eigen::EigenSolver<MatrixXd>(a.topLeftCorner(2 * n_, 2 * n_), false).eigenvalues().cwiseAbs().maxCoeff();
-  const int pieces = fastest * step_ > 1.0 ? static_cast<int>(std::ceil(fastest * step_)) : 1;
   Generator g;
   g.a = std::move(a);
-  g.piece = step_ / pieces;
-  g.piece_exponential = (g.a * g.piece).exp();
   g.events = events(modes);
   const Eigen::EigenSolver<MatrixXd> solver(g.a, true);
   if (solver.info() == Eigen::Success) {
@@ -162,6 +152,14 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
     g.basis.compute(g.vectors);
     g.spectral = g.basis.rcond() > 1e-12;
     for (const Event& ev : g.events) g.modal.push_back(ev.row.cast<std::complex<double>>() * g.vectors);
+  }
+  if (!g.spectral) {
+    // Pieces of at most 1 rad of the fastest motion: an event function then turns at most once in one.
+    const double fastest =
+        Eigen::EigenSolver<MatrixXd>(g.a.topLeftCorner(2 * n_, 2 * n_), false).eigenvalues().cwiseAbs().maxCoeff();
+    const int pieces = fastest * step_ > 1.0 ? static_cast<int>(std::ceil(fastest * step_)) : 1;
+    g.piece = step_ / pieces;
+    g.piece_exponential = (g.a * g.piece).exp();
   }
   return generators_.emplace(modes, std::move(g)).first->second;
 }
@@ -230,7 +228,8 @@ void PiecewiseFlow::settle(FlowState& s) const {
       const double u = c.tangential.dot(s.q) - c.tangential_offset;
       const double trial = law.kt * (u - s.w[k]);
       // On the limit to rounding: kt times the rounding of u - w, which a stiff contact makes large.
-      const double limit = law.mu * normal, near = limit * (1.0 - 1e-12) - 1e-14 * law.kt * (std::abs(u) + std::abs(s.w[k]));
+      const double limit = law.mu * normal,
+                   near = limit * (1.0 - 1e-12) - 1e-14 * law.kt * (std::abs(u) + std::abs(s.w[k]));
       const auto rate = [&](ContactState slip) { return slider_row(k, slip).dot(s.p); };
       if (trial > limit || (trial >= near && rate(ContactState::slip_positive) > 0.0))
         m = ContactState::slip_positive;
@@ -374,8 +373,7 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
       if (jacobian) {
         const double closing_rate = c.normal.dot(s.p);
         RowVectorXd row = c.tangential * jacobian->topRows(n_);
-        if (closing_rate > 0.0)
-          row -= c.tangential.dot(s.p) / closing_rate * (c.normal * jacobian->topRows(n_));
+        if (closing_rate > 0.0) row -= c.tangential.dot(s.p) / closing_rate * (c.normal * jacobian->topRows(n_));
         jacobian->row(2 * n_ + k) = row;
       }
     }

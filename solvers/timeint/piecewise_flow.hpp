@@ -79,7 +79,6 @@ class PiecewiseFlow {
     contact::ContactState next;
     Eigen::RowVectorXd row;
   };
-  const Eigen::MatrixXd& generator(const std::vector<contact::ContactState>& modes) const;  // A_m, cached
   Eigen::VectorXd pack(const FlowState& s) const;
   void unpack(const Eigen::VectorXd& z, FlowState& s) const;
   std::vector<Event> events(const std::vector<contact::ContactState>& modes) const;
@@ -96,15 +95,15 @@ class PiecewiseFlow {
   Eigen::MatrixXd mass_inverse_;
   struct Generator {
     Eigen::MatrixXd a;
-    // Without a usable modal basis, pieces of at most 1 rad of the fastest motion.
+    // Without a usable modal basis (spectral false), pieces of at most 1 rad of the fastest motion.
     double piece = 0.0;
-    Eigen::MatrixXd piece_exponential;  // exp(a piece)
+    Eigen::MatrixXd piece_exponential;                // exp(a piece)
     mutable std::map<int, Eigen::MatrixXd> halvings;  // exp(a step / 2^k)
     std::vector<Event> events;
     // a = V diag(lambda) V^-1 where V is well conditioned: event functions then cost O(size) a value.
-    Eigen::VectorXcd lambda;                  // eigenvalues
-    Eigen::MatrixXcd vectors;                 // V
-    std::vector<Eigen::RowVectorXcd> modal;   // each event's row times V
+    Eigen::VectorXcd lambda;                 // eigenvalues
+    Eigen::MatrixXcd vectors;                // V
+    std::vector<Eigen::RowVectorXcd> modal;  // each event's row times V
     Eigen::PartialPivLU<Eigen::MatrixXcd> basis;
     bool spectral = false;
   };

@@ -72,9 +72,7 @@ Period one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int m
   return out;
 }
 
-double scale_of(const PiecewiseFlow& flow, const VectorXd& x) {
-  return x.head(2 * flow.dofs()).cwiseAbs().maxCoeff();
-}
+double scale_of(const PiecewiseFlow& flow, const VectorXd& x) { return x.head(2 * flow.dofs()).cwiseAbs().maxCoeff(); }
 
 // R = x(2 pi) - x(0), free sliders held.
 VectorXd residual(const PiecewiseFlow& flow, const Period& p, const VectorXd& x) {
@@ -122,7 +120,8 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
   for (int k = 0; k <= n_t; ++k) {
     if (k > 0) flow.advance(s, kTwoPi * k / n_t, nullptr, o.max_events, log, o.dofs, &out.largest);
     for (Index j = 0; j < nd; ++j) samples(k, j) = s.q[o.dofs[static_cast<size_t>(j)]];
-    for (Index c = 0; c < flow.contacts(); ++c) out.steady.contacts[static_cast<size_t>(c)].push_back(flow.sample(s, c));
+    for (Index c = 0; c < flow.contacts(); ++c)
+      out.steady.contacts[static_cast<size_t>(c)].push_back(flow.sample(s, c));
   }
   fill_harmonics({samples.topRows(n_t)}, o.harmonics, out.steady);
 }

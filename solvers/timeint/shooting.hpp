@@ -27,25 +27,25 @@ struct ShootingOptions {
   // Converged when max |x(2 pi) - x(0)|, or a Newton correction of q and dq/dtheta (at the rounding
   // floor), is at most tolerance * max(|q|, |dq/dtheta|) at the start [m].
   double tolerance = 1e-9;
-  int max_iterations = 40;       // Newton iterations
-  int warmup_periods = 20;       // without a start: periods marched from the static state first
-  int max_events = 100000;       // transitions in one period before the flow is declared chattering
-  bool floquet = false;          // multipliers and the stability verdict
-  StaticOptions initial{};       // the static state a run without a start begins from
+  int max_iterations = 40;  // Newton iterations
+  int warmup_periods = 20;  // without a start: periods marched from the static state first
+  int max_events = 100000;  // transitions in one period before the flow is declared chattering
+  bool floquet = false;     // multipliers and the stability verdict
+  StaticOptions initial{};  // the static state a run without a start begins from
 };
 
 struct ShootingResult {
   // coefficients, amplitude, phase, contacts (steps_per_period + 1 samples), converged, failure;
   // cycles = periods integrated, total_iterations = Newton iterations.
   SteadyState steady;
-  Eigen::MatrixXd samples;     // (steps_per_period + 1) x reported DOFs: q at the sub-interval ends [m]
-  Eigen::VectorXd largest;     // per reported DOF, max |q_d| over the period (extremes located) [m]
-  double residual = 0.0;       // max |x(2 pi) - x(0)| at the answer [m]
-  int transitions = 0;         // contact transitions over the period
-  Eigen::VectorXcd multipliers;  // with floquet: by decreasing modulus, free sliders left out
+  Eigen::MatrixXd samples;          // (steps_per_period + 1) x reported DOFs: q at the sub-interval ends [m]
+  Eigen::VectorXd largest;          // per reported DOF, max |q_d| over the period (extremes located) [m]
+  double residual = 0.0;            // max |x(2 pi) - x(0)| at the answer [m]
+  int transitions = 0;              // contact transitions over the period
+  Eigen::VectorXcd multipliers;     // with floquet: by decreasing modulus, free sliders left out
   double largest_multiplier = 0.0;  // |multiplier| max; NaN without floquet
-  bool stable = false;         // largest_multiplier < 1 (with floquet)
-  FlowState start;             // the periodic state at theta = 0 (a start for the next frequency)
+  bool stable = false;              // largest_multiplier < 1 (with floquet)
+  FlowState start;                  // the periodic state at theta = 0 (a start for the next frequency)
 };
 
 // Throws std::invalid_argument on invalid options; a run that does not converge says so in

@@ -106,7 +106,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()),
                          static_cast<double>(level.path.corrector_iterations),
                          static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
-                         static_cast<double>(level.path.jumps), level.path.converged ? 1.0 : 0.0,
+                         static_cast<double>(level.path.jumps), static_cast<double>(level.path.corners),
+                         level.path.converged ? 1.0 : 0.0,
                          static_cast<double>(level.samples), static_cast<double>(level.harmonics), level.seconds});
   }
   std::vector<std::string> peak_columns = {"level", "fe_n"};
@@ -138,7 +139,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   o.tables.emplace("sweep_cost",
                    table_from_rows("sweep_cost",
                                    {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
-                                    "turning_points", "jumps", "reached_end", "samples", "harmonics", "seconds"},
+                                    "turning_points", "jumps", "corners", "reached_end", "samples", "harmonics",
+                                    "seconds"},
                                    cost_rows));
 }
 

@@ -42,28 +42,41 @@ namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Traces the branch by pseudo-arclength from the path's last point past grid[i] to grid[i + 1] (or
-// the last grid point), through a fold if there is one, and appends the traced points. Returns the
-// grid index reached (the sweep resumes after it), or i when the continuation failed too.
-int bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<double>& grid, int i,
-                        hbm::ContinuationResult& path) {
-  const int target = std::min(i + 1, static_cast<int>(grid.size()) - 1);
+// Traces the branch by pseudo-arclength from the path's last point to grid[i], through a fold if
+// there is one, and appends the traced points, the last solved at grid[i]. Returns true when the
+// continuation reached grid[i].
+bool bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<double>& grid, int i, double max_step,
+                         hbm::ContinuationResult& path) {
   hbm::ContinuationOptions c;
   c.omega_start = path.points.back().omega;
-  c.omega_end = kTwoPi * grid[static_cast<size_t>(target)];
+  c.omega_end = kTwoPi * grid[static_cast<size_t>(i)];
   c.initial = path.points.back().x;
   c.initial_step = 0.01 * (c.omega_end - c.omega_start) / c.omega_start;  // a hundredth of the gap, scaled
-  c.max_step = 0.25 * (c.omega_end - c.omega_start) / c.omega_start;
+  // A fold's branch may run back far below the gap (Table XI at 60 N, H = 5: 1.5 Hz, to 171.7 Hz)
+  // before it turns forward again, along an arc far longer than the gap: the sweep's largest step.
+  c.max_step = std::max(max_step, 0.25 * (c.omega_end - c.omega_start) / c.omega_start);
   c.min_step = 1e-4 * c.initial_step;
-  c.max_points = 2000;
+  c.omega_back = c.omega_start - 0.5 * kTwoPi * grid.front();  // to half the band's start: a branch, not a blow-up
+  c.max_points = 5000;
   const hbm::ContinuationResult bridge = hbm::continue_in_frequency(system, c);
   path.corrector_iterations += bridge.corrector_iterations;
   path.rejected_steps += bridge.rejected_steps;
-  if (!bridge.converged || bridge.points.size() < 2) return i;
+  if (!bridge.converged || bridge.points.size() < 2) return false;
   path.turning_points += bridge.turning_points;
   path.jumps += bridge.jumps;
+  path.corners += bridge.corners;
   path.points.insert(path.points.end(), bridge.points.begin() + 1, bridge.points.end());
-  return target;
+  // The bridge ends past the grid frequency: solved there from the last arc interpolated, so that
+  // the table holds every frequency of the grid.
+  const hbm::ContinuationPoint& a = path.points[path.points.size() - 2];
+  const hbm::ContinuationPoint& b = path.points.back();
+  if (b.omega != c.omega_end && b.omega != a.omega) {
+    const double t = (c.omega_end - a.omega) / (b.omega - a.omega);
+    hbm::HbmSolution s = hbm::solve_at_frequency(system, c.omega_end, Eigen::VectorXd(a.x + t * (b.x - a.x)));
+    path.corrector_iterations += s.iterations;
+    if (s.converged) path.points.back() = {c.omega_end, std::move(s.x), s.residual, s.iterations, 0.0, 1.0};
+  }
+  return true;
 }
 
 // What the point scope compares between two H at one frequency: each response's largest
@@ -214,15 +227,14 @@ void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& s
     report(omega, i, iterations);
     if (!s.converged) {
       // A fold (the branch turns back) or a kink the grid cannot step over: trace the branch by
-      // arclength from the last converged point to the next grid frequency, through the fold.
+      // arclength from the last converged point to this frequency, through the fold.
       const size_t before = path.points.size();
-      if (const int reached = bridge_by_arclength(systems.at(h_last), grid, i, path); reached > i) {
+      if (bridge_by_arclength(systems.at(h_last), grid, i, spec.sweep.max_step, path)) {
         if (per_point)
           for (size_t k = before; k < path.points.size(); ++k) {
             level.point_harmonics.push_back(h_last);
             level.point_change.push_back(kNaN);
           }
-        i = reached;
         continue;
       }
       failed.push_back(omega / kTwoPi);

@@ -6,6 +6,7 @@
 #include <any>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -201,6 +202,37 @@ class StepControl {
   int jumps_ = 0;
 };
 
+// A corner of the path: R is piecewise smooth, and where a contact phase appears (a slip or
+// lift-off interval of zero length) the branch can leave the kink at any angle, back in frequency
+// too (a non-smooth fold). Beyond a turn of more than 90 degrees no point on the corrector's plane
+// normal to the old tangent lies on the new branch, however small the step. The tangent of the
+// piece beyond the kink comes from the Jacobian at y + step t; both its orientations are tried,
+// and a point is accepted only next to y (within 3 steps) and not back on the piece behind. Only
+// once the step has shrunk well below the largest (a hundredth): at longer steps the path's own
+// curvature, not a kink, may have failed the corrector, and a turn there could lead back.
+struct Turn {
+  Corrected corrected;
+  VectorXd tangent;
+};
+
+std::optional<Turn> turn_at_corner(const HarmonicBalance& s, const ScaledPath& path, const VectorXd& y,
+                                   const VectorXd& tangent, double step, int max_iterations) {
+  const PathPoint beyond = path.at(y + step * tangent);
+  if (!beyond.ok) return std::nullopt;
+  const VectorXd piece = path.tangent(beyond.jacobian, tangent);
+  if (piece.size() == 0 || piece.dot(tangent) > 0.999) return std::nullopt;  // no corner within the step
+  for (const double sign : {-1.0, 1.0}) {
+    const VectorXd along = sign * piece;
+    Corrected c = correct(s, path, y + step * along, along, step, max_iterations);
+    if (!c.converged || (c.y - y).norm() > 3.0 * step) continue;
+    VectorXd t = path.tangent(c.jacobian, along);
+    if (t.size() == 0 || ((c.y - y).dot(tangent) < 0.0 && std::abs(t.dot(tangent)) > 0.99))
+      continue;  // back on the piece the path came along
+    return Turn{std::move(c), std::move(t)};
+  }
+  return std::nullopt;
+}
+
 // x_ref of the arclength scaling from the first solution.
 double amplitude_scale(const ContinuationOptions& o, const VectorXd& first, Index m, Index nc) {
   double x_ref = o.amplitude_scale;
@@ -245,6 +277,7 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
 
   StepControl control(o);
   const double w_end_scaled = o.omega_end / o.omega_start;
+  const double back_limit = o.omega_back > 0.0 ? o.omega_back / o.omega_start : 0.5 * std::abs(w_end_scaled - 1.0);
   while (true) {
     if (static_cast<int>(result.points.size()) >= o.max_points) {
       result.failure = fmt::format("stopped after {} points at omega = {:.6g} rad/s (|R| = {:.3g} N) before omega_end",
@@ -252,10 +285,21 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
       break;
     }
     const double step = control.step();
-    const Corrected c = correct(s, path, y + step * tangent, tangent, step, o.max_corrector_iterations);
+    Corrected c = correct(s, path, y + step * tangent, tangent, step, o.max_corrector_iterations);
     result.corrector_iterations += c.iterations;
+    VectorXd t;
     if (!c.converged) {
       ++result.rejected_steps;
+      if (std::optional<Turn> turn = step <= 1e-2 * o.max_step
+                                         ? turn_at_corner(s, path, y, tangent, step, o.max_corrector_iterations)
+                                         : std::nullopt) {
+        result.corrector_iterations += turn->corrected.iterations;
+        ++result.corners;
+        c = std::move(turn->corrected);
+        t = std::move(turn->tangent);
+      }
+    }
+    if (!c.converged) {
       if (control.after_failure()) continue;
       result.failure = fmt::format(
           "corrector failed with step below min_step {:.3g} near omega = {:.6g} rad/s (|R| = {:.3g} N, target {:.3g} "
@@ -263,7 +307,7 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
           o.min_step, result.points.back().omega, std::isfinite(c.norm) ? c.norm : -1.0, s.residual_tolerance());
       break;
     }
-    const VectorXd t = path.tangent(c.jacobian, tangent);
+    if (t.size() == 0) t = path.tangent(c.jacobian, tangent);
     if (t.size() == 0) {
       ++result.rejected_steps;
       if (control.shrink()) continue;
@@ -283,8 +327,9 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
       result.converged = true;
       break;
     }
-    if (direction * (y[m] - 1.0) < -0.5 * std::abs(w_end_scaled - 1.0)) {
-      result.failure = fmt::format("the path turned back past omega_start (omega = {:.6g} rad/s)", w);
+    if (direction * (y[m] - 1.0) < -back_limit) {
+      result.failure = fmt::format("the path turned back past omega_start (omega = {:.6g} rad/s, |R| = {:.3g} N)", w,
+                                   c.norm);
       break;
     }
     control.after_success(c.iterations);

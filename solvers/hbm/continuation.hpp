@@ -2,10 +2,11 @@
 // pseudo-arclength corrector in (x, omega) (Seydel, Practical Bifurcation and Stability Analysis,
 // 3rd ed., section 4.4). Units: SI.
 //
-// Known limit: R is only piecewise smooth (AFT samples switch between stick, slip and lift-off).
-// Where the path meets a kink at a large angle (grazing of a stiff impact, kn >> k) the corrector
-// can stall on the kink; after the step falls below min_step a few larger steps over it are tried,
-// and if they fail the result says so (converged == false, with omega and |R|).
+// R is only piecewise smooth (stick, slip and lift-off switch), so the path has corners. Where the
+// corrector fails at a small step, the tangent of the piece beyond the kink is tried in both
+// orientations (a corner can turn the path back in frequency: a non-smooth fold); where that fails
+// the step shrinks, and below min_step a few larger steps over the kink are tried; if they fail
+// the result says so (converged == false, with omega and |R|).
 #pragma once
 #include <Eigen/Dense>
 
@@ -31,6 +32,9 @@ struct ContinuationOptions {
   // Arclength is measured in scaled variables (x / x_ref, omega / omega_start), x_ref the norm of the
   // harmonic part of the first solution (or amplitude_scale when > 0).
   double amplitude_scale = 0.0;
+  // How far the path may run back past omega_start before it stops as failed [rad/s]; 0: half the
+  // distance to omega_end.
+  double omega_back = 0.0;
   double initial_step = 0.02;
   double min_step = 1e-6;  // below this after shrinking the continuation stops as failed
   double max_step = 0.5;
@@ -58,7 +62,8 @@ struct ContinuationResult {
   std::string failure;     // with |R| and omega when not converged
   int turning_points = 0;  // sign changes of d omega / ds along the path
   int corrector_iterations = 0, rejected_steps = 0;
-  int jumps = 0;  // points reached by stepping over a kink after the step fell below min_step
+  int jumps = 0;    // points reached by stepping over a kink after the step fell below min_step
+  int corners = 0;  // points reached by turning at a kink onto the piece beyond it
   double amplitude_scale = 0.0;
 };
 

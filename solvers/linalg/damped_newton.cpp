@@ -14,6 +14,16 @@ namespace {
 bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& step) {
   switch (how) {
     case NewtonStepSolve::minimum_norm: {
+      // A well-conditioned J has no null space, so its LU step is the minimum-norm step, at a
+      // fraction of the decomposition's cost (on Table XI at H = 7 the decomposition took a quarter
+      // of the sweeps' time).
+      if (at.jacobian.rows() == at.jacobian.cols()) {
+        const Eigen::PartialPivLU<Eigen::MatrixXd> lu(at.jacobian);
+        if (lu.rcond() > 1e-10) {
+          step = lu.solve(-at.residual);
+          if (step.allFinite()) break;
+        }
+      }
       Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
       cod.setThreshold(1e-13);
       cod.compute(at.jacobian);

@@ -35,9 +35,10 @@ using NewtonSystem = std::function<NewtonPoint(const Eigen::VectorXd& x)>;
 
 // How J dx = -R is solved.
 enum class NewtonStepSolve {
-  // Complete orthogonal decomposition (rank threshold 1e-13): the minimum-norm step, which puts no
-  // component along a null space of J (a direction that leaves R unchanged) where a pivoted LU
-  // would put an arbitrary one.
+  // The minimum-norm step, which puts no component along a null space of J (a direction that
+  // leaves R unchanged) where a pivoted LU would put an arbitrary one: by partial-pivot LU where J
+  // is square and its estimated reciprocal condition number exceeds 1e-10 (no null space), else
+  // by complete orthogonal decomposition (rank threshold 1e-13).
   minimum_norm,
   partial_pivot_lu,  // fastest; J assumed invertible (a singular J gives a non-finite step)
   full_pivot_lu,     // rank-revealing: J not invertible stops the iteration as singular

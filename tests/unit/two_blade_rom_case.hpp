@@ -12,6 +12,7 @@ struct TwoBladeRomCase {
   std::string range = "[172.0, 182.0]";  // frequency_hz
   std::string step = "0.05";
   std::string samples = "64";
+  std::string harmonics = "1";
   std::string tolerance;  // empty: the default
   bool ip_oop = false;
   std::string analysis_extra;  // more [analysis] keys
@@ -20,7 +21,7 @@ struct TwoBladeRomCase {
 
 inline std::string two_blade_rom_case_text(const TwoBladeRomCase& c) {
   return "[case]\nname = \"two_blade_rom\"\n[analysis]\ntype = \"hbm\"\nfrequency_hz = " + c.range +
-         "\nstep_hz = " + c.step + "\nharmonics = 1\ntime_samples = " + c.samples + "\n" +
+         "\nstep_hz = " + c.step + "\nharmonics = " + c.harmonics + "\ntime_samples = " + c.samples + "\n" +
          (c.tolerance.empty() ? "" : "tolerance = " + c.tolerance + "\n") +
          "modal_damping = 0.01\nforces = [{ dof = \"F.x\", amplitude = 1.0 }]\nforce_levels = " + c.levels +
          "\nresponses = [\"T2.x\", \"T1.x\"]\n" + (c.ip_oop ? "ip_oop = { left = \"T1.x\", right = \"T2.x\" }\n" : "") +

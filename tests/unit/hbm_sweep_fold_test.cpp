@@ -1,0 +1,83 @@
+// A grid sweep through a fold (analysis/hbm_grid_sweep.cpp, hbm/continuation.hpp): the Table XI
+// model at 80 N, H = 3, events AFT. At 183.646 Hz the branch turns back in frequency, runs back
+// to about 183.58 Hz and turns forward again (an S-shaped response with three solutions). The
+// arclength bridge used to stop when the path ran back more than half a grid step, and 183.65 Hz
+// was lost.
+#include <gtest/gtest.h>
+
+
+#include "analysis/run_analysis.hpp"
+#include "cases/case_spec.hpp"
+#include "model/build_model.hpp"
+#include "temp_folder.hpp"
+#include "two_blade_rom_case.hpp"
+
+namespace bb {
+namespace {
+
+class HbmSweepFold : public test::TempFolderTest {};
+
+double cell(const ResultTable& t, const std::string& column, Eigen::Index row) {
+  const auto c = t.column_index(column);
+  EXPECT_TRUE(c.has_value()) << column;
+  return c ? t.values(row, static_cast<Eigen::Index>(*c)) : 0.0;
+}
+
+TEST_F(HbmSweepFold, TheGridSweepFollowsAFoldBackAndForwardAndSolvesEveryGridFrequency) {
+  test::TwoBladeRomCase c;
+  c.kt = "8.090e7";
+  c.mu = "0.7231";
+  c.levels = "[80.0]";
+  c.range = "[183.3, 183.75]";
+  c.harmonics = "3";
+  c.samples = "32";
+  c.analysis_extra = "aft = \"events\"\n";
+  const std::filesystem::path file = write(test::two_blade_rom_case_text(c));
+  const CaseSpec spec = parse_case_table(read_case_table(file), file);
+  const AnalysisResults r = run_analysis(spec.analysis, build_model(spec.model));
+  const ResultTable& cost = r.tables.at("sweep_cost");
+  EXPECT_EQ(cell(cost, "reached_end", 0), 1.0);
+  EXPECT_GE(cell(cost, "turning_points", 0), 2.0);  // back at the kink, forward again below it
+  const ResultTable& frf = r.tables.at("frf_80");
+  const auto f = frf.column_index("frequency_hz");
+  ASSERT_TRUE(f.has_value());
+  const Eigen::VectorXd hz = frf.values.col(static_cast<Eigen::Index>(*f));
+  // Every grid frequency is on the path, and the path ran back below the kink.
+  for (const double grid : {183.3, 183.5, 183.6, 183.65, 183.7, 183.75})
+    EXPECT_LT((hz.array() - grid).abs().minCoeff(), 1e-9) << grid;
+  const Eigen::Index last = hz.size() - 1;
+  EXPECT_LT((hz.head(last).array() - hz.tail(last).array()).minCoeff(), -0.03);  // ran back by more than a half step
+  const auto residual = frf.column_index("residual_n");
+  ASSERT_TRUE(residual.has_value());
+  EXPECT_LT(frf.values.col(static_cast<Eigen::Index>(*residual)).maxCoeff(), 1e-6);  // tolerance 1e-9 x 360 N
+}
+
+// At 60 N, H = 5, the branch meets a kink near 173.217 Hz (a slip phase appears) and turns back in
+// frequency at it by about 120 degrees: no point on the corrector's plane normal to the old tangent
+// lies on the branch beyond, however small the step. The bridge turns the corner, runs back to
+// about 171.7 Hz and forward again past 173.3 Hz. Before corners were turned the sweep lost 6
+// frequencies here.
+TEST_F(HbmSweepFold, TheBridgeTurnsAtACornerWhereTheBranchRunsBackInFrequency) {
+  test::TwoBladeRomCase c;
+  c.kt = "8.090e7";
+  c.mu = "0.7231";
+  c.levels = "[60.0]";
+  c.range = "[173.1, 173.3]";
+  c.harmonics = "5";
+  c.samples = "44";
+  c.analysis_extra = "aft = \"events\"\n";
+  const std::filesystem::path file = write(test::two_blade_rom_case_text(c));
+  const CaseSpec spec = parse_case_table(read_case_table(file), file);
+  const AnalysisResults r = run_analysis(spec.analysis, build_model(spec.model));
+  const ResultTable& cost = r.tables.at("sweep_cost");
+  EXPECT_EQ(cell(cost, "reached_end", 0), 1.0);
+  EXPECT_GE(cell(cost, "corners", 0), 1.0);
+  EXPECT_GE(cell(cost, "turning_points", 0), 4.0);
+  const ResultTable& frf = r.tables.at("frf_60");
+  const auto f = frf.column_index("frequency_hz");
+  ASSERT_TRUE(f.has_value());
+  EXPECT_LT(frf.values.col(static_cast<Eigen::Index>(*f)).minCoeff(), 172.0);
+}
+
+}  // namespace
+}  // namespace bb

@@ -53,10 +53,12 @@ bool bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<d
   c.initial = path.points.back().x;
   c.initial_step = 0.01 * (c.omega_end - c.omega_start) / c.omega_start;  // a hundredth of the gap, scaled
   // A fold's branch may run back far below the gap (Table XI at 60 N, H = 5: 1.5 Hz, to 171.7 Hz)
-  // before it turns forward again, along an arc far longer than the gap: the sweep's largest step.
+  // before it turns forward again, along an arc far longer than the gap: the sweep's largest step,
+  // back to the band's start (where a stuck contact's free slider leaves J singular, a path can
+  // wander along its null space far below it).
   c.max_step = std::max(max_step, 0.25 * (c.omega_end - c.omega_start) / c.omega_start);
   c.min_step = 1e-4 * c.initial_step;
-  c.omega_back = c.omega_start - 0.5 * kTwoPi * grid.front();  // to half the band's start: a branch, not a blow-up
+  c.omega_back = std::max(c.omega_start - kTwoPi * grid.front(), 1e-3 * c.omega_start);  // within the band
   c.max_points = 5000;
   const hbm::ContinuationResult bridge = hbm::continue_in_frequency(system, c);
   path.corrector_iterations += bridge.corrector_iterations;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "common/errors.hpp"
 
@@ -129,13 +130,19 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
     out.closed = out.closed && r.closed;
     // g = a_t^T T + a_n^T N, per coefficient.
     force += at.transpose() * r.tangential.transpose() + an.transpose() * r.normal.transpose();
-    // dg_(j,i)/dx_(l,p) = at_i (dT/du_jl at_p + dT/dv_jl an_p) + an_i dN/dv_jl an_p.
-    const Eigen::MatrixXd tt = at.transpose() * at, tn = at.transpose() * an, nn = an.transpose() * an;
+    // dg_(j,i)/dx_(l,p) = at_i (dT/du_jl at_p + dT/dv_jl an_p) + an_i dN/dv_jl an_p, only on the
+    // few contact DOFs the element moves (its support): a damper contact moves 4-5 of Table XI's 9.
+    std::vector<Index> support;
+    for (Index i = 0; i < nc; ++i)
+      if (at[i] != 0.0 || an[i] != 0.0) support.push_back(i);
     for (Index j = 0; j < m; ++j)
       for (Index l = 0; l < m; ++l) {
         const double tu = r.dtangential_du(j, l), tv = r.dtangential_dv(j, l), nv = r.dnormal_dv(j, l);
         if (tu == 0.0 && tv == 0.0 && nv == 0.0) continue;
-        out.jacobian.block(j * nc, l * nc, nc, nc) += tu * tt + tv * tn + nv * nn;
+        for (const Index p : support) {
+          const double dp_t = tu * at[p] + tv * an[p], dp_n = nv * an[p];
+          for (const Index i : support) out.jacobian(j * nc + i, l * nc + p) += at[i] * dp_t + an[i] * dp_n;
+        }
       }
     out.contacts.push_back(std::move(r));
   }

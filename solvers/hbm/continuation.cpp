@@ -216,7 +216,7 @@ struct Turn {
 };
 
 std::optional<Turn> turn_at_corner(const HarmonicBalance& s, const ScaledPath& path, const VectorXd& y,
-                                   const VectorXd& tangent, double step, int max_iterations) {
+                                   const VectorXd& tangent, double step, int max_iterations, int& iterations) {
   const PathPoint beyond = path.at(y + step * tangent);
   if (!beyond.ok) return std::nullopt;
   const VectorXd piece = path.tangent(beyond.jacobian, tangent);
@@ -224,6 +224,7 @@ std::optional<Turn> turn_at_corner(const HarmonicBalance& s, const ScaledPath& p
   for (const double sign : {-1.0, 1.0}) {
     const VectorXd along = sign * piece;
     Corrected c = correct(s, path, y + step * along, along, step, max_iterations);
+    iterations += c.iterations;
     if (!c.converged || (c.y - y).norm() > 3.0 * step) continue;
     VectorXd t = path.tangent(c.jacobian, along);
     if (t.size() == 0 || ((c.y - y).dot(tangent) < 0.0 && std::abs(t.dot(tangent)) > 0.99))
@@ -276,6 +277,7 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
   if (o.progress) o.progress({0, o.omega_start, path.amplitude(first.x), 0.0, first.iterations});
 
   StepControl control(o);
+  int corner_tries = 0;  // since the last accepted point
   const double w_end_scaled = o.omega_end / o.omega_start;
   const double back_limit = o.omega_back > 0.0 ? o.omega_back / o.omega_start : 0.5 * std::abs(w_end_scaled - 1.0);
   while (true) {
@@ -290,10 +292,14 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
     VectorXd t;
     if (!c.converged) {
       ++result.rejected_steps;
-      if (std::optional<Turn> turn = step <= 1e-2 * o.max_step
-                                         ? turn_at_corner(s, path, y, tangent, step, o.max_corrector_iterations)
-                                         : std::nullopt) {
-        result.corrector_iterations += turn->corrected.iterations;
+      // Twice per stall at most: the first small steps reach past a kink next to y; more tries
+      // cost two correctors each where the stall has another cause.
+      std::optional<Turn> turn;
+      if (step <= 1e-2 * o.max_step && corner_tries < 2) {
+        ++corner_tries;
+        turn = turn_at_corner(s, path, y, tangent, step, o.max_corrector_iterations, result.corrector_iterations);
+      }
+      if (turn) {
         ++result.corners;
         c = std::move(turn->corrected);
         t = std::move(turn->tangent);
@@ -333,6 +339,7 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
       break;
     }
     control.after_success(c.iterations);
+    corner_tries = 0;
   }
   return result;
 }

@@ -334,8 +334,8 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
       break;
     }
     if (direction * (y[m] - 1.0) < -back_limit) {
-      result.failure = fmt::format("the path turned back past omega_start (omega = {:.6g} rad/s, |R| = {:.3g} N)", w,
-                                   c.norm);
+      result.failure =
+          fmt::format("the path turned back past omega_start (omega = {:.6g} rad/s, |R| = {:.3g} N)", w, c.norm);
       break;
     }
     control.after_success(c.iterations);

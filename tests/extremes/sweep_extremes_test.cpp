@@ -1,12 +1,13 @@
 // The extremes matrix of tests/extremes/hbm_extremes_test.cpp carried to whole sweeps and to the
 // nonlinear modes: a blade tied to the ground by one Jenkins contact, kn = kt from 1e3 to 1e12 N/m,
-// mu 0-2, Fe 0.01-3000 N, zeta 1e-2 and 1e-5, swept over its stuck resonance at H = 1 and H = 7 (events AFT) (analysis level:
-// grid, arclength bridges, peaks), and its first nonlinear mode from 1e-8 to 1e-2 m kg^1/2. The
-// contract at every point: every path point is a converged, finite solve; a sweep that does not
-// reach its end says where and why; a peak is a converged solve or the run refuses it (the
-// analysis then stops with exit 3), and a peak next to a failed frequency is flagged doubtful; a
-// nonlinear-mode branch holds finite points with omega > 0 and kappa >= 0 (a friction contact and
-// viscous damping only dissipate), or stops with a reason. Units: SI.
+// mu 0-2, Fe 0.01-3000 N, zeta 1e-2 and 1e-5, swept over its stuck resonance at H = 1 and at H = 7
+// with the events AFT (analysis level: grid, arclength bridges, peaks), and its first nonlinear
+// mode from 1e-8 to 1e-2 m kg^1/2. The contract at every point: every path point is a converged,
+// finite solve; a sweep that does not reach its end says where and why; a peak is a converged
+// solve or the run refuses it (the analysis then stops with exit 3), and a peak next to a failed
+// frequency is flagged doubtful; a nonlinear-mode branch holds finite points with omega > 0 and
+// kappa >= 0 (a friction contact and viscous damping only dissipate), or stops with a reason.
+// Units: SI.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -65,8 +66,8 @@ int sweep_matrix(int harmonics, bool events) {
     spec.time_samples = events ? 0 : 64;
     spec.aft_events = events;
     spec.max_iterations = 20;
-    const std::string where = ::testing::PrintToString(std::vector<double>{c.k, c.mu, c.force, c.zeta}) +
-                              " H = " + std::to_string(harmonics);
+    const std::string where =
+        ::testing::PrintToString(std::vector<double>{c.k, c.mu, c.force, c.zeta}) + " H = " + std::to_string(harmonics);
     const HbmLevel level = sweep_hbm_level(p, spec, c.force, harmonics);
     for (const hbm::ContinuationPoint& pt : level.path.points) {
       EXPECT_TRUE(pt.x.allFinite() && std::isfinite(pt.omega) && std::isfinite(pt.residual)) << where;
@@ -101,8 +102,9 @@ int sweep_matrix(int harmonics, bool events) {
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("H = %d: sweeps %zu, reached the end %d, stopped with a reason %d, peaks refused %d, doubtful %d (%.1f s)\n",
-              harmonics, matrix().size(), reached, stopped, refused, doubtful, seconds);
+  std::printf(
+      "H = %d: sweeps %zu, reached the end %d, stopped with a reason %d, peaks refused %d, doubtful %d (%.1f s)\n",
+      harmonics, matrix().size(), reached, stopped, refused, doubtful, seconds);
   return reached;
 }
 

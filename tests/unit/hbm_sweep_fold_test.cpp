@@ -3,6 +3,8 @@
 // a grid step, and a non-smooth one where the branch turns back at a kink.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "model/build_model.hpp"
@@ -12,7 +14,23 @@
 namespace bb {
 namespace {
 
-class HbmSweepFold : public test::TempFolderTest {};
+class HbmSweepFold : public test::TempFolderTest {
+ protected:
+  // One force level of the model with the identified kt and mu, events AFT, at H harmonics.
+  AnalysisResults sweep(const std::string& level, const std::string& range, int harmonics, int samples) const {
+    test::TwoBladeRomCase c;
+    c.kt = "8.090e7";
+    c.mu = "0.7231";
+    c.levels = "[" + level + "]";
+    c.range = range;
+    c.harmonics = std::to_string(harmonics);
+    c.samples = std::to_string(samples);
+    c.analysis_extra = "aft = \"events\"\n";
+    const std::filesystem::path file = write(test::two_blade_rom_case_text(c));
+    const CaseSpec spec = parse_case_table(read_case_table(file), file);
+    return run_analysis(spec.analysis, build_model(spec.model));
+  }
+};
 
 double cell(const ResultTable& t, const std::string& column, Eigen::Index row) {
   const auto c = t.column_index(column);
@@ -20,29 +38,23 @@ double cell(const ResultTable& t, const std::string& column, Eigen::Index row) {
   return c ? t.values(row, static_cast<Eigen::Index>(*c)) : 0.0;
 }
 
+Eigen::VectorXd frequencies(const ResultTable& frf) {
+  const auto f = frf.column_index("frequency_hz");
+  EXPECT_TRUE(f.has_value());
+  return f ? Eigen::VectorXd(frf.values.col(static_cast<Eigen::Index>(*f))) : Eigen::VectorXd();
+}
+
 // 80 N, H = 3: at 183.646 Hz the branch turns back in frequency, runs back to about 183.58 Hz and
 // turns forward again (an S-shaped response with three solutions). The arclength bridge used to
 // stop when the path ran back more than half a grid step, and 183.65 Hz was lost.
 TEST_F(HbmSweepFold, TheGridSweepFollowsAFoldBackAndForwardAndSolvesEveryGridFrequency) {
-  test::TwoBladeRomCase c;
-  c.kt = "8.090e7";
-  c.mu = "0.7231";
-  c.levels = "[80.0]";
-  c.range = "[183.3, 183.75]";
-  c.harmonics = "3";
-  c.samples = "32";
-  c.analysis_extra = "aft = \"events\"\n";
-  const std::filesystem::path file = write(test::two_blade_rom_case_text(c));
-  const CaseSpec spec = parse_case_table(read_case_table(file), file);
-  const AnalysisResults r = run_analysis(spec.analysis, build_model(spec.model));
+  const AnalysisResults r = sweep("80.0", "[183.3, 183.75]", 3, 32);
   const ResultTable& cost = r.tables.at("sweep_cost");
   EXPECT_EQ(cell(cost, "reached_end", 0), 1.0);
-  EXPECT_GE(cell(cost, "turning_points", 0), 2.0);  // back at the kink, forward again below it
+  EXPECT_GE(cell(cost, "turning_points", 0), 2.0);  // back at the fold, forward again below it
   const ResultTable& frf = r.tables.at("frf_80");
-  const auto f = frf.column_index("frequency_hz");
-  ASSERT_TRUE(f.has_value());
-  const Eigen::VectorXd hz = frf.values.col(static_cast<Eigen::Index>(*f));
-  // Every grid frequency is on the path, and the path ran back below the kink.
+  const Eigen::VectorXd hz = frequencies(frf);
+  // Every grid frequency is on the path, and the path ran back below the fold.
   for (const double grid : {183.3, 183.5, 183.6, 183.65, 183.7, 183.75})
     EXPECT_LT((hz.array() - grid).abs().minCoeff(), 1e-9) << grid;
   const Eigen::Index last = hz.size() - 1;
@@ -58,26 +70,13 @@ TEST_F(HbmSweepFold, TheGridSweepFollowsAFoldBackAndForwardAndSolvesEveryGridFre
 // about 171.7 Hz and forward again past 173.3 Hz. Before corners were turned the sweep lost 6
 // frequencies here (173.25-173.5 Hz).
 TEST_F(HbmSweepFold, TheBridgeTurnsAtACornerWhereTheBranchRunsBackInFrequency) {
-  test::TwoBladeRomCase c;
-  c.kt = "8.090e7";
-  c.mu = "0.7231";
-  c.levels = "[60.0]";
-  c.range = "[171.5, 173.3]";
-  c.harmonics = "5";
-  c.samples = "44";
-  c.analysis_extra = "aft = \"events\"\n";
-  const std::filesystem::path file = write(test::two_blade_rom_case_text(c));
-  const CaseSpec spec = parse_case_table(read_case_table(file), file);
-  const AnalysisResults r = run_analysis(spec.analysis, build_model(spec.model));
+  const AnalysisResults r = sweep("60.0", "[171.5, 173.3]", 5, 44);
   const ResultTable& cost = r.tables.at("sweep_cost");
   EXPECT_EQ(cell(cost, "reached_end", 0), 1.0);
   EXPECT_GE(cell(cost, "corners", 0), 1.0);
   EXPECT_GE(cell(cost, "turning_points", 0), 4.0);
-  const ResultTable& frf = r.tables.at("frf_60");
-  const auto f = frf.column_index("frequency_hz");
-  ASSERT_TRUE(f.has_value());
-  const Eigen::VectorXd hz = frf.values.col(static_cast<Eigen::Index>(*f));
-  const Eigen::Index grid_points = 37;  // 171.5, 171.55, ..., 173.3
+  const Eigen::VectorXd hz = frequencies(r.tables.at("frf_60"));
+  const Eigen::Index grid_points = 37;     // 171.5, 171.55, ..., 173.3
   EXPECT_GT(hz.size(), grid_points + 50);  // the arc back and forth besides the grid (89 points)
   for (Eigen::Index i = 0; i < grid_points; ++i) {
     const double grid = 171.5 + 0.05 * static_cast<double>(i);

@@ -3,11 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <stdexcept>
+#include <string>
+#include <string_view>
+#include <system_error>
 
 #include "report/gnuplot.hpp"
 #include "report/html_page.hpp"
@@ -113,6 +117,30 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
   return draw(out_dir, stem, title, script);
 }
 
+// The file names of a case (model, mesh, measured data, references, cross-check) made relative
+// to `to` instead of the case's folder `from`, so that a copy written in `to` runs there.
+void rebase_file_names(toml::node& node, const fs::path& from, const fs::path& to) {
+  static constexpr std::array<std::string_view, 7> keys{"file",           "nodes",       "elements",  "reference",
+                                                         "reference_case", "cross_check", "model_from"};
+  if (toml::table* t = node.as_table()) {
+    for (auto&& [key, value] : *t) {
+      toml::value<std::string>* name = value.as_string();
+      if (!name || std::find(keys.begin(), keys.end(), key.str()) == keys.end()) {
+        rebase_file_names(value, from, to);
+        continue;
+      }
+      const fs::path path(name->get());
+      if (!path.is_relative()) continue;
+      const fs::path target = fs::absolute(from / path).lexically_normal();
+      std::error_code failed;
+      const fs::path relative = fs::relative(target, fs::absolute(to), failed);
+      name->get() = (failed || relative.empty() ? target : relative).generic_string();
+    }
+  } else if (toml::array* a = node.as_array()) {
+    for (toml::node& element : *a) rebase_file_names(element, from, to);
+  }
+}
+
 // The machine-readable outputs; calibrated.toml only for a converged fit.
 void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_file, const fs::path& out_dir) {
   {
@@ -132,9 +160,13 @@ void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_f
   fs::remove(out_dir / "calibrated.toml");  // a failed fit must not leave an earlier one looking current
   if (o.converged) {
     std::ofstream out = open_out(out_dir / "calibrated.toml");
-    out << fmt::format("# {} with the values identified by `bladebench calibrate` (comments are not kept).\n",
-                       case_file.string());
-    out << o.calibrated << '\n';
+    out << fmt::format(
+        "# {} with the values identified by `bladebench calibrate` (comments are not kept; file names relative to "
+        "this folder).\n",
+        case_file.string());
+    toml::table calibrated = o.calibrated;
+    rebase_file_names(calibrated, case_file.parent_path(), out_dir);
+    out << calibrated << '\n';
   }
   {
     std::ofstream out = open_out(out_dir / "starts.csv");

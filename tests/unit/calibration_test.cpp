@@ -165,6 +165,21 @@ TEST_F(CalibrationRoundTrip, StartsInParallelGiveTheSerialOutcomeBitForBit) {
   EXPECT_EQ(parallel.history, serial.history);
 }
 
+// calibrated.toml names the case's files (here the reference) relative to the folder it is written
+// in, so that it runs there (issue 33: its data paths used to be relative to the input case).
+TEST_F(CalibrationRoundTrip, TheCalibratedCaseRunsWhereItIsWritten) {
+  const fs::path c =
+      write_case(1.5e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+  const CalibrationOutcome o = calibrate_case(c);
+  ASSERT_TRUE(o.converged) << o.termination;
+  const fs::path out = dir_ / "reports" / "fit";
+  fs::create_directories(out);
+  write_calibration_outputs(o, c, 1.0, out, false);
+  const CaseSpec calibrated = parse_case_file(out / "calibrated.toml");
+  ASSERT_FALSE(calibrated.checks.empty());
+  EXPECT_TRUE(fs::equivalent(calibrated.checks.front().reference, dir_ / "reference.csv"));
+}
+
 TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedCase) {
   const fs::path c =
       write_case(1.1e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);

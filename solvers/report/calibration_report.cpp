@@ -121,7 +121,7 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
 // to `to` instead of the case's folder `from`, so that a copy written in `to` runs there.
 void rebase_file_names(toml::node& node, const fs::path& from, const fs::path& to) {
   static constexpr std::array<std::string_view, 7> keys{"file",           "nodes",       "elements",  "reference",
-                                                         "reference_case", "cross_check", "model_from"};
+                                                        "reference_case", "cross_check", "model_from"};
   if (toml::table* t = node.as_table()) {
     for (auto&& [key, value] : *t) {
       toml::value<std::string>* name = value.as_string();

@@ -37,10 +37,8 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
     }
     lifted_failure = fmt::format("; from the H = 1 solution: {}", low.converged ? "no convergence" : low.failure);
   }
-  HbmSpec spec = sweep_spec;
-  spec.max_iterations = 10 * sweep_spec.max_iterations;
-  const hbm::HarmonicBalance system = level_system(p, spec, force, harmonics, samples);
-  hbm::HbmSolution patient = hbm::solve_at_frequency(system, omega, initial);
+  hbm::HbmSolution patient =
+      hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force, harmonics, samples), omega, initial);
   total += patient.iterations;
   if (patient.converged) {
     patient.iterations = total;
@@ -48,12 +46,12 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
   }
   double done = 1.0 / 64, step = 1.0 / 64;
   hbm::HbmSolution at =
-      hbm::solve_at_frequency(level_system(p, spec, force * done, harmonics, samples), omega, initial);
+      hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force * done, harmonics, samples), omega, initial);
   total += at.iterations;
   while (at.converged && done < 1.0 && step >= 1.0 / 4096) {
     const double next = std::min(1.0, done + step);
     hbm::HbmSolution trial =
-        hbm::solve_at_frequency(level_system(p, spec, force * next, harmonics, samples), omega, at.x);
+        hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force * next, harmonics, samples), omega, at.x);
     total += trial.iterations;
     if (trial.converged) {
       at = std::move(trial), done = next, step *= 2;

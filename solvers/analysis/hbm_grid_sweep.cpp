@@ -242,10 +242,8 @@ void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& s
       // Last, Newton from the secant guess with ten times the iterations: next to a kink it may
       // converge, linearly, where the sweep's budget and the bridge both stop (Table XI, H = 13,
       // 110 N, 178.05 Hz: |R| = 4e-4 N after 20 iterations).
-      HbmSpec patient = spec;
-      patient.max_iterations = 10 * spec.max_iterations;
       s = hbm::solve_at_frequency(
-          level_system(p, patient, level.force, h_last, systems.at(h_last).aft_options().samples), omega, guess);
+          patient_level_system(p, spec, level.force, h_last, systems.at(h_last).aft_options().samples), omega, guess);
       path.corrector_iterations += s.iterations;
       if (s.converged) {
         accept(omega, s, h_last, kNaN, s.iterations);

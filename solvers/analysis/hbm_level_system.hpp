@@ -17,6 +17,12 @@ namespace bb {
 // The balance of one level; samples = 0 leaves the choice to hbm::HarmonicBalance.
 hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples);
 
+// The same with ten times spec.max_iterations per Newton start: the last resort of a first point
+// or a grid frequency, where Newton from a far start approaches the solution only linearly
+// (Levenberg-Marquardt steps across the contacts' kinks).
+hbm::HarmonicBalance patient_level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                                          int samples);
+
 // The balances of one level, one per H, built on first use (the point scope solves its
 // frequencies at different H).
 class LevelSystems {

@@ -72,6 +72,13 @@ hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, dou
   return hbm::HarmonicBalance(std::move(m), options);
 }
 
+hbm::HarmonicBalance patient_level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                                          int samples) {
+  HbmSpec patient = spec;
+  patient.max_iterations = 10 * spec.max_iterations;
+  return level_system(p, patient, force, harmonics, samples);
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;

@@ -119,7 +119,7 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
   contact::AftOptions options;
   options.samples = spec.samples;
   ContactLoopOutcome o;
-  o.aft = contact::aft_jenkins(spec.law, u, v, options);
+  o.aft = contact::aft_parallel(spec.law, spec.distribution.get(), u, v, options);
   o.summary = summarise_loop(spec.law, spec.tangential_amplitude, o.aft);
   const contact::AftResult& a = o.aft;
   const ContactLoopSummary& s = o.summary;
@@ -140,8 +140,16 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
 
   // The closed forms hold at constant normal load only.
   const bool constant_normal = spec.normal_amplitude == 0.0 || spec.law.kn == 0.0;
-  const JenkinsLoopClosedForm cf = constant_normal ? jenkins_loop_closed_form(spec.law, spec.tangential_amplitude)
-                                                   : JenkinsLoopClosedForm{kNan, kNan, kNan};
+  JenkinsLoopClosedForm cf{kNan, kNan, kNan};
+  if (constant_normal && !spec.distribution) {
+    cf = jenkins_loop_closed_form(spec.law, spec.tangential_amplitude);
+  } else if (constant_normal) {
+    // Another law gives its loop energy (and so the loss stiffness energy / (pi U^2)), when it has one.
+    if (const auto energy = spec.distribution->closed_form_energy(spec.law, spec.tangential_amplitude)) {
+      cf.energy = *energy;
+      cf.damping = *energy / (std::numbers::pi * spec.tangential_amplitude * spec.tangential_amplitude);
+    }
+  }
   o.tables.emplace(
       "loop_summary",
       table_from_rows(

@@ -30,7 +30,9 @@ using HbmProgress = std::function<void(const std::string&)>;
 struct PreparedHbm {
   hbm::HbmModel model;                 // harmonic load for a first-force amplitude of 1 N
   std::vector<std::string> dof_names;  // of the model's DOFs ("T2.x", "mode 3", "damper.x")
-  std::vector<std::string> contact_names;
+  std::vector<std::string> contact_names;  // of the model's contacts (an Iwan joint's sliders "joint.1", ...)
+  // The model contacts [first, last) of each [[analysis.contact]] (its sliders); the damper's come first.
+  std::vector<std::pair<size_t, size_t>> contact_sliders;
   std::vector<Eigen::Index> responses;  // model DOF of each response
   std::vector<std::string> response_names;
   std::optional<std::pair<Eigen::Index, Eigen::Index>> ip_oop;  // (left, right) DOFs

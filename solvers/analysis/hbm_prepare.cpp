@@ -128,10 +128,16 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   }
   for (const HbmContactSpec& c : spec.contacts) {
     const std::string where = fmt::format("{}: contact '{}'", c.at.where(), c.name);
-    m.contacts.push_back(
-        {c.law, combination_row(p, blades, c.tangential, n, where),
-         c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where)});
-    p.contact_names.push_back(c.name);
+    const Eigen::RowVectorXd tangential = combination_row(p, blades, c.tangential, n, where);
+    const Eigen::RowVectorXd normal =
+        c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where);
+    // Every solver sees the law as its Jenkins sliders on the same relative motion.
+    const std::vector<contact::JenkinsParameters> sliders = contact::parallel_sliders(c.law, c.distribution.get());
+    p.contact_sliders.push_back({m.contacts.size(), m.contacts.size() + sliders.size()});
+    for (size_t i = 0; i < sliders.size(); ++i) {
+      m.contacts.push_back({sliders[i], tangential, normal});
+      p.contact_names.push_back(sliders.size() == 1 ? c.name : fmt::format("{}.{}", c.name, i + 1));
+    }
   }
   m.harmonic_load = Eigen::VectorXcd::Zero(n);
   for (const FrfForce& f : spec.forces)

@@ -5,6 +5,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "analysis/frf_spec.hpp"
 #include "common/source_location.hpp"
 #include "contact/aft.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/jenkins_contact.hpp"
 
 namespace bb {
@@ -22,7 +24,8 @@ namespace bb {
 struct HbmContactSpec {
   std::string name;
   std::vector<std::pair<PointDof, double>> tangential, normal;
-  contact::JenkinsParameters law;
+  contact::JenkinsParameters law;  // the point: kn, n0, its stuck kt and its Coulomb limit mu
+  std::shared_ptr<const contact::SliderDistribution> distribution;  // null: one Jenkins slider
   SourceLocation at;
 };
 

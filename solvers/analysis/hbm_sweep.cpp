@@ -175,8 +175,10 @@ std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const Hb
       continue;
     }
     const bool damper = parameter.kind == HbmParameter::Kind::damper_law;
-    const size_t first = damper ? 0 : damper_contacts + parameter.contact;
-    const size_t last = damper ? damper_contacts : first + 1;
+    // Each slider's kn, kt, n0 is a fixed share of the point's and its mu the point's, so the
+    // point's log-derivative is the sum over its sliders of theirs.
+    const auto [first, last] =
+        damper ? std::pair<size_t, size_t>{0, damper_contacts} : p.contact_sliders.at(parameter.contact);
     hbm::ModelDerivative d;
     d.laws.assign(m.contacts.size(), {});
     for (size_t k = first; k < last; ++k) {

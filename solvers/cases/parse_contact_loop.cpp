@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "cases/parse_friction_law.hpp"
+
 namespace bb {
 
 ContactLoopSpec parse_contact_loop(TomlReader& r) {
@@ -25,6 +27,7 @@ ContactLoopSpec parse_contact_loop(TomlReader& r) {
   if (!(s.law.mu >= 0.0)) c.fail("mu", fmt::format("must be >= 0, found {}", s.law.mu));
   s.law.n0 = c.number("n0");
   if (!(s.law.n0 >= 0.0)) c.fail("n0", fmt::format("must be >= 0, found {}", s.law.n0));
+  s.distribution = parse_slider_distribution(c, s.law);
   c.finish();
   if (s.normal_amplitude > 0.0 && s.law.kn == 0.0)
     r.fail("normal_amplitude_m", "a normal motion needs kn > 0 in [analysis.contact] (kn = 0 keeps N = n0)");

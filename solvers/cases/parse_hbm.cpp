@@ -11,6 +11,7 @@
 #include "analysis/hbm_analysis.hpp"
 #include "cases/case_parameter.hpp"
 #include "cases/parse_frf.hpp"
+#include "cases/parse_friction_law.hpp"
 
 namespace bb {
 namespace {
@@ -30,10 +31,11 @@ std::vector<std::pair<PointDof, double>> parse_combination(TomlReader& r, const 
   return out;
 }
 
-// kn, kt, mu (and n0 when `preload`), checked by the contact law itself.
-contact::JenkinsParameters parse_law(TomlReader& r, bool preload) {
+// kn, kt, mu (and n0 when `preload`), checked by the contact law itself. kn may be 0 or left out
+// (constant normal load) where `kn_optional`.
+contact::JenkinsParameters parse_law(TomlReader& r, bool preload, bool kn_optional = false) {
   contact::JenkinsParameters law;
-  law.kn = r.positive("kn");
+  law.kn = kn_optional ? r.non_negative("kn", 0.0) : r.positive("kn");
   law.kt = r.positive("kt");
   law.mu = r.non_negative("mu", 0.0);
   if (preload) law.n0 = r.non_negative("n0", 0.0);
@@ -49,7 +51,10 @@ HbmContactSpec parse_contact(TomlReader r) {
   HbmContactSpec c;
   c.at = r.location();
   c.name = r.name("name");
-  c.law = parse_law(r, true);
+  // An Iwan joint usually sits at a constant normal load (kn = 0); a Jenkins point needs its kn.
+  const bool jenkins = r.optional_string("law").value_or("jenkins") == "jenkins";
+  c.law = parse_law(r, true, !jenkins);
+  c.distribution = parse_slider_distribution(r, c.law);
   c.tangential = parse_combination(r, "tangential");
   if (r.has("normal")) c.normal = parse_combination(r, "normal");
   r.finish();

@@ -100,11 +100,7 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
   std::string levels;
   for (double f : spec.system.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
-  std::string contacts;
-  for (size_t c = 0; c < p.model.contacts.size(); ++c)
-    contacts +=
-        fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ", p.contact_names[c],
-                    g(p.model.contacts[c].law.kn), g(p.model.contacts[c].law.kt), g(p.model.contacts[c].law.mu));
+  const std::string contacts = describe_contacts(p, spec.system);
   run.facts.emplace_back("contacts", contacts.empty() ? "none (linear model)" : contacts);
   run.facts.emplace_back("model DOFs", std::to_string(p.model.mass.rows()));
   if (spec.system.model.file.empty() && !spec.system.model.matrices)

@@ -187,6 +187,19 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
 
 }  // namespace
 
+std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec) {
+  std::string out;
+  const auto add = [&](const std::string& name, const contact::JenkinsParameters& law,
+                       const contact::SliderDistribution* distribution) {
+    out += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}{}", out.empty() ? "" : "; ", name, g(law.kn), g(law.kt),
+                       g(law.mu), distribution ? ", " + distribution->describe() : "");
+  };
+  const size_t damper = p.damper ? p.damper->contacts.size() : 0;
+  for (size_t c = 0; c < damper; ++c) add(p.contact_names[c], p.model.contacts[c].law, nullptr);
+  for (const HbmContactSpec& c : spec.contacts) add(c.name, c.law, c.distribution.get());
+  return out;
+}
+
 void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const PreparedHbm& p = hbm.prepared;
   std::string levels;
@@ -206,12 +219,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
                                      spec.harmonics, spec.time_samples > 0 ? g(spec.time_samples) : "automatic",
                                      g(spec.sweep.f_min), g(spec.sweep.f_max), sweep, damping));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
-  std::string contacts;
-  for (const hbm::ContactElement& c : p.model.contacts)
-    contacts += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}", contacts.empty() ? "" : "; ",
-                            p.contact_names[static_cast<size_t>(&c - p.model.contacts.data())], g(c.law.kn),
-                            g(c.law.kt), g(c.law.mu));
-  run.facts.emplace_back("contacts", contacts);
+  run.facts.emplace_back("contacts", describe_contacts(p, spec));
   run.facts.emplace_back("model DOFs / linear model DOFs", fmt::format("{} / {}", p.model.mass.rows(), p.blade_dofs));
   if (p.damper_static) {
     std::string n0;

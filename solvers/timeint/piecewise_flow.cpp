@@ -254,14 +254,18 @@ std::vector<PiecewiseFlow::Event> PiecewiseFlow::events(const std::vector<Contac
     const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
     const contact::JenkinsParameters& law = c.law;
     const ContactState m = modes[static_cast<size_t>(k)];
-    RowVectorXd open = RowVectorXd::Zero(size_);  // N <= 0, in metres of v
-    open.head(n_) = -c.normal;
-    open[one] = -law.n0 / law.kn;
-    if (m == ContactState::lift_off) {
-      out.push_back({k, law.mu > 0.0 ? ContactState::stick : ContactState::slip_positive, -open});
-      continue;
+    if (law.kn > 0.0) {
+      RowVectorXd open = RowVectorXd::Zero(size_);  // N <= 0, in metres of v
+      open.head(n_) = -c.normal;
+      open[one] = -law.n0 / law.kn;
+      if (m == ContactState::lift_off) {
+        out.push_back({k, law.mu > 0.0 ? ContactState::stick : ContactState::slip_positive, -open});
+        continue;
+      }
+      out.push_back({k, ContactState::lift_off, open});
+    } else if (m == ContactState::lift_off) {
+      continue;  // kn = 0: the normal load is N0 for ever, so a contact neither opens nor closes
     }
-    out.push_back({k, ContactState::lift_off, open});
     if (m == ContactState::stick) {
       // |kt (u - w)| reaching mu N, divided by kt (metres of u)
       for (const double s : {1.0, -1.0}) {

@@ -1,6 +1,8 @@
 // Shooting on the exact piecewise-linear flow (timeint/shooting.hpp): Den Hartog's closed form, the
 // linear limits, the monodromy against differences of the period map, Floquet multipliers of a
 // damped oscillator.
+#include "timeint/shooting.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 
 #include "friction_oscillator.hpp"
 #include "timeint/piecewise_flow.hpp"
-#include "timeint/shooting.hpp"
 
 namespace bb {
 namespace {
@@ -41,8 +42,8 @@ timeint::ShootingOptions options() {
 // The Jenkins element tends to Coulomb's law as kt grows, but not as 1 / kt: where the mass reverses,
 // it sticks on the spring kt with its acceleration u'' unbalanced, rings, and leaves the stick with a
 // velocity near sqrt(4 mu N u'' / kt) (a stiff spring on a mass), so the largest displacement differs
-// from Den Hartog's by about kt^-1/2 (measured at F/P = 0.5, 400 Hz: 4.3e-2 at kt = 1e10, 4.3e-3 at 1e12 = 1e6 k, 4.3e-4 at 1e14;
-// beyond, kt times the rounding of u - w puts Newton's floor near 1e-9 of the amplitude).
+// from Den Hartog's by about kt^-1/2 (measured at F/P = 0.5, 400 Hz: 4.3e-2 at kt = 1e10, 4.3e-3 at 1e12 = 1e6
+// k, 4.3e-4 at 1e14; beyond, kt times the rounding of u - w puts Newton's floor near 1e-9 of the amplitude).
 TEST(Shooting, TendsToDenHartogsClosedFormAsTheContactStiffens) {
   for (const double slip_force : {1.0, 3.0, 5.0})
     for (const double hz : {200.0, 300.0, 400.0}) {
@@ -60,6 +61,21 @@ TEST(Shooting, TendsToDenHartogsClosedFormAsTheContactStiffens) {
       EXPECT_GT(error[0] / error[1], 5.0);
       EXPECT_GT(error[1] / error[2], 5.0);
     }
+}
+
+// kn = 0 is a contact of constant normal load N0 (a joint, or a contact without normal terms): it
+// neither opens nor closes. Its opening row used to read -N0 / kn = -inf, and the NaN it left in the
+// modal weights shrank every piece of the flow to 2^-40 of a step (one frequency ran for minutes).
+// The normal stiffness must not matter, so kn = 0 gives kn = 1e12's answer.
+TEST(Shooting, ConstantNormalLoadWithoutNormalStiffnessNeedsNoOpeningTransition) {
+  test::FrictionOscillator stiff = coulomb(3.0, 1e8), constant = stiff;
+  constant.contact.kn = 0.0;
+  const double omega = 2 * kPi * 300.0;
+  const timeint::ShootingResult a = timeint::shooting(stiff.model(), omega, options());
+  const timeint::ShootingResult b = timeint::shooting(constant.model(), omega, options());
+  ASSERT_TRUE(a.steady.converged) << a.steady.failure;
+  ASSERT_TRUE(b.steady.converged) << b.steady.failure;
+  EXPECT_NEAR(b.largest[0], a.largest[0], 1e-9 * a.largest[0]);
 }
 
 TEST(Shooting, StuckContactIsTheLinearSpringExactly) {

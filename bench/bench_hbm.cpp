@@ -72,9 +72,8 @@ void BM_AftJenkinsSamples(benchmark::State& state) {
   const auto [u, v] = stick_slip_motion(harmonics);
   const bb::contact::AftOptions options{.samples = samples};
   for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(law, u, v, options));
-  state.counters["ns_per_sample"] = benchmark::Counter(static_cast<double>(samples),
-                                                       benchmark::Counter::kIsIterationInvariantRate |
-                                                           benchmark::Counter::kInvert);
+  state.counters["ns_per_sample"] = benchmark::Counter(
+      static_cast<double>(samples), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_AftJenkinsSamples)
     ->ArgNames({"H", "samples"})
@@ -174,12 +173,12 @@ BENCHMARK(BM_HbmContinuationSweep)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark
 // slip and none opens (counter slip; tests/unit/hbm_sensitivity_test.cpp checks this point with
 // N0 = 0 against differences). N0 = 10 N on top of CF so that its difference costs re-solves too.
 HarmonicBalance sensitivity_system(int harmonics) {
-  bb::hbm::HbmModel m =
+  bb::friction::FrictionModel m =
       bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0}, 200.0, 1e-2);
   Eigen::MatrixXd k = m.stiffness;
-  for (const bb::hbm::ContactElement& c : m.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
+  for (const bb::friction::ContactElement& c : m.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
   const Eigen::VectorXd seat = k.fullPivLu().solve(m.static_load);
-  for (bb::hbm::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(seat);
+  for (bb::friction::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(seat);
   return HarmonicBalance(std::move(m), {.harmonics = harmonics, .tolerance = 1e-12});
 }
 
@@ -229,8 +228,8 @@ void BM_HbmSensitivityCentralDifference(benchmark::State& state) {
     for (int p = 0; p < 4; ++p) {
       std::array<Eigen::VectorXd, 2> x;
       for (int side = 0; side < 2; ++side) {
-        bb::hbm::HbmModel m = system.model();
-        for (bb::hbm::ContactElement& c : m.contacts) {
+        bb::friction::FrictionModel m = system.model();
+        for (bb::friction::ContactElement& c : m.contacts) {
           double* field = p == 0 ? &c.law.kn : p == 1 ? &c.law.kt : p == 2 ? &c.law.mu : &c.law.n0;
           *field *= side == 0 ? 1.0 + 1e-6 : 1.0 - 1e-6;
         }

@@ -18,22 +18,22 @@
 
 namespace {
 
-using bb::hbm::HbmModel;
+using bb::friction::FrictionModel;
 
-HbmModel friction_model() {
+FrictionModel friction_model() {
   return bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3}, 10.0, 1e-2);
 }
 
 // The same blades and damper with the contacts replaced by their springs: a linear model.
-HbmModel linear_model() {
-  HbmModel m = friction_model();
-  for (const bb::hbm::ContactElement& c : m.contacts)
+FrictionModel linear_model() {
+  FrictionModel m = friction_model();
+  for (const bb::friction::ContactElement& c : m.contacts)
     m.stiffness += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
   m.contacts.clear();
   return m;
 }
 
-void step_benchmark(benchmark::State& state, const HbmModel& model) {
+void step_benchmark(benchmark::State& state, const FrictionModel& model) {
   const double omega = bb::hbm::models::stuck_resonance(friction_model(), 0);
   const bb::timeint::NewmarkIntegrator integrator(model, {.time_step = 2 * std::numbers::pi / (omega * 128)});
   const auto excitation = bb::timeint::harmonic_excitation(model.harmonic_load, omega);
@@ -65,7 +65,7 @@ BENCHMARK(BM_NewmarkStepFriction)->Unit(benchmark::kMicrosecond);
 
 // One frequency point of a stepped sine: from the steady state 1 % below, to the steady state here.
 void BM_SteadyStateFrequencyPoint(benchmark::State& state) {
-  const HbmModel model = friction_model();
+  const FrictionModel model = friction_model();
   const double omega = bb::hbm::models::stuck_resonance(model, 0);
   bb::timeint::SteadyStateOptions options;
   options.dofs = {0, 2};
@@ -88,7 +88,7 @@ BENCHMARK(BM_SteadyStateFrequencyPoint)->Unit(benchmark::kMillisecond);
 
 // The same frequency point by shooting, started from the periodic state 1 % below.
 void BM_ShootingFrequencyPoint(benchmark::State& state) {
-  const HbmModel model = friction_model();
+  const FrictionModel model = friction_model();
   const double omega = bb::hbm::models::stuck_resonance(model, 0);
   bb::timeint::ShootingOptions options;
   options.dofs = {0, 2};
@@ -112,7 +112,7 @@ BENCHMARK(BM_ShootingFrequencyPoint)->Unit(benchmark::kMillisecond);
 // Den Hartog's oscillator (cases/verification/coulomb_oscillator_shooting.toml: kt = 1e14 N/m,
 // Ff/F0 = 0.3) at one frequency [Hz] from the static state, Floquet multipliers included.
 void BM_ShootingCoulombOscillator(benchmark::State& state) {
-  HbmModel m;
+  FrictionModel m;
   m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
   m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
   m.contacts.push_back({.law = {.kn = 1e12, .kt = 1e14, .mu = 0.3, .n0 = 10.0},

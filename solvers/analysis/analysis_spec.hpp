@@ -7,16 +7,16 @@
 #include "analysis/contact_loop_spec.hpp"
 #include "analysis/contact_modal_spec.hpp"
 #include "analysis/frf_spec.hpp"
-#include "analysis/hbm_spec.hpp"
 #include "analysis/modal_spec.hpp"
 #include "analysis/rotating_spec.hpp"
 #include "analysis/static_spec.hpp"
 #include "analysis/time_spec.hpp"
+#include "forced/hbm_spec.hpp"
 
 namespace bb {
 
-using AnalysisSpec = std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec,
-                                  ContactModalSpec>;
+using AnalysisSpec =
+    std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec, ContactModalSpec>;
 
 // The case file's name of each type (`type = "..."` in [analysis]).
 constexpr std::string_view analysis_type_name(const StaticSpec&) { return "static"; }

@@ -11,6 +11,7 @@
 #include "analysis/frf_spec.hpp"
 #include "analysis/modal_analysis.hpp"
 #include "analysis/mode_pairs.hpp"
+#include "forced/linear_model.hpp"
 #include "frf/sweep.hpp"
 #include "reduction/craig_bampton.hpp"
 #include "results/table.hpp"
@@ -44,13 +45,6 @@ struct FrfOutcome {
   std::vector<double> level_forces;
   std::vector<Eigen::VectorXd> level_amplitudes;
 };
-
-// A reduced model as `rom` asks: Craig-Bampton of `system` (the free system of `model`) on its
-// masters, read from its file, or its matrices. Throws InputError for unknown or constrained points.
-ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, const RomSpec& rom,
-                                 CraigBamptonTiming* timing = nullptr);
-// The damping matrix of a reduced or lumped model: modal (the same ratio on each of its modes) or Rayleigh.
-Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& model);
 
 // The models of an analysis made ready to respond (modes, residual flexibility, reductions):
 // the expensive part, done once. Throws as run_frf.

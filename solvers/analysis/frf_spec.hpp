@@ -8,42 +8,13 @@
 #include <vector>
 
 #include "analysis/modal_spec.hpp"
+#include "forced/linear_model_spec.hpp"
 #include "model/model.hpp"
 #include "reduction/reduced_model.hpp"
 
 namespace bb {
 
 // A nodal DOF named by a one-node set and a direction, written "T2.x".
-struct PointDof {
-  std::string point;
-  Direction direction = 0;
-  std::string name() const { return point + '.' + "xyz"[direction]; }
-};
-
-struct FrfForce {
-  PointDof dof;
-  double amplitude = 0.0;  // [N], harmonic, zero phase
-};
-
-struct FrfDamping {
-  enum class Kind { modal, rayleigh } kind = Kind::modal;
-  double zeta = 0.0;                    // modal: the same ratio for every mode
-  std::array<double, 2> rayleigh_hz{};  // rayleigh: zeta fitted at two frequencies (eqs 3.37-3.39)
-  std::array<double, 2> rayleigh_zeta{};
-};
-
-// A reduced model: Craig-Bampton on master points, matrices from files, or matrices in the case.
-struct RomSpec {
-  std::string name;                      // names its columns and tables, e.g. "rom"
-  std::vector<std::string> masters;      // point names, all three directions of each, in this order
-  int modes = 10;                        // fixed-interface modes
-  std::filesystem::path file;            // a reduced-model sidecar (reduction/reduced_model_io.hpp) instead
-  std::optional<ReducedModel> matrices;  // or matrices written in the case (a lumped model)
-  enum class Method { direct, modal } method = Method::direct;
-  std::vector<FrfForce> forces;     // empty: the analysis's
-  std::vector<PointDof> responses;  // empty: the analysis's
-};
-
 struct FrfSpec {
   double f_min = 0.0, f_max = 0.0;  // [Hz]
   double step = 0.0;                // fixed grid step [Hz], the coarse step when adaptive

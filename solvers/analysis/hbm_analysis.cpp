@@ -12,12 +12,12 @@
 #include <numbers>
 #include <optional>
 
-#include "analysis/hbm_nonlinear_modes.hpp"
-#include "analysis/hbm_response.hpp"
 #include "common/errors.hpp"
 #include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
 #include "contact/state_fractions.hpp"
+#include "forced/hbm_nonlinear_modes.hpp"
+#include "forced/hbm_response.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
 
@@ -107,8 +107,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
                          static_cast<double>(level.path.corrector_iterations),
                          static_cast<double>(level.path.rejected_steps), static_cast<double>(level.path.turning_points),
                          static_cast<double>(level.path.jumps), static_cast<double>(level.path.corners),
-                         level.path.converged ? 1.0 : 0.0,
-                         static_cast<double>(level.samples), static_cast<double>(level.harmonics), level.seconds});
+                         level.path.converged ? 1.0 : 0.0, static_cast<double>(level.samples),
+                         static_cast<double>(level.harmonics), level.seconds});
   }
   std::vector<std::string> peak_columns = {"level", "fe_n"};
   if (spec.damper) peak_columns.push_back("cf_over_fe");
@@ -136,12 +136,11 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   states.add_text_column("peak", state_peaks);
   states.add_text_column("contact", state_contacts);
   o.tables.emplace("contact_states", std::move(states));
-  o.tables.emplace("sweep_cost",
-                   table_from_rows("sweep_cost",
-                                   {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
-                                    "turning_points", "jumps", "corners", "reached_end", "samples", "harmonics",
-                                    "seconds"},
-                                   cost_rows));
+  o.tables.emplace("sweep_cost", table_from_rows("sweep_cost",
+                                                 {"level", "fe_n", "points", "corrector_iterations", "rejected_steps",
+                                                  "turning_points", "jumps", "corners", "reached_end", "samples",
+                                                  "harmonics", "seconds"},
+                                                 cost_rows));
 }
 
 // aft_sampling: with aft_tolerance, every sweep each level took on the way to its samples.
@@ -289,9 +288,9 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
 void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   const PreparedHbm& p = o.prepared;
   const std::vector<std::string> kinds = peak_kinds(p);
-  const hbm::HbmModel& m = p.model;
+  const friction::FrictionModel& m = p.model;
   const Index nb = p.blade_dofs;
-  const Eigen::MatrixXd stuck = hbm::stuck_stiffness(m);
+  const Eigen::MatrixXd stuck = friction::stuck_stiffness(m);
   // Limit 0: the linear model alone (the damper's DOFs left out); 1: every contact stuck.
   const auto limit_solve = [&](int l, double w) {
     return l == 0 ? direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),
@@ -436,7 +435,10 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   add_frf_tables(o, spec);
   add_limit_tables(o, spec);
   add_damper_table(o);
-  add_nonlinear_modes(o, spec);
+  HbmNonlinearModes modes = trace_nonlinear_modes(o.prepared, o.levels, spec);
+  o.nonlinear_modes = std::move(modes.branches);
+  o.nonlinear_mode_seconds = modes.seconds;
+  o.tables.merge(modes.tables);
   return o;
 }
 

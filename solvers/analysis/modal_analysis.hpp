@@ -7,6 +7,7 @@
 
 #include "analysis/modal_spec.hpp"
 #include "assembly/dof_map.hpp"
+#include "assembly/free_system.hpp"
 #include "assembly/stress_recovery.hpp"
 #include "linalg/cached_modes.hpp"
 #include "linalg/modal_solver.hpp"
@@ -33,15 +34,6 @@ struct ModalResult {
   double solve_seconds = 0.0;  // of the run that solved it when the modes came from the cache
   CacheUse cache;
 };
-
-// K and M restricted to the free DOFs, assembled once for analyses that need them several times.
-struct FreeSystem {
-  DofMap dofs;
-  Eigen::SparseMatrix<double> stiffness;
-  Eigen::SparseMatrix<double> mass;
-  double assembly_seconds = 0.0;
-};
-FreeSystem assemble_free_system(const Model& model);
 
 // Throws InputError when more modes are asked than the model has free DOFs.
 ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options);

@@ -36,7 +36,7 @@ double loop_work(const std::vector<timeint::ContactSample>& s) {
 
 // The stepped sine of one force level: the steady state at each grid frequency, each starting from
 // the previous one's final state.
-void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const hbm::HbmModel& m,
+void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const friction::FrictionModel& m,
                   const timeint::SteadyStateOptions& options, const TrackedDofs& tracked, const HbmProgress& progress) {
   const std::vector<double>& frequencies = level.frequency_hz;
   const auto nf = static_cast<Index>(frequencies.size());
@@ -63,11 +63,11 @@ void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, 
 }
 
 // The linear model (every contact replaced by its springs kn, kt; eq 3.51) by direct solves on the grid.
-void linear_on_grid(TimeLevel& level, const PreparedHbm& p, const hbm::HbmModel& m, bool pair) {
+void linear_on_grid(TimeLevel& level, const PreparedHbm& p, const friction::FrictionModel& m, bool pair) {
   const std::vector<double>& frequencies = level.frequency_hz;
   const auto nf = static_cast<Index>(frequencies.size());
   const auto nr = static_cast<Index>(p.responses.size());
-  const Eigen::MatrixXd k = hbm::stuck_stiffness(m);
+  const Eigen::MatrixXd k = friction::stuck_stiffness(m);
   level.linear = Eigen::MatrixXd(nf, nr);
   if (pair) level.linear_components = Eigen::MatrixXd(nf, 2);
   for (Index i = 0; i < nf; ++i) {
@@ -93,7 +93,7 @@ TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint:
   level.frequency_hz = frequencies;
   level.amplitude = Eigen::MatrixXd::Constant(nf, nr, kNan);
   if (tracked.pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
-  hbm::HbmModel m = p.model;
+  friction::FrictionModel m = p.model;
   m.harmonic_load *= force;
   if (spec.method == TimeSpec::Method::shooting)
     periodic_sweep(level, spec, m, tracked, nr, progress);
@@ -116,7 +116,7 @@ TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec,
   TimeHistoryRecord rec;
   rec.frequency_hz = *spec.history_hz;
   rec.force = spec.system.force_levels.front();
-  hbm::HbmModel m = p.model;
+  friction::FrictionModel m = p.model;
   m.harmonic_load *= rec.force;
   const double omega = kTwoPi * rec.frequency_hz;
   rec.steady = timeint::steady_state(m, omega, options);

@@ -1,5 +1,5 @@
 // Time-domain forced response (thesis section 3.4): the model of a harmonic-balance analysis
-// (analysis/hbm_analysis.hpp: reduced or lumped model, contacts, rigid damper seated by CF)
+// (analysis/hbm_level.hpp: reduced or lumped model, contacts, rigid damper seated by CF)
 // integrated by Newmark with the implicit predictor-corrector contact (timeint/newmark.hpp) to the
 // steady state at each frequency of a grid (stepped sine), each frequency starting from the
 // previous one's final state; time histories and hysteresis loops at one frequency; and the
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/hbm_analysis.hpp"
 #include "analysis/time_spec.hpp"
+#include "forced/hbm_level.hpp"
 #include "results/table.hpp"
 #include "timeint/steady_state.hpp"
 
@@ -19,10 +19,10 @@ namespace bb {
 struct TimeLevel {
   double force = 0.0;  // amplitude of the first force [N]
   std::vector<double> frequency_hz;
-  Eigen::MatrixXd amplitude;   // frequencies x responses, first harmonic [m]
-  Eigen::MatrixXd components;  // frequencies x (IP, OOP) [m] when ip_oop is set
-  std::vector<int> cycles;     // periods integrated per frequency
-  std::vector<bool> steady;    // the cycle-to-cycle criterion was met (shooting: Newton converged)
+  Eigen::MatrixXd amplitude;         // frequencies x responses, first harmonic [m]
+  Eigen::MatrixXd components;        // frequencies x (IP, OOP) [m] when ip_oop is set
+  std::vector<int> cycles;           // periods integrated per frequency
+  std::vector<bool> steady;          // the cycle-to-cycle criterion was met (shooting: Newton converged)
   std::vector<std::string> failure;  // per frequency, why it is not steady (shooting: |R|, iterations)
   // Shooting only, per frequency: the largest |q| of each response over the period [m], the
   // residual [m], transitions per period, and with floquet the largest multiplier's modulus.

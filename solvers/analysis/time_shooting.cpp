@@ -26,8 +26,8 @@ timeint::ShootingOptions shooting_options(const TimeSpec& spec, const std::vecto
 
 }  // namespace
 
-void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const hbm::HbmModel& model, const TrackedDofs& tracked,
-                    Index responses, const HbmProgress& progress) {
+void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const friction::FrictionModel& model,
+                    const TrackedDofs& tracked, Index responses, const HbmProgress& progress) {
   const auto nf = static_cast<Index>(level.frequency_hz.size());
   const timeint::ShootingOptions options = shooting_options(spec, tracked.dofs);
   level.largest = Eigen::MatrixXd::Constant(nf, responses, std::numeric_limits<double>::quiet_NaN());
@@ -59,7 +59,7 @@ TimeHistoryRecord periodic_history(const PreparedHbm& p, const TimeSpec& spec) {
   TimeHistoryRecord rec;
   rec.frequency_hz = *spec.history_hz;
   rec.force = spec.system.force_levels.front();
-  hbm::HbmModel m = p.model;
+  friction::FrictionModel m = p.model;
   m.harmonic_load *= rec.force;
   const double omega = kTwoPi * rec.frequency_hz;
   const timeint::ShootingResult s = timeint::shooting(m, omega, shooting_options(spec, p.responses));

@@ -5,7 +5,7 @@
 #pragma once
 #include <optional>
 
-#include "analysis/hbm_spec.hpp"
+#include "forced/hbm_spec.hpp"
 
 namespace bb {
 
@@ -15,11 +15,11 @@ struct TimeSpec {
   // tolerance and max_iterations; steps_per_period sub-intervals bracket the transitions.
   enum class Method { newmark, shooting };
   Method method = Method::newmark;
-  bool floquet = false;              // shooting only: Floquet multipliers and stability per frequency
-  HbmSpec system;                    // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
-  int steps_per_period = 128;        // dt = T / steps_per_period (eq 3.42)
-  int max_cycles = 2000;             // per frequency, then the point is reported as not steady
-  double steady_tolerance = 1e-6;    // cycle-to-cycle change, relative (timeint/steady_state.hpp)
+  bool floquet = false;            // shooting only: Floquet multipliers and stability per frequency
+  HbmSpec system;                  // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
+  int steps_per_period = 128;      // dt = T / steps_per_period (eq 3.42)
+  int max_cycles = 2000;           // per frequency, then the point is reported as not steady
+  double steady_tolerance = 1e-6;  // cycle-to-cycle change, relative (timeint/steady_state.hpp)
   // A peak resting on a frequency that is not steady stops the run (SolverError). Not a case key:
   // the time-step study turns it off, since it measures the error of such unconverged settings.
   bool require_steady_peaks = true;

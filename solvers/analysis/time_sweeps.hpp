@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/hbm_analysis.hpp"
 #include "analysis/time_analysis.hpp"
+#include "forced/hbm_level.hpp"
 
 namespace bb {
 
@@ -28,8 +28,8 @@ bool store_first_harmonics(TimeLevel& level, Eigen::Index i, const Eigen::Matrix
 
 // The periodic responses of one level by shooting (timeint/shooting.hpp), each frequency started
 // from the previous one's periodic state.
-void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const hbm::HbmModel& model, const TrackedDofs& tracked,
-                    Eigen::Index responses, const HbmProgress& progress);
+void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const friction::FrictionModel& model,
+                    const TrackedDofs& tracked, Eigen::Index responses, const HbmProgress& progress);
 
 // The periodic response at history_hz by shooting, history_cycles copies of its period recorded.
 TimeHistoryRecord periodic_history(const PreparedHbm& p, const TimeSpec& spec);

@@ -6,10 +6,10 @@
 #include <string>
 #include <variant>
 
-#include "analysis/hbm_spec.hpp"
 #include "articles/two_blade.hpp"
 #include "contact/aft.hpp"
 #include "fe/plane_stress.hpp"
+#include "forced/hbm_spec.hpp"
 
 namespace bb {
 

@@ -2,8 +2,8 @@
 #pragma once
 #include <filesystem>
 
-#include "analysis/hbm_spec.hpp"
 #include "common/toml_reader.hpp"
+#include "forced/hbm_spec.hpp"
 
 namespace bb {
 

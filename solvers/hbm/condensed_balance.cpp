@@ -22,13 +22,13 @@ using Complex = std::complex<double>;
 // below this: the solve would amplify rounding by more than ~1e13.
 constexpr double kSingularRcond = 1e-13;
 
-HbmModel validated(HbmModel model) {
-  validate_model(model, "harmonic balance");
+friction::FrictionModel validated(friction::FrictionModel model) {
+  friction::validate_model(model, "harmonic balance");
   return model;
 }
 
 // D_h = K + i h w C - (h w)^2 M.
-Eigen::MatrixXcd dynamic_stiffness(const HbmModel& m, double hw) {
+Eigen::MatrixXcd dynamic_stiffness(const friction::FrictionModel& m, double hw) {
   const Index n = m.mass.rows();
   Eigen::MatrixXcd d(n, n);
   const bool damped = m.damping.size() > 0;
@@ -39,7 +39,7 @@ Eigen::MatrixXcd dynamic_stiffness(const HbmModel& m, double hw) {
 }
 
 // The loads of harmonic h on all DOFs: f_static at h = 0, F at h = 1, none above.
-Eigen::VectorXcd harmonic_load(const HbmModel& m, int h) {
+Eigen::VectorXcd harmonic_load(const friction::FrictionModel& m, int h) {
   if (h == 0) return m.static_load.cast<Complex>();
   if (h == 1) return m.harmonic_load;
   return Eigen::VectorXcd::Zero(m.mass.rows());
@@ -47,7 +47,7 @@ Eigen::VectorXcd harmonic_load(const HbmModel& m, int h) {
 
 }  // namespace
 
-HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options)
+HarmonicBalance::HarmonicBalance(friction::FrictionModel model, HbmOptions options)
     : model_(validated(std::move(model))), options_(options), system_(model_) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("harmonic balance: " + what); };
   if (model_.contacts.empty()) fail("at least one contact element is required (use the linear FRF otherwise)");
@@ -78,7 +78,7 @@ HarmonicBalance::HarmonicBalance(HbmModel model, HbmOptions options)
   if (aft_.samples < 2 * options_.harmonics + 1) fail("aft.samples must be >= 2H + 1");
 
   double preload = 0.0;
-  for (const ContactElement& e : model_.contacts) preload += (1.0 + e.law.mu) * e.law.n0;
+  for (const friction::ContactElement& e : model_.contacts) preload += (1.0 + e.law.mu) * e.law.n0;
   force_scale_ = model_.static_load.norm() + model_.harmonic_load.norm() + preload;
 }
 
@@ -90,7 +90,7 @@ std::optional<HarmonicBalance::Linear> HarmonicBalance::condense(double omega) c
   const Index nc = static_cast<Index>(contact_dofs().size());
   Linear linear{Eigen::MatrixXd::Zero(unknowns(), unknowns()), Eigen::VectorXd::Zero(unknowns())};
   for (int h = 0; h <= options_.harmonics; ++h) {
-    const Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
+    const friction::Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
     if (!(d.rcond() >= kSingularRcond)) return std::nullopt;
     const Eigen::MatrixXcd& reduced = d.reduced();
     const Eigen::VectorXcd load =
@@ -120,7 +120,7 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
   const Eigen::Map<const Eigen::MatrixXd> coefficients(x.data(), nc, m);
   ContactForces out{Eigen::VectorXd::Zero(unknowns()), Eigen::MatrixXd::Zero(unknowns(), unknowns()), {}, true};
   Eigen::Map<Eigen::MatrixXd> force(out.force.data(), nc, m);
-  for (const ContactElement& element : system_.contacts_on_c()) {
+  for (const friction::ContactElement& element : system_.contacts_on_c()) {
     const Eigen::RowVectorXd& at = element.tangential;
     const Eigen::RowVectorXd& an = element.normal;
     Eigen::VectorXd u = (at * coefficients).transpose();
@@ -168,7 +168,7 @@ Eigen::MatrixXd HarmonicBalance::recover(const Eigen::VectorXd& x, double omega)
   for (Index i = 0; i < nc; ++i) q.row(contact_dofs()[static_cast<size_t>(i)]) = xc.row(i);
   if (other_dofs().empty()) return q;
   for (int h = 0; h <= options_.harmonics; ++h) {
-    const Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
+    const friction::Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
     if (!(d.rcond() >= kSingularRcond))
       throw SolverError(fmt::format("harmonic balance: D_oo singular at harmonic {}, omega = {} rad/s", h, omega));
     const Eigen::VectorXcd qc =
@@ -196,7 +196,7 @@ std::optional<Eigen::VectorXd> HarmonicBalance::linearized(double omega, bool st
   const Index m = contact::harmonic_size(options_.harmonics);
   Eigen::MatrixXd springs = Eigen::MatrixXd::Zero(nc, nc);
   Eigen::VectorXd preload = Eigen::VectorXd::Zero(nc);
-  for (const ContactElement& element : system_.contacts_on_c()) {
+  for (const friction::ContactElement& element : system_.contacts_on_c()) {
     const contact::JenkinsParameters& law = element.law;
     springs += law.kn * element.normal.transpose() * element.normal;
     preload += law.n0 * element.normal.transpose();

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "contact/aft.hpp"
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 
 namespace bb::hbm {
 
@@ -46,9 +46,9 @@ struct HbmOptions {
 // a singular K_oo (message says which requirement to meet).
 class HarmonicBalance {
  public:
-  HarmonicBalance(HbmModel model, HbmOptions options);
+  HarmonicBalance(friction::FrictionModel model, HbmOptions options);
 
-  const HbmModel& model() const { return model_; }
+  const friction::FrictionModel& model() const { return model_; }
   const HbmOptions& options() const { return options_; }
   const std::vector<Eigen::Index>& contact_dofs() const { return system_.contact_dofs(); }
   const std::vector<Eigen::Index>& other_dofs() const { return system_.other_dofs(); }
@@ -97,9 +97,9 @@ class HarmonicBalance {
   std::optional<Eigen::VectorXd> linearized(double omega, bool stuck) const;
 
  private:
-  HbmModel model_;
+  friction::FrictionModel model_;
   HbmOptions options_;
-  FrictionSystem system_;
+  friction::FrictionSystem system_;
   contact::AftOptions aft_;
   double force_scale_ = 0.0;
 };

@@ -9,7 +9,7 @@ namespace bb::hbm {
 CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) {
   using Eigen::Index;
   const Eigen::MatrixXd q = s.recover(solution.x, solution.omega);
-  const HbmModel& model = s.model();
+  const friction::FrictionModel& model = s.model();
   const Index n = q.rows();
   const int harmonics = s.options().harmonics;
   CycleEnergy e;

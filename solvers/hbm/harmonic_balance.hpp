@@ -6,8 +6,8 @@
 //   hbm/continuation.hpp       the path in (x, omega) through folds (pseudo-arclength)
 //   hbm/cycle_energy.hpp       the energy balance of a solution over one cycle
 #pragma once
+#include "friction/friction_system.hpp"
 #include "hbm/condensed_balance.hpp"
 #include "hbm/continuation.hpp"
 #include "hbm/cycle_energy.hpp"
 #include "hbm/fixed_frequency.hpp"
-#include "hbm/friction_system.hpp"

@@ -33,7 +33,7 @@ double marginal_tolerance(double omega) { return 1e-7 * std::max(omega, 1.0); }
 
 HillStability hill_stability(const HarmonicBalance& system, const Eigen::VectorXd& x, double omega) {
   HillStability out;
-  const HbmModel& m = system.model();
+  const friction::FrictionModel& m = system.model();
   const Index n = m.mass.rows();
   const int harmonics = system.options().harmonics;
   const Index nh = 2 * harmonics + 1;

@@ -21,7 +21,8 @@ using Eigen::Index;
 // static block by k_max s0, the dynamic one by k_max a, so that both are O(1) at every amplitude.
 class EpmcSystem {
  public:
-  EpmcSystem(const HbmModel& model, const HarmonicBalance& contacts, const Eigen::VectorXd& phi, double w0, double kmax)
+  EpmcSystem(const friction::FrictionModel& model, const HarmonicBalance& contacts, const Eigen::VectorXd& phi,
+             double w0, double kmax)
       : m_(model),
         hb_(contacts),
         phi_(phi),
@@ -127,7 +128,7 @@ class EpmcSystem {
   }
 
  private:
-  const HbmModel& m_;
+  const friction::FrictionModel& m_;
   const HarmonicBalance& hb_;
   Eigen::VectorXd phi_;
   double w0_, kmax_;
@@ -139,10 +140,11 @@ class EpmcSystem {
 
 }  // namespace
 
-NonlinearModeBranch trace_nonlinear_mode(const HbmModel& input, int linear_mode, const std::vector<double>& amplitudes,
-                                         const Eigen::VectorXd& static_guess, const NonlinearModeOptions& options) {
-  HbmModel model = input;
-  validate_model(model, "nonlinear modes");
+NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, int linear_mode,
+                                         const std::vector<double>& amplitudes, const Eigen::VectorXd& static_guess,
+                                         const NonlinearModeOptions& options) {
+  friction::FrictionModel model = input;
+  friction::validate_model(model, "nonlinear modes");
   const Index n = model.mass.rows();
   if (linear_mode < 1 || linear_mode > n)
     throw std::invalid_argument(fmt::format("nonlinear modes: linear mode {} of a model with {} DOFs", linear_mode, n));
@@ -160,7 +162,7 @@ NonlinearModeBranch trace_nonlinear_mode(const HbmModel& input, int linear_mode,
   const HarmonicBalance contacts(model, hb_options);  // validates the contacts, resolves the samples
 
   // The stuck linear mode: the start of the branch and its phase reference.
-  const Eigen::MatrixXd k_stuck = stuck_stiffness(model);
+  const Eigen::MatrixXd k_stuck = friction::stuck_stiffness(model);
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k_stuck, model.mass);
   if (eig.info() != Eigen::Success || !(eig.eigenvalues()[linear_mode - 1] > 0.0))
     throw std::invalid_argument(fmt::format(
@@ -181,7 +183,7 @@ NonlinearModeBranch trace_nonlinear_mode(const HbmModel& input, int linear_mode,
     q.col(0) = static_guess;
   } else {
     Eigen::VectorXd load = model.static_load;
-    for (const ContactElement& c : model.contacts)
+    for (const friction::ContactElement& c : model.contacts)
       load -= c.law.n0 * c.normal.transpose() - c.law.kt * c.tangential_offset * c.tangential.transpose();
     q.col(0) = k_stuck.ldlt().solve(load);
   }

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "contact/aft.hpp"
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 
 namespace bb::hbm {
 
@@ -55,7 +55,8 @@ struct NonlinearModeBranch {
 // seeds the static part. Throws std::invalid_argument on an invalid model, mode index or amplitude
 // list; a Newton failure ends the branch (converged == false, failure says where) and never
 // yields a non-finite point.
-NonlinearModeBranch trace_nonlinear_mode(const HbmModel& model, int linear_mode, const std::vector<double>& amplitudes,
-                                         const Eigen::VectorXd& static_guess, const NonlinearModeOptions& options);
+NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& model, int linear_mode,
+                                         const std::vector<double>& amplitudes, const Eigen::VectorXd& static_guess,
+                                         const NonlinearModeOptions& options);
 
 }  // namespace bb::hbm

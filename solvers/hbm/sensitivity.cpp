@@ -41,7 +41,7 @@ Eigen::VectorXcd rows_of(const Eigen::VectorXcd& v, const std::vector<Index>& ro
   return s;
 }
 
-void check_sizes(const HbmModel& model, const std::vector<ModelDerivative>& derivatives) {
+void check_sizes(const friction::FrictionModel& model, const std::vector<ModelDerivative>& derivatives) {
   const Index n = model.mass.rows();
   for (size_t j = 0; j < derivatives.size(); ++j) {
     const ModelDerivative& d = derivatives[j];
@@ -78,7 +78,7 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
   if (solution.x.size() != s.unknowns())
     throw std::invalid_argument(
         fmt::format("sensitivity: x has {} entries, expected {}", solution.x.size(), s.unknowns()));
-  const HbmModel& model = s.model();
+  const friction::FrictionModel& model = s.model();
   check_sizes(model, derivatives);
   const double omega = solution.omega;
   const int harmonics = s.options().harmonics;
@@ -144,7 +144,7 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
     options.law_derivatives = true;
     const Eigen::Map<const Eigen::MatrixXd> coefficients(solution.x.data(), nc, m);
     for (size_t k = 0; k < model.contacts.size(); ++k) {
-      const ContactElement& e = model.contacts[k];
+      const friction::ContactElement& e = model.contacts[k];
       Eigen::RowVectorXd at(nc), an(nc);
       for (Index i = 0; i < nc; ++i)
         at[i] = e.tangential[c[static_cast<size_t>(i)]], an[i] = e.normal[c[static_cast<size_t>(i)]];
@@ -194,7 +194,7 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
 
 }  // namespace
 
-ModelDerivative law_derivative(const HbmModel& model, contact::LawParameter parameter) {
+ModelDerivative law_derivative(const friction::FrictionModel& model, contact::LawParameter parameter) {
   contact::JenkinsParameters unit;
   switch (parameter) {
     case contact::law_kn:
@@ -215,13 +215,13 @@ ModelDerivative law_derivative(const HbmModel& model, contact::LawParameter para
   return d;
 }
 
-ModelDerivative damping_scale_derivative(const HbmModel& model) {
+ModelDerivative damping_scale_derivative(const friction::FrictionModel& model) {
   ModelDerivative d;
   d.damping = model.damping;
   return d;
 }
 
-ModelDerivative excitation_scale_derivative(const HbmModel& model) {
+ModelDerivative excitation_scale_derivative(const friction::FrictionModel& model) {
   ModelDerivative d;
   d.harmonic_load = model.harmonic_load;
   return d;

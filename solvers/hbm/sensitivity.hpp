@@ -37,12 +37,12 @@ struct ModelDerivative {
 };
 
 // d/dp for p = one law parameter shared by every contact (the usual single-law model).
-ModelDerivative law_derivative(const HbmModel& model, contact::LawParameter parameter);
+ModelDerivative law_derivative(const friction::FrictionModel& model, contact::LawParameter parameter);
 // d/ds of the model with C replaced by s C, at s = 1 (dC/ds = C). For modal or proportional damping
 // C = zeta C1 this is zeta d/dzeta: divide the sensitivities by zeta for d/dzeta.
-ModelDerivative damping_scale_derivative(const HbmModel& model);
+ModelDerivative damping_scale_derivative(const friction::FrictionModel& model);
 // d/ds of the model with the harmonic load F replaced by s F, at s = 1 (static load unchanged).
-ModelDerivative excitation_scale_derivative(const HbmModel& model);
+ModelDerivative excitation_scale_derivative(const friction::FrictionModel& model);
 
 // dx/dp in the contact-DOF harmonic layout of HarmonicBalance (unknowns() rows), one column per
 // entry of `derivatives`. Throws SolverError when the solution is not converged or J is singular

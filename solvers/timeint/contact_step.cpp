@@ -2,14 +2,14 @@
 
 namespace bb::timeint {
 
-ContactSample contact_step(const hbm::ContactElement& contact, double slider_before, const Eigen::VectorXd& q) {
+ContactSample contact_step(const friction::ContactElement& contact, double slider_before, const Eigen::VectorXd& q) {
   const double u = contact.tangential.dot(q) - contact.tangential_offset;
   const double v = contact.normal.dot(q);
   const contact::JenkinsStep s = contact::jenkins_step(contact.law, slider_before, u, v);
   return {.u = u, .v = v, .tangential = s.tangential, .normal = s.normal, .slider = s.slider, .state = s.state};
 }
 
-ContactTangent contact_tangent(const hbm::ContactElement& contact, const ContactSample& sample) {
+ContactTangent contact_tangent(const friction::ContactElement& contact, const ContactSample& sample) {
   const contact::JenkinsParameters& p = contact.law;
   switch (sample.state) {
     case contact::ContactState::stick:

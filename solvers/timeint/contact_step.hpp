@@ -1,6 +1,6 @@
 // One implicit step of a point friction contact in the time domain: the predictor-corrector slider
 // of thesis Table XII (section 3.4.2.1, eqs 3.44-3.48) evaluated on the rows of an
-// hbm::ContactElement, with the consistent tangent a Newton iteration needs. Units: SI.
+// friction::ContactElement, with the consistent tangent a Newton iteration needs. Units: SI.
 //
 // The law is exactly contact::jenkins_step (contact/jenkins_contact.hpp): Table XII's s* = s - t2
 // (eq 3.44) is the slider position w relative to body 2, t1 - t2 the relative tangential
@@ -21,7 +21,7 @@
 #include <Eigen/Dense>
 
 #include "contact/jenkins_contact.hpp"
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 
 namespace bb::timeint {
 
@@ -43,8 +43,8 @@ struct ContactTangent {
 };
 
 // Table XII for one contact: the slider at the start of the step, the displacements q at its end.
-ContactSample contact_step(const hbm::ContactElement& contact, double slider_before, const Eigen::VectorXd& q);
+ContactSample contact_step(const friction::ContactElement& contact, double slider_before, const Eigen::VectorXd& q);
 
-ContactTangent contact_tangent(const hbm::ContactElement& contact, const ContactSample& sample);
+ContactTangent contact_tangent(const friction::ContactElement& contact, const ContactSample& sample);
 
 }  // namespace bb::timeint

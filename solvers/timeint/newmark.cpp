@@ -17,14 +17,14 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-hbm::HbmModel validated(hbm::HbmModel model) {
-  hbm::validate_model(model, "Newmark");
+friction::FrictionModel validated(friction::FrictionModel model) {
+  friction::validate_model(model, "Newmark");
   return model;
 }
 
-double model_force_scale(const hbm::HbmModel& m) {
+double model_force_scale(const friction::FrictionModel& m) {
   double s = m.static_load.norm();
-  for (const hbm::ContactElement& c : m.contacts) s += (1.0 + c.law.mu) * c.law.n0;
+  for (const friction::ContactElement& c : m.contacts) s += (1.0 + c.law.mu) * c.law.n0;
   return s;
 }
 
@@ -36,7 +36,7 @@ struct ContactEval {
   MatrixXd jacobian;
 };
 
-ContactEval evaluate_contacts(const std::vector<hbm::ContactElement>& contacts, const std::vector<double>& before,
+ContactEval evaluate_contacts(const std::vector<friction::ContactElement>& contacts, const std::vector<double>& before,
                               const VectorXd& x) {
   ContactEval e;
   const Index n = x.size();
@@ -44,7 +44,7 @@ ContactEval evaluate_contacts(const std::vector<hbm::ContactElement>& contacts, 
   e.jacobian = MatrixXd::Zero(n, n);
   e.samples.reserve(contacts.size());
   for (size_t k = 0; k < contacts.size(); ++k) {
-    const hbm::ContactElement& c = contacts[k];
+    const friction::ContactElement& c = contacts[k];
     const ContactSample s = contact_step(c, before[k], x);
     e.force += c.tangential.transpose() * s.tangential + c.normal.transpose() * s.normal;
     const ContactTangent d = contact_tangent(c, s);
@@ -74,7 +74,7 @@ Excitation no_excitation(Index dofs) {
   return [dofs](double) -> VectorXd { return VectorXd::Zero(dofs); };
 }
 
-NewmarkIntegrator::NewmarkIntegrator(hbm::HbmModel model, NewmarkOptions options)
+NewmarkIntegrator::NewmarkIntegrator(friction::FrictionModel model, NewmarkOptions options)
     : model_(validated(std::move(model))), options_(options), system_(model_) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("Newmark: " + what); };
   const double dt = options_.time_step, alpha = options_.alpha;
@@ -117,7 +117,7 @@ DynamicState NewmarkIntegrator::initial_state(const VectorXd& q0, const VectorXd
   s.velocity = v0;
   s.load = model_.static_load + excitation(t0);
   for (size_t k = 0; k < model_.contacts.size(); ++k) {
-    const hbm::ContactElement& c = model_.contacts[k];
+    const friction::ContactElement& c = model_.contacts[k];
     const double w = sliders.empty() ? c.tangential.dot(q0) - c.tangential_offset : sliders[k];
     s.contacts.push_back(contact_step(c, w, q0));
   }
@@ -140,7 +140,7 @@ StepReport NewmarkIntegrator::step(DynamicState& state, const Excitation& excita
 
   StepReport report;
   VectorXd q(q0.size());
-  const hbm::Condensation<double>::Load load = keff_->condense(b);
+  const friction::Condensation<double>::Load load = keff_->condense(b);
   const std::vector<Index>& c = system_.contact_dofs();
   const std::vector<Index>& o = system_.other_dofs();
   if (c.empty()) {

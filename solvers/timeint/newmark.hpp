@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 #include "timeint/contact_step.hpp"
 
 namespace bb::timeint {
@@ -56,7 +56,7 @@ struct NewmarkOptions {
 // External load beyond f_static, a function of time [N], one entry per DOF.
 using Excitation = std::function<Eigen::VectorXd(double)>;
 
-// f(t) = Re(F e^{i omega t}) (cos for real F): the harmonic_load of an HbmModel.
+// f(t) = Re(F e^{i omega t}) (cos for real F): the harmonic_load of a friction::FrictionModel.
 Excitation harmonic_excitation(const Eigen::VectorXcd& amplitude, double omega_rad_s);
 // f(t) = 0.
 Excitation no_excitation(Eigen::Index dofs);
@@ -94,9 +94,9 @@ class NewmarkIntegrator {
   // Validates the model (sizes, finite entries, laws; contacts may be empty: a linear model), the
   // options, M (must be invertible: the initial acceleration) and factorizes K_eff and S.
   // Throws std::invalid_argument naming the requirement that fails.
-  NewmarkIntegrator(hbm::HbmModel model, NewmarkOptions options);
+  NewmarkIntegrator(friction::FrictionModel model, NewmarkOptions options);
 
-  const hbm::HbmModel& model() const { return model_; }
+  const friction::FrictionModel& model() const { return model_; }
   const NewmarkOptions& options() const { return options_; }
   const std::vector<Eigen::Index>& contact_dofs() const { return system_.contact_dofs(); }
   double force_scale() const { return force_scale_; }
@@ -119,12 +119,12 @@ class NewmarkIntegrator {
  private:
   Eigen::VectorXd contact_force(const std::vector<ContactSample>& samples) const;  // g on all DOFs
 
-  hbm::HbmModel model_;
+  friction::FrictionModel model_;
   NewmarkOptions options_;
   double beta_ = 0.25, gamma_ = 0.5;
-  hbm::FrictionSystem system_;
+  friction::FrictionSystem system_;
   Eigen::PartialPivLU<Eigen::MatrixXd> mass_lu_;
-  std::optional<hbm::Condensation<double>> keff_;  // K_eff condensed onto the contact DOFs
+  std::optional<friction::Condensation<double>> keff_;  // K_eff condensed onto the contact DOFs
   double force_scale_ = 0.0;
 };
 

@@ -94,7 +94,7 @@ double turning_point(const Trace& g, double hi) {
 
 }  // namespace
 
-PiecewiseFlow::PiecewiseFlow(const hbm::HbmModel& model, double omega_rad_s, double step)
+PiecewiseFlow::PiecewiseFlow(const friction::FrictionModel& model, double omega_rad_s, double step)
     : model_(model),
       omega_(omega_rad_s),
       step_(step),
@@ -113,7 +113,7 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
   MatrixXd stiffness = model_.stiffness, slider_force = MatrixXd::Zero(n_, nc_);
   VectorXd constant = model_.static_load;  // f_static minus the contacts' constant forces
   for (Index k = 0; k < nc_; ++k) {
-    const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+    const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
     const contact::JenkinsParameters& law = c.law;
     const VectorXd at = c.tangential.transpose(), an = c.normal.transpose();
     const ContactState m = modes[static_cast<size_t>(k)];
@@ -193,13 +193,13 @@ void PiecewiseFlow::unpack(const VectorXd& z, FlowState& s) const {
 }
 
 RowVectorXd PiecewiseFlow::slider_row(Index k, ContactState m) const {
-  const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+  const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
   if (!slipping(m)) return c.tangential;
   return c.tangential - sign_of(m) * c.law.mu * c.law.kn / c.law.kt * c.normal;
 }
 
 double PiecewiseFlow::algebraic_slider(const FlowState& s, Index k, ContactState m) const {
-  const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+  const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
   return slider_row(k, m).dot(s.q) - c.tangential_offset -
          (slipping(m) ? sign_of(m) * c.law.mu * c.law.n0 / c.law.kt : 0.0);
 }
@@ -216,7 +216,7 @@ void PiecewiseFlow::tie_sliders(FlowState& s, MatrixXd* jacobian) const {
 void PiecewiseFlow::settle(FlowState& s) const {
   s.modes.assign(static_cast<size_t>(nc_), ContactState::stick);
   for (Index k = 0; k < nc_; ++k) {
-    const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+    const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
     const contact::JenkinsParameters& law = c.law;
     const double normal = law.n0 + law.kn * c.normal.dot(s.q);
     ContactState& m = s.modes[static_cast<size_t>(k)];
@@ -251,7 +251,7 @@ std::vector<PiecewiseFlow::Event> PiecewiseFlow::events(const std::vector<Contac
   std::vector<Event> out;
   const Index p = n_, one = 2 * n_ + nc_;
   for (Index k = 0; k < nc_; ++k) {
-    const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+    const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
     const contact::JenkinsParameters& law = c.law;
     const ContactState m = modes[static_cast<size_t>(k)];
     if (law.kn > 0.0) {
@@ -372,7 +372,7 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
     log.switched[static_cast<size_t>(k)] = 1;
     if (before == ContactState::lift_off) {
       // Closing: the slider sticks at u(theta_c), theta_c moving with the start.
-      const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+      const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
       s.w[k] = c.tangential.dot(s.q) - c.tangential_offset;
       if (jacobian) {
         const double closing_rate = c.normal.dot(s.p);
@@ -392,7 +392,7 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
 }
 
 ContactSample PiecewiseFlow::sample(const FlowState& s, Index k) const {
-  const hbm::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+  const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
   const contact::JenkinsParameters& law = c.law;
   const ContactState m = s.modes[static_cast<size_t>(k)];
   ContactSample out;

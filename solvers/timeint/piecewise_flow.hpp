@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 #include "timeint/contact_step.hpp"
 
 namespace bb::timeint {
@@ -38,10 +38,10 @@ struct FlowState {
 
 class PiecewiseFlow {
  public:
-  // `model` validated (hbm::validate_model) with an invertible mass; omega > 0 [rad/s].
+  // `model` validated (friction::validate_model) with an invertible mass; omega > 0 [rad/s].
   // Throws std::invalid_argument when M is singular. `step` [rad]: the sub-interval whose
   // exponentials are cached per combination of modes.
-  PiecewiseFlow(const hbm::HbmModel& model, double omega_rad_s, double step);
+  PiecewiseFlow(const friction::FrictionModel& model, double omega_rad_s, double step);
 
   Eigen::Index dofs() const { return n_; }
   Eigen::Index contacts() const { return nc_; }
@@ -89,7 +89,7 @@ class PiecewiseFlow {
   double algebraic_slider(const FlowState& s, Eigen::Index k, contact::ContactState m) const;
   Eigen::RowVectorXd slider_row(Eigen::Index k, contact::ContactState m) const;  // d w_k / dq in mode m
 
-  hbm::HbmModel model_;
+  friction::FrictionModel model_;
   double omega_, step_;
   Eigen::Index n_, nc_, size_;  // DOFs, contacts, augmented size 2n + nc + 3
   Eigen::MatrixXd mass_inverse_;

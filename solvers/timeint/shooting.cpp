@@ -19,7 +19,7 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-void validate(const hbm::HbmModel& model, double omega, const ShootingOptions& o) {
+void validate(const friction::FrictionModel& model, double omega, const ShootingOptions& o) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("shooting: " + what); };
   if (!(std::isfinite(omega) && omega > 0.0)) fail(fmt::format("omega must be finite and > 0 (got {})", omega));
   if (o.dofs.empty()) fail("at least one DOF to report");
@@ -83,8 +83,8 @@ VectorXd residual(const PiecewiseFlow& flow, const Period& p, const VectorXd& x)
 }
 
 // The start: the static state, then periods marched until they nearly repeat.
-VectorXd warm_start(const hbm::HbmModel& model, const PiecewiseFlow& flow, const ShootingOptions& o, int& periods,
-                    std::string& failure) {
+VectorXd warm_start(const friction::FrictionModel& model, const PiecewiseFlow& flow, const ShootingOptions& o,
+                    int& periods, std::string& failure) {
   const StaticState st = static_initial_state(model, o.initial);
   VectorXd x = VectorXd::Zero(flow.state_size());
   if (st.converged) {
@@ -140,10 +140,10 @@ void floquet(const PiecewiseFlow& flow, const Period& p, ShootingResult& out) {
 
 }  // namespace
 
-ShootingResult shooting(const hbm::HbmModel& input, double omega, const ShootingOptions& o,
+ShootingResult shooting(const friction::FrictionModel& input, double omega, const ShootingOptions& o,
                         const std::optional<FlowState>& start) {
-  hbm::HbmModel model = input;
-  hbm::validate_model(model, "shooting");
+  friction::FrictionModel model = input;
+  friction::validate_model(model, "shooting");
   validate(model, omega, o);
   const PiecewiseFlow flow(model, omega, kTwoPi / o.steps_per_period);
   ShootingResult out;

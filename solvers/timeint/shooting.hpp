@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 #include "timeint/piecewise_flow.hpp"
 #include "timeint/steady_state.hpp"
 
@@ -50,7 +50,8 @@ struct ShootingResult {
 
 // Throws std::invalid_argument on invalid options; a run that does not converge says so in
 // steady.failure with |R| and the iteration count (converged == false).
-[[nodiscard]] ShootingResult shooting(const hbm::HbmModel& model, double omega_rad_s, const ShootingOptions& options,
+[[nodiscard]] ShootingResult shooting(const friction::FrictionModel& model, double omega_rad_s,
+                                      const ShootingOptions& options,
                                       const std::optional<FlowState>& start = std::nullopt);
 
 }  // namespace bb::timeint

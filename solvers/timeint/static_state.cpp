@@ -14,22 +14,22 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions& options) {
-  hbm::HbmModel m = input;
-  hbm::validate_model(m, "static initial state");
+StaticState static_initial_state(const friction::FrictionModel& input, const StaticOptions& options) {
+  friction::FrictionModel m = input;
+  friction::validate_model(m, "static initial state");
   if (options.max_iterations < 1 || options.max_backtracks < 0 || !(options.tolerance > 0.0))
     throw std::invalid_argument("static initial state: max_iterations >= 1, max_backtracks >= 0 and tolerance > 0");
   const Index n = m.mass.rows();
   const bool stuck = options.friction == StaticFriction::stuck_at_offset;
   double scale = m.static_load.norm();
-  for (const hbm::ContactElement& c : m.contacts) scale += (1.0 + c.law.mu) * c.law.n0;
+  for (const friction::ContactElement& c : m.contacts) scale += (1.0 + c.law.mu) * c.law.n0;
   const double tolerance = options.tolerance * (scale + 1.0);
 
   const auto balance = [&](const VectorXd& q) {
     NewtonPoint p;
     p.residual = m.stiffness * q - m.static_load;
     p.jacobian = m.stiffness;
-    for (const hbm::ContactElement& c : m.contacts) {
+    for (const friction::ContactElement& c : m.contacts) {
       const double v = c.normal.dot(q);
       const double normal = std::max(c.law.n0 + c.law.kn * v, 0.0);
       p.residual += c.normal.transpose() * normal;
@@ -64,7 +64,7 @@ StaticState static_initial_state(const hbm::HbmModel& input, const StaticOptions
         "{:.3e} N)",
         r.residual, s.iterations, tolerance);
   s.q = s.converged ? r.x : VectorXd::Zero(n);
-  for (const hbm::ContactElement& c : m.contacts) {
+  for (const friction::ContactElement& c : m.contacts) {
     const double w = stuck ? 0.0 : c.tangential.dot(s.q) - c.tangential_offset;
     s.sliders.push_back(w);
     s.contacts.push_back(contact_step(c, w, s.q));

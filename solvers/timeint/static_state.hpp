@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 #include "timeint/contact_step.hpp"
 
 namespace bb::timeint {
@@ -41,6 +41,6 @@ struct StaticState {
 // Newton (semismooth on the max of the normal law, linalg/damped_newton.hpp with a rank-revealing
 // step) with backtracking on K q + g(q) = f_static, the full model (static problems are solved
 // once). Never throws on non-convergence; throws std::invalid_argument on invalid models.
-[[nodiscard]] StaticState static_initial_state(const hbm::HbmModel& model, const StaticOptions& options = {});
+[[nodiscard]] StaticState static_initial_state(const friction::FrictionModel& model, const StaticOptions& options = {});
 
 }  // namespace bb::timeint

@@ -108,7 +108,7 @@ void fill_harmonics(const std::deque<MatrixXd>& periods, int harmonics, SteadySt
   }
 }
 
-SteadyState steady_state(const hbm::HbmModel& model, double omega, const SteadyStateOptions& options,
+SteadyState steady_state(const friction::FrictionModel& model, double omega, const SteadyStateOptions& options,
                          const std::optional<DynamicState>& start) {
   validate(omega, options);
   const int n_t = options.steps_per_period;

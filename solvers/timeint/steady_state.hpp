@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 #include "timeint/newmark.hpp"
 #include "timeint/static_state.hpp"
 
@@ -77,7 +77,7 @@ void fill_harmonics(const std::deque<Eigen::MatrixXd>& periods, int harmonics, S
 // a continuous load) or, without one, from static_initial_state(model, options.initial).
 // Throws std::invalid_argument on invalid inputs; a failed step or static solve is reported in
 // the result (converged == false), never thrown.
-[[nodiscard]] SteadyState steady_state(const hbm::HbmModel& model, double omega_rad_s,
+[[nodiscard]] SteadyState steady_state(const friction::FrictionModel& model, double omega_rad_s,
                                        const SteadyStateOptions& options,
                                        const std::optional<DynamicState>& start = std::nullopt);
 

@@ -256,7 +256,7 @@ TEST(HbmExtremes, ColdStartAtDamperResonanceFailsWhereAWarmStartConverges) {
 TEST(HbmExtremes, ShortContinuationsKeepTheSolverContract) {
   struct Run {
     const char* name;
-    HbmModel model;
+    friction::FrictionModel model;
     int harmonics;
     bool must_finish;
   };

@@ -24,9 +24,9 @@ inline Eigen::RowVectorXd unit_row(Eigen::Index n, Eigen::Index i) {
 // A blade of three DOFs (also the model of tests/unit/hbm_harmonic_balance_test.cpp): DOF 0 root (excited, no contact),
 // 1 platform tangential (u = q1), 2 platform normal (v = q2, a push along +q2 presses). Modal damping zeta on every
 // mode; `static_push` is an extra static force on DOF 2 [N].
-inline HbmModel blade_on_ground(const contact::JenkinsParameters& law, double force, double zeta = 0.01,
-                                double static_push = 0.0) {
-  HbmModel m;
+inline friction::FrictionModel blade_on_ground(const contact::JenkinsParameters& law, double force, double zeta = 0.01,
+                                               double static_push = 0.0) {
+  friction::FrictionModel m;
   m.stiffness.resize(3, 3);
   m.stiffness << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = Eigen::Vector3d(1.0, 0.4, 0.3).asDiagonal();
@@ -54,15 +54,15 @@ inline damper::RigidDamper planar_damper() {
 
 inline constexpr double kCentrifugalForce = 300.0;  // [N]
 
-inline HbmModel planar_blades_with_damper(const contact::JenkinsParameters& law, double force, double zeta,
-                                          double cf = kCentrifugalForce) {
+inline friction::FrictionModel planar_blades_with_damper(const contact::JenkinsParameters& law, double force,
+                                                         double zeta, double cf = kCentrifugalForce) {
   Eigen::Matrix4d kb = Eigen::Matrix4d::Zero(), mb = Eigen::Vector4d(0.5, 0.5, 0.45, 0.45).asDiagonal();
   kb.topLeftCorner<2, 2>() << 1.0e6, 2.0e5, 2.0e5, 1.5e6;
   kb.bottomRightCorner<2, 2>() << 1.1e6, -1.5e5, -1.5e5, 1.4e6;
   const damper::RigidDamper d = planar_damper();
   const damper::CoupledSystem s = damper::assemble_coupled_system(mb, kb, d);
   const damper::ContactKinematics k = damper::contact_kinematics(d, 4);
-  HbmModel m;
+  friction::FrictionModel m;
   m.mass = s.mass;
   m.stiffness = s.stiffness;
   m.damping = Eigen::MatrixXd::Zero(7, 7);
@@ -78,9 +78,9 @@ inline HbmModel planar_blades_with_damper(const contact::JenkinsParameters& law,
 // The resonance seen from the forced DOF with every contact stuck (springs kn on a_n, kt on a_t):
 // the mode with the largest modal receptance phi_f^2 / w^2 at DOF `forced` (mass-normalized phi).
 // A reference frequency to place points below, at and above resonance, not a nonlinear peak.
-inline double stuck_resonance(const HbmModel& m, Eigen::Index forced) {
+inline double stuck_resonance(const friction::FrictionModel& m, Eigen::Index forced) {
   Eigen::MatrixXd k = m.stiffness;
-  for (const ContactElement& c : m.contacts)
+  for (const friction::ContactElement& c : m.contacts)
     k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k, m.mass);
   double best = -1.0, omega = 0.0;

@@ -20,7 +20,7 @@ struct Tally {
 };
 
 // Three periods at 64 steps per period near the blade's first mode, from the static state.
-void run_point(const hbm::HbmModel& model, Tally& tally) {
+void run_point(const friction::FrictionModel& model, Tally& tally) {
   const double omega = 1000.0;
   const NewmarkIntegrator integrator(model, {.time_step = 2 * std::numbers::pi / (omega * 64)});
   const StaticState s = static_initial_state(model);
@@ -52,7 +52,8 @@ TEST(TimeExtremes, BladeOnGroundCompletesOrStopsWithAReason) {
       for (const double mu : {0.0, 0.3, 2.0})
         for (const double force : {0.01, 100.0, 3000.0})
           for (const double n0 : {0.0, 1e5}) {
-            const hbm::HbmModel m = hbm::models::blade_on_ground({.kn = kn, .kt = kt, .mu = mu, .n0 = n0}, force, 1e-5);
+            const friction::FrictionModel m =
+                hbm::models::blade_on_ground({.kn = kn, .kt = kt, .mu = mu, .n0 = n0}, force, 1e-5);
             run_point(m, tally);
           }
   std::printf("  blade on ground: %d completed, %d stopped with a reason\n", tally.completed, tally.stopped);
@@ -65,7 +66,8 @@ TEST(TimeExtremes, BladesWithDamperCompleteOrStopWithAReason) {
     for (const double mu : {0.0, 0.3, 2.0})
       for (const double force : {0.01, 10.0, 3000.0})
         for (const double zeta : {1e-5, 1e-2}) {
-          const hbm::HbmModel m = hbm::models::planar_blades_with_damper({.kn = k, .kt = k, .mu = mu}, force, zeta);
+          const friction::FrictionModel m =
+              hbm::models::planar_blades_with_damper({.kn = k, .kt = k, .mu = mu}, force, zeta);
           run_point(m, tally);
         }
   std::printf("  blades + damper: %d completed, %d stopped with a reason\n", tally.completed, tally.stopped);

@@ -19,8 +19,8 @@ struct FrictionOscillator {
   double force = 0.0;                  // F [N], amplitude of the cosine excitation
   contact::JenkinsParameters contact;  // to the ground, u = x
 
-  hbm::HbmModel model() const {
-    hbm::HbmModel m;
+  friction::FrictionModel model() const {
+    friction::FrictionModel m;
     m.mass = Eigen::MatrixXd::Constant(1, 1, mass);
     m.damping = Eigen::MatrixXd::Constant(1, 1, damping);
     m.stiffness = Eigen::MatrixXd::Constant(1, 1, stiffness);

@@ -1,7 +1,7 @@
 // The friction system (hbm/friction_system): the contact DOFs are exactly those some a_t or a_n
 // touches, and the Schur condensation onto them plus the recovery of the others reproduces the
 // full solve, for the real operator of the time domain and the complex one of a harmonic.
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@ namespace {
 
 using Eigen::Index;
 
-HbmModel five_dofs() {
-  HbmModel m;
+friction::FrictionModel five_dofs() {
+  friction::FrictionModel m;
   m.mass = Eigen::MatrixXd::Identity(5, 5);
   m.stiffness = Eigen::MatrixXd::Identity(5, 5);
   Eigen::RowVectorXd t = Eigen::RowVectorXd::Zero(5), n = Eigen::RowVectorXd::Zero(5);
@@ -27,12 +27,12 @@ HbmModel five_dofs() {
 
 template <class Scalar>
 void condensed_solve_matches_the_full_solve(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& a,
-                                            const FrictionSystem& system) {
+                                            const friction::FrictionSystem& system) {
   using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   const Vector f = Vector::Random(a.rows());
   const Vector full = a.partialPivLu().solve(f);
-  const Condensation<Scalar> d = system.condense(a);
-  const typename Condensation<Scalar>::Load load = d.condense(f);
+  const friction::Condensation<Scalar> d = system.condense(a);
+  const typename friction::Condensation<Scalar>::Load load = d.condense(f);
   const Vector x_c = d.reduced().partialPivLu().solve(load.contact);
   const Vector x_o = d.recover(load, x_c);
   Vector z(a.rows());
@@ -43,7 +43,7 @@ void condensed_solve_matches_the_full_solve(const Eigen::Matrix<Scalar, Eigen::D
 }
 
 TEST(FrictionSystem, ContactDofsAreThoseTheContactRowsTouch) {
-  const FrictionSystem system(five_dofs());
+  const friction::FrictionSystem system(five_dofs());
   EXPECT_EQ(system.contact_dofs(), (std::vector<Index>{1, 3, 4}));
   EXPECT_EQ(system.other_dofs(), (std::vector<Index>{0, 2}));
   ASSERT_EQ(system.contacts_on_c().size(), 1u);
@@ -52,7 +52,7 @@ TEST(FrictionSystem, ContactDofsAreThoseTheContactRowsTouch) {
 }
 
 TEST(FrictionSystem, CondensationAndRecoveryReproduceTheFullSolve) {
-  const FrictionSystem system(five_dofs());
+  const friction::FrictionSystem system(five_dofs());
   const Eigen::MatrixXd r = Eigen::MatrixXd::Random(5, 5);
   const Eigen::MatrixXd a = r * r.transpose() + 5.0 * Eigen::MatrixXd::Identity(5, 5);  // K_eff-like: SPD
   condensed_solve_matches_the_full_solve<double>(a, system);
@@ -63,12 +63,12 @@ TEST(FrictionSystem, CondensationAndRecoveryReproduceTheFullSolve) {
 }
 
 TEST(FrictionSystem, EveryDofAContactDofLeavesNothingToCondense) {
-  HbmModel m = five_dofs();
+  friction::FrictionModel m = five_dofs();
   m.contacts[0].normal = Eigen::RowVectorXd::Ones(5);
-  const FrictionSystem system(m);
+  const friction::FrictionSystem system(m);
   EXPECT_TRUE(system.other_dofs().empty());
   const Eigen::MatrixXd a = 3.0 * Eigen::MatrixXd::Identity(5, 5);
-  const Condensation<double> d = system.condense(a);
+  const friction::Condensation<double> d = system.condense(a);
   EXPECT_EQ(d.reduced(), a);
   EXPECT_EQ(d.recover(d.condense(Eigen::VectorXd::Ones(5)), Eigen::VectorXd::Ones(5)).size(), 0);
 }

@@ -35,10 +35,10 @@ using models::blade_on_ground;
 
 // Harmonics of all DOFs of the linear model with the contact replaced by springs kn (a_n) and, if
 // stuck, kt (a_t), preload N0 acting on the static term: columns (c0, a1, b1).
-MatrixXd linear_reference(const HbmModel& m, double omega, bool stuck) {
+MatrixXd linear_reference(const friction::FrictionModel& m, double omega, bool stuck) {
   MatrixXd k = m.stiffness;
   VectorXd fs = m.static_load;
-  for (const ContactElement& c : m.contacts) {
+  for (const friction::ContactElement& c : m.contacts) {
     k += c.law.kn * c.normal.transpose() * c.normal;
     if (stuck) k += c.law.kt * c.tangential.transpose() * c.tangential;
     fs -= c.law.n0 * c.normal.transpose();
@@ -55,7 +55,7 @@ MatrixXd linear_reference(const HbmModel& m, double omega, bool stuck) {
 double relative_difference(const MatrixXd& a, const MatrixXd& b) { return (a - b).norm() / b.norm(); }
 
 TEST(HbmMultiDof, FrictionlessContactIsTheLinearModelWithNormalSprings) {
-  const HbmModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 0.0, .n0 = 50.0}, 10.0);
+  const friction::FrictionModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 0.0, .n0 = 50.0}, 10.0);
   const HarmonicBalance system(m, {.harmonics = 3});
   for (const double omega : {600.0, 1000.0, 1400.0, 2500.0}) {
     const HbmSolution s = solve_at_frequency(system, omega);
@@ -71,7 +71,7 @@ TEST(HbmMultiDof, FrictionlessContactIsTheLinearModelWithNormalSprings) {
 }
 
 TEST(HbmMultiDof, StuckContactIsTheLinearModelWithNormalAndTangentialSprings) {
-  const HbmModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 1.0e6, .n0 = 50.0}, 10.0);
+  const friction::FrictionModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 1.0e6, .n0 = 50.0}, 10.0);
   const HarmonicBalance system(m, {.harmonics = 3});
   for (const double omega : {600.0, 1200.0, 1800.0, 2500.0}) {
     const HbmSolution s = solve_at_frequency(system, omega);
@@ -87,13 +87,13 @@ TEST(HbmMultiDof, StuckSliderRestsAtItsOffset) {
   // A static push along the tangential DOF with the slider at rest at u = d: stuck, the tangential
   // spring acts on u - d, so the static state is K q + kt a_t^T (a_t q - d) + kn ... = f (closed
   // form), and the stuck starting point of the solver is that same state.
-  HbmModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 1.0e6, .n0 = 50.0}, 1.0);
+  friction::FrictionModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 1.0e6, .n0 = 50.0}, 1.0);
   const double d = 2.0e-5;
   m.contacts[0].tangential_offset = d;
   m.static_load = Eigen::Vector3d(0.0, 15.0, 0.0);
   MatrixXd k = m.stiffness;
   VectorXd fs = m.static_load;
-  const ContactElement& c = m.contacts[0];
+  const friction::ContactElement& c = m.contacts[0];
   k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
   fs += c.law.kt * d * c.tangential.transpose() - c.law.n0 * c.normal.transpose();
   const VectorXd q0 = k.fullPivLu().solve(fs);
@@ -112,7 +112,7 @@ TEST(HbmMultiDof, StuckSliderRestsAtItsOffset) {
 
 TEST(HbmMultiDof, OpeningContactLiftsOffWithoutNaN) {
   // N0 = 0 and no static load: the contact is closed for v > 0 only, i.e. open over part of the cycle.
-  const HbmModel m = blade_on_ground({.kn = 5.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 0.0}, 20.0);
+  const friction::FrictionModel m = blade_on_ground({.kn = 5.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 0.0}, 20.0);
   const HarmonicBalance system(m, {.harmonics = 5});
   for (const double omega : {800.0, 1100.0, 1500.0}) {
     const HbmSolution s = solve_at_frequency(system, omega);
@@ -133,8 +133,8 @@ TEST(HbmMultiDof, OpeningContactLiftsOffWithoutNaN) {
 // Blade of three DOFs and a rigid damper (DOFs 3 tangential, 4 normal) held only by its two
 // contacts: one against the platform, one against a fixed neighbour. K of the damper is zero; the
 // centrifugal force on DOF 4 presses both contacts.
-HbmModel blade_with_damper(double force, double mu) {
-  HbmModel m;
+friction::FrictionModel blade_with_damper(double force, double mu) {
+  friction::FrictionModel m;
   m.stiffness = MatrixXd::Zero(5, 5);
   m.stiffness.topLeftCorner(3, 3) << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = (VectorXd(5) << 1.0, 0.4, 0.3, 0.05, 0.05).finished().asDiagonal();
@@ -247,7 +247,7 @@ double peak_in_time(const VectorXd& coefficients) {
 }
 
 TEST(HbmMultiDof, StickSlipPeakConvergesInHarmonics) {
-  const HbmModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0}, 25.0, 0.005);
+  const friction::FrictionModel m = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0}, 25.0, 0.005);
   // The stick-slip resonance at H = 1 on a grid, then every H at that frequency.
   double peak_omega = 0.0, best = 0.0;
   {
@@ -280,8 +280,8 @@ TEST(HbmMultiDof, StickSlipPeakConvergesInHarmonics) {
 // Two masses grounded by springs, one contact between them (v = q0 - q1 presses) with N0 = 0 and a
 // static load opening a gap of 2e-5 m: small motion is linear, large motion impacts the stiff
 // normal spring. A hardening (impact) resonance whose response curve folds twice.
-HbmModel impact_pair() {
-  HbmModel m;
+friction::FrictionModel impact_pair() {
+  friction::FrictionModel m;
   m.mass = MatrixXd::Identity(2, 2);
   m.stiffness = 1.0e6 * MatrixXd::Identity(2, 2);
   m.damping = 20.0 * MatrixXd::Identity(2, 2);
@@ -352,7 +352,7 @@ TEST(HbmMultiDof, ExtremeParametersConvergeOrReportFailureWithoutNaN) {
     for (const double kt : {1.0e3, 1.0e12})
       for (const double mu : {0.0, 2.0})
         for (const double force : {0.01, 3000.0}) {
-          const HbmModel m = blade_on_ground({.kn = kn, .kt = kt, .mu = mu, .n0 = 10.0}, force, 1e-5);
+          const friction::FrictionModel m = blade_on_ground({.kn = kn, .kt = kt, .mu = mu, .n0 = 10.0}, force, 1e-5);
           const HarmonicBalance system(m, {.harmonics = 3});
           for (const double omega : {900.0, 1300.0}) {
             const HbmSolution s = solve_at_frequency(system, omega);
@@ -376,7 +376,7 @@ TEST(HbmMultiDof, ExtremeParametersConvergeOrReportFailureWithoutNaN) {
 }
 
 TEST(HbmMultiDof, RigidNonContactPartIsRejectedWithAClearMessage) {
-  HbmModel m = blade_on_ground({.kn = 1.0e5, .kt = 1.0e5, .mu = 0.3, .n0 = 10.0}, 1.0);
+  friction::FrictionModel m = blade_on_ground({.kn = 1.0e5, .kt = 1.0e5, .mu = 0.3, .n0 = 10.0}, 1.0);
   m.stiffness.row(0).setZero();
   m.stiffness.col(0).setZero();  // the root DOF is now free when the contact DOFs are clamped
   try {

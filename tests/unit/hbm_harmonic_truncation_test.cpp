@@ -21,8 +21,8 @@ using Eigen::VectorXd;
 
 // m = 1 kg on k = 1e6 N/m, zeta 1 %, a Jenkins contact to the ground with the constant normal load
 // N0 = 30 N (no normal DOF), F cos(omega t) on the mass.
-HbmModel friction_oscillator(double kt, double mu, double force) {
-  HbmModel m;
+friction::FrictionModel friction_oscillator(double kt, double mu, double force) {
+  friction::FrictionModel m;
   m.mass = MatrixXd::Identity(1, 1);
   m.stiffness = MatrixXd::Constant(1, 1, 1.0e6);
   m.damping = MatrixXd::Constant(1, 1, 20.0);
@@ -68,7 +68,7 @@ TEST(HarmonicTruncation, FrictionUnderConstantLoadExcitesOddHarmonicsOnly) {
 // the third harmonic of the H = 3 solution to first order (the third harmonic feeds back on the
 // first only through the slip phases it shifts).
 TEST(HarmonicTruncation, OneStepEstimateMatchesTheThirdHarmonicOfTheLargerBalance) {
-  const HbmModel model = friction_oscillator(1.0e6, 0.3, 10.0);
+  const friction::FrictionModel model = friction_oscillator(1.0e6, 0.3, 10.0);
   const double omega = 2 * std::numbers::pi * 170.0;
   const HarmonicBalance h1(model, {.harmonics = 1, .aft = {.samples = 1024}});
   const HarmonicBalance h3(model, {.harmonics = 3, .aft = {.samples = 1024}});
@@ -82,7 +82,7 @@ TEST(HarmonicTruncation, OneStepEstimateMatchesTheThirdHarmonicOfTheLargerBalanc
 TEST(HarmonicTruncation, SharesFallAsHarmonicsAreAdded) {
   // Coulomb-like (stiff stick) in gross slip: F = 30 N against a slip force of 9 N. (Near F = mu N0
   // the stuck and sliding branches coexist and each H may land on another one.)
-  const HbmModel model = friction_oscillator(1.0e8, 0.3, 30.0);
+  const friction::FrictionModel model = friction_oscillator(1.0e8, 0.3, 30.0);
   const double omega = 2 * std::numbers::pi * 200.0;  // above the resonance: the motion never sticks long
   double previous = 1.0;
   VectorXd warm;  // the previous H's solution, its higher coefficients zero

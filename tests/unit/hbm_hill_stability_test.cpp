@@ -4,8 +4,8 @@
 // the outer branches are stable. Units: SI.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "friction_oscillator.hpp"
@@ -18,7 +18,10 @@ namespace {
 // A friction oscillator driven far below its slip force is the linear oscillator m, c, k + kt:
 // exponents -c / 2m +- i w_d (Krack & Gross 2019, eq. for a linear system).
 TEST(HillStability, StuckOscillatorHasTheExponentsOfItsLinearSpring) {
-  const test::FrictionOscillator o{.mass = 1.0, .damping = 20.0, .stiffness = 1e6, .force = 1e-3,
+  const test::FrictionOscillator o{.mass = 1.0,
+                                   .damping = 20.0,
+                                   .stiffness = 1e6,
+                                   .force = 1e-3,
                                    .contact = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0}};
   for (int h : {1, 3}) {
     const HarmonicBalance system(o.model(), {.harmonics = h});
@@ -34,7 +37,8 @@ TEST(HillStability, StuckOscillatorHasTheExponentsOfItsLinearSpring) {
       EXPECT_NEAR(st.exponents[i].real(), -10.0, 1e-6) << "H = " << h;
       // Im is +w_d or -w_d shifted by a multiple of omega (the exponents are defined modulo i omega).
       const double im = st.exponents[i].imag();
-      const double shifted = std::min(std::abs(std::remainder(im - wd, omega)), std::abs(std::remainder(im + wd, omega)));
+      const double shifted =
+          std::min(std::abs(std::remainder(im - wd, omega)), std::abs(std::remainder(im + wd, omega)));
       EXPECT_NEAR(shifted, 0.0, 1e-6 * wd) << "H = " << h;
     }
     EXPECT_TRUE(st.stable);
@@ -42,7 +46,10 @@ TEST(HillStability, StuckOscillatorHasTheExponentsOfItsLinearSpring) {
 }
 
 TEST(HillStability, NegativeDampingIsUnstableWithTheRightGrowthRate) {
-  test::FrictionOscillator o{.mass = 1.0, .damping = -20.0, .stiffness = 1e6, .force = 1e-3,
+  test::FrictionOscillator o{.mass = 1.0,
+                             .damping = -20.0,
+                             .stiffness = 1e6,
+                             .force = 1e-3,
                              .contact = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0}};
   const HarmonicBalance system(o.model(), {.harmonics = 1});
   const double omega = 2 * std::numbers::pi * 150.0;
@@ -58,7 +65,7 @@ TEST(HillStability, NegativeDampingIsUnstableWithTheRightGrowthRate) {
 // hbm_harmonic_balance_test.cpp): a hardening resonance with two folds. Between the folds the path
 // runs backwards in frequency; that branch is a saddle (a real exponent crossed zero at the fold).
 TEST(HillStability, BranchBetweenTheFoldsOfAHardeningResonanceIsUnstable) {
-  HbmModel m;
+  friction::FrictionModel m;
   m.mass = Eigen::MatrixXd::Identity(2, 2);
   m.stiffness = 1.0e6 * Eigen::MatrixXd::Identity(2, 2);
   m.damping = 20.0 * Eigen::MatrixXd::Identity(2, 2);
@@ -100,7 +107,10 @@ TEST(HillStability, BranchBetweenTheFoldsOfAHardeningResonanceIsUnstable) {
 TEST(HillStability, GrowthBeyondTheResolvedBandIsUnknownNotUnstable) {
   const double omega = 2 * std::numbers::pi * 150.0;
   for (const double damping : {-20.0, 20.0}) {
-    const test::FrictionOscillator o{.mass = 1.0, .damping = damping, .stiffness = 1e10, .force = 1e-3,
+    const test::FrictionOscillator o{.mass = 1.0,
+                                     .damping = damping,
+                                     .stiffness = 1e10,
+                                     .force = 1e-3,
                                      .contact = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0}};
     const HarmonicBalance system(o.model(), {.harmonics = 1});
     const HbmSolution s = solve_at_frequency(system, omega);
@@ -117,9 +127,12 @@ TEST(HillStability, GrowthBeyondTheResolvedBandIsUnknownNotUnstable) {
 }
 
 TEST(HillStability, RefusesASingularMassWithAReason) {
-  test::FrictionOscillator o{.mass = 1.0, .damping = 20.0, .stiffness = 1e6, .force = 1.0,
+  test::FrictionOscillator o{.mass = 1.0,
+                             .damping = 20.0,
+                             .stiffness = 1e6,
+                             .force = 1.0,
                              .contact = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0}};
-  HbmModel m = o.model();
+  friction::FrictionModel m = o.model();
   m.mass(0, 0) = 0.0;
   const HarmonicBalance system(m, {.harmonics = 1});
   const HillStability st = hill_stability(system, Eigen::VectorXd::Zero(3), 900.0);

@@ -17,12 +17,12 @@ constexpr double kPi = std::numbers::pi;
 
 // m = 1 kg on k = 1e6 N/m, c = 20 N s/m; a contact to the ground with kt = 5e5 N/m and a constant
 // normal load of 20 N, mu = 0.5: it lets go after x_s = mu N / kt = 2e-5 m.
-HbmModel oscillator() {
-  HbmModel m;
+friction::FrictionModel oscillator() {
+  friction::FrictionModel m;
   m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
   m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1.0e6);
   m.damping = Eigen::MatrixXd::Constant(1, 1, 20.0);
-  ContactElement c;
+  friction::ContactElement c;
   c.law = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0};
   c.tangential = Eigen::RowVectorXd::Constant(1, 1.0);
   c.normal = Eigen::RowVectorXd::Zero(1);
@@ -72,11 +72,11 @@ TEST(NonlinearModes, SingleHarmonicModeOfTheJenkinsOscillatorIsItsDescribingFunc
 // and damping stay those of one oscillator at every amplitude), the out-of-phase mode softens and
 // gains friction damping.
 TEST(NonlinearModes, InPhaseModeOfSymmetricBladesNeverLoadsTheirContact) {
-  HbmModel m;
+  friction::FrictionModel m;
   m.mass = Eigen::Matrix2d::Identity();
   m.stiffness = (Eigen::Matrix2d() << 1.1e6, -1e5, -1e5, 1.1e6).finished();
   m.damping = 20.0 * Eigen::Matrix2d::Identity();
-  ContactElement c;
+  friction::ContactElement c;
   c.law = {.kn = 1.0e6, .kt = 2.0e5, .mu = 0.3, .n0 = 20.0};
   c.tangential = Eigen::RowVector2d(1.0, -1.0);
   c.normal = Eigen::RowVector2d::Zero();

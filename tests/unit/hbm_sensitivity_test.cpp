@@ -45,8 +45,8 @@ constexpr double kSolverTolerance = 1e-12;
 enum Parameter { p_kn, p_kt, p_mu, p_n0, p_zeta, p_load, parameter_count };
 constexpr std::array<const char*, parameter_count> kNames{"kn", "kt", "mu", "n0", "zeta", "load"};
 
-HbmModel scaled(HbmModel m, int which, double s) {
-  for (ContactElement& c : m.contacts) {
+friction::FrictionModel scaled(friction::FrictionModel m, int which, double s) {
+  for (friction::ContactElement& c : m.contacts) {
     if (which == p_kn) c.law.kn *= s;
     if (which == p_kt) c.law.kt *= s;
     if (which == p_mu) c.law.mu *= s;
@@ -58,7 +58,7 @@ HbmModel scaled(HbmModel m, int which, double s) {
 }
 
 // d/ds of scaled(m, which, s) at s = 1.
-ModelDerivative scale_derivative(const HbmModel& m, int which) {
+ModelDerivative scale_derivative(const friction::FrictionModel& m, int which) {
   if (which == p_zeta) return damping_scale_derivative(m);
   if (which == p_load) return excitation_scale_derivative(m);
   ModelDerivative d = law_derivative(m, static_cast<contact::LawParameter>(which));
@@ -148,7 +148,8 @@ double relative(const MatrixXd& analytic, const MatrixXd& fd, double scale) {
 HbmOptions tight(int harmonics) { return {.harmonics = harmonics, .tolerance = kSolverTolerance}; }
 
 // Analytic vs central differences of warm-started re-solves for every parameter, at omega.
-Comparison compare(const HbmModel& model, int harmonics, double omega, Regime regime, const char* label) {
+Comparison compare(const friction::FrictionModel& model, int harmonics, double omega, Regime regime,
+                   const char* label) {
   const HarmonicBalance system(model, tight(harmonics));
   const HbmSolution base = solve_at_frequency(system, omega);
   EXPECT_TRUE(base.converged) << base.failure;
@@ -194,8 +195,8 @@ Comparison compare(const HbmModel& model, int harmonics, double omega, Regime re
 // One DOF against the ground: m x'' + c x' + k x + T = F cos(omega t), k = 1e6 N/m, m = 1 kg
 // (omega_0 = 1000 rad/s), 1 % damping. a_n = 0: N = N0 throughout; a_n = 0.5 (inclined contact):
 // v = x / 2 varies and opens the contact for x < -2 N0 / kn.
-HbmModel oscillator(const contact::JenkinsParameters& law, double force, double inclination) {
-  HbmModel m;
+friction::FrictionModel oscillator(const contact::JenkinsParameters& law, double force, double inclination) {
+  friction::FrictionModel m;
   m.mass = MatrixXd::Constant(1, 1, 1.0);
   m.stiffness = MatrixXd::Constant(1, 1, 1.0e6);
   m.damping = modal_damping_matrix(m.stiffness, m.mass, 0.01);
@@ -231,11 +232,11 @@ TEST(HbmSensitivity, PlanarDamperMatchesCentralDifferences) {
   const contact::JenkinsParameters law{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 0.0};
   for (const auto& [force, below, regime] :
        {std::tuple{2.0, 0.98, Regime::stuck}, std::tuple{200.0, 0.9, Regime::stick_slip}}) {
-    HbmModel model = models::planar_blades_with_damper(law, force, 1e-2);
+    friction::FrictionModel model = models::planar_blades_with_damper(law, force, 1e-2);
     MatrixXd k = model.stiffness;
-    for (const ContactElement& c : model.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
+    for (const friction::ContactElement& c : model.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
     const VectorXd seat = k.fullPivLu().solve(model.static_load);
-    for (ContactElement& c : model.contacts) c.tangential_offset = c.tangential.dot(seat);
+    for (friction::ContactElement& c : model.contacts) c.tangential_offset = c.tangential.dot(seat);
     compare(model, 1, below * models::stuck_resonance(model, 0), regime, "damper");
   }
 }
@@ -243,7 +244,7 @@ TEST(HbmSensitivity, PlanarDamperMatchesCentralDifferences) {
 TEST(HbmSensitivity, StuckContactHasExactlyZeroFrictionSensitivity) {
   // A contact stuck throughout never reaches mu N: the solution cannot depend on mu at all.
   const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
-  const HbmModel model = models::blade_on_ground(law, 2.0);
+  const friction::FrictionModel model = models::blade_on_ground(law, 2.0);
   const HarmonicBalance system(model, tight(3));
   const HbmSolution s = solve_at_frequency(system, 0.9 * models::stuck_resonance(model, 0));
   ASSERT_TRUE(s.converged) << s.failure;
@@ -256,7 +257,7 @@ TEST(HbmSensitivity, StuckContactHasExactlyZeroFrictionSensitivity) {
 TEST(HbmSensitivity, FrictionlessContactHasExactlyZeroTangentialStiffnessSensitivity) {
   // mu = 0: the contact slips with T = 0 at every sample, whatever kt; N still depends on kn.
   const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.0, .n0 = 50.0};
-  const HbmModel model = models::blade_on_ground(law, 10.0);
+  const friction::FrictionModel model = models::blade_on_ground(law, 10.0);
   const HarmonicBalance system(model, tight(3));
   const HbmSolution s = solve_at_frequency(system, 1000.0);
   ASSERT_TRUE(s.converged) << s.failure;
@@ -268,7 +269,7 @@ TEST(HbmSensitivity, FrictionlessContactHasExactlyZeroTangentialStiffnessSensiti
 
 TEST(HbmSensitivity, AmplitudeSensitivityIsTheDerivativeOfTheFirstHarmonicModulus) {
   const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
-  const HbmModel model = models::blade_on_ground(law, 30.0);
+  const friction::FrictionModel model = models::blade_on_ground(law, 30.0);
   const double omega = 0.9 * models::stuck_resonance(model, 0);
   const HarmonicBalance system(model, tight(3));
   const HbmSolution s = solve_at_frequency(system, omega);
@@ -295,7 +296,7 @@ TEST(HbmSensitivity, AmplitudeSensitivityIsTheDerivativeOfTheFirstHarmonicModulu
 
 TEST(HbmSensitivity, RefusesAnUnconvergedSolutionAndMismatchedDerivatives) {
   const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
-  const HbmModel model = models::blade_on_ground(law, 15.0);
+  const friction::FrictionModel model = models::blade_on_ground(law, 15.0);
   const HarmonicBalance system(model, tight(1));
   HbmSolution s = solve_at_frequency(system, 1000.0);
   ASSERT_TRUE(s.converged) << s.failure;

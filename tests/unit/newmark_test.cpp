@@ -21,8 +21,8 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 constexpr double kPi = std::numbers::pi;
 
-hbm::HbmModel one_dof(double m, double c, double k) {
-  hbm::HbmModel model;
+friction::FrictionModel one_dof(double m, double c, double k) {
+  friction::FrictionModel model;
   model.mass = MatrixXd::Constant(1, 1, m);
   model.damping = MatrixXd::Constant(1, 1, c);
   model.stiffness = MatrixXd::Constant(1, 1, k);
@@ -42,7 +42,7 @@ double exact_forced(double m, double c, double k, double force, double w, double
 
 double max_error(double zeta, double alpha, double dt) {
   const double m = 2.0, k = m * 4.0 * kPi * kPi, c = 2.0 * zeta * std::sqrt(k * m), force = 3.0, w = 0.6 * 2.0 * kPi;
-  hbm::HbmModel model = one_dof(m, c, k);
+  friction::FrictionModel model = one_dof(m, c, k);
   const NewmarkIntegrator integrator(model, {.time_step = dt, .alpha = alpha});
   const Excitation f = harmonic_excitation(Eigen::VectorXcd::Constant(1, force), w);
   const int steps = static_cast<int>(std::lround(5.0 / dt));
@@ -78,7 +78,7 @@ TEST(Newmark, AverageAccelerationPeriodElongationIsOmegaOverTwoArctanHalfOmega) 
   // Free vibration with omega = 1: the discrete solution obeys u_n+1 + u_n-1 = 2 cos(phi) u_n exactly,
   // phi = omega_bar dt, so T_num / T = Omega / phi (Omega = omega dt) to round-off.
   for (const double big_omega : {0.05, 0.3, 1.0, 2.0, 4.0}) {
-    const hbm::HbmModel model = one_dof(1.0, 0.0, 1.0);
+    const friction::FrictionModel model = one_dof(1.0, 0.0, 1.0);
     const NewmarkIntegrator integrator(model, {.time_step = big_omega});
     const Excitation f = no_excitation(1);
     const TimeHistory h = integrate(integrator, integrator.initial_state(VectorXd::Ones(1), VectorXd::Zero(1), 0.0, f),
@@ -97,8 +97,8 @@ TEST(Newmark, AverageAccelerationPeriodElongationIsOmegaOverTwoArctanHalfOmega) 
 }
 
 // Three-mass chain, fixed at one end, undamped: frequencies ~ 0.45 to 1.8 rad/s per unit.
-hbm::HbmModel chain() {
-  hbm::HbmModel model;
+friction::FrictionModel chain() {
+  friction::FrictionModel model;
   model.mass = Eigen::Vector3d(1.0, 2.0, 0.5).asDiagonal();
   model.stiffness.resize(3, 3);
   model.stiffness << 2.0, -1.0, 0.0, -1.0, 2.0, -1.0, 0.0, -1.0, 1.0;
@@ -106,7 +106,7 @@ hbm::HbmModel chain() {
 }
 
 TEST(Newmark, AverageAccelerationConservesEnergyAndHhtDissipatesIt) {
-  const hbm::HbmModel model = chain();
+  const friction::FrictionModel model = chain();
   const Excitation f = no_excitation(3);
   const VectorXd q0 = Eigen::Vector3d(0.3, -0.7, 1.1), v0 = Eigen::Vector3d(0.2, 0.0, -0.4);
   for (const double alpha : {0.0, -0.05, -0.3}) {
@@ -131,13 +131,13 @@ TEST(Newmark, AverageAccelerationConservesEnergyAndHhtDissipatesIt) {
 TEST(Newmark, CondensationOntoContactDofsMatchesTheFullSolveOfALinearModel) {
   // A frictionless, always-closed contact is a normal spring kn on a_n: the condensed Newton step must
   // give the same history as the plain linear model with that spring added.
-  hbm::HbmModel with_contact = chain();
+  friction::FrictionModel with_contact = chain();
   with_contact.damping = 0.01 * with_contact.stiffness;
   const Eigen::RowVectorXd a_n = Eigen::RowVector3d(0.0, 1.0, -1.0);
   with_contact.contacts.push_back({.law = {.kn = 3.0, .kt = 1.0, .mu = 0.0, .n0 = 100.0},
                                    .tangential = Eigen::RowVector3d(0.0, 1.0, 0.0),
                                    .normal = a_n});
-  hbm::HbmModel linear = chain();
+  friction::FrictionModel linear = chain();
   linear.damping = with_contact.damping;
   linear.stiffness += 3.0 * a_n.transpose() * a_n;
   linear.static_load = -100.0 * a_n.transpose();
@@ -160,7 +160,7 @@ TEST(Newmark, CondensationOntoContactDofsMatchesTheFullSolveOfALinearModel) {
 }
 
 TEST(Newmark, InvalidOptionsAreRejectedWithAMessage) {
-  const hbm::HbmModel model = chain();
+  const friction::FrictionModel model = chain();
   EXPECT_THROW(NewmarkIntegrator(model, {.time_step = 0.0}), std::invalid_argument);
   EXPECT_THROW(NewmarkIntegrator(model, {.time_step = 0.1, .alpha = -0.5}), std::invalid_argument);
   EXPECT_THROW(NewmarkIntegrator(model, {.time_step = 0.1, .alpha = 0.1}), std::invalid_argument);

@@ -109,12 +109,12 @@ TEST(Shooting, FrictionlessContactIsTheBareOscillator) {
 
 // Two masses, a contact between them whose normal load follows their relative motion (it opens
 // and closes every period), so every kind of transition occurs.
-hbm::HbmModel lift_off_pair() {
-  hbm::HbmModel m;
+friction::FrictionModel lift_off_pair() {
+  friction::FrictionModel m;
   m.mass = MatrixXd::Identity(2, 2);
   m.damping = 5.0 * MatrixXd::Identity(2, 2);
   m.stiffness = (MatrixXd(2, 2) << 2e6, -1e5, -1e5, 1e6).finished();
-  hbm::ContactElement c;
+  friction::ContactElement c;
   c.law = {.kn = 5e5, .kt = 2e6, .mu = 0.4, .n0 = 3.0};
   c.tangential = (Eigen::RowVectorXd(2) << 1.0, -1.0).finished();
   c.normal = (Eigen::RowVectorXd(2) << 0.6, 0.3).finished();
@@ -124,8 +124,8 @@ hbm::HbmModel lift_off_pair() {
 }
 
 TEST(Shooting, MonodromyEqualsDifferencesOfThePeriodMap) {
-  hbm::HbmModel m = lift_off_pair();
-  hbm::validate_model(m, "test");
+  friction::FrictionModel m = lift_off_pair();
+  friction::validate_model(m, "test");
   const double omega = 2 * kPi * 180.0;
   timeint::ShootingOptions o = options();
   const timeint::ShootingResult s = timeint::shooting(m, omega, o);

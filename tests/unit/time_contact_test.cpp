@@ -45,9 +45,9 @@ ContactState state_from_table(const std::string& name) {
 TEST(TimeContact, TableXiiTransitionsOfThePredictorCorrectorSlider) {
   // Bodies 1 and 2 at the contact point, DOFs q = (t1, t2, n1, n2): u = t1 - t2 (eq 3.44's s* is
   // the slider relative to body 2), v = n1 - n2 (eq 3.45).
-  hbm::ContactElement c{.law = {.kn = 1e6, .kt = 2e6, .mu = 0.5, .n0 = 0.0},
-                        .tangential = Eigen::RowVector4d(1.0, -1.0, 0.0, 0.0),
-                        .normal = Eigen::RowVector4d(0.0, 0.0, 1.0, -1.0)};
+  friction::ContactElement c{.law = {.kn = 1e6, .kt = 2e6, .mu = 0.5, .n0 = 0.0},
+                             .tangential = Eigen::RowVector4d(1.0, -1.0, 0.0, 0.0),
+                             .normal = Eigen::RowVector4d(0.0, 0.0, 1.0, -1.0)};
   const std::filesystem::path file = std::filesystem::path(BB_SOURCE_DIR) / "references" / "thesis" / "table12.csv";
   CsvReader<12> in(file.string());
   in.read_header(io::ignore_extra_column, "transition", "state_before", "s_before", "t2_before", "t1", "t2", "n1", "n2",
@@ -81,9 +81,9 @@ TEST(TimeContact, TableXiiTransitionsOfThePredictorCorrectorSlider) {
 }
 
 TEST(TimeContact, ConsistentTangentIsTheDerivativeOfTheSlider) {
-  const hbm::ContactElement c{.law = {.kn = 3e5, .kt = 1e6, .mu = 0.4, .n0 = 20.0},
-                              .tangential = Eigen::RowVector2d(1.0, 0.0),
-                              .normal = Eigen::RowVector2d(0.0, 1.0)};
+  const friction::ContactElement c{.law = {.kn = 3e5, .kt = 1e6, .mu = 0.4, .n0 = 20.0},
+                                   .tangential = Eigen::RowVector2d(1.0, 0.0),
+                                   .normal = Eigen::RowVector2d(0.0, 1.0)};
   for (const Eigen::Vector2d& q : {Eigen::Vector2d(2e-6, 1e-5), Eigen::Vector2d(3e-5, 1e-5),
                                    Eigen::Vector2d(-3e-5, -2e-5), Eigen::Vector2d(1e-5, -1e-4)}) {
     const ContactSample s = contact_step(c, 0.0, q);
@@ -102,8 +102,8 @@ struct Oscillator {
   double m = 1.0, k = 1.0e4, zeta = 0.02, force = 3.0;
   contact::JenkinsParameters law{.kn = 0.0, .kt = 2.0e4, .mu = 0.5, .n0 = 2.0};
   double c() const { return 2.0 * zeta * std::sqrt(k * m); }
-  hbm::HbmModel model() const {
-    hbm::HbmModel mo;
+  friction::FrictionModel model() const {
+    friction::FrictionModel mo;
     mo.mass = MatrixXd::Constant(1, 1, m);
     mo.damping = MatrixXd::Constant(1, 1, c());
     mo.stiffness = MatrixXd::Constant(1, 1, k);
@@ -241,8 +241,8 @@ Eigen::RowVectorXd unit_row(Eigen::Index n, Eigen::Index i) {
 
 // The 3-DOF blade of tests/unit/hbm_harmonic_balance_test.cpp: DOF 0 excited, the platform
 // (DOF 1 tangential, DOF 2 normal) on the ground; the normal load varies with q2.
-hbm::HbmModel blade_on_ground(double force) {
-  hbm::HbmModel m;
+friction::FrictionModel blade_on_ground(double force) {
+  friction::FrictionModel m;
   m.stiffness.resize(3, 3);
   m.stiffness << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = Eigen::Vector3d(1.0, 0.4, 0.3).asDiagonal();
@@ -260,7 +260,7 @@ TEST(TimeContact, MultiDofVariableNormalLoadMatchesHarmonicBalance) {
   // First harmonics of every DOF against hbm::solve_at_frequency (H = 7), the normal load varying
   // with the motion (the slip tangent's mu kn coupling at work), stick-slip and micro-slip.
   for (const double force : {25.0, 100.0}) {
-    const hbm::HbmModel m = blade_on_ground(force);
+    const friction::FrictionModel m = blade_on_ground(force);
     const hbm::HarmonicBalance system(m, {.harmonics = 7, .tolerance = 1e-10});
     for (const double omega : {1000.0, 1300.0, 1800.0}) {
       const hbm::HbmSolution h = hbm::solve_at_frequency(system, omega);
@@ -286,8 +286,8 @@ TEST(TimeContact, MultiDofVariableNormalLoadMatchesHarmonicBalance) {
 
 // The blade + rigid damper of tests/unit/hbm_harmonic_balance_test.cpp (zeta 0.01 here): damper DOFs 3 (tangential)
 // and 4 (normal) held only by two contacts (platform and a fixed neighbour), pressed by 40 N.
-hbm::HbmModel blade_with_damper(double force) {
-  hbm::HbmModel m;
+friction::FrictionModel blade_with_damper(double force) {
+  friction::FrictionModel m;
   m.stiffness = MatrixXd::Zero(5, 5);
   m.stiffness.topLeftCorner(3, 3) << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = (VectorXd(5) << 1.0, 0.4, 0.3, 0.05, 0.05).finished().asDiagonal();
@@ -313,13 +313,13 @@ TEST(TimeContact, DamperHeldOnlyByFrictionMatchesHarmonicBalance) {
   // printed (the time domain shows why: the damper walks, see the next test).
   // K is singular without the contacts' tangential springs: the static state needs the contacts
   // stuck at their offsets (StaticFriction::stuck_at_offset); the free-slip one must say so.
-  const hbm::HbmModel m0 = blade_with_damper(20.0);
+  const friction::FrictionModel m0 = blade_with_damper(20.0);
   const StaticState free = static_initial_state(m0);
   EXPECT_FALSE(free.converged);
   EXPECT_NE(free.failure.find("stuck_at_offset"), std::string::npos) << free.failure;
   int compared = 0;
   for (const double force : {2.0, 20.0, 100.0}) {
-    const hbm::HbmModel m = blade_with_damper(force);
+    const friction::FrictionModel m = blade_with_damper(force);
     const hbm::HarmonicBalance system(m, {.harmonics = 7, .tolerance = 1e-10});
     for (const double omega : {700.0, 1000.0, 1300.0, 1800.0}) {
       SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4},
@@ -359,7 +359,7 @@ TEST(TimeContact, DamperHeldOnlyByFrictionMatchesHarmonicBalance) {
 TEST(TimeContact, WalkingDamperIsReportedAsDriftNotAsASteadyState) {
   // F = 20 N at 1300 rad/s: the oscillation becomes periodic while the damper's mean position moves
   // by the same amount every period (ratcheting). Without ignore_drift the run must say so.
-  const hbm::HbmModel m = blade_with_damper(20.0);
+  const friction::FrictionModel m = blade_with_damper(20.0);
   SteadyStateOptions opt{.dofs = {0, 1, 2, 3, 4},
                          .steps_per_period = 256,
                          .harmonics = 3,
@@ -380,8 +380,8 @@ TEST(TimeContact, WalkingDamperIsReportedAsDriftNotAsASteadyState) {
 }
 
 // DOF 0 tangential (platform), DOF 1 normal; contact u = q0, v = q1, N = max(N0 + kn q1, 0).
-hbm::HbmModel platform(double static_normal, double normal_force) {
-  hbm::HbmModel m;
+friction::FrictionModel platform(double static_normal, double normal_force) {
+  friction::FrictionModel m;
   m.mass = Eigen::Vector2d(0.5, 0.5).asDiagonal();
   m.stiffness = Eigen::Vector2d(1e4, 1e4).asDiagonal();
   m.damping = 2.0 * 0.02 * std::sqrt(1e4 * 0.5) * MatrixXd::Identity(2, 2);
@@ -452,7 +452,7 @@ TEST(TimeContact, StiffContactNeedsNoSmallerStepThanAccuracyAsks) {
 
 TEST(TimeContact, FailedStepStopsTheRunWithTimeAndResidual) {
   Oscillator o;
-  hbm::HbmModel m = o.model();
+  friction::FrictionModel m = o.model();
   const NewmarkIntegrator integrator(m, {.time_step = 1e-3, .max_iterations = 1, .tolerance = 1e-300});
   const Excitation f = harmonic_excitation(m.harmonic_load, 100.0);
   const TimeHistory h = integrate(integrator, integrator.initial_state(VectorXd::Zero(1), VectorXd::Zero(1), 0.0, f), f,
@@ -466,7 +466,7 @@ TEST(TimeContact, FailedStepStopsTheRunWithTimeAndResidual) {
 // 28 blade DOFs (a random well-conditioned SPD pair, ~1 kHz) plus the rigid damper of
 // damper_support.hpp pressed by CF = 300 N: the size of the thesis's 31-DOF model (eq 3.43).
 struct BladesAndDamper {
-  hbm::HbmModel model;
+  friction::FrictionModel model;
   damper::RigidDamper damper;
   MatrixXd blade_stiffness;
 };
@@ -483,7 +483,7 @@ BladesAndDamper blades_and_damper() {
   out.damper = damper::asymmetric_damper(g);
   const damper::CoupledSystem sys = damper::assemble_coupled_system(blade_mass, out.blade_stiffness, out.damper);
   const damper::ContactKinematics kin = damper::contact_kinematics(out.damper, nb);
-  hbm::HbmModel& m = out.model;
+  friction::FrictionModel& m = out.model;
   m.mass = sys.mass;
   m.stiffness = sys.stiffness;
   m.damping = 1e-5 * sys.stiffness;

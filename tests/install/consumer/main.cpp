@@ -8,7 +8,7 @@
 #include <numbers>
 
 int main() {
-  bb::hbm::HbmModel m;
+  bb::friction::FrictionModel m;
   m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
   m.damping = Eigen::MatrixXd::Constant(1, 1, 20.0);
   m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
@@ -21,6 +21,7 @@ int main() {
   const bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(system, omega);
   const double amplitude = std::hypot(s.x[1], s.x[2]);
   const double exact = 0.01 / std::abs(std::complex<double>(2e6 - omega * omega, 20.0 * omega));
-  std::printf("consumer: converged %d, amplitude %.10e m, closed form %.10e m\n", s.converged ? 1 : 0, amplitude, exact);
+  std::printf("consumer: converged %d, amplitude %.10e m, closed form %.10e m\n", s.converged ? 1 : 0, amplitude,
+              exact);
   return s.converged && std::abs(amplitude / exact - 1) < 1e-9 ? 0 : 1;
 }

@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "analysis/hbm_analysis.hpp"
+#include "forced/hbm_level.hpp"
 #include "hbm/harmonic_balance.hpp"
 #include "hbm/harmonic_truncation.hpp"
 

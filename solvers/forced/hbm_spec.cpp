@@ -1,4 +1,4 @@
-#include "analysis/hbm_spec.hpp"
+#include "forced/hbm_spec.hpp"
 
 #include <fmt/format.h>
 

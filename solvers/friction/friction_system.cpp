@@ -1,15 +1,15 @@
-#include "hbm/friction_system.hpp"
+#include "friction/friction_system.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>
 
-namespace bb::hbm {
+namespace bb::friction {
 
 using Index = Eigen::Index;
 
-void validate_model(HbmModel& m, const std::string& who) {
+void validate_model(FrictionModel& m, const std::string& who) {
   const Index n = m.mass.rows();
   const auto fail = [&who](const std::string& what) { throw std::invalid_argument(fmt::format("{}: {}", who, what)); };
   if (n == 0 || m.mass.cols() != n || m.stiffness.rows() != n || m.stiffness.cols() != n)
@@ -36,7 +36,7 @@ void validate_model(HbmModel& m, const std::string& who) {
   }
 }
 
-Eigen::MatrixXd stuck_stiffness(const HbmModel& model) {
+Eigen::MatrixXd stuck_stiffness(const FrictionModel& model) {
   Eigen::MatrixXd k = model.stiffness;
   for (const ContactElement& c : model.contacts)
     k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
@@ -56,7 +56,8 @@ Condensation<Scalar>::Condensation(const Matrix& a, const std::vector<Index>& co
   lu_oo_.compute(a(other_dofs_, other_dofs_));
   // No contact DOFs: no static modes (and no empty right-hand side, on which Eigen's triangular
   // solve would bind a reference to a null pointer).
-  static_modes_ = contact_dofs_.empty() ? Matrix(other_, 0) : Matrix(lu_oo_.solve(Matrix(a(other_dofs_, contact_dofs_))));
+  static_modes_ =
+      contact_dofs_.empty() ? Matrix(other_, 0) : Matrix(lu_oo_.solve(Matrix(a(other_dofs_, contact_dofs_))));
   reduced_ = a_cc - a_co_ * static_modes_;
 }
 
@@ -81,7 +82,7 @@ typename Condensation<Scalar>::Vector Condensation<Scalar>::recover(const Load& 
 template class Condensation<double>;
 template class Condensation<std::complex<double>>;
 
-FrictionSystem::FrictionSystem(const HbmModel& model) {
+FrictionSystem::FrictionSystem(const FrictionModel& model) {
   const Index n = model.mass.rows();
   std::vector<bool> touched(static_cast<size_t>(n), false);
   for (const ContactElement& e : model.contacts)
@@ -95,4 +96,4 @@ FrictionSystem::FrictionSystem(const HbmModel& model) {
   }
 }
 
-}  // namespace bb::hbm
+}  // namespace bb::friction

@@ -9,10 +9,9 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "analysis/frf_analysis.hpp"
-#include "analysis/hbm_analysis.hpp"
-#include "analysis/modal_analysis.hpp"
 #include "common/errors.hpp"
+#include "forced/hbm_level.hpp"
+#include "forced/linear_model.hpp"
 
 namespace bb {
 namespace {
@@ -89,7 +88,7 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   }
   const Eigen::MatrixXd blade_damping =
       spec.damping_matrix ? *spec.damping_matrix : damping_matrix(spec.damping, blades);
-  hbm::HbmModel& m = p.model;
+  friction::FrictionModel& m = p.model;
   if (spec.damper) {
     p.damper = build_damper(model, *spec.damper, blades);
     p.centrifugal_force = spec.damper->centrifugal_force;
@@ -124,7 +123,7 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
       throw InputError(fmt::format("'analysis.damper': the static pre-solve (CF = {} N) has no equilibrium: {}",
                                    spec.damper->centrifugal_force, p.damper_static->failure));
     // The damper seats without friction (eq 3.49): each slider rests where its contact came to rest.
-    for (hbm::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(p.damper_static->q);
+    for (friction::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(p.damper_static->q);
   }
   for (const HbmContactSpec& c : spec.contacts) {
     const std::string where = fmt::format("{}: contact '{}'", c.at.where(), c.name);

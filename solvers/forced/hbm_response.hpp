@@ -3,7 +3,7 @@
 #pragma once
 #include <Eigen/Dense>
 
-#include "analysis/hbm_analysis.hpp"
+#include "forced/hbm_level.hpp"
 #include "hbm/harmonic_balance.hpp"
 
 namespace bb {

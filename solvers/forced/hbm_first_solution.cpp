@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "analysis/hbm_level_system.hpp"
+#include "forced/hbm_level_system.hpp"
 
 namespace bb {
 

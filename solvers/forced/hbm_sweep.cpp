@@ -13,10 +13,10 @@
 #include <numbers>
 #include <optional>
 
-#include "analysis/hbm_analysis.hpp"
-#include "analysis/hbm_level_system.hpp"
-#include "analysis/hbm_response.hpp"
 #include "common/power_law.hpp"
+#include "forced/hbm_level.hpp"
+#include "forced/hbm_level_system.hpp"
+#include "forced/hbm_response.hpp"
 #include "frf/sweep.hpp"
 #include "hbm/sensitivity.hpp"
 
@@ -61,7 +61,7 @@ PeakValues peak_values(const PreparedHbm& p, const Eigen::VectorXcd& z, int kind
 std::string hbm_frf_table_name(double force) { return fmt::format("frf_{:g}", force); }
 
 hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples) {
-  hbm::HbmModel m = p.model;
+  friction::FrictionModel m = p.model;
   m.harmonic_load *= force;
   hbm::HbmOptions options;
   options.harmonics = harmonics;
@@ -166,7 +166,8 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
 
 // d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
 // value turns d/dp into d/d(log p). The damper's contacts come first in the model.
-std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec, const hbm::HbmModel& m) {
+std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec,
+                                                  const friction::FrictionModel& m) {
   const size_t damper_contacts = p.damper ? p.damper->contacts.size() : 0;
   std::vector<hbm::ModelDerivative> out;
   for (const HbmParameter& parameter : spec.sensitivities) {

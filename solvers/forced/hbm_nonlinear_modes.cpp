@@ -1,4 +1,4 @@
-#include "analysis/hbm_nonlinear_modes.hpp"
+#include "forced/hbm_nonlinear_modes.hpp"
 
 #include <fmt/format.h>
 
@@ -10,9 +10,9 @@
 #include <optional>
 #include <utility>
 
-#include "analysis/hbm_response.hpp"
 #include "common/errors.hpp"
 #include "contact/state_fractions.hpp"
+#include "forced/hbm_response.hpp"
 
 namespace bb {
 namespace {
@@ -73,10 +73,11 @@ double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
 }  // namespace
 
-void add_nonlinear_modes(HbmOutcome& o, const HbmSpec& spec) {
-  if (!spec.nonlinear_modes) return;
+HbmNonlinearModes trace_nonlinear_modes(const PreparedHbm& p, const std::vector<HbmLevel>& levels,
+                                        const HbmSpec& spec) {
+  HbmNonlinearModes o;
+  if (!spec.nonlinear_modes) return o;
   const NonlinearModesSpec& nm = *spec.nonlinear_modes;
-  const PreparedHbm& p = o.prepared;
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<double> amplitudes(static_cast<size_t>(nm.points));
   for (int i = 0; i < nm.points; ++i)
@@ -94,9 +95,9 @@ void add_nonlinear_modes(HbmOutcome& o, const HbmSpec& spec) {
                                    nm.at.where(), mode, p.model.mass.rows()));
     hbm::NonlinearModeBranch b = hbm::trace_nonlinear_mode(p.model, mode, amplitudes, static_guess, options);
     if (b.points.empty()) throw SolverError(b.failure);
-    o.nonlinear_modes.push_back(std::move(b));
+    o.branches.push_back(std::move(b));
   }
-  o.nonlinear_mode_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::vector<std::string> cols = {"point",        "mode",          "modal_amplitude",
                                    "frequency_hz", "damping_ratio", "force_for_peak_n"};
@@ -105,7 +106,7 @@ void add_nonlinear_modes(HbmOutcome& o, const HbmSpec& spec) {
   cols.insert(cols.end(), {"stick", "lift_off", "iterations"});
   std::vector<std::vector<double>> rows, peak_rows;
   std::vector<std::vector<BackbonePoint>> backbones;
-  for (const hbm::NonlinearModeBranch& b : o.nonlinear_modes) {
+  for (const hbm::NonlinearModeBranch& b : o.branches) {
     std::vector<BackbonePoint>& bb = backbones.emplace_back();
     for (const hbm::NonlinearModePoint& pt : b.points) {
       const BackbonePoint x = bb.emplace_back(backbone_point(p, pt));
@@ -122,15 +123,15 @@ void add_nonlinear_modes(HbmOutcome& o, const HbmSpec& spec) {
     }
   }
   o.tables.emplace("nonlinear_modes", table_from_rows("nonlinear_modes", cols, rows));
-  if (nm.peaks.empty()) return;
+  if (nm.peaks.empty()) return o;
 
   // The amplitude compared: with ip_oop the peak's component (IP |Z_l + Z_r| / 2, OOP |Z_r - Z_l| / 2),
   // which isolates one mode of a symmetric pair, else the first response's.
   const auto amplitude_of = [&](const BackbonePoint& x, const std::string& kind) {
     return kind == "ip" ? x.ip : kind == "oop" ? x.oop : x.responses.front();
   };
-  for (size_t l = 0; l < o.levels.size(); ++l) {
-    const HbmLevel& level = o.levels[l];
+  for (size_t l = 0; l < levels.size(); ++l) {
+    const HbmLevel& level = levels[l];
     for (size_t m = 0; m < nm.linear_modes.size(); ++m) {
       const std::string kind = nm.peaks[m] == "ip" ? "IP" : nm.peaks[m] == "oop" ? "OOP" : "peak";
       const HbmPeak* peak = nullptr;
@@ -156,6 +157,7 @@ void add_nonlinear_modes(HbmOutcome& o, const HbmSpec& spec) {
                                    {"key", "level", "fe_n", "mode", "modal_amplitude", "predicted_hz",
                                     "predicted_amp_m", "sweep_hz", "sweep_amp_m", "hz_error", "amp_error"},
                                    peak_rows));
+  return o;
 }
 
 }  // namespace bb

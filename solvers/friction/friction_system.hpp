@@ -1,6 +1,8 @@
-// The friction system both the harmonic balance (hbm/) and the time integration (timeint/) solve:
-// a small linear model (dense M, C, K) with point Jenkins friction contacts of variable normal load
-// (contact/jenkins_contact.hpp), and its exact condensation onto the DOFs the contacts touch.
+// The friction system every nonlinear solver shares (the harmonic balance of hbm/, the time
+// integration and shooting of timeint/; neither depends on the other): a small linear model (dense
+// M, C, K) with point Jenkins friction contacts of variable normal load (contact/jenkins_contact.hpp;
+// a law of several sliders, contact/friction_law.hpp, arrives as several contacts), and its exact
+// condensation onto the DOFs the contacts touch.
 // Units: SI.
 //
 // Equation of motion, q the model DOFs:
@@ -29,7 +31,7 @@
 
 #include "contact/jenkins_contact.hpp"
 
-namespace bb::hbm {
+namespace bb::friction {
 
 // One point contact. Both rows have one entry per model DOF; zero entries leave a DOF untouched.
 struct ContactElement {
@@ -42,7 +44,7 @@ struct ContactElement {
   double tangential_offset = 0.0;  // [m]
 };
 
-struct HbmModel {
+struct FrictionModel {
   Eigen::MatrixXd mass, damping, stiffness;  // n x n, dense; damping may be empty (C = 0)
   std::vector<ContactElement> contacts;      // at least one for the harmonic balance
   Eigen::VectorXd static_load;               // n [N]; empty = none (e.g. centrifugal force on the damper)
@@ -52,10 +54,10 @@ struct HbmModel {
 // Fills an empty C and empty loads with zeros, then checks sizes, finiteness and every contact
 // law of `model` (contacts may be empty). Throws std::invalid_argument, the message prefixed by
 // `who`. Shared by the harmonic balance and the time integration.
-void validate_model(HbmModel& model, const std::string& who);
+void validate_model(FrictionModel& model, const std::string& who);
 
 // K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
-Eigen::MatrixXd stuck_stiffness(const HbmModel& model);
+Eigen::MatrixXd stuck_stiffness(const FrictionModel& model);
 
 // One linear operator A condensed onto c (formulas above), A_oo factorized once (partial-pivoting
 // LU). Scalar: double (time domain) or std::complex<double> (one harmonic).
@@ -95,7 +97,7 @@ extern template class Condensation<std::complex<double>>;
 // The contact/other split of a validated model and the contact rows restricted to c.
 class FrictionSystem {
  public:
-  explicit FrictionSystem(const HbmModel& model);
+  explicit FrictionSystem(const FrictionModel& model);
 
   const std::vector<Eigen::Index>& contact_dofs() const { return contact_dofs_; }  // c, ascending
   const std::vector<Eigen::Index>& other_dofs() const { return other_dofs_; }      // o, ascending
@@ -112,4 +114,4 @@ class FrictionSystem {
   std::vector<ContactElement> contacts_on_c_;
 };
 
-}  // namespace bb::hbm
+}  // namespace bb::friction

@@ -11,11 +11,11 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/frf_spec.hpp"
 #include "common/source_location.hpp"
 #include "contact/aft.hpp"
 #include "contact/friction_law.hpp"
 #include "contact/jenkins_contact.hpp"
+#include "forced/linear_model_spec.hpp"
 
 namespace bb {
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <numbers>
 
-#include "analysis/hbm_level_system.hpp"
-#include "analysis/hbm_response.hpp"
+#include "forced/hbm_level_system.hpp"
+#include "forced/hbm_response.hpp"
 #include "frf/sweep.hpp"
 
 namespace bb {

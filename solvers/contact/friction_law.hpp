@@ -35,8 +35,7 @@ struct SliderShare {
 class SliderDistribution {
  public:
   virtual ~SliderDistribution() = default;
-  virtual std::string name() const = 0;      // the case's `law` key, e.g. "iwan"
-  virtual std::string describe() const = 0;  // its parameters, one line for the reports
+  virtual std::string describe() const = 0;  // its name and parameters, one line for the reports
   virtual std::vector<SliderShare> shares() const = 0;
   // Energy dissipated per cycle by the continuous law (not its sliders) under u = A cos(theta) at
   // the constant normal load `point.n0` [J]; empty when the law has no closed form.

@@ -42,8 +42,6 @@ double iwan_cycle_energy(const IwanDensity& d, double amplitude);
 class IwanDistribution final : public SliderDistribution {
  public:
   explicit IwanDistribution(const IwanParameters& p);  // validates
-  const IwanParameters& parameters() const { return p_; }
-  std::string name() const override { return "iwan"; }
   std::string describe() const override;
   std::vector<SliderShare> shares() const override { return shares_; }
   // At N0 (slip force mu N0); empty when mu N0 = 0.

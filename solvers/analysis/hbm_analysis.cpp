@@ -408,10 +408,13 @@ std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& s
     progress(line + "  [" + clock.status() + "]");
   })
                                      : HbmProgress();
+  LevelRelay relay(n);
   for_each_index(n, worker_count(n, spec.threads), [&](size_t i) {
+    const LevelRelay::Guard published(relay, i);
+    const LevelLink link{relay, i};
     const double f = spec.force_levels[i];
-    levels[i] = spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(prepared, spec, f, timed)
-                                              : sweep_hbm_level(prepared, spec, f, spec.harmonics, timed);
+    levels[i] = spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(prepared, spec, f, timed, &link)
+                                              : sweep_hbm_level(prepared, spec, f, spec.harmonics, timed, true, &link);
     const std::lock_guard<std::mutex> lock(report);
     clock.finished(++done);
   });

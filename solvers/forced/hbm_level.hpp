@@ -12,6 +12,7 @@
 
 #include "damper/rigid_damper.hpp"
 #include "forced/hbm_spec.hpp"
+#include "forced/level_relay.hpp"
 #include "hbm/harmonic_balance.hpp"
 #include "hbm/harmonic_truncation.hpp"
 #include "hbm/hill_stability.hpp"
@@ -132,8 +133,10 @@ struct HbmLevel {
 // under-sampled stick-slip residual is too rough for the corrector), up to spec.max_time_samples;
 // with retry_failures = false, a sweep that stops short or a doubtful peak ends the raising (the
 // caller has a cheaper remedy: another H).
+// With a link, the first point starts from the previous level's first solution (else, or when
+// that fails, from the static one) and hands its own on.
 HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, double force, int harmonics,
-                         const HbmProgress& progress = {}, bool retry_failures = true);
+                         const HbmProgress& progress = {}, bool retry_failures = true, const LevelLink* link = nullptr);
 
 // The sweep of one force level with the harmonics it needs: from spec.harmonics, H is raised to
 // the highest harmonic whose share of the motion (at the path points and peaks, or the peaks alone:
@@ -147,7 +150,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, doubl
 // Once one H has succeeded, a failed sweep moves on to the next H instead of raising its AFT
 // samples (on Table XI such retries at 2048-4096 samples cost 30-275 s a level and still failed).
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& prepared, const HbmSpec& spec, double force,
-                                  const HbmProgress& progress = {});
+                                  const HbmProgress& progress = {}, const LevelLink* link = nullptr);
 
 // The name of level `force`'s FRF table, e.g. "frf_300" or "frf_0.5".
 // Its sensitivity columns: "<response>_amp_m_dlog_<path>" and "<response>_phase_deg_dlog_<path>".

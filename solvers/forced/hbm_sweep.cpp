@@ -240,7 +240,7 @@ void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const LevelSys
 }
 
 HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
-                          const HbmProgress& progress) {
+                          const HbmProgress& progress, const LevelLink* link) {
   const auto t0 = Clock::now();
   HbmLevel level;
   level.force = force;
@@ -248,10 +248,14 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   level.samples = systems.at(harmonics).aft_options().samples;
   level.harmonics = harmonics;
   const double omega_start = kTwoPi * spec.sweep.f_min, omega_end = kTwoPi * spec.sweep.f_max;
+  std::optional<LevelStart> neighbour;
+  if (link) neighbour = link->relay.from_neighbour(link->level);
   const FirstSolution first = [&](int h) {
     const hbm::HarmonicBalance& system = systems.at(h);
     std::optional<Eigen::VectorXd> initial;
-    if (p.damper_static) {
+    if (neighbour) {
+      initial = with_harmonics(neighbour->x, static_cast<Index>(system.contact_dofs().size()), h);
+    } else if (p.damper_static) {
       // Start from the static pre-solve: the damper seated by CF, the vibration of the stuck limit.
       initial = system.linearized(omega_start, true);
       if (initial) {
@@ -259,7 +263,9 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
         for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
       }
     }
-    return first_solution(p, spec, force, h, samples, omega_start, initial);
+    hbm::HbmSolution s = first_solution(p, spec, force, h, samples, omega_start, initial);
+    if (link && s.converged) link->relay.publish(link->level, LevelStart{s.x, h});
+    return s;
   };
   hbm::ContinuationResult& path = level.path;
   const SweepReport report = [&](double omega, int point, int iterations) {
@@ -390,9 +396,9 @@ double result_change(const HbmSpec& spec, const HbmLevel& lower, const HbmLevel&
 }  // namespace
 
 HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
-                         const HbmProgress& progress, bool retry_failures) {
+                         const HbmProgress& progress, bool retry_failures, const LevelLink* link) {
   int samples = spec.time_samples;
-  HbmLevel level = sweep_at_samples(p, spec, force, harmonics, samples, progress);
+  HbmLevel level = sweep_at_samples(p, spec, force, harmonics, samples, progress, link);
   if (!(spec.aft_tolerance > 0.0)) {
     add_stability(p, spec, force, samples, level);
     return level;
@@ -416,7 +422,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     if (t.reached_end && t.trusted)
       while (factor < 64 && t.aft_error / factor > spec.aft_tolerance) factor *= 2;
     samples = std::min(factor * level.samples, spec.max_time_samples);
-    level = sweep_at_samples(p, spec, force, harmonics, samples, progress);
+    level = sweep_at_samples(p, spec, force, harmonics, samples, progress, link);
   }
   level.sampling_trials = std::move(trials);
   level.seconds = seconds;  // the cost of reaching the tolerance, every trial included
@@ -424,11 +430,11 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
   return level;
 }
 
-HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, double force,
-                                  const HbmProgress& progress) {
+HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, double force, const HbmProgress& progress,
+                                  const LevelLink* link) {
   // The point scope chooses H inside the one sweep, frequency by frequency.
   if (spec.harmonic_scope == HbmSpec::HarmonicScope::point)
-    return sweep_hbm_level(p, spec, force, spec.harmonics, progress);
+    return sweep_hbm_level(p, spec, force, spec.harmonics, progress, true, link);
   std::vector<HbmLevel::HarmonicTrial> trials;
   std::vector<size_t> good_trials;  // of the sweeps that reached their end (or covered the band) with trusted peaks
   std::optional<HbmLevel> kept;     // the highest H so far among them
@@ -436,7 +442,7 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
   for (int h = spec.harmonics;;) {
     // More samples rescue a sweep only while no H has succeeded; after that a failed sweep is left
     // for the next H (on Table XI, 150 N at H = 7 took 275 s at 4096 samples and still failed).
-    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress, !kept);
+    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress, !kept, link);
     HbmLevel::HarmonicTrial t;
     t.harmonics = h;
     t.samples = level.samples;

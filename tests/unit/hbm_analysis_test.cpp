@@ -17,6 +17,8 @@
 
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
+#include "forced/hbm_level.hpp"
+#include "forced/level_relay.hpp"
 #include "model/build_model.hpp"
 #include "oscillator_case.hpp"
 #include "pipeline/run_case.hpp"
@@ -158,8 +160,9 @@ TEST_F(HbmAnalysis, EnergyBalancesAtEveryPeakFromStuckToGrossSlip) {
   }
 }
 
-// The levels share only the prepared model, read only: swept on three threads they give the tables
-// of the serial run, every bit (timings aside).
+// The levels share the prepared model (read only) and each level's first solution, handed to the
+// next level in list order: swept on three threads they give the tables of the serial run, every
+// bit (timings aside).
 TEST_F(HbmAnalysis, LevelsSweptInParallelAreTheSerialRunBitForBit) {
   std::string text = kBladesCase;
   text.replace(text.find("harmonics = 1\n"), 14, "harmonics = 1\nthreads = 1\n");
@@ -182,6 +185,28 @@ TEST_F(HbmAnalysis, LevelsSweptInParallelAreTheSerialRunBitForBit) {
       }
     EXPECT_EQ(a.text, b.text) << name;
   }
+}
+
+// A level's first point starts from the previous level's first solution (handed on by the relay):
+// given the very solution, the first point takes no Newton iteration and is that solution, where
+// the static start needs some (stick-slip at the first frequency, H = 5).
+TEST_F(HbmAnalysis, AFirstPointStartsFromThePreviousLevelsSolution) {
+  std::string text = kBladesCase;
+  text.replace(text.find("harmonics = 1\n"), 14, "harmonics = 5\n");
+  text.replace(text.find("force_levels = [0.01, 10.0, 1000.0]"), 35, "force_levels = [45.0]");
+  const CaseSpec spec = parse_case_file(write(text));
+  const HbmSpec& hbm = std::get<HbmSpec>(spec.analysis);
+  const PreparedHbm prepared = prepare_hbm(build_model(spec.model), hbm);
+  const HbmLevel alone = sweep_hbm_level(prepared, hbm, 45.0, 5);
+  const hbm::ContinuationPoint& from_static = alone.path.points.front();
+  ASSERT_GT(from_static.iterations, 0);
+  LevelRelay relay(2);
+  relay.publish(0, LevelStart{from_static.x, 5});
+  const LevelLink link{relay, 1};
+  const HbmLevel chained = sweep_hbm_level(prepared, hbm, 45.0, 5, {}, true, &link);
+  const hbm::ContinuationPoint& from_neighbour = chained.path.points.front();
+  EXPECT_EQ(from_neighbour.iterations, 0);
+  EXPECT_EQ(from_neighbour.x, from_static.x);
 }
 
 TEST_F(HbmAnalysis, InPhasePeakOfSymmetricBladesIsTheClosedFormAtEveryLevel) {

@@ -77,6 +77,9 @@ HarmonicBalance::HarmonicBalance(friction::FrictionModel model, HbmOptions optio
                                        : std::max(64, 16 * (2 * options_.harmonics + 1));
   if (aft_.samples < 2 * options_.harmonics + 1) fail("aft.samples must be >= 2H + 1");
 
+  static_.emplace(system_.condense(dynamic_stiffness(model_, 0.0)));
+  modal_ = ModalBasis::of(model_, contact_dofs(), other_dofs());
+
   double preload = 0.0;
   for (const friction::ContactElement& e : model_.contacts) preload += (1.0 + e.law.mu) * e.law.n0;
   force_scale_ = model_.static_load.norm() + model_.harmonic_load.norm() + preload;
@@ -86,30 +89,46 @@ Index HarmonicBalance::unknowns() const {
   return static_cast<Index>(contact_dofs().size()) * contact::harmonic_size(options_.harmonics);
 }
 
+template <class Use>
+void HarmonicBalance::with_condensation(int h, double omega, const Use& use) const {
+  if (h == 0) {
+    use(*static_);
+  } else if (modal_ && omega > 0.0) {
+    use(modal_->at(h * omega));
+  } else {
+    use(system_.condense(dynamic_stiffness(model_, h * omega)));
+  }
+}
+
 std::optional<HarmonicBalance::Linear> HarmonicBalance::condense(double omega) const {
   const Index nc = static_cast<Index>(contact_dofs().size());
   Linear linear{Eigen::MatrixXd::Zero(unknowns(), unknowns()), Eigen::VectorXd::Zero(unknowns())};
-  for (int h = 0; h <= options_.harmonics; ++h) {
-    const friction::Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
-    if (!(d.rcond() >= kSingularRcond)) return std::nullopt;
-    const Eigen::MatrixXcd& reduced = d.reduced();
-    const Eigen::VectorXcd load =
-        h <= 1 ? d.condense(harmonic_load(model_, h)).contact : Eigen::VectorXcd(Eigen::VectorXcd::Zero(nc));
-    if (h == 0) {
-      linear.operator_.topLeftCorner(nc, nc) = reduced.real();
-      linear.load.head(nc) = load.real();
-      continue;
-    }
-    // (A + iB)(a - ib) = (Aa + Bb) + i(Ba - Ab) = F: rows a: [A B], rows b: [-B A], load (Re F, -Im F).
-    const Index a = (2 * h - 1) * nc, b = 2 * h * nc;
-    linear.operator_.block(a, a, nc, nc) = reduced.real();
-    linear.operator_.block(a, b, nc, nc) = reduced.imag();
-    linear.operator_.block(b, a, nc, nc) = -reduced.imag();
-    linear.operator_.block(b, b, nc, nc) = reduced.real();
-    linear.load.segment(a, nc) = load.real();
-    linear.load.segment(b, nc) = -load.imag();
+  bool singular = false;
+  for (int h = 0; h <= options_.harmonics && !singular; ++h) {
+    with_condensation(h, omega, [&](const auto& d) {
+      if (!(d.rcond() >= kSingularRcond)) {
+        singular = true;
+        return;
+      }
+      const Eigen::MatrixXcd& reduced = d.reduced();
+      const Eigen::VectorXcd load =
+          h <= 1 ? d.condense(harmonic_load(model_, h)).contact : Eigen::VectorXcd(Eigen::VectorXcd::Zero(nc));
+      if (h == 0) {
+        linear.operator_.topLeftCorner(nc, nc) = reduced.real();
+        linear.load.head(nc) = load.real();
+        return;
+      }
+      // (A + iB)(a - ib) = (Aa + Bb) + i(Ba - Ab) = F: rows a: [A B], rows b: [-B A], load (Re F, -Im F).
+      const Index a = (2 * h - 1) * nc, b = 2 * h * nc;
+      linear.operator_.block(a, a, nc, nc) = reduced.real();
+      linear.operator_.block(a, b, nc, nc) = reduced.imag();
+      linear.operator_.block(b, a, nc, nc) = -reduced.imag();
+      linear.operator_.block(b, b, nc, nc) = reduced.real();
+      linear.load.segment(a, nc) = load.real();
+      linear.load.segment(b, nc) = -load.imag();
+    });
   }
-  if (!linear.operator_.allFinite() || !linear.load.allFinite()) return std::nullopt;
+  if (singular || !linear.operator_.allFinite() || !linear.load.allFinite()) return std::nullopt;
   return linear;
 }
 
@@ -168,23 +187,24 @@ Eigen::MatrixXd HarmonicBalance::recover(const Eigen::VectorXd& x, double omega)
   for (Index i = 0; i < nc; ++i) q.row(contact_dofs()[static_cast<size_t>(i)]) = xc.row(i);
   if (other_dofs().empty()) return q;
   for (int h = 0; h <= options_.harmonics; ++h) {
-    const friction::Condensation<Complex> d = system_.condense(dynamic_stiffness(model_, h * omega));
-    if (!(d.rcond() >= kSingularRcond))
-      throw SolverError(fmt::format("harmonic balance: D_oo singular at harmonic {}, omega = {} rad/s", h, omega));
-    const Eigen::VectorXcd qc =
-        h == 0
-            ? Eigen::VectorXcd(xc.col(0).cast<Complex>())
-            : Eigen::VectorXcd(xc.col(2 * h - 1).cast<Complex>() - Complex(0.0, 1.0) * xc.col(2 * h).cast<Complex>());
-    const Eigen::VectorXcd qo = d.recover(d.condense(harmonic_load(model_, h)), qc);
-    for (size_t i = 0; i < other_dofs().size(); ++i) {
-      const Index dof = other_dofs()[i];
-      if (h == 0)
-        q(dof, 0) = qo[static_cast<Index>(i)].real();
-      else {
-        q(dof, 2 * h - 1) = qo[static_cast<Index>(i)].real();
-        q(dof, 2 * h) = -qo[static_cast<Index>(i)].imag();
+    with_condensation(h, omega, [&](const auto& d) {
+      if (!(d.rcond() >= kSingularRcond))
+        throw SolverError(fmt::format("harmonic balance: D_oo singular at harmonic {}, omega = {} rad/s", h, omega));
+      const Eigen::VectorXcd qc =
+          h == 0
+              ? Eigen::VectorXcd(xc.col(0).cast<Complex>())
+              : Eigen::VectorXcd(xc.col(2 * h - 1).cast<Complex>() - Complex(0.0, 1.0) * xc.col(2 * h).cast<Complex>());
+      const Eigen::VectorXcd qo = d.recover(d.condense(harmonic_load(model_, h)), qc);
+      for (size_t i = 0; i < other_dofs().size(); ++i) {
+        const Index dof = other_dofs()[i];
+        if (h == 0) {
+          q(dof, 0) = qo[static_cast<Index>(i)].real();
+        } else {
+          q(dof, 2 * h - 1) = qo[static_cast<Index>(i)].real();
+          q(dof, 2 * h) = -qo[static_cast<Index>(i)].imag();
+        }
       }
-    }
+    });
   }
   return q;
 }

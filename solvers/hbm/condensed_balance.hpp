@@ -19,12 +19,14 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <complex>
 #include <limits>
 #include <optional>
 #include <vector>
 
 #include "contact/aft.hpp"
 #include "friction/friction_system.hpp"
+#include "hbm/modal_condensation.hpp"
 
 namespace bb::hbm {
 
@@ -102,6 +104,14 @@ class HarmonicBalance {
   friction::FrictionSystem system_;
   contact::AftOptions aft_;
   double force_scale_ = 0.0;
+  // D_0 = K does not depend on omega: condensed once. Harmonics h >= 1 by modal superposition
+  // where the damping allows it (hbm/modal_condensation.hpp), else by factorizing D_h,oo.
+  std::optional<friction::Condensation<std::complex<double>>> static_;
+  std::optional<ModalBasis> modal_;
+
+  // Calls use(condensation) with the condensation of harmonic h at omega (either kind).
+  template <class Use>
+  void with_condensation(int h, double omega, const Use& use) const;
 };
 
 }  // namespace bb::hbm

@@ -1,76 +1,118 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "forced/hbm_level_system.hpp"
 
 namespace bb {
 
-// The first frequency's solution, from the cheapest start that converges: direct Newton from the
-// static pre-solve (or the linear limits) with the sweep's iterations; for H > 1 the H = 1 solution
-// (itself found this way) lifted to H; then, with ten times the sweep's iterations (Newton from a
-// far start on this piecewise-smooth balance approaches the solution only linearly, by
-// Levenberg-Marquardt steps across the contacts' kinks), Newton from the direct solve's best
-// iterate (Table XI, H = 7, 80 N: 1 iteration there, 421 from the start) and a homotopy in
-// the force: from 1/64 of it, each converged fraction the start of the next, the increment halved
-// on failure. An iteration at H = 1 costs a tenth to a hundredth of one at H = 5-13, so the lifted
-// start comes before the long solves (Table XI, H = 13, 110 N: 4338 iterations before it did).
-hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec, double force, int harmonics,
-                                int samples, double omega, const std::optional<Eigen::VectorXd>& initial) {
-  const hbm::HarmonicBalance quick = level_system(p, sweep_spec, force, harmonics, samples);
-  hbm::HbmSolution direct = hbm::solve_at_frequency(quick, omega, initial);
-  if (direct.converged) return direct;
-  int total = direct.iterations;
-  std::string lifted_failure;
-  if (harmonics > 1) {
-    const Eigen::Index dofs = quick.unknowns() / (2 * harmonics + 1);
-    std::optional<Eigen::VectorXd> low_initial;
-    if (initial) low_initial = with_harmonics(*initial, dofs, 1);
-    const hbm::HbmSolution low = first_solution(p, sweep_spec, force, 1, samples, omega, low_initial);
-    total += low.iterations;
-    if (low.converged) {
-      hbm::HbmSolution lifted = hbm::solve_at_frequency(quick, omega, with_harmonics(low.x, dofs, harmonics));
-      total += lifted.iterations;
-      if (lifted.converged) {
-        lifted.iterations = total;
-        return lifted;
-      }
-    }
-    lifted_failure = fmt::format("; from the H = 1 solution: {}", low.converged ? "no convergence" : low.failure);
-  }
-  // From the best iterate so far: a direct solve that stalled on a kink has usually come close.
-  const std::optional<Eigen::VectorXd> closest =
-      direct.x.size() > 0 && direct.x.allFinite() ? std::optional<Eigen::VectorXd>(direct.x) : initial;
-  hbm::HbmSolution patient =
-      hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force, harmonics, samples), omega, closest);
-  total += patient.iterations;
-  if (patient.converged) {
-    patient.iterations = total;
-    return patient;
-  }
-  double done = 1.0 / 64, step = 1.0 / 64;
-  hbm::HbmSolution at =
-      hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force * done, harmonics, samples), omega, initial);
-  total += at.iterations;
-  while (at.converged && done < 1.0 && step >= 1.0 / 4096) {
-    const double next = std::min(1.0, done + step);
-    hbm::HbmSolution trial =
-        hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force * next, harmonics, samples), omega, at.x);
-    total += trial.iterations;
+namespace {
+
+// A homotopy in the force at fixed omega, from the solution x_from at force_from to `force`: each
+// converged force is the start of the next, from that start alone with the sweep's iterations; the
+// step is halved on failure (down to 1/4096 of the way) and doubled on success.
+struct Homotopy {
+  hbm::HbmSolution at;
+  double reached = 0.0;  // fraction of the way from force_from to force
+  int iterations = 0;
+};
+
+Homotopy force_homotopy(const PreparedHbm& p, const HbmSpec& spec, double force_from, const Eigen::VectorXd& x_from,
+                        double force, int harmonics, int samples, double omega, double first_step) {
+  Homotopy h;
+  h.at.x = x_from;
+  h.at.converged = true;
+  double step = first_step;
+  while (h.reached < 1.0 && step >= 1.0 / 4096) {
+    const double next = std::min(1.0, h.reached + step);
+    const double f = force_from + next * (force - force_from);
+    hbm::HbmSolution trial = hbm::solve_from(level_system(p, spec, f, harmonics, samples), omega, h.at.x);
+    h.iterations += trial.iterations;
     if (trial.converged) {
-      at = std::move(trial), done = next, step *= 2;
+      h.at = std::move(trial);
+      h.reached = next;
+      step *= 2;
     } else {
       step /= 2;
     }
   }
-  if (at.converged && done == 1.0) {
-    at.iterations = total;
-    return at;
+  return h;
+}
+
+}  // namespace
+
+// The first frequency's solution, from the cheapest start that converges: direct Newton from the
+// caller's start (the previous level's solution, or the static pre-solve) or the linear limits,
+// with the sweep's iterations; for H > 1 the H = 1 solution (itself found this way) lifted to H;
+// Newton continued from the direct solve's best iterate; a homotopy in the force from the previous
+// level's solution; Newton with ten times the sweep's iterations from that best iterate (Newton
+// from a far start on this piecewise-smooth balance approaches the solution only linearly, by
+// Levenberg-Marquardt steps across the contacts' kinks); and last a homotopy from 1/64 of the
+// force. An iteration at H = 1 costs a tenth to a hundredth of one
+// at H = 5-13, so the lifted start comes before the long solves. The homotopy steps start from the
+// last converged force alone with the sweep's iterations: a failed step costs 20 iterations, not
+// the 600 of three patient starts (Table XI, H = 13, 110 N: 4 476 iterations before).
+hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec, double force, int harmonics,
+                                int samples, double omega, const std::optional<Eigen::VectorXd>& initial,
+                                std::optional<double> initial_force) {
+  const hbm::HarmonicBalance quick = level_system(p, sweep_spec, force, harmonics, samples);
+  hbm::HbmSolution direct = hbm::solve_at_frequency(quick, omega, initial);
+  if (direct.converged) return direct;
+  int total = direct.iterations;
+  std::string failures;
+  const auto done = [&](hbm::HbmSolution s) {
+    s.iterations = total;
+    return s;
+  };
+  if (harmonics > 1) {
+    const Eigen::Index dofs = quick.unknowns() / (2 * harmonics + 1);
+    std::optional<Eigen::VectorXd> low_initial;
+    if (initial) low_initial = with_harmonics(*initial, dofs, 1);
+    const hbm::HbmSolution low = first_solution(p, sweep_spec, force, 1, samples, omega, low_initial, initial_force);
+    total += low.iterations;
+    if (low.converged) {
+      hbm::HbmSolution lifted = hbm::solve_at_frequency(quick, omega, with_harmonics(low.x, dofs, harmonics));
+      total += lifted.iterations;
+      if (lifted.converged) return done(std::move(lifted));
+    }
+    failures += fmt::format("; from the H = 1 solution: {}", low.converged ? "no convergence" : low.failure);
   }
-  patient.failure += lifted_failure;
-  patient.failure += fmt::format("; force homotopy reached {:.4g} of the force", at.converged ? done : 0.0);
-  patient.iterations = total;
-  return patient;
+  // The direct solve's best iterate, continued alone: a solve that stalled on a kink has usually
+  // come close (Table XI, H = 7, 80 N: 1 more iteration, where 421 from the start).
+  const bool came_close = direct.x.size() > 0 && direct.x.allFinite();
+  if (came_close) {
+    hbm::HbmSolution continued = hbm::solve_from(quick, omega, direct.x);
+    total += continued.iterations;
+    if (continued.converged) return done(std::move(continued));
+  }
+  if (initial && initial_force) {
+    Homotopy from_neighbour =
+        force_homotopy(p, sweep_spec, *initial_force, *initial, force, harmonics, samples, omega, 1.0);
+    total += from_neighbour.iterations;
+    if (from_neighbour.reached == 1.0) return done(std::move(from_neighbour.at));
+    failures +=
+        fmt::format("; force homotopy from {:g} N reached {:.4g} of the way", *initial_force, from_neighbour.reached);
+  }
+  const std::optional<Eigen::VectorXd> closest = came_close ? std::optional<Eigen::VectorXd>(direct.x) : initial;
+  hbm::HbmSolution patient =
+      hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force, harmonics, samples), omega, closest);
+  total += patient.iterations;
+  if (patient.converged) return done(std::move(patient));
+  hbm::HbmSolution low_force =
+      hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force / 64, harmonics, samples), omega, initial);
+  total += low_force.iterations;
+  if (low_force.converged) {
+    Homotopy from_low =
+        force_homotopy(p, sweep_spec, force / 64, low_force.x, force, harmonics, samples, omega, 1.0 / 63);
+    total += from_low.iterations;
+    if (from_low.reached == 1.0) return done(std::move(from_low.at));
+    failures += fmt::format("; force homotopy from 1/64 of the force reached {:.4g} of the way", from_low.reached);
+  } else {
+    failures += "; force homotopy: no solution at 1/64 of the force";
+  }
+  patient.failure += failures;
+  return done(std::move(patient));
 }
 
 }  // namespace bb

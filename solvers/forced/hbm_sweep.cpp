@@ -263,8 +263,9 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
         for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
       }
     }
-    hbm::HbmSolution s = first_solution(p, spec, force, h, samples, omega_start, initial);
-    if (link && s.converged) link->relay.publish(link->level, LevelStart{s.x, h});
+    hbm::HbmSolution s = first_solution(p, spec, force, h, samples, omega_start, initial,
+                                        neighbour ? std::optional<double>(neighbour->force) : std::nullopt);
+    if (link && s.converged) link->relay.publish(link->level, LevelStart{s.x, h, force});
     return s;
   };
   hbm::ContinuationResult& path = level.path;

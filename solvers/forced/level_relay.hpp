@@ -12,10 +12,11 @@
 
 namespace bb {
 
-// A converged first point: the contact-DOF harmonics and their H.
+// A converged first point: the contact-DOF harmonics, their H and the level's force [N].
 struct LevelStart {
   Eigen::VectorXd x;
   int harmonics = 0;
+  double force = 0.0;
 };
 
 // Levels are handed to workers in list order (common/parallel_indices.hpp), so a level waits only

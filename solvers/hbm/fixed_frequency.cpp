@@ -73,20 +73,40 @@ HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& line
   return out;
 }
 
-}  // namespace
+HbmSolution singular_at(const HarmonicBalance& s, double omega) {
+  HbmSolution out;
+  out.omega = omega;
+  out.residual = std::numeric_limits<double>::max();
+  out.x = Eigen::VectorXd::Zero(s.unknowns());
+  out.failure = fmt::format("singular dynamic stiffness of the non-contact DOFs at omega = {:.6g} rad/s", omega);
+  return out;
+}
 
-HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std::optional<Eigen::VectorXd>& initial) {
+void check_frequency(double omega) {
   if (!(omega > 0.0) || !std::isfinite(omega))
     throw std::invalid_argument("harmonic balance: omega must be finite and > 0");
+}
+
+void check_size(const HarmonicBalance& s, const Eigen::VectorXd& x) {
+  if (x.size() != s.unknowns())
+    throw std::invalid_argument(
+        fmt::format("harmonic balance: initial guess has {} entries, expected {}", x.size(), s.unknowns()));
+}
+
+}  // namespace
+
+HbmSolution solve_from(const HarmonicBalance& s, double omega, const Eigen::VectorXd& start) {
+  check_frequency(omega);
+  check_size(s, start);
   const auto linear = s.condense(omega);
-  if (!linear) {
-    HbmSolution out;
-    out.omega = omega;
-    out.residual = std::numeric_limits<double>::max();
-    out.x = Eigen::VectorXd::Zero(s.unknowns());
-    out.failure = fmt::format("singular dynamic stiffness of the non-contact DOFs at omega = {:.6g} rad/s", omega);
-    return out;
-  }
+  if (!linear) return singular_at(s, omega);
+  return newton(s, *linear, omega, start, balance_at(s, *linear, start));
+}
+
+HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std::optional<Eigen::VectorXd>& initial) {
+  check_frequency(omega);
+  const auto linear = s.condense(omega);
+  if (!linear) return singular_at(s, omega);
   // Starts, in order: the caller's guess, then the two linear limits (contacts stuck: small
   // amplitude; normal springs only: large amplitude), the better one first. Newton on this
   // piecewise-smooth map can stall on a kink from one start and converge from another; each start
@@ -103,9 +123,7 @@ HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std
     return converged;
   };
   if (initial) {
-    if (initial->size() != s.unknowns())
-      throw std::invalid_argument(
-          fmt::format("harmonic balance: initial guess has {} entries, expected {}", initial->size(), s.unknowns()));
+    check_size(s, *initial);
     if (attempt(*initial, balance_at(s, *linear, *initial), HbmStart::initial)) return best;
   }
   // The linear limits only when needed: on a sweep the caller's guess almost always converges.

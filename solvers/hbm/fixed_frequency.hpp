@@ -41,4 +41,8 @@ struct HbmSolution {
 [[nodiscard]] HbmSolution solve_at_frequency(const HarmonicBalance& system, double omega_rad_s,
                                              const std::optional<Eigen::VectorXd>& initial = std::nullopt);
 
+// The same Newton iteration from `start` alone (no linear-limit starts): a continuation step,
+// where another start would find another branch or waste the iterations.
+[[nodiscard]] HbmSolution solve_from(const HarmonicBalance& system, double omega_rad_s, const Eigen::VectorXd& start);
+
 }  // namespace bb::hbm

@@ -201,7 +201,7 @@ TEST_F(HbmAnalysis, AFirstPointStartsFromThePreviousLevelsSolution) {
   const hbm::ContinuationPoint& from_static = alone.path.points.front();
   ASSERT_GT(from_static.iterations, 0);
   LevelRelay relay(2);
-  relay.publish(0, LevelStart{from_static.x, 5});
+  relay.publish(0, LevelStart{from_static.x, 5, 45.0});
   const LevelLink link{relay, 1};
   const HbmLevel chained = sweep_hbm_level(prepared, hbm, 45.0, 5, {}, true, &link);
   const hbm::ContinuationPoint& from_neighbour = chained.path.points.front();

@@ -163,6 +163,28 @@ std::pair<double, double> energy_balance(const HarmonicBalance& system, const Hb
   return {error, e.friction / e.excitation};
 }
 
+// solve_from is a continuation step: Newton from the given start alone. From the solution it takes
+// no iteration; from a far start with a small budget it fails there, where solve_at_frequency
+// goes on to the linear-limit starts.
+TEST(HbmMultiDof, SolveFromIteratesFromTheGivenStartAlone) {
+  const friction::FrictionModel model = blade_on_ground({.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0}, 25.0, 0.005);
+  const HarmonicBalance system(model, {.harmonics = 3, .tolerance = 1e-10});
+  const HbmSolution solved = solve_at_frequency(system, 1000.0);
+  ASSERT_TRUE(solved.converged) << solved.failure;
+  const HbmSolution again = solve_from(system, 1000.0, solved.x);
+  EXPECT_TRUE(again.converged);
+  EXPECT_EQ(again.iterations, 0);
+  EXPECT_EQ(again.x, solved.x);
+  const HarmonicBalance short_budget(model, {.harmonics = 3, .max_iterations = 1, .tolerance = 1e-10});
+  const VectorXd far = 50.0 * solved.x;
+  const HbmSolution alone = solve_from(short_budget, 1000.0, far);
+  EXPECT_FALSE(alone.converged);
+  EXPECT_EQ(alone.start, HbmStart::initial);
+  EXPECT_LE(alone.iterations, 2);
+  const HbmSolution every_start = solve_at_frequency(short_budget, 1000.0, far);
+  EXPECT_GT(every_start.iterations, alone.iterations);
+}
+
 TEST(HbmMultiDof, CycleEnergyOfExcitationEqualsViscousPlusContactDissipation) {
   double worst = 0.0, most_friction = 0.0;
   // Blade on the ground, variable normal load: every point must converge.

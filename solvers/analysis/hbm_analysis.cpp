@@ -394,9 +394,11 @@ void add_damper_table(HbmOutcome& o) {
   }
 }
 
-// Every force level, each swept by one of `spec.threads` workers (levels share nothing but the
-// prepared model, read only). A level that throws stops none of the others; the first in level
-// order is rethrown, as the serial run would have stopped there.
+// Every force level, each swept by one of `spec.threads` workers. Levels share the prepared model
+// (read only) and, through the relay, each level's first solution, the start of the next level's
+// first point: levels are handed out in list order, so a level waits only for one that has
+// started, and the results are those of the serial run. A level that throws stops none of the
+// others; the first in level order is rethrown, as the serial run would have stopped there.
 std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& spec, const HbmProgress& progress) {
   const size_t n = spec.force_levels.size();
   std::vector<HbmLevel> levels(n);

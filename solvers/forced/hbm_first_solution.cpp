@@ -22,11 +22,10 @@ Homotopy force_homotopy(const PreparedHbm& p, const HbmSpec& spec, double force_
                         double force, int harmonics, int samples, double omega, double first_step) {
   Homotopy h;
   h.at.x = x_from;
-  h.at.converged = true;
   double step = first_step;
   while (h.reached < 1.0 && step >= 1.0 / 4096) {
     const double next = std::min(1.0, h.reached + step);
-    const double f = force_from + next * (force - force_from);
+    const double f = next == 1.0 ? force : force_from + next * (force - force_from);
     hbm::HbmSolution trial = hbm::solve_from(level_system(p, spec, f, harmonics, samples), omega, h.at.x);
     h.iterations += trial.iterations;
     if (trial.converged) {
@@ -49,10 +48,10 @@ Homotopy force_homotopy(const PreparedHbm& p, const HbmSpec& spec, double force_
 // level's solution; Newton with ten times the sweep's iterations from that best iterate (Newton
 // from a far start on this piecewise-smooth balance approaches the solution only linearly, by
 // Levenberg-Marquardt steps across the contacts' kinks); and last a homotopy from 1/64 of the
-// force. An iteration at H = 1 costs a tenth to a hundredth of one
-// at H = 5-13, so the lifted start comes before the long solves. The homotopy steps start from the
-// last converged force alone with the sweep's iterations: a failed step costs 20 iterations, not
-// the 600 of three patient starts (Table XI, H = 13, 110 N: 4 476 iterations before).
+// force. An iteration at H = 1 costs a tenth to a hundredth of one at H = 5-13, so the lifted
+// start comes before the long solves. The homotopy steps start from the last converged force alone
+// with the sweep's iterations: a failed step costs 20 iterations, not the 600 of three patient
+// starts (Table XI, H = 13, 110 N: 4 476 iterations before).
 hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec, double force, int harmonics,
                                 int samples, double omega, const std::optional<Eigen::VectorXd>& initial,
                                 std::optional<double> initial_force) {
@@ -87,8 +86,9 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
     if (continued.converged) return done(std::move(continued));
   }
   if (initial && initial_force) {
+    // Its first step goes half the way: the whole way from `initial` is the direct solve's first start.
     Homotopy from_neighbour =
-        force_homotopy(p, sweep_spec, *initial_force, *initial, force, harmonics, samples, omega, 1.0);
+        force_homotopy(p, sweep_spec, *initial_force, *initial, force, harmonics, samples, omega, 0.5);
     total += from_neighbour.iterations;
     if (from_neighbour.reached == 1.0) return done(std::move(from_neighbour.at));
     failures +=

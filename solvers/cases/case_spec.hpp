@@ -11,6 +11,7 @@
 
 #include "analysis/analysis_spec.hpp"
 #include "checks/check_spec.hpp"
+#include "common/source_location.hpp"
 #include "model/model_spec.hpp"
 #include "study/fidelity_spec.hpp"
 #include "study/study_spec.hpp"
@@ -22,6 +23,9 @@ struct CaseSpec {
   std::string name;
   std::string title;
   std::string description;
+  // The plots a report shows under its verdict, by name (the SVG's stem); empty: the first plot.
+  std::vector<std::string> key_plots;
+  SourceLocation key_plots_at;
   std::filesystem::path model_from;  // the case whose material, mesh, sets and constraints these are
   ModelSpec model;
   AnalysisSpec analysis;

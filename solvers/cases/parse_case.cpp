@@ -9,12 +9,12 @@
 #include "cases/parse_common.hpp"
 #include "cases/parse_contact_loop.hpp"
 #include "cases/parse_contact_modal.hpp"
+#include "cases/parse_fidelity.hpp"
 #include "cases/parse_frf.hpp"
 #include "cases/parse_hbm.hpp"
 #include "cases/parse_modal.hpp"
 #include "cases/parse_model.hpp"
 #include "cases/parse_rotating.hpp"
-#include "cases/parse_fidelity.hpp"
 #include "cases/parse_study.hpp"
 #include "cases/parse_time.hpp"
 #include "common/errors.hpp"
@@ -209,6 +209,15 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
     }
     spec.title = c.optional_label("title").value_or(spec.name);
     spec.description = c.optional_label("description", true).value_or("");
+    if (c.has("key_plots")) {
+      spec.key_plots_at = c.location("key_plots");
+      for (const std::string& plot : c.string_array("key_plots")) {
+        if (const std::string problem = dotted_name_problem(plot); !problem.empty())
+          c.fail("key_plots",
+                 fmt::format("'{}': {}; a key plot is named by its file's stem", printable(plot), problem));
+        spec.key_plots.push_back(plot);
+      }
+    }
     if (const auto from = c.optional_string("model_from")) spec.model_from = folder / *from;
     c.finish();
   }
@@ -229,9 +238,10 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   } else {
     spec.model = parse_model(top, folder, !std::holds_alternative<StaticSpec>(spec.analysis));
     if (!spec.model.contact_pairs.empty() && !std::holds_alternative<ContactModalSpec>(spec.analysis))
-      throw InputError(fmt::format("{}: [[contact]] pairs are solved by type = \"contact_modal\" only; this "
-                                   "analysis would ignore them",
-                                   spec.model.contact_pairs.front().at.where()));
+      throw InputError(
+          fmt::format("{}: [[contact]] pairs are solved by type = \"contact_modal\" only; this "
+                      "analysis would ignore them",
+                      spec.model.contact_pairs.front().at.where()));
   }
   for_each_table_in_array(top, "check",
                           [&](TomlReader r) { spec.checks.push_back(parse_check(std::move(r), folder)); });

@@ -173,6 +173,16 @@ std::string reference_name(const CheckSpec& check) {
 
 }  // namespace
 
+double tolerance_used(const CheckEntry& e) {
+  const double excess = e.relation == CheckSpec::Relation::equal     ? e.abs_error
+                        : e.relation == CheckSpec::Relation::at_most ? e.computed - e.reference
+                                                                     : e.reference - e.computed;
+  double used = e.tolerance > 0.0 ? excess / e.tolerance : excess > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+  if (std::isnan(used)) used = std::numeric_limits<double>::infinity();
+  if (!e.pass && used <= 1.0) used = std::numeric_limits<double>::infinity();
+  return used;
+}
+
 const char* relation_symbol(CheckSpec::Relation relation) {
   switch (relation) {
     case CheckSpec::Relation::equal:

@@ -62,6 +62,12 @@ std::vector<CheckEntry> evaluate_check(const CheckSpec& check, const ResultTable
                                        const ResultTables* reference_results = nullptr,
                                        const RowMatch* match = nullptr);
 
+// How much of its tolerance an entry uses: |computed - reference| / tolerance for `=`, the excess
+// over the bound for `<=` / `>=` (negative: inside the bound by that much); infinity for a failed
+// entry whose numbers do not say why (a non-finite value, a row without a partner). At most 1 for
+// a passing entry, above 1 for a failing one.
+double tolerance_used(const CheckEntry& e);
+
 // "=", "<=" or ">=": how an entry's computed value must relate to its reference.
 const char* relation_symbol(CheckSpec::Relation relation);
 

@@ -1,5 +1,6 @@
-// bladebench command line: run and validate cases, calibrate, synthesize data, export decks. Exit
-// codes in common/errors.hpp. Progress goes to the terminal only: the library reports through callbacks.
+// bladebench command line: run and validate cases, compare report folders, calibrate, synthesize
+// data, export decks. Exit codes in common/errors.hpp. Progress goes to the terminal only: the
+// library reports through callbacks.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -14,9 +15,10 @@
 
 #include "analysis/run_analysis.hpp"
 #include "cache/model_cache.hpp"
-#include "cli/command_options.hpp"
-#include "cli/validate_command.hpp"
 #include "cases/case_spec.hpp"
+#include "cli/command_options.hpp"
+#include "cli/compare_command.hpp"
+#include "cli/validate_command.hpp"
 #include "common/errors.hpp"
 #include "common/progress_clock.hpp"
 #include "common/user_text.hpp"
@@ -311,6 +313,21 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingDirectory);
 
+  CompareArgs compare_args;
+  CLI::App* compare =
+      app.add_subcommand("compare",
+                         "What changed between two report folders (validate --out): exit 1 when a status or a check "
+                         "verdict flips or a value moves");
+  compare->add_option("OLD", compare_args.old_dir, "Report folder of the earlier run")->required();
+  compare->add_option("NEW", compare_args.new_dir, "Report folder of the later run")->required();
+  compare
+      ->add_option("--max-change", compare_args.max_change,
+                   "A value moves when it changes by more than this share of the larger of its size and its "
+                   "tolerance (default 1e-6)")
+      ->check(CLI::NonNegativeNumber);
+  compare->add_option("--out", compare_args.out,
+                      "Page to write (Markdown, with its HTML twin); default: standard output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -326,6 +343,7 @@ int main(int argc, char** argv) {
   }
   if (*export_ccx) return export_command(export_args);
   if (*html) return guarded([&] { return html_command(html_folder); });
+  if (*compare) return guarded([&] { return compare_command(compare_args); });
   if (*run) return guarded([&] { return run_command(run_args); });
   return guarded([&] { return validate_command(validate_args); });
 }

@@ -35,7 +35,6 @@ bool in_data_folder(const fs::path& file, const fs::path& root) {
   return false;
 }
 
-
 // `bladebench run` of one case as validate would run it in-process, for a child process.
 std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& file, const fs::path& out_dir) {
   std::vector<std::string> c = {
@@ -57,31 +56,10 @@ std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& fi
 std::optional<bb::IndexEntry> entry_of_child(const fs::path& out_dir, const fs::path& index_dir,
                                              const bb::ChildResult& r) {
   if (r.exit_code < 0) return std::nullopt;
-  try {
-    std::ifstream in(out_dir / "summary.json");
-    const nlohmann::json j = nlohmann::json::parse(in);
-    bb::IndexEntry e{j.at("case").get<std::string>(),
-                     fs::relative(out_dir / "report.md", index_dir),
-                     bb::RunStatus::solver_failed,
-                     0,
-                     0,
-                     j.at("wall_time_s").get<double>(),
-                     j.value("message", std::string()),
-                     j.value("fidelity", std::string())};
-    const std::string status = j.at("status").get<std::string>();
-    for (bb::RunStatus st : {bb::RunStatus::pass, bb::RunStatus::fail, bb::RunStatus::no_checks,
-                             bb::RunStatus::bad_input, bb::RunStatus::solver_failed})
-      if (bb::status_name(st) == status) e.status = st;
-    for (const auto& c : j.at("checks")) {
-      ++e.checks;
-      e.failed += c.at("pass").get<bool>() ? 0 : 1;
-    }
-    // An older summary (this run failed before writing its own) must not pass for this run.
-    if (bb::exit_code(e.status) != r.exit_code) return std::nullopt;
-    return e;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+  std::optional<bb::IndexEntry> e = bb::read_index_entry(out_dir, index_dir);
+  // An older summary (this run failed before writing its own) must not pass for this run.
+  if (e && bb::exit_code(e->status) != r.exit_code) return std::nullopt;
+  return e;
 }
 
 // "3 passed", "1 failed", "2 bad input": a status as the final line of validate says it.
@@ -152,15 +130,12 @@ int validate_command(const ValidateArgs& a) {
       std::fprintf(stderr, "[%zu/%zu] %s", ++finished, files.size(), bb::printable(r.output, true).c_str());
       std::optional<bb::IndexEntry> e = entry_of_child(out_dir, a.out, r);
       if (!e) {
-        e = bb::IndexEntry{files[i].stem().string(),
-                           fs::relative(out_dir / "report.md", a.out),
-                           r.exit_code == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed,
-                           0,
-                           0,
-                           0.0,
-                           r.signal ? fmt::format("the run was killed by signal {} ({})", r.signal, strsignal(r.signal))
-                                    : fmt::format("the run exited with code {} and no report", r.exit_code),
-                           ""};
+        e.emplace();
+        e->case_name = files[i].stem().string();
+        e->report = fs::relative(out_dir / "report.md", a.out);
+        e->status = r.exit_code == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed;
+        e->message = r.signal ? fmt::format("the run was killed by signal {} ({})", r.signal, strsignal(r.signal))
+                              : fmt::format("the run exited with code {} and no report", r.exit_code);
         std::fprintf(stderr, "  error: %s: %s\n", files[i].string().c_str(), e->message.c_str());
       }
       record(i, *e, bb::exit_code(e->status));
@@ -176,11 +151,21 @@ int validate_command(const ValidateArgs& a) {
       opt.out_dir = fs::path(a.out) / files[i].stem();
       const bb::RunOutcome o = bb::run_case(files[i], opt);
       print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
-      record(i,
-             bb::IndexEntry{o.record.case_name, fs::relative(o.out_dir / "report.md", a.out), o.record.status,
-                            static_cast<int>(o.record.checks.size()), failed_count(o.record), o.record.wall_seconds,
-                            o.record.message, o.record.fidelity},
-             bb::exit_code(o.record.status));
+      // The entry as its summary.json says, as for a child process; from memory when none was written.
+      std::optional<bb::IndexEntry> e;
+      if (o.written) e = bb::read_index_entry(o.out_dir, a.out);
+      if (!e) {
+        e.emplace();
+        e->case_name = o.record.case_name;
+        e->report = fs::relative(o.out_dir / "report.md", a.out);
+        e->status = o.record.status;
+        e->checks = static_cast<int>(o.record.checks.size());
+        e->failed = failed_count(o.record);
+        e->wall_seconds = o.record.wall_seconds;
+        e->message = o.record.message;
+        e->fidelity = o.record.fidelity;
+      }
+      record(i, *e, bb::exit_code(o.record.status));
     }
   }
   std::sort(done.begin(), done.end(), [](const auto& x, const auto& y) { return x.first < y.first; });

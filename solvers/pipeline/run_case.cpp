@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -84,6 +85,20 @@ void report_fidelity(const FidelitySpec& f, FidelityMode mode, const FidelityCho
   write_result_csv(choice.frontier, out, run);
   run.listed_tables.push_back(choice.frontier);
   if (plots) run.plots.push_back(plot_fidelity_frontier(choice.frontier, f, out, "fidelity_frontier"));
+}
+
+// The plots [case] key_plots names, each one this run draws (InputError naming the line, with the
+// plots it draws, otherwise); none named: the first plot.
+std::vector<std::string> key_plots(const CaseSpec& spec, const std::vector<Plot>& plots) {
+  if (spec.key_plots.empty()) return plots.empty() ? std::vector<std::string>{} : std::vector{plots.front().name};
+  std::vector<std::string> drawn;
+  for (const Plot& p : plots) drawn.push_back(p.name);
+  for (const std::string& name : spec.key_plots)
+    if (std::find(drawn.begin(), drawn.end(), name) == drawn.end())
+      throw InputError(fmt::format("{}: [case] key_plots: '{}' is not a plot of this analysis; it draws {}",
+                                   spec.key_plots_at.where(), name,
+                                   drawn.empty() ? std::string("none") : fmt::format("{}", fmt::join(drawn, ", "))));
+  return spec.key_plots;
 }
 
 // Throws InputError after the result tables are written when a check cannot be evaluated on
@@ -174,6 +189,7 @@ void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibra
     int i = 0;
     for (const CheckSpec& c : spec.checks)
       run.plots.push_back(plot_check(run.checks, c.name, out, fmt::format("check{}", ++i)));
+    run.key_plots = key_plots(spec, run.plots);
   }
   if (options.study && spec.study) {
     const HbmProgress progress = terminal_progress();

@@ -44,10 +44,10 @@ Plot draw(const fs::path& out_dir, const std::string& stem, const std::string& t
                                       shell_quote(stem + ".gp"), shell_quote(stem + ".log"));
   const int rc = std::system(cmd.c_str());
   if (rc != 0 || !fs::exists(dir / (stem + ".svg"))) {
-    return {title, "", fmt::format("gnuplot failed or is not installed; see plots/{}.log", stem)};
+    return {title, "", fmt::format("gnuplot failed or is not installed; see plots/{}.log", stem), stem};
   }
   fs::remove(dir / (stem + ".log"));
-  return {title, fmt::format("plots/{}.svg", stem), ""};
+  return {title, fmt::format("plots/{}.svg", stem), "", stem};
 }
 
 std::ofstream open_plot_data(const fs::path& out_dir, const std::string& stem) {

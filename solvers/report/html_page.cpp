@@ -36,11 +36,20 @@ std::string escape_html(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -67,19 +76,38 @@ std::string rewrite_attribute(const std::string& html, std::string_view attribut
 
 bool is_local(const std::string& target) { return target.find(':') == std::string::npos && !target.starts_with('/'); }
 
-// Local SVG images inlined (a missing one keeps its path); links to other Markdown reports sent to
-// their HTML pages.
-std::string rewrite_references(const std::string& html, const fs::path& folder) {
+// Local SVG images inlined (a missing one keeps its path) unless `inline_images` is false; links to
+// other Markdown reports sent to their HTML pages.
+std::string rewrite_references(const std::string& html, const fs::path& folder, bool inline_images) {
   const std::string linked = rewrite_attribute(html, "href", [](std::string target) {
     if (is_local(target) && (target.ends_with("report.md") || target.ends_with("index.md")))
       target.replace(target.size() - 3, 3, ".html");
     return target;
   });
+  if (!inline_images) return linked;
   return rewrite_attribute(linked, "src", [&](const std::string& target) {
     const fs::path file = folder / target;
     if (!is_local(target) || !target.ends_with(".svg") || !fs::is_regular_file(file)) return target;
     return "data:image/svg+xml;base64," + base64(read_bytes(file));
   });
+}
+
+// GitHub-flavoured Markdown to HTML with cmark-gfm in its safe mode.
+std::string render_markdown(const std::string& markdown) {
+  cmark_gfm_core_extensions_ensure_registered();
+  const std::unique_ptr<cmark_parser, decltype(&cmark_parser_free)> parser(cmark_parser_new(CMARK_OPT_DEFAULT),
+                                                                           &cmark_parser_free);
+  for (const char* name : {"table", "autolink", "strikethrough"})
+    if (cmark_syntax_extension* ext = cmark_find_syntax_extension(name))
+      cmark_parser_attach_syntax_extension(parser.get(), ext);
+  cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
+  const std::unique_ptr<cmark_node, decltype(&cmark_node_free)> root(cmark_parser_finish(parser.get()),
+                                                                     &cmark_node_free);
+  if (!root) throw std::runtime_error("the Markdown parser returned no document");
+  char* html = cmark_render_html(root.get(), CMARK_OPT_DEFAULT, cmark_parser_get_syntax_extensions(parser.get()));
+  const std::string out(html);
+  std::free(html);
+  return out;
 }
 
 constexpr std::string_view kStyle = R"css(
@@ -89,7 +117,10 @@ th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; text-align: left; }
 th { background: #eee; }
 code { background: #f4f4f4; padding: 0 0.2em; }
 blockquote { border-left: 4px solid #c60; margin-left: 0; padding-left: 1em; }
-img { max-width: 100%; }
+img { max-width: 100%; max-height: 27em; }
+p > img:has(+ img), p > img + img { max-width: 49.5%; }
+td img { width: 14em; height: auto; }
+summary { cursor: pointer; font-weight: bold; margin: 0.5em 0; }
 )css";
 
 }  // namespace
@@ -116,29 +147,44 @@ std::string base64(std::string_view bytes) {
 }
 
 std::string markdown_to_html(const std::string& markdown) {
-  cmark_gfm_core_extensions_ensure_registered();
-  const std::unique_ptr<cmark_parser, decltype(&cmark_parser_free)> parser(cmark_parser_new(CMARK_OPT_DEFAULT),
-                                                                            &cmark_parser_free);
-  for (const char* name : {"table", "autolink", "strikethrough"})
-    if (cmark_syntax_extension* ext = cmark_find_syntax_extension(name))
-      cmark_parser_attach_syntax_extension(parser.get(), ext);
-  cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
-  const std::unique_ptr<cmark_node, decltype(&cmark_node_free)> root(cmark_parser_finish(parser.get()),
-                                                                      &cmark_node_free);
-  if (!root) throw std::runtime_error("the Markdown parser returned no document");
-  char* html = cmark_render_html(root.get(), CMARK_OPT_DEFAULT, cmark_parser_get_syntax_extensions(parser.get()));
-  const std::string out(html);
-  std::free(html);
-  return out;
+  // Folded sections are the one markup let through: a line `<details><summary>TEXT</summary>` or
+  // `</details>` on its own, TEXT escaped; the Markdown between them is rendered on its own.
+  constexpr std::string_view kOpen = "<details><summary>", kSummaryEnd = "</summary>", kClose = "</details>";
+  std::string html, chunk;
+  int open = 0;
+  std::istringstream in(markdown);
+  for (std::string line; std::getline(in, line);) {
+    const bool opens = line.starts_with(kOpen) && line.ends_with(kSummaryEnd);
+    const bool closes = line == kClose && open > 0;
+    if (!opens && !closes) {
+      chunk += line + '\n';
+      continue;
+    }
+    html += render_markdown(chunk);
+    chunk.clear();
+    if (opens) {
+      ++open;
+      html +=
+          "<details><summary>" +
+          escape_html(std::string_view(line).substr(kOpen.size(), line.size() - kOpen.size() - kSummaryEnd.size())) +
+          "</summary>\n";
+    } else {
+      --open;
+      html += "</details>\n";
+    }
+  }
+  html += render_markdown(chunk);
+  for (; open > 0; --open) html += "</details>\n";
+  return html;
 }
 
-std::string html_page(const std::string& markdown, const fs::path& folder) {
+std::string html_page(const std::string& markdown, const fs::path& folder, bool inline_images) {
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>";
   page += escape_html(title_of(markdown));
   page += "</title>\n<style>";
   page += kStyle;
   page += "</style>\n</head>\n<body>\n";
-  page += rewrite_references(markdown_to_html(markdown), folder);
+  page += rewrite_references(markdown_to_html(markdown), folder, inline_images);
   page += "</body>\n</html>\n";
   return page;
 }
@@ -146,7 +192,9 @@ std::string html_page(const std::string& markdown, const fs::path& folder) {
 void write_html_twin(const fs::path& markdown_file) {
   fs::path html_file = markdown_file;
   html_file.replace_extension(".html");
-  write_file_atomically(html_file, html_page(read_bytes(markdown_file), markdown_file.parent_path()));
+  // The index links its cases' plots as thumbnails: inlined, they would make it the size of all reports.
+  const bool inline_images = markdown_file.filename() != "index.md";
+  write_file_atomically(html_file, html_page(read_bytes(markdown_file), markdown_file.parent_path(), inline_images));
 }
 
 std::vector<fs::path> write_html_twins(const fs::path& folder) {

@@ -12,15 +12,18 @@ namespace bb {
 std::string base64(std::string_view bytes);
 
 // GitHub-flavoured Markdown (tables included) to an HTML fragment. Raw HTML in the Markdown is not
-// passed through (cmark-gfm's safe mode), so a label in a case file cannot inject markup.
+// passed through (cmark-gfm's safe mode), so a label in a case file cannot inject markup; the one
+// exception is a folded section: a line `<details><summary>TEXT</summary>` (TEXT escaped) and its
+// closing line `</details>`, each on its own.
 std::string markdown_to_html(const std::string& markdown);
 
 // The complete page for `markdown`, whose relative links are relative to `folder`: every local SVG
-// image that exists there becomes a data: URI (a missing one keeps its path, so a browser shows it
-// missing), and links to `report.md` / `index.md` point at their HTML twins.
-std::string html_page(const std::string& markdown, const std::filesystem::path& folder);
+// image that exists there becomes a data: URI when `inline_images` (a missing one keeps its path,
+// so a browser shows it missing), and links to `report.md` / `index.md` point at their HTML twins.
+std::string html_page(const std::string& markdown, const std::filesystem::path& folder, bool inline_images = true);
 
-// Writes `<markdown_file minus .md>.html` beside `markdown_file`, atomically.
+// Writes `<markdown_file minus .md>.html` beside `markdown_file`, atomically; an index.md's images
+// stay links (thumbnails of the reports' plots).
 void write_html_twin(const std::filesystem::path& markdown_file);
 
 // The HTML twin of every report.md and index.md under `folder` (reports written before their

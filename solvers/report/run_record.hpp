@@ -21,6 +21,7 @@ struct Plot {
   std::string title;
   std::string file;  // relative to the output folder; empty when not drawn
   std::string note;  // why it was not drawn
+  std::string name;  // the file's stem, e.g. "performance_amplitude"; known also when not drawn
 };
 
 // A result column written with NaN or inf entries: values that do not apply (no peak found, a
@@ -50,6 +51,7 @@ struct RunRecord {
   std::vector<NonFiniteColumn> non_finite;  // their columns with NaN / inf entries
   std::vector<ResultTable> listed_tables;   // shown row by row in the report (tables with text labels)
   std::vector<Plot> plots;
+  std::vector<std::string> key_plots;  // names of plots shown under the verdict, before the checks
   std::optional<RefinementResult> study;
   std::string study_note;
   std::vector<Plot> study_plots;

@@ -1,7 +1,10 @@
 // Output files of a run: result CSVs, summary.json, report.md. User text reaches them only through
 // printable() (common/user_text.hpp), so no input byte can make a writer fail or a report lie.
 #pragma once
+#include <cmath>
 #include <filesystem>
+#include <optional>
+#include <vector>
 
 #include "report/run_record.hpp"
 #include "results/table.hpp"
@@ -20,13 +23,21 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file);
 struct IndexEntry {
   std::string case_name;
   std::filesystem::path report;  // relative to the index
-  RunStatus status;
+  RunStatus status = RunStatus::solver_failed;
   int checks = 0;
   int failed = 0;
   double wall_seconds = 0.0;
   std::string message;
-  std::string fidelity;  // RunRecord::fidelity
+  std::string fidelity;            // RunRecord::fidelity
+  double worst_used = NAN;         // the largest share of its tolerance a check entry uses; NaN: no checks
+  std::filesystem::path key_plot;  // the first key plot, relative to the index; empty: none
 };
-void write_index_md(const std::vector<IndexEntry>& entries, const std::filesystem::path& file);
+// The entry of a run from the summary.json in `out_dir`, paths relative to `index_dir`; nullopt
+// when there is none or it cannot be read.
+std::optional<IndexEntry> read_index_entry(const std::filesystem::path& out_dir,
+                                           const std::filesystem::path& index_dir);
+// The index as a dashboard: failing cases first, then by the share of the tolerance used (near
+// misses next), each with its worst share drawn as a bar and its key plot as a thumbnail.
+void write_index_md(std::vector<IndexEntry> entries, const std::filesystem::path& file);
 
 }  // namespace bb

@@ -1,6 +1,7 @@
 # Runs one malformed case and fails unless bladebench rejects it as bad input:
 #   cmake -DBIN=<bladebench> -DCASE=<case.toml> -DEXPECT=<substring> -DOUT=<dir> [-DARGS=<options>]
-#         [-DSUBCOMMAND=run|calibrate] -P expect_bad_input.cmake
+#         [-DSUBCOMMAND=run|calibrate] [-DPLOTS=ON] -P expect_bad_input.cmake
+# Runs without plots unless PLOTS is on (a refusal that only a drawn plot can reveal).
 # Passes only if
 #   - the exit code is exactly 2 (bad input; not 0/1, not 3 = solver failure, not a crash),
 #   - stderr has an "  error: " line and contains EXPECT. The case's own folder is stripped
@@ -16,11 +17,15 @@ endforeach()
 file(REMOVE_RECURSE "${OUT}")
 
 separate_arguments(extra_args UNIX_COMMAND "${ARGS}")
+set(plot_args --no-plots)
+if(PLOTS)
+  set(plot_args "")
+endif()
 if(NOT SUBCOMMAND)
   set(SUBCOMMAND run)
 endif()
 execute_process(
-  COMMAND "${BIN}" ${SUBCOMMAND} "${CASE}" --no-plots --out "${OUT}" ${extra_args}
+  COMMAND "${BIN}" ${SUBCOMMAND} "${CASE}" ${plot_args} --out "${OUT}" ${extra_args}
   RESULT_VARIABLE rc
   OUTPUT_VARIABLE out
   ERROR_VARIABLE err

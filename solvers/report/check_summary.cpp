@@ -141,7 +141,7 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
          "*Used*: the share of its tolerance the check's worst entry uses (above 1: a miss). Full precision: "
          "`summary.json`.\n\n";
   out << "| check | expect | entries | failed | worst entry | computed | reference | error | tolerance | used | "
-         "reference file | source |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "reference: file and source |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::vector<std::string> groups;
   for (const CheckSpec& spec : run.check_specs) groups.push_back(spec.name);
   for (const CheckEntry& e : run.checks)
@@ -173,18 +173,18 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
                    : "";
     }
     const std::string expect = spec ? relation_symbol(spec->relation) : worst ? relation_symbol(worst->relation) : "-";
-    const std::string source = spec && !spec->source.empty() ? table_cell(spec->source) : "-";
+    const std::string against =
+        spec ? reference + paired + (spec->source.empty() ? std::string() : ": " + table_cell(spec->source)) : "-";
     if (!worst) {
-      out << fmt::format("| {} | {} | 0 | 0 | - | - | - | - | - | - | {}{} | {} |\n", table_cell(group), expect,
-                         reference, paired, source);
+      out << fmt::format("| {} | {} | 0 | 0 | - | - | - | - | - | - | {} |\n", table_cell(group), expect, against);
       continue;
     }
     const std::string unit = unit_of_column(worst->column);
-    out << fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}{} | {} |\n", table_cell(group), expect,
-                       n, failed == 0 ? std::string("0") : fmt::format("**{}**", failed),
-                       table_cell(entry_label(*worst)), format_quantity(worst->computed, unit),
-                       format_quantity(worst->reference, unit), entry_error(*worst, spec),
-                       entry_tolerance(*worst, spec), used_cell(tolerance_used(*worst)), reference, paired, source);
+    out << fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", table_cell(group), expect, n,
+                       failed == 0 ? std::string("0") : fmt::format("**{}**", failed), table_cell(entry_label(*worst)),
+                       format_quantity(worst->computed, unit), format_quantity(worst->reference, unit),
+                       entry_error(*worst, spec), entry_tolerance(*worst, spec), used_cell(tolerance_used(*worst)),
+                       against);
   }
   out << fmt::format("\n<details><summary>Every entry ({})</summary>\n\n", run.checks.size());
   out << "| entry | computed | reference | abs error | rel error | tolerance | used | pass |\n"

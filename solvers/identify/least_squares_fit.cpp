@@ -1,5 +1,6 @@
 #include "identify/least_squares_fit.hpp"
 
+#include <Eigen/SVD>
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
@@ -120,13 +121,66 @@ std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
   return starts;
 }
 
+// Relative to the largest singular value of the Jacobian (log parameters), the size below which a
+// direction of the parameters is not determined by the fitted points: the pseudo-inverse drops it,
+// which would report it with a variance of zero.
+constexpr double kUnidentified = 1e-8;
+
+// The parameters and combinations the fitted points do not determine at the optimum, from the
+// Jacobian in log parameters (scale free): a zero column is a parameter without effect, a vanishing
+// singular value a combination that trades off exactly. Returns the parameters not identified.
+std::vector<bool> warn_unidentified(ceres::Problem& problem, const CalibrationSpec& cal, CalibrationOutcome& out) {
+  const size_t n = cal.parameters.size();
+  std::vector<bool> unidentified(n, false);
+  ceres::CRSMatrix crs;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs)) return unidentified;
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (int r = 0; r < crs.num_rows; ++r)
+    for (int k = crs.rows[static_cast<size_t>(r)]; k < crs.rows[static_cast<size_t>(r) + 1]; ++k)
+      j(r, crs.cols[static_cast<size_t>(k)]) = crs.values[static_cast<size_t>(k)];
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  if (sv.size() == 0 || !(sv(0) > 0.0)) {
+    out.warnings.push_back("no parameter has an effect on the fitted points at the optimum: nothing is identified");
+    unidentified.assign(n, true);
+    return unidentified;
+  }
+  for (size_t i = 0; i < n; ++i)
+    if (j.col(static_cast<Eigen::Index>(i)).norm() <= kUnidentified * sv(0)) {
+      unidentified[i] = true;
+      out.warnings.push_back(
+          fmt::format("'{}' has no effect on the fitted points at the optimum: it is not "
+                      "identified (no standard deviation or correlation is given for it)",
+                      cal.parameters[i].path));
+    }
+  for (Eigen::Index k = 0; k < sv.size(); ++k) {
+    if (sv(k) > kUnidentified * sv(0)) continue;
+    std::vector<std::string> terms;  // the weak direction, in log parameters
+    for (Eigen::Index i = 0; i < svd.matrixV().rows(); ++i)
+      if (const double c = svd.matrixV()(i, k); std::abs(c) > 0.2 && !unidentified[static_cast<size_t>(i)])
+        terms.push_back(fmt::format("{:+.2f} log({})", c, cal.parameters[static_cast<size_t>(i)].path));
+    if (terms.size() < 2) continue;  // a single parameter: named above
+    std::string combination;
+    for (const std::string& t : terms) combination += (combination.empty() ? "" : " ") + t;
+    out.warnings.push_back(
+        fmt::format("the fitted points do not determine the combination {} (singular value "
+                    "{:.2g} of the largest): these parameters trade off; hold one of them",
+                    combination, sv(k) / sv(0)));
+    for (Eigen::Index i = 0; i < svd.matrixV().rows(); ++i)
+      if (std::abs(svd.matrixV()(i, k)) > 0.2) unidentified[static_cast<size_t>(i)] = true;
+  }
+  return unidentified;
+}
+
 // The covariance at the optimum x (log values) as standard deviations and correlations, with the
 // Birge ratio: a fit worse than the stated uncertainties allow (reduced chi-square above 1, e.g.
-// outliers or an imperfect model) scales the covariance up by it.
+// outliers or an imperfect model) scales the covariance up by it. A parameter the points do not
+// determine gets none (NaN), rather than the zero the pseudo-inverse would give it.
 void add_covariance(ceres::Problem& problem, std::vector<double>& x, const CalibrationSpec& cal,
                     CalibrationOutcome& out) {
   const size_t n = x.size();
   out.std_devs.assign(n, NAN);
+  const std::vector<bool> unidentified = warn_unidentified(problem, cal, out);
   ceres::Covariance::Options cov_options;
   cov_options.algorithm_type = ceres::DENSE_SVD;
   cov_options.null_space_rank = -1;  // report rank deficiency instead of failing
@@ -142,10 +196,10 @@ void add_covariance(ceres::Problem& problem, std::vector<double>& x, const Calib
   if (out.reduced_chi_square > 1.0) c *= out.reduced_chi_square;
   for (size_t i = 0; i < n; ++i) {
     const auto ii = static_cast<Eigen::Index>(i);
-    out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log-space sigma -> value sigma
+    if (!unidentified[i]) out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log -> value
     for (size_t j = 0; j < n; ++j) {
       const auto jj = static_cast<Eigen::Index>(j);
-      out.correlation(ii, jj) = c(ii, jj) / std::sqrt(c(ii, ii) * c(jj, jj));
+      out.correlation(ii, jj) = unidentified[i] || unidentified[j] ? NAN : c(ii, jj) / std::sqrt(c(ii, ii) * c(jj, jj));
       if (j > i && std::abs(out.correlation(ii, jj)) > 0.95)
         out.warnings.push_back(fmt::format("'{}' and '{}' correlate at {:.3f}: the data cannot separate them",
                                            cal.parameters[i].path, cal.parameters[j].path, out.correlation(ii, jj)));
@@ -275,6 +329,14 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   out.final_cost = chosen.final_cost;
   out.converged = chosen.converged;
   if (!out.converged) out.warnings.push_back("the fit did not converge: " + message);
+  // A converged start is kept over unconverged ones; a cheaper unconverged start is said, since its
+  // end is not a minimum and the true one may lie beyond it.
+  for (size_t s = 0; s < out.starts.size(); ++s)
+    if (chosen.converged && !out.starts[s].converged && out.starts[s].final_cost < chosen.final_cost)
+      out.warnings.push_back(fmt::format(
+          "start {} reached a lower cost ({:.6g}) than the reported start {} ({:.6g}) but did not converge ({}): "
+          "the best minimum may lie beyond it; raise max_iterations",
+          s + 1, out.starts[s].final_cost, out.best + 1, chosen.final_cost, runs[s].message));
   const double dof = static_cast<double>(residuals) - static_cast<double>(n);
   out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
   if (starts.size() > 1) warn_other_minima(out, n);

@@ -193,7 +193,7 @@ void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibra
   }
   if (options.study && spec.study) {
     const HbmProgress progress = terminal_progress();
-    run_study(*spec.study, spec, model, results, out, options.plots, run, progress);
+    run_study(*spec.study, spec, model, results, out, options.plots, run, progress, options.limits);
     if (progress) std::fputs("\r\033[K", stderr);
   }
   bool all_pass = true;

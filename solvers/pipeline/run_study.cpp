@@ -6,7 +6,6 @@
 #include <optional>
 
 #include "common/progress_clock.hpp"
-
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
 #include "report/plots.hpp"
@@ -44,6 +43,7 @@ struct StudyRun {
   bool plots;
   RunRecord& run;
   const HbmProgress& line;
+  const WorkLimits& limits;
 
   void operator()(const RefinementStudySpec& s) const {
     run.study = run_refinement_study(spec.model, s, study_progress(line, "mesh refinement"));
@@ -69,13 +69,13 @@ struct StudyRun {
           s.note, "hbm_harmonics_study", "study_harmonics", plot_hbm_harmonics_study);
   }
   void operator()(const TimeStepStudySpec& s) const {
-    table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s, study_progress(line, "time steps")),
-          s.note, "time_step_study", "study_time_steps", plot_time_step_study);
+    table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s, study_progress(line, "time steps")), s.note,
+          "time_step_study", "study_time_steps", plot_time_step_study);
   }
 
   void operator()(const RotatingFidelityStudySpec& s) const {
     table(run_rotating_fidelity_study(model, std::get<RotatingSpec>(spec.analysis), s,
-                                      study_progress(line, "rotating model levels")),
+                                      study_progress(line, "rotating model levels"), limits),
           s.note, "rotating_fidelity_study", "study_rotating_fidelity", plot_rotating_fidelity);
   }
 
@@ -93,8 +93,8 @@ struct StudyRun {
 }  // namespace
 
 void run_study(const StudySpec& study, const CaseSpec& spec, const Model& model, const AnalysisResults& results,
-               const fs::path& out, bool plots, RunRecord& run, const HbmProgress& progress) {
-  std::visit(StudyRun{spec, model, results, out, plots, run, progress}, study);
+               const fs::path& out, bool plots, RunRecord& run, const HbmProgress& progress, const WorkLimits& limits) {
+  std::visit(StudyRun{spec, model, results, out, plots, run, progress, limits}, study);
 }
 
 }  // namespace bb

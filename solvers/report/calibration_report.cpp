@@ -247,8 +247,9 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
         "|\n|---|---|---|---|---|---|\n";
   for (size_t i = 0; i < o.values.size(); ++i) {
     const auto& p = o.spec.parameters[i];
-    md << fmt::format("| `{}` | {:.6g} | {:.6g} | {:.3g} | {:.6g} | {:.6g} |\n", p.path, p.start, o.values[i],
-                      o.std_devs[i], p.lower, p.upper);
+    md << fmt::format("| `{}` | {:.6g} | {:.6g} | {} | {:.6g} | {:.6g} |\n", p.path, p.start, o.values[i],
+                      std::isnan(o.std_devs[i]) ? std::string("not identified") : fmt::format("{:.3g}", o.std_devs[i]),
+                      p.lower, p.upper);
   }
   if (o.correlation.size() > 0) {
     md << "\nCorrelation matrix:\n\n|   |";
@@ -258,7 +259,8 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     md << '\n';
     for (Eigen::Index i = 0; i < o.correlation.rows(); ++i) {
       md << fmt::format("| {} |", i + 1);
-      for (Eigen::Index j = 0; j < o.correlation.cols(); ++j) md << fmt::format(" {:+.3f} |", o.correlation(i, j));
+      for (Eigen::Index j = 0; j < o.correlation.cols(); ++j)
+        md << (std::isnan(o.correlation(i, j)) ? std::string(" - |") : fmt::format(" {:+.3f} |", o.correlation(i, j)));
       md << '\n';
     }
   }

@@ -140,7 +140,7 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
          "or, one-sided, when computed <= reference + tolerance (`<=`) or computed >= reference - tolerance (`>=`). "
          "*Used*: the share of its tolerance the check's worst entry uses (above 1: a miss). Full precision: "
          "`summary.json`.\n\n";
-  out << "| check | expect | entries | failed | worst entry | computed | reference | error | tolerance | used | "
+  out << "| check | expect | entries | pass | worst entry | computed | reference | error | tolerance | used | "
          "reference: file and source |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::vector<std::string> groups;
   for (const CheckSpec& spec : run.check_specs) groups.push_back(spec.name);
@@ -176,15 +176,15 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
     const std::string against =
         spec ? reference + paired + (spec->source.empty() ? std::string() : ": " + table_cell(spec->source)) : "-";
     if (!worst) {
-      out << fmt::format("| {} | {} | 0 | 0 | - | - | - | - | - | - | {} |\n", table_cell(group), expect, against);
+      out << fmt::format("| {} | {} | 0 | - | - | - | - | - | - | - | {} |\n", table_cell(group), expect, against);
       continue;
     }
     const std::string unit = unit_of_column(worst->column);
     out << fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", table_cell(group), expect, n,
-                       failed == 0 ? std::string("0") : fmt::format("**{}**", failed), table_cell(entry_label(*worst)),
-                       format_quantity(worst->computed, unit), format_quantity(worst->reference, unit),
-                       entry_error(*worst, spec), entry_tolerance(*worst, spec), used_cell(tolerance_used(*worst)),
-                       against);
+                       failed == 0 ? std::string("pass") : fmt::format("**FAIL** ({} of {})", failed, n),
+                       table_cell(entry_label(*worst)), format_quantity(worst->computed, unit),
+                       format_quantity(worst->reference, unit), entry_error(*worst, spec),
+                       entry_tolerance(*worst, spec), used_cell(tolerance_used(*worst)), against);
   }
   out << fmt::format("\n<details><summary>Every entry ({})</summary>\n\n", run.checks.size());
   out << "| entry | computed | reference | abs error | rel error | tolerance | used | pass |\n"

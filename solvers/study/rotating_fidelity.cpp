@@ -28,12 +28,12 @@ struct Level {
   bool diverged = false;
 };
 
-Level time_level(const Model& model, RotatingSpec spec, const std::string& name) {
+Level time_level(const Model& model, RotatingSpec spec, const std::string& name, const WorkLimits& limits) {
   Level l;
   l.model = name;
   const auto t0 = Clock::now();
   try {
-    const RotatingOutcome o = run_rotating(model, spec);
+    const RotatingOutcome o = run_rotating(model, spec, limits);
     const ResultTable& d = o.tables.at("deflection");
     l.mean.resize(o.dim);
     l.motion.resize(o.dim);
@@ -81,7 +81,8 @@ double relative(double value, double reference) {
 }  // namespace
 
 ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& spec,
-                                        const RotatingFidelityStudySpec& study, const StudyProgress& progress) {
+                                        const RotatingFidelityStudySpec& study, const StudyProgress& progress,
+                                        const WorkLimits& limits) {
   // static, linear, one per basis size, and the nodal reference
   const int total = 3 + static_cast<int>(study.basis_modes.size());
   std::vector<Level> levels;
@@ -96,7 +97,7 @@ ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& 
   linear.compare_stiffening = false;
   linear.modal_basis = true;
   linear.basis_modes = *std::max_element(study.basis_modes.begin(), study.basis_modes.end());
-  levels.push_back(time_level(model, linear, fmt::format("no stiffening, {} modes", linear.basis_modes)));
+  levels.push_back(time_level(model, linear, fmt::format("no stiffening, {} modes", linear.basis_modes), limits));
   done();
   for (int n : study.basis_modes) {
     RotatingSpec modal = spec;
@@ -104,14 +105,14 @@ ResultTable run_rotating_fidelity_study(const Model& model, const RotatingSpec& 
     modal.compare_stiffening = false;
     modal.modal_basis = true;
     modal.basis_modes = n;
-    levels.push_back(time_level(model, modal, fmt::format("stiffening, {} modes", n)));
+    levels.push_back(time_level(model, modal, fmt::format("stiffening, {} modes", n), limits));
     done();
   }
   RotatingSpec nodal = spec;
   nodal.stiffening = true;
   nodal.compare_stiffening = false;
   nodal.modal_basis = false;
-  levels.push_back(time_level(model, nodal, "stiffening, every free DOF (reference)"));
+  levels.push_back(time_level(model, nodal, "stiffening, every free DOF (reference)", limits));
   done();
   const Level& ref = levels.back();
   // The compared components: the largest mean and the largest motion of the reference.

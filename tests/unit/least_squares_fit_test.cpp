@@ -1,0 +1,77 @@
+// The fit says what the data could not identify: a parameter without effect and two parameters that
+// trade off exactly get no standard deviation and a warning naming them, never a confident zero.
+#include "identify/least_squares_fit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bb {
+namespace {
+
+// Points y_k = model(x_k) measured from a = 2 (b and c as the model uses them), sigma 1 %.
+CalibrationSpec spec_of(std::vector<std::string> paths) {
+  CalibrationSpec spec;
+  for (const std::string& p : paths) spec.parameters.push_back({p, 0.1, 10.0, 1.0});
+  spec.max_iterations = 100;
+  spec.threads = 1;
+  return spec;
+}
+
+template <class Model>
+FitEvaluator evaluator(Model model) {
+  return [model](const std::vector<double>& v, bool) {
+    std::vector<FitPoint> points;
+    for (int k = 1; k <= 5; ++k) {
+      FitPoint p;
+      p.set = "curve";
+      p.x = k;
+      p.measured = model(std::vector<double>{2.0, 3.0}, k);
+      p.computed = model(v, k);
+      p.sigma = 0.01 * std::abs(p.measured);
+      points.push_back(p);
+    }
+    return points;
+  };
+}
+
+bool warned(const CalibrationOutcome& o, const std::string& text) {
+  for (const std::string& w : o.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
+TEST(LeastSquaresFit, AnIdentifiedParameterHasAStandardDeviationAndNoWarning) {
+  const auto line = [](const std::vector<double>& v, int k) { return v[0] * k + v[1] * k * k; };
+  const CalibrationOutcome o = fit_parameters(spec_of({"a", "b"}), evaluator(line), false, 5);
+  ASSERT_TRUE(o.converged) << o.termination;
+  EXPECT_NEAR(o.values[0], 2.0, 1e-6);
+  EXPECT_NEAR(o.values[1], 3.0, 1e-6);
+  EXPECT_TRUE(std::isfinite(o.std_devs[0]));
+  EXPECT_FALSE(warned(o, "not identified")) << o.warnings.size();
+}
+
+TEST(LeastSquaresFit, AParameterWithoutEffectIsNamedAndGetsNoStandardDeviation) {
+  const auto only_a = [](const std::vector<double>& v, int k) { return v[0] * k; };
+  const CalibrationOutcome o = fit_parameters(spec_of({"a", "b"}), evaluator(only_a), false, 5);
+  ASSERT_TRUE(o.converged) << o.termination;
+  EXPECT_NEAR(o.values[0], 2.0, 1e-6);
+  EXPECT_TRUE(std::isfinite(o.std_devs[0]));
+  EXPECT_TRUE(std::isnan(o.std_devs[1])) << "not a confident zero: " << o.std_devs[1];
+  EXPECT_TRUE(warned(o, "'b' has no effect on the fitted points"));
+  ASSERT_EQ(o.correlation.rows(), 2);
+  EXPECT_TRUE(std::isnan(o.correlation(0, 1)));
+}
+
+TEST(LeastSquaresFit, TwoParametersThatTradeOffAreNamedAsACombination) {
+  const auto product = [](const std::vector<double>& v, int k) { return v[0] * v[1] * k; };
+  const CalibrationOutcome o = fit_parameters(spec_of({"a", "b"}), evaluator(product), false, 5);
+  EXPECT_NEAR(o.values[0] * o.values[1], 6.0, 1e-5);
+  EXPECT_TRUE(warned(o, "do not determine the combination")) << (o.warnings.empty() ? "" : o.warnings.front());
+  EXPECT_TRUE(warned(o, "log(a)") && warned(o, "log(b)"));
+  EXPECT_TRUE(std::isnan(o.std_devs[0]));
+  EXPECT_TRUE(std::isnan(o.std_devs[1]));
+}
+
+}  // namespace
+}  // namespace bb

@@ -64,8 +64,9 @@ bool moved(double before, double after, double tolerance, double max_change) {
   return !(std::abs(after - before) <= max_change * scale);
 }
 
+// As the reports show it: inside a one-sided bound (negative) is 0.
 std::string used_text(double used) {
-  return std::isnan(used) ? std::string("-") : std::isfinite(used) ? fmt::format("{:.2f}", used) : "inf";
+  return std::isnan(used) ? std::string("-") : std::isfinite(used) ? fmt::format("{:.2f}", std::max(used, 0.0)) : "inf";
 }
 
 std::string relative_change(double before, double after) {
@@ -76,7 +77,7 @@ std::string relative_change(double before, double after) {
 
 struct EntryRow {
   std::string case_name, entry, before, after, change, used, verdict;
-  double size = 0.0;  // |relative change| for ordering, flips first
+  double size = 0.0;  // for ordering: flips and removals first, then moves by size, additions last
 };
 
 }  // namespace
@@ -138,7 +139,7 @@ ReportComparison compare_reports(const std::vector<CaseSummary>& old_runs, const
       if (o == old_entries.end()) {
         ++r.entries_added;
         rows.push_back({name, table_cell(e.name), "-", format_quantity(e.computed, unit_of_column(e.column)), "added",
-                        used_text(e.used), e.pass ? "pass" : "**FAIL**", INFINITY});
+                        used_text(e.used), e.pass ? "pass" : "**FAIL**", -1.0});
         continue;
       }
       const EntrySummary& b = *o->second;
@@ -149,9 +150,12 @@ ReportComparison compare_reports(const std::vector<CaseSummary>& old_runs, const
       if (!flip && !move) continue;
       flipped += flip ? 1 : 0;
       moved_here += move ? 1 : 0;
-      const double size = flip                ? INFINITY
-                          : b.computed != 0.0 ? std::abs((e.computed - b.computed) / b.computed)
-                                              : std::abs(e.computed - b.computed);
+      // Ordered by the share of the tolerance the move spends (a tolerance below a thousandth of the
+      // value counts as that: one-sided checks may have none): a residual near zero that doubles
+      // matters less than a frequency that moves by a tenth of its tolerance.
+      const double scale = std::max(std::max(b.tolerance, e.tolerance), 1e-3 * std::abs(b.computed));
+      const double change = std::abs(e.computed - b.computed);
+      const double size = flip ? INFINITY : scale > 0.0 ? change / scale : change;
       const std::string unit = unit_of_column(e.column);
       rows.push_back(
           {name, table_cell(e.name), format_quantity(b.computed, unit), format_quantity(e.computed, unit),
@@ -196,7 +200,9 @@ ReportComparison compare_reports(const std::vector<CaseSummary>& old_runs, const
   md << "## Cases\n\n| case | status | entries flipped | values moved | run time | ratio |\n|---|---|---|---|---|---|\n"
      << cases.str() << '\n';
   if (!rows.empty()) {
-    md << "## Check entries that flipped, moved, or came or went\n\nLargest relative change first. *Used*: the share "
+    md << "## Check entries that flipped, moved, or came or went\n\nFlips and removals first, then the largest "
+          "relative "
+          "change, then additions. *Used*: the share "
           "of its tolerance the entry uses, old -> new.\n\n";
     auto header = [&md] {
       md << "| case | entry | old | new | change | used | verdict |\n|---|---|---|---|---|---|---|\n";

@@ -80,6 +80,110 @@ struct EntryRow {
   double size = 0.0;  // for ordering: flips and removals first, then moves by size, additions last
 };
 
+// The changes of one case in both runs: its entries' rows into `rows`, its counts into `r`; returns
+// its row of the cases table.
+std::string compare_case(const CaseSummary& before, const CaseSummary& after, const CompareOptions& options,
+                         ReportComparison& r, std::vector<EntryRow>& rows) {
+  const std::string& name = after.name;
+  ++r.cases_compared;
+  r.old_seconds += before.wall_seconds;
+  r.new_seconds += after.wall_seconds;
+  const bool flipped_status = before.status != after.status;
+  r.statuses_flipped += flipped_status ? 1 : 0;
+  std::map<std::string, const EntrySummary*> old_entries;
+  for (const EntrySummary& e : before.entries) old_entries[e.name] = &e;
+  int flipped = 0, moved_here = 0;
+  for (const EntrySummary& e : after.entries) {
+    const auto o = old_entries.find(e.name);
+    if (o == old_entries.end()) {
+      ++r.entries_added;
+      rows.push_back({name, table_cell(e.name), "-", format_quantity(e.computed, unit_of_column(e.column)), "added",
+                      used_text(e.used), e.pass ? "pass" : "**FAIL**", -1.0});
+      continue;
+    }
+    const EntrySummary& b = *o->second;
+    old_entries.erase(o);
+    const bool flip = b.pass != e.pass;
+    const bool move = moved(b.computed, e.computed, std::max(b.tolerance, e.tolerance), options.max_change) ||
+                      moved(b.reference, e.reference, std::max(b.tolerance, e.tolerance), options.max_change);
+    if (!flip && !move) continue;
+    flipped += flip ? 1 : 0;
+    moved_here += move ? 1 : 0;
+    // Ordered by the share of the tolerance the move spends (a tolerance below a thousandth of the
+    // value counts as that: one-sided checks may have none): a residual near zero that doubles
+    // matters less than a frequency that moves by a tenth of its tolerance.
+    const double scale = std::max(std::max(b.tolerance, e.tolerance), 1e-3 * std::abs(b.computed));
+    const double change = std::abs(e.computed - b.computed);
+    const double size = flip ? INFINITY : scale > 0.0 ? change / scale : change;
+    const std::string unit = unit_of_column(e.column);
+    rows.push_back(
+        {name, table_cell(e.name), format_quantity(b.computed, unit), format_quantity(e.computed, unit),
+         relative_change(b.computed, e.computed) +
+             (b.reference != e.reference ? fmt::format(" (reference {} -> {})", format_quantity(b.reference, unit),
+                                                       format_quantity(e.reference, unit))
+                                         : std::string()),
+         fmt::format("{} -> {}", used_text(b.used), used_text(e.used)),
+         flip ? fmt::format("**{} -> {}**", b.pass ? "pass" : "fail", e.pass ? "pass" : "fail")
+              : (e.pass ? "pass" : "**FAIL**"),
+         size});
+  }
+  for (const auto& [entry_name, b] : old_entries) {
+    ++r.entries_removed;
+    rows.push_back({name, table_cell(entry_name), format_quantity(b->computed, unit_of_column(b->column)), "-",
+                    "**removed**", used_text(b->used), "-", INFINITY});
+  }
+  r.entries_flipped += flipped;
+  r.entries_moved += moved_here;
+  const std::string ratio =
+      before.wall_seconds > 0.0 ? fmt::format("{:.2f}", after.wall_seconds / before.wall_seconds) : std::string("-");
+  return fmt::format("| {} | {} | {} | {} | {} -> {} | {} |\n", name,
+                     flipped_status ? fmt::format("**{} -> {}**", before.status, after.status) : after.status, flipped,
+                     moved_here, format_seconds(before.wall_seconds), format_seconds(after.wall_seconds), ratio);
+}
+
+// The page: what changed in one line, the cases table, then the entries that flipped, moved or came
+// or went (long lists folded).
+std::string comparison_page(const ReportComparison& r, const std::string& cases, const std::vector<EntryRow>& rows,
+                            const CompareOptions& options, const std::string& old_label, const std::string& new_label) {
+  std::ostringstream md;
+  md << "# bladebench: what changed\n\n";
+  md << fmt::format(
+      "Old runs: `{}`; new runs: `{}`. A value moves when it changes by more than {} of the larger of "
+      "its old size and its tolerance.\n\n",
+      old_label, new_label, format_number(options.max_change));
+  md << fmt::format(
+      "**{}**: {} case{} compared ({} added, {} removed); {} status{} flipped; check entries: {} verdict{} flipped, "
+      "{} value{} moved, {} removed, {} added. Run time of the cases in both: {} -> {} (ratio {}).\n\n",
+      r.changed() ? "CHANGED" : "UNCHANGED", r.cases_compared, r.cases_compared == 1 ? "" : "s", r.cases_added,
+      r.cases_removed, r.statuses_flipped, r.statuses_flipped == 1 ? "" : "es", r.entries_flipped,
+      r.entries_flipped == 1 ? "" : "s", r.entries_moved, r.entries_moved == 1 ? "" : "s", r.entries_removed,
+      r.entries_added, format_seconds(r.old_seconds), format_seconds(r.new_seconds),
+      r.old_seconds > 0.0 ? fmt::format("{:.2f}", r.new_seconds / r.old_seconds) : std::string("-"));
+  md << "## Cases\n\n| case | status | entries flipped | values moved | run time | ratio |\n|---|---|---|---|---|---|\n"
+     << cases << '\n';
+  if (!rows.empty()) {
+    md << "## Check entries that flipped, moved, or came or went\n\nFlips and removals first, then the moves by the "
+          "share of the tolerance they spend, then additions. *Used*: the share of its tolerance the entry uses, old "
+          "-> new.\n\n";
+    auto header = [&md] {
+      md << "| case | entry | old | new | change | used | verdict |\n|---|---|---|---|---|---|---|\n";
+    };
+    header();
+    for (size_t i = 0; i < rows.size(); ++i) {
+      if (i == kShownEntries) {
+        md << fmt::format("\n<details><summary>{} more entries</summary>\n\n", rows.size() - kShownEntries);
+        header();
+      }
+      const EntryRow& e = rows[i];
+      md << fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", e.case_name, e.entry, e.before, e.after, e.change,
+                        e.used, e.verdict);
+    }
+    if (rows.size() > kShownEntries) md << "\n</details>\n";
+    md << '\n';
+  }
+  return md.str();
+}
+
 }  // namespace
 
 std::vector<CaseSummary> read_report_tree(const fs::path& root) {
@@ -111,116 +215,24 @@ ReportComparison compare_reports(const std::vector<CaseSummary>& old_runs, const
   std::map<std::string, const CaseSummary*> old_by_name, new_by_name;
   for (const CaseSummary& c : old_runs) old_by_name[c.name] = &c;
   for (const CaseSummary& c : new_runs) new_by_name[c.name] = &c;
-  std::ostringstream cases;  // one row per case
+  std::string cases;  // one row per case
   std::vector<EntryRow> rows;
   for (const auto& [name, before] : old_by_name)
     if (!new_by_name.count(name)) {
       ++r.cases_removed;
-      cases << fmt::format("| {} | {} -> **removed** | - | - | - | - |\n", name, before->status);
+      cases += fmt::format("| {} | {} -> **removed** | - | - | - | - |\n", name, before->status);
     }
   for (const auto& [name, after] : new_by_name) {
     const auto it = old_by_name.find(name);
     if (it == old_by_name.end()) {
       ++r.cases_added;
-      cases << fmt::format("| {} | added: {} | - | - | - | - |\n", name, after->status);
+      cases += fmt::format("| {} | added: {} | - | - | - | - |\n", name, after->status);
       continue;
     }
-    const CaseSummary& before = *it->second;
-    ++r.cases_compared;
-    r.old_seconds += before.wall_seconds;
-    r.new_seconds += after->wall_seconds;
-    const bool flipped_status = before.status != after->status;
-    r.statuses_flipped += flipped_status ? 1 : 0;
-    std::map<std::string, const EntrySummary*> old_entries;
-    for (const EntrySummary& e : before.entries) old_entries[e.name] = &e;
-    int flipped = 0, moved_here = 0;
-    for (const EntrySummary& e : after->entries) {
-      const auto o = old_entries.find(e.name);
-      if (o == old_entries.end()) {
-        ++r.entries_added;
-        rows.push_back({name, table_cell(e.name), "-", format_quantity(e.computed, unit_of_column(e.column)), "added",
-                        used_text(e.used), e.pass ? "pass" : "**FAIL**", -1.0});
-        continue;
-      }
-      const EntrySummary& b = *o->second;
-      old_entries.erase(o);
-      const bool flip = b.pass != e.pass;
-      const bool move = moved(b.computed, e.computed, std::max(b.tolerance, e.tolerance), options.max_change) ||
-                        moved(b.reference, e.reference, std::max(b.tolerance, e.tolerance), options.max_change);
-      if (!flip && !move) continue;
-      flipped += flip ? 1 : 0;
-      moved_here += move ? 1 : 0;
-      // Ordered by the share of the tolerance the move spends (a tolerance below a thousandth of the
-      // value counts as that: one-sided checks may have none): a residual near zero that doubles
-      // matters less than a frequency that moves by a tenth of its tolerance.
-      const double scale = std::max(std::max(b.tolerance, e.tolerance), 1e-3 * std::abs(b.computed));
-      const double change = std::abs(e.computed - b.computed);
-      const double size = flip ? INFINITY : scale > 0.0 ? change / scale : change;
-      const std::string unit = unit_of_column(e.column);
-      rows.push_back(
-          {name, table_cell(e.name), format_quantity(b.computed, unit), format_quantity(e.computed, unit),
-           relative_change(b.computed, e.computed) +
-               (b.reference != e.reference ? fmt::format(" (reference {} -> {})", format_quantity(b.reference, unit),
-                                                         format_quantity(e.reference, unit))
-                                           : std::string()),
-           fmt::format("{} -> {}", used_text(b.used), used_text(e.used)),
-           flip ? fmt::format("**{} -> {}**", b.pass ? "pass" : "fail", e.pass ? "pass" : "fail")
-                : (e.pass ? "pass" : "**FAIL**"),
-           size});
-    }
-    for (const auto& [entry_name, b] : old_entries) {
-      ++r.entries_removed;
-      rows.push_back({name, table_cell(entry_name), format_quantity(b->computed, unit_of_column(b->column)), "-",
-                      "**removed**", used_text(b->used), "-", INFINITY});
-    }
-    r.entries_flipped += flipped;
-    r.entries_moved += moved_here;
-    const std::string ratio =
-        before.wall_seconds > 0.0 ? fmt::format("{:.2f}", after->wall_seconds / before.wall_seconds) : std::string("-");
-    cases << fmt::format("| {} | {} | {} | {} | {} -> {} | {} |\n", name,
-                         flipped_status ? fmt::format("**{} -> {}**", before.status, after->status) : after->status,
-                         flipped, moved_here, format_seconds(before.wall_seconds), format_seconds(after->wall_seconds),
-                         ratio);
+    cases += compare_case(*it->second, *after, options, r, rows);
   }
   std::stable_sort(rows.begin(), rows.end(), [](const EntryRow& a, const EntryRow& b) { return a.size > b.size; });
-  std::ostringstream md;
-  md << "# bladebench: what changed\n\n";
-  md << fmt::format(
-      "Old runs: `{}`; new runs: `{}`. A value moves when it changes by more than {} of the larger of "
-      "its old size and its tolerance.\n\n",
-      old_label, new_label, format_number(options.max_change));
-  md << fmt::format(
-      "**{}**: {} case{} compared ({} added, {} removed); {} status{} flipped; check entries: {} verdict{} flipped, "
-      "{} value{} moved, {} removed, {} added. Run time of the cases in both: {} -> {} (ratio {}).\n\n",
-      r.changed() ? "CHANGED" : "UNCHANGED", r.cases_compared, r.cases_compared == 1 ? "" : "s", r.cases_added,
-      r.cases_removed, r.statuses_flipped, r.statuses_flipped == 1 ? "" : "es", r.entries_flipped,
-      r.entries_flipped == 1 ? "" : "s", r.entries_moved, r.entries_moved == 1 ? "" : "s", r.entries_removed,
-      r.entries_added, format_seconds(r.old_seconds), format_seconds(r.new_seconds),
-      r.old_seconds > 0.0 ? fmt::format("{:.2f}", r.new_seconds / r.old_seconds) : std::string("-"));
-  md << "## Cases\n\n| case | status | entries flipped | values moved | run time | ratio |\n|---|---|---|---|---|---|\n"
-     << cases.str() << '\n';
-  if (!rows.empty()) {
-    md << "## Check entries that flipped, moved, or came or went\n\nFlips and removals first, then the largest "
-          "relative "
-          "change, then additions. *Used*: the share "
-          "of its tolerance the entry uses, old -> new.\n\n";
-    auto header = [&md] {
-      md << "| case | entry | old | new | change | used | verdict |\n|---|---|---|---|---|---|---|\n";
-    };
-    header();
-    for (size_t i = 0; i < rows.size(); ++i) {
-      if (i == kShownEntries) {
-        md << fmt::format("\n<details><summary>{} more entries</summary>\n\n", rows.size() - kShownEntries);
-        header();
-      }
-      const EntryRow& e = rows[i];
-      md << fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", e.case_name, e.entry, e.before, e.after, e.change,
-                        e.used, e.verdict);
-    }
-    if (rows.size() > kShownEntries) md << "\n</details>\n";
-    md << '\n';
-  }
-  r.markdown = printable(md.str(), true);
+  r.markdown = printable(comparison_page(r, cases, rows, options, old_label, new_label), true);
   return r;
 }
 

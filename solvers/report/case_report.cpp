@@ -106,13 +106,6 @@ void write_listed_table(std::ostream& out, const RunRecord& run, const ResultTab
   out << (rows > kShownRows ? "\n</details>\n\n" : "\n");
 }
 
-void write_plot(std::ostream& out, const Plot& p) {
-  if (p.file.empty())
-    out << fmt::format("*{}: not drawn ({})*\n\n", p.title, p.note);
-  else
-    out << fmt::format("![{}]({})\n\n", p.title, p.file);
-}
-
 bool is_key(const RunRecord& run, const Plot& p) {
   return std::find(run.key_plots.begin(), run.key_plots.end(), p.name) != run.key_plots.end();
 }
@@ -141,9 +134,7 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
   std::string key;
   for (const std::string& name : run.key_plots)
     for (const Plot& p : run.plots)
-      if (p.name == name)
-        key += p.file.empty() ? fmt::format("*{}: not drawn ({})*\n", p.title, p.note)
-                              : fmt::format("![{}]({})\n", p.title, p.file);
+      if (p.name == name) key += plot_markdown(p) + '\n';
   if (!key.empty()) out << key << '\n';
   write_check_table(out, run);
   if (!run.description.empty()) out << "## Description and assumptions\n\n" << run.description << "\n\n";
@@ -160,7 +151,7 @@ void write_report_md(const RunRecord& run, const std::filesystem::path& file) {
     if (is_key(run, p)) continue;
     if (!heading) out << (run.key_plots.empty() ? "## Plots\n\n" : "## Other plots\n\n");
     heading = true;
-    write_plot(out, p);
+    out << plot_markdown(p) << "\n\n";
   }
   write_study_sections(out, run);
   std::ofstream report(file);

@@ -31,13 +31,6 @@ std::string unsigned_percent(double fraction) {
   return p.front() == '+' ? p.substr(1) : p;
 }
 
-std::string used_text(double used) {
-  if (!std::isfinite(used)) return "inf";
-  return fmt::format("{:.2f}", std::max(used, 0.0));
-}
-
-std::string used_cell(double used) { return fmt::format("`{}`\u00a0{}", tolerance_bar(used), used_text(used)); }
-
 int check_count(const RunRecord& run) {
   std::set<std::string> groups;
   for (const CheckEntry& e : run.checks) groups.insert(e.group);
@@ -69,11 +62,13 @@ std::string table_cell(const std::string& text) {
   return out;
 }
 
-const CheckSpec* spec_of(const RunRecord& run, const CheckEntry& e) {
+const CheckSpec* spec_of(const RunRecord& run, const std::string& group) {
   for (const CheckSpec& spec : run.check_specs)
-    if (spec.name == e.group) return &spec;
+    if (spec.name == group) return &spec;
   return nullptr;
 }
+
+const CheckSpec* spec_of(const RunRecord& run, const CheckEntry& e) { return spec_of(run, e.group); }
 
 std::string entry_error(const CheckEntry& e, const CheckSpec* spec) {
   const double difference = e.computed - e.reference;
@@ -112,8 +107,8 @@ void write_verdict(std::ostream& out, const RunRecord& run) {
     out << fmt::format(
         "all {} check entries within their tolerance ({} check{}; the closest uses {} of its "
         "tolerance: {}, {}). {}\n\n",
-        n, checks, checks == 1 ? "" : "s", used_text(tolerance_used(*closest)), closest->group, entry_label(*closest),
-        timing);
+        n, checks, checks == 1 ? "" : "s", format_share(tolerance_used(*closest)), closest->group,
+        entry_label(*closest), timing);
   } else {
     std::set<std::string> failed_groups;
     for (const CheckEntry* e : misses) failed_groups.insert(e->group);
@@ -126,7 +121,7 @@ void write_verdict(std::ostream& out, const RunRecord& run) {
       out << fmt::format("- *{}*, {}: {} against {} ({}), error {} where {} is allowed: {} x the tolerance\n", e.group,
                          entry_label(e), format_quantity(e.computed, unit), format_quantity(e.reference, unit),
                          relation_symbol(e.relation), entry_error(e, spec), entry_tolerance(e, spec),
-                         used_text(tolerance_used(e)));
+                         format_share(tolerance_used(e)));
     }
     if (misses.size() > kMissesShown)
       out << fmt::format("- and {} more misses (all in the checks below)\n", misses.size() - kMissesShown);
@@ -155,9 +150,7 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
       failed += e.pass ? 0 : 1;
       if (!worst || tolerance_used(e) > tolerance_used(*worst)) worst = &e;
     }
-    const CheckSpec* spec = nullptr;
-    for (const CheckSpec& s : run.check_specs)
-      if (s.name == group) spec = &s;
+    const CheckSpec* spec = spec_of(run, group);
     std::string reference = "-", paired;
     if (spec) {
       reference = !spec->reference_case.empty() && spec->reference_result.empty()
@@ -184,7 +177,7 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
                        failed == 0 ? std::string("pass") : fmt::format("**FAIL** ({} of {})", failed, n),
                        table_cell(entry_label(*worst)), format_quantity(worst->computed, unit),
                        format_quantity(worst->reference, unit), entry_error(*worst, spec),
-                       entry_tolerance(*worst, spec), used_cell(tolerance_used(*worst)), against);
+                       entry_tolerance(*worst, spec), share_cell(tolerance_used(*worst)), against);
   }
   out << fmt::format("\n<details><summary>Every entry ({})</summary>\n\n", run.checks.size());
   out << "| entry | computed | reference | abs error | rel error | tolerance | used | pass |\n"
@@ -195,7 +188,7 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
         "| {} | {} | {} | {} | {} | {} | {} | {} |\n", table_cell(e.name), format_quantity(e.computed, unit),
         format_quantity(e.reference, unit), format_quantity(e.abs_error, unit),
         e.reference != 0.0 && std::isfinite(e.rel_error) ? unsigned_percent(e.rel_error) : std::string("-"),
-        format_quantity(e.tolerance, unit), used_text(tolerance_used(e)), e.pass ? "pass" : "**FAIL**");
+        format_quantity(e.tolerance, unit), format_share(tolerance_used(e)), e.pass ? "pass" : "**FAIL**");
   }
   out << "\n</details>\n\n";
 }

@@ -16,9 +16,10 @@ void write_verdict(std::ostream& out, const RunRecord& run);
 // share of the tolerance used, drawn as a bar), then every entry in a folded section.
 void write_check_table(std::ostream& out, const RunRecord& run);
 
-// The check of `e` among run.check_specs, or nullptr (an entry the run adds itself, e.g. the
-// fidelity target).
+// The check of `e` (of that name) among run.check_specs, or nullptr (an entry the run adds itself,
+// e.g. the fidelity target).
 const CheckSpec* spec_of(const RunRecord& run, const CheckEntry& e);
+const CheckSpec* spec_of(const RunRecord& run, const std::string& group);
 
 // An entry's error as its tolerance is stated: signed percent of the reference when the check's
 // tolerance is relative only, else signed in the column's unit; and that tolerance.

@@ -64,11 +64,6 @@ bool moved(double before, double after, double tolerance, double max_change) {
   return !(std::abs(after - before) <= max_change * scale);
 }
 
-// As the reports show it: inside a one-sided bound (negative) is 0.
-std::string used_text(double used) {
-  return std::isnan(used) ? std::string("-") : std::isfinite(used) ? fmt::format("{:.2f}", std::max(used, 0.0)) : "inf";
-}
-
 std::string relative_change(double before, double after) {
   if (before == after) return "0";
   if (before == 0.0 || !std::isfinite(before) || !std::isfinite(after)) return "-";
@@ -98,7 +93,7 @@ std::string compare_case(const CaseSummary& before, const CaseSummary& after, co
     if (o == old_entries.end()) {
       ++r.entries_added;
       rows.push_back({name, table_cell(e.name), "-", format_quantity(e.computed, unit_of_column(e.column)), "added",
-                      used_text(e.used), e.pass ? "pass" : "**FAIL**", -1.0});
+                      format_share(e.used), e.pass ? "pass" : "**FAIL**", -1.0});
       continue;
     }
     const EntrySummary& b = *o->second;
@@ -122,7 +117,7 @@ std::string compare_case(const CaseSummary& before, const CaseSummary& after, co
              (b.reference != e.reference ? fmt::format(" (reference {} -> {})", format_quantity(b.reference, unit),
                                                        format_quantity(e.reference, unit))
                                          : std::string()),
-         fmt::format("{} -> {}", used_text(b.used), used_text(e.used)),
+         fmt::format("{} -> {}", format_share(b.used), format_share(e.used)),
          flip ? fmt::format("**{} -> {}**", b.pass ? "pass" : "fail", e.pass ? "pass" : "fail")
               : (e.pass ? "pass" : "**FAIL**"),
          size});
@@ -130,7 +125,7 @@ std::string compare_case(const CaseSummary& before, const CaseSummary& after, co
   for (const auto& [entry_name, b] : old_entries) {
     ++r.entries_removed;
     rows.push_back({name, table_cell(entry_name), format_quantity(b->computed, unit_of_column(b->column)), "-",
-                    "**removed**", used_text(b->used), "-", INFINITY});
+                    "**removed**", format_share(b->used), "-", INFINITY});
   }
   r.entries_flipped += flipped;
   r.entries_moved += moved_here;

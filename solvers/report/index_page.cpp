@@ -38,12 +38,6 @@ int severity(RunStatus status) {
   return 5;
 }
 
-std::string used_cell(double used) {
-  if (std::isnan(used)) return "-";
-  return fmt::format("`{}`\u00a0{}", tolerance_bar(used),
-                     std::isfinite(used) ? fmt::format("{:.2f}", std::max(used, 0.0)) : std::string("inf"));
-}
-
 }  // namespace
 
 std::optional<IndexEntry> read_index_entry(const fs::path& out_dir, const fs::path& index_dir) {
@@ -109,7 +103,7 @@ void write_index_md(std::vector<IndexEntry> entries, const fs::path& file) {
             : fmt::format("[![{}]({})]({})", e.case_name, e.key_plot.generic_string(), e.report.generic_string());
     out << fmt::format(
         "| [{}]({}) | {} | {} | {} | {} | {} | {} | {} | {} |\n", e.case_name, e.report.generic_string(),
-        status_name(e.status), e.checks, e.failed, used_cell(e.worst_used), format_seconds(e.wall_seconds),
+        status_name(e.status), e.checks, e.failed, share_cell(e.worst_used), format_seconds(e.wall_seconds),
         table_cell(e.fidelity.empty() ? std::string("case settings") : e.fidelity), thumbnail, table_cell(e.message));
   }
   write_file_atomically(file, printable(out.str(), true));

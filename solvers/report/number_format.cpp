@@ -92,6 +92,16 @@ std::string format_seconds(double seconds) {
   return fmt::format("{}{}h {:02d}{}min", minutes / 60, kNbsp, static_cast<int>(minutes % 60), kNbsp);
 }
 
+std::string format_share(double used) {
+  if (std::isnan(used)) return "-";
+  return std::isfinite(used) ? fmt::format("{:.2f}", std::max(used, 0.0)) : std::string("inf");
+}
+
+std::string share_cell(double used) {
+  if (std::isnan(used)) return "-";
+  return fmt::format("`{}`{}{}", tolerance_bar(used), kNbsp, format_share(used));
+}
+
 std::string tolerance_bar(double used, int cells) {
   static constexpr std::array<std::string_view, 9> kEighths{"", "▏", "▎", "▍", "▌", "▋", "▊", "▉", "█"};
   const double clamped = std::isnan(used) ? 0.0 : std::clamp(used, 0.0, 1.0);

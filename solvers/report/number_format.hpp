@@ -19,6 +19,12 @@ std::string format_percent(double fraction);
 // A duration: 0.013 s, 1.2 s, 372.6 s, 1 h 02 min.
 std::string format_seconds(double seconds);
 
+// The share of its tolerance an entry uses (checks/checks.hpp, tolerance_used): "0.96", "inf"; a
+// negative share (inside a one-sided bound) as 0, NaN (no entry) as "-".
+std::string format_share(double used);
+// The share as a bar and its number ("`█████████▋` 0.96"), or "-" for NaN: a table cell.
+std::string share_cell(double used);
+
 // How much of its tolerance an error uses (0 none, 1 all of it, above 1 a miss) as a bar of `cells`
 // character cells (eighths of a cell by Unicode block elements), full beyond 1: "█████▌░░░░".
 std::string tolerance_bar(double used, int cells = 10);

@@ -27,12 +27,15 @@ void write_table_rows(std::ostream& out, const ResultTable& table) {
 }
 
 void write_plots(std::ostream& out, const std::vector<Plot>& list) {
-  for (const Plot& p : list)
-    out << (p.file.empty() ? fmt::format("*{}: not drawn ({})*\n\n", p.title, p.note)
-                           : fmt::format("![{}]({})\n\n", p.title, p.file));
+  for (const Plot& p : list) out << plot_markdown(p) << "\n\n";
 }
 
 }  // namespace
+
+std::string plot_markdown(const Plot& p) {
+  return p.file.empty() ? fmt::format("*{}: not drawn ({})*", p.title, p.note)
+                        : fmt::format("![{}]({})", p.title, p.file);
+}
 
 std::string column_header(const std::string& column) {
   const std::string unit = unit_of_column(column);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <random>
 
 #include "common/parallel_indices.hpp"
@@ -126,19 +127,30 @@ std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
 // which would report it with a variance of zero.
 constexpr double kUnidentified = 1e-8;
 
-// The parameters and combinations the fitted points do not determine at the optimum, from the
-// Jacobian in log parameters (scale free): a zero column is a parameter without effect, a vanishing
-// singular value a combination that trades off exactly. Returns the parameters not identified.
-std::vector<bool> warn_unidentified(ceres::Problem& problem, const CalibrationSpec& cal, CalibrationOutcome& out) {
-  const size_t n = cal.parameters.size();
-  std::vector<bool> unidentified(n, false);
+// Of (J^T J)'s eigenvalues, those below this share of the largest are dropped from its pseudo-inverse
+// (Ceres's default min_reciprocal_condition_number, as its DENSE_SVD covariance truncates).
+constexpr double kMinReciprocalCondition = 1e-14;
+
+// The Jacobian of the residuals in log parameters at the problem's values (loss function applied);
+// nullopt when it cannot be evaluated there.
+std::optional<Eigen::MatrixXd> jacobian_at(ceres::Problem& problem) {
   ceres::CRSMatrix crs;
-  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs)) return unidentified;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs)) return std::nullopt;
   Eigen::MatrixXd j = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int r = 0; r < crs.num_rows; ++r)
     for (int k = crs.rows[static_cast<size_t>(r)]; k < crs.rows[static_cast<size_t>(r) + 1]; ++k)
       j(r, crs.cols[static_cast<size_t>(k)]) = crs.values[static_cast<size_t>(k)];
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeFullV);
+  return j;
+}
+
+// The parameters and combinations the fitted points do not determine at the optimum, from the
+// Jacobian in log parameters (scale free) and its SVD: a zero column is a parameter without effect,
+// a vanishing singular value a combination that trades off exactly. Returns the parameters not
+// identified.
+std::vector<bool> warn_unidentified(const Eigen::MatrixXd& j, const Eigen::JacobiSVD<Eigen::MatrixXd>& svd,
+                                    const CalibrationSpec& cal, CalibrationOutcome& out) {
+  const size_t n = cal.parameters.size();
+  std::vector<bool> unidentified(n, false);
   const Eigen::VectorXd& sv = svd.singularValues();
   if (sv.size() == 0 || !(sv(0) > 0.0)) {
     out.warnings.push_back("no parameter has an effect on the fitted points at the optimum: nothing is identified");
@@ -175,23 +187,25 @@ std::vector<bool> warn_unidentified(ceres::Problem& problem, const CalibrationSp
 // The covariance at the optimum x (log values) as standard deviations and correlations, with the
 // Birge ratio: a fit worse than the stated uncertainties allow (reduced chi-square above 1, e.g.
 // outliers or an imperfect model) scales the covariance up by it. A parameter the points do not
-// determine gets none (NaN), rather than the zero the pseudo-inverse would give it.
+// determine gets none (NaN), rather than the zero the pseudo-inverse would give it. One Jacobian
+// and one SVD serve both the identifiability warnings and the covariance.
 void add_covariance(ceres::Problem& problem, std::vector<double>& x, const CalibrationSpec& cal,
                     CalibrationOutcome& out) {
   const size_t n = x.size();
   out.std_devs.assign(n, NAN);
-  const std::vector<bool> unidentified = warn_unidentified(problem, cal, out);
-  ceres::Covariance::Options cov_options;
-  cov_options.algorithm_type = ceres::DENSE_SVD;
-  cov_options.null_space_rank = -1;  // report rank deficiency instead of failing
-  ceres::Covariance covariance(cov_options);
-  std::vector<std::pair<const double*, const double*>> blocks{{x.data(), x.data()}};
-  if (!covariance.Compute(blocks, &problem)) {
-    out.warnings.push_back("the covariance could not be computed: the problem is rank deficient at the optimum");
+  const std::optional<Eigen::MatrixXd> jacobian = jacobian_at(problem);
+  if (!jacobian) {
+    out.warnings.push_back("the covariance could not be computed: the model cannot be evaluated at the optimum");
     return;
   }
-  Eigen::MatrixXd c(n, n);
-  covariance.GetCovarianceBlock(x.data(), x.data(), c.data());
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(*jacobian, Eigen::ComputeFullV);
+  const std::vector<bool> unidentified = warn_unidentified(*jacobian, svd, cal, out);
+  // (J^T J)^+ = V S^-2 V^T over the directions kept.
+  const Eigen::VectorXd& sv = svd.singularValues();
+  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  for (Eigen::Index k = 0; k < sv.size(); ++k)
+    if (sv(k) > 0.0 && sv(k) * sv(k) >= kMinReciprocalCondition * sv(0) * sv(0))
+      c += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
   out.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   if (out.reduced_chi_square > 1.0) c *= out.reduced_chi_square;
   for (size_t i = 0; i < n; ++i) {

@@ -168,13 +168,13 @@ void add_harmonic_table(HbmOutcome& o) {
       rows.push_back({static_cast<double>(rows.size() + 1), static_cast<double>(l + 1), o.levels[l].force,
                       static_cast<double>(t.harmonics), static_cast<double>(t.samples), t.share, t.change,
                       t.estimated_error, t.reached_end ? 1.0 : 0.0, t.trusted ? 1.0 : 0.0, t.seconds,
-                      t.chosen ? 1.0 : 0.0});
+                      t.chosen ? 1.0 : 0.0, t.window_hz, t.band_change});
   if (rows.empty()) return;
-  o.tables.emplace("harmonic_selection",
-                   table_from_rows("harmonic_selection",
-                                   {"trial", "level", "fe_n", "harmonics", "samples", "harmonic_share", "change",
-                                    "estimated_error", "reached_end", "trusted", "seconds", "chosen"},
-                                   rows));
+  o.tables.emplace("harmonic_selection", table_from_rows("harmonic_selection",
+                                                         {"trial", "level", "fe_n", "harmonics", "samples",
+                                                          "harmonic_share", "change", "estimated_error", "reached_end",
+                                                          "trusted", "seconds", "chosen", "window_hz", "band_change"},
+                                                         rows));
 }
 
 // harmonics_per_point: with the point scope, how many path points of each level were solved at

@@ -60,6 +60,10 @@ bool bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<d
   c.min_step = 1e-4 * c.initial_step;
   c.omega_back = std::max(c.omega_start - kTwoPi * grid.front(), 1e-3 * c.omega_start);  // within the band
   c.max_points = 5000;
+  // A bridge crosses a fold or two (the worst Table XI needs: 4 turning points at 60 N, H = 5);
+  // 60 N at H = 2 wandered 5000 points and 183 turning points near 174.75 Hz (64 s) without
+  // arriving, where Newton with more iterations then converged.
+  c.max_turning_points = 12;
   const hbm::ContinuationResult bridge = hbm::continue_in_frequency(system, c);
   path.corrector_iterations += bridge.corrector_iterations;
   path.rejected_steps += bridge.rejected_steps;
@@ -142,13 +146,11 @@ PointChoice choose_harmonics(const PreparedHbm& p, const HbmSpec& spec, const Le
   }
 }
 
-}  // namespace
-
-void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
-                HbmLevel& level, const SweepReport& report) {
+// sweep_grid on the frequencies `grid`.
+void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
+                   const std::vector<double>& grid, HbmLevel& level, const SweepReport& report) {
   const bool per_point = spec.harmonic_scope == HbmSpec::HarmonicScope::point;
   hbm::ContinuationResult& path = level.path;
-  const std::vector<double> grid = fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz);
   const int n = static_cast<int>(grid.size());
   const Index nc = static_cast<Index>(systems.at(level.harmonics).contact_dofs().size());
   int h_last = level.harmonics;  // H of the last point accepted
@@ -263,6 +265,54 @@ void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& s
         fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})",
                     failed.size(), n, failed.front(), failed.back(), last_failure);
   if (per_point) level.harmonics = *std::max_element(level.point_harmonics.begin(), level.point_harmonics.end());
+}
+
+const hbm::ContinuationPoint& nearest_point(const hbm::ContinuationResult& path, double omega) {
+  size_t nearest = 0;
+  for (size_t i = 1; i < path.points.size(); ++i)
+    if (std::abs(path.points[i].omega - omega) < std::abs(path.points[nearest].omega - omega)) nearest = i;
+  return path.points.at(nearest);
+}
+
+}  // namespace
+
+void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
+                HbmLevel& level, const SweepReport& report) {
+  sweep_grid_on(p, spec, systems, first, fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz), level,
+                report);
+}
+
+void sweep_grid_windows(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems,
+                        const PeakWindows& windows, HbmLevel& level, const SweepReport& report) {
+  const std::vector<double> grid = fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz);
+  const Index nc = static_cast<Index>(systems.at(level.harmonics).contact_dofs().size());
+  hbm::ContinuationResult& path = level.path;
+  path.converged = true;
+  for (const GridWindow& w : windows.windows) {
+    const std::vector<double> part(grid.begin() + w.first, grid.begin() + w.last + 1);
+    const double omega0 = kTwoPi * part.front();
+    const FirstSolution first = [&](int h) {
+      const Eigen::VectorXd x0 = with_harmonics(nearest_point(windows.around.path, omega0).x, nc, h);
+      return first_solution(p, spec, systems.force(), h, systems.samples(), omega0, x0);
+    };
+    HbmLevel piece;
+    piece.force = level.force;
+    piece.harmonics = level.harmonics;
+    sweep_grid_on(p, spec, systems, first, part, piece, report);
+    const hbm::ContinuationResult& q = piece.path;
+    path.points.insert(path.points.end(), q.points.begin(), q.points.end());
+    path.corrector_iterations += q.corrector_iterations;
+    path.rejected_steps += q.rejected_steps;
+    path.turning_points += q.turning_points;
+    path.jumps += q.jumps;
+    path.corners += q.corners;
+    level.failed_hz.insert(level.failed_hz.end(), piece.failed_hz.begin(), piece.failed_hz.end());
+    if (!q.converged) {
+      path.converged = false;
+      path.failure += fmt::format("{}window {:.4f}-{:.4f} Hz: {}", path.failure.empty() ? "" : "; ", part.front(),
+                                  part.back(), q.failure);
+    }
+  }
 }
 
 }  // namespace bb

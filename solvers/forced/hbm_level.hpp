@@ -122,6 +122,12 @@ struct HbmLevel {
     double estimated_error = std::numeric_limits<double>::quiet_NaN();
     bool reached_end = false, trusted = false, chosen = false;
     double seconds = 0.0;
+    // With the peaks scope of a grid sweep, H above the first is swept only on windows of the band
+    // around the previous good H's peaks: their half-width [Hz] (0: the whole band).
+    double window_hz = 0.0;
+    // The whole band's sweep at the H the windows chose: its peaks' largest relative change from
+    // the windows' (NaN on the other trials). Above the tolerance the band holds a peak the windows missed.
+    double band_change = std::numeric_limits<double>::quiet_NaN();
   };
   std::vector<HarmonicTrial> harmonic_trials;
 };
@@ -149,6 +155,11 @@ HbmLevel sweep_hbm_level(const PreparedHbm& prepared, const HbmSpec& spec, doubl
 // whose sweep reached its end; the higher H of that pair is kept.
 // Once one H has succeeded, a failed sweep moves on to the next H instead of raising its AFT
 // samples (on Table XI such retries at 2048-4096 samples cost 30-275 s a level and still failed).
+// With the peaks scope and a grid sweep, the H after the first are swept on windows around the
+// previous good H's peaks (widened while a peak lies at a window's edge), and the H chosen is then
+// swept over the whole band once: the frequencies away from the peaks, where a low H's sweep may
+// fail at a kink (Table XI, 60 N, H = 2: 4 frequencies near 170.7 Hz, 61 s), are solved once.
+// (hbm_harmonic_choice.cpp)
 HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& prepared, const HbmSpec& spec, double force,
                                   const HbmProgress& progress = {}, const LevelLink* link = nullptr);
 

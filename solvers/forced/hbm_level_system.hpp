@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "forced/hbm_level.hpp"
 #include "hbm/harmonic_balance.hpp"
@@ -32,6 +33,8 @@ class LevelSystems {
   const hbm::HarmonicBalance& at(int harmonics) const;
   // The truncation probe of at(harmonics), built once (it holds a balance of up to 3 H).
   const hbm::TruncationProbe& probe(int harmonics) const;
+  double force() const { return force_; }
+  int samples() const { return samples_; }  // as asked for (0: automatic per H)
 
  private:
   const PreparedHbm& p_;
@@ -74,5 +77,30 @@ using SweepReport = std::function<void(double, int, int)>;
 // point-scope one (which sets it to the largest H used).
 void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
                 HbmLevel& level, const SweepReport& report);
+
+// The grid frequencies [first, last] (indices into the band's fixed_grid) of a sweep around peaks.
+struct GridWindow {
+  int first = 0, last = 0;
+};
+
+// A level swept on windows of the band only, each from the nearest point of `around` (the same
+// level at a lower H): the peaks of a higher H without sweeping the band again.
+struct PeakWindows {
+  const HbmLevel& around;
+  std::vector<GridWindow> windows;  // ascending, disjoint
+};
+
+// The grid sweep of each window in turn (sweep_grid on its frequencies), their paths one after
+// another in level.path; level.path.converged when every window's is.
+void sweep_grid_windows(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems,
+                        const PeakWindows& windows, HbmLevel& level, const SweepReport& report);
+
+// sweep_hbm_level on windows of the band (sweep_grid_windows); a failed sweep is not retried with
+// more AFT samples, and no first point is relayed to the next level.
+HbmLevel sweep_hbm_level_windows(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                                 const HbmProgress& progress, const PeakWindows& windows);
+
+// Every peak of the level trusted and its solve converged (and there is at least one).
+bool peaks_trusted(const HbmLevel& level);
 
 }  // namespace bb

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -13,7 +12,6 @@
 #include <numbers>
 #include <optional>
 
-#include "common/power_law.hpp"
 #include "forced/hbm_level.hpp"
 #include "forced/hbm_level_system.hpp"
 #include "forced/hbm_response.hpp"
@@ -204,7 +202,7 @@ void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const LevelSys
 }
 
 HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
-                          const HbmProgress& progress, const LevelLink* link) {
+                          const HbmProgress& progress, const LevelLink* link, const PeakWindows* windows) {
   const auto t0 = Clock::now();
   HbmLevel level;
   level.force = force;
@@ -240,7 +238,9 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
                       spec.harmonic_scope == HbmSpec::HarmonicScope::point ? "per point" : fmt::to_string(harmonics),
                       level.samples, omega / kTwoPi, point, iterations));
   };
-  if (spec.sweep.method == HbmSweepSpec::Method::grid) {
+  if (windows) {
+    sweep_grid_windows(p, spec, systems, *windows, level, report);
+  } else if (spec.sweep.method == HbmSweepSpec::Method::grid) {
     sweep_grid(p, spec, systems, first, level, report);
     level.samples = systems.at(level.harmonics).aft_options().samples;
   } else if (const hbm::HbmSolution start = first(harmonics); !start.converged) {
@@ -297,12 +297,6 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   return level;
 }
 
-// Every peak of the level trusted and its solve converged (and there is at least one).
-bool peaks_trusted(const HbmLevel& level) {
-  return !level.peaks.empty() && std::all_of(level.peaks.begin(), level.peaks.end(),
-                                             [](const HbmPeak& pk) { return pk.trusted && pk.solution.converged; });
-}
-
 // The Floquet exponents spec.stability asks for, on the sweep a level keeps (not on the sampling
 // trials it discards).
 // `samples` as the level's sweep asked for them (0: automatic per H).
@@ -323,47 +317,12 @@ void add_stability(const PreparedHbm& p, const HbmSpec& spec, double force, int 
   level.seconds += seconds_since(t0);
 }
 
-bool increasing(const std::vector<double>& f) {
-  return std::adjacent_find(f.begin(), f.end(), std::greater_equal<>()) == f.end();
-}
-
-// The largest relative change from `lower` to `higher` (two sweeps of one level at different H):
-// each peak's frequency and component against the higher H's; with the path scope also each
-// response's largest displacement along the curve, the lower path interpolated at the higher one's
-// frequencies, on the scale of the higher curve's largest (a folding path: the peaks alone).
-double result_change(const HbmSpec& spec, const HbmLevel& lower, const HbmLevel& higher) {
-  double change = 0.0;
-  const size_t n = std::min(lower.peaks.size(), higher.peaks.size());
-  for (size_t k = 0; k < n; ++k) {
-    change = std::max(change, relative_change(lower.peaks[k].frequency_hz, higher.peaks[k].frequency_hz));
-    change = std::max(change, relative_change(lower.peaks[k].component, higher.peaks[k].component));
-  }
-  if (spec.harmonic_scope != HbmSpec::HarmonicScope::path || !increasing(lower.frequency_hz) ||
-      !increasing(higher.frequency_hz) || lower.frequency_hz.size() < 2)
-    return change;
-  const std::vector<double>& fl = lower.frequency_hz;
-  for (Index r = 0; r < higher.excursion.cols(); ++r) {
-    const double scale = higher.excursion.col(r).maxCoeff();
-    if (!(scale > 0.0)) continue;
-    for (size_t i = 0; i < higher.frequency_hz.size(); ++i) {
-      const double f = higher.frequency_hz[i];
-      if (f < fl.front() || f > fl.back()) continue;
-      const size_t j = std::min<size_t>(std::upper_bound(fl.begin(), fl.end(), f) - fl.begin(), fl.size() - 1);
-      const double t = fl[j] > fl[j - 1] ? (f - fl[j - 1]) / (fl[j] - fl[j - 1]) : 1.0;
-      const double e =
-          (1 - t) * lower.excursion(static_cast<Index>(j - 1), r) + t * lower.excursion(static_cast<Index>(j), r);
-      change = std::max(change, std::abs(e - higher.excursion(static_cast<Index>(i), r)) / scale);
-    }
-  }
-  return change;
-}
-
-}  // namespace
-
-HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
-                         const HbmProgress& progress, bool retry_failures, const LevelLink* link) {
+// sweep_hbm_level, on the whole band or on windows of it.
+HbmLevel sweep_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                     const HbmProgress& progress, bool retry_failures, const LevelLink* link,
+                     const PeakWindows* windows) {
   int samples = spec.time_samples;
-  HbmLevel level = sweep_at_samples(p, spec, force, harmonics, samples, progress, link);
+  HbmLevel level = sweep_at_samples(p, spec, force, harmonics, samples, progress, link, windows);
   if (!(spec.aft_tolerance > 0.0)) {
     add_stability(p, spec, force, samples, level);
     return level;
@@ -387,7 +346,7 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
     if (t.reached_end && t.trusted)
       while (factor < 64 && t.aft_error / factor > spec.aft_tolerance) factor *= 2;
     samples = std::min(factor * level.samples, spec.max_time_samples);
-    level = sweep_at_samples(p, spec, force, harmonics, samples, progress, link);
+    level = sweep_at_samples(p, spec, force, harmonics, samples, progress, link, windows);
   }
   level.sampling_trials = std::move(trials);
   level.seconds = seconds;  // the cost of reaching the tolerance, every trial included
@@ -395,69 +354,21 @@ HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force
   return level;
 }
 
-HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, double force, const HbmProgress& progress,
-                                  const LevelLink* link) {
-  // The point scope chooses H inside the one sweep, frequency by frequency.
-  if (spec.harmonic_scope == HbmSpec::HarmonicScope::point)
-    return sweep_hbm_level(p, spec, force, spec.harmonics, progress, true, link);
-  std::vector<HbmLevel::HarmonicTrial> trials;
-  std::vector<size_t> good_trials;  // of the sweeps that reached their end (or covered the band) with trusted peaks
-  std::optional<HbmLevel> kept;     // the highest H so far among them
-  double seconds = 0.0;
-  for (int h = spec.harmonics;;) {
-    // More samples rescue a sweep only while no H has succeeded; after that a failed sweep is left
-    // for the next H (on Table XI, 150 N at H = 7 took 275 s at 4096 samples and still failed).
-    HbmLevel level = sweep_hbm_level(p, spec, force, h, progress, !kept, link);
-    HbmLevel::HarmonicTrial t;
-    t.harmonics = h;
-    t.samples = level.samples;
-    t.reached_end = level.path.converged;
-    t.trusted = peaks_trusted(level);
-    // With the path scope every point counts (a check may read any frequency), else the peaks.
-    int needed = std::max(h, level.harmonics_needed);
-    for (double share : level.harmonic_share) t.share = std::max(t.share, share);
-    for (const HbmPeak& pk : level.peaks) {
-      t.share = std::max(t.share, pk.truncation.largest());
-      needed = std::max(needed, pk.truncation.needed(spec.harmonic_tolerance));
-    }
-    t.seconds = level.seconds;
-    seconds += level.seconds;
-    // For a peaks table, a grid sweep that covered the band counts when its peaks are trusted: a
-    // frequency that failed away from them (on Table XI at H >= 3, 1-13 of 401 between 171.6 and
-    // 178.4 Hz) does not move them, and one next to them makes them doubtful.
-    const bool covered = spec.harmonic_scope == HbmSpec::HarmonicScope::peaks &&
-                         spec.sweep.method == HbmSweepSpec::Method::grid && !level.frequency_hz.empty() &&
-                         level.frequency_hz.back() >= spec.sweep.f_max - 0.5 * spec.sweep.step_hz;
-    const bool good = t.trusted && (t.reached_end || covered);
-    const bool by_change = spec.harmonic_criterion == HbmSpec::HarmonicCriterion::change;
-    if (by_change && good && kept) {
-      t.change = result_change(spec, *kept, level);
-      if (good_trials.size() >= 2) {  // the last good trial holds the change from the one before it
-        const HbmLevel::HarmonicTrial& a = trials[good_trials[good_trials.size() - 2]];
-        const HbmLevel::HarmonicTrial& b = trials[good_trials.back()];
-        const std::array<double, 3> hs{static_cast<double>(a.harmonics), static_cast<double>(b.harmonics),
-                                       static_cast<double>(h)};
-        t.estimated_error = power_law_error(hs, b.change, t.change) - t.change;  // e(H) = e(H_b) - d
-      }
-    }
-    if (good) good_trials.push_back(trials.size());
-    trials.push_back(t);
-    // The change is met by the higher H of the pair, which is kept (the better of the two).
-    const bool met = good && (by_change ? t.change <= spec.harmonic_tolerance : t.share <= spec.harmonic_tolerance);
-    if (good) kept = level;
-    if (met || h >= spec.max_harmonics) {
-      if (!kept) kept = std::move(level);
-      break;
-    }
-    // By share: straight to the highest harmonic the points or peaks need; one more when the
-    // shares were met but the sweep failed (a higher H may smooth the residual the corrector
-    // stalled on). By change: the next step.
-    h = std::min(spec.max_harmonics, std::max(h + spec.harmonic_step, by_change ? 0 : needed));
-  }
-  for (HbmLevel::HarmonicTrial& t : trials) t.chosen = t.harmonics == kept->harmonics;
-  kept->harmonic_trials = std::move(trials);
-  kept->seconds = seconds;  // the cost of the choice, every H tried included
-  return std::move(*kept);
+}  // namespace
+
+bool peaks_trusted(const HbmLevel& level) {
+  return !level.peaks.empty() && std::all_of(level.peaks.begin(), level.peaks.end(),
+                                             [](const HbmPeak& pk) { return pk.trusted && pk.solution.converged; });
+}
+
+HbmLevel sweep_hbm_level(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                         const HbmProgress& progress, bool retry_failures, const LevelLink* link) {
+  return sweep_level(p, spec, force, harmonics, progress, retry_failures, link, nullptr);
+}
+
+HbmLevel sweep_hbm_level_windows(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
+                                 const HbmProgress& progress, const PeakWindows& windows) {
+  return sweep_level(p, spec, force, harmonics, progress, false, nullptr, &windows);
 }
 
 }  // namespace bb

@@ -322,6 +322,13 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
     }
     if (control.jumps() > 0) ++result.jumps;
     if ((t[m] > 0.0) != (tangent[m] > 0.0) && t[m] != 0.0 && tangent[m] != 0.0) ++result.turning_points;
+    if (o.max_turning_points > 0 && result.turning_points > o.max_turning_points) {
+      result.failure = fmt::format(
+          "the path turned back and forth {} times before omega_end (near omega = {:.6g} "
+          "rad/s): it wanders along kinks",
+          result.turning_points, c.y[m] * o.omega_start);
+      break;
+    }
     y = c.y;
     tangent = t;
     VectorXd x;

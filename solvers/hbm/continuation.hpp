@@ -42,7 +42,10 @@ struct ContinuationOptions {
   double shrink = 0.5;  // step factor after a failed corrector
   int easy_iterations = 4;
   int max_corrector_iterations = 25;
-  int max_points = 5000;                                  // hard cap, then failure
+  int max_points = 5000;  // hard cap, then failure
+  // A path that turns back and forth more often than this is wandering along the kinks of a
+  // stick-slip solution set, not tracing a fold: it stops as failed. 0: no cap.
+  int max_turning_points = 0;
   std::optional<Eigen::VectorXd> initial = std::nullopt;  // guess for the first point (e.g. from a static pre-solve)
   std::function<void(const ContinuationProgress&)> progress;  // called per accepted point; may be empty
 };

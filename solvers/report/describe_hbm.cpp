@@ -133,13 +133,18 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
           "the tolerance there)",
           spec.max_harmonics, g(spec.harmonic_tolerance), unmet));
   } else if (spec.harmonic_tolerance > 0.0) {
-    std::string per_level, unmet, beyond;
+    std::string per_level, unmet, beyond, missed;
+    bool windowed = false;
     for (const HbmLevel& l : hbm.levels) {
       std::string tried;
       double change = std::numeric_limits<double>::quiet_NaN(), estimate = change;
       for (const HbmLevel::HarmonicTrial& t : l.harmonic_trials) {
-        tried += fmt::format("{}{}", tried.empty() ? "" : ", ", t.harmonics);
+        tried += fmt::format("{}{}{}", tried.empty() ? "" : ", ", t.harmonics, t.window_hz > 0.0 ? "w" : "");
+        windowed = windowed || t.window_hz > 0.0;
         if (t.chosen) change = t.change, estimate = t.estimated_error;
+        if (t.band_change > spec.harmonic_tolerance)
+          missed += fmt::format("{}{} N (H = {}: {:.2e})", missed.empty() ? "" : ", ", g(l.force), t.harmonics,
+                                t.band_change);
       }
       per_level += fmt::format(
           "{}{} N: H = {} (tried {}{})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried,
@@ -160,7 +165,15 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
                   : fmt::format("Harmonics per level, raised until the truncation share at {} <= {} and the sweep "
                                 "reaches its end with trusted peaks (at most H = {}; table harmonic_selection)",
                                 scope, g(spec.harmonic_tolerance), spec.max_harmonics),
-        per_level);
+        per_level + (windowed ? "; w: swept on windows around the previous H's peaks (column window_hz), the H "
+                                "chosen then over the whole band"
+                              : ""));
+    if (!missed.empty())
+      run.warnings.push_back(fmt::format(
+          "the whole band's sweep at the H chosen on windows around the peaks moved the peaks by more than "
+          "harmonic_tolerance = {} from the windows' at {}: the band holds a maximum the windows did not see "
+          "(table harmonic_selection, column band_change)",
+          g(spec.harmonic_tolerance), missed));
     if (by_change) {
       if (!unmet.empty())
         run.warnings.push_back(fmt::format(

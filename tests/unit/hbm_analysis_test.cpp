@@ -339,7 +339,9 @@ TEST_F(HbmAnalysis, HarmonicToleranceRaisesHUntilTheTruncationShareIsMet) {
 
 // The same oscillator with H raised until the peak itself stops moving: the change each trial
 // reports is the difference between fixed-H sweeps at the two H (measured, not estimated), the
-// higher H of the pair that meets it is kept, and it is closer to H = 15 than H = 1 is.
+// higher H of the pair that meets it is kept, and it is closer to H = 15 than H = 1 is. With the
+// peaks scope the H above the first are swept on windows around the previous peaks, and the H
+// chosen once more over the whole band: the windows' peaks are the whole band's.
 TEST_F(HbmAnalysis, HarmonicChangeCriterionKeepsTheHigherHOfThePairThatAgrees) {
   test::OscillatorCase c = coulomb_like_near_resonance();
   const std::string h1_text = test::oscillator_case_text(c);
@@ -362,13 +364,25 @@ TEST_F(HbmAnalysis, HarmonicChangeCriterionKeepsTheHigherHOfThePairThatAgrees) {
               chosen.harmonics, trials.empty() ? 0.0 : trials.back().change, error(chosen.peaks[0]), trials.size());
   for (const HbmLevel::HarmonicTrial& t : trials)
     std::printf("    H = %d: change %.3e, estimated error %.3e\n", t.harmonics, t.change, t.estimated_error);
-  ASSERT_GE(trials.size(), 2u);
+  ASSERT_GE(trials.size(), 3u);
   EXPECT_TRUE(std::isnan(trials.front().change));
-  EXPECT_TRUE(trials.back().chosen);
-  EXPECT_EQ(trials.back().harmonics, chosen.harmonics);
-  EXPECT_LE(trials.back().change, 2e-3);
-  for (size_t t = 1; t + 1 < trials.size(); ++t) EXPECT_GT(trials[t].change, 2e-3);
-  const HbmPeak lower = fixed(trials[trials.size() - 2].harmonics), higher = fixed(chosen.harmonics);
+  EXPECT_EQ(trials.front().window_hz, 0.0);
+  const HbmLevel::HarmonicTrial &band = trials.back(), &windows = trials[trials.size() - 2];
+  EXPECT_TRUE(band.chosen);
+  EXPECT_EQ(band.window_hz, 0.0);
+  EXPECT_EQ(band.harmonics, chosen.harmonics);
+  EXPECT_EQ(windows.harmonics, chosen.harmonics);
+  EXPECT_LT(band.band_change, 1e-9);
+  EXPECT_LE(band.change, 2e-3);
+  EXPECT_EQ(band.change, windows.change);
+  for (size_t t = 1; t + 1 < trials.size(); ++t) {
+    EXPECT_GT(trials[t].window_hz, 0.0) << "trial " << t;
+    EXPECT_TRUE(std::isnan(trials[t].band_change)) << "trial " << t;
+  }
+  for (size_t t = 1; t + 2 < trials.size(); ++t) EXPECT_GT(trials[t].change, 2e-3);
+  const HbmPeak lower = fixed(trials[trials.size() - 3].harmonics), higher = fixed(chosen.harmonics);
+  EXPECT_NEAR(chosen.peaks[0].frequency_hz / higher.frequency_hz, 1.0, 1e-12);
+  EXPECT_NEAR(chosen.peaks[0].component / higher.component, 1.0, 1e-12);
   const double measured = std::max(std::abs(lower.frequency_hz / higher.frequency_hz - 1),
                                    std::abs(lower.component / higher.component - 1));
   EXPECT_NEAR(trials.back().change, measured, 1e-9);

@@ -2,6 +2,7 @@
 // frictionless and a stuck contact against direct solves, lift-off, energy balance per cycle, the
 // 1-DOF friction oscillator's own balance, convergence in H, frequency continuation through folds, and a
 // matrix of extreme parameters. Units: SI.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -354,6 +355,25 @@ TEST(HbmContinuation, ImpactResonanceIsFollowedThroughItsFolds) {
   EXPECT_GE(r.turning_points, 2);
   // Past the folds the path has returned to the small-amplitude linear branch.
   EXPECT_GT(r.points.back().omega, 1600.0);
+}
+
+// A cap one below the turning points of the same path stops it at its last one, saying why, with
+// every point before it kept.
+TEST(HbmContinuation, APathTurningMoreOftenThanAllowedStopsAndSaysSo) {
+  const HarmonicBalance system(impact_pair(), {.harmonics = 5});
+  const ContinuationResult free = continue_in_frequency(system, {.omega_start = 800.0, .omega_end = 1600.0});
+  ASSERT_TRUE(free.converged) << free.failure;
+  ASSERT_GE(free.turning_points, 2);
+  const int cap = free.turning_points - 1;
+  const ContinuationResult capped =
+      continue_in_frequency(system, {.omega_start = 800.0, .omega_end = 1600.0, .max_turning_points = cap});
+  EXPECT_FALSE(capped.converged);
+  EXPECT_EQ(capped.turning_points, cap + 1);
+  EXPECT_NE(capped.failure.find(fmt::format("turned back and forth {} times", cap + 1)), std::string::npos)
+      << capped.failure;
+  ASSERT_GE(capped.points.size(), 2u);
+  EXPECT_LT(capped.points.size(), free.points.size());
+  for (size_t i = 0; i < capped.points.size(); ++i) EXPECT_EQ(capped.points[i].omega, free.points[i].omega);
 }
 
 TEST(HbmContinuation, StoppedPathReportsFrequencyAndResidualWithoutNaN) {

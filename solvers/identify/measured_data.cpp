@@ -29,16 +29,36 @@ struct ColumnSpec {
   const char* sigma_of = nullptr;  // a sigma takes the dimension of this column
 };
 
+// An amplitude's dimensions: displacement or compliance as the model computes them, or what a
+// velocity or acceleration transducer gives.
+std::vector<Dimension> response_dims() { return {length, compliance, velocity, acceleration, mobility, accelerance}; }
+
+// The time derivative a response dimension holds, and the displacement dimension it stands for.
+std::pair<int, Dimension> response_derivative(Dimension d) {
+  switch (d) {
+    case velocity:
+      return {1, length};
+    case acceleration:
+      return {2, length};
+    case mobility:
+      return {1, compliance};
+    case accelerance:
+      return {2, compliance};
+    default:
+      return {0, d};
+  }
+}
+
 const std::vector<ColumnSpec>& column_specs(DataKind kind) {
   static const std::vector<ColumnSpec> peaks = {{"force", {force}, true},
                                                 {"frequency", {frequency}, true},
-                                                {"amplitude", {length, compliance}, true, true},
-                                                {"amplitude_sigma", {length, compliance}, false, true, "amplitude"},
+                                                {"amplitude", response_dims(), true, true},
+                                                {"amplitude_sigma", response_dims(), false, true, "amplitude"},
                                                 {"frequency_sigma", {frequency}, false, true, "frequency"}};
   static const std::vector<ColumnSpec> frf = {{"frequency", {frequency}, true},
-                                              {"amplitude", {length, compliance}, true, true},
+                                              {"amplitude", response_dims(), true, true},
                                               {"phase", {angle}},
-                                              {"amplitude_sigma", {length, compliance}, false, true, "amplitude"},
+                                              {"amplitude_sigma", response_dims(), false, true, "amplitude"},
                                               {"phase_sigma", {angle}, false, true, "phase"}};
   static const std::vector<ColumnSpec> hysteresis = {{"relative_displacement", {length}, true},
                                                      {"tangential_force", {force}, true},
@@ -65,7 +85,8 @@ std::string cell_problem(std::string_view cell, bool positive, std::vector<doubl
 
 std::string dims_text(const std::vector<Dimension>& dims) {
   std::string text = dimension_name(dims[0]);
-  for (size_t i = 1; i < dims.size(); ++i) text += fmt::format(" or {}", dimension_name(dims[i]));
+  for (size_t i = 1; i < dims.size(); ++i)
+    text += fmt::format("{}{}", i + 1 == dims.size() ? " or " : ", ", dimension_name(dims[i]));
   return text;
 }
 
@@ -81,6 +102,25 @@ struct Column {
   Unit unit;
   std::vector<double> written;  // values as written, for messages in the file's own unit
 };
+
+// A velocity or acceleration amplitude (and its sigma) divided by w^k row by row, the phase moved
+// by -k 90 degrees: the displacement the model computes.
+void to_displacement(MeasuredData& data, Dimension amplitude_dimension) {
+  const auto [k, displacement] = response_derivative(amplitude_dimension);
+  data.derivative = k;
+  if (k == 0) return;
+  const Eigen::ArrayXd w = 2.0 * std::numbers::pi * data.column("frequency").array();
+  for (const char* name : {"amplitude", "amplitude_sigma"}) {
+    if (!data.has(name)) continue;
+    data.columns[name] = (data.columns[name].array() / w.pow(k)).matrix();
+    data.units[name].dimension = displacement;
+  }
+  if (data.has("phase"))
+    for (double& phase : data.columns["phase"]) {
+      phase = std::remainder(phase - k * 0.5 * std::numbers::pi, 2.0 * std::numbers::pi);
+      if (phase <= -std::numbers::pi) phase += 2.0 * std::numbers::pi;  // (-pi, pi], as arg() gives
+    }
+}
 
 }  // namespace
 
@@ -102,6 +142,14 @@ const char* dimension_name(Dimension d) {
       return "time";
     case dimensionless:
       return "dimensionless";
+    case velocity:
+      return "velocity";
+    case acceleration:
+      return "acceleration";
+    case mobility:
+      return "mobility";
+    case accelerance:
+      return "accelerance";
   }
   return "?";
 }
@@ -118,7 +166,12 @@ const char* data_kind_name(DataKind k) {
   return "?";
 }
 
+const char* const known_unit_symbols =
+    "m mm um µm nm, N kN mN, Hz kHz rad/s rpm, deg rad, m/N mm/N um/N nm/N, N/m N/mm N/um, s ms, m/s mm/s um/s, "
+    "m/s^2 mm/s^2 g, m/s/N mm/s/N, m/s^2/N g/N";
+
 std::optional<Unit> parse_unit(std::string_view symbol) {
+  constexpr double kStandardGravity = 9.80665;  // m/s^2 (CGPM 1901)
   constexpr double pi = std::numbers::pi;
   struct Known {
     std::string_view symbol;
@@ -148,7 +201,17 @@ std::optional<Unit> parse_unit(std::string_view symbol) {
                                     {"s", time, 1.0},
                                     {"ms", time, 1e-3},
                                     {"-", dimensionless, 1.0},
-                                    {"1", dimensionless, 1.0}};
+                                    {"1", dimensionless, 1.0},
+                                    {"m/s", velocity, 1.0},
+                                    {"mm/s", velocity, 1e-3},
+                                    {"um/s", velocity, 1e-6},
+                                    {"m/s^2", acceleration, 1.0},
+                                    {"mm/s^2", acceleration, 1e-3},
+                                    {"g", acceleration, kStandardGravity},
+                                    {"m/s/N", mobility, 1.0},
+                                    {"mm/s/N", mobility, 1e-3},
+                                    {"m/s^2/N", accelerance, 1.0},
+                                    {"g/N", accelerance, kStandardGravity}};
   // The micro sign (U+00B5) and the Greek mu (U+03BC) look alike; both mean "u".
   std::string_view micro_rest;
   for (const std::string_view micro : {"\xC2\xB5", "\xCE\xBC"})
@@ -224,9 +287,8 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
       if (c.name == name) throw fail(header_line, fmt::format("column '{}' appears twice", name));
     const auto unit = parse_unit(symbol);
     if (!unit)
-      throw fail(header_line, fmt::format("column '{}': unknown unit '{}' (known: m mm um µm nm, N kN mN, Hz kHz "
-                                          "rad/s rpm, deg rad, m/N mm/N um/N nm/N, N/m N/mm N/um, s ms)",
-                                          name, symbol));
+      throw fail(header_line,
+                 fmt::format("column '{}': unknown unit '{}' (known: {})", name, symbol, known_unit_symbols));
     if (std::find(spec->dims.begin(), spec->dims.end(), unit->dimension) == spec->dims.end())
       throw fail(header_line, fmt::format("column '{}' has unit '{}' ({}); it needs a {} unit", name, symbol,
                                           dimension_name(unit->dimension), dims_text(spec->dims)));
@@ -295,6 +357,7 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
         Eigen::Map<const Eigen::VectorXd>(c.written.data(), static_cast<Eigen::Index>(n)) * c.unit.to_si;
     data.units[c.name] = c.unit;
   }
+  if (const Column* amplitude = find("amplitude")) to_displacement(data, amplitude->unit.dimension);
   return data;
 }
 

@@ -9,6 +9,11 @@
 //               One row per force level; levels must be distinct.
 //   frf         frequency [frequency], amplitude [length or compliance], optional phase [angle],
 //               amplitude_sigma, phase_sigma. Frequencies strictly increasing (no duplicates).
+// The amplitude of frf and peaks data (and its sigma) may also be a velocity or an acceleration
+// (or either per newton): each row is converted through its own harmonic, |x| = |v| / w = |a| / w^2
+// with w = 2 pi f, and the phase moved by -90 or -180 degrees (v = i w x, a = -w^2 x for
+// x e^{i w t}; wrapped to (-180, 180]), so the data hold displacement (or compliance) as the model
+// computes it. MeasuredData::derivative says which.
 //   hysteresis  relative_displacement [length], tangential_force [force], optional force_sigma
 //               [force]. Rows in time order over the loop; at least 8 rows.
 // A sigma column needs its column (phase_sigma needs phase; force_sigma's is tangential_force) and
@@ -26,7 +31,22 @@
 
 namespace bb {
 
-enum class Dimension { length, force, frequency, angle, compliance, stiffness, time, dimensionless };
+// velocity, acceleration, mobility (velocity per force) and accelerance (acceleration per force):
+// a rig's response as its transducer measured it; read into the displacement they imply (below).
+enum class Dimension {
+  length,
+  force,
+  frequency,
+  angle,
+  compliance,
+  stiffness,
+  time,
+  dimensionless,
+  velocity,
+  acceleration,
+  mobility,
+  accelerance
+};
 
 const char* dimension_name(Dimension d);  // "length", "force", ...
 
@@ -37,8 +57,11 @@ struct Unit {
 };
 
 // Known symbols: m mm um µm nm | N kN mN | Hz kHz rad/s rpm | deg rad | m/N mm/N um/N µm/N nm/N |
-// N/m N/mm N/um | s ms | - 1 (µ as the micro sign or the Greek mu). Frequencies are kept in Hz
-// (rad/s and rpm are converted to Hz), angles in radians. std::nullopt for an unknown symbol.
+// N/m N/mm N/um | s ms | - 1 | m/s mm/s um/s | m/s^2 mm/s^2 g | m/s/N mm/s/N | m/s^2/N g/N (µ as
+// the micro sign or the Greek mu; g the standard 9.80665 m/s^2). Frequencies are kept in Hz (rad/s
+// and rpm are converted to Hz), angles in radians. std::nullopt for an unknown symbol.
+// The symbols known, for messages.
+extern const char* const known_unit_symbols;
 std::optional<Unit> parse_unit(std::string_view symbol);
 
 // Dimension of a result-table column from its name's unit suffix, the project's convention:
@@ -58,6 +81,9 @@ struct MeasuredData {
   std::map<std::string, Eigen::VectorXd> columns;  // SI values by column name (without the unit)
   std::map<std::string, Unit> units;               // as written in the header
   std::vector<int> lines;                          // file line (1-based) of each row, for messages
+  // The time derivative the file's amplitude held (0 displacement, 1 velocity, 2 acceleration),
+  // converted on reading; units keeps the symbol as written, with the displacement's dimension.
+  int derivative = 0;
 
   Eigen::Index rows() const { return static_cast<Eigen::Index>(lines.size()); }
   bool has(const std::string& column) const { return columns.count(column) > 0; }

@@ -2,6 +2,7 @@
 // units, and every malformed file is refused with a message naming the file, line and column.
 #include "identify/measured_data.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,10 +68,17 @@ TEST(MeasuredDataUnits, KnownSymbolsConvertToSiWithFrequenciesInHertz) {
   expect_unit("ms", Dimension::time, 1e-3);
   expect_unit("-", Dimension::dimensionless, 1.0);
   expect_unit("1", Dimension::dimensionless, 1.0);
+  expect_unit("mm/s", Dimension::velocity, 1e-3);
+  expect_unit("\xC2\xB5m/s", Dimension::velocity, 1e-6);
+  expect_unit("m/s^2", Dimension::acceleration, 1.0);
+  expect_unit("g", Dimension::acceleration, 9.80665);
+  expect_unit("mm/s/N", Dimension::mobility, 1e-3);
+  expect_unit("g/N", Dimension::accelerance, 9.80665);
+  expect_unit("m/s^2/N", Dimension::accelerance, 1.0);
 }
 
 TEST(MeasuredDataUnits, UnknownSymbolsAreRefused) {
-  for (const char* symbol : {"", "um/n", "hz", "Um", "furlong", "m/s", "N m"})
+  for (const char* symbol : {"", "um/n", "hz", "Um", "furlong", "ft/s", "m/s2", "G", "N m"})
     EXPECT_FALSE(parse_unit(symbol)) << symbol;
 }
 
@@ -143,6 +151,51 @@ TEST_F(MeasuredDataFile, PeaksAreReadWithForcesInNewtonsAndFrequenciesInHertz) {
   EXPECT_EQ(d.units.at("amplitude").dimension, Dimension::length);
 }
 
+// A rig's accelerometer and velocity transducer: x e^{i w t} with |x| = 2.5 um/N at -30 deg is
+// an accelerance w^2 |x| at 150 deg and a mobility w |x| at 60 deg; both read back as that
+// compliance, each row through its own frequency, the sigma alike.
+TEST_F(MeasuredDataFile, VelocityAndAccelerationAreReadAsTheDisplacementTheyImply) {
+  const double x = 2.5e-6, phase = -30.0;
+  const double f[] = {80.0, 120.0};
+  std::string acceleration = "frequency [Hz], amplitude [g/N], phase [deg], amplitude_sigma [m/s^2/N]\n";
+  std::string velocity = "frequency [Hz], amplitude [mm/s/N], phase [deg]\n";
+  for (double hz : f) {
+    const double w = 2.0 * pi * hz;
+    acceleration += fmt::format("{:.17g}, {:.17g}, {:.17g}, {:.17g}\n", hz, w * w * x / 9.80665, phase + 180.0,
+                                0.1 * w * w * x);
+    velocity += fmt::format("{:.17g}, {:.17g}, {:.17g}\n", hz, w * x * 1e3, phase + 90.0);
+  }
+  for (const auto& [text, derivative] : {std::pair{acceleration, 2}, std::pair{velocity, 1}}) {
+    const MeasuredData d = read_measured_data(write(text, fmt::format("d{}.csv", derivative)), DataKind::frf);
+    EXPECT_EQ(d.derivative, derivative);
+    EXPECT_EQ(d.units.at("amplitude").dimension, Dimension::compliance);
+    for (Eigen::Index r = 0; r < 2; ++r) {
+      EXPECT_NEAR(d.column("amplitude")(r), x, 1e-15 * x) << derivative;
+      EXPECT_NEAR(d.column("phase")(r), phase * pi / 180.0, 1e-14) << derivative;
+      if (d.has("amplitude_sigma")) EXPECT_NEAR(d.column("amplitude_sigma")(r), 0.1 * x, 1e-15 * x);
+    }
+  }
+  // Peaks of an acceleration in g: each level at its own peak frequency, the phase wrapped.
+  const MeasuredData peaks = read_measured_data(write("force [N], frequency [Hz], amplitude [g]\n"
+                                                      "10, 100, 2\n"
+                                                      "20, 50, 2\n",
+                                                      "peaks_g.csv"),
+                                                DataKind::peaks);
+  EXPECT_EQ(peaks.units.at("amplitude").dimension, Dimension::length);
+  EXPECT_NEAR(peaks.column("amplitude")(0), 2 * 9.80665 / std::pow(2 * pi * 100, 2), 1e-18);
+  EXPECT_NEAR(peaks.column("amplitude")(1), 4 * peaks.column("amplitude")(0), 1e-18);
+  const MeasuredData wrapped = read_measured_data(
+      write("frequency [Hz], amplitude [m/s^2], phase [deg]\n10, 1, -170\n20, 1, 180\n", "wrap.csv"), DataKind::frf);
+  EXPECT_NEAR(wrapped.column("phase")(0), 10.0 * pi / 180.0, 1e-14);  // -170 - 180 = -350 = 10 deg
+  EXPECT_NEAR(wrapped.column("phase")(1), 0.0, 1e-14);
+}
+
+TEST_F(MeasuredDataFile, AnAccelerationWithADisplacementSigmaIsRefused) {
+  expect_contains(refusal(write("frequency [Hz], amplitude [g], amplitude_sigma [um]\n10, 1, 1\n", "mixed.csv"),
+                          DataKind::frf),
+                  {"mixed.csv:1", "amplitude_sigma", "'um' (length)", "acceleration"});
+}
+
 TEST_F(MeasuredDataFile, HysteresisIsReadInTimeOrder) {
   std::string text = "# one loop\nrelative_displacement [mm], tangential_force [kN], force_sigma [N]\n";
   for (int i = 0; i < 8; ++i) text += std::to_string(i % 4 - 2) + ", " + std::to_string(0.01 * (i - 4)) + ", 2\n";
@@ -168,7 +221,7 @@ TEST(MeasuredDataExamples, ExampleFileOfEachKindIsReadable) {
 TEST(MeasuredDataExamples, BadInputFilesAreRefusedForTheirOneProblem) {
   const fs::path dir = fs::path(BB_SOURCE_DIR) / "tests" / "bad_input" / "data";
   expect_contains(refusal(dir / "measured_missing_column.csv", DataKind::frf),
-                  {"measured_missing_column.csv:2: missing column 'amplitude [<length or compliance unit>]'"});
+                  {"measured_missing_column.csv:2: missing column 'amplitude [<length, compliance, velocity, acceleration, mobility or accelerance unit>]'"});
   expect_contains(refusal(dir / "measured_nan.csv", DataKind::frf),
                   {"measured_nan.csv:5: column 'amplitude': 'nan' is not a finite number"});
   expect_contains(refusal(dir / "measured_unsorted.csv", DataKind::frf),
@@ -176,8 +229,8 @@ TEST(MeasuredDataExamples, BadInputFilesAreRefusedForTheirOneProblem) {
   expect_contains(refusal(dir / "measured_duplicate_frequency.csv", DataKind::frf),
                   {"measured_duplicate_frequency.csv:5: frequency 120 Hz is not above the previous row's 120 Hz"});
   expect_contains(refusal(dir / "measured_wrong_unit.csv", DataKind::frf),
-                  {"measured_wrong_unit.csv:2: column 'amplitude' has unit 'N' (force); it needs a length or "
-                   "compliance unit"});
+                  {"measured_wrong_unit.csv:2: column 'amplitude' has unit 'N' (force); it needs a length, compliance, "
+                   "velocity, acceleration, mobility or accelerance unit"});
 }
 
 TEST_F(MeasuredDataFile, MissingFileCannotBeOpened) {
@@ -232,7 +285,7 @@ TEST_F(MeasuredDataFile, UnknownUnitIsRefused) {
 
 TEST_F(MeasuredDataFile, UnitOfTheWrongDimensionIsRefused) {
   expect_contains(refusal(write("# c\n\nfrequency [Hz], amplitude [N]\n1, 1\n", "rig.csv"), DataKind::frf),
-                  {"rig.csv:3: column 'amplitude' has unit 'N' (force); it needs a length or compliance unit"});
+                  {"rig.csv:3: column 'amplitude' has unit 'N' (force); it needs a length, compliance, velocity, acceleration, mobility or accelerance unit"});
   expect_contains(refusal(write("frequency [deg], amplitude [m]\n1, 1\n", "rig.csv"), DataKind::frf),
                   {"rig.csv:1: column 'frequency' has unit 'deg' (angle); it needs a frequency unit"});
   expect_contains(

@@ -103,25 +103,6 @@ struct Column {
   std::vector<double> written;  // values as written, for messages in the file's own unit
 };
 
-// A velocity or acceleration amplitude (and its sigma) divided by w^k row by row, the phase moved
-// by -k 90 degrees: the displacement the model computes.
-void to_displacement(MeasuredData& data, Dimension amplitude_dimension) {
-  const auto [k, displacement] = response_derivative(amplitude_dimension);
-  data.derivative = k;
-  if (k == 0) return;
-  const Eigen::ArrayXd w = 2.0 * std::numbers::pi * data.column("frequency").array();
-  for (const char* name : {"amplitude", "amplitude_sigma"}) {
-    if (!data.has(name)) continue;
-    data.columns[name] = (data.columns[name].array() / w.pow(k)).matrix();
-    data.units[name].dimension = displacement;
-  }
-  if (data.has("phase"))
-    for (double& phase : data.columns["phase"]) {
-      phase = std::remainder(phase - k * 0.5 * std::numbers::pi, 2.0 * std::numbers::pi);
-      if (phase <= -std::numbers::pi) phase += 2.0 * std::numbers::pi;  // (-pi, pi], as arg() gives
-    }
-}
-
 }  // namespace
 
 const char* dimension_name(Dimension d) {
@@ -357,8 +338,25 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
         Eigen::Map<const Eigen::VectorXd>(c.written.data(), static_cast<Eigen::Index>(n)) * c.unit.to_si;
     data.units[c.name] = c.unit;
   }
-  if (const Column* amplitude = find("amplitude")) to_displacement(data, amplitude->unit.dimension);
+  if (kind != DataKind::hysteresis) amplitude_to_displacement(data);
   return data;
+}
+
+void amplitude_to_displacement(MeasuredData& data) {
+  const auto [k, displacement] = response_derivative(data.units.at("amplitude").dimension);
+  data.derivative = k;
+  if (k == 0) return;
+  const Eigen::ArrayXd w = 2.0 * std::numbers::pi * data.column("frequency").array();
+  for (const char* name : {"amplitude", "amplitude_sigma"}) {
+    if (!data.has(name)) continue;
+    data.columns[name] = (data.columns[name].array() / w.pow(k)).matrix();
+    data.units[name].dimension = displacement;
+  }
+  if (data.has("phase"))
+    for (double& phase : data.columns["phase"]) {
+      phase = std::remainder(phase - k * 0.5 * std::numbers::pi, 2.0 * std::numbers::pi);
+      if (phase <= -std::numbers::pi) phase += 2.0 * std::numbers::pi;  // (-pi, pi], as arg() gives
+    }
 }
 
 }  // namespace bb

@@ -98,4 +98,9 @@ struct MeasuredData {
 // unsorted or duplicated frequencies (frf), repeated force levels (peaks), too few rows.
 MeasuredData read_measured_data(const std::filesystem::path& file, DataKind kind);
 
+// A velocity or acceleration amplitude (by units["amplitude"]) and its sigma divided by w^k row by
+// row, the phase moved by -k 90 degrees, the unit's dimension set to the displacement's; sets
+// `derivative`. Nothing for a displacement. The CSV and Universal File readers call it.
+void amplitude_to_displacement(MeasuredData& data);
+
 }  // namespace bb

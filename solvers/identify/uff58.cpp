@@ -174,11 +174,9 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
         case 13:
           return parse_unit("N");
         case 11:
+          return parse_unit("m/s");
         case 12:
-          throw fail(at, record,
-                     fmt::format("the ordinate is a {} (specific data type {}): bladebench fits receptances "
-                                 "(displacement / force); export those",
-                                 a.type == 11 ? "velocity" : "acceleration", a.type));
+          return parse_unit("m/s^2");
         default:
           return std::nullopt;
       }
@@ -189,9 +187,11 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
                  fmt::format("the abscissa is not a frequency (specific data type {}, unit label '{}')", axes[0].type,
                              axes[0].units));
     const auto numerator = unit_of(axes[1], 9, r1 + 8);
-    if (!numerator || numerator->dimension != Dimension::length)
+    if (!numerator || (numerator->dimension != Dimension::length && numerator->dimension != Dimension::velocity &&
+                       numerator->dimension != Dimension::acceleration))
       throw fail(r1 + 8, 9,
-                 fmt::format("the ordinate is not a displacement (specific data type {}, unit label '{}')",
+                 fmt::format("the ordinate is not a displacement, velocity or acceleration (specific data type {}, "
+                             "unit label '{}')",
                              axes[1].type, axes[1].units));
     const auto denominator = unit_of(axes[2], 10, r1 + 9);
     if (denominator && denominator->dimension != Dimension::force)
@@ -199,7 +199,10 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
                  fmt::format("the denominator is not a force (specific data type {}, unit label '{}')", axes[2].type,
                              axes[2].units));
     f.abscissa_unit = *abscissa;
-    f.ordinate_unit = denominator ? Unit{numerator->symbol + "/" + denominator->symbol, Dimension::compliance,
+    const Dimension per_force = numerator->dimension == Dimension::velocity       ? Dimension::mobility
+                                : numerator->dimension == Dimension::acceleration ? Dimension::accelerance
+                                                                                  : Dimension::compliance;
+    f.ordinate_unit = denominator ? Unit{numerator->symbol + "/" + denominator->symbol, per_force,
                                          numerator->to_si / denominator->to_si}
                                   : *numerator;
     out.push_back(std::move(f));
@@ -242,6 +245,7 @@ MeasuredData read_uff58_frf(const fs::path& file) {
     d.columns["phase"] = phase;
     d.units["phase"] = *parse_unit("rad");
   }
+  amplitude_to_displacement(d);
   return d;
 }
 

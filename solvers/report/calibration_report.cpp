@@ -230,15 +230,15 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     md << '\n';
   }
   for (const CalibrationData& d : o.spec.data)
-    md << fmt::format("Data set `{}`: {} file `{}` ({} rows), fitted to table `{}`{}.\n\n", d.name,
-                      data_kind_name(d.data.kind), d.data.file.filename().string(), d.data.rows(), d.table,
-                      d.data.derivative == 0
-                          ? std::string()
-                          : fmt::format("; its {} amplitudes (in {}) read as displacement, each row divided by "
-                                        "(2 pi f)^{} and its phase moved by -{} deg",
-                                        d.data.derivative == 1 ? "velocity" : "acceleration",
-                                        d.data.units.at("amplitude").symbol, d.data.derivative,
-                                        90 * d.data.derivative));
+    md << fmt::format(
+        "Data set `{}`: {} file `{}` ({} rows), fitted to table `{}`{}.\n\n", d.name, data_kind_name(d.data.kind),
+        d.data.file.filename().string(), d.data.rows(), d.table,
+        d.data.derivative == 0
+            ? std::string()
+            : fmt::format("; its {} amplitudes (in {}) read as displacement, each row divided by "
+                          "(2 pi f)^{} and its phase moved by -{} deg",
+                          d.data.derivative == 1 ? "velocity" : "acceleration", d.data.units.at("amplitude").symbol,
+                          d.data.derivative, 90 * d.data.derivative));
   if (o.starts.size() > 1) {
     md << fmt::format(
         "## Starts\n\n{} starts (the case's values, then a Latin hypercube in log space, seed {}); start {} is "

@@ -161,8 +161,8 @@ TEST_F(MeasuredDataFile, VelocityAndAccelerationAreReadAsTheDisplacementTheyImpl
   std::string velocity = "frequency [Hz], amplitude [mm/s/N], phase [deg]\n";
   for (double hz : f) {
     const double w = 2.0 * pi * hz;
-    acceleration += fmt::format("{:.17g}, {:.17g}, {:.17g}, {:.17g}\n", hz, w * w * x / 9.80665, phase + 180.0,
-                                0.1 * w * w * x);
+    acceleration +=
+        fmt::format("{:.17g}, {:.17g}, {:.17g}, {:.17g}\n", hz, w * w * x / 9.80665, phase + 180.0, 0.1 * w * w * x);
     velocity += fmt::format("{:.17g}, {:.17g}, {:.17g}\n", hz, w * x * 1e3, phase + 90.0);
   }
   for (const auto& [text, derivative] : {std::pair{acceleration, 2}, std::pair{velocity, 1}}) {
@@ -172,7 +172,9 @@ TEST_F(MeasuredDataFile, VelocityAndAccelerationAreReadAsTheDisplacementTheyImpl
     for (Eigen::Index r = 0; r < 2; ++r) {
       EXPECT_NEAR(d.column("amplitude")(r), x, 1e-15 * x) << derivative;
       EXPECT_NEAR(d.column("phase")(r), phase * pi / 180.0, 1e-14) << derivative;
-      if (d.has("amplitude_sigma")) EXPECT_NEAR(d.column("amplitude_sigma")(r), 0.1 * x, 1e-15 * x);
+      if (d.has("amplitude_sigma")) {
+        EXPECT_NEAR(d.column("amplitude_sigma")(r), 0.1 * x, 1e-15 * x);
+      }
     }
   }
   // Peaks of an acceleration in g: each level at its own peak frequency, the phase wrapped.
@@ -191,9 +193,9 @@ TEST_F(MeasuredDataFile, VelocityAndAccelerationAreReadAsTheDisplacementTheyImpl
 }
 
 TEST_F(MeasuredDataFile, AnAccelerationWithADisplacementSigmaIsRefused) {
-  expect_contains(refusal(write("frequency [Hz], amplitude [g], amplitude_sigma [um]\n10, 1, 1\n", "mixed.csv"),
-                          DataKind::frf),
-                  {"mixed.csv:1", "amplitude_sigma", "'um' (length)", "acceleration"});
+  expect_contains(
+      refusal(write("frequency [Hz], amplitude [g], amplitude_sigma [um]\n10, 1, 1\n", "mixed.csv"), DataKind::frf),
+      {"mixed.csv:1", "amplitude_sigma", "'um' (length)", "acceleration"});
 }
 
 TEST_F(MeasuredDataFile, HysteresisIsReadInTimeOrder) {
@@ -221,7 +223,8 @@ TEST(MeasuredDataExamples, ExampleFileOfEachKindIsReadable) {
 TEST(MeasuredDataExamples, BadInputFilesAreRefusedForTheirOneProblem) {
   const fs::path dir = fs::path(BB_SOURCE_DIR) / "tests" / "bad_input" / "data";
   expect_contains(refusal(dir / "measured_missing_column.csv", DataKind::frf),
-                  {"measured_missing_column.csv:2: missing column 'amplitude [<length, compliance, velocity, acceleration, mobility or accelerance unit>]'"});
+                  {"measured_missing_column.csv:2: missing column 'amplitude [<length, compliance, velocity, "
+                   "acceleration, mobility or accelerance unit>]'"});
   expect_contains(refusal(dir / "measured_nan.csv", DataKind::frf),
                   {"measured_nan.csv:5: column 'amplitude': 'nan' is not a finite number"});
   expect_contains(refusal(dir / "measured_unsorted.csv", DataKind::frf),
@@ -285,7 +288,8 @@ TEST_F(MeasuredDataFile, UnknownUnitIsRefused) {
 
 TEST_F(MeasuredDataFile, UnitOfTheWrongDimensionIsRefused) {
   expect_contains(refusal(write("# c\n\nfrequency [Hz], amplitude [N]\n1, 1\n", "rig.csv"), DataKind::frf),
-                  {"rig.csv:3: column 'amplitude' has unit 'N' (force); it needs a length, compliance, velocity, acceleration, mobility or accelerance unit"});
+                  {"rig.csv:3: column 'amplitude' has unit 'N' (force); it needs a length, compliance, velocity, "
+                   "acceleration, mobility or accelerance unit"});
   expect_contains(refusal(write("frequency [deg], amplitude [m]\n1, 1\n", "rig.csv"), DataKind::frf),
                   {"rig.csv:1: column 'frequency' has unit 'deg' (angle); it needs a frequency unit"});
   expect_contains(

@@ -1,5 +1,7 @@
 // Universal File dataset 58 (identify/uff58): round trip of an FRF, units from the records, and a
 // refusal naming the record for every malformed part.
+#include "identify/uff58.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 
 #include "common/errors.hpp"
 #include "identify/measured_data.hpp"
-#include "identify/uff58.hpp"
 
 namespace bb {
 namespace {
@@ -84,6 +85,27 @@ TEST(Uff58, WrittenFrfReadsBackToThirteenDigits) {
   }
 }
 
+// An accelerance (specific data type 12, no unit label: SI) reads as the receptance it implies:
+// each value divided by w^2 at its own frequency, the phase moved by -180 degrees.
+TEST(Uff58, AnAccelerometersFrfReadsAsTheReceptanceItImplies) {
+  std::string text = even_mm_per_n();
+  const std::string from = "         8    1    0    0 Displacement         mm";
+  text.replace(text.find(from), from.size(), "        12    0    0    0 Acceleration         NONE");
+  const fs::path file = scratch("accelerance.uff");
+  write(file, text);
+  const MeasuredData d = read_measured_data(file, DataKind::frf);
+  EXPECT_EQ(d.derivative, 2);
+  EXPECT_EQ(d.units.at("amplitude").dimension, Dimension::compliance);
+  const double raw[] = {1e-3, 2e-3, 1e-3, std::hypot(5e-4, 5e-4)};  // |value| in m/s^2/N
+  const double phase[] = {0.0, -std::numbers::pi / 2, std::numbers::pi, std::numbers::pi / 4};
+  for (Eigen::Index i = 0; i < 4; ++i) {
+    const double w = 2 * std::numbers::pi * (100.0 + 10.0 * static_cast<double>(i));
+    EXPECT_NEAR(d.column("amplitude")[i], raw[i] / (w * w), 1e-6 * raw[i] / (w * w)) << i;
+    EXPECT_NEAR(std::remainder(d.column("phase")[i] - (phase[i] - std::numbers::pi), 2 * std::numbers::pi), 0.0, 1e-6)
+        << i;
+  }
+}
+
 // Each malformation of the even_mm_per_n file, and the words its message must contain.
 TEST(Uff58, MalformedFilesNameTheRecord) {
   const std::string good = even_mm_per_n();
@@ -94,10 +116,12 @@ TEST(Uff58, MalformedFilesNameTheRecord) {
   };
   const std::vector<std::pair<std::string, std::string>> cases = {
       {replace("         5         4         1", "         3         4         1"), "record 7: ordinate data type"},
-      {replace("         5         4         1", "         5         5         1"), "record 12: 8 numbers where record 7 announces 5 complex values"},
+      {replace("         5         4         1", "         5         5         1"),
+       "record 12: 8 numbers where record 7 announces 5 complex values"},
       {replace("  5.00000E-04  5.00000E-04\n", "  5.00000E-04  nan\n"), "record 12: value 'nan'"},
-      {replace("         8    1    0    0 Displacement         mm", "        12    0    0    0 Acceleration         NONE"),
-       "record 9: the ordinate is a acceleration"},
+      {replace("         8    1    0    0 Displacement         mm",
+               "        15    0    0    0 Pressure             NONE"),
+       "record 9: the ordinate is not a displacement, velocity or acceleration (specific data type 15"},
       {replace("Frequency            Hz", "Frequency            furlong"), "record 8: unit label 'furlong'"},
       {replace("    58\nFRF", "   58b\nFRF"), "binary dataset 58b"},
       {replace("    4         1    1", "    x         1    1"), "record 6: function type"},

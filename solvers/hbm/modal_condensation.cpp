@@ -47,8 +47,10 @@ ModalCondensation ModalBasis::at(double w) const {
   for (Index r = 0; r < lambda_.size(); ++r)
     out.modal_[r] = 1.0 / std::complex<double>(lambda_[r] - w * w, w * damping_[r]);
   const Eigen::MatrixXcd receptance = (phi_c_ * out.modal_.asDiagonal()) * phi_c_.transpose();
-  out.lu_.compute(receptance);
-  out.reduced_ = out.lu_.inverse();
+  out.reduced_ = Eigen::PartialPivLU<Eigen::MatrixXcd>(receptance).inverse();
+  const auto norm1 = [](const Eigen::MatrixXcd& a) { return a.cwiseAbs().colwise().sum().maxCoeff(); };
+  const double product = norm1(receptance) * norm1(out.reduced_);
+  out.rcond_ = std::isfinite(product) && product > 0.0 ? 1.0 / product : 0.0;
   return out;
 }
 

@@ -361,12 +361,15 @@ TEST(HbmContinuation, ImpactResonanceIsFollowedThroughItsFolds) {
 // every point before it kept.
 TEST(HbmContinuation, APathTurningMoreOftenThanAllowedStopsAndSaysSo) {
   const HarmonicBalance system(impact_pair(), {.harmonics = 5});
-  const ContinuationResult free = continue_in_frequency(system, {.omega_start = 800.0, .omega_end = 1600.0});
+  ContinuationOptions options;
+  options.omega_start = 800.0;
+  options.omega_end = 1600.0;
+  const ContinuationResult free = continue_in_frequency(system, options);
   ASSERT_TRUE(free.converged) << free.failure;
   ASSERT_GE(free.turning_points, 2);
   const int cap = free.turning_points - 1;
-  const ContinuationResult capped =
-      continue_in_frequency(system, {.omega_start = 800.0, .omega_end = 1600.0, .max_turning_points = cap});
+  options.max_turning_points = cap;
+  const ContinuationResult capped = continue_in_frequency(system, options);
   EXPECT_FALSE(capped.converged);
   EXPECT_EQ(capped.turning_points, cap + 1);
   EXPECT_NE(capped.failure.find(fmt::format("turned back and forth {} times", cap + 1)), std::string::npos)

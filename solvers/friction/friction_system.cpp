@@ -54,6 +54,7 @@ Condensation<Scalar>::Condensation(const Matrix& a, const std::vector<Index>& co
   }
   a_co_ = a(contact_dofs_, other_dofs_);
   lu_oo_.compute(a(other_dofs_, other_dofs_));
+  rcond_ = lu_oo_.rcond();
   // No contact DOFs: no static modes (and no empty right-hand side, on which Eigen's triangular
   // solve would bind a reference to a null pointer).
   static_modes_ =

@@ -70,9 +70,10 @@ class Condensation {
   Condensation(const Matrix& a, const std::vector<Eigen::Index>& contact_dofs,
                const std::vector<Eigen::Index>& other_dofs);
 
-  // Reciprocal condition estimate of A_oo's LU; +inf when there is no o. Valid results need it
-  // above the caller's singularity threshold.
-  double rcond() const { return other_ > 0 ? lu_oo_.rcond() : std::numeric_limits<double>::infinity(); }
+  // Reciprocal condition estimate of A_oo's LU, taken once (a balance asks for it at every
+  // evaluation); +inf when there is no o. Valid results need it above the caller's singularity
+  // threshold.
+  double rcond() const { return rcond_; }
   const Matrix& reduced() const { return reduced_; }  // S, |c| x |c|
 
   // A right-hand side f (all DOFs) split for the condensed solve.
@@ -88,6 +89,7 @@ class Condensation {
   std::vector<Eigen::Index> contact_dofs_, other_dofs_;
   Eigen::Index other_ = 0;
   Eigen::PartialPivLU<Matrix> lu_oo_;
+  double rcond_ = std::numeric_limits<double>::infinity();
   Matrix a_co_, static_modes_, reduced_;  // A_co, A_oo^-1 A_oc, S
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 
 namespace bb::hbm {
 
@@ -47,6 +48,11 @@ ModalCondensation ModalBasis::at(double w) const {
   for (Index r = 0; r < lambda_.size(); ++r)
     out.modal_[r] = 1.0 / std::complex<double>(lambda_[r] - w * w, w * damping_[r]);
   const Eigen::MatrixXcd receptance = (phi_c_ * out.modal_.asDiagonal()) * phi_c_.transpose();
+  if (receptance.size() == 0) {  // no contact DOF: nothing to invert
+    out.reduced_ = receptance;
+    out.rcond_ = std::numeric_limits<double>::infinity();
+    return out;
+  }
   out.reduced_ = Eigen::PartialPivLU<Eigen::MatrixXcd>(receptance).inverse();
   const auto norm1 = [](const Eigen::MatrixXcd& a) { return a.cwiseAbs().colwise().sum().maxCoeff(); };
   const double product = norm1(receptance) * norm1(out.reduced_);

@@ -21,6 +21,7 @@
 #include "analysis/static_analysis.hpp"
 #include "assembly/assemble.hpp"
 #include "assembly/dof_map.hpp"
+#include "common/seconds_since.hpp"
 #include "fe/plane_stress.hpp"
 #include "linalg/spd_factor.hpp"
 #include "mesh/mapped_quad.hpp"
@@ -44,10 +45,6 @@ double current_rss_mib() {
   std::fclose(f);
   if (read != 2) return 0.0;
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // Steel plate, 10 mm thick.
@@ -215,20 +212,20 @@ void BM_StaticSolvePhases(benchmark::State& state) {
   for (auto _ : state) {
     auto t0 = std::chrono::steady_clock::now();
     const bb::DofMap dofs = bb::number_dofs(model);
-    t_dofs += seconds_since(t0);
+    t_dofs += bb::seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();
     const bb::GlobalMatrices global = bb::assemble(model.mesh, model.section, {.stiffness = true, .mass = false});
-    t_assemble += seconds_since(t0);
+    t_assemble += bb::seconds_since(t0);
     rss_assemble = current_rss_mib();
 
     t0 = std::chrono::steady_clock::now();
     const Eigen::VectorXd f = bb::load_vector(model);
-    t_loads += seconds_since(t0);
+    t_loads += bb::seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();
     const bb::Partitioned k = bb::partition(global.stiffness, dofs);
-    t_partition += seconds_since(t0);
+    t_partition += bb::seconds_since(t0);
     rss_partition = current_rss_mib();
 
     Eigen::VectorXd rhs(dofs.n_free);
@@ -237,7 +234,7 @@ void BM_StaticSolvePhases(benchmark::State& state) {
     t0 = std::chrono::steady_clock::now();
     bb::SpdFactorization factor;
     const bb::FactorStatus status = factor.factorize(k.ff);
-    t_factorize += seconds_since(t0);
+    t_factorize += bb::seconds_since(t0);
     rss_factorize = current_rss_mib();
     if (!status.ok) {
       state.SkipWithError(status.message.c_str());
@@ -246,7 +243,7 @@ void BM_StaticSolvePhases(benchmark::State& state) {
 
     t0 = std::chrono::steady_clock::now();
     const Eigen::VectorXd u = factor.solve(rhs);
-    t_solve += seconds_since(t0);
+    t_solve += bb::seconds_since(t0);
     benchmark::DoNotOptimize(u.data());
     nnz_full = static_cast<double>(global.stiffness.nonZeros());
     nnz_ff = static_cast<double>(k.ff.nonZeros());

@@ -11,6 +11,7 @@
 #include "assembly/load_vector.hpp"
 #include "common/errors.hpp"
 #include "common/progress_clock.hpp"
+#include "common/seconds_since.hpp"
 #include "contact/static_contact.hpp"
 #include "ffrf/body_assembly.hpp"
 #include "linalg/spd_factor.hpp"
@@ -20,7 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 Eigen::VectorXd frequencies_of(const Eigen::SparseMatrix<double>& k, const Eigen::SparseMatrix<double>& m,
                                const ModalOptions& options) {

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "common/seconds_since.hpp"
 #include "forced/linear_model.hpp"
 #include "frf/receptance.hpp"
 #include "reduction/reduced_model_io.hpp"
@@ -18,8 +19,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kTwoPi = 2 * std::numbers::pi;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 Eigen::VectorXd modal_zetas(const FrfDamping& d, const Eigen::VectorXd& omega) {
   if (d.kind == FrfDamping::Kind::modal) return Eigen::VectorXd::Constant(omega.size(), d.zeta);

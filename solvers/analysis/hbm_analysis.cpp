@@ -15,6 +15,7 @@
 #include "common/errors.hpp"
 #include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
+#include "common/seconds_since.hpp"
 #include "contact/state_fractions.hpp"
 #include "forced/hbm_nonlinear_modes.hpp"
 #include "forced/hbm_response.hpp"
@@ -27,8 +28,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Energy the contact dissipates per cycle: T against u, u's coefficients from its samples (exact:
 // u holds H harmonics and the AFT takes at least 2H + 1 samples).

@@ -12,6 +12,7 @@
 
 #include "analysis/stress_tables.hpp"
 #include "common/errors.hpp"
+#include "common/seconds_since.hpp"
 #include "ffrf/elastic_basis.hpp"
 #include "ffrf/rotating_body.hpp"
 #include "ffrf/rotation_profile.hpp"
@@ -24,8 +25,6 @@ using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kTwoPi = 2 * std::numbers::pi;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 const char* axis_name(int d) { return d == 0 ? "x" : d == 1 ? "y" : "z"; }
 

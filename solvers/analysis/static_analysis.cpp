@@ -7,15 +7,10 @@
 #include "analysis/stress_tables.hpp"
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
+#include "common/seconds_since.hpp"
 #include "linalg/spd_factor.hpp"
 
 namespace bb {
-namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
-
 StaticSolution solve_static(const Model& model) {
   const Mesh& mesh = model.mesh;
   auto t0 = std::chrono::steady_clock::now();

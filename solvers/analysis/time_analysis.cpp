@@ -12,6 +12,7 @@
 #include "analysis/time_sweeps.hpp"
 #include "common/errors.hpp"
 #include "common/progress_clock.hpp"
+#include "common/seconds_since.hpp"
 #include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
@@ -24,8 +25,6 @@ using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The energy a contact's loop encloses over the recorded samples: sum of T du by the trapezoid rule.
 double loop_work(const std::vector<timeint::ContactSample>& s) {

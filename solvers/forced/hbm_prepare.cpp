@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/seconds_since.hpp"
 #include "forced/hbm_level.hpp"
 #include "forced/linear_model.hpp"
 
@@ -19,8 +20,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Coordinates of a one-node set.
 std::array<double, 2> point_position(const Model& model, const std::string& point) {

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <optional>
 
+#include "common/seconds_since.hpp"
 #include "forced/hbm_level.hpp"
 #include "forced/hbm_level_system.hpp"
 #include "forced/hbm_response.hpp"
@@ -46,8 +47,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
 // by golden-section search between the path's neighbours of the largest point (where the path does

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/seconds_since.hpp"
 #include "linalg/modal_solver.hpp"
 
 namespace bb {
@@ -17,8 +18,6 @@ namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Where each free DOF goes: its position among the masters (given order) or the slaves
 // (ascending free index, so a slave block keeps the input's sorted row order).

@@ -267,14 +267,14 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
   if (per_point) level.harmonics = *std::max_element(level.point_harmonics.begin(), level.point_harmonics.end());
 }
 
+}  // namespace
+
 const hbm::ContinuationPoint& nearest_point(const hbm::ContinuationResult& path, double omega) {
   size_t nearest = 0;
   for (size_t i = 1; i < path.points.size(); ++i)
     if (std::abs(path.points[i].omega - omega) < std::abs(path.points[nearest].omega - omega)) nearest = i;
   return path.points.at(nearest);
 }
-
-}  // namespace
 
 void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
                 HbmLevel& level, const SweepReport& report) {

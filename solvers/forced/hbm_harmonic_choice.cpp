@@ -162,8 +162,7 @@ HbmLevel sweep_hbm_level_adaptive(const PreparedHbm& p, const HbmSpec& spec, dou
     // frequency that failed away from them (on Table XI at H >= 3, 1-13 of 401 between 171.6 and
     // 178.4 Hz) does not move them, and one next to them makes them doubtful. So do windows
     // around the peaks with the peaks inside them.
-    const bool covered = spec.harmonic_scope == HbmSpec::HarmonicScope::peaks &&
-                         spec.sweep.method == HbmSweepSpec::Method::grid && !level.frequency_hz.empty() &&
+    const bool covered = by_windows && !level.frequency_hz.empty() &&
                          (window_hz > 0.0 || level.frequency_hz.back() >= spec.sweep.f_max - 0.5 * spec.sweep.step_hz);
     const bool good = t.trusted && (t.reached_end || covered);
     const bool by_change = spec.harmonic_criterion == HbmSpec::HarmonicCriterion::change;

@@ -52,6 +52,10 @@ double relative_change(double value, double reference);
 // higher ones cut, or added as zero.
 Eigen::VectorXd with_harmonics(const Eigen::VectorXd& x, Eigen::Index contact_dofs, int harmonics);
 
+// The point of a non-empty path nearest to omega in frequency (the first of equals): the start
+// of a solve there.
+const hbm::ContinuationPoint& nearest_point(const hbm::ContinuationResult& path, double omega);
+
 // The H of path point i: the level's, or with the point scope the point's own.
 inline int point_h(const HbmLevel& level, size_t i) {
   return level.point_harmonics.empty() ? level.harmonics : level.point_harmonics[i];

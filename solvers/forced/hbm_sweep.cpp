@@ -68,10 +68,8 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
   const hbm::HarmonicBalance& system = systems.at(peak.harmonics);
   const Index nc = static_cast<Index>(system.contact_dofs().size());
   auto solve = [&](double omega) {
-    size_t nearest = 0;
-    for (size_t i = 1; i < pts.size(); ++i)
-      if (std::abs(pts[i].omega - omega) < std::abs(pts[nearest].omega - omega)) nearest = i;
-    return hbm::solve_at_frequency(system, omega, with_harmonics(pts[nearest].x, nc, peak.harmonics));
+    return hbm::solve_at_frequency(system, omega,
+                                   with_harmonics(nearest_point(level.path, omega).x, nc, peak.harmonics));
   };
   auto value = [&](const hbm::HbmSolution& s) { return peak_values(p, first_harmonic(system, s.x, s.omega), kind); };
   hbm::HbmSolution best = solve(pts[static_cast<size_t>(k)].omega);

@@ -103,7 +103,60 @@ struct Column {
   std::vector<double> written;  // values as written, for messages in the file's own unit
 };
 
+constexpr double kStandardGravity = 9.80665;  // m/s^2 (CGPM 1901)
+
+struct KnownUnit {
+  std::string_view symbol;
+  Dimension dimension;
+  double to_si;
+};
+
+// Grouped by dimension: the message of an unknown unit lists them in this order.
+constexpr KnownUnit kKnownUnits[] = {{"m", length, 1.0},
+                                     {"mm", length, 1e-3},
+                                     {"um", length, 1e-6},
+                                     {"nm", length, 1e-9},
+                                     {"N", force, 1.0},
+                                     {"kN", force, 1e3},
+                                     {"mN", force, 1e-3},
+                                     {"Hz", frequency, 1.0},
+                                     {"kHz", frequency, 1e3},
+                                     {"rad/s", frequency, 1.0 / (2.0 * std::numbers::pi)},
+                                     {"rpm", frequency, 1.0 / 60.0},
+                                     {"deg", angle, std::numbers::pi / 180.0},
+                                     {"rad", angle, 1.0},
+                                     {"m/N", compliance, 1.0},
+                                     {"mm/N", compliance, 1e-3},
+                                     {"um/N", compliance, 1e-6},
+                                     {"nm/N", compliance, 1e-9},
+                                     {"N/m", stiffness, 1.0},
+                                     {"N/mm", stiffness, 1e3},
+                                     {"N/um", stiffness, 1e6},
+                                     {"s", time, 1.0},
+                                     {"ms", time, 1e-3},
+                                     {"-", dimensionless, 1.0},
+                                     {"1", dimensionless, 1.0},
+                                     {"m/s", velocity, 1.0},
+                                     {"mm/s", velocity, 1e-3},
+                                     {"um/s", velocity, 1e-6},
+                                     {"m/s^2", acceleration, 1.0},
+                                     {"mm/s^2", acceleration, 1e-3},
+                                     {"g", acceleration, kStandardGravity},
+                                     {"m/s/N", mobility, 1.0},
+                                     {"mm/s/N", mobility, 1e-3},
+                                     {"m/s^2/N", accelerance, 1.0},
+                                     {"g/N", accelerance, kStandardGravity}};
+
 }  // namespace
+
+std::string known_unit_symbols() {
+  std::string text(kKnownUnits[0].symbol);
+  for (size_t i = 1; i < std::size(kKnownUnits); ++i) {
+    const bool same_dimension = kKnownUnits[i].dimension == kKnownUnits[i - 1].dimension;
+    text += fmt::format("{}{}", same_dimension ? " " : ", ", kKnownUnits[i].symbol);
+  }
+  return text + " (u also as the micro sign)";
+}
 
 const char* dimension_name(Dimension d) {
   switch (d) {
@@ -147,57 +200,12 @@ const char* data_kind_name(DataKind k) {
   return "?";
 }
 
-const char* const known_unit_symbols =
-    "m mm um µm nm, N kN mN, Hz kHz rad/s rpm, deg rad, m/N mm/N um/N nm/N, N/m N/mm N/um, s ms, m/s mm/s um/s, "
-    "m/s^2 mm/s^2 g, m/s/N mm/s/N, m/s^2/N g/N";
-
 std::optional<Unit> parse_unit(std::string_view symbol) {
-  constexpr double kStandardGravity = 9.80665;  // m/s^2 (CGPM 1901)
-  constexpr double pi = std::numbers::pi;
-  struct Known {
-    std::string_view symbol;
-    Dimension dimension;
-    double to_si;
-  };
-  static constexpr Known table[] = {{"m", length, 1.0},
-                                    {"mm", length, 1e-3},
-                                    {"um", length, 1e-6},
-                                    {"nm", length, 1e-9},
-                                    {"N", force, 1.0},
-                                    {"kN", force, 1e3},
-                                    {"mN", force, 1e-3},
-                                    {"Hz", frequency, 1.0},
-                                    {"kHz", frequency, 1e3},
-                                    {"rad/s", frequency, 1.0 / (2.0 * pi)},
-                                    {"rpm", frequency, 1.0 / 60.0},
-                                    {"deg", angle, pi / 180.0},
-                                    {"rad", angle, 1.0},
-                                    {"m/N", compliance, 1.0},
-                                    {"mm/N", compliance, 1e-3},
-                                    {"um/N", compliance, 1e-6},
-                                    {"nm/N", compliance, 1e-9},
-                                    {"N/m", stiffness, 1.0},
-                                    {"N/mm", stiffness, 1e3},
-                                    {"N/um", stiffness, 1e6},
-                                    {"s", time, 1.0},
-                                    {"ms", time, 1e-3},
-                                    {"-", dimensionless, 1.0},
-                                    {"1", dimensionless, 1.0},
-                                    {"m/s", velocity, 1.0},
-                                    {"mm/s", velocity, 1e-3},
-                                    {"um/s", velocity, 1e-6},
-                                    {"m/s^2", acceleration, 1.0},
-                                    {"mm/s^2", acceleration, 1e-3},
-                                    {"g", acceleration, kStandardGravity},
-                                    {"m/s/N", mobility, 1.0},
-                                    {"mm/s/N", mobility, 1e-3},
-                                    {"m/s^2/N", accelerance, 1.0},
-                                    {"g/N", accelerance, kStandardGravity}};
   // The micro sign (U+00B5) and the Greek mu (U+03BC) look alike; both mean "u".
   std::string_view micro_rest;
   for (const std::string_view micro : {"\xC2\xB5", "\xCE\xBC"})
     if (symbol.starts_with(micro)) micro_rest = symbol.substr(micro.size());
-  for (const Known& k : table)
+  for (const KnownUnit& k : kKnownUnits)
     if (micro_rest.empty() ? k.symbol == symbol : k.symbol.starts_with('u') && k.symbol.substr(1) == micro_rest)
       return Unit{std::string(symbol), k.dimension, k.to_si};
   return std::nullopt;
@@ -269,7 +277,7 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
     const auto unit = parse_unit(symbol);
     if (!unit)
       throw fail(header_line,
-                 fmt::format("column '{}': unknown unit '{}' (known: {})", name, symbol, known_unit_symbols));
+                 fmt::format("column '{}': unknown unit '{}' (known: {})", name, symbol, known_unit_symbols()));
     if (std::find(spec->dims.begin(), spec->dims.end(), unit->dimension) == spec->dims.end())
       throw fail(header_line, fmt::format("column '{}' has unit '{}' ({}); it needs a {} unit", name, symbol,
                                           dimension_name(unit->dimension), dims_text(spec->dims)));

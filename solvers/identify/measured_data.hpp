@@ -9,13 +9,13 @@
 //               One row per force level; levels must be distinct.
 //   frf         frequency [frequency], amplitude [length or compliance], optional phase [angle],
 //               amplitude_sigma, phase_sigma. Frequencies strictly increasing (no duplicates).
+//   hysteresis  relative_displacement [length], tangential_force [force], optional force_sigma
+//               [force]. Rows in time order over the loop; at least 8 rows.
 // The amplitude of frf and peaks data (and its sigma) may also be a velocity or an acceleration
 // (or either per newton): each row is converted through its own harmonic, |x| = |v| / w = |a| / w^2
 // with w = 2 pi f, and the phase moved by -90 or -180 degrees (v = i w x, a = -w^2 x for
 // x e^{i w t}; wrapped to (-180, 180]), so the data hold displacement (or compliance) as the model
 // computes it. MeasuredData::derivative says which.
-//   hysteresis  relative_displacement [length], tangential_force [force], optional force_sigma
-//               [force]. Rows in time order over the loop; at least 8 rows.
 // A sigma column needs its column (phase_sigma needs phase; force_sigma's is tangential_force) and
 // must have the same dimension as it. peaks and frf need at least one row.
 // Every cell must be a finite number; amplitudes and sigmas must be positive.
@@ -60,9 +60,9 @@ struct Unit {
 // N/m N/mm N/um | s ms | - 1 | m/s mm/s um/s | m/s^2 mm/s^2 g | m/s/N mm/s/N | m/s^2/N g/N (µ as
 // the micro sign or the Greek mu; g the standard 9.80665 m/s^2). Frequencies are kept in Hz (rad/s
 // and rpm are converted to Hz), angles in radians. std::nullopt for an unknown symbol.
-// The symbols known, for messages.
-extern const char* const known_unit_symbols;
 std::optional<Unit> parse_unit(std::string_view symbol);
+// The symbols parse_unit knows, grouped by dimension, for messages.
+std::string known_unit_symbols();
 
 // Dimension of a result-table column from its name's unit suffix, the project's convention:
 // _hz frequency, _m length, _n force, _deg and _rad angle, _per_n and _m_per_n compliance,

@@ -283,7 +283,9 @@ TEST_F(MeasuredDataFile, HeaderCellWithoutUnitOrNameIsRefused) {
 
 TEST_F(MeasuredDataFile, UnknownUnitIsRefused) {
   expect_contains(refusal(write("frequency [Hz], amplitude [um/n]\n1, 1\n", "rig.csv"), DataKind::frf),
-                  {"rig.csv:1: column 'amplitude': unknown unit 'um/n'"});
+                  {"rig.csv:1: column 'amplitude': unknown unit 'um/n'",
+                   "(known: m mm um nm, N kN mN, Hz kHz rad/s rpm, deg rad, m/N mm/N um/N nm/N",
+                   "m/s mm/s um/s, m/s^2 mm/s^2 g, m/s/N mm/s/N, m/s^2/N g/N (u also as the micro sign)"});
 }
 
 TEST_F(MeasuredDataFile, UnitOfTheWrongDimensionIsRefused) {

@@ -74,7 +74,7 @@ using FirstSolution = std::function<hbm::HbmSolution(int harmonics)>;
 // Progress of a sweep: (omega, point, iterations).
 using SweepReport = std::function<void(double, int, int)>;
 
-// The grid sweep of one level: every frequency from the secant extrapolation of the last two
+// The grid sweep of one level: every frequency from the cubic extrapolation of the last four
 // converged points, a failed one approached in smaller steps, then bridged by arclength through a
 // fold. Fills level.path and level.failed_hz, and with the point scope level.point_harmonics and
 // point_change. level.harmonics is the H of a fixed-H sweep, and the start of a

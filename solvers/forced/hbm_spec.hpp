@@ -49,7 +49,7 @@ struct DamperSpec {
 
 struct HbmSweepSpec {
   double f_min = 0.0, f_max = 0.0;  // [Hz]
-  // grid: Newton at each frequency of a fixed grid from the previous solutions (secant predictor);
+  // grid: Newton at each frequency of a fixed grid from the previous solutions (cubic predictor);
   // robust on the kinks of stick-slip-lift-off, cannot pass a fold. arclength: pseudo-arclength
   // continuation, passes folds (impacts, softening), may stall on kinks.
   enum class Method { grid, arclength } method = Method::grid;
@@ -118,7 +118,7 @@ struct HbmSpec {
   int harmonic_step = 1;    // the smallest raise of H between two sweeps (2: odd harmonics compared)
   double tolerance = 1e-9;  // relative, hbm::HbmOptions
   // Newton iterations per start (a solve tries up to three starts). On a sweep a converging point
-  // needs 1-5 from the secant guess; a small cap makes the rare failures cheap.
+  // needs 1-5 from the cubic guess; a small cap makes the rare failures cheap.
   int max_iterations = 20;
   HbmSweepSpec sweep;
   // Parameters whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp). Empty = none.

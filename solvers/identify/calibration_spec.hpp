@@ -60,6 +60,7 @@ struct CalibrationSpec {
   int starts = 1;
   unsigned seed = 1;
   // Starts solved at once (each its own problem; the outcome is the serial one): 0 = one per core.
+  // The threads left to each start (threads / starts at once) run its central differences.
   int threads = 0;
   // An independent model (e.g. the time integration) run with the identified values at the same
   // parameter paths; its checks must pass for the identification to count (empty: none).

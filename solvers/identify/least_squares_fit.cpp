@@ -5,28 +5,33 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <numeric>
 #include <optional>
 #include <random>
 
 #include "common/parallel_indices.hpp"
+#include "identify/central_differences.hpp"
 
 namespace bb {
 namespace {
 
 // r_k = (computed_k - measured_k) / sigma_k: the misfit in units of the stated uncertainty.
+// The residuals at log values, for central differences; several may run at once (the Jacobian's
+// columns on workers), hence the atomic count.
 struct NumericResidual {
   const FitEvaluator* evaluate;
   size_t parameters;
   int* evaluations;
-  bool operator()(double const* const* log_values, double* residuals) const {
+  bool operator()(const std::vector<double>& log_values, double* residuals) const {
     std::vector<double> values(parameters);
-    for (size_t i = 0; i < values.size(); ++i) values[i] = std::exp(log_values[0][i]);
+    for (size_t i = 0; i < values.size(); ++i) values[i] = std::exp(log_values[i]);
     try {
       const auto points = (*evaluate)(values, false);
-      ++*evaluations;
+      std::atomic_ref<int>(*evaluations).fetch_add(1);
       for (const FitPoint& p : points)
         if (!std::isfinite(p.computed)) return false;  // a peak or mode not found there: Ceres shrinks the step
       for (size_t k = 0; k < points.size(); ++k) residuals[k] = points[k].residual();
@@ -252,20 +257,19 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   out.spec = cal;
   const size_t n = cal.parameters.size();
   const std::vector<std::vector<double>> starts = start_points(cal);
-  ceres::NumericDiffOptions diff;
-  diff.relative_step_size =
-      cal.derivative_step;  // default 1e-4: above the eigensolver's 1e-10 noise, below the model's curvature
+  // The cores left to each start run its Jacobian's columns (a single start: all of them).
+  const size_t at_once = worker_count(starts.size(), cal.threads);
+  const size_t budget = worker_count(std::numeric_limits<size_t>::max(), cal.threads);
+  const size_t column_workers = std::max<size_t>(1, budget / std::max<size_t>(1, at_once));
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
   const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations) {
     ceres::CostFunction* cost = nullptr;
     if (analytic) {
       cost = new AnalyticResidual(&evaluate, n, evaluations, residuals);
     } else {
-      auto* numeric = new ceres::DynamicNumericDiffCostFunction<NumericResidual, ceres::CENTRAL>(
-          new NumericResidual{&evaluate, n, evaluations}, ceres::TAKE_OWNERSHIP, diff);
-      numeric->AddParameterBlock(static_cast<int>(n));
-      numeric->SetNumResiduals(residuals);
-      cost = numeric;
+      // derivative_step (default 1e-4): above the eigensolver's 1e-10 noise, below the model's curvature.
+      cost = new CentralDifferences(NumericResidual{&evaluate, n, evaluations}, static_cast<int>(n), residuals,
+                                    cal.derivative_step, column_workers);
     }
     ceres::LossFunction* loss = nullptr;
     if (cal.loss == "huber") loss = new ceres::HuberLoss(cal.loss_scale);

@@ -1,0 +1,60 @@
+#include "identify/central_differences.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "common/parallel_indices.hpp"
+
+namespace bb {
+
+CentralDifferences::CentralDifferences(ResidualFunction residual, int parameters, int residuals, double relative_step,
+                                       std::size_t workers)
+    : residual_(std::move(residual)),
+      parameters_(parameters),
+      relative_step_(relative_step),
+      workers_(std::max<std::size_t>(1, workers)) {
+  mutable_parameter_block_sizes()->push_back(parameters);
+  set_num_residuals(residuals);
+}
+
+bool CentralDifferences::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+  const std::vector<double> x(parameters[0], parameters[0] + parameters_);
+  const int m = num_residuals();
+  if (jacobians == nullptr || jacobians[0] == nullptr) return residual_(x, residuals);
+  // Run 0 at x, run 2j + 1 at x + delta_j e_j, run 2j + 2 at x - delta_j e_j.
+  const auto n = static_cast<std::size_t>(parameters_);
+  const double min_step = std::sqrt(std::numeric_limits<double>::epsilon());
+  std::vector<double> delta(n);
+  for (std::size_t j = 0; j < n; ++j) delta[j] = std::max(min_step, std::abs(x[j]) * relative_step_);
+  std::vector<Eigen::VectorXd> runs(2 * n + 1, Eigen::VectorXd(m));
+  std::vector<char> ok(2 * n + 1, 0);
+  for_each_index(2 * n + 1, std::min(workers_, 2 * n + 1), [&](std::size_t k) {
+    std::vector<double> y = x;
+    if (k > 0) {
+      const std::size_t j = (k - 1) / 2;
+      y[j] = k % 2 == 1 ? x[j] + delta[j] : x[j] - delta[j];
+    }
+    ok[k] = residual_(y, runs[k].data()) ? 1 : 0;
+  });
+  if (!ok[0]) return false;
+  std::copy(runs[0].data(), runs[0].data() + m, residuals);
+  for (const char good : ok)
+    if (!good) return false;
+  // Row-major m x n, as Ceres lays out a parameter block's Jacobian.
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> jacobian(jacobians[0], m,
+                                                                                              parameters_);
+  for (std::size_t j = 0; j < n; ++j) {
+    Eigen::VectorXd column = runs[2 * j + 1] - runs[2 * j + 2];
+    double scale = 1.0 / delta[j];
+    scale /= 2;
+    column *= scale;
+    jacobian.col(static_cast<Eigen::Index>(j)) = column;
+  }
+  return true;
+}
+
+}  // namespace bb

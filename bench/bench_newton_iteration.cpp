@@ -1,21 +1,23 @@
 // One Newton iteration of Table XI's condensed harmonic balance against its dense-algebra bound
 // (issue 31, point 2). The system: cases/thesis/table11_calibrate_contact.toml (the committed
 // 28-DOF reduced blades, the rigid damper, three Jenkins contacts on 9 contact DOFs) with kt and mu
-// as identified (8.09e7 N/m, 0.7231), the event-resolved AFT at its automatic samples, H = 3 or 7, at the 100 N level
-// near its OOP peak (176.5 Hz), where the contacts stick, slip and the normal loads vary. Run from the repository root.
+// as identified (8.09e7 N/m, 0.7231), the event-resolved AFT at its automatic samples, H = 3 or 7,
+// at the 100 N level near its OOP peak (176.5 Hz), where the contacts stick, slip and the normal
+// loads vary. Run from the repository root.
 //
 // What one iteration of damped_newton costs, in its parts:
 //   BM_TableXIIteration       the residual with its Jacobian (3 AFTs, the contact Jacobian's
-//                             assembly, L x) and the Newton step (LU of J with its condition estimate, solve)
+//                             assembly, L x) and the Newton step
 //   BM_TableXIContactForces   the contact forces with their Jacobian alone
-//   BM_TableXIStepSolve       the Newton step alone
+//   BM_TableXIStepSolve       the Newton step alone: LU of J, its condition estimate, the solve
+//                             (damped_newton's step where J is well conditioned)
 //   BM_DenseRate              a dense product of the same size: the machine's achievable flop rate
 // Counters: `unknowns` n = 9 (2H + 1); `flops` of the iteration's dense algebra, counted: the LU
 // (2/3 n^3) and its solve (2 n^2), the contact Jacobian's products (per contact 2 m^2 s^2 with s
 // the contact DOFs it moves, m = 2H + 1) and the AFT's closed-form integrals (per contact and state
 // run 6 m^2, the motion at every sample 14 m, two periods); `bound_us` = flops at BM_DenseRate's
-// rate (the iteration's time over bound_us is the ratio
-// issue 31 asks within 3). Measurement only: nothing here asserts a time.
+// rate (the iteration's time over bound_us is the ratio issue 31 asks within 3). Measurement only:
+// nothing here asserts a time.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -130,15 +132,19 @@ void report(benchmark::State& state, const bb::hbm::HarmonicBalance& s) {
   state.counters["bound_us"] = 1e6 * bound;
 }
 
+// damped_newton's step where J is well conditioned: partial-pivot LU, its condition estimate, solve.
+void newton_step(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& residual) {
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
+  benchmark::DoNotOptimize(lu.rcond());
+  Eigen::VectorXd step = lu.solve(-residual);
+  benchmark::DoNotOptimize(step.data());
+}
+
 void BM_TableXIIteration(benchmark::State& state) {
   const Point p = converged_point(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     const bb::hbm::HarmonicBalance::Residual r = p.system.residual(p.linear, p.x);
-    const Eigen::MatrixXd jacobian = p.linear.operator_ + r.forces.jacobian;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
-    benchmark::DoNotOptimize(lu.rcond());
-    Eigen::VectorXd step = lu.solve(-r.residual);
-    benchmark::DoNotOptimize(step.data());
+    newton_step(p.linear.operator_ + r.forces.jacobian, r.residual);
   }
   report(state, p.system);
 }
@@ -154,12 +160,7 @@ void BM_TableXIStepSolve(benchmark::State& state) {
   const Point p = converged_point(static_cast<int>(state.range(0)));
   const bb::hbm::HarmonicBalance::Residual r = p.system.residual(p.linear, p.x);
   const Eigen::MatrixXd jacobian = p.linear.operator_ + r.forces.jacobian;
-  for (auto _ : state) {
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
-    benchmark::DoNotOptimize(lu.rcond());
-    Eigen::VectorXd step = lu.solve(-r.residual);
-    benchmark::DoNotOptimize(step.data());
-  }
+  for (auto _ : state) newton_step(jacobian, r.residual);
 }
 BENCHMARK(BM_TableXIStepSolve)->ArgName("H")->Arg(3)->Arg(7)->Unit(benchmark::kMicrosecond);
 

@@ -19,8 +19,8 @@
 namespace bb {
 namespace {
 
-// r_k = (computed_k - measured_k) / sigma_k: the misfit in units of the stated uncertainty.
-// The residuals at log values, for central differences; several may run at once (the Jacobian's
+// The residuals r_k = (computed_k - measured_k) / sigma_k (the misfit in units of the stated
+// uncertainty) at log values, for central differences; several may run at once (the Jacobian's
 // columns on workers), hence the atomic count.
 struct NumericResidual {
   const FitEvaluator* evaluate;

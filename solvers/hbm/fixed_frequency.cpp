@@ -30,13 +30,14 @@ double norm_of(const NewtonPoint& p) { return p.valid ? p.residual.norm() : std:
 
 // One damped Newton solve from x (evaluated: `at`), its result in the solver's terms.
 HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& linear, double omega, Eigen::VectorXd x,
-                   NewtonPoint at) {
+                   NewtonPoint at, ChordFactorization* chord) {
   const double target = s.residual_tolerance();
   const DampedNewtonOptions options{.tolerance = target,
                                     .max_iterations = s.options().max_iterations,
                                     .max_backtracks = s.options().max_backtracks,
                                     .step_solve = NewtonStepSolve::minimum_norm,
-                                    .levenberg_marquardt = true};
+                                    .levenberg_marquardt = true,
+                                    .chord = chord};
   DampedNewtonResult r = damped_newton([&](const Eigen::VectorXd& y) { return balance_at(s, linear, y); }, std::move(x),
                                        std::move(at), options);
   HbmSolution out;
@@ -95,15 +96,17 @@ void check_size(const HarmonicBalance& s, const Eigen::VectorXd& x) {
 
 }  // namespace
 
-HbmSolution solve_from(const HarmonicBalance& s, double omega, const Eigen::VectorXd& start) {
+HbmSolution solve_from(const HarmonicBalance& s, double omega, const Eigen::VectorXd& start,
+                       ChordFactorization* chord) {
   check_frequency(omega);
   check_size(s, start);
   const auto linear = s.condense(omega);
   if (!linear) return singular_at(s, omega);
-  return newton(s, *linear, omega, start, balance_at(s, *linear, start));
+  return newton(s, *linear, omega, start, balance_at(s, *linear, start), chord);
 }
 
-HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std::optional<Eigen::VectorXd>& initial) {
+HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std::optional<Eigen::VectorXd>& initial,
+                               ChordFactorization* chord) {
   check_frequency(omega);
   const auto linear = s.condense(omega);
   if (!linear) return singular_at(s, omega);
@@ -114,7 +117,7 @@ HbmSolution solve_at_frequency(const HarmonicBalance& s, double omega, const std
   HbmSolution best;
   int iterations = 0;
   const auto attempt = [&](Eigen::VectorXd x, NewtonPoint at, HbmStart from) {
-    HbmSolution trial = newton(s, *linear, omega, std::move(x), std::move(at));
+    HbmSolution trial = newton(s, *linear, omega, std::move(x), std::move(at), chord);
     trial.start = from;
     iterations += trial.iterations;
     const bool converged = trial.converged;

@@ -10,6 +10,10 @@
 #include "contact/aft.hpp"
 #include "hbm/condensed_balance.hpp"
 
+namespace bb {
+class ChordFactorization;  // linalg/damped_newton.hpp
+}  // namespace bb
+
 namespace bb::hbm {
 
 // Where a solve's Newton iteration started (solve_at_frequency tries them in turn).
@@ -38,11 +42,15 @@ struct HbmSolution {
 // linear limits (contacts stuck, or normal springs only), the better one first; each start gets
 // options.max_iterations, `iterations` reports the total.
 // Never throws on non-convergence: converged == false with a message; never returns NaN.
+// `chord`: a factorized Jacobian carried from solve to solve (a sweep's), tried before each new
+// factorization (linalg/damped_newton.hpp); null: Newton steps only.
 [[nodiscard]] HbmSolution solve_at_frequency(const HarmonicBalance& system, double omega_rad_s,
-                                             const std::optional<Eigen::VectorXd>& initial = std::nullopt);
+                                             const std::optional<Eigen::VectorXd>& initial = std::nullopt,
+                                             ChordFactorization* chord = nullptr);
 
 // The same Newton iteration from `start` alone (no linear-limit starts): a continuation step,
 // where another start would find another branch or waste the iterations.
-[[nodiscard]] HbmSolution solve_from(const HarmonicBalance& system, double omega_rad_s, const Eigen::VectorXd& start);
+[[nodiscard]] HbmSolution solve_from(const HarmonicBalance& system, double omega_rad_s, const Eigen::VectorXd& start,
+                                     ChordFactorization* chord = nullptr);
 
 }  // namespace bb::hbm

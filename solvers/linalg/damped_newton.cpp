@@ -4,23 +4,44 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 namespace bb {
 
 namespace {
 
-// Solves J dx = -R the way the options ask; false when the step cannot be used.
-bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& step) {
+// The decomposition of J a Newton step was solved with, kept for a second right-hand side.
+using StepDecomposition =
+    std::variant<std::monostate, Eigen::PartialPivLU<Eigen::MatrixXd>, Eigen::FullPivLU<Eigen::MatrixXd>,
+                 Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>>;
+
+Eigen::VectorXd solve_with(const StepDecomposition& d, const Eigen::VectorXd& rhs) {
+  return std::visit(
+      [&](const auto& dec) -> Eigen::VectorXd {
+        if constexpr (std::is_same_v<std::decay_t<decltype(dec)>, std::monostate>)
+          return Eigen::VectorXd::Constant(rhs.size(), std::numeric_limits<double>::quiet_NaN());
+        else
+          return dec.solve(rhs);
+      },
+      d);
+}
+
+// Solves J dx = -R the way the options ask, keeping the decomposition in `d`; false when the
+// step cannot be used.
+bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& step, StepDecomposition& d) {
   switch (how) {
     case NewtonStepSolve::minimum_norm: {
       // A well-conditioned J has no null space, so its LU step is the minimum-norm step, at a
       // fraction of the decomposition's cost (on Table XI at H = 7 the decomposition took a quarter
       // of the sweeps' time).
       if (at.jacobian.rows() == at.jacobian.cols()) {
-        const Eigen::PartialPivLU<Eigen::MatrixXd> lu(at.jacobian);
+        Eigen::PartialPivLU<Eigen::MatrixXd> lu(at.jacobian);
         if (lu.rcond() > 1e-10) {
           step = lu.solve(-at.residual);
+          d = std::move(lu);
           if (step.allFinite()) break;
         }
       }
@@ -28,15 +49,20 @@ bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& st
       cod.setThreshold(1e-13);
       cod.compute(at.jacobian);
       step = cod.solve(-at.residual);
+      d = std::move(cod);
       break;
     }
-    case NewtonStepSolve::partial_pivot_lu:
-      step = at.jacobian.partialPivLu().solve(-at.residual);
+    case NewtonStepSolve::partial_pivot_lu: {
+      Eigen::PartialPivLU<Eigen::MatrixXd> lu(at.jacobian);
+      step = lu.solve(-at.residual);
+      d = std::move(lu);
       break;
+    }
     case NewtonStepSolve::full_pivot_lu: {
-      const Eigen::FullPivLU<Eigen::MatrixXd> lu(at.jacobian);
+      Eigen::FullPivLU<Eigen::MatrixXd> lu(at.jacobian);
       if (!lu.isInvertible()) return false;
       step = lu.solve(-at.residual);
+      d = std::move(lu);
       break;
     }
   }
@@ -56,12 +82,15 @@ class Iteration {
   }
 
   // Backtracking along `step` from (x, at): the first a = 2^-b with merit(x + a step) <= (1 - armijo a) merit.
-  bool backtrack(Eigen::VectorXd& x, NewtonPoint& at, double& merit_at, const Eigen::VectorXd& step) const {
+  // `full` (when given) receives R at the full step where that point is valid, else stays empty.
+  bool backtrack(Eigen::VectorXd& x, NewtonPoint& at, double& merit_at, const Eigen::VectorXd& step,
+                 Eigen::VectorXd* full = nullptr) const {
     double alpha = 1.0;
     for (int b = 0; b <= options_.max_backtracks; ++b, alpha *= 0.5) {
       Eigen::VectorXd trial_x = x + alpha * step;
       NewtonPoint trial = system_(trial_x);
       const double m = merit(trial);
+      if (b == 0 && full && trial.valid && trial.residual.allFinite()) *full = trial.residual;
       if (trial.valid && std::isfinite(m) && m <= (1.0 - options_.armijo * alpha) * merit_at) {
         x = std::move(trial_x);
         at = std::move(trial);
@@ -70,6 +99,38 @@ class Iteration {
       }
     }
     return false;
+  }
+
+  // After a blocked line search: the step of the Broyden (secant) update J + R_1 dx^T / (dx . dx)
+  // of the Jacobian, R_1 the residual at the full step, which sees the kink the step crossed where
+  // J does not; solved on J's decomposition by the Sherman-Morrison formula (Dennis & Schnabel,
+  // Numerical Methods for Unconstrained Optimization and Nonlinear Equations, 1996, section 8.1).
+  bool secant_step(Eigen::VectorXd& x, NewtonPoint& at, double& merit_at, const Eigen::VectorXd& dx,
+                   const Eigen::VectorXd& full, const StepDecomposition& d) const {
+    if (full.size() != dx.size()) return false;
+    const Eigen::VectorXd z = solve_with(d, full);
+    const double dd = dx.squaredNorm(), denominator = dd + dx.dot(z);
+    if (!z.allFinite() || !(std::abs(denominator) > 1e-12 * dd)) return false;
+    const Eigen::VectorXd step = dx - (dd / denominator) * z;
+    if (!step.allFinite()) return false;
+    return backtrack(x, at, merit_at, step);
+  }
+
+  // The chord step from the held factorization, taken when it contracts the merit enough.
+  bool chord_step(Eigen::VectorXd& x, NewtonPoint& at, double& merit_at) const {
+    ChordFactorization* chord = options_.chord;
+    if (!chord || !chord->fits(x.size()) || at.residual.size() != x.size()) return false;
+    const Eigen::VectorXd step = chord->solve(-at.residual);
+    if (!step.allFinite()) return false;
+    Eigen::VectorXd trial_x = x + step;
+    NewtonPoint trial = system_(trial_x);
+    const double m = merit(trial);
+    if (!(trial.valid && std::isfinite(m) && m <= chord->contraction() * merit_at)) return false;
+    x = std::move(trial_x);
+    at = std::move(trial);
+    merit_at = m;
+    ++chord->chord_steps;
+    return true;
   }
 
   // Levenberg-Marquardt steps of growing damping; the first that lowers the merit at all is taken.
@@ -102,6 +163,17 @@ class Iteration {
 
 }  // namespace
 
+ChordFactorization::ChordFactorization(double contraction) : contraction_(contraction) {
+  if (!(contraction > 0.0 && contraction < 1.0))
+    throw std::invalid_argument(fmt::format("chord contraction must lie in (0, 1), got {}", contraction));
+}
+
+void ChordFactorization::hold(Eigen::PartialPivLU<Eigen::MatrixXd> lu) {
+  lu_ = std::move(lu);
+  held_ = true;
+  ++factorizations;
+}
+
 DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0, const DampedNewtonOptions& options) {
   NewtonPoint at = system(x0);
   return damped_newton(system, std::move(x0), std::move(at), options);
@@ -133,13 +205,27 @@ DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0,
       stop(NewtonStatus::iteration_limit, "no convergence");
       break;
     }
-    Eigen::VectorXd step;
-    if (!newton_step(out.at, options.step_solve, step)) {
+    if (iteration.chord_step(out.x, out.at, merit)) {
+      ++out.iterations;
+      continue;
+    }
+    Eigen::VectorXd step, full;
+    StepDecomposition decomposition;
+    if (!newton_step(out.at, options.step_solve, step, decomposition)) {
       stop(NewtonStatus::singular_jacobian, "singular Jacobian");
       break;
     }
-    if (!iteration.backtrack(out.x, out.at, merit, step) &&
-        !(options.levenberg_marquardt && iteration.levenberg_marquardt(out.x, out.at, merit))) {
+    const bool moved = iteration.backtrack(out.x, out.at, merit, step, &full) ||
+                       (iteration.secant_step(out.x, out.at, merit, step, full, decomposition)) ||
+                       (options.levenberg_marquardt && iteration.levenberg_marquardt(out.x, out.at, merit));
+    if (options.chord) {
+      auto* lu = std::get_if<Eigen::PartialPivLU<Eigen::MatrixXd>>(&decomposition);
+      if (lu && options.step_solve == NewtonStepSolve::minimum_norm)
+        options.chord->hold(std::move(*lu));
+      else
+        options.chord->drop();
+    }
+    if (!moved) {
       stop(NewtonStatus::line_search_failed, "line search failed");
       break;
     }

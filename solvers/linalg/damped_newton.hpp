@@ -7,8 +7,17 @@
 // Wright, Numerical Optimization, 2nd ed., section 3.1). Our residuals are only piecewise smooth
 // (stick/slip and contact/lift-off switches): a full step can cross a switch and land further from
 // the solution than it started, which backtracking catches. Where backtracking fails because the
-// exact Jacobian points across a kink, optional Levenberg-Marquardt steps (Nocedal & Wright section
-// 10.3) along a blend of the Newton and steepest-descent directions can still reduce the merit.
+// exact Jacobian points across a kink, the secant (Broyden) step, whose Jacobian is corrected by
+// the residual at the full step beyond the kink, is backtracked next; then, optionally,
+// Levenberg-Marquardt steps (Nocedal & Wright section 10.3) along a blend of the Newton and
+// steepest-descent directions.
+//
+// With a ChordFactorization the iteration first tries the chord (simplified Newton) step: the LU of
+// the last Jacobian it factorized, kept across solves, applied to the new residual. The step is
+// taken when it shrinks the merit by the factorization's contraction factor; otherwise the
+// Jacobian at x is factorized afresh. Along a sweep the Jacobian changes little from one frequency
+// to the next, so most steps cost a residual and a triangular solve instead of an LU (Deuflhard,
+// Newton Methods for Nonlinear Problems, 2004, section 2.1.4).
 //
 // Contract: never throws on non-convergence (converged == false, a status and a message with |R|),
 // never returns a non-finite x or residual.
@@ -44,6 +53,26 @@ enum class NewtonStepSolve {
   full_pivot_lu,     // rank-revealing: J not invertible stops the iteration as singular
 };
 
+// The factorized Jacobian a sweep carries from one solve to the next (one per thread of solves).
+class ChordFactorization {
+ public:
+  // A chord step counts when it shrinks the merit by at least this factor (in (0, 1)); a slower
+  // contraction costs more residuals than the factorization it saves.
+  explicit ChordFactorization(double contraction = 0.5);
+  double contraction() const { return contraction_; }
+  bool fits(Eigen::Index size) const { return held_ && lu_.rows() == size; }
+  void hold(Eigen::PartialPivLU<Eigen::MatrixXd> lu);
+  void drop() { held_ = false; }
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return lu_.solve(rhs); }
+  long chord_steps = 0;     // chord steps taken
+  long factorizations = 0;  // Jacobians factorized into it
+
+ private:
+  double contraction_;
+  bool held_ = false;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+};
+
 struct DampedNewtonOptions {
   // Converged when merit <= tolerance (units of R) unless `converged` is given. 0 asks for R = 0.
   double tolerance = 0.0;
@@ -59,6 +88,9 @@ struct DampedNewtonOptions {
   std::function<double(const NewtonPoint&)> merit = {};
   // The convergence test at a valid point; empty: merit <= tolerance.
   std::function<bool(const NewtonPoint&)> converged = {};
+  // Chord steps from this factorization (see above); null: a Newton step at every iteration. Used
+  // with step_solve minimum_norm only (the LU of a well-conditioned square Jacobian is kept).
+  ChordFactorization* chord = nullptr;
 };
 
 enum class NewtonStatus {

@@ -1,6 +1,7 @@
 // The damped Newton helper (linalg/damped_newton): quadratic convergence on a smooth system,
-// backtracking that tames overshooting and undefined full steps, Levenberg-Marquardt steps where
-// backtracking is not allowed to, the minimum-norm step on an underdetermined system, and failures
+// backtracking that tames overshooting and undefined full steps, the secant step past a kink and
+// Levenberg-Marquardt steps where backtracking is not allowed to, chord steps that reuse a
+// factorization across solves, the minimum-norm step on an underdetermined system, and failures
 // reported with a status and |R|, never thrown, never NaN.
 #include "linalg/damped_newton.hpp"
 
@@ -8,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace bb {
@@ -43,21 +45,66 @@ TEST(DampedNewton, ConvergesQuadraticallyOnASmoothSystem) {
 }
 
 TEST(DampedNewton, BacktrackingTamesAFullStepThatOvershoots) {
-  const DampedNewtonResult damped = damped_newton(arctangent, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12});
+  const DampedNewtonResult damped = damped_newton(arctangent, VectorXd::Constant(1, 20.0), {.tolerance = 1e-12});
   ASSERT_TRUE(damped.converged) << damped.failure;
   EXPECT_NEAR(damped.x[0], 0.0, 1e-12);
-  // Without halvings the first full step is rejected and the iteration stops, at the start.
+  // Without halvings the first full step (to -590) is rejected, and so is the secant step through
+  // it (to -280): the iteration stops, at the start.
   const DampedNewtonResult full =
-      damped_newton(arctangent, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12, .max_backtracks = 0});
+      damped_newton(arctangent, VectorXd::Constant(1, 20.0), {.tolerance = 1e-12, .max_backtracks = 0});
   EXPECT_FALSE(full.converged);
   EXPECT_EQ(full.status, NewtonStatus::line_search_failed);
   EXPECT_EQ(full.iterations, 0);
-  EXPECT_EQ(full.x[0], 3.0);
+  EXPECT_EQ(full.x[0], 20.0);
   EXPECT_NE(full.failure.find("|R| ="), std::string::npos) << full.failure;
 }
 
+TEST(DampedNewton, TheSecantStepPassesAKinkThatTheNewtonStepOvershoots) {
+  // R = x above 1 and 1 + 10 (x - 1) below, root 0.9: from 3 the Newton step lands at 0, where
+  // |R| = 9. Its secant through that point (slope 4, then towards 10) descends and converges.
+  const NewtonSystem kinked = [](const VectorXd& x) {
+    NewtonPoint p;
+    const bool above = x[0] >= 1.0;
+    p.residual = VectorXd::Constant(1, above ? x[0] : 1.0 + 10.0 * (x[0] - 1.0));
+    p.jacobian = MatrixXd::Constant(1, 1, above ? 1.0 : 10.0);
+    return p;
+  };
+  const DampedNewtonResult r =
+      damped_newton(kinked, VectorXd::Constant(1, 3.0), {.tolerance = 1e-12, .max_backtracks = 0});
+  ASSERT_TRUE(r.converged) << r.failure;
+  EXPECT_NEAR(r.x[0], 0.9, 1e-12);
+}
+
+TEST(DampedNewton, ChordStepsReuseTheFactorizationAcrossNeighbouringSolves) {
+  // Circles of radius 2, 2.001, ... meet the line x0 = x1: each solve starts at the last root.
+  const auto circle = [](double radius) -> NewtonSystem {
+    return [radius](const VectorXd& x) {
+      NewtonPoint p;
+      p.residual = VectorXd{{x[0] * x[0] + x[1] * x[1] - radius * radius, x[0] - x[1]}};
+      p.jacobian = MatrixXd{{2.0 * x[0], 2.0 * x[1]}, {1.0, -1.0}};
+      return p;
+    };
+  };
+  ChordFactorization chord;
+  VectorXd x{{1.0, 0.5}};
+  for (int i = 0; i < 10; ++i) {
+    const double radius = 2.0 + 1e-3 * i;
+    const DampedNewtonResult r = damped_newton(circle(radius), x, {.tolerance = 1e-13, .chord = &chord});
+    ASSERT_TRUE(r.converged) << r.failure;
+    EXPECT_NEAR(r.x[0], radius / std::sqrt(2.0), 1e-13);
+    EXPECT_NEAR(r.x[1], r.x[0], 1e-13);
+    x = r.x;
+  }
+  // The first solve factorizes; the later ones mostly reuse (each chord step contracts by 1/2).
+  EXPECT_GT(chord.chord_steps, 0);
+  EXPECT_LT(chord.factorizations, 10 + 5);
+  EXPECT_THROW(ChordFactorization(1.0), std::invalid_argument);
+  EXPECT_THROW(ChordFactorization(0.0), std::invalid_argument);
+}
+
 TEST(DampedNewton, LevenbergMarquardtStepsReduceTheResidualWhereNoHalvingIsAllowed) {
-  const DampedNewtonResult r = damped_newton(arctangent, VectorXd::Constant(1, 3.0),
+  // From 20 neither halving nor the secant step helps (above); damped steps do.
+  const DampedNewtonResult r = damped_newton(arctangent, VectorXd::Constant(1, 20.0),
                                              {.tolerance = 1e-12, .max_backtracks = 0, .levenberg_marquardt = true});
   ASSERT_TRUE(r.converged) << r.failure;
   EXPECT_NEAR(r.x[0], 0.0, 1e-12);

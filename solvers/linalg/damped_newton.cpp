@@ -81,22 +81,32 @@ class Iteration {
     return options_.converged ? options_.converged(p) : merit_at_p <= options_.tolerance;
   }
 
+  // Evaluates x + step and moves there when that point is valid and `accepts` its finite merit.
+  // `residual` (when given) receives R there where the point is valid.
+  template <class Accepts>
+  bool move_if(Eigen::VectorXd& x, NewtonPoint& at, double& merit_at, const Eigen::VectorXd& step, Accepts accepts,
+               Eigen::VectorXd* residual = nullptr) const {
+    Eigen::VectorXd trial_x = x + step;
+    NewtonPoint trial = system_(trial_x);
+    const double m = merit(trial);
+    if (residual && trial.valid && trial.residual.allFinite()) *residual = trial.residual;
+    if (!(trial.valid && std::isfinite(m) && accepts(m))) return false;
+    x = std::move(trial_x);
+    at = std::move(trial);
+    merit_at = m;
+    return true;
+  }
+
   // Backtracking along `step` from (x, at): the first a = 2^-b with merit(x + a step) <= (1 - armijo a) merit.
   // `full` (when given) receives R at the full step where that point is valid, else stays empty.
   bool backtrack(Eigen::VectorXd& x, NewtonPoint& at, double& merit_at, const Eigen::VectorXd& step,
                  Eigen::VectorXd* full = nullptr) const {
     double alpha = 1.0;
     for (int b = 0; b <= options_.max_backtracks; ++b, alpha *= 0.5) {
-      Eigen::VectorXd trial_x = x + alpha * step;
-      NewtonPoint trial = system_(trial_x);
-      const double m = merit(trial);
-      if (b == 0 && full && trial.valid && trial.residual.allFinite()) *full = trial.residual;
-      if (trial.valid && std::isfinite(m) && m <= (1.0 - options_.armijo * alpha) * merit_at) {
-        x = std::move(trial_x);
-        at = std::move(trial);
-        merit_at = m;
+      const double bound = (1.0 - options_.armijo * alpha) * merit_at;
+      if (move_if(
+              x, at, merit_at, alpha * step, [bound](double m) { return m <= bound; }, b == 0 ? full : nullptr))
         return true;
-      }
     }
     return false;
   }
@@ -121,14 +131,8 @@ class Iteration {
     ChordFactorization* chord = options_.chord;
     if (!chord || !chord->fits(x.size()) || at.residual.size() != x.size()) return false;
     const Eigen::VectorXd step = chord->solve(-at.residual);
-    if (!step.allFinite()) return false;
-    Eigen::VectorXd trial_x = x + step;
-    NewtonPoint trial = system_(trial_x);
-    const double m = merit(trial);
-    if (!(trial.valid && std::isfinite(m) && m <= chord->contraction() * merit_at)) return false;
-    x = std::move(trial_x);
-    at = std::move(trial);
-    merit_at = m;
+    const double bound = chord->contraction() * merit_at;
+    if (!step.allFinite() || !move_if(x, at, merit_at, step, [bound](double m) { return m <= bound; })) return false;
     ++chord->chord_steps;
     return true;
   }
@@ -142,16 +146,8 @@ class Iteration {
       Eigen::MatrixXd damped = normal;
       damped.diagonal().array() += lambda * scale;
       const Eigen::VectorXd step = damped.ldlt().solve(-gradient);
-      if (!step.allFinite()) continue;
-      Eigen::VectorXd trial_x = x + step;
-      NewtonPoint trial = system_(trial_x);
-      const double m = merit(trial);
-      if (trial.valid && m < merit_at) {
-        x = std::move(trial_x);
-        at = std::move(trial);
-        merit_at = m;
-        return true;
-      }
+      const double bound = merit_at;
+      if (step.allFinite() && move_if(x, at, merit_at, step, [bound](double m) { return m < bound; })) return true;
     }
     return false;
   }
@@ -216,7 +212,7 @@ DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0,
       break;
     }
     const bool moved = iteration.backtrack(out.x, out.at, merit, step, &full) ||
-                       (iteration.secant_step(out.x, out.at, merit, step, full, decomposition)) ||
+                       iteration.secant_step(out.x, out.at, merit, step, full, decomposition) ||
                        (options.levenberg_marquardt && iteration.levenberg_marquardt(out.x, out.at, merit));
     if (options.chord) {
       auto* lu = std::get_if<Eigen::PartialPivLU<Eigen::MatrixXd>>(&decomposition);

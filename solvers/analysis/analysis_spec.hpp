@@ -6,6 +6,7 @@
 
 #include "analysis/contact_loop_spec.hpp"
 #include "analysis/contact_modal_spec.hpp"
+#include "analysis/cyclic_modal_spec.hpp"
 #include "analysis/frf_spec.hpp"
 #include "analysis/modal_spec.hpp"
 #include "analysis/rotating_spec.hpp"
@@ -15,8 +16,8 @@
 
 namespace bb {
 
-using AnalysisSpec =
-    std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec, ContactModalSpec>;
+using AnalysisSpec = std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec,
+                                  ContactModalSpec, CyclicModalSpec>;
 
 // The case file's name of each type (`type = "..."` in [analysis]).
 constexpr std::string_view analysis_type_name(const StaticSpec&) { return "static"; }
@@ -27,6 +28,7 @@ constexpr std::string_view analysis_type_name(const TimeSpec&) { return "time"; 
 constexpr std::string_view analysis_type_name(const ContactLoopSpec&) { return "contact_loop"; }
 constexpr std::string_view analysis_type_name(const RotatingSpec&) { return "rotating"; }
 constexpr std::string_view analysis_type_name(const ContactModalSpec&) { return "contact_modal"; }
+constexpr std::string_view analysis_type_name(const CyclicModalSpec&) { return "cyclic_modal"; }
 inline std::string_view analysis_type_name(const AnalysisSpec& a) {
   return std::visit([](const auto& s) { return analysis_type_name(s); }, a);
 }

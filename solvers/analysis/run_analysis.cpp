@@ -73,6 +73,12 @@ AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmP
   return {std::move(tables), std::move(o)};
 }
 
+AnalysisResults run(const CyclicModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
+  CyclicModalOutcome o = run_cyclic_modal(model, spec);
+  ResultTables tables = cyclic_modal_tables(o);
+  return {std::move(tables), std::move(o)};
+}
+
 }  // namespace
 
 AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,

@@ -9,6 +9,7 @@
 #include "analysis/analysis_spec.hpp"
 #include "analysis/contact_loop_analysis.hpp"
 #include "analysis/contact_modal_analysis.hpp"
+#include "analysis/cyclic_modal_analysis.hpp"
 #include "analysis/frf_analysis.hpp"
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
@@ -22,7 +23,7 @@
 namespace bb {
 
 using AnalysisOutcome = std::variant<StaticOutcome, ModalOutcome, FrfOutcome, HbmOutcome, TimeOutcome,
-                                     ContactLoopOutcome, RotatingOutcome, ContactModalOutcome>;
+                                     ContactLoopOutcome, RotatingOutcome, ContactModalOutcome, CyclicModalOutcome>;
 
 template <typename Spec>
 struct OutcomeOf;
@@ -57,6 +58,10 @@ struct OutcomeOf<RotatingSpec> {
 template <>
 struct OutcomeOf<ContactModalSpec> {
   using type = ContactModalOutcome;
+};
+template <>
+struct OutcomeOf<CyclicModalSpec> {
+  using type = CyclicModalOutcome;
 };
 static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<AnalysisSpec>,
               "one outcome per analysis type");

@@ -31,7 +31,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/errors.hpp"
+#include "articles/dimension_error.hpp"
 #include "mesh/hex_block.hpp"
 
 namespace bb {
@@ -76,17 +76,6 @@ struct TwoBladeDimensions {
   // Throws DimensionError naming the first dimension that makes the geometry impossible
   // (non-positive size, overlapping bodies, a clearance that closes, a point with no node).
   void validate() const;
-};
-
-// InputError whose name() is the offending member of TwoBladeDimensions (e.g. "H_n"), so a
-// case parser can point at the line that set it.
-class DimensionError : public InputError {
- public:
-  DimensionError(std::string name, const std::string& message) : InputError(message), name_(std::move(name)) {}
-  const std::string& name() const { return name_; }
-
- private:
-  std::string name_;
 };
 
 // Every double member by name, in declaration order: what a case's [mesh.dimensions] may set.

@@ -9,6 +9,7 @@
 #include "cases/parse_common.hpp"
 #include "cases/parse_contact_loop.hpp"
 #include "cases/parse_contact_modal.hpp"
+#include "cases/parse_cyclic_modal.hpp"
 #include "cases/parse_fidelity.hpp"
 #include "cases/parse_frf.hpp"
 #include "cases/parse_hbm.hpp"
@@ -43,6 +44,7 @@ constexpr AnalysisParser kAnalysisParsers[] = {
     {"contact_loop", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_contact_loop(r); }},
     {"rotating", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_rotating(r); }},
     {"contact_modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_contact_modal(r); }},
+    {"cyclic_modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_cyclic_modal(r); }},
 };
 static_assert(std::size(kAnalysisParsers) == std::variant_size_v<AnalysisSpec>, "one parser per analysis type");
 
@@ -77,6 +79,7 @@ ModelNeed model_need(const TimeSpec& s) { return model_need(s.system); }
 ModelNeed model_need(const ContactLoopSpec&) { return ModelNeed::nothing; }
 ModelNeed model_need(const RotatingSpec&) { return ModelNeed::mesh; }
 ModelNeed model_need(const ContactModalSpec&) { return ModelNeed::mesh; }
+ModelNeed model_need(const CyclicModalSpec&) { return ModelNeed::mesh; }
 
 CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   CheckSpec c;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "cases/parse_bladed_disk.hpp"
 #include "cases/parse_common.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
@@ -145,8 +146,14 @@ void parse_blade_section(TomlReader& r, MeshSpec& m) {
 MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
   MeshSpec m;
   m.at = r.location();
-  const std::string kind = r.choice("kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "two_blade", "blade_section"});
+  const std::string kind =
+      r.choice("kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "two_blade", "blade_section", "bladed_disk"});
   m.element = parse_element(r);
+  if (kind == "bladed_disk") {
+    parse_bladed_disk(r, m);
+    r.finish();
+    return m;
+  }
   if (kind == "blade_section") {
     parse_blade_section(r, m);
     r.finish();
@@ -396,16 +403,20 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
         TomlReader(*sets, "sets", file).fail(name, problem);
       if (!v.is_table()) top.fail("sets", fmt::format("set '{}' must be a table [sets.{}]", name, name));
       spec.sets.push_back(parse_set(TomlReader(*v.as_table(), "sets." + name, file), name));
-      if (spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::blade_section) {
-        const auto reserved =
-            spec.mesh.kind == MeshSpec::Kind::two_blade ? two_blade_set_names() : blade_section_set_names();
+      if (spec.mesh.kind == MeshSpec::Kind::two_blade || spec.mesh.kind == MeshSpec::Kind::blade_section ||
+          spec.mesh.kind == MeshSpec::Kind::bladed_disk) {
+        const auto reserved = spec.mesh.kind == MeshSpec::Kind::two_blade     ? two_blade_set_names()
+                              : spec.mesh.kind == MeshSpec::Kind::bladed_disk ? bladed_disk_set_names()
+                                                                              : blade_section_set_names();
         const auto contact_sets = two_blade_contact_set_names();
         const bool contact_name = spec.mesh.kind == MeshSpec::Kind::two_blade &&
                                   std::find(contact_sets.begin(), contact_sets.end(), name) != contact_sets.end();
         if (contact_name || std::find(reserved.begin(), reserved.end(), name) != reserved.end())
           throw InputError(fmt::format("{}: 'sets.{}': the {} mesh defines this set itself ({}); choose another name",
                                        spec.sets.back().at.where(), name,
-                                       spec.mesh.kind == MeshSpec::Kind::two_blade ? "two_blade" : "blade_section",
+                                       spec.mesh.kind == MeshSpec::Kind::two_blade     ? "two_blade"
+                                       : spec.mesh.kind == MeshSpec::Kind::bladed_disk ? "bladed_disk"
+                                                                                       : "blade_section",
                                        fmt::join(reserved, ", ")));
       }
     }

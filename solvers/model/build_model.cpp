@@ -8,11 +8,11 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
-#include "model/contact_pairs.hpp"
 #include "mesh/boundary.hpp"
 #include "mesh/csv_mesh.hpp"
 #include "mesh/gmsh_import.hpp"
 #include "mesh/hex_block.hpp"
+#include "model/contact_pairs.hpp"
 
 namespace bb {
 namespace {
@@ -202,6 +202,12 @@ Model build_model(const ModelSpec& spec) {
       model.node_sets = std::move(b.sets);
       break;
     }
+    case MeshSpec::Kind::bladed_disk: {
+      BladedDiskSector s = bladed_disk_sector(spec.mesh.bladed_disk, spec.mesh.element);
+      model.mesh = std::move(s.mesh);
+      model.node_sets = std::move(s.sets);
+      break;
+    }
     case MeshSpec::Kind::none:
       return model;  // the analysis brings its own matrices
     case MeshSpec::Kind::gmsh: {
@@ -226,15 +232,15 @@ Model build_model(const ModelSpec& spec) {
       if (body == body_nodes.end()) {
         std::string known;
         for (const auto& [name, members] : body_nodes) known += (known.empty() ? "" : ", ") + name;
-        throw InputError(fmt::format("{}: node set '{}': the mesh has no body '{}' ({})", s.at.where(), s.name, s.body,
-                                     known.empty() ? "bodies are named by [[mesh.block]] body = ..." : "bodies: " + known));
+        throw InputError(
+            fmt::format("{}: node set '{}': the mesh has no body '{}' ({})", s.at.where(), s.name, s.body,
+                        known.empty() ? "bodies are named by [[mesh.block]] body = ..." : "bodies: " + known));
       }
       std::vector<int> in_body;
       std::set_intersection(nodes.begin(), nodes.end(), body->second.begin(), body->second.end(),
                             std::back_inserter(in_body));
       if (in_body.empty())
-        throw InputError(
-            fmt::format("{}: node set '{}' matches no node of body '{}'", s.at.where(), s.name, s.body));
+        throw InputError(fmt::format("{}: node set '{}' matches no node of body '{}'", s.at.where(), s.name, s.body));
       nodes = std::move(in_body);
     }
     model.node_sets[s.name] = std::move(nodes);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "articles/blade_section.hpp"
+#include "articles/bladed_disk.hpp"
 #include "articles/two_blade.hpp"
 #include "common/source_location.hpp"
 #include "mesh/hex_block.hpp"
@@ -25,6 +26,7 @@ struct MeshSpec {
     gmsh,
     two_blade,
     blade_section,
+    bladed_disk,
     none
   } kind = Kind::mapped_quad;  // none: matrices only
   MappedQuadSpec mapped;
@@ -36,6 +38,7 @@ struct MeshSpec {
   std::filesystem::path gmsh_file;        // gmsh: .msh 4.1 ASCII
   TwoBladeDimensions two_blade;           // two_blade and blade_section: the thesis's test article, validated
   BladeSectionDivisions blade_divisions;  // blade_section: the chapter-2 blade's divisions
+  BladedDiskDimensions bladed_disk;       // bladed_disk: one sector, validated
   ElementType element = ElementType::q4;
   // two_blade: false leaves the root interfaces (root on wedge, root shoulders under the fixture
   // arms) unmerged and names their surfaces (two_blade_contact_set_names()) for contact pairs.

@@ -30,6 +30,7 @@ void files(const TimeSpec&, const TimeOutcome&, const fs::path&, RunRecord&) {}
 void files(const ContactLoopSpec&, const ContactLoopOutcome&, const fs::path&, RunRecord&) {}
 void files(const RotatingSpec&, const RotatingOutcome&, const fs::path&, RunRecord&) {}
 void files(const ContactModalSpec&, const ContactModalOutcome&, const fs::path&, RunRecord&) {}
+void files(const CyclicModalSpec&, const CyclicModalOutcome&, const fs::path&, RunRecord&) {}
 
 }  // namespace
 

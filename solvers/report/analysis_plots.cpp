@@ -8,6 +8,7 @@
 #include "report/contact_loop_plots.hpp"
 #include "report/contact_modal_plots.hpp"
 #include "report/contour_plots.hpp"
+#include "report/cyclic_plots.hpp"
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
 #include "report/nonlinear_mode_plots.hpp"
@@ -114,6 +115,17 @@ void plots(const ContactModalSpec& spec, const ContactModalOutcome& o, const Plo
   for (int m = 1; m <= spec.modes; ++m)
     t.run.plots.push_back(plot_contact_mode(o, spec, m, t.out, fmt::format("contact_mode{}", m)));
   if (o.tables.count("contact_state")) t.run.plots.push_back(plot_contact_pressure(o, t.out, "contact_pressure"));
+}
+
+void plots(const CyclicModalSpec& spec, const CyclicModalOutcome& o, const PlotTarget& t) {
+  t.run.plots.push_back(plot_nodal_diameter_map(o, spec, t.out, "nodal_diameter_map"));
+  // The first family at the lowest and the highest nodal diameter solved.
+  if (o.diameters.empty()) return;
+  for (size_t i : {size_t{0}, o.diameters.size() - 1}) {
+    t.run.plots.push_back(
+        plot_sector_wave(o, t.model.mesh, i, 1, t.out, fmt::format("wave_nd{}", o.diameters[i].nodal_diameter)));
+    if (o.diameters.size() == 1) break;
+  }
 }
 
 }  // namespace

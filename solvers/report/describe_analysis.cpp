@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "cache/model_cache.hpp"
+#include "report/describe_cyclic.hpp"
 #include "report/describe_hbm.hpp"
 
 namespace bb {
@@ -329,6 +330,19 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
           spec.mesh.element == ElementType::hex8 ? ", extruded, damper-face corners left out" : "",
           2 * n.root_side_columns + n.airfoil_columns + 2, n.root_rows, n.neck_rows, n.lip_rows, n.airfoil_columns,
           n.airfoil_rows, spec.mesh.element == ElementType::hex8 ? fmt::format(", {} layers through t", n.layers) : "");
+      break;
+    }
+    case MeshSpec::Kind::bladed_disk: {
+      const BladedDiskDimensions& d = spec.mesh.bladed_disk;
+      source = fmt::format(
+          "bladed-disk sector ({} sectors; bore {:.4g} m, rim {:.4g} m, tip {:.4g} m), refinement {}, "
+          "{} divisions along the chord, {} along the airfoil",
+          d.sectors, d.bore_radius(), d.rim_radius(), d.tip_radius(), d.refinement, d.chord_divisions * d.refinement,
+          d.airfoil_divisions * d.refinement);
+      std::string dims;
+      for (const BladedDiskDimensionField& f : bladed_disk_dimension_fields())
+        dims += fmt::format("{}{} = {}", dims.empty() ? "" : ", ", f.name, g(d.*f.member));
+      run.facts.emplace_back("bladed-disk dimensions [m]", dims);
       break;
     }
     case MeshSpec::Kind::two_blade: {

@@ -1,0 +1,170 @@
+#include "analysis/cyclic_modal_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "assembly/free_system.hpp"
+#include "common/errors.hpp"
+#include "common/seconds_since.hpp"
+#include "cyclic/whole_disk.hpp"
+#include "linalg/inertia.hpp"
+
+namespace bb {
+namespace {
+
+const std::vector<int>& face_set(const Model& model, const std::string& name, const CyclicModalSpec& spec) {
+  const auto it = model.node_sets.find(name);
+  if (it == model.node_sets.end() || it->second.empty())
+    throw InputError(
+        fmt::format("{}: cyclic face set '{}' is not a node set of the model (or has no node)", spec.at.where(), name));
+  return it->second;
+}
+
+// The nodal diameter that engine order EO excites on N sectors: EO mod N folded into 0..N/2.
+int excited_diameter(int engine_order, int sectors) {
+  const int k = engine_order % sectors;
+  return std::min(k, sectors - k);
+}
+
+WholeStructureCheck check_whole(const Model& sector, const CyclicModalSpec& spec, const FreeSystem& s,
+                                const CyclicDofs& cyclic, const std::vector<NodalDiameterModes>& diameters) {
+  const auto t0 = std::chrono::steady_clock::now();
+  WholeStructureCheck w;
+  // Every family of every nodal diameter below the lowest top family is known: the cut sits just
+  // under it, away from that eigenvalue.
+  double top = INFINITY;
+  for (const NodalDiameterModes& nd : diameters) top = std::min(top, nd.frequencies_hz[spec.families - 1]);
+  w.cut_hz = top * (1.0 - 1e-6);
+  std::vector<std::pair<double, int>> members;
+  for (const NodalDiameterModes& nd : diameters)
+    for (Eigen::Index f = 0; f < nd.frequencies_hz.size(); ++f)
+      if (nd.frequencies_hz[f] < w.cut_hz)
+        for (int c = 0; c < (nd.pairs ? 2 : 1); ++c) members.emplace_back(nd.frequencies_hz[f], nd.nodal_diameter);
+  std::sort(members.begin(), members.end());
+  w.union_hz.resize(static_cast<Eigen::Index>(members.size()));
+  for (size_t i = 0; i < members.size(); ++i) {
+    w.union_hz[static_cast<Eigen::Index>(i)] = members[i].first;
+    w.union_diameter.push_back(members[i].second);
+  }
+  const Model whole = whole_from_sector(sector, spec.sectors, spec.face_tolerance);
+  const FreeSystem ws = assemble_free_system(whole);
+  w.free_dofs = ws.dofs.n_free;
+  const double sigma = std::pow(2 * std::numbers::pi * w.cut_hz, 2);
+  const InertiaCount count = eigenvalues_below(ws.stiffness, ws.mass, sigma);
+  if (!count.ok)
+    throw SolverError(fmt::format("whole structure: Sturm count at {:.6g} Hz: {}", w.cut_hz, count.message));
+  w.whole_count = count.negative;
+  w.sector_count_sum = 0;
+  for (const NodalDiameterModes& nd : diameters) {
+    const int c = nodal_diameter_count(s.stiffness, s.mass, cyclic, nd.nodal_diameter, w.cut_hz);
+    if (c < 0)
+      throw SolverError(fmt::format("nodal diameter {}: Sturm count at {:.6g} Hz failed", nd.nodal_diameter, w.cut_hz));
+    w.sector_count_sum += (nd.pairs ? 2 : 1) * c;
+  }
+  if (count.negative > 0) {
+    ModalOptions options = spec.options;
+    options.n_modes = count.negative;
+    const ModalSolution sol = lowest_modes(ws.stiffness, ws.mass, options);
+    w.whole_hz = (sol.eigenvalues.head(count.negative).cwiseMax(0.0).cwiseSqrt() / (2 * std::numbers::pi)).eval();
+  }
+  w.seconds = seconds_since(t0);
+  return w;
+}
+
+}  // namespace
+
+CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& spec) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const FreeSystem s = assemble_free_system(model);
+  const SectorFaces faces =
+      pair_sector_faces(model.mesh, face_set(model, spec.left, spec), face_set(model, spec.right, spec), spec.sectors,
+                        spec.face_tolerance, spec.at.where());
+  const CyclicDofs cyclic = cyclic_dofs(model.mesh, s.dofs, faces, spec.sectors);
+  CyclicModalOutcome o;
+  o.sectors = spec.sectors;
+  o.dofs = s.dofs;
+  o.assembly_seconds = s.assembly_seconds + seconds_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  std::vector<int> diameters = spec.nodal_diameters;
+  if (diameters.empty() || spec.whole)
+    for (int k = 0, n = static_cast<int>(diameters.size()); 2 * k <= spec.sectors && (n == 0 || spec.whole); ++k)
+      if (std::find(diameters.begin(), diameters.end(), k) == diameters.end()) diameters.push_back(k);
+  std::sort(diameters.begin(), diameters.end());
+  for (int k : diameters)
+    o.diameters.push_back(nodal_diameter_modes(s.stiffness, s.mass, cyclic, k, spec.families, spec.options));
+  o.solve_seconds = seconds_since(t1);
+  if (spec.whole) o.whole = check_whole(model, spec, s, cyclic, o.diameters);
+  for (int eo : spec.engine_orders) {
+    const int k = excited_diameter(eo, spec.sectors);
+    for (const NodalDiameterModes& nd : o.diameters)
+      if (nd.nodal_diameter == k)
+        for (Eigen::Index f = 0; f < nd.frequencies_hz.size(); ++f) {
+          const double rpm = 60.0 * nd.frequencies_hz[f] / eo;
+          if (rpm <= spec.max_speed_rpm)
+            o.resonances.push_back({eo, k, static_cast<int>(f) + 1, nd.frequencies_hz[f], rpm});
+        }
+  }
+  return o;
+}
+
+ResultTables cyclic_modal_tables(const CyclicModalOutcome& o) {
+  ResultTables tables;
+  auto add = [&](ResultTable t) { tables.emplace(t.name, std::move(t)); };
+  // Every nodal diameter has at least the families asked for (a straddling pair adds one).
+  Eigen::Index families = o.diameters.empty() ? 0 : o.diameters.front().frequencies_hz.size();
+  for (const NodalDiameterModes& nd : o.diameters) families = std::min(families, nd.frequencies_hz.size());
+  {
+    std::vector<std::string> columns = {"nodal_diameter"};
+    for (Eigen::Index f = 0; f < families; ++f) columns.push_back(fmt::format("f{}_hz", f + 1));
+    std::vector<std::vector<double>> rows;
+    for (const NodalDiameterModes& nd : o.diameters) {
+      std::vector<double> row = {static_cast<double>(nd.nodal_diameter)};
+      for (Eigen::Index f = 0; f < families; ++f) row.push_back(nd.frequencies_hz[f]);
+      rows.push_back(std::move(row));
+    }
+    add(table_from_rows("nodal_diameter_map", columns, rows));
+  }
+  {
+    std::vector<std::vector<double>> rows;
+    for (const NodalDiameterModes& nd : o.diameters)
+      rows.push_back({static_cast<double>(nd.nodal_diameter), nd.pairs ? 2.0 : 1.0,
+                      static_cast<double>(nd.frequencies_hz.size()), static_cast<double>(nd.sturm_count),
+                      nd.sturm_frequency_hz, static_cast<double>(nd.reduced_size), static_cast<double>(nd.lanczos_runs),
+                      nd.max_residual, nd.seconds});
+    add(table_from_rows("cyclic_completeness",
+                        {"nodal_diameter", "multiplicity", "families", "sturm_count", "sturm_frequency_hz",
+                         "reduced_unknowns", "lanczos_runs", "max_residual", "seconds"},
+                        rows));
+  }
+  if (o.whole) {
+    const WholeStructureCheck& w = *o.whole;
+    std::vector<std::vector<double>> u, h;
+    for (Eigen::Index i = 0; i < w.union_hz.size(); ++i)
+      u.push_back(
+          {static_cast<double>(i + 1), w.union_hz[i], static_cast<double>(w.union_diameter[static_cast<size_t>(i)])});
+    for (Eigen::Index i = 0; i < w.whole_hz.size(); ++i) h.push_back({static_cast<double>(i + 1), w.whole_hz[i]});
+    add(table_from_rows("cyclic_spectrum", {"index", "frequency_hz", "nodal_diameter"}, u));
+    add(table_from_rows("whole_spectrum", {"index", "frequency_hz"}, h));
+    add(table_from_rows("whole_count", {"cut", "cut_hz", "whole_count", "sector_count_sum", "union_size"},
+                        {{1.0, w.cut_hz, static_cast<double>(w.whole_count), static_cast<double>(w.sector_count_sum),
+                          static_cast<double>(w.union_hz.size())}}));
+  }
+  if (!o.resonances.empty()) {
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < o.resonances.size(); ++i) {
+      const EngineOrderResonance& r = o.resonances[i];
+      rows.push_back({static_cast<double>(i + 1), static_cast<double>(r.engine_order),
+                      static_cast<double>(r.nodal_diameter), static_cast<double>(r.family), r.frequency_hz,
+                      r.speed_rpm});
+    }
+    add(table_from_rows("engine_order_resonances",
+                        {"row", "engine_order", "nodal_diameter", "family", "frequency_hz", "speed_rpm"}, rows));
+  }
+  return tables;
+}
+
+}  // namespace bb

@@ -177,6 +177,19 @@ int export_command(const ExportArgs& a) {
     const bb::CaseSpec spec = bb::parse_case_file(a.case_file);
     const auto* modal = std::get_if<bb::ModalSpec>(&spec.analysis);
     const auto* contact = std::get_if<bb::ContactModalSpec>(&spec.analysis);
+    if (const auto* cyclic = std::get_if<bb::CyclicModalSpec>(&spec.analysis)) {
+      const int families = a.modes > 0 ? a.modes : cyclic->families;
+      const bb::CalculixCyclic c{
+          cyclic->sectors, cyclic->left, cyclic->right,
+          cyclic->nodal_diameters.empty() ? 0 : cyclic->nodal_diameters.front(),
+          cyclic->nodal_diameters.empty() ? cyclic->sectors / 2 : cyclic->nodal_diameters.back()};
+      bb::write_calculix_frequency_deck(bb::build_model(spec.model), 2 * families, a.out, nullptr, &c);
+      std::fprintf(stderr,
+                   "%s: CalculiX cyclic-symmetry deck, nodal diameters %d..%d, %d modes each (every family "
+                   "twice) -> %s\n",
+                   a.case_file.c_str(), c.nd_min, c.nd_max, 2 * families, a.out.c_str());
+      return bb::exit_pass;
+    }
     const int modes = a.modes > 0 ? a.modes
                       : modal     ? modal->modes.lowest
                       : contact   ? contact->modes
@@ -303,7 +316,10 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   export_ccx->add_option("--out", export_args.out, "Deck to write (.inp)")->required();
-  export_ccx->add_option("--modes", export_args.modes, "Modes to ask for (default: the case's analysis.modes)")
+  export_ccx
+      ->add_option("--modes", export_args.modes,
+                   "Modes to ask for (default: the case's analysis.modes; a cyclic_modal case: families per nodal "
+                   "diameter)")
       ->check(CLI::PositiveNumber);
 
   std::string html_folder;

@@ -9,6 +9,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "common/errors.hpp"
 #include "contact/surface_contact.hpp"
@@ -71,8 +72,9 @@ void write_list(std::ofstream& out, const std::vector<long>& values, size_t per_
 // (mesh/element_topology.cpp lists them in CalculiX's order: S1 = 1-2-3-4, S2 = 5-8-7-6, ...).
 void write_contact(std::ofstream& out, const Model& model, const CalculixContact& c) {
   if (c.roughness > 0)
-    throw InputError("CalculiX export: the stiffening (rough) contact law has no ccx counterpart; export a case with "
-                     "roughness_m = 0 (ccx's PRESSURE-OVERCLOSURE=LINEAR is the linear penalty law)");
+    throw InputError(
+        "CalculiX export: the stiffening (rough) contact law has no ccx counterpart; export a case with "
+        "roughness_m = 0 (ccx's PRESSURE-OVERCLOSURE=LINEAR is the linear penalty law)");
   const Mesh& mesh = model.mesh;
   std::vector<long> first_element(mesh.blocks.size() + 1, 1);
   for (size_t k = 0; k < mesh.blocks.size(); ++k)
@@ -123,10 +125,40 @@ void write_contact(std::ofstream& out, const Model& model, const CalculixContact
   }
 }
 
+void write_cyclic(std::ofstream& out, const Model& model, const CalculixCyclic& c) {
+  std::map<int, std::set<Direction>> constrained;
+  for (const Constraint& k : model.constraints)
+    if (const auto it = model.node_sets.find(k.set); it != model.node_sets.end())
+      for (const int n : it->second) constrained[n].insert(k.directions.begin(), k.directions.end());
+  for (const auto& [name, set, dependent] :
+       {std::tuple{"CYCLIC_LEFT", c.left, false}, {"CYCLIC_RIGHT", c.right, true}}) {
+    const auto it = model.node_sets.find(set);
+    if (it == model.node_sets.end())
+      throw InputError(fmt::format("CalculiX export: cyclic face set '{}' is not a node set of the model", set));
+    std::vector<long> nodes;
+    for (const int i : it->second) {
+      const auto fixed = constrained.find(i);
+      if (dependent && fixed != constrained.end() && fixed->second.size() != 3)
+        throw InputError(
+            fmt::format("CalculiX export: node {} of cyclic face '{}' is constrained in some directions "
+                        "only: ccx can neither tie it nor leave it out",
+                        model.mesh.node_ids[static_cast<size_t>(i)], set));
+      if (!dependent || fixed == constrained.end()) nodes.push_back(i + 1L);
+    }
+    if (nodes.empty())
+      throw InputError(fmt::format("CalculiX export: every node of cyclic face '{}' is clamped: nothing to tie", set));
+    out << fmt::format("*NSET, NSET={}\n", name);
+    write_list(out, nodes, 10, false);
+    out << fmt::format("*SURFACE, NAME=S_{}, TYPE=NODE\n{}\n", name, name);
+  }
+  out << "*TIE, NAME=CYCLIC, CYCLIC SYMMETRY\nS_CYCLIC_RIGHT, S_CYCLIC_LEFT\n"
+      << fmt::format("*CYCLIC SYMMETRY MODEL, N={}, NGRAPH=1, TIE=CYCLIC\n0., 0., 0., 0., 0., 1.\n", c.sectors);
+}
+
 }  // namespace
 
 void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp,
-                                   const CalculixContact* contact) {
+                                   const CalculixContact* contact, const CalculixCyclic* cyclic) {
   const Mesh& mesh = model.mesh;
   if (mesh.dim != 3) throw InputError("CalculiX export: only 3D solid meshes (hex8, hex8i, hex20) are exported");
   if (n_modes < 1) throw InputError(fmt::format("CalculiX export: asked for {} modes; give at least 1", n_modes));
@@ -193,15 +225,16 @@ void write_calculix_frequency_deck(const Model& model, int n_modes, const std::f
   for (size_t k = 0; k < mesh.blocks.size(); ++k)
     out << fmt::format("*SOLID SECTION, ELSET=E{}, MATERIAL=MAT\n", k + 1);
 
+  if (cyclic) write_cyclic(out, model, *cyclic);
   if (contact) {
     write_contact(out, model, *contact);
     out << "*STEP\n*STATIC\n*END STEP\n*STEP, PERTURBATION\n";
   } else {
     out << "*STEP\n";
   }
-  out << "*FREQUENCY\n"
-      << n_modes << '\n'
-      << "** add '*NODE FILE' and 'U' here to write the mode shapes to the .frd file\n"
+  out << "*FREQUENCY\n" << n_modes << '\n';
+  if (cyclic) out << fmt::format("*SELECT CYCLIC SYMMETRY MODES, NMIN={}, NMAX={}\n", cyclic->nd_min, cyclic->nd_max);
+  out << "** add '*NODE FILE' and 'U' here to write the mode shapes to the .frd file\n"
          "*END STEP\n";
   if (!out) throw std::runtime_error("failed writing " + inp.string());
 }

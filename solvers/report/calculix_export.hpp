@@ -30,7 +30,18 @@ struct CalculixContact {
   bool sticking = true;
   double roughness = 0.0;
 };
+//
+// With `cyclic`, the model is one sector of a structure of `sectors` about the z axis: the two
+// faces are tied by *TIE, CYCLIC SYMMETRY (the right face dependent, without its constrained
+// nodes, which ccx refuses on the dependent side of its MPCs; their partners are constrained
+// alike), *CYCLIC SYMMETRY MODEL, and *SELECT CYCLIC SYMMETRY MODES picks the nodal diameters.
+// ccx returns each nodal diameter's modes twice (cosine and sine), so ask for twice the families.
+struct CalculixCyclic {
+  int sectors = 0;
+  std::string left, right;  // node sets of the cyclic faces
+  int nd_min = 0, nd_max = 0;
+};
 void write_calculix_frequency_deck(const Model& model, int n_modes, const std::filesystem::path& inp,
-                                   const CalculixContact* contact = nullptr);
+                                   const CalculixContact* contact = nullptr, const CalculixCyclic* cyclic = nullptr);
 
 }  // namespace bb

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -50,8 +51,8 @@ class CalculixDeck : public ::testing::Test {
   }
   void TearDown() override { fs::remove(file_); }
 
-  std::vector<std::string> write(const Model& model, int n_modes) {
-    write_calculix_frequency_deck(model, n_modes, file_);
+  std::vector<std::string> write(const Model& model, int n_modes, const CalculixCyclic* cyclic = nullptr) {
+    write_calculix_frequency_deck(model, n_modes, file_, nullptr, cyclic);
     std::ifstream in(file_);
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);) lines.push_back(line);
@@ -187,6 +188,41 @@ TEST_F(CalculixDeck, PlaneMeshAndNoModesAreRejected) {
   plane.mesh.dim = 2;
   EXPECT_THROW(write_calculix_frequency_deck(plane, 5, file_), InputError);
   EXPECT_THROW(write_calculix_frequency_deck(box_model(ElementType::hex20, 1), 0, file_), InputError);
+}
+
+// A cyclic sector: the faces tied with the right one dependent, its clamped nodes left out (ccx
+// refuses an SPC on the dependent side of an MPC), the nodal diameters selected in the step.
+TEST_F(CalculixDeck, CyclicSectorTiesItsFacesWithoutConstrainedDependentNodes) {
+  Model model = box_model(ElementType::hex8, 2);
+  model.constraints.pop_back();                          // the tip end free
+  model.node_sets["left"] = model.node_sets.at("root");  // 4 nodes, all clamped
+  std::vector<int>& right_nodes = model.node_sets["right"];
+  right_nodes = model.node_sets.at("tip end");  // 4 free nodes and 2 clamped ones
+  right_nodes.push_back(model.node_sets.at("root")[0]);
+  right_nodes.push_back(model.node_sets.at("root")[1]);
+  const CalculixCyclic cyclic{12, "left", "right", 0, 6};
+  const std::vector<std::string> lines = write(model, 8, &cyclic);
+  auto at = [&](const std::string& text) {
+    for (size_t i = 0; i < lines.size(); ++i)
+      if (lines[i] == text) return i;
+    ADD_FAILURE() << "no line '" << text << "'";
+    return lines.size();
+  };
+  const size_t left = at("*NSET, NSET=CYCLIC_LEFT"), right = at("*NSET, NSET=CYCLIC_RIGHT");
+  ASSERT_LT(left + 1, lines.size());
+  EXPECT_EQ(std::count(lines[left + 1].begin(), lines[left + 1].end(), ','), 3);    // the independent face whole
+  EXPECT_EQ(std::count(lines[right + 1].begin(), lines[right + 1].end(), ','), 3);  // the free four only
+  EXPECT_EQ(lines[right + 2], "*SURFACE, NAME=S_CYCLIC_RIGHT, TYPE=NODE");
+  const size_t tie = at("*TIE, NAME=CYCLIC, CYCLIC SYMMETRY");
+  EXPECT_EQ(lines[tie + 1], "S_CYCLIC_RIGHT, S_CYCLIC_LEFT");
+  const size_t model_line = at("*CYCLIC SYMMETRY MODEL, N=12, NGRAPH=1, TIE=CYCLIC");
+  EXPECT_EQ(lines[model_line + 1], "0., 0., 0., 0., 0., 1.");
+  const size_t select = at("*SELECT CYCLIC SYMMETRY MODES, NMIN=0, NMAX=6");
+  EXPECT_EQ(lines[select - 1], "8");
+  EXPECT_LT(model_line, at("*STEP"));
+  // A node constrained in some directions only cannot be tied nor left out.
+  model.constraints.push_back({.set = "tip end", .directions = {2}, .value = 0.0});
+  EXPECT_THROW(write(model, 8, &cyclic), InputError);
 }
 
 }  // namespace

@@ -289,12 +289,15 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   const std::vector<std::string> kinds = peak_kinds(p);
   const friction::FrictionModel& m = p.model;
   const Index nb = p.blade_dofs;
-  const Eigen::MatrixXd stuck = friction::stuck_stiffness(m);
+  // Harmonic 1 of a travelling wave: a cyclic contact couples its next sector with a phase.
+  const Eigen::MatrixXcd stuck = friction::stuck_stiffness(m, 1);
   // Limit 0: the linear model alone (the damper's DOFs left out); 1: every contact stuck.
-  const auto limit_solve = [&](int l, double w) {
-    return l == 0 ? direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),
-                                    m.mass.topLeftCorner(nb, nb), w, m.harmonic_load.head(nb))
-                  : direct_response(stuck, m.damping, m.mass, w, m.harmonic_load);
+  const auto limit_solve = [&](int l, double w) -> Eigen::VectorXcd {
+    if (l == 0)
+      return direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),
+                             m.mass.topLeftCorner(nb, nb), w, m.harmonic_load.head(nb));
+    const Eigen::MatrixXcd d = stuck + std::complex<double>(0.0, w) * m.damping - w * w * m.mass;
+    return d.partialPivLu().solve(m.harmonic_load);
   };
   const int n_grid = 2001;
   o.limit_frequency_hz = Eigen::VectorXd::LinSpaced(n_grid, spec.sweep.f_min, spec.sweep.f_max);

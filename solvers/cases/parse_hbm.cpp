@@ -57,6 +57,8 @@ HbmContactSpec parse_contact(TomlReader r) {
   c.distribution = parse_slider_distribution(r, c.law);
   c.tangential = parse_combination(r, "tangential");
   if (r.has("normal")) c.normal = parse_combination(r, "normal");
+  if (r.has("tangential_next")) c.tangential_next = parse_combination(r, "tangential_next");
+  if (r.has("normal_next")) c.normal_next = parse_combination(r, "normal_next");
   r.finish();
   return c;
 }
@@ -161,6 +163,37 @@ NonlinearModesSpec parse_nonlinear_modes(TomlReader r, const HbmSpec& hbm) {
 
 }  // namespace
 
+// [analysis.cyclic], and the next-sector terms of the contacts that need it.
+void parse_cyclic(TomlReader& r, HbmSpec& s, bool harmonic_balance) {
+  const toml::table* t = r.optional_table("cyclic");
+  if (!t) {
+    for (size_t i = 0; i < s.contacts.size(); ++i)
+      if (!s.contacts[i].tangential_next.empty() || !s.contacts[i].normal_next.empty())
+        r.fail("contact",
+               fmt::format("contact '{}' names next-sector terms: they need [analysis.cyclic]", s.contacts[i].name));
+    return;
+  }
+  TomlReader c(*t, r.path() + ".cyclic", r.file());
+  if (!harmonic_balance)
+    r.fail("cyclic", "a travelling wave of one sector is solved by the harmonic balance (type = \"hbm\") only");
+  HbmCyclicSpec cyclic;
+  cyclic.at = c.location();
+  cyclic.sectors = static_cast<int>(c.integer("sectors", 2, 10000));
+  cyclic.engine_order = static_cast<int>(c.integer("engine_order", 0, 1000000));
+  cyclic.whole = c.boolean("whole", false);
+  c.finish();
+  const char* refused = s.damper                                  ? "damper"
+                        : !s.sensitivities.empty()                ? "sensitivities"
+                        : s.nonlinear_modes                       ? "nonlinear_modes"
+                        : s.stability != HbmSpec::Stability::none ? "stability"
+                                                                  : nullptr;
+  if (refused)
+    r.fail(refused,
+           "is not built for one sector of a cyclic structure (the travelling wave of [analysis.cyclic]); "
+           "leave it out or model the whole structure");
+  s.cyclic = cyclic;
+}
+
 HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required) {
   HbmSpec s;
   s.at = r.location();
@@ -259,10 +292,9 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     if (!(f > 0) || !std::isfinite(f)) r.fail("force_levels", "every level must be a positive force [N]");
     if (!unique.insert(f).second) r.fail("force_levels", fmt::format("level {} N is listed twice", f));
     if (const auto [it, fresh] = tables.emplace(hbm_frf_table_name(f), f); !fresh)
-      r.fail("force_levels",
-             fmt::format("levels {} N and {} N would both write table '{}' (a level is named by its "
-                         "first 6 significant digits): make them differ there",
-                         it->second, f, it->first));
+      r.fail("force_levels", fmt::format("levels {} N and {} N would both write table '{}' (a level is named by its "
+                                         "first 6 significant digits): make them differ there",
+                                         it->second, f, it->first));
   }
   if (const toml::table* t = r.optional_table("ip_oop")) {
     TomlReader p(*t, r.path() + ".ip_oop", r.file());
@@ -352,6 +384,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     if (!contacts_required) r.fail("nonlinear_modes", "only a harmonic balance analysis computes nonlinear modes");
     s.nonlinear_modes = parse_nonlinear_modes(TomlReader(*t, r.path() + ".nonlinear_modes", r.file()), s);
   }
+  parse_cyclic(r, s, contacts_required);
   return s;
 }
 

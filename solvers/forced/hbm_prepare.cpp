@@ -13,6 +13,7 @@
 #include "common/seconds_since.hpp"
 #include "forced/hbm_level.hpp"
 #include "forced/linear_model.hpp"
+#include "friction/whole_ring.hpp"
 
 namespace bb {
 namespace {
@@ -67,6 +68,21 @@ Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& bla
   Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n);
   for (const auto& [dof, c] : terms) row[dof_index(p, blades, dof, where)] += c;
   return row;
+}
+
+// The sector's model replaced by the whole ring: the first sector keeps the DOF and contact
+// indices (responses, forces, contact slider ranges), the others are named "<name>@<sector>".
+void expand_to_whole_ring(PreparedHbm& p, const HbmCyclicSpec& cyclic) {
+  try {
+    p.model = friction::whole_ring(p.model, cyclic.sectors);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("{}: [analysis.cyclic] whole: {}", cyclic.at.where(), e.what()));
+  }
+  const std::vector<std::string> dofs = p.dof_names, contacts = p.contact_names;
+  for (int j = 1; j < cyclic.sectors; ++j) {
+    for (const std::string& d : dofs) p.dof_names.push_back(fmt::format("{}@{}", d, j));
+    for (const std::string& c : contacts) p.contact_names.push_back(fmt::format("{}@{}", c, j));
+  }
 }
 
 }  // namespace
@@ -132,8 +148,15 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
     // Every solver sees the law as its Jenkins sliders on the same relative motion.
     const std::vector<contact::JenkinsParameters> sliders = contact::parallel_sliders(c.law, c.distribution.get());
     p.contact_sliders.push_back({m.contacts.size(), m.contacts.size() + sliders.size()});
+    friction::ContactElement element{{}, tangential, normal};
+    if (spec.cyclic) {
+      element.tangential_next = combination_row(p, blades, c.tangential_next, n, where);
+      element.normal_next = combination_row(p, blades, c.normal_next, n, where);
+      element.next_phase = kTwoPi * spec.cyclic->engine_order / spec.cyclic->sectors;
+    }
     for (size_t i = 0; i < sliders.size(); ++i) {
-      m.contacts.push_back({sliders[i], tangential, normal});
+      element.law = sliders[i];
+      m.contacts.push_back(element);
       p.contact_names.push_back(sliders.size() == 1 ? c.name : fmt::format("{}.{}", c.name, i + 1));
     }
   }
@@ -148,6 +171,7 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   if (spec.ip_oop)
     p.ip_oop.emplace(dof_index(p, blades, spec.ip_oop->first, in_analysis + " ip_oop"),
                      dof_index(p, blades, spec.ip_oop->second, in_analysis + " ip_oop"));
+  if (spec.cyclic && spec.cyclic->whole) expand_to_whole_ring(p, *spec.cyclic);
   if (!m.contacts.empty()) {  // a time integration may run the linear model alone
     try {
       const hbm::HarmonicBalance check(m, {});  // sizes, contact laws and a nonsingular non-contact part

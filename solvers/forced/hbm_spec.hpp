@@ -24,6 +24,9 @@ namespace bb {
 struct HbmContactSpec {
   std::string name;
   std::vector<std::pair<PointDof, double>> tangential, normal;
+  // With [analysis.cyclic]: the terms of the next sector's DOFs (named as this sector's), which in
+  // the travelling wave move as this sector's shifted by 2 pi EO / N (friction/friction_system.hpp).
+  std::vector<std::pair<PointDof, double>> tangential_next, normal_next;
   contact::JenkinsParameters law;  // the point: kn, n0, its stuck kt and its Coulomb limit mu
   std::shared_ptr<const contact::SliderDistribution> distribution;  // null: one Jenkins slider
   SourceLocation at;
@@ -78,12 +81,26 @@ struct NonlinearModesSpec {
   SourceLocation at;
 };
 
+// One sector of a tuned cyclic structure (a bladed disk) in the travelling wave of an engine-order
+// excitation: the forces act on this sector, each other sector moves as it does shifted by the
+// inter-sector phase 2 pi EO / N, and contacts may join the next sector's DOFs.
+struct HbmCyclicSpec {
+  int sectors = 0;       // N
+  int engine_order = 0;  // EO
+  // Verification: the whole ring built from the sector (friction::whole_ring: N copies, the next
+  // terms on the next copy, the forces of copy j shifted by j 2 pi EO / N) solved as one structure;
+  // its tables are the first sector's.
+  bool whole = false;
+  SourceLocation at;
+};
+
 struct HbmSpec {
   RomSpec model;                                  // the linear part: masters / file / matrices
   FrfDamping damping;                             // on the linear model's modes (the damper is undamped)
   std::optional<Eigen::MatrixXd> damping_matrix;  // or C itself, written with matrices in the case
   std::vector<HbmContactSpec> contacts;
   std::optional<DamperSpec> damper;
+  std::optional<HbmCyclicSpec> cyclic;
   std::vector<std::pair<PointDof, double>> static_loads;  // [N], besides the damper's CF
   std::vector<FrfForce> forces;                           // the excitation pattern; each level scales it
   std::vector<double> force_levels;                       // amplitude of the first force at each level [N]

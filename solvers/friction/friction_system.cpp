@@ -9,7 +9,7 @@ namespace bb::friction {
 
 using Index = Eigen::Index;
 
-void validate_model(FrictionModel& m, const std::string& who) {
+void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowed) {
   const Index n = m.mass.rows();
   const auto fail = [&who](const std::string& what) { throw std::invalid_argument(fmt::format("{}: {}", who, what)); };
   if (n == 0 || m.mass.cols() != n || m.stiffness.rows() != n || m.stiffness.cols() != n)
@@ -23,7 +23,19 @@ void validate_model(FrictionModel& m, const std::string& who) {
     fail(fmt::format("loads must have {} entries (one per DOF)", n));
   if (!m.static_load.allFinite() || !m.harmonic_load.allFinite()) fail("loads must be finite");
   for (size_t k = 0; k < m.contacts.size(); ++k) {
-    const ContactElement& e = m.contacts[k];
+    ContactElement& e = m.contacts[k];
+    if (e.cyclic()) {
+      if (!cyclic_allowed)
+        fail(
+            fmt::format("contact {} joins the next sector of a cyclic structure: only the harmonic balance solves "
+                        "it (a travelling wave is periodic, not a time history of one sector)",
+                        k));
+      if (e.tangential_next.size() == 0) e.tangential_next = Eigen::RowVectorXd::Zero(n);
+      if (e.normal_next.size() == 0) e.normal_next = Eigen::RowVectorXd::Zero(n);
+      if (e.tangential_next.size() != n || e.normal_next.size() != n || !e.tangential_next.allFinite() ||
+          !e.normal_next.allFinite() || !std::isfinite(e.next_phase))
+        fail(fmt::format("contact {}: the next sector's rows must have {} finite entries, the phase be finite", k, n));
+    }
     try {
       contact::validate(e.law);
     } catch (const std::invalid_argument& error) {
@@ -40,6 +52,22 @@ Eigen::MatrixXd stuck_stiffness(const FrictionModel& model) {
   Eigen::MatrixXd k = model.stiffness;
   for (const ContactElement& c : model.contacts)
     k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+  return k;
+}
+
+Eigen::MatrixXcd stuck_stiffness(const FrictionModel& model, int harmonic) {
+  using Complex = std::complex<double>;
+  Eigen::MatrixXcd k = model.stiffness.cast<Complex>();
+  for (const ContactElement& c : model.contacts) {
+    const Complex shift = std::polar(1.0, harmonic * c.next_phase);
+    auto row = [&](const Eigen::RowVectorXd& own, const Eigen::RowVectorXd& next) {
+      Eigen::RowVectorXcd g = own.cast<Complex>();
+      if (c.cyclic()) g += shift * next.cast<Complex>();
+      return g;
+    };
+    const Eigen::RowVectorXcd gt = row(c.tangential, c.tangential_next), gn = row(c.normal, c.normal_next);
+    k += c.law.kn * gn.adjoint() * gn + c.law.kt * gt.adjoint() * gt;
+  }
   return k;
 }
 
@@ -88,12 +116,18 @@ FrictionSystem::FrictionSystem(const FrictionModel& model) {
   std::vector<bool> touched(static_cast<size_t>(n), false);
   for (const ContactElement& e : model.contacts)
     for (Index i = 0; i < n; ++i)
-      if (e.tangential[i] != 0.0 || e.normal[i] != 0.0) touched[static_cast<size_t>(i)] = true;
+      if (e.tangential[i] != 0.0 || e.normal[i] != 0.0 ||
+          (e.cyclic() && (e.tangential_next[i] != 0.0 || e.normal_next[i] != 0.0)))
+        touched[static_cast<size_t>(i)] = true;
   for (Index i = 0; i < n; ++i) (touched[static_cast<size_t>(i)] ? contact_dofs_ : other_dofs_).push_back(i);
   contacts_on_c_ = model.contacts;
   for (ContactElement& e : contacts_on_c_) {
     e.tangential = Eigen::RowVectorXd(e.tangential(contact_dofs_));
     e.normal = Eigen::RowVectorXd(e.normal(contact_dofs_));
+    if (e.cyclic()) {
+      e.tangential_next = Eigen::RowVectorXd(e.tangential_next(contact_dofs_));
+      e.normal_next = Eigen::RowVectorXd(e.normal_next(contact_dofs_));
+    }
   }
 }
 

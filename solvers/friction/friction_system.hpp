@@ -42,6 +42,16 @@ struct ContactElement {
   // closed at a static seat (e.g. a damper pressed in by CF with no friction) carries no tangential
   // force there and a stuck contact stays continuous with one that starts to slip.
   double tangential_offset = 0.0;  // [m]
+  // Cyclic symmetry (one sector of a tuned bladed disk in a travelling wave of inter-sector phase
+  // phi): the contact also moves with the next sector, whose DOFs move as this sector's own shifted
+  // in phase, q_next(theta) = q(theta + phi), so u = a_t . q(theta) + a_t,next . q(theta + phi) (and
+  // v alike); the force on this sector is then -a_t^T T(theta) - a_t,next^T T(theta - phi), the
+  // reaction the previous sector's contact puts on it. Only the harmonic balance solves such a
+  // contact (in harmonic h the shift turns the coefficients by h phi). Empty rows: no next sector.
+  Eigen::RowVectorXd tangential_next{}, normal_next{};
+  double next_phase = 0.0;  // phi [rad]
+
+  bool cyclic() const { return tangential_next.size() > 0 || normal_next.size() > 0; }
 };
 
 struct FrictionModel {
@@ -51,13 +61,18 @@ struct FrictionModel {
   Eigen::VectorXcd harmonic_load;            // n [N], complex amplitude at harmonic 1; empty = none
 };
 
-// Fills an empty C and empty loads with zeros, then checks sizes, finiteness and every contact
-// law of `model` (contacts may be empty). Throws std::invalid_argument, the message prefixed by
-// `who`. Shared by the harmonic balance and the time integration.
-void validate_model(FrictionModel& model, const std::string& who);
+// Fills an empty C and empty loads with zeros (and a cyclic contact's empty next rows), then checks
+// sizes, finiteness and every contact law of `model` (contacts may be empty); cyclic contacts only
+// where `cyclic_allowed` (the harmonic balance). Throws std::invalid_argument, the message prefixed
+// by `who`. Shared by the harmonic balance and the time integration.
+void validate_model(FrictionModel& model, const std::string& who, bool cyclic_allowed = false);
 
 // K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
+// A cyclic contact adds its own rows' springs only.
 Eigen::MatrixXd stuck_stiffness(const FrictionModel& model);
+// The same for harmonic h of a travelling wave: a cyclic contact's springs act on
+// g = a + e^{i h phi} a_next and add kt g^H g (Hermitian); equal to stuck_stiffness without one.
+Eigen::MatrixXcd stuck_stiffness(const FrictionModel& model, int harmonic);
 
 // One linear operator A condensed onto c (formulas above), A_oo factorized once (partial-pivoting
 // LU). Scalar: double (time domain) or std::complex<double> (one harmonic).

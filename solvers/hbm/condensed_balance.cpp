@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "hbm/cyclic_shift.hpp"
 
 namespace bb::hbm {
 
@@ -23,7 +24,7 @@ using Complex = std::complex<double>;
 constexpr double kSingularRcond = 1e-13;
 
 friction::FrictionModel validated(friction::FrictionModel model) {
-  friction::validate_model(model, "harmonic balance");
+  friction::validate_model(model, "harmonic balance", true);
   return model;
 }
 
@@ -140,6 +141,22 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
   ContactForces out{Eigen::VectorXd::Zero(unknowns()), Eigen::MatrixXd::Zero(unknowns(), unknowns()), {}, true};
   Eigen::Map<Eigen::MatrixXd> force(out.force.data(), nc, m);
   for (const friction::ContactElement& element : system_.contacts_on_c()) {
+    if (element.cyclic()) {
+      // Dense gap operators: the shift couples the cosine and sine of every harmonic.
+      const Eigen::MatrixXd gt =
+          cyclic_gap_operator(element.tangential, element.tangential_next, element.next_phase, options_.harmonics);
+      const Eigen::MatrixXd gn =
+          cyclic_gap_operator(element.normal, element.normal_next, element.next_phase, options_.harmonics);
+      Eigen::VectorXd u = gt * x;
+      u[0] -= element.tangential_offset;
+      contact::AftResult r = contact::aft_jenkins(element.law, u, gn * x, aft_);
+      out.closed = out.closed && r.closed;
+      out.force += gt.transpose() * r.tangential + gn.transpose() * r.normal;
+      out.jacobian.noalias() += gt.transpose() * (r.dtangential_du * gt + r.dtangential_dv * gn);
+      out.jacobian.noalias() += gn.transpose() * (r.dnormal_dv * gn);
+      out.contacts.push_back(std::move(r));
+      continue;
+    }
     const Eigen::RowVectorXd& at = element.tangential;
     const Eigen::RowVectorXd& an = element.normal;
     Eigen::VectorXd u = (at * coefficients).transpose();
@@ -216,8 +233,23 @@ std::optional<Eigen::VectorXd> HarmonicBalance::linearized(double omega, bool st
   const Index m = contact::harmonic_size(options_.harmonics);
   Eigen::MatrixXd springs = Eigen::MatrixXd::Zero(nc, nc);
   Eigen::VectorXd preload = Eigen::VectorXd::Zero(nc);
+  Eigen::MatrixXd a = linear->operator_;
+  Eigen::VectorXd b = linear->load;
   for (const friction::ContactElement& element : system_.contacts_on_c()) {
     const contact::JenkinsParameters& law = element.law;
+    if (element.cyclic()) {
+      const Eigen::MatrixXd gn =
+          cyclic_gap_operator(element.normal, element.normal_next, element.next_phase, options_.harmonics);
+      a += law.kn * gn.transpose() * gn;
+      b -= law.n0 * gn.row(0).transpose();
+      if (stuck) {
+        const Eigen::MatrixXd gt =
+            cyclic_gap_operator(element.tangential, element.tangential_next, element.next_phase, options_.harmonics);
+        a += law.kt * gt.transpose() * gt;
+        b += law.kt * element.tangential_offset * gt.row(0).transpose();
+      }
+      continue;
+    }
     springs += law.kn * element.normal.transpose() * element.normal;
     preload += law.n0 * element.normal.transpose();
     if (stuck) {
@@ -225,9 +257,7 @@ std::optional<Eigen::VectorXd> HarmonicBalance::linearized(double omega, bool st
       preload -= law.kt * element.tangential_offset * element.tangential.transpose();
     }
   }
-  Eigen::MatrixXd a = linear->operator_;
   for (Index j = 0; j < m; ++j) a.block(j * nc, j * nc, nc, nc) += springs;
-  Eigen::VectorXd b = linear->load;
   b.head(nc) -= preload;
   const Eigen::VectorXd x = a.fullPivLu().solve(b);
   if (!x.allFinite()) return std::nullopt;

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "contact/aft.hpp"
+#include "hbm/cyclic_shift.hpp"
 
 namespace bb::hbm {
 
@@ -28,8 +29,12 @@ CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) 
     }
   for (size_t k = 0; k < solution.contacts.size() && k < model.contacts.size(); ++k) {
     const contact::AftResult& r = solution.contacts[k];
-    const Eigen::VectorXd u = (model.contacts[k].tangential * q).transpose();
-    const Eigen::VectorXd v = (model.contacts[k].normal * q).transpose();
+    const friction::ContactElement& c = model.contacts[k];
+    Eigen::VectorXd u = (c.tangential * q).transpose(), v = (c.normal * q).transpose();
+    if (c.cyclic()) {
+      u += shift_coefficients((c.tangential_next * q).transpose(), c.next_phase);
+      v += shift_coefficients((c.normal_next * q).transpose(), c.next_phase);
+    }
     e.friction += contact::cycle_work(r.tangential, u);
     e.normal += contact::cycle_work(r.normal, v);
   }

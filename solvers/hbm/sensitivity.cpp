@@ -145,6 +145,8 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
     const Eigen::Map<const Eigen::MatrixXd> coefficients(solution.x.data(), nc, m);
     for (size_t k = 0; k < model.contacts.size(); ++k) {
       const friction::ContactElement& e = model.contacts[k];
+      if (e.cyclic())
+        throw std::invalid_argument("harmonic-balance sensitivities: a cyclic contact's law derivatives are not built");
       Eigen::RowVectorXd at(nc), an(nc);
       for (Index i = 0; i < nc; ++i)
         at[i] = e.tangential[c[static_cast<size_t>(i)]], an[i] = e.normal[c[static_cast<size_t>(i)]];

@@ -232,6 +232,20 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
                                      spec.harmonics, spec.time_samples > 0 ? g(spec.time_samples) : "automatic",
                                      g(spec.sweep.f_min), g(spec.sweep.f_max), sweep, damping));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
+  if (spec.cyclic)
+    run.facts.emplace_back(
+        "cyclic symmetry",
+        spec.cyclic->whole
+            ? fmt::format(
+                  "the whole ring of {} sectors built from the sector (forces of sector j shifted by j x {:.6g} "
+                  "deg, engine order {}); the tables are the first sector's",
+                  spec.cyclic->sectors, 360.0 * spec.cyclic->engine_order / spec.cyclic->sectors,
+                  spec.cyclic->engine_order)
+            : fmt::format(
+                  "one sector of {} in the travelling wave of engine order {}: the next sector moves as this one "
+                  "shifted by {:.6g} deg per harmonic 1",
+                  spec.cyclic->sectors, spec.cyclic->engine_order,
+                  360.0 * spec.cyclic->engine_order / spec.cyclic->sectors));
   run.facts.emplace_back("contacts", describe_contacts(p, spec));
   run.facts.emplace_back("model DOFs / linear model DOFs", fmt::format("{} / {}", p.model.mass.rows(), p.blade_dofs));
   if (p.damper_static) {

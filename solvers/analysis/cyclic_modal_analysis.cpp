@@ -24,12 +24,6 @@ const std::vector<int>& face_set(const Model& model, const std::string& name, co
   return it->second;
 }
 
-// The nodal diameter that engine order EO excites on N sectors: EO mod N folded into 0..N/2.
-int excited_diameter(int engine_order, int sectors) {
-  const int k = engine_order % sectors;
-  return std::min(k, sectors - k);
-}
-
 WholeStructureCheck check_whole(const Model& sector, const CyclicModalSpec& spec, const FreeSystem& s,
                                 const CyclicDofs& cyclic, const std::vector<NodalDiameterModes>& diameters) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -99,7 +93,7 @@ CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& s
   o.solve_seconds = seconds_since(t1);
   if (spec.whole) o.whole = check_whole(model, spec, s, cyclic, o.diameters);
   for (int eo : spec.engine_orders) {
-    const int k = excited_diameter(eo, spec.sectors);
+    const int k = excited_nodal_diameter(eo, spec.sectors);
     for (const NodalDiameterModes& nd : o.diameters)
       if (nd.nodal_diameter == k)
         for (Eigen::Index f = 0; f < nd.frequencies_hz.size(); ++f) {
@@ -107,6 +101,20 @@ CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& s
           if (rpm <= spec.max_speed_rpm)
             o.resonances.push_back({eo, k, static_cast<int>(f) + 1, nd.frequencies_hz[f], rpm});
         }
+  }
+  if (!spec.speeds_rpm.empty()) {
+    std::vector<double> speeds;
+    for (double rpm : spec.speeds_rpm) speeds.push_back(rpm * 2 * std::numbers::pi / 60.0);
+    // With engine orders, the nodal diameters they excite: the ones a Campbell diagram is read for.
+    std::vector<int> diameters_solved;
+    for (const NodalDiameterModes& nd : o.diameters) {
+      bool excited = spec.engine_orders.empty();
+      for (int eo : spec.engine_orders)
+        excited = excited || excited_nodal_diameter(eo, spec.sectors) == nd.nodal_diameter;
+      if (excited) diameters_solved.push_back(nd.nodal_diameter);
+    }
+    o.campbell = cyclic_campbell(model, s, cyclic, speeds, diameters_solved, spec.families, spec.options);
+    o.crossings = engine_order_crossings(*o.campbell, spec.engine_orders, spec.sectors);
   }
   return o;
 }
@@ -163,6 +171,32 @@ ResultTables cyclic_modal_tables(const CyclicModalOutcome& o) {
     }
     add(table_from_rows("engine_order_resonances",
                         {"row", "engine_order", "nodal_diameter", "family", "frequency_hz", "speed_rpm"}, rows));
+  }
+  if (o.campbell) {
+    const CyclicCampbell& c = *o.campbell;
+    std::vector<std::string> columns = {"row", "speed_rpm", "nodal_diameter"};
+    const Eigen::Index campbell_families = c.frequencies_hz.empty() ? 0 : c.frequencies_hz.front().cols();
+    for (Eigen::Index f = 0; f < campbell_families; ++f) columns.push_back(fmt::format("f{}_hz", f + 1));
+    std::vector<std::vector<double>> rows;
+    for (size_t d = 0; d < c.nodal_diameters.size(); ++d)
+      for (size_t s = 0; s < c.speeds.size(); ++s) {
+        std::vector<double> row = {static_cast<double>(rows.size() + 1), c.speeds[s] * 60.0 / (2 * std::numbers::pi),
+                                   static_cast<double>(c.nodal_diameters[d])};
+        for (Eigen::Index f = 0; f < campbell_families; ++f)
+          row.push_back(c.frequencies_hz[d](static_cast<Eigen::Index>(s), f));
+        rows.push_back(std::move(row));
+      }
+    add(table_from_rows("campbell", columns, rows));
+    std::vector<std::vector<double>> x;
+    for (size_t i = 0; i < o.crossings.size(); ++i) {
+      const CyclicCrossing& r = o.crossings[i];
+      x.push_back({static_cast<double>(i + 1), static_cast<double>(r.engine_order),
+                   static_cast<double>(r.nodal_diameter), static_cast<double>(r.family),
+                   r.speed * 60.0 / (2 * std::numbers::pi), r.frequency_hz});
+    }
+    if (!x.empty())
+      add(table_from_rows("engine_order_crossings",
+                          {"row", "engine_order", "nodal_diameter", "family", "speed_rpm", "frequency_hz"}, x));
   }
   return tables;
 }

@@ -6,6 +6,7 @@
 
 #include "analysis/cyclic_modal_spec.hpp"
 #include "assembly/dof_map.hpp"
+#include "cyclic/cyclic_campbell.hpp"
 #include "cyclic/cyclic_modes.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
@@ -36,7 +37,9 @@ struct CyclicModalOutcome {
   DofMap dofs;  // the sector's, for the wave shapes
   std::vector<NodalDiameterModes> diameters;
   std::optional<WholeStructureCheck> whole;
-  std::vector<EngineOrderResonance> resonances;
+  std::vector<EngineOrderResonance> resonances;  // at rest
+  std::optional<CyclicCampbell> campbell;
+  std::vector<CyclicCrossing> crossings;  // on the Campbell diagram
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;
 };
@@ -45,7 +48,8 @@ struct CyclicModalOutcome {
 CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& spec);
 
 // nodal_diameter_map (f1_hz.. per nodal diameter), cyclic_completeness, and with the whole
-// structure cyclic_spectrum, whole_spectrum and whole_count; engine_order_resonances.
+// structure cyclic_spectrum, whole_spectrum and whole_count; engine_order_resonances; with speeds
+// campbell (row, speed_rpm, nodal_diameter, f1_hz..) and engine_order_crossings.
 ResultTables cyclic_modal_tables(const CyclicModalOutcome& outcome);
 
 }  // namespace bb

@@ -25,6 +25,11 @@ struct CyclicModalSpec {
   // diameter it excites (ND = EO mod N folded into 0..N/2), up to max_speed_rpm.
   std::vector<int> engine_orders;
   double max_speed_rpm = 0.0;
+  // Campbell diagram: the nodal diameters' families at these speeds (ascending, from 0) with the
+  // centrifugal pre-stress and spin softening (cyclic/cyclic_campbell.hpp), and the engine-order
+  // crossings between them (with engine orders, for the nodal diameters they excite only). Empty:
+  // the structure at rest only.
+  std::vector<double> speeds_rpm;
   SourceLocation at;
 };
 

@@ -1,8 +1,6 @@
 #include "cases/parse_bladed_disk.hpp"
 
-#include <fmt/format.h>
-
-#include <optional>
+#include "cases/parse_dimensions.hpp"
 
 namespace bb {
 
@@ -15,19 +13,7 @@ void parse_bladed_disk(TomlReader& r, MeshSpec& m) {
   d.chord_divisions = static_cast<int>(r.optional_integer("chord_divisions", 2, 1000).value_or(d.chord_divisions));
   d.airfoil_divisions =
       static_cast<int>(r.optional_integer("airfoil_divisions", 1, 1000).value_or(d.airfoil_divisions));
-  std::optional<TomlReader> dims;
-  if (const toml::table* table = r.optional_table("dimensions")) {
-    dims.emplace(*table, r.path() + ".dimensions", r.file());
-    for (const BladedDiskDimensionField& f : bladed_disk_dimension_fields())
-      if (auto v = dims->optional_number(f.name)) d.*f.member = *v;
-    dims->finish();
-  }
-  try {
-    d.validate();
-  } catch (const DimensionError& e) {
-    if (dims && dims->has(e.name())) dims->fail(e.name(), e.what());
-    r.fail(r.has(e.name()) ? e.name() : std::string("sectors"), e.what());
-  }
+  parse_dimensions(r, d, bladed_disk_dimension_fields(), "sectors");
 }
 
 }  // namespace bb

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace bb {
 
@@ -39,6 +40,13 @@ CyclicModalSpec parse_cyclic_modal(TomlReader& r) {
     s.max_speed_rpm = *rpm;
   } else if (r.has("max_speed_rpm")) {
     r.fail("max_speed_rpm", "is read with engine_orders only");
+  }
+  if (r.has("speeds_rpm")) {
+    s.speeds_rpm = r.number_array("speeds_rpm");
+    if (s.speeds_rpm.size() < 2) r.fail("speeds_rpm", "needs at least two speeds (a Campbell diagram's axis)");
+    for (size_t i = 0; i < s.speeds_rpm.size(); ++i)
+      if (!(s.speeds_rpm[i] >= 0) || !std::isfinite(s.speeds_rpm[i]) || (i && !(s.speeds_rpm[i] > s.speeds_rpm[i - 1])))
+        r.fail("speeds_rpm", "speeds must be finite, >= 0 and ascending [rpm]");
   }
   return s;
 }

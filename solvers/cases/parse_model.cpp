@@ -7,6 +7,7 @@
 
 #include "cases/parse_bladed_disk.hpp"
 #include "cases/parse_common.hpp"
+#include "cases/parse_dimensions.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 
@@ -82,23 +83,9 @@ HexBlockSpec parse_hex_block(TomlReader r, ElementType element, std::string& bod
   return b;
 }
 
-// [mesh.dimensions] of the two-blade article (the blade_section uses its blade): any subset of the
-// named dimensions, the others keep their documented defaults (articles/two_blade.hpp).
-void parse_dimensions(TomlReader& r, TwoBladeDimensions& d) {
-  std::optional<TomlReader> dims;
-  if (const toml::table* table = r.optional_table("dimensions")) {
-    dims.emplace(*table, r.path() + ".dimensions", r.file());
-    for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
-      if (auto v = dims->optional_number(f.name)) d.*f.member = *v;
-    dims->finish();
-  }
-  try {
-    d.validate();
-  } catch (const DimensionError& e) {
-    if (dims && dims->has(e.name())) dims->fail(e.name(), e.what());
-    r.fail(r.has(e.name()) ? e.name() : std::string(), e.what());
-  }
-}
+// [mesh.dimensions] of the two-blade article (the blade_section uses its blade): the defaults are
+// documented in articles/two_blade.hpp.
+void parse_dimensions(TomlReader& r, TwoBladeDimensions& d) { parse_dimensions(r, d, two_blade_dimension_fields()); }
 
 int small_integer(TomlReader& r, const std::string& key, long lo, long hi, int fallback) {
   const auto v = r.optional_integer(key);

@@ -119,6 +119,7 @@ void plots(const ContactModalSpec& spec, const ContactModalOutcome& o, const Plo
 
 void plots(const CyclicModalSpec& spec, const CyclicModalOutcome& o, const PlotTarget& t) {
   t.run.plots.push_back(plot_nodal_diameter_map(o, spec, t.out, "nodal_diameter_map"));
+  if (o.campbell) t.run.plots.push_back(plot_cyclic_campbell(o, spec, t.out, "campbell"));
   // The first family at the lowest and the highest nodal diameter solved.
   if (o.diameters.empty()) return;
   for (size_t i : {size_t{0}, o.diameters.size() - 1}) {

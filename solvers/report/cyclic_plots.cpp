@@ -47,6 +47,55 @@ Plot plot_nodal_diameter_map(const CyclicModalOutcome& o, const CyclicModalSpec&
   return draw(out_dir, stem, title, script + "\n");
 }
 
+Plot plot_cyclic_campbell(const CyclicModalOutcome& o, const CyclicModalSpec& spec, const fs::path& out_dir,
+                          const std::string& stem) {
+  const CyclicCampbell& c = *o.campbell;
+  std::vector<size_t> shown;
+  for (size_t d = 0; d < c.nodal_diameters.size(); ++d) {
+    bool excited = spec.engine_orders.empty();
+    for (int eo : spec.engine_orders)
+      excited = excited || excited_nodal_diameter(eo, spec.sectors) == c.nodal_diameters[d];
+    if (excited) shown.push_back(d);
+  }
+  const double rpm_per_rad_s = 60.0 / (2 * 3.141592653589793);
+  int blocks = 0;
+  {
+    std::ofstream out = open_plot_data(out_dir, stem);
+    for (size_t d : shown)
+      for (Eigen::Index f = 0; f < c.frequencies_hz[d].cols(); ++f, ++blocks) {
+        out << "# ND " << c.nodal_diameters[d] << " family " << f + 1 << ": speed_rpm frequency_hz\n";
+        for (size_t s = 0; s < c.speeds.size(); ++s)
+          out << c.speeds[s] * rpm_per_rad_s << ' ' << c.frequencies_hz[d](static_cast<Eigen::Index>(s), f) << '\n';
+        out << "\n\n";
+      }
+    out << "# crossings: speed_rpm frequency_hz engine_order\n";
+    for (const CyclicCrossing& x : o.crossings)
+      out << x.speed * rpm_per_rad_s << ' ' << x.frequency_hz << ' ' << x.engine_order << '\n';
+    if (o.crossings.empty()) out << "nan nan nan\n";
+  }
+  const double top = c.speeds.back() * rpm_per_rad_s;
+  double f_top = 0.0;
+  for (size_t d : shown)
+    f_top =
+        std::max(f_top, c.frequencies_hz[d].col(std::min<Eigen::Index>(2, c.frequencies_hz[d].cols() - 1)).maxCoeff());
+  const std::string title =
+      "Campbell diagram by nodal diameter (the ones the engine orders excite) and engine-order lines";
+  std::string script = fmt::format(
+      "set title '{}'\nset xlabel 'speed [rpm]'\nset ylabel 'frequency [Hz]'\nset grid\nset key outside right\n"
+      "set xrange [0:{:.12g}]\nset yrange [0:{:.12g}]\nset datafile missing 'nan'\nplot ",
+      gnuplot_quote(title), top, 1.15 * f_top);
+  int b = 0;
+  for (size_t d : shown)
+    for (Eigen::Index f = 0; f < c.frequencies_hz[d].cols(); ++f, ++b)
+      script += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints pt 7 ps 0.4 title 'ND {} f{}'",
+                            b ? ", \\\n     " : "", stem, b, c.nodal_diameters[d], f + 1);
+  script += fmt::format(
+      ", \\\n     '{}.dat' index {} using 1:2 with points pt 6 ps 1.2 lc rgb 'black' title 'crossings'", stem, blocks);
+  for (int eo : spec.engine_orders)
+    script += fmt::format(", \\\n     x * {} / 60.0 with lines dt 2 lc rgb 'gray40' title 'EO {}'", eo, eo);
+  return draw(out_dir, stem, title, script + "\n");
+}
+
 Plot plot_sector_wave(const CyclicModalOutcome& o, const Mesh& mesh, size_t index, int family, const fs::path& out_dir,
                       const std::string& stem) {
   const NodalDiameterModes& nd = o.diameters.at(index);

@@ -13,6 +13,11 @@ namespace bb {
 Plot plot_nodal_diameter_map(const CyclicModalOutcome& o, const CyclicModalSpec& spec,
                              const std::filesystem::path& out_dir, const std::string& stem);
 
+// Frequency against speed of the families of the nodal diameters the engine orders excite (all
+// nodal diameters without engine orders), the engine-order lines and their crossings.
+Plot plot_cyclic_campbell(const CyclicModalOutcome& o, const CyclicModalSpec& spec,
+                          const std::filesystem::path& out_dir, const std::string& stem);
+
 // The cosine part of family `family` (1-based) of the outcome's diameters[index] on the sector.
 Plot plot_sector_wave(const CyclicModalOutcome& o, const Mesh& mesh, size_t index, int family,
                       const std::filesystem::path& out_dir, const std::string& stem);

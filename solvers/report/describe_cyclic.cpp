@@ -37,6 +37,14 @@ void describe(const CyclicModalSpec& spec, const CyclicModalOutcome& o, RunRecor
                     "largest relative difference of the {} frequencies {:.2e}",
                     w.free_dofs, w.seconds, w.whole_count, w.cut_hz, w.sector_count_sum, w.whole_hz.size(), worst));
   }
+  if (o.campbell)
+    run.facts.emplace_back(
+        "Campbell diagram",
+        fmt::format("{} speeds to {:g} rpm per nodal diameter: K + Omega^2 (K_sigma1 - M_p), the "
+                    "pre-stress of the in-phase centrifugal deflection (largest {:.3g} m at 1 rad/s, "
+                    "x Omega^2), no Coriolis; {} engine-order crossings",
+                    o.campbell->speeds.size(), spec.speeds_rpm.back(), o.campbell->max_unit_speed_deflection,
+                    o.crossings.size()));
   if (!spec.engine_orders.empty())
     run.facts.emplace_back("interference (stationary frequencies, no stiffening)",
                            fmt::format("{} resonances of engine orders {} up to {:g} rpm", o.resonances.size(),

@@ -10,8 +10,10 @@
 #include "articles/bladed_disk.hpp"
 #include "assembly/free_system.hpp"
 #include "common/errors.hpp"
+#include "cyclic/cyclic_campbell.hpp"
 #include "cyclic/cyclic_modes.hpp"
 #include "cyclic/whole_disk.hpp"
+#include "ffrf/rotating_body.hpp"
 #include "linalg/inertia.hpp"
 
 namespace bb {
@@ -101,6 +103,20 @@ Model sector_model(int sectors) {
   return m;
 }
 
+// A sector's model, its free system and its paired faces.
+struct SectorSystem {
+  explicit SectorSystem(int sectors)
+      : model(sector_model(sectors)),
+        system(assemble_free_system(model)),
+        faces(pair_sector_faces(model.mesh, model.node_sets.at("cyclic_left"), model.node_sets.at("cyclic_right"),
+                                sectors, 1e-9, "test")),
+        cyclic(cyclic_dofs(model.mesh, system.dofs, faces, sectors)) {}
+  Model model;
+  FreeSystem system;
+  SectorFaces faces;
+  CyclicDofs cyclic;
+};
+
 TEST(CyclicSymmetry, BladedDiskSectorFacesMatchByTheSectorRotation) {
   const Model m = sector_model(6);
   const SectorFaces faces =
@@ -116,11 +132,10 @@ TEST(CyclicSymmetry, BladedDiskSectorFacesMatchByTheSectorRotation) {
 // and its Sturm count at any frequency the sum of theirs.
 TEST(CyclicSymmetry, SectorModesEqualTheWholeDisksPerNodalDiameter) {
   const int N = 6, families = 4;
-  const Model sector = sector_model(N);
-  const FreeSystem s = assemble_free_system(sector);
-  const SectorFaces faces = pair_sector_faces(sector.mesh, sector.node_sets.at("cyclic_left"),
-                                              sector.node_sets.at("cyclic_right"), N, 1e-9, "test");
-  const CyclicDofs cyclic = cyclic_dofs(sector.mesh, s.dofs, faces, N);
+  const SectorSystem t(N);
+  const Model& sector = t.model;
+  const FreeSystem& s = t.system;
+  const CyclicDofs& cyclic = t.cyclic;
   std::vector<double> union_hz;
   double cut = INFINITY;
   ModalOptions options;
@@ -140,7 +155,7 @@ TEST(CyclicSymmetry, SectorModesEqualTheWholeDisksPerNodalDiameter) {
   ASSERT_GE(n_below, 2 * N);
 
   const Model whole = whole_from_sector(sector, N, 1e-9);
-  ASSERT_EQ(whole.mesh.n_nodes(), N * (sector.mesh.n_nodes() - static_cast<int>(faces.left.size())));
+  ASSERT_EQ(whole.mesh.n_nodes(), N * (sector.mesh.n_nodes() - static_cast<int>(t.faces.left.size())));
   const FreeSystem w = assemble_free_system(whole);
   options.n_modes = static_cast<int>(n_below);
   const ModalSolution all = lowest_modes(w.stiffness, w.mass, options);
@@ -160,6 +175,40 @@ TEST(CyclicSymmetry, SectorModesEqualTheWholeDisksPerNodalDiameter) {
   }
   EXPECT_EQ(sum, whole_count.negative);
   EXPECT_EQ(sum, n_below);
+}
+
+// Turning at 1500 rad/s: the sector's pre-stressed, spin-softened families per nodal diameter are
+// the whole disk's (its own centrifugal deflection, K_sigma1 and M_p from ffrf::build_rotating_body).
+TEST(CyclicSymmetry, CampbellOfTheSectorIsTheWholeDisksAtSpeed) {
+  const int N = 6, families = 3;
+  const SectorSystem t(N);
+  const double speed = 1500.0;
+  const CyclicCampbell c =
+      cyclic_campbell(t.model, t.system, t.cyclic, {0.0, speed}, {0, 1, 2, 3}, families, ModalOptions{});
+  std::vector<double> union_hz;
+  double cut = INFINITY;
+  for (size_t d = 0; d < 4; ++d) {
+    EXPECT_GT(c.frequencies_hz[d](1, 0), c.frequencies_hz[d](0, 0)) << "the blade stiffens with speed, ND " << d;
+    cut = std::min(cut, c.frequencies_hz[d](1, families - 1));
+    for (Eigen::Index f = 0; f < families; ++f)
+      for (int copy = 0; copy < (d == 0 || d == 3 ? 1 : 2); ++copy) union_hz.push_back(c.frequencies_hz[d](1, f));
+  }
+  std::sort(union_hz.begin(), union_hz.end());
+  const auto n_below = std::count_if(union_hz.begin(), union_hz.end(), [&](double f) { return f < 0.999 * cut; });
+  ASSERT_GE(n_below, N);
+  const ffrf::RotatingBody whole = ffrf::build_rotating_body(whole_from_sector(t.model, N, 1e-9));
+  const Eigen::SparseMatrix<double> k =
+      whole.stiffness + speed * speed * (whole.geometric_stiffness - whole.projected_mass);
+  ModalOptions options;
+  options.n_modes = static_cast<int>(n_below);
+  const ModalSolution all = lowest_modes(k, whole.mass, options);
+  for (Eigen::Index i = 0; i < n_below; ++i) {
+    const double f = std::sqrt(all.eigenvalues[i]) / (2 * kPi);
+    EXPECT_NEAR(f, union_hz[static_cast<size_t>(i)], 1e-8 * f) << "mode " << i + 1;
+  }
+  // Engine order 2 excites ND 2 (and EO 4 folds onto ND 2 as well on six sectors).
+  EXPECT_EQ(excited_nodal_diameter(4, N), 2);
+  EXPECT_EQ(excited_nodal_diameter(7, N), 1);
 }
 
 TEST(CyclicSymmetry, ImpossibleDiskIsRefusedByName) {

@@ -119,6 +119,29 @@ WorkEstimate analysis_work(const TimeSpec& t, const Model& model) {
 
 WorkEstimate analysis_work(const ContactLoopSpec&, const Model&) { return {}; }
 
+// Each nodal diameter (at each speed) factors a real problem of up to twice the sector (the
+// cosine and sine parts): twice the memory, 4x the flops of the mesh's; the whole structure of N
+// sectors, N times the unknowns (flops as n^2, memory as n^(4/3), estimate_mesh_work's 3D laws).
+WorkEstimate analysis_work(const CyclicModalSpec& s, const Model& model) {
+  const WorkEstimate mesh = estimate_mesh_work(model);
+  const double diameters =
+      s.nodal_diameters.empty() ? std::floor(s.sectors / 2.0) + 1.0 : static_cast<double>(s.nodal_diameters.size());
+  const double speeds = static_cast<double>(std::max<size_t>(s.speeds_rpm.size(), 1));
+  const double n = static_cast<double>(s.sectors);
+  WorkEstimate e = mesh;
+  e.operations = 4.0 * mesh.operations * diameters * (1.0 + speeds);
+  e.bytes = 2.0 * mesh.bytes;
+  if (s.whole) {
+    e.operations += mesh.operations * n * n;
+    e.bytes = std::max(e.bytes, mesh.bytes * std::pow(n, 4.0 / 3.0));
+  }
+  e.basis = fmt::format("{:.0f} nodal diameters x {:.0f} speeds of a {}-sector structure{}; per sector: {}", diameters,
+                        speeds, s.sectors, s.whole ? ", and the whole structure" : "", mesh.basis);
+  e.at = s.at;
+  e.key = "analysis.sectors, nodal_diameters, speeds_rpm, whole";
+  return e;
+}
+
 template <typename Spec>
 WorkEstimate analysis_work(const Spec&, const Model& model) {
   return estimate_mesh_work(model);

@@ -84,11 +84,13 @@ Plot plot_cyclic_campbell(const CyclicModalOutcome& o, const CyclicModalSpec& sp
       "set title '{}'\nset xlabel 'speed [rpm]'\nset ylabel 'frequency [Hz]'\nset grid\nset key outside right\n"
       "set xrange [0:{:.12g}]\nset yrange [0:{:.12g}]\nset datafile missing 'nan'\nplot ",
       gnuplot_quote(title), top, 1.15 * f_top);
+  // One colour per nodal diameter, named once: its families are the lines of that colour.
   int b = 0;
-  for (size_t d : shown)
-    for (Eigen::Index f = 0; f < c.frequencies_hz[d].cols(); ++f, ++b)
-      script += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints pt 7 ps 0.4 title 'ND {} f{}'",
-                            b ? ", \\\n     " : "", stem, b, c.nodal_diameters[d], f + 1);
+  for (size_t i = 0; i < shown.size(); ++i)
+    for (Eigen::Index f = 0; f < c.frequencies_hz[shown[i]].cols(); ++f, ++b)
+      script +=
+          fmt::format("{}'{}.dat' index {} using 1:2 with linespoints pt 7 ps 0.4 lc {} {}", b ? ", \\\n     " : "",
+                      stem, b, i + 1, f == 0 ? fmt::format("title 'ND {}'", c.nodal_diameters[shown[i]]) : "notitle");
   script += fmt::format(
       ", \\\n     '{}.dat' index {} using 1:2 with points pt 6 ps 1.2 lc rgb 'black' title 'crossings'", stem, blocks);
   for (int eo : spec.engine_orders)

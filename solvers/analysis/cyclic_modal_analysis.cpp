@@ -83,11 +83,12 @@ CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& s
   o.dofs = s.dofs;
   o.assembly_seconds = s.assembly_seconds + seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
+  // Every nodal diameter when none is listed, and for the whole-structure check.
   std::vector<int> diameters = spec.nodal_diameters;
-  if (diameters.empty() || spec.whole)
-    for (int k = 0, n = static_cast<int>(diameters.size()); 2 * k <= spec.sectors && (n == 0 || spec.whole); ++k)
-      if (std::find(diameters.begin(), diameters.end(), k) == diameters.end()) diameters.push_back(k);
-  std::sort(diameters.begin(), diameters.end());
+  if (diameters.empty() || spec.whole) {
+    diameters.clear();
+    for (int k = 0; 2 * k <= spec.sectors; ++k) diameters.push_back(k);
+  }
   for (int k : diameters)
     o.diameters.push_back(nodal_diameter_modes(s.stiffness, s.mass, cyclic, k, spec.families, spec.options));
   o.solve_seconds = seconds_since(t1);
@@ -122,9 +123,7 @@ CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& s
 ResultTables cyclic_modal_tables(const CyclicModalOutcome& o) {
   ResultTables tables;
   auto add = [&](ResultTable t) { tables.emplace(t.name, std::move(t)); };
-  // Every nodal diameter has at least the families asked for (a straddling pair adds one).
-  Eigen::Index families = o.diameters.empty() ? 0 : o.diameters.front().frequencies_hz.size();
-  for (const NodalDiameterModes& nd : o.diameters) families = std::min(families, nd.frequencies_hz.size());
+  const Eigen::Index families = common_families(o.diameters);
   {
     std::vector<std::string> columns = {"nodal_diameter"};
     for (Eigen::Index f = 0; f < families; ++f) columns.push_back(fmt::format("f{}_hz", f + 1));

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -55,6 +56,12 @@ NodalDiameterModes nodal_diameter_modes(const Eigen::SparseMatrix<double>& stiff
   }
   out.seconds = seconds_since(t0);
   return out;
+}
+
+Eigen::Index common_families(const std::vector<NodalDiameterModes>& diameters) {
+  Eigen::Index families = diameters.empty() ? 0 : diameters.front().frequencies_hz.size();
+  for (const NodalDiameterModes& nd : diameters) families = std::min(families, nd.frequencies_hz.size());
+  return families;
 }
 
 int nodal_diameter_count(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,

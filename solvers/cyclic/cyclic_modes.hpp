@@ -35,6 +35,10 @@ NodalDiameterModes nodal_diameter_modes(const Eigen::SparseMatrix<double>& stiff
                                         const Eigen::SparseMatrix<double>& mass, const CyclicDofs& cyclic,
                                         int nodal_diameter, int families, const ModalOptions& options);
 
+// The families every one of `diameters` has (at least the number asked; a straddling pair adds one
+// to some): the width of a nodal-diameter map.
+Eigen::Index common_families(const std::vector<NodalDiameterModes>& diameters);
+
 // Eigenvalues of nodal diameter k below (2 pi f)^2, each pair once; -1 when the count failed.
 int nodal_diameter_count(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                          const CyclicDofs& cyclic, int nodal_diameter, double frequency_hz);

@@ -78,6 +78,12 @@ HarmonicBalance::HarmonicBalance(friction::FrictionModel model, HbmOptions optio
                                        : std::max(64, 16 * (2 * options_.harmonics + 1));
   if (aft_.samples < 2 * options_.harmonics + 1) fail("aft.samples must be >= 2H + 1");
 
+  for (const friction::ContactElement& e : system_.contacts_on_c())
+    cyclic_gaps_.push_back(
+        e.cyclic() ? CyclicGap{cyclic_gap_operator(e.tangential, e.tangential_next, e.next_phase, options_.harmonics),
+                               cyclic_gap_operator(e.normal, e.normal_next, e.next_phase, options_.harmonics)}
+                   : CyclicGap{});
+
   static_.emplace(system_.condense(dynamic_stiffness(model_, 0.0)));
   modal_ = ModalBasis::of(model_, contact_dofs(), other_dofs());
 
@@ -140,13 +146,11 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
   const Eigen::Map<const Eigen::MatrixXd> coefficients(x.data(), nc, m);
   ContactForces out{Eigen::VectorXd::Zero(unknowns()), Eigen::MatrixXd::Zero(unknowns(), unknowns()), {}, true};
   Eigen::Map<Eigen::MatrixXd> force(out.force.data(), nc, m);
-  for (const friction::ContactElement& element : system_.contacts_on_c()) {
+  for (size_t k = 0; k < system_.contacts_on_c().size(); ++k) {
+    const friction::ContactElement& element = system_.contacts_on_c()[k];
     if (element.cyclic()) {
       // Dense gap operators: the shift couples the cosine and sine of every harmonic.
-      const Eigen::MatrixXd gt =
-          cyclic_gap_operator(element.tangential, element.tangential_next, element.next_phase, options_.harmonics);
-      const Eigen::MatrixXd gn =
-          cyclic_gap_operator(element.normal, element.normal_next, element.next_phase, options_.harmonics);
+      const Eigen::MatrixXd &gt = cyclic_gaps_[k].tangential, &gn = cyclic_gaps_[k].normal;
       Eigen::VectorXd u = gt * x;
       u[0] -= element.tangential_offset;
       contact::AftResult r = contact::aft_jenkins(element.law, u, gn * x, aft_);
@@ -235,16 +239,14 @@ std::optional<Eigen::VectorXd> HarmonicBalance::linearized(double omega, bool st
   Eigen::VectorXd preload = Eigen::VectorXd::Zero(nc);
   Eigen::MatrixXd a = linear->operator_;
   Eigen::VectorXd b = linear->load;
-  for (const friction::ContactElement& element : system_.contacts_on_c()) {
+  for (size_t k = 0; k < system_.contacts_on_c().size(); ++k) {
+    const friction::ContactElement& element = system_.contacts_on_c()[k];
     const contact::JenkinsParameters& law = element.law;
     if (element.cyclic()) {
-      const Eigen::MatrixXd gn =
-          cyclic_gap_operator(element.normal, element.normal_next, element.next_phase, options_.harmonics);
+      const Eigen::MatrixXd &gt = cyclic_gaps_[k].tangential, &gn = cyclic_gaps_[k].normal;
       a += law.kn * gn.transpose() * gn;
       b -= law.n0 * gn.row(0).transpose();
       if (stuck) {
-        const Eigen::MatrixXd gt =
-            cyclic_gap_operator(element.tangential, element.tangential_next, element.next_phase, options_.harmonics);
         a += law.kt * gt.transpose() * gt;
         b += law.kt * element.tangential_offset * gt.row(0).transpose();
       }

@@ -111,6 +111,12 @@ class HarmonicBalance {
   // where the damping allows it (hbm/modal_condensation.hpp), else by factorizing D_h,oo.
   std::optional<friction::Condensation<std::complex<double>>> static_;
   std::optional<ModalBasis> modal_;
+  // Per contact on c, the gap operators of a cyclic contact (hbm/cyclic_shift.hpp), built once for
+  // H; empty for the others.
+  struct CyclicGap {
+    Eigen::MatrixXd tangential, normal;
+  };
+  std::vector<CyclicGap> cyclic_gaps_;
 
   // Calls use(condensation) with the condensation of harmonic h at omega (either kind).
   template <class Use>

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numbers>
 
 #include "report/gnuplot.hpp"
 #include "report/plots.hpp"
@@ -13,8 +14,7 @@ namespace fs = std::filesystem;
 
 Plot plot_nodal_diameter_map(const CyclicModalOutcome& o, const CyclicModalSpec& spec, const fs::path& out_dir,
                              const std::string& stem) {
-  Eigen::Index families = o.diameters.empty() ? 0 : o.diameters.front().frequencies_hz.size();
-  for (const NodalDiameterModes& nd : o.diameters) families = std::min(families, nd.frequencies_hz.size());
+  const Eigen::Index families = common_families(o.diameters);
   {
     std::ofstream out = open_plot_data(out_dir, stem);
     for (Eigen::Index f = 0; f < families; ++f) {
@@ -24,10 +24,8 @@ Plot plot_nodal_diameter_map(const CyclicModalOutcome& o, const CyclicModalSpec&
     }
     // Each engine order's excitation at the top speed, at the nodal diameter it excites.
     out << "# engine orders at the top speed: nodal_diameter frequency_hz engine_order\n";
-    for (int eo : spec.engine_orders) {
-      const int k = eo % spec.sectors;
-      out << std::min(k, spec.sectors - k) << ' ' << eo * spec.max_speed_rpm / 60.0 << ' ' << eo << '\n';
-    }
+    for (int eo : spec.engine_orders)
+      out << excited_nodal_diameter(eo, spec.sectors) << ' ' << eo * spec.max_speed_rpm / 60.0 << ' ' << eo << '\n';
     if (spec.engine_orders.empty()) out << "nan nan nan\n";
   }
   const std::string title = fmt::format("Nodal-diameter map of the {}-sector structure{}", spec.sectors,
@@ -49,19 +47,13 @@ Plot plot_nodal_diameter_map(const CyclicModalOutcome& o, const CyclicModalSpec&
 
 Plot plot_cyclic_campbell(const CyclicModalOutcome& o, const CyclicModalSpec& spec, const fs::path& out_dir,
                           const std::string& stem) {
+  // The diagram holds the nodal diameters the engine orders excite (all without engine orders).
   const CyclicCampbell& c = *o.campbell;
-  std::vector<size_t> shown;
-  for (size_t d = 0; d < c.nodal_diameters.size(); ++d) {
-    bool excited = spec.engine_orders.empty();
-    for (int eo : spec.engine_orders)
-      excited = excited || excited_nodal_diameter(eo, spec.sectors) == c.nodal_diameters[d];
-    if (excited) shown.push_back(d);
-  }
-  const double rpm_per_rad_s = 60.0 / (2 * 3.141592653589793);
+  const double rpm_per_rad_s = 60.0 / (2 * std::numbers::pi);
   int blocks = 0;
   {
     std::ofstream out = open_plot_data(out_dir, stem);
-    for (size_t d : shown)
+    for (size_t d = 0; d < c.nodal_diameters.size(); ++d)
       for (Eigen::Index f = 0; f < c.frequencies_hz[d].cols(); ++f, ++blocks) {
         out << "# ND " << c.nodal_diameters[d] << " family " << f + 1 << ": speed_rpm frequency_hz\n";
         for (size_t s = 0; s < c.speeds.size(); ++s)
@@ -75,9 +67,8 @@ Plot plot_cyclic_campbell(const CyclicModalOutcome& o, const CyclicModalSpec& sp
   }
   const double top = c.speeds.back() * rpm_per_rad_s;
   double f_top = 0.0;
-  for (size_t d : shown)
-    f_top =
-        std::max(f_top, c.frequencies_hz[d].col(std::min<Eigen::Index>(2, c.frequencies_hz[d].cols() - 1)).maxCoeff());
+  for (const Eigen::MatrixXd& f : c.frequencies_hz)
+    f_top = std::max(f_top, f.col(std::min<Eigen::Index>(2, f.cols() - 1)).maxCoeff());
   const std::string title =
       "Campbell diagram by nodal diameter (the ones the engine orders excite) and engine-order lines";
   std::string script = fmt::format(
@@ -86,11 +77,11 @@ Plot plot_cyclic_campbell(const CyclicModalOutcome& o, const CyclicModalSpec& sp
       gnuplot_quote(title), top, 1.15 * f_top);
   // One colour per nodal diameter, named once: its families are the lines of that colour.
   int b = 0;
-  for (size_t i = 0; i < shown.size(); ++i)
-    for (Eigen::Index f = 0; f < c.frequencies_hz[shown[i]].cols(); ++f, ++b)
+  for (size_t d = 0; d < c.nodal_diameters.size(); ++d)
+    for (Eigen::Index f = 0; f < c.frequencies_hz[d].cols(); ++f, ++b)
       script +=
           fmt::format("{}'{}.dat' index {} using 1:2 with linespoints pt 7 ps 0.4 lc {} {}", b ? ", \\\n     " : "",
-                      stem, b, i + 1, f == 0 ? fmt::format("title 'ND {}'", c.nodal_diameters[shown[i]]) : "notitle");
+                      stem, b, d + 1, f == 0 ? fmt::format("title 'ND {}'", c.nodal_diameters[d]) : "notitle");
   script += fmt::format(
       ", \\\n     '{}.dat' index {} using 1:2 with points pt 6 ps 1.2 lc rgb 'black' title 'crossings'", stem, blocks);
   for (int eo : spec.engine_orders)

@@ -293,6 +293,13 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   const Eigen::MatrixXcd stuck = friction::stuck_stiffness(m, 1);
   // Limit 0: the linear model alone (the damper's DOFs left out); 1: every contact stuck.
   const auto limit_solve = [&](int l, double w) -> Eigen::VectorXcd {
+    if (!m.nodal_diameters.empty()) {  // a cyclic sector: harmonic 1's nodal diameter
+      const friction::NodalDiameterOperators& k1 = m.nodal_diameters.of_harmonic(1);
+      const Eigen::MatrixXcd d = (l == 0 ? k1.stiffness : stuck) + std::complex<double>(0.0, w) * k1.damping -
+                                 w * w * k1.mass;
+      if (l == 0) return d.topLeftCorner(nb, nb).partialPivLu().solve(m.harmonic_load.head(nb));
+      return d.partialPivLu().solve(m.harmonic_load);
+    }
     if (l == 0)
       return direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),
                              m.mass.topLeftCorner(nb, nb), w, m.harmonic_load.head(nb));

@@ -101,9 +101,15 @@ RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
     if (rom.masters.empty()) r.fail("masters", "needs at least one master point");
     std::set<std::string> unique(rom.masters.begin(), rom.masters.end());
     if (unique.size() != rom.masters.size()) r.fail("masters", "a master point is listed twice");
-    const long modes = r.integer("modes");
-    if (modes < 0 || modes > 10000) r.fail("modes", "must lie in [0, 10000]");
-    rom.modes = static_cast<int>(modes);
+    if (r.has("modes") == r.has("modes_below_hz"))
+      r.fail("modes", "give either 'modes' (how many fixed-interface modes) or 'modes_below_hz' (every mode below)");
+    if (r.has("modes")) {
+      const long modes = r.integer("modes");
+      if (modes < 0 || modes > 10000) r.fail("modes", "must lie in [0, 10000]");
+      rom.modes = static_cast<int>(modes);
+    } else {
+      rom.modes_below_hz = r.positive("modes_below_hz");
+    }
   }
   const std::string method = r.choice("method", {"direct", "modal"}, "direct");
   rom.method = method == "modal" ? RomSpec::Method::modal : RomSpec::Method::direct;

@@ -167,6 +167,7 @@ NonlinearModesSpec parse_nonlinear_modes(TomlReader r, const HbmSpec& hbm) {
 void parse_cyclic(TomlReader& r, HbmSpec& s, bool harmonic_balance) {
   const toml::table* t = r.optional_table("cyclic");
   if (!t) {
+    if (r.has("gap_damper")) r.fail("gap_damper", "a damper between two sectors needs [analysis.cyclic]");
     for (size_t i = 0; i < s.contacts.size(); ++i)
       if (!s.contacts[i].tangential_next.empty() || !s.contacts[i].normal_next.empty())
         r.fail("contact",
@@ -181,6 +182,16 @@ void parse_cyclic(TomlReader& r, HbmSpec& s, bool harmonic_balance) {
   cyclic.sectors = static_cast<int>(c.integer("sectors", 2, 10000));
   cyclic.engine_order = static_cast<int>(c.integer("engine_order", 0, 1000000));
   cyclic.whole = c.boolean("whole", false);
+  if (s.model.masters.empty()) {
+    for (const char* key : {"left", "right", "face_tolerance"})
+      if (c.has(key))
+        c.fail(key, "names the cyclic faces of a mesh: it needs a Craig-Bampton model ('masters' in [analysis.model])");
+  } else {
+    cyclic.left = c.optional_string("left").value_or(cyclic.left);
+    cyclic.right = c.optional_string("right").value_or(cyclic.right);
+    cyclic.face_tolerance = c.optional_number("face_tolerance").value_or(cyclic.face_tolerance);
+    if (!(cyclic.face_tolerance > 0.0)) c.fail("face_tolerance", "must be > 0 [m]");
+  }
   c.finish();
   const char* refused = s.damper                                  ? "damper"
                         : !s.sensitivities.empty()                ? "sensitivities"
@@ -192,6 +203,28 @@ void parse_cyclic(TomlReader& r, HbmSpec& s, bool harmonic_balance) {
            "is not built for one sector of a cyclic structure (the travelling wave of [analysis.cyclic]); "
            "leave it out or model the whole structure");
   s.cyclic = cyclic;
+  if (const toml::table* g = r.optional_table("gap_damper")) {
+    TomlReader d(*g, r.path() + ".gap_damper", r.file());
+    if (s.model.masters.empty())
+      d.fail("mass", "a gap damper sits between the platforms of a meshed sector: it needs 'masters' in [analysis.model]");
+    GapDamperSpec damper;
+    damper.at = d.location();
+    damper.mass = d.positive("mass");
+    damper.own = d.string("own");
+    damper.next = d.string("next");
+    for (const std::string* point : {&damper.own, &damper.next})
+      if (std::find(s.model.masters.begin(), s.model.masters.end(), *point) == s.model.masters.end())
+        d.fail(point == &damper.own ? "own" : "next",
+               fmt::format("'{}' is not one of the model's master points", *point));
+    damper.centrifugal_force = d.positive("centrifugal_force");
+    damper.face_angle_deg = d.number("face_angle_deg");
+    if (!(damper.face_angle_deg > 0.0 && damper.face_angle_deg < 90.0))
+      d.fail("face_angle_deg", "must lie in (0, 90) degrees: a flat face (0) leaves the damper's mean position free");
+    damper.law = parse_law(d, false);
+    damper.distribution = parse_slider_distribution(d, damper.law);
+    d.finish();
+    s.gap_damper = damper;
+  }
 }
 
 HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required) {
@@ -345,8 +378,9 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   }
   if (const toml::table* d = r.optional_table("damper"))
     s.damper = parse_damper(TomlReader(*d, r.path() + ".damper", r.file()));
-  if (contacts_required && s.contacts.empty() && !s.damper)
-    r.fail("contact", "an hbm analysis needs at least one [[analysis.contact]] or an [analysis.damper]");
+  if (contacts_required && s.contacts.empty() && !s.damper && !r.has("gap_damper"))
+    r.fail("contact",
+           "an hbm analysis needs at least one [[analysis.contact]], an [analysis.damper] or an [analysis.gap_damper]");
   s.sweep.method = r.choice("sweep", {"grid", "arclength"}, "grid") == "grid" ? HbmSweepSpec::Method::grid
                                                                               : HbmSweepSpec::Method::arclength;
   if (s.harmonic_scope == HbmSpec::HarmonicScope::point && s.sweep.method != HbmSweepSpec::Method::grid)

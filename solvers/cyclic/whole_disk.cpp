@@ -1,6 +1,7 @@
 #include "cyclic/whole_disk.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "common/errors.hpp"
 #include "cyclic/cyclic_boundary.hpp"
@@ -34,6 +35,9 @@ Model whole_from_sector(const Model& sector, int sectors, double tolerance) {
       for (int n : nodes) all.push_back(map[static_cast<size_t>(n)]);
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
+    if (nodes.size() == 1)  // a point: each copy's too, as "<name>@<j>"
+      for (size_t j = 0; j < origin.size(); ++j)
+        whole.node_sets[name + "@" + std::to_string(j)] = {origin[j][static_cast<size_t>(nodes.front())]};
   }
   return whole;
 }

@@ -48,6 +48,9 @@ struct PreparedHbm {
 // Throws InputError for unknown DOFs or points, a singular static problem or a damper whose static
 // pre-solve fails (message with the reason); SolverError from the reduction.
 PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec);
+// The same for one meshed sector of a tuned disk ([analysis.cyclic] with Craig-Bampton masters and
+// an [analysis.gap_damper]), or the whole disk built from it (forced/hbm_cyclic_sector.cpp).
+PreparedHbm prepare_cyclic_sector(const Model& model, const HbmSpec& spec);
 
 struct HbmPeak {
   std::string kind;  // "IP", "OOP", or "peak" (maximum of the first response)

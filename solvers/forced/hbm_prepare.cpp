@@ -88,6 +88,7 @@ void expand_to_whole_ring(PreparedHbm& p, const HbmCyclicSpec& cyclic) {
 }  // namespace
 
 PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
+  if (spec.cyclic && !spec.model.masters.empty()) return prepare_cyclic_sector(model, spec);
   const auto t0 = Clock::now();
   PreparedHbm p;
   FreeSystem system;

@@ -91,6 +91,28 @@ struct HbmCyclicSpec {
   // terms on the next copy, the forces of copy j shifted by j 2 pi EO / N) solved as one structure;
   // its tables are the first sector's.
   bool whole = false;
+  // With a mesh (Craig-Bampton masters): the sector's cyclic faces, reduced per nodal diameter
+  // (cyclic/cyclic_reduction.hpp).
+  std::string left = "cyclic_left", right = "cyclic_right";
+  double face_tolerance = 1e-9;  // [m]
+  SourceLocation at;
+};
+
+// A point damper in the gap between this sector's blade and the next one's (a cyclic sector of a
+// mesh): two DOFs, "damper.t" along the circumference and "damper.r" along the radius of the gap,
+// pushed outward by its centrifugal force into the platform point `own` of this sector and `next`
+// of the next sector, through two Jenkins contacts on the faces of a wedge (contacts "own" and
+// "next"; the normal load varies with the motion, n0 = 0 and the static balance loads them). Each
+// face's normal leans from the radius towards its own platform by the face angle: with flat faces
+// (0 deg) nothing but friction holds the damper's mean circumferential position, which a slipping
+// contact leaves free (the balance is then singular).
+struct GapDamperSpec {
+  double mass = 0.0;               // [kg]
+  double face_angle_deg = 45.0;    // in (0, 90)
+  std::string own, next;           // master points of the sector
+  double centrifugal_force = 0.0;  // [N], outward at the gap
+  contact::JenkinsParameters law;  // kn, kt, mu of each face
+  std::shared_ptr<const contact::SliderDistribution> distribution;  // null: one Jenkins slider per face
   SourceLocation at;
 };
 
@@ -101,6 +123,7 @@ struct HbmSpec {
   std::vector<HbmContactSpec> contacts;
   std::optional<DamperSpec> damper;
   std::optional<HbmCyclicSpec> cyclic;
+  std::optional<GapDamperSpec> gap_damper;
   std::vector<std::pair<PointDof, double>> static_loads;  // [N], besides the damper's CF
   std::vector<FrfForce> forces;                           // the excitation pattern; each level scales it
   std::vector<double> force_levels;                       // amplitude of the first force at each level [N]

@@ -37,6 +37,7 @@ struct RomSpec {
   std::string name;                      // names its columns and tables, e.g. "rom"
   std::vector<std::string> masters;      // point names, all three directions of each, in this order
   int modes = 10;                        // fixed-interface modes
+  double modes_below_hz = 0.0;           // > 0: instead, every fixed-interface mode below this [Hz]
   std::filesystem::path file;            // a reduced-model sidecar (reduction/reduced_model_io.hpp) instead
   std::optional<ReducedModel> matrices;  // or matrices written in the case (a lumped model)
   enum class Method { direct, modal } method = Method::direct;

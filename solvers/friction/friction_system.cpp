@@ -8,6 +8,43 @@
 namespace bb::friction {
 
 using Index = Eigen::Index;
+using Complex = std::complex<double>;
+
+namespace {
+
+template <class Fail>
+void validate_nodal_diameters(FrictionModel& m, const Fail& fail, bool cyclic_allowed) {
+  CyclicLinearModel& c = m.nodal_diameters;
+  if (c.empty()) return;
+  if (!cyclic_allowed)
+    fail("the model's linear part is one sector of a cyclic structure: only the harmonic balance solves it");
+  const Index n = m.mass.rows();
+  if (c.sectors < 2 || static_cast<int>(c.diameters.size()) != c.sectors || c.engine_order < 0)
+    fail("a cyclic linear model needs N >= 2 sectors, one entry per nodal diameter 0..N-1 and EO >= 0");
+  for (int h = 1, seen = 0; seen < c.sectors; ++h, ++seen) {  // every k some harmonic reaches
+    NodalDiameterOperators& d = c.diameters[static_cast<size_t>(c.diameter(h))];
+    if (d.damping.size() == 0) d.damping = Eigen::MatrixXcd::Zero(n, n);
+    for (const Eigen::MatrixXcd* a : {&d.mass, &d.damping, &d.stiffness})
+      if (a->rows() != n || a->cols() != n || !a->allFinite())
+        fail(fmt::format("nodal diameter {}: M, C and K must be finite and {} x {}", c.diameter(h), n, n));
+  }
+}
+
+}  // namespace
+
+Eigen::MatrixXcd dynamic_stiffness(const FrictionModel& m, int harmonic, double hw) {
+  if (harmonic >= 1 && !m.nodal_diameters.empty()) {
+    const NodalDiameterOperators& d = m.nodal_diameters.of_harmonic(harmonic);
+    return d.stiffness + Complex(0.0, hw) * d.damping - (hw * hw) * d.mass;
+  }
+  const Index n = m.mass.rows();
+  Eigen::MatrixXcd d(n, n);
+  const bool damped = m.damping.size() > 0;
+  for (Index i = 0; i < n; ++i)
+    for (Index j = 0; j < n; ++j)
+      d(i, j) = Complex(m.stiffness(i, j) - hw * hw * m.mass(i, j), damped ? hw * m.damping(i, j) : 0.0);
+  return d;
+}
 
 void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowed) {
   const Index n = m.mass.rows();
@@ -22,6 +59,7 @@ void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowe
   if (m.static_load.size() != n || m.harmonic_load.size() != n)
     fail(fmt::format("loads must have {} entries (one per DOF)", n));
   if (!m.static_load.allFinite() || !m.harmonic_load.allFinite()) fail("loads must be finite");
+  validate_nodal_diameters(m, fail, cyclic_allowed);
   for (size_t k = 0; k < m.contacts.size(); ++k) {
     ContactElement& e = m.contacts[k];
     if (e.cyclic()) {
@@ -56,8 +94,9 @@ Eigen::MatrixXd stuck_stiffness(const FrictionModel& model) {
 }
 
 Eigen::MatrixXcd stuck_stiffness(const FrictionModel& model, int harmonic) {
-  using Complex = std::complex<double>;
-  Eigen::MatrixXcd k = model.stiffness.cast<Complex>();
+  Eigen::MatrixXcd k = harmonic >= 1 && !model.nodal_diameters.empty()
+                           ? model.nodal_diameters.of_harmonic(harmonic).stiffness
+                           : Eigen::MatrixXcd(model.stiffness.cast<Complex>());
   for (const ContactElement& c : model.contacts) {
     const Complex shift = std::polar(1.0, harmonic * c.next_phase);
     auto row = [&](const Eigen::RowVectorXd& own, const Eigen::RowVectorXd& next) {

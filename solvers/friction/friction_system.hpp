@@ -54,12 +54,37 @@ struct ContactElement {
   bool cyclic() const { return tangential_next.size() > 0 || normal_next.size() > 0; }
 };
 
+// One sector of a tuned cyclic structure cut through elastic material (a disk): in a travelling
+// wave of engine order EO, harmonic h belongs to nodal diameter k = h EO mod N, and the sector's
+// M, C, K for k are Hermitian (its right face follows its left one with the phase 2 pi k / N,
+// cyclic/cyclic_reduction.hpp). They replace the model's real M, C, K in D_h for h >= 1; harmonic 0
+// (k = 0) keeps the real ones. The DOFs are the same for every k (the contacts, loads and responses
+// name them); a k with fewer internal coordinates pads them as decoupled unit springs without mass.
+struct NodalDiameterOperators {
+  Eigen::MatrixXcd mass, damping, stiffness;  // n x n; empty where no harmonic reaches k
+};
+struct CyclicLinearModel {
+  int sectors = 0, engine_order = 0;
+  std::vector<NodalDiameterOperators> diameters;  // k = 0 .. N-1; empty = the model is not cyclic
+
+  bool empty() const { return diameters.empty(); }
+  int diameter(int harmonic) const { return static_cast<int>((static_cast<long long>(harmonic) * engine_order) % sectors); }
+  const NodalDiameterOperators& of_harmonic(int harmonic) const {
+    return diameters[static_cast<size_t>(diameter(harmonic))];
+  }
+};
+
 struct FrictionModel {
   Eigen::MatrixXd mass, damping, stiffness;  // n x n, dense; damping may be empty (C = 0)
   std::vector<ContactElement> contacts;      // at least one for the harmonic balance
   Eigen::VectorXd static_load;               // n [N]; empty = none (e.g. centrifugal force on the damper)
   Eigen::VectorXcd harmonic_load;            // n [N], complex amplitude at harmonic 1; empty = none
+  CyclicLinearModel nodal_diameters{};       // the harmonic balance only; empty = none
 };
+
+// D_h = K + i h w C - (h w)^2 M, with the nodal diameter's operators for h >= 1 where the model has
+// them; hw = h w [rad/s].
+Eigen::MatrixXcd dynamic_stiffness(const FrictionModel& model, int harmonic, double hw);
 
 // Fills an empty C and empty loads with zeros (and a cyclic contact's empty next rows), then checks
 // sizes, finiteness and every contact law of `model` (contacts may be empty); cyclic contacts only
@@ -68,10 +93,11 @@ struct FrictionModel {
 void validate_model(FrictionModel& model, const std::string& who, bool cyclic_allowed = false);
 
 // K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
-// A cyclic contact adds its own rows' springs only.
+// A cyclic contact adds its own rows' springs only; the nodal diameters' operators are not used.
 Eigen::MatrixXd stuck_stiffness(const FrictionModel& model);
 // The same for harmonic h of a travelling wave: a cyclic contact's springs act on
-// g = a + e^{i h phi} a_next and add kt g^H g (Hermitian); equal to stuck_stiffness without one.
+// g = a + e^{i h phi} a_next and add kt g^H g (Hermitian), on the stiffness of harmonic h's nodal
+// diameter where the model has them; equal to stuck_stiffness without either.
 Eigen::MatrixXcd stuck_stiffness(const FrictionModel& model, int harmonic);
 
 // One linear operator A condensed onto c (formulas above), A_oo factorized once (partial-pivoting

@@ -15,6 +15,10 @@ FrictionModel whole_ring(const FrictionModel& sector_model, int sectors) {
   if (sectors < 2) throw std::invalid_argument(fmt::format("whole ring: {} sectors; give at least 2", sectors));
   FrictionModel s = sector_model;
   validate_model(s, "whole ring", true);
+  if (!s.nodal_diameters.empty())
+    throw std::invalid_argument(
+        "whole ring: the sector's linear part is cyclic itself (per nodal diameter): build the whole structure "
+        "from its mesh instead");
   double phase = 0.0;
   for (const ContactElement& c : s.contacts)
     if (c.cyclic()) phase = c.next_phase;

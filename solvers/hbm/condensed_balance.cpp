@@ -28,17 +28,6 @@ friction::FrictionModel validated(friction::FrictionModel model) {
   return model;
 }
 
-// D_h = K + i h w C - (h w)^2 M.
-Eigen::MatrixXcd dynamic_stiffness(const friction::FrictionModel& m, double hw) {
-  const Index n = m.mass.rows();
-  Eigen::MatrixXcd d(n, n);
-  const bool damped = m.damping.size() > 0;
-  for (Index i = 0; i < n; ++i)
-    for (Index j = 0; j < n; ++j)
-      d(i, j) = Complex(m.stiffness(i, j) - hw * hw * m.mass(i, j), damped ? hw * m.damping(i, j) : 0.0);
-  return d;
-}
-
 // The loads of harmonic h on all DOFs: f_static at h = 0, F at h = 1, none above.
 Eigen::VectorXcd harmonic_load(const friction::FrictionModel& m, int h) {
   if (h == 0) return m.static_load.cast<Complex>();
@@ -84,8 +73,9 @@ HarmonicBalance::HarmonicBalance(friction::FrictionModel model, HbmOptions optio
                                cyclic_gap_operator(e.normal, e.normal_next, e.next_phase, options_.harmonics)}
                    : CyclicGap{});
 
-  static_.emplace(system_.condense(dynamic_stiffness(model_, 0.0)));
-  modal_ = ModalBasis::of(model_, contact_dofs(), other_dofs());
+  static_.emplace(system_.condense(friction::dynamic_stiffness(model_, 0, 0.0)));
+  // Modal superposition needs one real basis for every harmonic: not a cyclic sector's per-diameter operators.
+  if (model_.nodal_diameters.empty()) modal_ = ModalBasis::of(model_, contact_dofs(), other_dofs());
 
   double preload = 0.0;
   for (const friction::ContactElement& e : model_.contacts) preload += (1.0 + e.law.mu) * e.law.n0;
@@ -103,7 +93,7 @@ void HarmonicBalance::with_condensation(int h, double omega, const Use& use) con
   } else if (modal_ && omega > 0.0) {
     use(modal_->at(h * omega));
   } else {
-    use(system_.condense(dynamic_stiffness(model_, h * omega)));
+    use(system_.condense(friction::dynamic_stiffness(model_, h, h * omega)));
   }
 }
 

@@ -1,5 +1,6 @@
 #include "hbm/cycle_energy.hpp"
 
+#include <complex>
 #include <numbers>
 
 #include "contact/aft.hpp"
@@ -22,7 +23,14 @@ CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) 
     e.excitation += contact::cycle_work(f, qi);
   }
   // Viscous: integral over a period of q'^T C q' = pi h^2 w (a^T C a + b^T C b) per harmonic.
-  if (model.damping.size() > 0)
+  // With a cyclic sector's Hermitian C_k: pi h^2 w Z^H C_k Z, Z = a - i b (real for Hermitian C_k).
+  if (!model.nodal_diameters.empty())
+    for (int h = 1; h <= harmonics; ++h) {
+      const Eigen::VectorXcd z = q.col(2 * h - 1).cast<std::complex<double>>() -
+                                 std::complex<double>(0.0, 1.0) * q.col(2 * h).cast<std::complex<double>>();
+      e.viscous += std::numbers::pi * h * h * solution.omega * z.dot(model.nodal_diameters.of_harmonic(h).damping * z).real();
+    }
+  else if (model.damping.size() > 0)
     for (int h = 1; h <= harmonics; ++h) {
       const Eigen::VectorXd a = q.col(2 * h - 1), b = q.col(2 * h);
       e.viscous += std::numbers::pi * h * h * solution.omega * (a.dot(model.damping * a) + b.dot(model.damping * b));

@@ -11,6 +11,7 @@
 
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
+#include "linalg/inertia.hpp"
 #include "linalg/modal_solver.hpp"
 
 namespace bb {
@@ -187,6 +188,19 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
   model.fixed_interface_frequencies_hz = modes.eigenvalues.array().max(0.0).sqrt() / (2 * std::numbers::pi);
   if (timing) timing->projection_seconds = seconds_since(t0);
   return model;
+}
+
+int fixed_interface_count(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                          const std::vector<int>& masters, double cut_frequency_hz) {
+  const std::vector<ReducedDof> names(masters.size(), ReducedDof{"master", -1, 0});
+  const Partition p = partition_dofs(static_cast<int>(stiffness.rows()), masters, names);
+  if (p.slaves.empty()) return 0;
+  const double sigma = std::pow(2 * std::numbers::pi * cut_frequency_hz, 2);
+  const InertiaCount c = eigenvalues_below(slave_block(stiffness, p), slave_block(mass, p), sigma);
+  if (!c.ok)
+    throw SolverError(fmt::format("Craig-Bampton: the fixed-interface modes below {} Hz cannot be counted: {}",
+                                  cut_frequency_hz, c.message));
+  return c.negative;
 }
 
 }  // namespace bb

@@ -37,4 +37,10 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
                            const std::vector<int>& masters, const std::vector<ReducedDof>& master_names,
                            const CraigBamptonOptions& options, CraigBamptonTiming* timing = nullptr);
 
+// The fixed-interface modes below `cut_frequency_hz` (> 0): the Sturm count of K_ss - (2 pi f)^2 M_ss,
+// what a reduction that keeps every mode below the cut needs as n_modes. Throws InputError for
+// invalid masters, SolverError when the count fails (f an eigenvalue to rounding).
+int fixed_interface_count(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                          const std::vector<int>& masters, double cut_frequency_hz);
+
 }  // namespace bb

@@ -15,7 +15,7 @@ void write_sidecar(const ReducedModel& model, const std::string& name, const fs:
 }
 
 void files(const HbmSpec& spec, const HbmOutcome& hbm, const fs::path& out, RunRecord& run) {
-  if (!spec.model.masters.empty()) write_sidecar(hbm.prepared.linear, spec.model.name, out, run);
+  if (!spec.model.masters.empty() && !spec.cyclic) write_sidecar(hbm.prepared.linear, spec.model.name, out, run);
 }
 
 void files(const FrfSpec&, const FrfOutcome& frf, const fs::path& out, RunRecord& run) {

@@ -1,0 +1,163 @@
+#include "cyclic/cyclic_reduction.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "common/errors.hpp"
+#include "reduction/craig_bampton.hpp"
+
+namespace bb {
+namespace {
+
+using Complex = std::complex<double>;
+using Sparse = Eigen::SparseMatrix<double>;
+using ComplexSparse = Eigen::SparseMatrix<Complex>;
+using Eigen::Index;
+
+// Reduced index of each free equation; -1 on the right face (it follows the left face).
+std::vector<int> reduced_indices(int n_free, const CyclicDofs& cyclic) {
+  std::vector<int> reduced(static_cast<size_t>(n_free), 0);
+  for (int r : cyclic.right)
+    if (r >= 0) reduced[static_cast<size_t>(r)] = -1;
+  int m = 0;
+  for (int& r : reduced) r = r < 0 ? -1 : m++;
+  return reduced;
+}
+
+// [[Re A, -Im A], [Im A, Re A]]: A acting on a + ib, written on (a, b). Hermitian A gives a
+// symmetric matrix whose every eigenvalue is A's, twice (z and i z).
+Sparse doubled(const ComplexSparse& a) {
+  const Index n = a.rows();
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<size_t>(4 * a.nonZeros()));
+  for (Index k = 0; k < a.outerSize(); ++k)
+    for (ComplexSparse::InnerIterator it(a, k); it; ++it) {
+      const Index i = it.row(), j = it.col();
+      const double re = it.value().real(), im = it.value().imag();
+      t.emplace_back(i, j, re);
+      t.emplace_back(n + i, n + j, re);
+      if (im != 0.0) {
+        t.emplace_back(i, n + j, -im);
+        t.emplace_back(n + i, j, im);
+      }
+    }
+  Sparse d(2 * n, 2 * n);
+  d.setFromTriplets(t.begin(), t.end());
+  return d;
+}
+
+Eigen::MatrixXcd hermitian_part(const Eigen::MatrixXcd& a) { return 0.5 * (a + a.adjoint()); }
+
+// The complex vectors a + ib of the doubled problem's shapes (a; b), M-orthonormalized: a pair
+// (a; b), (-b; a) stands for one complex vector (z and i z), so half of them drop out.
+Eigen::MatrixXcd complex_modes(const Eigen::MatrixXd& shapes, const ComplexSparse& mass, Index wanted) {
+  const Index m = shapes.rows() / 2;
+  Eigen::MatrixXcd kept(m, wanted);
+  Index n = 0;
+  for (Index j = 0; j < shapes.cols() && n < wanted; ++j) {
+    Eigen::VectorXcd z = shapes.col(j).head(m).cast<Complex>() + Complex(0.0, 1.0) * shapes.col(j).tail(m);
+    const double before = std::sqrt(std::abs(z.dot(mass * z)));
+    for (int pass = 0; pass < 2; ++pass)  // twice: Gram-Schmidt loses orthogonality once
+      for (Index q = 0; q < n; ++q) z -= kept.col(q) * kept.col(q).dot(mass * z);
+    const double after = std::sqrt(std::abs(z.dot(mass * z)));
+    if (after > 1e-6 * before) kept.col(n++) = z / after;
+  }
+  if (n != wanted)
+    throw SolverError(
+        fmt::format("cyclic Craig-Bampton: the doubled eigenproblem gave {} independent complex modes, {} expected", n,
+                    wanted));
+  return kept;
+}
+
+}  // namespace
+
+ComplexSparse complex_cyclic_projection(int n_free, const CyclicDofs& cyclic, double phase) {
+  const std::vector<int> reduced = reduced_indices(n_free, cyclic);
+  int m = 0;
+  for (int r : reduced) m += r >= 0 ? 1 : 0;
+  const Complex shift = std::polar(1.0, phase);
+  std::vector<Eigen::Triplet<Complex>> t;
+  for (int i = 0; i < n_free; ++i)
+    if (const int j = reduced[static_cast<size_t>(i)]; j >= 0) t.emplace_back(i, j, 1.0);
+  const int dim = cyclic.dim;
+  for (size_t pair = 0; pair < cyclic.right.size() / static_cast<size_t>(dim); ++pair)
+    for (int a = 0; a < dim; ++a) {
+      const int r = cyclic.right[pair * static_cast<size_t>(dim) + static_cast<size_t>(a)];
+      if (r < 0) continue;
+      for (int b = 0; b < dim; ++b) {
+        const int l = cyclic.left[pair * static_cast<size_t>(dim) + static_cast<size_t>(b)];
+        if (cyclic.rotation(a, b) == 0.0 || l < 0) continue;
+        t.emplace_back(r, reduced[static_cast<size_t>(l)], shift * cyclic.rotation(a, b));
+      }
+    }
+  ComplexSparse T(n_free, m);
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
+}
+
+SectorReduction cyclic_craig_bampton(const Sparse& stiffness, const Sparse& mass, const CyclicDofs& cyclic,
+                                     double phase, const std::vector<int>& masters, double cut_frequency_hz,
+                                     int modes, const ModalOptions& options) {
+  const int n = static_cast<int>(stiffness.rows());
+  const std::vector<int> reduced = reduced_indices(n, cyclic);
+  const ComplexSparse T = complex_cyclic_projection(n, cyclic, phase);
+  const Index m = T.cols();
+  std::vector<int> boundary;  // the masters' reduced indices, then again shifted into the imaginary half
+  for (int dof : masters) {
+    if (dof < 0 || dof >= n) throw InputError(fmt::format("cyclic Craig-Bampton: master free DOF {} out of range", dof));
+    const int r = reduced[static_cast<size_t>(dof)];
+    if (r < 0)
+      throw InputError(fmt::format(
+          "cyclic Craig-Bampton: free DOF {} lies on the right cyclic face, which follows the left one; "
+          "choose a master off that face",
+          dof));
+    boundary.push_back(r);
+  }
+  const Index nb = static_cast<Index>(boundary.size());
+  for (Index i = 0; i < nb; ++i) boundary.push_back(boundary[static_cast<size_t>(i)] + static_cast<int>(m));
+
+  const ComplexSparse k = T.adjoint() * stiffness.cast<Complex>() * T;
+  const ComplexSparse mc = T.adjoint() * mass.cast<Complex>() * T;
+  const Sparse kd = doubled(k), md = doubled(mc);
+  int pairs = modes;
+  if (cut_frequency_hz > 0.0) {
+    const int count = fixed_interface_count(kd, md, boundary, cut_frequency_hz);
+    if (count % 2 != 0)
+      throw SolverError(fmt::format(
+          "cyclic Craig-Bampton: {} doubled fixed-interface eigenvalues below {} Hz (odd: a pair is split by rounding)",
+          count, cut_frequency_hz));
+    pairs = count / 2;
+  }
+  CraigBamptonOptions cb;
+  cb.n_modes = 2 * pairs;
+  cb.ordering = options.ordering;
+  cb.shift_frequency_hz = options.shift_frequency_hz;
+  const ReducedModel real =
+      craig_bampton(kd, md, boundary, std::vector<ReducedDof>(boundary.size(), ReducedDof{"master", -1, 0}), cb);
+
+  Eigen::MatrixXcd basis(m, nb + pairs);
+  const Eigen::MatrixXd& recovery = real.recovery;  // rows: (a; b) halves of the doubled problem
+  for (Index i = 0; i < nb; ++i)
+    basis.col(i) = recovery.col(i).head(m).cast<Complex>() + Complex(0.0, 1.0) * recovery.col(i).tail(m);
+  SectorReduction out;
+  out.phase = phase;
+  out.masters = static_cast<int>(nb);
+  out.mode_frequencies_hz.resize(pairs);
+  if (pairs > 0) {
+    Eigen::MatrixXcd q = complex_modes(recovery.rightCols(2 * pairs), mc, pairs);
+    // Rayleigh-Ritz in their span: exact eigenvectors of the Hermitian problem, not mixtures of a pair.
+    const Eigen::MatrixXcd kq = hermitian_part(q.adjoint() * (k * q)), mq = hermitian_part(q.adjoint() * (mc * q));
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> ritz(kq, mq);
+    if (ritz.info() != Eigen::Success) throw SolverError("cyclic Craig-Bampton: the Rayleigh-Ritz step failed");
+    basis.rightCols(pairs) = q * ritz.eigenvectors();
+    out.mode_frequencies_hz = ritz.eigenvalues().array().max(0.0).sqrt() / (2 * std::numbers::pi);
+  }
+  out.stiffness = hermitian_part(basis.adjoint() * (k * basis));
+  out.mass = hermitian_part(basis.adjoint() * (mc * basis));
+  return out;
+}
+
+}  // namespace bb

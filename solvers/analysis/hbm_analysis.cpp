@@ -295,8 +295,8 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   const auto limit_solve = [&](int l, double w) -> Eigen::VectorXcd {
     if (!m.nodal_diameters.empty()) {  // a cyclic sector: harmonic 1's nodal diameter
       const friction::NodalDiameterOperators& k1 = m.nodal_diameters.of_harmonic(1);
-      const Eigen::MatrixXcd d = (l == 0 ? k1.stiffness : stuck) + std::complex<double>(0.0, w) * k1.damping -
-                                 w * w * k1.mass;
+      const Eigen::MatrixXcd d =
+          (l == 0 ? k1.stiffness : stuck) + std::complex<double>(0.0, w) * k1.damping - w * w * k1.mass;
       if (l == 0) return d.topLeftCorner(nb, nb).partialPivLu().solve(m.harmonic_load.head(nb));
       return d.partialPivLu().solve(m.harmonic_load);
     }

@@ -206,7 +206,8 @@ void parse_cyclic(TomlReader& r, HbmSpec& s, bool harmonic_balance) {
   if (const toml::table* g = r.optional_table("gap_damper")) {
     TomlReader d(*g, r.path() + ".gap_damper", r.file());
     if (s.model.masters.empty())
-      d.fail("mass", "a gap damper sits between the platforms of a meshed sector: it needs 'masters' in [analysis.model]");
+      d.fail("mass",
+             "a gap damper sits between the platforms of a meshed sector: it needs 'masters' in [analysis.model]");
     GapDamperSpec damper;
     damper.at = d.location();
     damper.mass = d.positive("mass");

@@ -66,9 +66,8 @@ Eigen::MatrixXcd complex_modes(const Eigen::MatrixXd& shapes, const ComplexSpars
     if (after > 1e-6 * before) kept.col(n++) = z / after;
   }
   if (n != wanted)
-    throw SolverError(
-        fmt::format("cyclic Craig-Bampton: the doubled eigenproblem gave {} independent complex modes, {} expected", n,
-                    wanted));
+    throw SolverError(fmt::format(
+        "cyclic Craig-Bampton: the doubled eigenproblem gave {} independent complex modes, {} expected", n, wanted));
   return kept;
 }
 
@@ -99,21 +98,22 @@ ComplexSparse complex_cyclic_projection(int n_free, const CyclicDofs& cyclic, do
 }
 
 SectorReduction cyclic_craig_bampton(const Sparse& stiffness, const Sparse& mass, const CyclicDofs& cyclic,
-                                     double phase, const std::vector<int>& masters, double cut_frequency_hz,
-                                     int modes, const ModalOptions& options) {
+                                     double phase, const std::vector<int>& masters, double cut_frequency_hz, int modes,
+                                     const ModalOptions& options) {
   const int n = static_cast<int>(stiffness.rows());
   const std::vector<int> reduced = reduced_indices(n, cyclic);
   const ComplexSparse T = complex_cyclic_projection(n, cyclic, phase);
   const Index m = T.cols();
   std::vector<int> boundary;  // the masters' reduced indices, then again shifted into the imaginary half
   for (int dof : masters) {
-    if (dof < 0 || dof >= n) throw InputError(fmt::format("cyclic Craig-Bampton: master free DOF {} out of range", dof));
+    if (dof < 0 || dof >= n)
+      throw InputError(fmt::format("cyclic Craig-Bampton: master free DOF {} out of range", dof));
     const int r = reduced[static_cast<size_t>(dof)];
     if (r < 0)
-      throw InputError(fmt::format(
-          "cyclic Craig-Bampton: free DOF {} lies on the right cyclic face, which follows the left one; "
-          "choose a master off that face",
-          dof));
+      throw InputError(
+          fmt::format("cyclic Craig-Bampton: free DOF {} lies on the right cyclic face, which follows the left one; "
+                      "choose a master off that face",
+                      dof));
     boundary.push_back(r);
   }
   const Index nb = static_cast<Index>(boundary.size());

@@ -19,16 +19,15 @@
 namespace bb {
 
 struct SectorReduction {
-  double phase = 0.0;                // sigma [rad]
-  Eigen::MatrixXcd stiffness, mass;  // Hermitian; the masters in the given order, then the modes
+  double phase = 0.0;                   // sigma [rad]
+  Eigen::MatrixXcd stiffness, mass;     // Hermitian; the masters in the given order, then the modes
   Eigen::VectorXd mode_frequencies_hz;  // of the fixed-interface modes kept, ascending
   int masters = 0;
 };
 
 // The right face following the left one with the phase factor e^{i phase}: sector free DOFs
 // (rows) from the reduced coordinates (the sector without its right face).
-Eigen::SparseMatrix<std::complex<double>> complex_cyclic_projection(int n_free, const CyclicDofs& cyclic,
-                                                                   double phase);
+Eigen::SparseMatrix<std::complex<double>> complex_cyclic_projection(int n_free, const CyclicDofs& cyclic, double phase);
 
 // `masters`: free equations of the sector. Keeps every fixed-interface mode below
 // `cut_frequency_hz` (their count from the Sturm sequence of the doubled real problem), or

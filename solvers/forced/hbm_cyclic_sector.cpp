@@ -96,9 +96,8 @@ Index master_index(const std::map<std::string, Index>& masters, const PointDof& 
 // sector j's point p DOF d is index(j, p, d), its damper's at damper(j) and damper(j) + 1. `sector`
 // gives the gap's geometry.
 template <class Index3, class DamperIndex>
-void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& spec, int copies,
-                           const Index3& index, const DamperIndex& damper,
-                           const std::map<std::string, Index>& first_sector) {
+void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& spec, int copies, const Index3& index,
+                           const DamperIndex& damper, const std::map<std::string, Index>& first_sector) {
   const int N = spec.cyclic->sectors;
   const double phi = kTwoPi * spec.cyclic->engine_order / N;
   const Eigen::Matrix3d R = sector_rotation(N, 3);
@@ -255,7 +254,9 @@ PreparedHbm prepare_sector(const Model& model, const HbmSpec& spec) {
   p.linear.mass = p.model.mass.topLeftCorner(nb + nq, nb + nq);
   add_dampers_and_loads(
       p, model, spec, 1,
-      [&](int, const std::string& point, int d) { return first_sector.at(PointDof{point, d}.name()); },
+      [&](int, const std::string& point, int d) {
+        return first_sector.at(PointDof{point, d}.name());
+      },
       [&](int) { return n - 2; }, first_sector);
   return p;
 }
@@ -276,8 +277,9 @@ PreparedHbm prepare_whole(const Model& model, const HbmSpec& spec) {
   const Index nb = static_cast<Index>(spec.model.masters.size()) * 3, nw = blades.size();
   std::map<std::string, Index> first_sector;
   for (Index i = 0; i < nw; ++i) {
-    const std::string name = i < nb ? PointDof{spec.model.masters[static_cast<size_t>(i / 3)], static_cast<int>(i % 3)}.name()
-                                    : blades.dofs[static_cast<size_t>(i)].name();
+    const std::string name =
+        i < nb ? PointDof{spec.model.masters[static_cast<size_t>(i / 3)], static_cast<int>(i % 3)}.name()
+               : blades.dofs[static_cast<size_t>(i)].name();
     if (i < nb) first_sector[name] = i;
     p.dof_names.push_back(name);
   }

@@ -107,11 +107,11 @@ struct HbmCyclicSpec {
 // (0 deg) nothing but friction holds the damper's mean circumferential position, which a slipping
 // contact leaves free (the balance is then singular).
 struct GapDamperSpec {
-  double mass = 0.0;               // [kg]
-  double face_angle_deg = 45.0;    // in (0, 90)
-  std::string own, next;           // master points of the sector
-  double centrifugal_force = 0.0;  // [N], outward at the gap
-  contact::JenkinsParameters law;  // kn, kt, mu of each face
+  double mass = 0.0;                                                // [kg]
+  double face_angle_deg = 45.0;                                     // in (0, 90)
+  std::string own, next;                                            // master points of the sector
+  double centrifugal_force = 0.0;                                   // [N], outward at the gap
+  contact::JenkinsParameters law;                                   // kn, kt, mu of each face
   std::shared_ptr<const contact::SliderDistribution> distribution;  // null: one Jenkins slider per face
   SourceLocation at;
 };

@@ -68,7 +68,9 @@ struct CyclicLinearModel {
   std::vector<NodalDiameterOperators> diameters;  // k = 0 .. N-1; empty = the model is not cyclic
 
   bool empty() const { return diameters.empty(); }
-  int diameter(int harmonic) const { return static_cast<int>((static_cast<long long>(harmonic) * engine_order) % sectors); }
+  int diameter(int harmonic) const {
+    return static_cast<int>((static_cast<long long>(harmonic) * engine_order) % sectors);
+  }
   const NodalDiameterOperators& of_harmonic(int harmonic) const {
     return diameters[static_cast<size_t>(diameter(harmonic))];
   }

@@ -28,7 +28,8 @@ CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) 
     for (int h = 1; h <= harmonics; ++h) {
       const Eigen::VectorXcd z = q.col(2 * h - 1).cast<std::complex<double>>() -
                                  std::complex<double>(0.0, 1.0) * q.col(2 * h).cast<std::complex<double>>();
-      e.viscous += std::numbers::pi * h * h * solution.omega * z.dot(model.nodal_diameters.of_harmonic(h).damping * z).real();
+      e.viscous +=
+          std::numbers::pi * h * h * solution.omega * z.dot(model.nodal_diameters.of_harmonic(h).damping * z).real();
     }
   else if (model.damping.size() > 0)
     for (int h = 1; h <= harmonics; ++h) {

@@ -156,6 +156,83 @@ TEST(CyclicFriction, SectorWithShiftedDamperEqualsTheWholeRing) {
   EXPECT_TRUE(slipped) << "no frequency made the dampers slip: the test would not see the friction";
 }
 
+// Blades coupled elastically to their neighbours (a disk): a spring kc from platform x of blade j
+// to tip x of blade j + 1. In the travelling wave of nodal diameter k the sector's stiffness gains
+// the Hermitian kc [1, -e^{i s}; -e^{-i s}, 1] on (px, tx), s = 2 pi k / N: complex for 0 < k < N/2,
+// its conjugate for k > N/2. The sector with those operators per diameter equals the whole ring.
+struct CoupledRing : Ring {
+  double kc = 4e4;
+
+  friction::FrictionModel whole(int engine_order) const {
+    friction::FrictionModel m = Ring::whole(engine_order);
+    const Index n = m.mass.rows();
+    for (int j = 0; j < sectors; ++j) {
+      const Index a = kDofs * j + px, b = (kDofs * (j + 1) + tx) % n;
+      m.stiffness(a, a) += kc;
+      m.stiffness(b, b) += kc;
+      m.stiffness(a, b) -= kc;
+      m.stiffness(b, a) -= kc;
+    }
+    finish(m);
+    return m;
+  }
+
+  friction::FrictionModel sector(int engine_order) const {
+    friction::FrictionModel m = Ring::sector(engine_order);
+    friction::CyclicLinearModel& c = m.nodal_diameters;
+    c.sectors = sectors;
+    c.engine_order = engine_order;
+    for (int k = 0; k < sectors; ++k) {
+      const std::complex<double> shift = std::polar(1.0, 2 * kPi * k / sectors);
+      Eigen::MatrixXcd stiffness = m.stiffness.cast<std::complex<double>>();
+      stiffness(px, px) += kc;
+      stiffness(tx, tx) += kc;
+      stiffness(px, tx) -= kc * shift;
+      stiffness(tx, px) -= kc * std::conj(shift);
+      c.diameters.push_back({m.mass.cast<std::complex<double>>(), 2e-5 * stiffness, stiffness});
+    }
+    const Eigen::MatrixXcd& k0 = c.diameters.front().stiffness;
+    m.stiffness = k0.real();
+    finish(m);
+    return m;
+  }
+};
+
+TEST(CyclicFriction, DynamicStiffnessOfHarmonicHIsThatOfNodalDiameterHTimesEoModN) {
+  CoupledRing ring;
+  const friction::FrictionModel m = ring.sector(4);
+  for (int h = 1; h <= 7; ++h) {
+    const int k = (4 * h) % ring.sectors;
+    const friction::NodalDiameterOperators& d = m.nodal_diameters.diameters[static_cast<size_t>(k)];
+    const Eigen::MatrixXcd expected =
+        d.stiffness + std::complex<double>(0.0, 300.0 * h) * d.damping - std::pow(300.0 * h, 2) * d.mass;
+    EXPECT_EQ((friction::dynamic_stiffness(m, h, 300.0 * h) - expected).norm(), 0.0) << "h " << h;
+  }
+  EXPECT_EQ(friction::dynamic_stiffness(m, 0, 0.0).imag().norm(), 0.0);  // the static harmonic is ND 0
+  EXPECT_THROW(timeint::NewmarkIntegrator(m, timeint::NewmarkOptions{}), std::invalid_argument);
+}
+
+TEST(CyclicFriction, SectorWithNodalDiameterOperatorsEqualsTheElasticallyCoupledRing) {
+  const CoupledRing ring;
+  hbm::HbmOptions options;
+  options.harmonics = 3;
+  options.aft.samples = 96;   // a multiple of N (see above)
+  for (int eo : {1, 2, 4}) {  // 4: harmonic 1 in ND 4 = -2, the conjugate wave
+    const hbm::HarmonicBalance whole(ring.whole(eo), options), sector(ring.sector(eo), options);
+    for (double omega : {380.0, 450.0, 520.0}) {
+      const hbm::HbmSolution w = hbm::solve_at_frequency(whole, omega);
+      const hbm::HbmSolution s = hbm::solve_at_frequency(sector, omega);
+      ASSERT_TRUE(w.converged) << "EO " << eo << " omega " << omega << ": " << w.failure;
+      ASSERT_TRUE(s.converged) << "EO " << eo << " omega " << omega << ": " << s.failure;
+      const Eigen::MatrixXd qw = whole.recover(w.x, omega), qs = sector.recover(s.x, omega);
+      EXPECT_LT((qw.topRows(kDofs) - qs).cwiseAbs().maxCoeff(), 1e-6 * qs.cwiseAbs().maxCoeff())
+          << "EO " << eo << " omega " << omega;
+      const hbm::CycleEnergy e = hbm::cycle_energy(sector, s);  // the Hermitian damping's share included
+      EXPECT_NEAR(e.excitation, e.viscous + e.friction + e.normal, 1e-6 * e.excitation) << "EO " << eo;
+    }
+  }
+}
+
 TEST(CyclicFriction, OnlyTheHarmonicBalanceSolvesACyclicContact) {
   const Ring ring;
   EXPECT_THROW(timeint::NewmarkIntegrator(ring.sector(1), timeint::NewmarkOptions{}), std::invalid_argument);

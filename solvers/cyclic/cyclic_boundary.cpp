@@ -63,12 +63,16 @@ SectorFaces pair_sector_faces(const Mesh& mesh, const std::vector<int>& left, co
               }
     if (match < 0) {
       const Eigen::VectorXd q = rotation.transpose() * p;
-      throw InputError(
-          fmt::format("{}: right-face node {} at ({:.6g}, {:.6g}, {:.6g}) is not the image of any "
-                      "left-face node under a rotation by 360/{} deg about z (no left node within {:.3g} m "
-                      "of ({:.6g}, {:.6g}, {:.6g}))",
-                      what, mesh.node_ids[static_cast<size_t>(n)], p[0], p[1], mesh.dim > 2 ? p[2] : 0.0, sectors,
-                      tolerance, q[0], q[1], mesh.dim > 2 ? q[2] : 0.0));
+      size_t nearest = 0;  // the closest image, to say how far the faces miss
+      for (size_t i = 1; i < image.size(); ++i)
+        if ((image[i] - p).norm() < (image[nearest] - p).norm()) nearest = i;
+      throw InputError(fmt::format(
+          "{}: right-face node {} at ({:.6g}, {:.6g}, {:.6g}) is not the image of any left-face node under a "
+          "rotation by 360/{} deg about z (no left node within {:.3g} m of ({:.6g}, {:.6g}, {:.6g}); the nearest "
+          "image, of left node {}, is {:.3g} m away)",
+          what, mesh.node_ids[static_cast<size_t>(n)], p[0], p[1], mesh.dim > 2 ? p[2] : 0.0, sectors, tolerance,
+          q[0], q[1], mesh.dim > 2 ? q[2] : 0.0, mesh.node_ids[static_cast<size_t>(left[nearest])],
+          (image[nearest] - p).norm()));
     }
     taken[static_cast<size_t>(match)] = true;
     faces.left.push_back(left[static_cast<size_t>(match)]);

@@ -5,7 +5,7 @@
 // fixed-interface modes below a cut frequency are added. Keeping every mode below the cut, for
 // every phase, spans the same space as the whole structure's fixed-interface modes below that cut:
 // a whole-structure reduction with the same cut is the same model (cases/beyond/
-// bladed_disk_fe_dampers_whole.toml relies on it).
+// bladed_disk_vs_whole_forced.toml relies on it).
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Sparse>

@@ -45,7 +45,15 @@ struct GapFrame {
   Eigen::Vector3d radial, circumferential;
 };
 GapFrame gap_frame(const Model& model, const GapDamperSpec& d, const Eigen::Matrix3d& rotation) {
-  const Eigen::Vector3d mid = 0.5 * (position(model, d.own) + rotation * position(model, d.next));
+  const Eigen::Vector3d own = position(model, d.own), next = position(model, d.next);
+  // The next sector's seat faces this sector's across the gap: closer, turned into the next
+  // sector, than the same point of this sector is.
+  if (!((rotation * next - own).norm() < (next - own).norm()))
+    throw InputError(fmt::format(
+        "{}: 'next' = '{}' is no platform of the neighbour across the gap from 'own' = '{}': turned into the next "
+        "sector it lies {:.3g} m from it, farther than the {:.3g} m of this sector's own point (swapped seats?)",
+        d.at.where(), d.next, d.own, (rotation * next - own).norm(), (next - own).norm()));
+  const Eigen::Vector3d mid = 0.5 * (own + rotation * next);
   Eigen::Vector3d r(mid.x(), mid.y(), 0.0);
   if (!(r.norm() > 0.0)) throw InputError(fmt::format("{}: the gap lies on the axis", d.at.where()));
   r.normalize();

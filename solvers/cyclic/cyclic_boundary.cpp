@@ -70,8 +70,8 @@ SectorFaces pair_sector_faces(const Mesh& mesh, const std::vector<int>& left, co
           "{}: right-face node {} at ({:.6g}, {:.6g}, {:.6g}) is not the image of any left-face node under a "
           "rotation by 360/{} deg about z (no left node within {:.3g} m of ({:.6g}, {:.6g}, {:.6g}); the nearest "
           "image, of left node {}, is {:.3g} m away)",
-          what, mesh.node_ids[static_cast<size_t>(n)], p[0], p[1], mesh.dim > 2 ? p[2] : 0.0, sectors, tolerance,
-          q[0], q[1], mesh.dim > 2 ? q[2] : 0.0, mesh.node_ids[static_cast<size_t>(left[nearest])],
+          what, mesh.node_ids[static_cast<size_t>(n)], p[0], p[1], mesh.dim > 2 ? p[2] : 0.0, sectors, tolerance, q[0],
+          q[1], mesh.dim > 2 ? q[2] : 0.0, mesh.node_ids[static_cast<size_t>(left[nearest])],
           (image[nearest] - p).norm()));
     }
     taken[static_cast<size_t>(match)] = true;

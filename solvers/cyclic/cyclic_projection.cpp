@@ -10,6 +10,15 @@
 
 namespace bb {
 
+std::vector<int> reduced_indices(int n_free, const CyclicDofs& cyclic) {
+  std::vector<int> reduced(static_cast<size_t>(n_free), 0);
+  for (int r : cyclic.right)
+    if (r >= 0) reduced[static_cast<size_t>(r)] = -1;
+  int m = 0;
+  for (int& r : reduced) r = r < 0 ? -1 : m++;
+  return reduced;
+}
+
 CyclicProjection cyclic_projection(int n_free, const CyclicDofs& cyclic, int nodal_diameter) {
   const int N = cyclic.sectors;
   if (nodal_diameter < 0 || 2 * nodal_diameter > N)
@@ -18,12 +27,9 @@ CyclicProjection cyclic_projection(int n_free, const CyclicDofs& cyclic, int nod
   p.nodal_diameter = nodal_diameter;
   p.split = nodal_diameter != 0 && 2 * nodal_diameter != N;
   p.n_free = n_free;
-  // Reduced index of each free equation; -1 on the right face (it follows the left face).
-  std::vector<int> reduced(static_cast<size_t>(n_free), 0);
-  for (int r : cyclic.right)
-    if (r >= 0) reduced[static_cast<size_t>(r)] = -1;
+  const std::vector<int> reduced = reduced_indices(n_free, cyclic);
   int m = 0;
-  for (int& r : reduced) r = r < 0 ? -1 : m++;
+  for (int r : reduced) m += r >= 0 ? 1 : 0;
   const double phase = 2 * std::numbers::pi * nodal_diameter / N;
   const double c = std::cos(phase), s = p.split ? std::sin(phase) : 0.0;
   const int n = n_free, blocks = p.split ? 2 : 1;
@@ -32,25 +38,16 @@ CyclicProjection cyclic_projection(int n_free, const CyclicDofs& cyclic, int nod
   for (int i = 0; i < n; ++i)
     if (const int j = reduced[static_cast<size_t>(i)]; j >= 0)
       for (int b = 0; b < blocks; ++b) t.emplace_back(b * n + i, b * m + j, 1.0);
-  const int dim = cyclic.dim;
-  for (size_t pair = 0; pair < cyclic.right.size() / static_cast<size_t>(dim); ++pair)
-    for (int a = 0; a < dim; ++a) {
-      const int r = cyclic.right[pair * static_cast<size_t>(dim) + static_cast<size_t>(a)];
-      if (r < 0) continue;
-      for (int b = 0; b < dim; ++b) {
-        const double rot = cyclic.rotation(a, b);
-        const int l = cyclic.left[pair * static_cast<size_t>(dim) + static_cast<size_t>(b)];
-        if (rot == 0.0 || l < 0) continue;
-        const int j = reduced[static_cast<size_t>(l)];
-        // cosine part: c A_l - s B_l; sine part: s A_l + c B_l (both turned by the rotation).
-        t.emplace_back(r, j, c * rot);
-        if (p.split) {
-          t.emplace_back(r, m + j, -s * rot);
-          t.emplace_back(n + r, j, s * rot);
-          t.emplace_back(n + r, m + j, c * rot);
-        }
-      }
+  // cosine part: c A_l - s B_l; sine part: s A_l + c B_l (both turned by the rotation).
+  for_each_face_coupling(cyclic, [&](int r, int l, double rot) {
+    const int j = reduced[static_cast<size_t>(l)];
+    t.emplace_back(r, j, c * rot);
+    if (p.split) {
+      t.emplace_back(r, m + j, -s * rot);
+      t.emplace_back(n + r, j, s * rot);
+      t.emplace_back(n + r, m + j, c * rot);
     }
+  });
   p.T.resize(blocks * n, blocks * m);
   p.T.setFromTriplets(t.begin(), t.end());
   return p;

@@ -7,6 +7,8 @@
 #pragma once
 #include <Eigen/Sparse>
 
+#include <vector>
+
 #include "cyclic/cyclic_boundary.hpp"
 
 namespace bb {
@@ -20,6 +22,27 @@ struct CyclicProjection {
 
   Eigen::Index reduced_size() const { return T.cols(); }
 };
+
+// The reduced index of each free equation: -1 on the right face (it follows the left face), the
+// others numbered in order.
+std::vector<int> reduced_indices(int n_free, const CyclicDofs& cyclic);
+
+// Calls couple(r, l, c) for each right-face equation r and left-face equation l it follows with
+// the rotation's coefficient c != 0 (u_r = sum c u_l, times the phase factor).
+template <class Couple>
+void for_each_face_coupling(const CyclicDofs& cyclic, const Couple& couple) {
+  const auto dim = static_cast<size_t>(cyclic.dim);
+  for (size_t pair = 0; pair < cyclic.right.size() / dim; ++pair)
+    for (size_t a = 0; a < dim; ++a) {
+      const int r = cyclic.right[pair * dim + a];
+      if (r < 0) continue;
+      for (size_t b = 0; b < dim; ++b) {
+        const double c = cyclic.rotation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+        const int l = cyclic.left[pair * dim + b];
+        if (c != 0.0 && l >= 0) couple(r, l, c);
+      }
+    }
+}
 
 // Throws InputError for k outside 0..N/2.
 CyclicProjection cyclic_projection(int n_free, const CyclicDofs& cyclic, int nodal_diameter);

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "cyclic/cyclic_projection.hpp"
 #include "reduction/craig_bampton.hpp"
 
 namespace bb {
@@ -16,16 +17,6 @@ using Complex = std::complex<double>;
 using Sparse = Eigen::SparseMatrix<double>;
 using ComplexSparse = Eigen::SparseMatrix<Complex>;
 using Eigen::Index;
-
-// Reduced index of each free equation; -1 on the right face (it follows the left face).
-std::vector<int> reduced_indices(int n_free, const CyclicDofs& cyclic) {
-  std::vector<int> reduced(static_cast<size_t>(n_free), 0);
-  for (int r : cyclic.right)
-    if (r >= 0) reduced[static_cast<size_t>(r)] = -1;
-  int m = 0;
-  for (int& r : reduced) r = r < 0 ? -1 : m++;
-  return reduced;
-}
 
 // [[Re A, -Im A], [Im A, Re A]]: A acting on a + ib, written on (a, b). Hermitian A gives a
 // symmetric matrix whose every eigenvalue is A's, twice (z and i z).
@@ -81,17 +72,8 @@ ComplexSparse complex_cyclic_projection(int n_free, const CyclicDofs& cyclic, do
   std::vector<Eigen::Triplet<Complex>> t;
   for (int i = 0; i < n_free; ++i)
     if (const int j = reduced[static_cast<size_t>(i)]; j >= 0) t.emplace_back(i, j, 1.0);
-  const int dim = cyclic.dim;
-  for (size_t pair = 0; pair < cyclic.right.size() / static_cast<size_t>(dim); ++pair)
-    for (int a = 0; a < dim; ++a) {
-      const int r = cyclic.right[pair * static_cast<size_t>(dim) + static_cast<size_t>(a)];
-      if (r < 0) continue;
-      for (int b = 0; b < dim; ++b) {
-        const int l = cyclic.left[pair * static_cast<size_t>(dim) + static_cast<size_t>(b)];
-        if (cyclic.rotation(a, b) == 0.0 || l < 0) continue;
-        t.emplace_back(r, reduced[static_cast<size_t>(l)], shift * cyclic.rotation(a, b));
-      }
-    }
+  for_each_face_coupling(
+      cyclic, [&](int r, int l, double rot) { t.emplace_back(r, reduced[static_cast<size_t>(l)], shift * rot); });
   ComplexSparse T(n_free, m);
   T.setFromTriplets(t.begin(), t.end());
   return T;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "friction/whole_ring.hpp"
@@ -95,6 +96,23 @@ struct Ring {
   }
 };
 
+// The whole ring and the sector solved at omega, every DOF recovered; none (and a failure) when
+// either does not converge.
+struct SolvedPair {
+  Eigen::MatrixXd whole, sector;
+  hbm::HbmSolution solution;  // the sector's
+};
+std::optional<SolvedPair> solve_both(const hbm::HarmonicBalance& whole, const hbm::HarmonicBalance& sector,
+                                     double omega) {
+  const hbm::HbmSolution w = hbm::solve_at_frequency(whole, omega);
+  const hbm::HbmSolution s = hbm::solve_at_frequency(sector, omega);
+  if (!w.converged || !s.converged) {
+    ADD_FAILURE() << "omega " << omega << ": " << (w.converged ? "sector: " + s.failure : "whole: " + w.failure);
+    return std::nullopt;
+  }
+  return SolvedPair{whole.recover(w.x, omega), sector.recover(s.x, omega), s};
+}
+
 TEST(CyclicFriction, ShiftedCoefficientsAreTheMotionAdvancedByThePhase) {
   Eigen::VectorXd c(7);
   c << 0.3, 1.0, -0.5, 0.25, 0.75, -0.2, 0.1;
@@ -134,11 +152,10 @@ TEST(CyclicFriction, SectorWithShiftedDamperEqualsTheWholeRing) {
       }
     }
     for (double omega : {380.0, 450.0, 520.0}) {
-      const hbm::HbmSolution w = hbm::solve_at_frequency(whole, omega);
-      const hbm::HbmSolution s = hbm::solve_at_frequency(sector, omega);
-      ASSERT_TRUE(w.converged) << "EO " << eo << " omega " << omega << ": " << w.failure;
-      ASSERT_TRUE(s.converged) << "EO " << eo << " omega " << omega << ": " << s.failure;
-      const Eigen::MatrixXd qw = whole.recover(w.x, omega), qs = sector.recover(s.x, omega);
+      const std::optional<SolvedPair> pair = solve_both(whole, sector, omega);
+      ASSERT_TRUE(pair) << "EO " << eo;
+      const Eigen::MatrixXd &qw = pair->whole, &qs = pair->sector;
+      const hbm::HbmSolution& s = pair->solution;
       const double scale = qs.cwiseAbs().maxCoeff();
       EXPECT_LT((qw.topRows(kDofs) - qs).cwiseAbs().maxCoeff(), 1e-6 * scale) << "EO " << eo << " omega " << omega;
       const double phi = 2 * kPi * eo / ring.sectors;
@@ -220,14 +237,12 @@ TEST(CyclicFriction, SectorWithNodalDiameterOperatorsEqualsTheElasticallyCoupled
   for (int eo : {1, 2, 4}) {  // 4: harmonic 1 in ND 4 = -2, the conjugate wave
     const hbm::HarmonicBalance whole(ring.whole(eo), options), sector(ring.sector(eo), options);
     for (double omega : {380.0, 450.0, 520.0}) {
-      const hbm::HbmSolution w = hbm::solve_at_frequency(whole, omega);
-      const hbm::HbmSolution s = hbm::solve_at_frequency(sector, omega);
-      ASSERT_TRUE(w.converged) << "EO " << eo << " omega " << omega << ": " << w.failure;
-      ASSERT_TRUE(s.converged) << "EO " << eo << " omega " << omega << ": " << s.failure;
-      const Eigen::MatrixXd qw = whole.recover(w.x, omega), qs = sector.recover(s.x, omega);
-      EXPECT_LT((qw.topRows(kDofs) - qs).cwiseAbs().maxCoeff(), 1e-6 * qs.cwiseAbs().maxCoeff())
+      const std::optional<SolvedPair> pair = solve_both(whole, sector, omega);
+      ASSERT_TRUE(pair) << "EO " << eo;
+      EXPECT_LT((pair->whole.topRows(kDofs) - pair->sector).cwiseAbs().maxCoeff(),
+                1e-6 * pair->sector.cwiseAbs().maxCoeff())
           << "EO " << eo << " omega " << omega;
-      const hbm::CycleEnergy e = hbm::cycle_energy(sector, s);  // the Hermitian damping's share included
+      const hbm::CycleEnergy e = hbm::cycle_energy(sector, pair->solution);  // the Hermitian damping's share included
       EXPECT_NEAR(e.excitation, e.viscous + e.friction + e.normal, 1e-6 * e.excitation) << "EO " << eo;
     }
   }

@@ -85,13 +85,6 @@ void refuse_unsupported(const HbmSpec& spec) {
     throw InputError(fmt::format("{}: a meshed sector's damping is modal or Rayleigh", spec.at.where()));
 }
 
-// Free equations of `point`'s three DOFs.
-std::vector<int> point_dofs(const Model& model, const FreeSystem& system, const std::string& point) {
-  std::vector<int> out;
-  for (Direction d = 0; d < 3; ++d) out.push_back(free_index(model, system, {point, d}));
-  return out;
-}
-
 // The model index of a named master DOF of the first sector.
 Index master_index(const std::map<std::string, Index>& masters, const PointDof& dof, const std::string& where) {
   const auto it = masters.find(dof.name());
@@ -117,6 +110,12 @@ void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& s
   m.harmonic_load = Eigen::VectorXcd::Zero(n);
   contact::JenkinsParameters law = g.law;
   law.n0 = 0.0;
+  // Every solver sees the face's law as its Jenkins sliders on the same relative motion.
+  const std::vector<contact::JenkinsParameters> sliders = contact::parallel_sliders(law, g.distribution.get());
+  const double cb = std::cos(g.face_angle_deg * kTwoPi / 360.0), sb = std::sin(g.face_angle_deg * kTwoPi / 360.0);
+  const std::string where = spec.at.where() + ": 'analysis'";
+  for (const FrfForce& f : spec.forces) master_index(first_sector, f.dof, where + " forces");
+  for (const auto& [dof, f] : spec.static_loads) master_index(first_sector, dof, where + " static_loads");
   Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
   for (int j = 0; j < copies; ++j, turn = R * turn) {
     const Eigen::Vector3d t = turn * frame.circumferential, r = turn * frame.radial;
@@ -124,7 +123,6 @@ void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& s
     m.static_load[dr] += g.centrifugal_force;
     // The wedge's faces: the own face's normal leans back towards this sector by the face angle,
     // the next face's towards the next sector; t points from this sector to the next.
-    const double cb = std::cos(g.face_angle_deg * kTwoPi / 360.0), sb = std::sin(g.face_angle_deg * kTwoPi / 360.0);
     const Eigen::Vector3d n_own = cb * r - sb * t, t_own = sb * r + cb * t;
     const Eigen::Vector3d n_next = cb * r + sb * t, t_next = -sb * r + cb * t;
     // u = t_face . (x_damper - x_platform), v = n_face . (x_damper - x_platform) (v > 0 presses),
@@ -157,8 +155,6 @@ void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& s
         next.normal[index((j + 1) % copies, g.next, d)] -= n_next[d];
       }
     }
-    // Every solver sees the face's law as its Jenkins sliders on the same relative motion.
-    const std::vector<contact::JenkinsParameters> sliders = contact::parallel_sliders(law, g.distribution.get());
     const std::string suffix = j == 0 ? "" : fmt::format("@{}", j);
     for (auto [element, name] : {std::pair{own, "own"}, std::pair{next, "next"}})
       for (size_t i = 0; i < sliders.size(); ++i) {
@@ -168,17 +164,12 @@ void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& s
       }
     // Sector j's loads: the first sector's turned by R^j, its force shifted by j phi.
     const Complex shift = std::polar(1.0, j * phi);
-    const std::string where = spec.at.where() + ": 'analysis'";
-    for (const FrfForce& f : spec.forces) {
-      master_index(first_sector, f.dof, where + " forces");
+    for (const FrfForce& f : spec.forces)
       for (int d = 0; d < 3; ++d)
         m.harmonic_load[index(j, f.dof.point, d)] +=
             shift * (turn(d, f.dof.direction) * f.amplitude / spec.forces.front().amplitude);
-    }
-    for (const auto& [dof, f] : spec.static_loads) {
-      master_index(first_sector, dof, where + " static_loads");
+    for (const auto& [dof, f] : spec.static_loads)
       for (int d = 0; d < 3; ++d) m.static_load[index(j, dof.point, d)] += turn(d, dof.direction) * f;
-    }
   }
   for (const PointDof& r : spec.responses) {
     p.responses.push_back(master_index(first_sector, r, spec.at.where() + ": 'analysis' responses"));
@@ -203,7 +194,7 @@ PreparedHbm prepare_sector(const Model& model, const HbmSpec& spec) {
   std::map<std::string, Index> first_sector;
   for (const std::string& point : spec.model.masters)
     for (int d = 0; d < 3; ++d) {
-      masters.push_back(point_dofs(model, system, point)[static_cast<size_t>(d)]);
+      masters.push_back(free_index(model, system, {point, d}));
       first_sector[PointDof{point, d}.name()] = static_cast<Index>(p.dof_names.size());
       p.dof_names.push_back(PointDof{point, d}.name());
     }
@@ -255,11 +246,6 @@ PreparedHbm prepare_sector(const Model& model, const HbmSpec& spec) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> eig(first.stiffness, first.mass,
                                                                        Eigen::EigenvaluesOnly);
   p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
-  p.linear.dofs.clear();
-  for (const std::string& name : p.dof_names)
-    if (p.linear.dofs.size() < static_cast<size_t>(nb + nq)) p.linear.dofs.push_back(*ReducedDof::parse(name));
-  p.linear.stiffness = p.model.stiffness.topLeftCorner(nb + nq, nb + nq);
-  p.linear.mass = p.model.mass.topLeftCorner(nb + nq, nb + nq);
   add_dampers_and_loads(
       p, model, spec, 1,
       [&](int, const std::string& point, int d) {

@@ -37,8 +37,8 @@ struct PreparedHbm {
   std::optional<std::pair<Eigen::Index, Eigen::Index>> ip_oop;  // (left, right) DOFs
   std::optional<damper::RigidDamper> damper;
   std::optional<damper::DamperStaticState> damper_static;
-  double centrifugal_force = 0.0;         // CF on the damper [N]
-  ReducedModel linear;                    // the linear model (its recovery matrix when reduced here)
+  double centrifugal_force = 0.0;  // CF on the damper [N]
+  ReducedModel linear;  // the linear model (its recovery matrix when reduced here); empty for a cyclic sector
   Eigen::VectorXd linear_frequencies_hz;  // of the linear model without contacts
   int blade_dofs = 0;                     // DOFs of the linear model (the damper's follow)
   CraigBamptonTiming timing;

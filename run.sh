@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(build-essential cmake pkg-config libeigen3-dev libspectra-dev libtomlplusplus-dev libfccp-dev
-          libceres-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-serial libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev
+          libceres-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev
           libbenchmark-dev gnuplot-nox libcmark-gfm-dev libcmark-gfm-extensions-dev libxxhash-dev chromium ccache)
 
 ensure_packages() {

@@ -9,8 +9,10 @@
 
 #include "assembly/free_system.hpp"
 #include "common/errors.hpp"
+#include "common/parallel_indices.hpp"
 #include "common/seconds_since.hpp"
 #include "cyclic/whole_disk.hpp"
+#include "linalg/blas_threads.hpp"
 #include "linalg/inertia.hpp"
 
 namespace bb {
@@ -89,8 +91,12 @@ CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& s
     diameters.clear();
     for (int k = 0; 2 * k <= spec.sectors; ++k) diameters.push_back(k);
   }
-  for (int k : diameters)
-    o.diameters.push_back(nodal_diameter_modes(s.stiffness, s.mass, cyclic, k, spec.families, spec.options));
+  // Independent eigenproblems, one per core, each with its own factorizations.
+  const int threads = blas_allows_concurrent_calls() ? spec.threads : 1;
+  o.diameters.resize(diameters.size());
+  for_each_index(diameters.size(), worker_count(diameters.size(), threads), [&](std::size_t i) {
+    o.diameters[i] = nodal_diameter_modes(s.stiffness, s.mass, cyclic, diameters[i], spec.families, spec.options);
+  });
   o.solve_seconds = seconds_since(t1);
   if (spec.whole) o.whole = check_whole(model, spec, s, cyclic, o.diameters);
   for (int eo : spec.engine_orders) {
@@ -114,7 +120,8 @@ CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& s
         excited = excited || excited_nodal_diameter(eo, spec.sectors) == nd.nodal_diameter;
       if (excited) diameters_solved.push_back(nd.nodal_diameter);
     }
-    o.campbell = cyclic_campbell(model, s, cyclic, speeds, diameters_solved, spec.families, spec.options);
+    o.campbell = cyclic_campbell(model, s, cyclic, speeds, diameters_solved, spec.families, spec.options,
+                                 worker_count(speeds.size() * diameters_solved.size(), threads));
     o.crossings = engine_order_crossings(*o.campbell, spec.engine_orders, spec.sectors);
   }
   return o;

@@ -18,6 +18,7 @@ struct CyclicModalSpec {
   int families = 6;                  // modes per nodal diameter
   std::vector<int> nodal_diameters;  // ascending, within 0..N/2; empty = all
   ModalOptions options;              // n_modes unused (families decides)
+  int threads = 0;                   // nodal diameters solved at once; 0 = one per core
   // Build the whole structure (N turned copies merged) and solve it too: its spectrum below the
   // lowest top family against the union of the nodal diameters', and the Sturm counts.
   bool whole = false;

@@ -33,6 +33,11 @@ CyclicModalSpec parse_cyclic_modal(TomlReader& r) {
   if (!(s.options.tolerance > 0.0 && s.options.tolerance < 1.0))
     r.fail("tolerance", fmt::format("must lie in (0, 1) (a relative eigen-residual), found {}", s.options.tolerance));
   s.whole = r.boolean("whole", false);
+  if (const auto n = r.optional_integer("threads")) {
+    if (*n < 1 || *n > 256)
+      r.fail("threads", fmt::format("must lie in [1, 256] (nodal diameters solved at once), found {}", *n));
+    s.threads = static_cast<int>(*n);
+  }
   if (r.has("engine_orders")) {
     for (long eo : r.integer_array("engine_orders", 1, 100000)) s.engine_orders.push_back(static_cast<int>(eo));
     const auto rpm = r.optional_number("max_speed_rpm");

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
+#include "common/parallel_indices.hpp"
 #include "ffrf/body_assembly.hpp"
 #include "linalg/spd_factor.hpp"
 
@@ -15,7 +17,7 @@ namespace bb {
 
 CyclicCampbell cyclic_campbell(const Model& model, const FreeSystem& sector, const CyclicDofs& cyclic,
                                const std::vector<double>& speeds, const std::vector<int>& nodal_diameters, int families,
-                               const ModalOptions& options) {
+                               const ModalOptions& options, size_t workers) {
   if (!(model.section.density > 0))
     throw InputError("cyclic Campbell diagram: the centrifugal load needs material.rho > 0");
   const Mesh& mesh = model.mesh;
@@ -42,14 +44,16 @@ CyclicCampbell cyclic_campbell(const Model& model, const FreeSystem& sector, con
   c.max_unit_speed_deflection = u1.cwiseAbs().maxCoeff();
   for (size_t d = 0; d < nodal_diameters.size(); ++d)
     c.frequencies_hz.push_back(Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(speeds.size()), families));
-  for (size_t s = 0; s < speeds.size(); ++s) {
-    const double w2 = speeds[s] * speeds[s];
-    const Eigen::SparseMatrix<double> k = sector.stiffness + w2 * (stress - spin);
-    for (size_t d = 0; d < nodal_diameters.size(); ++d) {
-      const NodalDiameterModes m = nodal_diameter_modes(k, sector.mass, cyclic, nodal_diameters[d], families, options);
-      c.frequencies_hz[d].row(static_cast<Eigen::Index>(s)) = m.frequencies_hz.head(families).transpose();
-    }
-  }
+  std::vector<Eigen::SparseMatrix<double>> stiffness;
+  for (const double speed : speeds) stiffness.push_back(sector.stiffness + speed * speed * (stress - spin));
+  // Every (speed, nodal diameter) pair is its own eigenproblem.
+  const size_t nd = nodal_diameters.size();
+  for_each_index(speeds.size() * nd, workers, [&](size_t job) {
+    const size_t s = job / nd, d = job % nd;
+    const NodalDiameterModes m =
+        nodal_diameter_modes(stiffness[s], sector.mass, cyclic, nodal_diameters[d], families, options);
+    c.frequencies_hz[d].row(static_cast<Eigen::Index>(s)) = m.frequencies_hz.head(families).transpose();
+  });
   return c;
 }
 

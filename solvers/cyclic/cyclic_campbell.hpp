@@ -11,6 +11,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <cstddef>
 #include <vector>
 
 #include "assembly/free_system.hpp"
@@ -27,11 +28,12 @@ struct CyclicCampbell {
   double max_unit_speed_deflection = 0.0;  // largest |u1| [m s^2]: the deflection is Omega^2 u1
 };
 
-// Throws InputError for a model without density, SolverError when the in-phase static problem
-// cannot be factored or a nodal diameter's modes do not converge at some speed.
+// `workers` eigenproblems (speed, nodal diameter) at once. Throws InputError for a model without
+// density, SolverError when the in-phase static problem cannot be factored or a nodal diameter's
+// modes do not converge at some speed.
 CyclicCampbell cyclic_campbell(const Model& model, const FreeSystem& sector, const CyclicDofs& cyclic,
                                const std::vector<double>& speeds, const std::vector<int>& nodal_diameters, int families,
-                               const ModalOptions& options);
+                               const ModalOptions& options, std::size_t workers);
 
 struct CyclicCrossing {
   int engine_order = 0;

@@ -13,46 +13,58 @@
 
 namespace bb {
 
+namespace {
+
+// Frequencies [Hz] of eigenvalues w^2.
+Eigen::VectorXd frequencies_hz(const Eigen::VectorXd& eigenvalues) {
+  return eigenvalues.array().max(0.0).sqrt() / (2 * std::numbers::pi);
+}
+
+}  // namespace
+
 NodalDiameterModes nodal_diameter_modes(const Eigen::SparseMatrix<double>& stiffness,
                                         const Eigen::SparseMatrix<double>& mass, const CyclicDofs& cyclic,
                                         int nodal_diameter, int families, const ModalOptions& base) {
   const auto t0 = std::chrono::steady_clock::now();
-  const CyclicProjection p = cyclic_projection(static_cast<int>(stiffness.rows()), cyclic, nodal_diameter);
-  const int multiplicity = p.split ? 2 : 1;
+  const int n_free = static_cast<int>(stiffness.rows());
+  const CyclicProjection p = cyclic_projection(n_free, cyclic, nodal_diameter);
   ModalOptions options = base;
-  options.n_modes = multiplicity * families;
-  if (options.n_modes >= p.reduced_size())
-    throw InputError(fmt::format("nodal diameter {}: asked for {} families of a sector problem with {} unknowns",
-                                 nodal_diameter, families, p.reduced_size() / multiplicity));
-  const ModalSolution sol = lowest_modes(project(stiffness, p), project(mass, p), options);
+  options.n_modes = families;
   NodalDiameterModes out;
   out.nodal_diameter = nodal_diameter;
   out.pairs = p.split;
-  out.reduced_size = static_cast<int>(p.reduced_size());
-  out.iterations = sol.iterations;
-  out.lanczos_runs = sol.lanczos_runs;
-  out.max_residual = sol.max_residual;
-  out.sturm_frequency_hz = std::sqrt(std::max(sol.sturm_shift, 0.0)) / (2 * std::numbers::pi);
-  if (sol.sturm_count >= 0) {
-    if (sol.sturm_count % multiplicity != 0)
-      throw SolverError(
-          fmt::format("nodal diameter {}: the Sturm count of the cosine/sine problem is odd ({}): its "
-                      "pairs are broken",
-                      nodal_diameter, sol.sturm_count));
-    out.sturm_count = sol.sturm_count / multiplicity;
-  }
-  // Each pair's two members are equal up to rounding: the first stands for both.
-  const Eigen::Index n = sol.eigenvalues.size() / multiplicity;
-  out.frequencies_hz.resize(n);
-  const Eigen::Index sector = p.n_free;
-  out.cosine.resize(sector, n);
-  out.sine = Eigen::MatrixXd::Zero(sector, n);
-  for (Eigen::Index f = 0; f < n; ++f) {
-    const Eigen::Index col = multiplicity * f;
-    out.frequencies_hz[f] = std::sqrt(std::max(sol.eigenvalues[col], 0.0)) / (2 * std::numbers::pi);
-    const Eigen::VectorXd wave = p.T * sol.shapes.col(col);
-    out.cosine.col(f) = wave.head(sector);
-    if (p.split) out.sine.col(f) = wave.tail(sector);
+  auto record = [&](const auto& sol) {
+    out.iterations = sol.iterations;
+    out.lanczos_runs = sol.lanczos_runs;
+    out.max_residual = sol.max_residual;
+    out.sturm_count = sol.sturm_count;
+    out.sturm_frequency_hz = std::sqrt(std::max(sol.sturm_shift, 0.0)) / (2 * std::numbers::pi);
+    out.frequencies_hz = frequencies_hz(sol.eigenvalues);
+  };
+  auto refuse_small = [&](Eigen::Index unknowns) {
+    if (families >= unknowns)
+      throw InputError(fmt::format("nodal diameter {}: asked for {} families of a sector problem with {} unknowns",
+                                   nodal_diameter, families, unknowns));
+  };
+  if (!p.split) {
+    refuse_small(p.reduced_size());
+    const ModalSolution sol = lowest_modes(project(stiffness, p), project(mass, p), options);
+    record(sol);
+    out.reduced_size = static_cast<int>(p.reduced_size());
+    out.cosine = p.T * sol.shapes;
+    out.sine = Eigen::MatrixXd::Zero(n_free, sol.shapes.cols());
+  } else {
+    // The travelling wave's complex amplitude: a Hermitian problem, each family once; its real
+    // and imaginary parts are the standing cosine and sine waves.
+    const Eigen::SparseMatrix<std::complex<double>> T =
+        complex_cyclic_projection(n_free, cyclic, 2 * std::numbers::pi * nodal_diameter / cyclic.sectors);
+    refuse_small(T.cols());
+    const HermitianModalSolution sol = lowest_modes(project(stiffness, T), project(mass, T), options);
+    record(sol);
+    out.reduced_size = static_cast<int>(2 * T.cols());
+    const Eigen::MatrixXcd waves = T * sol.shapes;
+    out.cosine = waves.real();
+    out.sine = waves.imag();
   }
   out.seconds = seconds_since(t0);
   return out;

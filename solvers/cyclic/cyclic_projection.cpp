@@ -53,23 +53,56 @@ CyclicProjection cyclic_projection(int n_free, const CyclicDofs& cyclic, int nod
   return p;
 }
 
-Eigen::SparseMatrix<double> project(const Eigen::SparseMatrix<double>& a, const CyclicProjection& p) {
-  if (!p.split) {
-    Eigen::SparseMatrix<double> r = p.T.transpose() * a * p.T;
-    return r;
-  }
+namespace {
+
+// T^H diag(A, .., A) T (`blocks` copies of A) entry by entry: each free equation is one reduced
+// coordinate, or a few on the right face, so there is about one term per entry of A and block,
+// where two sparse products would sort the result twice.
+template <class Scalar>
+Eigen::SparseMatrix<Scalar> congruence(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<Scalar>& T,
+                                       int blocks) {
+  const Eigen::SparseMatrix<Scalar, Eigen::RowMajor> follows = T;
+  using Row = typename Eigen::SparseMatrix<Scalar, Eigen::RowMajor>::InnerIterator;
   const Eigen::Index n = a.rows();
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<size_t>(2 * a.nonZeros()));
+  std::vector<Eigen::Triplet<Scalar>> t;
+  t.reserve(static_cast<size_t>(blocks * a.nonZeros()));
   for (Eigen::Index k = 0; k < a.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(a, k); it; ++it) {
-      t.emplace_back(it.row(), it.col(), it.value());
-      t.emplace_back(n + it.row(), n + it.col(), it.value());
-    }
-  Eigen::SparseMatrix<double> twice(2 * n, 2 * n);
-  twice.setFromTriplets(t.begin(), t.end());
-  Eigen::SparseMatrix<double> r = p.T.transpose() * twice * p.T;
-  return r;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, k); it; ++it)
+      for (int b = 0; b < blocks; ++b)
+        for (Row r(follows, b * n + it.row()); r; ++r)
+          for (Row c(follows, b * n + it.col()); c; ++c)
+            t.emplace_back(static_cast<int>(r.col()), static_cast<int>(c.col()),
+                           Eigen::numext::conj(r.value()) * it.value() * c.value());
+  Eigen::SparseMatrix<Scalar> out(T.cols(), T.cols());
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+}  // namespace
+
+Eigen::SparseMatrix<double> project(const Eigen::SparseMatrix<double>& a, const CyclicProjection& p) {
+  return congruence(a, p.T, p.split ? 2 : 1);
+}
+
+Eigen::SparseMatrix<std::complex<double>> project(const Eigen::SparseMatrix<double>& a,
+                                                  const Eigen::SparseMatrix<std::complex<double>>& T) {
+  return congruence(a, T, 1);
+}
+
+Eigen::SparseMatrix<std::complex<double>> complex_cyclic_projection(int n_free, const CyclicDofs& cyclic,
+                                                                    double phase) {
+  const std::vector<int> reduced = reduced_indices(n_free, cyclic);
+  int m = 0;
+  for (int r : reduced) m += r >= 0 ? 1 : 0;
+  const std::complex<double> shift = std::polar(1.0, phase);
+  std::vector<Eigen::Triplet<std::complex<double>>> t;
+  for (int i = 0; i < n_free; ++i)
+    if (const int j = reduced[static_cast<size_t>(i)]; j >= 0) t.emplace_back(i, j, 1.0);
+  for_each_face_coupling(
+      cyclic, [&](int r, int l, double rot) { t.emplace_back(r, reduced[static_cast<size_t>(l)], shift * rot); });
+  Eigen::SparseMatrix<std::complex<double>> T(n_free, m);
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
 }
 
 }  // namespace bb

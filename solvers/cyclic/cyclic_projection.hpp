@@ -7,6 +7,7 @@
 #pragma once
 #include <Eigen/Sparse>
 
+#include <complex>
 #include <vector>
 
 #include "cyclic/cyclic_boundary.hpp"
@@ -50,5 +51,14 @@ CyclicProjection cyclic_projection(int n_free, const CyclicDofs& cyclic, int nod
 // T^T A T, with A repeated on the cosine and sine parts when split: for K and M of the sector the
 // stiffness and mass of nodal diameter k.
 Eigen::SparseMatrix<double> project(const Eigen::SparseMatrix<double>& a, const CyclicProjection& p);
+
+// The right face following the left one with the phase factor e^{i phase} (2 pi k / N for nodal
+// diameter k): sector free DOFs (rows) from the complex reduced coordinates (the sector without
+// its right face).
+Eigen::SparseMatrix<std::complex<double>> complex_cyclic_projection(int n_free, const CyclicDofs& cyclic, double phase);
+
+// T^H A T: for K and M of the sector the Hermitian stiffness and mass of that phase.
+Eigen::SparseMatrix<std::complex<double>> project(const Eigen::SparseMatrix<double>& a,
+                                                  const Eigen::SparseMatrix<std::complex<double>>& T);
 
 }  // namespace bb

@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "cyclic/cyclic_projection.hpp"
+#include "linalg/real_form.hpp"
 #include "reduction/craig_bampton.hpp"
 
 namespace bb {
@@ -17,28 +18,6 @@ using Complex = std::complex<double>;
 using Sparse = Eigen::SparseMatrix<double>;
 using ComplexSparse = Eigen::SparseMatrix<Complex>;
 using Eigen::Index;
-
-// [[Re A, -Im A], [Im A, Re A]]: A acting on a + ib, written on (a, b). Hermitian A gives a
-// symmetric matrix whose every eigenvalue is A's, twice (z and i z).
-Sparse doubled(const ComplexSparse& a) {
-  const Index n = a.rows();
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<size_t>(4 * a.nonZeros()));
-  for (Index k = 0; k < a.outerSize(); ++k)
-    for (ComplexSparse::InnerIterator it(a, k); it; ++it) {
-      const Index i = it.row(), j = it.col();
-      const double re = it.value().real(), im = it.value().imag();
-      t.emplace_back(i, j, re);
-      t.emplace_back(n + i, n + j, re);
-      if (im != 0.0) {
-        t.emplace_back(i, n + j, -im);
-        t.emplace_back(n + i, j, im);
-      }
-    }
-  Sparse d(2 * n, 2 * n);
-  d.setFromTriplets(t.begin(), t.end());
-  return d;
-}
 
 Eigen::MatrixXcd hermitian_part(const Eigen::MatrixXcd& a) { return 0.5 * (a + a.adjoint()); }
 
@@ -64,21 +43,6 @@ Eigen::MatrixXcd complex_modes(const Eigen::MatrixXd& shapes, const ComplexSpars
 
 }  // namespace
 
-ComplexSparse complex_cyclic_projection(int n_free, const CyclicDofs& cyclic, double phase) {
-  const std::vector<int> reduced = reduced_indices(n_free, cyclic);
-  int m = 0;
-  for (int r : reduced) m += r >= 0 ? 1 : 0;
-  const Complex shift = std::polar(1.0, phase);
-  std::vector<Eigen::Triplet<Complex>> t;
-  for (int i = 0; i < n_free; ++i)
-    if (const int j = reduced[static_cast<size_t>(i)]; j >= 0) t.emplace_back(i, j, 1.0);
-  for_each_face_coupling(
-      cyclic, [&](int r, int l, double rot) { t.emplace_back(r, reduced[static_cast<size_t>(l)], shift * rot); });
-  ComplexSparse T(n_free, m);
-  T.setFromTriplets(t.begin(), t.end());
-  return T;
-}
-
 SectorReduction cyclic_craig_bampton(const Sparse& stiffness, const Sparse& mass, const CyclicDofs& cyclic,
                                      double phase, const std::vector<int>& masters, double cut_frequency_hz, int modes,
                                      const ModalOptions& options) {
@@ -101,9 +65,8 @@ SectorReduction cyclic_craig_bampton(const Sparse& stiffness, const Sparse& mass
   const Index nb = static_cast<Index>(boundary.size());
   for (Index i = 0; i < nb; ++i) boundary.push_back(boundary[static_cast<size_t>(i)] + static_cast<int>(m));
 
-  const ComplexSparse k = T.adjoint() * stiffness.cast<Complex>() * T;
-  const ComplexSparse mc = T.adjoint() * mass.cast<Complex>() * T;
-  const Sparse kd = doubled(k), md = doubled(mc);
+  const ComplexSparse k = project(stiffness, T), mc = project(mass, T);
+  const Sparse kd = real_form(k), md = real_form(mc);
   int pairs = modes;
   if (cut_frequency_hz > 0.0) {
     const int count = fixed_interface_count(kd, md, boundary, cut_frequency_hz);

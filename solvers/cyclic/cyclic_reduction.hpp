@@ -25,10 +25,6 @@ struct SectorReduction {
   int masters = 0;
 };
 
-// The right face following the left one with the phase factor e^{i phase}: sector free DOFs
-// (rows) from the reduced coordinates (the sector without its right face).
-Eigen::SparseMatrix<std::complex<double>> complex_cyclic_projection(int n_free, const CyclicDofs& cyclic, double phase);
-
 // `masters`: free equations of the sector. Keeps every fixed-interface mode below
 // `cut_frequency_hz` (their count from the Sturm sequence of the doubled real problem), or
 // exactly `modes` when `cut_frequency_hz` <= 0. Throws InputError for a master on the right face

@@ -7,6 +7,8 @@
 #include <mutex>
 #include <vector>
 
+#include "linalg/blas_threads.hpp"
+
 namespace bb {
 namespace {
 
@@ -14,31 +16,79 @@ namespace {
 constexpr int kUseCommWorld = -987654;
 constexpr int kOrderingAutomatic = 7;
 
+// The lower triangle of a real symmetric matrix in 1-based coordinates: a symmetric MUMPS input.
+struct LowerTriangle {
+  MUMPS_INT n = 0;
+  std::vector<MUMPS_INT> rows, cols;
+  std::vector<double> values;
+  void reserve(Eigen::Index entries) {
+    rows.reserve(static_cast<size_t>(entries));
+    cols.reserve(rows.capacity());
+    values.reserve(rows.capacity());
+  }
+  void add(Eigen::Index row, Eigen::Index col, double value) {
+    rows.push_back(static_cast<MUMPS_INT>(row + 1));
+    cols.push_back(static_cast<MUMPS_INT>(col + 1));
+    values.push_back(value);
+  }
+};
+
+// Negative pivots of the matrix whose lower triangle is given.
+InertiaCount negative_pivots(LowerTriangle& a);
+
 }  // namespace
 
 InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                                double sigma) {
-  const auto t0 = std::chrono::steady_clock::now();
-  InertiaCount out;
   Eigen::SparseMatrix<double> shifted = stiffness - sigma * mass;
   shifted.makeCompressed();
-  // Lower triangle in 1-based coordinates, the input of a symmetric MUMPS factorization.
-  std::vector<MUMPS_INT> rows, cols;
-  std::vector<double> values;
-  rows.reserve(static_cast<size_t>(shifted.nonZeros()));
-  cols.reserve(rows.capacity());
-  values.reserve(rows.capacity());
+  LowerTriangle lower;
+  lower.n = static_cast<MUMPS_INT>(shifted.rows());
+  lower.reserve(shifted.nonZeros());
   for (int c = 0; c < shifted.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(shifted, c); it; ++it)
+      if (it.row() >= c) lower.add(it.row(), c, it.value());
+  return negative_pivots(lower);
+}
+
+InertiaCount eigenvalues_below(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
+                               const Eigen::SparseMatrix<std::complex<double>>& mass, double sigma) {
+  Eigen::SparseMatrix<std::complex<double>> shifted = stiffness - sigma * mass;
+  shifted.makeCompressed();
+  // The real form [[Re, -Im], [Im, Re]] (linalg/real_form.hpp) written straight into its lower
+  // triangle: Re below the diagonal twice, Im whole in the lower-left block.
+  const Eigen::Index n = shifted.rows();
+  LowerTriangle lower;
+  lower.n = static_cast<MUMPS_INT>(2 * n);
+  lower.reserve(3 * shifted.nonZeros());
+  for (Eigen::Index c = 0; c < shifted.outerSize(); ++c)
+    for (Eigen::SparseMatrix<std::complex<double>>::InnerIterator it(shifted, c); it; ++it) {
       if (it.row() >= c) {
-        rows.push_back(static_cast<MUMPS_INT>(it.row() + 1));
-        cols.push_back(static_cast<MUMPS_INT>(c + 1));
-        values.push_back(it.value());
+        lower.add(it.row(), c, it.value().real());
+        lower.add(n + it.row(), n + c, it.value().real());
       }
+      if (it.value().imag() != 0.0) lower.add(n + it.row(), c, it.value().imag());
+    }
+  InertiaCount twice = negative_pivots(lower);
+  if (twice.ok && twice.negative % 2 != 0) {
+    twice.ok = false;
+    twice.message = fmt::format("the real form's count is odd ({}): an eigenvalue of the pair is split by rounding",
+                                twice.negative);
+  }
+  twice.negative /= 2;
+  return twice;
+}
+
+namespace {
+
+InertiaCount negative_pivots(LowerTriangle& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  InertiaCount out;
   // The multifrontal LDL^T of a general symmetric matrix (SYM = 2, with 2x2 pivots): its inertia is
   // that of K - sigma M, and unlike CHOLMOD's simplicial LDL^T it runs on BLAS-3 fronts.
   // The sequential MUMPS keeps global state (its MPI stand-in, load bookkeeping): one instance at a
   // time in this process, whatever threads ask (calibration starts, force levels).
+  use_one_thread_per_factorization();
   static std::mutex mumps;
   const std::lock_guard<std::mutex> one_at_a_time(mumps);
   DMUMPS_STRUC_C id{};
@@ -53,11 +103,11 @@ InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, con
   id.icntl[3] = 0;
   id.icntl[6] = kOrderingAutomatic;
   id.icntl[23] = 1;  // detect null pivots: sigma on an eigenvalue
-  id.n = static_cast<MUMPS_INT>(shifted.rows());
-  id.nnz = static_cast<MUMPS_INT8>(values.size());
-  id.irn = rows.data();
-  id.jcn = cols.data();
-  id.a = values.data();
+  id.n = a.n;
+  id.nnz = static_cast<MUMPS_INT8>(a.values.size());
+  id.irn = a.rows.data();
+  id.jcn = a.cols.data();
+  id.a = a.values.data();
   id.job = 4;  // analysis and factorization
   dmumps_c(&id);
   if (id.infog[0] < 0) {
@@ -75,4 +125,5 @@ InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, con
   return out;
 }
 
+}  // namespace
 }  // namespace bb

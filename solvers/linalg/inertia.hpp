@@ -4,6 +4,7 @@
 #pragma once
 #include <Eigen/Sparse>
 
+#include <complex>
 #include <string>
 
 namespace bb {
@@ -20,5 +21,10 @@ struct InertiaCount {
 // M positive semi-definite. Only the lower triangles are read.
 InertiaCount eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                                double sigma);
+
+// The same for a Hermitian pencil, through its real form of twice the size (whose every
+// eigenvalue is there twice): not ok when that count is odd.
+InertiaCount eigenvalues_below(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
+                               const Eigen::SparseMatrix<std::complex<double>>& mass, double sigma);
 
 }  // namespace bb

@@ -1,6 +1,5 @@
 #include "linalg/modal_solver.hpp"
 
-#include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 #include <fmt/format.h>
 
@@ -10,6 +9,7 @@
 #include <optional>
 
 #include "common/errors.hpp"
+#include "linalg/hermitian_lanczos.hpp"
 #include "linalg/inertia.hpp"
 #include "linalg/spd_factor.hpp"
 
@@ -42,14 +42,30 @@ class ShiftInvertOp {
   SpdFactorization factor_;
 };
 
+// y = M x with both triangles stored row by row: Lanczos takes three to five mass products per
+// step (its M-inner products), and a self-adjoint view of one triangle scatters its writes.
+class MassProduct {
+ public:
+  using Scalar = double;
+  explicit MassProduct(const Eigen::SparseMatrix<double>& mass) : full_(mass) {}
+  Eigen::Index rows() const { return full_.rows(); }
+  Eigen::Index cols() const { return full_.cols(); }
+  void perform_op(const double* x_in, double* y_out) const {
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()).noalias() = full_ * Eigen::Map<const Eigen::VectorXd>(x_in, rows());
+  }
+
+ private:
+  Eigen::SparseMatrix<double, Eigen::RowMajor> full_;
+};
+
 // One Lanczos run for the lowest `nev` modes with `ncv` vectors; shapes mass-normalized.
 ModalSolution lanczos_run(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                           const ModalOptions& options, int nev, int ncv) {
   const double sigma = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
   ShiftInvertOp op(stiffness, mass, options.ordering);
-  Spectra::SparseSymMatProd<double> bop(mass);
-  Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert> eigs(
-      op, bop, nev, ncv, sigma);
+  MassProduct bop(mass);
+  Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassProduct, Spectra::GEigsMode::ShiftInvert> eigs(op, bop, nev, ncv,
+                                                                                                 sigma);
   eigs.init();
   const auto found = eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
                                   Spectra::SortRule::SmallestAlge);
@@ -67,23 +83,44 @@ ModalSolution lanczos_run(const Eigen::SparseMatrix<double>& stiffness, const Ei
   return sol;
 }
 
-double norm1(const Eigen::SparseMatrix<double>& a) {
+HermitianModalSolution lanczos_run(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
+                                   const Eigen::SparseMatrix<std::complex<double>>& mass, const ModalOptions& options,
+                                   int nev, int ncv) {
+  HermitianLanczosOptions o;
+  o.nev = nev;
+  o.ncv = ncv;
+  o.sigma = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
+  o.tolerance = options.tolerance;
+  o.max_restarts = options.max_iterations;
+  o.ordering = options.ordering;
+  const HermitianLanczosResult r = hermitian_lanczos(stiffness, mass, o);
+  HermitianModalSolution sol;
+  sol.eigenvalues = r.eigenvalues;
+  sol.shapes = r.shapes;
+  sol.iterations = r.restarts + 1;
+  sol.converged_modes = nev;
+  return sol;
+}
+
+template <class Scalar>
+double norm1(const Eigen::SparseMatrix<Scalar>& a) {
   double best = 0.0;
   for (int c = 0; c < a.outerSize(); ++c) {
     double sum = 0.0;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it) sum += std::abs(it.value());
+    for (typename Eigen::SparseMatrix<Scalar>::InnerIterator it(a, c); it; ++it) sum += std::abs(it.value());
     best = std::max(best, sum);
   }
   return best;
 }
 
 // Normwise backward error, meaningful for rigid-body modes too (where K x ~ 0).
-double max_backward_error(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                          const ModalSolution& sol) {
+template <class Scalar>
+double max_backward_error(const Eigen::SparseMatrix<Scalar>& stiffness, const Eigen::SparseMatrix<Scalar>& mass,
+                          const BasicModalSolution<Scalar>& sol) {
   const double k_norm = norm1(stiffness), m_norm = norm1(mass);
   double worst = 0.0;
   for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k) {
-    const Eigen::VectorXd kx = stiffness * sol.shapes.col(k);
+    const Eigen::Matrix<Scalar, Eigen::Dynamic, 1> kx = stiffness * sol.shapes.col(k);
     const double scale = (k_norm + std::abs(sol.eigenvalues[k]) * m_norm) * sol.shapes.col(k).norm();
     const double res = (kx - sol.eigenvalues[k] * (mass * sol.shapes.col(k))).norm() / std::max(scale, 1e-300);
     worst = std::max(worst, res);
@@ -106,17 +143,17 @@ std::optional<double> count_shift(const Eigen::VectorXd& eigenvalues, int n, dou
   return std::nullopt;
 }
 
-ModalSolution first_modes(ModalSolution sol, int count) {
+template <class Scalar>
+BasicModalSolution<Scalar> first_modes(BasicModalSolution<Scalar> sol, int count) {
   sol.eigenvalues.conservativeResize(count);
   sol.shapes.conservativeResize(Eigen::NoChange, count);
   sol.converged_modes = count;
   return sol;
 }
 
-}  // namespace
-
-ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                           const ModalOptions& options) {
+template <class Scalar>
+BasicModalSolution<Scalar> complete_lowest_modes(const Eigen::SparseMatrix<Scalar>& stiffness,
+                                                 const Eigen::SparseMatrix<Scalar>& mass, const ModalOptions& options) {
   const auto n = stiffness.rows();
   if (options.n_modes < 1) throw std::invalid_argument("n_modes must be >= 1");
   if (options.n_modes >= n) {
@@ -130,7 +167,7 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
   int nev = options.n_modes;
   double sturm_seconds = 0.0;
   for (int run = 0;; ++run) {
-    ModalSolution sol = lanczos_run(stiffness, mass, options, nev, vectors(nev, run));
+    BasicModalSolution<Scalar> sol = lanczos_run(stiffness, mass, options, nev, vectors(nev, run));
     sol.lanczos_runs = run + 1;
     const std::optional<double> cut =
         options.verify_count ? count_shift(sol.eigenvalues, options.n_modes, options.cluster_tolerance) : std::nullopt;
@@ -165,6 +202,19 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
     // Missed modes (or a cluster that straddles the n-th): ask for all of them, and a margin.
     nev = std::min(std::max(count.negative, found) + 2, most);
   }
+}
+
+}  // namespace
+
+ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                           const ModalOptions& options) {
+  return complete_lowest_modes(stiffness, mass, options);
+}
+
+HermitianModalSolution lowest_modes(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
+                                    const Eigen::SparseMatrix<std::complex<double>>& mass,
+                                    const ModalOptions& options) {
+  return complete_lowest_modes(stiffness, mass, options);
 }
 
 std::optional<ModalSolution> leading_modes(const ModalSolution& sol, const ModalOptions& options) {

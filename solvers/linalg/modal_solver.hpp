@@ -1,8 +1,11 @@
-// Lowest modes of K x = w^2 M x by Lanczos (Spectra) in shift-invert mode.
+// Lowest modes of K x = w^2 M x by Lanczos in shift-invert mode: Spectra for a real symmetric
+// pencil, linalg/hermitian_lanczos.hpp for a complex Hermitian one (a cyclic sector's nodal
+// diameters 0 < k < N/2), each proved complete by a Sturm count.
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <complex>
 #include <optional>
 
 #include "linalg/spd_factor.hpp"
@@ -28,9 +31,10 @@ struct ModalOptions {
   int max_reruns = 6;
 };
 
-struct ModalSolution {
-  Eigen::VectorXd eigenvalues;  // w^2 [rad^2/s^2], ascending
-  Eigen::MatrixXd shapes;       // mass-normalized, one per column
+template <class Scalar>
+struct BasicModalSolution {
+  Eigen::VectorXd eigenvalues;                                   // w^2 [rad^2/s^2], ascending
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> shapes;  // mass-normalized, one per column
   int iterations = 0;
   int converged_modes = 0;
   double max_residual = 0.0;  // max_k ||K x - w^2 M x|| / ((||K|| + w^2 ||M||) ||x||)
@@ -41,12 +45,17 @@ struct ModalSolution {
   int lanczos_runs = 0;
   double sturm_seconds = 0.0;
 };
+using ModalSolution = BasicModalSolution<double>;
+using HermitianModalSolution = BasicModalSolution<std::complex<double>>;
 
 // The lowest options.n_modes modes, or more when a repeated eigenvalue straddles the n-th (the whole
 // cluster is returned). Throws SolverError when Lanczos does not converge, the shifted matrix cannot
 // be factored, or the Sturm count still disagrees after max_reruns larger runs.
 ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                            const ModalOptions& options);
+// The same for Hermitian K and M (each eigenvalue once; the count from the real form).
+HermitianModalSolution lowest_modes(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
+                                    const Eigen::SparseMatrix<std::complex<double>>& mass, const ModalOptions& options);
 
 // What lowest_modes would return for `options` (the lowest n, a straddling cluster whole), taken
 // from a solution of the same problem that holds more modes; nullopt when `sol` cannot prove them

@@ -1,13 +1,14 @@
 #include "linalg/spd_factor.hpp"
 
 #include <cholmod.h>
-#include <dlfcn.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+
+#include "linalg/blas_threads.hpp"
 
 namespace bb {
 
@@ -32,42 +33,6 @@ struct SpdFactorization::Impl {
 };
 
 namespace {
-
-// Debian's CHOLMOD opens OpenMP regions with a compiled-in team of 4 threads around loops too small
-// to gain from them; on 2 cores, or beside other runs (validate -j, ctest -j), the wake-ups cost more
-// than the loops (sec32_root_contact: a third of its time, mostly in the kernel). bladebench runs in
-// parallel across processes, so a factorization runs with OpenMP regions inactive. The OpenMP
-// runtime is looked up, not linked: it is there only if CHOLMOD was built with it.
-class InactiveOpenMpRegions {
- public:
-  InactiveOpenMpRegions() {
-    if (api().set && api().get) {
-      saved_ = api().get();
-      api().set(0);
-    }
-  }
-  ~InactiveOpenMpRegions() {
-    if (saved_ >= 0) api().set(saved_);
-  }
-  InactiveOpenMpRegions(const InactiveOpenMpRegions&) = delete;
-  InactiveOpenMpRegions& operator=(const InactiveOpenMpRegions&) = delete;
-
- private:
-  struct Api {
-    void (*set)(int) = nullptr;
-    int (*get)() = nullptr;
-  };
-  static const Api& api() {
-    static const Api a = [] {
-      Api out;
-      out.set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
-      out.get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
-      return out;
-    }();
-    return a;
-  }
-  int saved_ = -1;
-};
 
 cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& a) {
   cholmod_sparse s{};
@@ -137,7 +102,7 @@ FactorStatus SpdFactorization::factorize(const Eigen::SparseMatrix<double>& a) {
                             impl_->inner.size() == static_cast<size_t>(a.nonZeros()) &&
                             std::equal(impl_->outer.begin(), impl_->outer.end(), outer) &&
                             std::equal(impl_->inner.begin(), impl_->inner.end(), inner);
-  const InactiveOpenMpRegions serial;
+  use_one_thread_per_factorization();
   if (!same_pattern) {
     if (impl_->factor) cholmod_free_factor(&impl_->factor, c);
     impl_->factor = cholmod_analyze(&view, c);

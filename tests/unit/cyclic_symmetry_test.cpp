@@ -61,6 +61,20 @@ TEST(CyclicSymmetry, RingOfOscillatorsHasTheClosedFormPerNodalDiameter) {
   }
 }
 
+// The travelling wave's complex amplitude: one real frequency per nodal diameter, no pair.
+TEST(CyclicSymmetry, RingTravellingWaveIsOneHermitianUnknownWithTheClosedForm) {
+  for (int N : {5, 6, 12})
+    for (int k = 0; 2 * k <= N; ++k) {
+      const Ring ring(N);
+      const auto T = complex_cyclic_projection(2, ring.cyclic, 2 * kPi * k / N);
+      const Eigen::MatrixXcd Kk = Eigen::MatrixXcd(project(ring.K, T)), Mk = Eigen::MatrixXcd(project(ring.M, T));
+      ASSERT_EQ(Kk.rows(), 1);
+      EXPECT_NEAR(std::abs(Kk(0, 0) - ring.closed_form(k) * Mk(0, 0)), 0.0, 1e-9 * std::abs(Kk(0, 0)))
+          << "N " << N << " k " << k;
+      EXPECT_NEAR(Mk(0, 0).real(), ring.m, 1e-12);
+    }
+}
+
 TEST(CyclicSymmetry, RingSpectrumIsTheUnionOfTheNodalDiametersTwiceForPairs) {
   const int N = 7;
   const Ring ring(N);
@@ -153,7 +167,7 @@ TEST(CyclicSymmetry, CampbellOfTheSectorIsTheWholeDisksAtSpeed) {
   const SectorSystem t(N);
   const double speed = 1500.0;
   const CyclicCampbell c =
-      cyclic_campbell(t.model, t.system, t.cyclic, {0.0, speed}, {0, 1, 2, 3}, families, ModalOptions{});
+      cyclic_campbell(t.model, t.system, t.cyclic, {0.0, speed}, {0, 1, 2, 3}, families, ModalOptions{}, 2);
   std::vector<double> union_hz;
   double cut = INFINITY;
   for (size_t d = 0; d < 4; ++d) {

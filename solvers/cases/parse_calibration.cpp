@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "common/toml_reader.hpp"
 #include "common/user_text.hpp"
+#include "identify/uff58.hpp"
 
 namespace bb {
 
@@ -59,12 +60,33 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   const std::string kind = r.choice("kind", {"peaks", "frf", "hysteresis"});
   const DataKind k = kind == "peaks" ? DataKind::peaks : kind == "frf" ? DataKind::frf : DataKind::hysteresis;
   const std::filesystem::path file = r.input_file("file", case_file.parent_path());
+  // A Universal File may hold several levels, one dataset 58 each.
+  const std::optional<long> dataset = r.optional_integer("dataset");
+  if (dataset && !is_universal_file(file))
+    r.fail("dataset", "picks a dataset 58 of a Universal File (.uff, .unv); a CSV file holds one curve");
+  if (dataset && k != DataKind::frf) r.fail("dataset", "a Universal File's datasets are frf data (kind = \"frf\")");
+  if (dataset && *dataset < 1) r.fail("dataset", fmt::format("counts from 1, found {}", *dataset));
+  std::vector<Uff58Function> functions;
   try {
-    d.data = read_measured_data(file, k);
+    if (dataset)
+      functions = read_uff58(file);
+    else
+      d.data = read_measured_data(file, k);
   } catch (const InputError& e) {
     r.fail("file", e.what());  // the case, line and key that named the file, then the file's own error
   }
-  d.name = r.optional_label("name").value_or(printable(file.stem().string()));
+  if (dataset) {
+    if (static_cast<size_t>(*dataset) > functions.size())
+      r.fail("dataset", fmt::format("dataset {} asked, but {} holds {} dataset(s) 58", *dataset, file.string(),
+                                    functions.size()));
+    try {
+      d.data = uff58_frf(functions[static_cast<size_t>(*dataset - 1)], file, static_cast<int>(*dataset));
+    } catch (const InputError& e) {
+      r.fail("dataset", e.what());
+    }
+  }
+  const std::string stem = printable(file.stem().string());
+  d.name = r.optional_label("name").value_or(dataset ? fmt::format("{} #{}", stem, *dataset) : stem);
   d.table = r.string("table");
   const KindColumns allowed = kind_columns(k);
   for (const auto& [key, value] : r.table("columns")) {
@@ -182,7 +204,8 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     c.starts = static_cast<int>(*n);
   }
   if (const auto n = r.optional_integer("threads")) {
-    if (*n < 1 || *n > 1024) r.fail("threads", "must lie in [1, 1024] (starts solved at once; omit it for one per core)");
+    if (*n < 1 || *n > 1024)
+      r.fail("threads", "must lie in [1, 1024] (starts solved at once; omit it for one per core)");
     c.threads = static_cast<int>(*n);
   }
   if (const auto n = r.optional_integer("seed", 0, 4294967295L)) {

@@ -212,8 +212,9 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
   return out;
 }
 
-MeasuredData read_uff58_frf(const fs::path& file) {
-  const Uff58Function f = read_uff58(file).front();
+MeasuredData read_uff58_frf(const fs::path& file) { return uff58_frf(read_uff58(file).front(), file, 1); }
+
+MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) {
   const Eigen::Index n = static_cast<Eigen::Index>(f.values.size());
   MeasuredData d;
   d.file = file;
@@ -228,7 +229,7 @@ MeasuredData read_uff58_frf(const fs::path& file) {
     complex = complex || f.values[k].imag() != 0.0;
     d.lines.push_back(f.line);
     const auto where = [&] {
-      return fmt::format("{}:{}: dataset 58 #1, record 12, value {}", file.string(), f.line, i + 1);
+      return fmt::format("{}:{}: dataset 58 #{}, record 12, value {}", file.string(), f.line, index, i + 1);
     };
     if (!(amplitude[i] > 0.0)) throw InputError(fmt::format("{}: the amplitude is zero", where()));
     if (i > 0 && !(frequency[i] > frequency[i - 1]))

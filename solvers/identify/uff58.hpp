@@ -25,10 +25,10 @@ struct Uff58Function {
   int function_type = 4;              // 1 time response, 2 auto spectrum, 3 cross spectrum, 4 FRF, ...
   long response_node = 1, reference_node = 1;
   int response_direction = 1, reference_direction = 1;  // 1..3 = +X..+Z, negative = minus
-  std::vector<double> abscissa;                           // as written, in its unit
-  std::vector<std::complex<double>> values;               // as written, in the numerator / denominator units
-  Unit abscissa_unit, ordinate_unit;                      // ordinate: numerator / denominator composed
-  int line = 0;                                           // where the dataset starts (its first "-1")
+  std::vector<double> abscissa;                         // as written, in its unit
+  std::vector<std::complex<double>> values;             // as written, in the numerator / denominator units
+  Unit abscissa_unit, ordinate_unit;                    // ordinate: numerator / denominator composed
+  int line = 0;                                         // where the dataset starts (its first "-1")
 };
 
 // Every dataset 58 of the file, in order. Throws InputError "file:line: dataset 58 #k, record r: ..."
@@ -36,10 +36,14 @@ struct Uff58Function {
 // that cannot be determined; and when the file holds no dataset 58.
 std::vector<Uff58Function> read_uff58(const std::filesystem::path& file);
 
-// The file's first dataset 58 as frf data: frequency [Hz], amplitude [compliance or length],
-// phase [rad] of the complex values (real data: phase 0 left out). Validated as the CSV reader
-// validates an frf file (increasing frequencies, positive amplitudes); rows point at the record 12
-// line of each value.
+// Dataset 58 number `index` (1-based, in file order) of `file` as frf data: frequency [Hz],
+// amplitude [compliance or length], phase [rad] of the complex values (real data: phase 0 left
+// out). Validated as the CSV reader validates an frf file (increasing frequencies, positive
+// amplitudes); rows point at the record 12 line of each value. A rig's several levels are
+// several datasets of one file.
+MeasuredData uff58_frf(const Uff58Function& function, const std::filesystem::path& file, int index);
+
+// The file's first dataset 58 as frf data (uff58_frf).
 MeasuredData read_uff58_frf(const std::filesystem::path& file);
 
 // Writes frf data (frequency, amplitude, optional phase) as one dataset 58 of complex double

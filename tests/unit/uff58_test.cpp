@@ -61,6 +61,22 @@ TEST(Uff58, ReadsUnitsFromTheRecordsAndConvertsToSi) {
   EXPECT_EQ(f[0].reference_direction, 3);
 }
 
+// A rig's several levels in one file: dataset 58 number k is the k-th curve, the others skipped.
+TEST(Uff58, EachDatasetOfAFileIsItsOwnCurve) {
+  const fs::path file = scratch("two_levels.uff");
+  std::string second = even_mm_per_n().substr(even_mm_per_n().find("    -1\n    58"));
+  const std::string first_value = "  1.00000E-03  0.00000E+00";
+  second.replace(second.find(first_value), first_value.size(), "  4.00000E-03  0.00000E+00");
+  write(file, even_mm_per_n() + second);
+  const std::vector<Uff58Function> functions = read_uff58(file);
+  ASSERT_EQ(functions.size(), 2u);
+  const MeasuredData one = uff58_frf(functions[0], file, 1), two = uff58_frf(functions[1], file, 2);
+  EXPECT_NEAR(one.column("amplitude")[0], 1e-6, 1e-18);
+  EXPECT_NEAR(two.column("amplitude")[0], 4e-6, 1e-18);
+  EXPECT_EQ(two.column("amplitude")[1], one.column("amplitude")[1]);
+  EXPECT_GT(two.lines[0], one.lines[0]) << "rows point into their own dataset";
+}
+
 TEST(Uff58, WrittenFrfReadsBackToThirteenDigits) {
   MeasuredData d;
   d.kind = DataKind::frf;

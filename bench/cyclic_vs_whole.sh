@@ -19,7 +19,7 @@ for threads in 1 default; do
   copy="$WORK/whole_threads_$threads.toml"
   # References stay where the case points; the Campbell diagram and engine orders are left out.
   sed -e "s#\"\\.\\./\\.\\./references/#\"$(dirname "$(dirname "$(dirname "$case_file")")")/references/#" \
-      -e '/^engine_orders/d' -e '/^max_speed_rpm/d' -e '/^speeds_rpm/d' \
+      -e '/^engine_orders/d' -e '/^max_speed_rpm/d' -e '/^speeds_rpm/d' -e '/^whole *=/d' -e '/^threads *=/d' \
       -e 's/^key_plots = .*/key_plots = ["nodal_diameter_map"]/' "$case_file" > "$copy"
   sed -i "s/^\\[analysis\\]\$/[analysis]\\nwhole = true/" "$copy"
   [[ $threads == default ]] || sed -i "s/^\\[analysis\\]\$/[analysis]\\nthreads = $threads/" "$copy"

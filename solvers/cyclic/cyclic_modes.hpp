@@ -19,7 +19,7 @@ struct NodalDiameterModes {
   Eigen::VectorXd frequencies_hz;  // ascending, each family once
   // Sector free DOFs of each family's wave (columns): cosine part, and sine part (zero unless pairs).
   Eigen::MatrixXd cosine, sine;
-  int reduced_size = 0;  // real unknowns of the problem solved
+  int reduced_size = 0;  // real unknowns of the problem solved (a travelling wave: twice its complex ones)
   int iterations = 0;
   int lanczos_runs = 0;
   int sturm_count = -1;  // families below sturm_frequency_hz (each pair once)

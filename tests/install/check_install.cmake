@@ -1,7 +1,8 @@
 # Installs the build tree into a fresh prefix, then configures, builds and runs the consumer
 # project against it: fails unless find_package(bladebench) and the installed headers and library
 # work from outside the source tree. Arguments: BUILD (the build tree), WORK (a scratch folder),
-# CONSUMER (tests/install/consumer), GENERATOR.
+# CONSUMER (tests/install/consumer, or examples/), GENERATOR; RUN_CTEST=ON runs the project's own
+# tests (the examples) instead of its `consumer` program.
 file(REMOVE_RECURSE "${WORK}")
 foreach(step
         "install;--install;${BUILD};--prefix;${WORK}/prefix"
@@ -16,7 +17,12 @@ endforeach()
 if(NOT EXISTS "${WORK}/prefix/include/bladebench/hbm/harmonic_balance.hpp")
   message(FATAL_ERROR "headers not installed under include/bladebench")
 endif()
-execute_process(COMMAND ${WORK}/build/consumer RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(RUN_CTEST)
+  set(run ${CMAKE_CTEST_COMMAND} --test-dir ${WORK}/build --output-on-failure)
+else()
+  set(run ${WORK}/build/consumer)
+endif()
+execute_process(COMMAND ${run} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "${out}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the consumer failed (${rc}):\n${out}\n${err}")

@@ -65,21 +65,26 @@ int main() {
     std::printf("mode %d: full %9.3f Hz, reduced %9.3f Hz (%+.1e)\n", i + 1, fe, cb, cb / fe - 1);
   }
 
-  // The tip's receptance in y at 100 Hz (below the first mode, so K - w^2 M is positive definite).
-  const double omega = 2 * std::numbers::pi * 100.0;
-  Eigen::SparseMatrix<double> dynamic = full.stiffness - omega * omega * full.mass;
-  dynamic.makeCompressed();
-  bb::SpdFactorization factor(bb::FillOrdering::metis);
-  if (!factor.factorize(dynamic).ok) return 1;
+  // The tip's receptance in y from 25 to 150 Hz (below the first mode, so K - w^2 M stays positive
+  // definite and one Cholesky factor per frequency serves the full model).
   Eigen::VectorXd load = Eigen::VectorXd::Zero(full.stiffness.rows());
   load[masters[1]] = 1.0;  // 1 N in y at the tip
-  const double full_receptance = factor.solve(load)[masters[1]];
-  const Eigen::MatrixXd reduced_dynamic = reduced.stiffness - omega * omega * reduced.mass;
   Eigen::VectorXd reduced_load = Eigen::VectorXd::Zero(reduced.size());
   reduced_load[1] = 1.0;  // the masters come first, in the given order
-  const double reduced_receptance = reduced_dynamic.ldlt().solve(reduced_load)[1];
-  const double error = std::abs(reduced_receptance / full_receptance - 1);
-  std::printf("tip receptance at 100 Hz: full %.6e m/N, reduced %.6e m/N (%.1e)\n", full_receptance, reduced_receptance,
-              error);
-  return first_pair < 1e-4 && error < 1e-4 ? 0 : 1;
+  double error = 0.0;
+  for (double f = 25.0; f <= 150.0; f += 25.0) {
+    const double omega = 2 * std::numbers::pi * f;
+    Eigen::SparseMatrix<double> dynamic = full.stiffness - omega * omega * full.mass;
+    dynamic.makeCompressed();
+    bb::SpdFactorization factor(bb::FillOrdering::metis);
+    if (!factor.factorize(dynamic).ok) return 1;
+    const double full_receptance = factor.solve(load)[masters[1]];
+    const Eigen::MatrixXd reduced_dynamic = reduced.stiffness - omega * omega * reduced.mass;
+    const double reduced_receptance = reduced_dynamic.ldlt().solve(reduced_load)[1];
+    error = std::max(error, std::abs(reduced_receptance / full_receptance - 1));
+    std::printf("%5.0f Hz: tip receptance full %.6e m/N, reduced %.6e m/N\n", f, full_receptance, reduced_receptance);
+  }
+  std::printf("largest relative difference of the receptances: %.1e\n", error);
+  // Nearer the resonance the reduced model's 2e-5 frequency offset is magnified (175 Hz: 1e-3).
+  return first_pair < 1e-4 && error < 5e-4 ? 0 : 1;
 }

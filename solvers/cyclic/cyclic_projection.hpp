@@ -1,9 +1,10 @@
 // The sector's motions of one nodal diameter k as real coordinates. In a travelling wave
 // u_j = Re(U e^{i k j 2 pi / N}) the right face moves as U_right = e^{i k 2 pi / N} R U_left, so
-// the sector's interior and left face carry the motion. For 0 < k < N/2 the complex amplitude is
-// written as its cosine and sine parts (a real problem of twice the size, each eigenvalue twice:
-// the standing cosine and sine waves); for k = 0 and k = N/2 the phase factor is +-1 and the
-// problem is real of the sector's size.
+// the sector's interior and left face carry the motion. For k = 0 and k = N/2 the phase factor is
+// +-1 and the problem is real of the sector's size. For 0 < k < N/2 the complex amplitude is either
+// kept complex (complex_cyclic_projection: a Hermitian problem of the sector's size, what the modal
+// solve uses) or written as its cosine and sine parts (CyclicProjection with split: a real problem
+// of twice the size, each eigenvalue twice, the standing cosine and sine waves).
 #pragma once
 #include <Eigen/Sparse>
 

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <climits>
 #include <numbers>
 
 #include "cases/case_parameter.hpp"
@@ -61,11 +62,10 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   const DataKind k = kind == "peaks" ? DataKind::peaks : kind == "frf" ? DataKind::frf : DataKind::hysteresis;
   const std::filesystem::path file = r.input_file("file", case_file.parent_path());
   // A Universal File may hold several levels, one dataset 58 each.
-  const std::optional<long> dataset = r.optional_integer("dataset");
+  const std::optional<long> dataset = r.optional_integer("dataset", 1, INT_MAX);
   if (dataset && !is_universal_file(file))
     r.fail("dataset", "picks a dataset 58 of a Universal File (.uff, .unv); a CSV file holds one curve");
   if (dataset && k != DataKind::frf) r.fail("dataset", "a Universal File's datasets are frf data (kind = \"frf\")");
-  if (dataset && *dataset < 1) r.fail("dataset", fmt::format("counts from 1, found {}", *dataset));
   std::vector<Uff58Function> functions;
   try {
     if (dataset)
@@ -77,8 +77,8 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   }
   if (dataset) {
     if (static_cast<size_t>(*dataset) > functions.size())
-      r.fail("dataset", fmt::format("dataset {} asked, but {} holds {} dataset(s) 58", *dataset, file.string(),
-                                    functions.size()));
+      r.fail("dataset",
+             fmt::format("dataset {} asked, but {} holds {} dataset(s) 58", *dataset, file.string(), functions.size()));
     try {
       d.data = uff58_frf(functions[static_cast<size_t>(*dataset - 1)], file, static_cast<int>(*dataset));
     } catch (const InputError& e) {

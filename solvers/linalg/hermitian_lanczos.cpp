@@ -125,13 +125,13 @@ HermitianLanczosResult hermitian_lanczos(const ComplexSparse& stiffness, const C
       worst = std::max(worst, basis.m_norm(r) / std::max(std::abs(mu[i]), 1e-300));
     }
     if (worst <= o.tolerance) {
+      // Ascending lambda follows from descending mu > 0; a non-positive mu is a failed shift.
+      if (!(mu[o.nev - 1] > 0.0))
+        throw SolverError("Hermitian shift-invert: a non-positive Ritz value (K - sigma M is not positive definite)");
       HermitianLanczosResult out;
       out.restarts = restart;
       out.shapes = basis.v().leftCols(m) * y.leftCols(o.nev);
       out.eigenvalues = (o.sigma + mu.head(o.nev).array().inverse()).matrix();
-      // Ascending lambda follows from descending mu > 0; a non-positive mu is a failed shift.
-      if (!(mu[o.nev - 1] > 0.0))
-        throw SolverError("Hermitian shift-invert: a non-positive Ritz value (K - sigma M is not positive definite)");
       return out;
     }
     basis.compress(y.leftCols(keep));

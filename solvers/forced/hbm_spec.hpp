@@ -131,9 +131,10 @@ struct HbmSpec {
   std::optional<std::pair<PointDof, PointDof>> ip_oop;    // (left, right): in-phase / out-of-phase peaks
   int harmonics = 1;
   int time_samples = 0;  // AFT samples per period; 0 = automatic
-  // aft = "events": transitions located and the forces integrated between them (contact/
-  // aft_events.hpp), a residual smooth in the unknowns; "samples": the DFT of the sampled march.
-  bool aft_events = false;
+  // aft = "events" (default): transitions located and the forces integrated between them (contact/
+  // aft_events.hpp), a residual smooth in the unknowns whose error does not depend on the samples;
+  // "samples": the DFT of the sampled march, whose error at a stick-slip kink falls as 1 / samples.
+  bool aft_events = true;
   // When > 0, each level's samples are raised from time_samples (up to max_time_samples) until
   // the AFT sampling error at its peaks is at most this (relative to the force scale, as
   // HbmPeak::sampling_error) and its sweep reaches the end with trusted peaks. 0 = fixed samples.

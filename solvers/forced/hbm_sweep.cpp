@@ -67,8 +67,14 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
   }
   const hbm::HarmonicBalance& system = systems.at(peak.harmonics);
   const Index nc = static_cast<Index>(system.contact_dofs().size());
+  // The sweep's iteration cap keeps its rare failed steps cheap; a polish solve starts up to half
+  // a step away and must not fail for want of iterations (a smooth residual converges
+  // quadratically, not in the few steps a piecewise-linear one takes once its states are right).
+  hbm::HbmOptions patient = system.options();
+  patient.max_iterations = std::max(patient.max_iterations, hbm::HbmOptions{}.max_iterations);
+  const hbm::HarmonicBalance polish(system.model(), patient);
   auto solve = [&](double omega) {
-    return hbm::solve_at_frequency(system, omega,
+    return hbm::solve_at_frequency(polish, omega,
                                    with_harmonics(nearest_point(level.path, omega).x, nc, peak.harmonics));
   };
   auto value = [&](const hbm::HbmSolution& s) { return peak_values(p, first_harmonic(system, s.x, s.omega), kind); };
@@ -82,7 +88,8 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
         const hbm::HbmSolution& s = solved.emplace(omega, solve(omega)).first->second;
         return s.converged ? std::optional<double>(value(s).component) : std::nullopt;
       };
-      const GoldenSearch search = golden_section_maximum(component, a, b, 14);
+      // To 1e-7 of the frequency: a coarse grid's neighbours bracket tens of hertz.
+      const GoldenSearch search = golden_section_maximum(component, a, b, 40, 1e-7);
       double best_value = best.converged ? value(best).component : -1.0;
       for (double omega : search.compared) {
         const hbm::HbmSolution& s = solved.at(omega);

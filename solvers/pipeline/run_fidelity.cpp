@@ -19,6 +19,10 @@ namespace bb {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// A relative difference this small is the solvers' own rounding (their tolerances are 1e-9 to
+// 1e-10): the axis no longer changes the result (the event-resolved AFT's samples), and a power law
+// through such noise means nothing.
+constexpr double kUnchanged = 1e-8;
 
 // Unknowns of one solve: harmonic coefficients of the balance, steps x DOFs of a time period, or
 // the nodal DOFs of a mesh.
@@ -198,7 +202,9 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
           // (NaN when fewer than two differences were met on the way).
           const auto& h = history[a];
           estimate[a] = kNaN;
-          if (h.size() >= 2 && i >= 2) {
+          if (!h.empty() && h.back() <= kUnchanged) {
+            estimate[a] = 0.0;
+          } else if (h.size() >= 2 && i >= 2) {
             const double e_before = power_law_error({x(i - 2), x(i - 1), x(i)}, h[h.size() - 2], h.back());
             estimate[a] = std::isfinite(e_before) ? std::max(0.0, e_before - h.back()) : e_before;
           }
@@ -214,7 +220,9 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
             continue;
           }
           history[a].resize(static_cast<size_t>(i));  // d_0 .. d_(i-1): the differences below level i
-          if (!history[a].empty()) {
+          if (d <= kUnchanged) {
+            estimate[a] = d;
+          } else if (!history[a].empty()) {
             estimate[a] = power_law_error({x(i - 1), x(i), x(i + 1)}, history[a].back(), d);
           } else if (i + 2 < static_cast<int>(f.axes[a].levels.size())) {
             // One difference fixes no order: probe a second level on, e(x_i) = d_i + e(x_(i+1)).

@@ -258,11 +258,12 @@ TEST_F(HbmAnalysis, GridStepsNewtonCannotTakeAreBridgedByArclength) {
   EXPECT_NEAR(b.peaks[0].amplitude, a.peaks[0].amplitude, 1e-6 * a.peaks[0].amplitude);
 }
 
-// A Coulomb-like contact (kt = 1e4 k): with 64 AFT samples the stick-slip kinks fall between
-// samples and the peak of the near-stuck level is off by percents; aft_tolerance raises the samples
-// until the estimated error is met, and the result agrees with a 4096-sample sweep.
+// A Coulomb-like contact (kt = 1e4 k): with 64 samples of the sampled AFT the stick-slip kinks fall
+// between samples and the peak of the near-stuck level is off by percents; aft_tolerance raises the
+// samples until the estimated error is met, and the result agrees with a 4096-sample sweep.
 TEST_F(HbmAnalysis, AftToleranceRaisesTheSamplesUntilTheStiffContactIsResolved) {
   test::OscillatorCase c;
+  c.analysis_extra = "aft = \"samples\"\n";
   c.kt = "1.0e10";
   c.levels = "[12.0]";
   c.range = "[130.0, 220.0]";
@@ -271,7 +272,7 @@ TEST_F(HbmAnalysis, AftToleranceRaisesTheSamplesUntilTheStiffContactIsResolved) 
   const HbmPeak reference = run(test::oscillator_case_text(c)).levels[0].peaks[0];
   c.samples = "64";
   const HbmLevel coarse = run(test::oscillator_case_text(c)).levels[0];
-  c.analysis_extra = "aft_tolerance = 1e-3\n";
+  c.analysis_extra += "aft_tolerance = 1e-3\n";
   const HbmLevel raised = run(test::oscillator_case_text(c)).levels[0];
 
   const auto relative = [&](const HbmPeak& pk) { return std::abs(pk.amplitude / reference.amplitude - 1); };

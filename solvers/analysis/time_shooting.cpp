@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "analysis/time_sweeps.hpp"
+#include "timeint/newmark_shooting.hpp"
 #include "timeint/shooting.hpp"
 
 namespace bb {
@@ -21,7 +22,28 @@ timeint::ShootingOptions shooting_options(const TimeSpec& spec, const std::vecto
   o.tolerance = spec.system.tolerance;
   o.max_iterations = spec.system.max_iterations;
   o.floquet = spec.floquet;
+  // The Newmark map's start from rest: a lightly damped model (1 % at 175 Hz) needs tens of periods
+  // before Newton's nonsmooth map is near enough; the march stops once a period changes by 1e-3.
+  if (spec.period_map == TimeSpec::PeriodMap::newmark) o.warmup_periods = 400;
   return o;
+}
+
+// The periodic state of the chosen map, with the start it leaves for the next frequency.
+struct Start {
+  std::optional<timeint::FlowState> flow;
+  std::optional<Eigen::VectorXd> newmark;
+};
+
+timeint::ShootingResult shoot(const TimeSpec& spec, const friction::FrictionModel& model, double omega,
+                              const timeint::ShootingOptions& options, Start& start) {
+  if (spec.period_map == TimeSpec::PeriodMap::newmark) {
+    timeint::NewmarkShootingResult s = timeint::newmark_shooting(model, omega, options, spec.alpha, start.newmark);
+    if (s.result.steady.converged) start.newmark = std::move(s.state);
+    return std::move(s.result);
+  }
+  timeint::ShootingResult s = timeint::shooting(model, omega, options, start.flow);
+  if (s.steady.converged) start.flow = s.start;
+  return s;
 }
 
 }  // namespace
@@ -31,11 +53,15 @@ void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const friction::Fric
   const auto nf = static_cast<Index>(level.frequency_hz.size());
   const timeint::ShootingOptions options = shooting_options(spec, tracked.dofs);
   level.largest = Eigen::MatrixXd::Constant(nf, responses, std::numeric_limits<double>::quiet_NaN());
-  std::optional<timeint::FlowState> start;
+  Start start;
   for (Index i = 0; i < nf; ++i) {
     const double hz = level.frequency_hz[static_cast<size_t>(i)];
-    timeint::ShootingResult s = timeint::shooting(model, kTwoPi * hz, options, start);
-    if (!s.steady.converged && start) s = timeint::shooting(model, kTwoPi * hz, options);  // from the static state
+    Start tried = start;
+    timeint::ShootingResult s = shoot(spec, model, kTwoPi * hz, options, tried);
+    if (!s.steady.converged && (start.flow || start.newmark)) {
+      tried = {};
+      s = shoot(spec, model, kTwoPi * hz, options, tried);  // from the static state
+    }
     level.cycles.push_back(s.steady.cycles);
     level.steady.push_back(s.steady.converged);
     level.failure.push_back(s.steady.failure);
@@ -47,7 +73,7 @@ void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const friction::Fric
     level.max_step_iterations = std::max(level.max_step_iterations, static_cast<int>(s.steady.total_iterations));
     if (s.steady.converged && store_first_harmonics(level, i, s.steady.coefficients, tracked, responses)) {
       level.largest.row(i) = s.largest.head(responses).transpose();
-      start = s.start;
+      start = std::move(tried);
     }
     if (progress && i % 5 == 0)
       progress(fmt::format("Fe = {:g} N: {:.3f} Hz, shooting {} iterations{}", level.force, hz,
@@ -62,7 +88,8 @@ TimeHistoryRecord periodic_history(const PreparedHbm& p, const TimeSpec& spec) {
   friction::FrictionModel m = p.model;
   m.harmonic_load *= rec.force;
   const double omega = kTwoPi * rec.frequency_hz;
-  const timeint::ShootingResult s = timeint::shooting(m, omega, shooting_options(spec, p.responses));
+  Start none;
+  const timeint::ShootingResult s = shoot(spec, m, omega, shooting_options(spec, p.responses), none);
   rec.steady = s.steady;
   if (!s.steady.converged) return rec;
   // The period repeats: history_cycles copies of its samples.

@@ -15,6 +15,12 @@ struct TimeSpec {
   // tolerance and max_iterations; steps_per_period sub-intervals bracket the transitions.
   enum class Method { newmark, shooting };
   Method method = Method::newmark;
+  // The period map shooting solves on: the exact piecewise-linear flow (timeint/shooting.hpp: no
+  // time-step error, but a model with fast modes is cut into many pieces per period), or the Newmark
+  // / HHT-alpha step (timeint/newmark_shooting.hpp: a fixed cost per period, its step error, alpha
+  // damping the modes the step does not resolve).
+  enum class PeriodMap { exact, newmark };
+  PeriodMap period_map = PeriodMap::exact;
   bool floquet = false;            // shooting only: Floquet multipliers and stability per frequency
   HbmSpec system;                  // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
   int steps_per_period = 128;      // dt = T / steps_per_period (eq 3.42)

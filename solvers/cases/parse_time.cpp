@@ -13,10 +13,16 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
   if (r.has("method"))
     t.method = r.choice("method", {"newmark", "shooting"}) == "shooting" ? TimeSpec::Method::shooting
                                                                          : TimeSpec::Method::newmark;
+  if (r.has("period_map")) {
+    if (t.method != TimeSpec::Method::shooting) r.fail("period_map", "applies to method = \"shooting\"");
+    t.period_map = r.choice("period_map", {"exact", "newmark"}) == "newmark" ? TimeSpec::PeriodMap::newmark
+                                                                             : TimeSpec::PeriodMap::exact;
+  }
   if (r.has("floquet")) {
     t.floquet = r.boolean("floquet", false);
     if (t.floquet && t.method != TimeSpec::Method::shooting)
-      r.fail("floquet", "Floquet multipliers need a periodic solution: method = \"shooting\" (Newmark marches a transient)");
+      r.fail("floquet",
+             "Floquet multipliers need a periodic solution: method = \"shooting\" (Newmark marches a transient)");
   }
   if (const auto n = r.optional_integer("steps_per_period")) {
     if (*n < 8 || *n > 100000) r.fail("steps_per_period", "must lie in [8, 100000]");
@@ -43,10 +49,13 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     if (*n < 0 || *n > 50) r.fail("compare_harmonics", "must lie in [0, 50] (0: no harmonic-balance comparison)");
     t.compare_harmonics = static_cast<int>(*n);
   }
-  if (t.method == TimeSpec::Method::shooting)
-    for (const char* key : {"alpha", "max_cycles", "steady_tolerance"})
+  if (t.method == TimeSpec::Method::shooting) {
+    for (const char* key : {"max_cycles", "steady_tolerance"})
       if (r.has(key))
         r.fail(key, "applies to method = \"newmark\"; shooting converges on tolerance and max_iterations");
+    if (r.has("alpha") && t.period_map != TimeSpec::PeriodMap::newmark)
+      r.fail("alpha", "applies to method = \"newmark\" (or to shooting with period_map = \"newmark\")");
+  }
   t.system = parse_hbm(r, folder, false);
   if (t.system.harmonic_tolerance > 0.0)
     r.fail("harmonic_tolerance", "applies to an hbm analysis (a time integration carries every harmonic)");

@@ -8,6 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "timeint/period_newton.hpp"
+
 namespace bb::timeint {
 
 using contact::ContactState;
@@ -48,22 +50,15 @@ FlowState unstack(const PiecewiseFlow& flow, const VectorXd& x) {
 }
 
 // One period from x: the end state, the monodromy (when asked) and which sliders never moved.
-struct Period {
-  FlowState end;
-  MatrixXd monodromy;
-  std::vector<char> free_slider;  // stuck over the whole period
-  int transitions = 0;
-  std::string failure;
-};
-
-Period one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int max_events, bool jacobian) {
-  Period out;
-  out.end = unstack(flow, x);
-  const std::vector<ContactState> modes0 = out.end.modes;
-  if (jacobian) out.monodromy = flow.start_jacobian(out.end);
+PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int max_events, bool jacobian) {
+  PeriodEval out;
+  FlowState end = unstack(flow, x);
+  const std::vector<ContactState> modes0 = end.modes;
+  if (jacobian) out.monodromy = flow.start_jacobian(end);
   PiecewiseFlow::Advance log;
   for (int k = 1; k <= steps && log.failure.empty(); ++k)
-    flow.advance(out.end, kTwoPi * k / steps, jacobian ? &out.monodromy : nullptr, max_events, log);
+    flow.advance(end, kTwoPi * k / steps, jacobian ? &out.monodromy : nullptr, max_events, log);
+  out.end = stack(end);
   out.transitions = log.events;
   out.failure = log.failure;
   out.free_slider.resize(modes0.size());
@@ -73,14 +68,6 @@ Period one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int m
 }
 
 double scale_of(const PiecewiseFlow& flow, const VectorXd& x) { return x.head(2 * flow.dofs()).cwiseAbs().maxCoeff(); }
-
-// R = x(2 pi) - x(0), free sliders held.
-VectorXd residual(const PiecewiseFlow& flow, const Period& p, const VectorXd& x) {
-  VectorXd r = stack(p.end) - x;
-  for (size_t c = 0; c < p.free_slider.size(); ++c)
-    if (p.free_slider[c]) r[2 * flow.dofs() + static_cast<Index>(c)] = 0.0;
-  return r;
-}
 
 // The start: the static state, then periods marched until they nearly repeat.
 VectorXd warm_start(const friction::FrictionModel& model, const PiecewiseFlow& flow, const ShootingOptions& o,
@@ -92,13 +79,13 @@ VectorXd warm_start(const friction::FrictionModel& model, const PiecewiseFlow& f
     for (size_t c = 0; c < st.sliders.size(); ++c) x[2 * flow.dofs() + static_cast<Index>(c)] = st.sliders[c];
   }
   for (int k = 0; k < o.warmup_periods; ++k) {
-    const Period p = one_period(flow, x, o.steps_per_period, o.max_events, false);
+    const PeriodEval p = one_period(flow, x, o.steps_per_period, o.max_events, false);
     ++periods;
     if (!p.failure.empty()) {
       failure = p.failure;
       return x;
     }
-    const VectorXd next = stack(p.end);
+    const VectorXd& next = p.end;
     const double change = (next - x).head(2 * flow.dofs()).cwiseAbs().maxCoeff();
     x = next;
     if (change <= 1e-3 * scale_of(flow, x)) break;
@@ -126,18 +113,6 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
   fill_harmonics({samples.topRows(n_t)}, o.harmonics, out.steady);
 }
 
-void floquet(const PiecewiseFlow& flow, const Period& p, ShootingResult& out) {
-  std::vector<Index> kept;
-  for (Index i = 0; i < flow.state_size(); ++i)
-    if (i < 2 * flow.dofs() || !p.free_slider[static_cast<size_t>(i - 2 * flow.dofs())]) kept.push_back(i);
-  const MatrixXd m = p.monodromy(kept, kept);
-  out.multipliers = Eigen::EigenSolver<MatrixXd>(m, false).eigenvalues();
-  std::sort(out.multipliers.begin(), out.multipliers.end(),
-            [](const auto& a, const auto& b) { return std::abs(a) > std::abs(b); });
-  out.largest_multiplier = out.multipliers.size() > 0 ? std::abs(out.multipliers[0]) : 0.0;
-  out.stable = out.largest_multiplier < 1.0;
-}
-
 }  // namespace
 
 ShootingResult shooting(const friction::FrictionModel& input, double omega, const ShootingOptions& o,
@@ -152,49 +127,26 @@ ShootingResult shooting(const friction::FrictionModel& input, double omega, cons
   int& periods = out.steady.cycles;
   VectorXd x = start ? stack(*start) : warm_start(model, flow, o, periods, out.steady.failure);
   if (!out.steady.failure.empty()) return out;
-  const auto fail = [&](const std::string& why) {
-    out.steady.failure = fmt::format("shooting at omega = {:.9g} rad/s: {} after {} Newton iterations, |R| = {:.3e} m",
-                                     omega, why, out.steady.total_iterations, out.residual);
+  const PeriodLayout layout{.motion = 2 * flow.dofs(), .slider_offset = 2 * flow.dofs()};
+  const PeriodMap map = [&](const VectorXd& from, bool jacobian) {
+    return one_period(flow, from, o.steps_per_period, o.max_events, jacobian);
   };
-  Period p = one_period(flow, x, o.steps_per_period, o.max_events, true);
-  ++periods;
-  VectorXd r = residual(flow, p, x);
-  out.residual = r.cwiseAbs().maxCoeff();
-  while (true) {
-    if (!p.failure.empty()) return fail(p.failure), out;
-    if (out.residual <= o.tolerance * scale_of(flow, x)) break;
-    if (out.steady.total_iterations >= o.max_iterations) return fail("no convergence"), out;
-    ++out.steady.total_iterations;
-    MatrixXd g = p.monodromy - MatrixXd::Identity(x.size(), x.size());
-    for (size_t c = 0; c < p.free_slider.size(); ++c)
-      if (p.free_slider[c]) {
-        const Index row = 2 * flow.dofs() + static_cast<Index>(c);
-        g.row(row).setZero();
-        g(row, row) = 1.0;
-      }
-    const VectorXd dx = g.colPivHouseholderQr().solve(-r);
-    if (!dx.allFinite()) return fail("singular monodromy - I"), out;
-    // At the rounding floor |R| stops falling; a correction below the tolerance ends the iteration.
-    if (dx.head(2 * flow.dofs()).cwiseAbs().maxCoeff() <= o.tolerance * scale_of(flow, x)) {
-      x += dx;
-      break;
-    }
-    bool accepted = false;
-    for (double lambda = 1.0; lambda > 1e-4 && !accepted; lambda *= 0.5) {
-      const VectorXd trial = x + lambda * dx;
-      Period q = one_period(flow, trial, o.steps_per_period, o.max_events, true);
-      ++periods;
-      const VectorXd rq = residual(flow, q, trial);
-      const double norm = rq.cwiseAbs().maxCoeff();
-      if (q.failure.empty() && norm < (1.0 - 1e-4 * lambda) * out.residual) {
-        x = trial, p = std::move(q), r = rq, out.residual = norm, accepted = true;
-      }
-    }
-    if (!accepted) return fail("line search failed"), out;
+  PeriodNewtonResult newton = newton_on_period(map, x, layout, o.tolerance, o.max_iterations, omega);
+  periods += newton.periods;
+  out.steady.total_iterations = newton.iterations;
+  out.residual = newton.residual;
+  if (!newton.converged) {
+    out.steady.failure = newton.failure;
+    return out;
   }
+  x = newton.x;
   out.steady.converged = true;
-  out.transitions = p.transitions;
-  if (o.floquet) floquet(flow, p, out);
+  out.transitions = newton.period.transitions;
+  if (o.floquet) {
+    out.multipliers = floquet_multipliers(newton.period, layout);
+    out.largest_multiplier = out.multipliers.size() > 0 ? std::abs(out.multipliers[0]) : 0.0;
+    out.stable = out.largest_multiplier < 1.0;
+  }
   record(flow, x, o, out);
   ++periods;
   return out;

@@ -1,0 +1,135 @@
+// Shooting on the Newmark / HHT period map (timeint/newmark_shooting.hpp): the monodromy against
+// central differences of the map through stick, slip and lift-off; the multipliers of a linear
+// oscillator against the trapezoidal rule's amplification to the power of the steps; the periodic
+// state against the same integrator marched to its steady state.
+#include "timeint/newmark_shooting.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "friction_oscillator.hpp"
+#include "timeint/steady_state.hpp"
+
+namespace bb {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// Two DOFs: x along the contact, y pressing it (N = 5 N + kn y, opening when y < -5e-6 m), both
+// driven, so that the contact sticks, slips both ways and lifts off within a period at 150 Hz.
+friction::FrictionModel pressed_slider() {
+  friction::FrictionModel m;
+  m.mass = MatrixXd::Identity(2, 2);
+  m.stiffness = (MatrixXd(2, 2) << 1e6, 2e5, 2e5, 2e6).finished();
+  m.damping = 2e-4 * m.stiffness;
+  m.contacts.push_back({.law = {.kn = 1e6, .kt = 5e5, .mu = 0.4, .n0 = 5.0},
+                        .tangential = (Eigen::RowVectorXd(2) << 1.0, 0.0).finished(),
+                        .normal = (Eigen::RowVectorXd(2) << 0.0, 1.0).finished()});
+  m.harmonic_load = (Eigen::VectorXcd(2) << 10.0, std::polar(8.0, 0.7)).finished();
+  return m;
+}
+
+timeint::ShootingOptions options(int steps) {
+  timeint::ShootingOptions o;
+  o.dofs = {0, 1};
+  o.steps_per_period = steps;
+  o.harmonics = 3;
+  o.floquet = true;
+  o.warmup_periods = 50;
+  return o;
+}
+
+// Each column of the monodromy equals a one-sided difference of the map. With fixed steps and a
+// piecewise-linear law the map is piecewise affine, so a one-sided difference is exact to rounding;
+// a periodic orbit may sit on a kink (here with alpha = -0.1 a contact closes at the slip limit), where
+// only the side the Newton iteration stands on agrees.
+TEST(NewmarkShooting, MonodromyEqualsDifferencesOfTheMapThroughStickSlipAndLiftOff) {
+  const friction::FrictionModel m = pressed_slider();
+  const double omega = kTwoPi * 150.0;
+  for (const double alpha : {0.0, -0.1}) {
+    const timeint::NewmarkShootingResult s = timeint::newmark_shooting(m, omega, options(256), alpha);
+    ASSERT_TRUE(s.result.steady.converged) << s.result.steady.failure;
+    int slips = 0, lifts = 0;
+    for (const auto& c : s.result.steady.contacts[0]) {
+      slips += c.state == contact::ContactState::slip_positive || c.state == contact::ContactState::slip_negative;
+      lifts += c.state == contact::ContactState::lift_off;
+    }
+    EXPECT_GT(slips, 0);
+    EXPECT_GT(lifts, 0);
+    const timeint::PeriodMap map = timeint::newmark_period_map(m, omega, 256, alpha);
+    const timeint::PeriodEval at = map(s.state, true);
+    const double h = 1e-6 * s.state.head(2).cwiseAbs().maxCoeff();
+    double worst = 0.0;
+    for (Eigen::Index j = 0; j < s.state.size(); ++j) {
+      VectorXd plus = s.state, minus = s.state;
+      plus[j] += h;
+      minus[j] -= h;
+      const VectorXd forward = (map(plus, false).end - at.end) / h, backward = (at.end - map(minus, false).end) / h;
+      const double scale = std::max(1.0, at.monodromy.col(j).cwiseAbs().maxCoeff());
+      worst = std::max(worst, std::min((forward - at.monodromy.col(j)).cwiseAbs().maxCoeff(),
+                                       (backward - at.monodromy.col(j)).cwiseAbs().maxCoeff()) /
+                                  scale);
+    }
+    EXPECT_LT(worst, 1e-5) << "alpha = " << alpha;
+  }
+}
+
+// A contact that never slips leaves a linear oscillator (k + kt): the trapezoidal rule maps each
+// eigenvalue s of the first-order system to z = (1 + s h / 2) / (1 - s h / 2) per step, so the two
+// largest multipliers are z^N; the stuck slider's multiplier 1 is left out.
+TEST(NewmarkShooting, MultipliersOfALinearOscillatorAreTheTrapezoidalAmplificationToThePeriod) {
+  test::FrictionOscillator o{.mass = 2.0, .damping = 8.0, .stiffness = 1e6, .force = 1.0, .contact = {}};
+  o.contact = {.kn = 0.0, .kt = 1e6, .mu = 1e3, .n0 = 10.0};
+  const double omega = kTwoPi * 120.0;
+  const int steps = 128;
+  timeint::ShootingOptions opt = options(steps);
+  opt.dofs = {0};
+  const timeint::NewmarkShootingResult s = timeint::newmark_shooting(o.model(), omega, opt, 0.0);
+  ASSERT_TRUE(s.result.steady.converged) << s.result.steady.failure;
+  const double wn = std::sqrt(2e6 / 2.0), zeta = 8.0 / (2 * 2.0 * wn);
+  const std::complex<double> root(-zeta * wn, wn * std::sqrt(1 - zeta * zeta));
+  const double h = kTwoPi / (omega * steps);
+  const std::complex<double> z = std::pow((1.0 + root * h / 2.0) / (1.0 - root * h / 2.0), steps);
+  ASSERT_GE(s.result.multipliers.size(), 2);
+  EXPECT_NEAR(std::abs(s.result.multipliers[0]), std::abs(z), 1e-10);
+  EXPECT_NEAR(std::abs(s.result.multipliers[1]), std::abs(z), 1e-10);
+  EXPECT_NEAR(std::abs(s.result.multipliers[0].real()), std::abs(z.real()), 1e-9);
+  EXPECT_TRUE(s.result.stable);
+  // The periodic amplitude: the linear response to the step's second-order error.
+  const double exact = 1.0 / std::abs(std::complex<double>(2e6 - 2.0 * omega * omega, 8.0 * omega));
+  EXPECT_NEAR(s.result.steady.amplitude(0, 1) / exact, 1.0, 1e-3);
+}
+
+// The periodic state Newton finds is the one the same integrator reaches by marching (stable, so it
+// attracts), with or without HHT damping.
+TEST(NewmarkShooting, EqualsTheSameIntegratorMarchedToItsSteadyState) {
+  const friction::FrictionModel m = pressed_slider();
+  const double omega = kTwoPi * 150.0;
+  for (const double alpha : {0.0, -0.1}) {
+    const timeint::NewmarkShootingResult s = timeint::newmark_shooting(m, omega, options(256), alpha);
+    ASSERT_TRUE(s.result.steady.converged) << s.result.steady.failure;
+    EXPECT_TRUE(s.result.stable) << s.result.largest_multiplier;
+    EXPECT_LE(s.result.steady.total_iterations, 8);
+    timeint::SteadyStateOptions so;
+    so.dofs = {0, 1};
+    so.steps_per_period = 256;
+    so.harmonics = 3;
+    so.tolerance = 1e-11;
+    so.max_cycles = 20000;
+    so.newmark.alpha = alpha;
+    const timeint::SteadyState marched = timeint::steady_state(m, omega, so);
+    ASSERT_TRUE(marched.converged) << marched.failure;
+    for (Eigen::Index d = 0; d < 2; ++d)
+      for (Eigen::Index h = 1; h <= 3; ++h)
+        EXPECT_NEAR(s.result.steady.amplitude(d, h), marched.amplitude(d, h), 1e-7 * marched.amplitude(d, 1))
+            << "alpha " << alpha << " DOF " << d << " harmonic " << h;
+  }
+}
+
+}  // namespace
+}  // namespace bb

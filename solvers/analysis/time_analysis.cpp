@@ -94,17 +94,17 @@ TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint:
   if (tracked.pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
   friction::FrictionModel m = p.model;
   m.harmonic_load *= force;
-  if (spec.method == TimeSpec::Method::shooting)
-    periodic_sweep(level, spec, m, tracked, nr, progress);
-  else
-    stepped_sine(level, p, spec, m, options, tracked, progress);
-  linear_on_grid(level, p, m, tracked.pair.has_value());
-  if (spec.compare_harmonics > 0) {
+  if (spec.compare_harmonics > 0) {  // first: shooting on the Newmark map starts from it
     HbmSpec h = spec.system;
     h.harmonics = spec.compare_harmonics;
     h.time_samples = 0;
     level.hbm = sweep_hbm_level(p, h, force, spec.compare_harmonics);
   }
+  if (spec.method == TimeSpec::Method::shooting)
+    periodic_sweep(level, p, spec, m, tracked, nr, progress);
+  else
+    stepped_sine(level, p, spec, m, options, tracked, progress);
+  linear_on_grid(level, p, m, tracked.pair.has_value());
   level.seconds = seconds_since(t0);
   return level;
 }

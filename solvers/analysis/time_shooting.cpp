@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "analysis/time_sweeps.hpp"
+#include "forced/hbm_level_system.hpp"
 #include "timeint/newmark_shooting.hpp"
 #include "timeint/shooting.hpp"
 
@@ -46,9 +47,43 @@ timeint::ShootingResult shoot(const TimeSpec& spec, const friction::FrictionMode
   return s;
 }
 
+// The Newmark map's state x = (q, dq/dtheta, d2q/dtheta2, sliders) at theta = 0 of the harmonic
+// balance's solution at omega (empty without a converged point there): every DOF's harmonics
+// recovered, each slider from T = kt (u - w) at theta = 0.
+std::optional<Eigen::VectorXd> harmonic_balance_start(const PreparedHbm& p, const TimeSpec& spec,
+                                                      const friction::FrictionModel& model, const HbmLevel& hbm,
+                                                      double omega) {
+  if (hbm.path.points.empty()) return std::nullopt;
+  const hbm::ContinuationPoint& point = nearest_point(hbm.path, omega);
+  if (std::abs(point.omega - omega) > 1e-9 * omega) return std::nullopt;
+  HbmSpec h = spec.system;
+  h.harmonics = hbm.harmonics;
+  const hbm::HarmonicBalance system = level_system(p, h, hbm.force, hbm.harmonics, hbm.samples);
+  const Eigen::MatrixXd c = system.recover(point.x, omega);
+  const Index n = c.rows(), nc = static_cast<Index>(model.contacts.size());
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(3 * n + nc);
+  x.head(n) = c.col(0);
+  for (int k = 1; k <= hbm.harmonics; ++k) {
+    const auto a = c.col(2 * k - 1), b = c.col(2 * k);
+    x.head(n) += a;
+    x.segment(n, n) += k * b;
+    x.segment(2 * n, n) -= (k * k) * a;
+  }
+  const hbm::HarmonicBalance::ContactForces forces = system.contact_forces(point.x);
+  if (static_cast<Index>(forces.contacts.size()) != nc) return std::nullopt;
+  for (Index k = 0; k < nc; ++k) {
+    const friction::ContactElement& e = model.contacts[static_cast<size_t>(k)];
+    const Eigen::VectorXd& t = forces.contacts[static_cast<size_t>(k)].tangential;
+    double t0 = t[0];
+    for (Index j = 1; j < t.size(); j += 2) t0 += t[j];
+    x[3 * n + k] = e.tangential.dot(x.head(n)) - e.tangential_offset - t0 / e.law.kt;
+  }
+  return x;
+}
+
 }  // namespace
 
-void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const friction::FrictionModel& model,
+void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const friction::FrictionModel& model,
                     const TrackedDofs& tracked, Index responses, const HbmProgress& progress) {
   const auto nf = static_cast<Index>(level.frequency_hz.size());
   const timeint::ShootingOptions options = shooting_options(spec, tracked.dofs);
@@ -57,7 +92,15 @@ void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const friction::Fric
   for (Index i = 0; i < nf; ++i) {
     const double hz = level.frequency_hz[static_cast<size_t>(i)];
     Start tried = start;
+    std::optional<Eigen::VectorXd> from_hbm;
+    if (spec.period_map == TimeSpec::PeriodMap::newmark && level.hbm)
+      from_hbm = harmonic_balance_start(p, spec, model, *level.hbm, kTwoPi * hz);
+    if (from_hbm) tried.newmark = from_hbm;
     timeint::ShootingResult s = shoot(spec, model, kTwoPi * hz, options, tried);
+    if (!s.steady.converged && from_hbm && start.newmark) {
+      tried = start;  // from the previous frequency's periodic state
+      s = shoot(spec, model, kTwoPi * hz, options, tried);
+    }
     if (!s.steady.converged && (start.flow || start.newmark)) {
       tried = {};
       s = shoot(spec, model, kTwoPi * hz, options, tried);  // from the static state

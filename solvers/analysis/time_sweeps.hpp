@@ -27,8 +27,10 @@ bool store_first_harmonics(TimeLevel& level, Eigen::Index i, const Eigen::Matrix
                            const TrackedDofs& tracked, Eigen::Index responses);
 
 // The periodic responses of one level by shooting (timeint/shooting.hpp), each frequency started
-// from the previous one's periodic state.
-void periodic_sweep(TimeLevel& level, const TimeSpec& spec, const friction::FrictionModel& model,
+// from the previous one's periodic state. On the Newmark map with the harmonic balance of the same
+// grid (level.hbm), its solution at the frequency is tried first: the periodic motion it
+// approximates, if there is one, whatever branch the previous frequency was on.
+void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const friction::FrictionModel& model,
                     const TrackedDofs& tracked, Eigen::Index responses, const HbmProgress& progress);
 
 // The periodic response at history_hz by shooting, history_cycles copies of its period recorded.

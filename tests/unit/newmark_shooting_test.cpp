@@ -8,9 +8,15 @@
 
 #include <cmath>
 #include <complex>
+#include <fstream>
 #include <numbers>
+#include <sstream>
+#include <string>
 
 #include "friction_oscillator.hpp"
+#include "oscillator_case.hpp"
+#include "pipeline/run_case.hpp"
+#include "temp_folder.hpp"
 #include "timeint/steady_state.hpp"
 
 namespace bb {
@@ -129,6 +135,43 @@ TEST(NewmarkShooting, EqualsTheSameIntegratorMarchedToItsSteadyState) {
         EXPECT_NEAR(s.result.steady.amplitude(d, h), marched.amplitude(d, h), 1e-7 * marched.amplitude(d, 1))
             << "alpha " << alpha << " DOF " << d << " harmonic " << h;
   }
+}
+
+class NewmarkShootingCase : public test::TempFolderTest {};
+
+// Through a case: each frequency starts from the harmonic balance's solution there (compare_harmonics),
+// Newton needs at most one correction from it (a run is the period evaluated, corrected, recorded),
+// and the periodic amplitude agrees with the H = 9 balance to its truncation (3e-4 measured).
+TEST_F(NewmarkShootingCase, EachFrequencyStartsFromTheHarmonicBalanceAndAgreesWithIt) {
+  test::OscillatorCase c;
+  c.levels = "[20.0]";
+  c.step = "5.0";
+  c.samples = "0";
+  std::string text = test::oscillator_case_text(c);
+  const std::string from = "type = \"hbm\"";
+  text.replace(text.find(from), from.size(),
+               "type = \"time\"\nmethod = \"shooting\"\nperiod_map = \"newmark\"\nalpha = -0.05\n"
+               "steps_per_period = 512\nfloquet = true\ncompare_harmonics = 9");
+  text.replace(text.find("harmonics = 1\n"), 14, "harmonics = 3\n");
+  const RunOutcome o = run_case(write(text), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  ASSERT_EQ(o.record.status, RunStatus::no_checks) << o.record.message;
+  std::ifstream in(o.out_dir / "frf.csv");
+  std::string line;
+  std::getline(in, line);
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 13u)
+        << line;  // point, fe, hz, amp, cycles, steady, max, residual, transitions, floquet, stable, linear, hbm
+    EXPECT_EQ(v[5], 1.0) << line;
+    EXPECT_LE(v[4], 4.0) << line;
+    EXPECT_NEAR(v[3] / v[12], 1.0, 1e-3) << line;
+    EXPECT_EQ(v[10], 1.0) << line;  // stable
+    ++rows;
+  }
+  EXPECT_EQ(rows, 27);
 }
 
 }  // namespace

@@ -118,7 +118,7 @@ int calibrate_command(const CalibrateArgs& a) {
       if (!e.pass)
         std::fprintf(stderr, "  cross-check FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n",
                      e.name.c_str(), e.computed, e.reference, e.abs_error, e.tolerance);
-    if (!o.converged) return bb::exit_solver_failed;
+    if (!o.converged || !o.cross_check_failure.empty()) return bb::exit_solver_failed;
     return o.cross_check_passed() ? bb::exit_pass : bb::exit_check_failed;
   });
 }

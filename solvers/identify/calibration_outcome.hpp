@@ -48,6 +48,9 @@ struct CalibrationOutcome {
   // The cross-check case run with the identified values (spec.cross_check), every check entry.
   std::vector<CheckEntry> cross_check;
   double cross_check_seconds = 0.0;
+  // Why the cross-check case found no solution (its checks then have nothing to read); the
+  // identification is kept and reported all the same.
+  std::string cross_check_failure;
   bool cross_check_passed() const;
 };
 

@@ -278,7 +278,11 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   if (!o.cross_check.empty() || !o.spec.cross_check.empty()) {
     md << fmt::format("\n## Cross-check: `{}` with the identified values\n\n{} ({:.1f} s).\n\n",
                       o.spec.cross_check.filename().string(),
-                      o.cross_check_passed() ? "Every check passes" : "**Some checks fail**", o.cross_check_seconds);
+                      !o.cross_check_failure.empty() ? "**No solution: the checks have no verdict**"
+                      : o.cross_check_passed()       ? "Every check passes"
+                                                     : "**Some checks fail**",
+                      o.cross_check_seconds);
+    if (!o.cross_check_failure.empty()) md << o.cross_check_failure << "\n\n";
     md << "| check entry | computed | reference | error | tolerance | pass |\n|---|---|---|---|---|---|\n";
     for (const CheckEntry& e : o.cross_check)
       md << fmt::format("| {} | {:.6g} | {:.6g} | {:.3g} | {:.3g} | {} |\n", e.name, e.computed, e.reference,

@@ -104,6 +104,41 @@ TEST_P(HbmCalibrationSeeds, FrictionParametersComeBackFromNoisyPeaksWithAnOutlie
   }
 }
 
+// A cross-check case that finds no solution with the identified values (a stepped sine cut at 3
+// periods, so its peak is no steady state) must not throw the identification away: it is kept,
+// with the cross-check's reason as a warning and the cross-check not passed.
+TEST_F(HbmCalibration, ACrossCheckWithoutASolutionKeepsTheIdentification) {
+  std::ofstream(dir_ / "peaks.csv") << "level,peak_hz,peak_amp_per_n\n";
+  std::ofstream(dir_ / "truth.toml") << oscillator_case(1.5e6, 0.35);
+  const CaseSpec truth = parse_case_file(dir_ / "truth.toml");
+  const ResultTable peaks = run_analysis(truth.analysis, build_model(truth.model)).tables.at("peaks");
+  std::ofstream data(dir_ / "peaks.csv");
+  data.precision(12);
+  data << "level,peak_hz,peak_amp_per_n\n";
+  for (Eigen::Index i = 0; i < peaks.values.rows(); ++i)
+    data << i + 1 << ',' << peaks.values(i, 2) << ',' << peaks.values(i, 4) << '\n';
+  data.close();
+  test::OscillatorCase t;
+  t.levels = "[20.0]";
+  t.range = "[150.0, 240.0]";
+  t.step = "5.0";
+  std::string time_text = test::oscillator_case_text(t);
+  time_text.replace(time_text.find("type = \"hbm\""), 12, "type = \"time\"\nmax_cycles = 3");
+  std::ofstream(dir_ / "time.toml") << time_text;
+  std::string text = oscillator_case(1.2e6, 0.4);
+  text.replace(text.find("starts = 3"), 10, "starts = 1\ncross_check = \"time.toml\"");
+  text.replace(text.find("max_iterations = 30"), 19, "max_iterations = 4");
+  std::ofstream(dir_ / "case.toml") << text;
+  const CalibrationOutcome o = calibrate_case(dir_ / "case.toml");
+  ASSERT_EQ(o.values.size(), 2u);
+  EXPECT_LT(std::abs(o.values[0] / 1.5e6 - 1.0), std::abs(1.2e6 / 1.5e6 - 1.0));  // the fit moved towards the truth
+  EXPECT_NE(o.cross_check_failure.find("steady state"), std::string::npos) << o.cross_check_failure;
+  EXPECT_FALSE(o.cross_check_passed());
+  bool warned = false;
+  for (const std::string& w : o.warnings) warned = warned || w.find("found no solution") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 INSTANTIATE_TEST_SUITE_P(NoiseDraws, HbmCalibrationSeeds, ::testing::Values(7u, 11u));
 
 }  // namespace

@@ -250,21 +250,8 @@ NewmarkShootingResult newmark_shooting(const friction::FrictionModel& input, dou
   const Index n = map.dofs();
   const PeriodLayout layout{.motion = 3 * n, .slider_offset = 3 * n};
   const PeriodMap period = [&](const VectorXd& from, bool jacobian) { return map.period(from, jacobian); };
-  PeriodNewtonResult newton = newton_on_period(period, x, layout, o.tolerance, o.max_iterations, omega);
-  periods += newton.periods;
-  out.steady.total_iterations = newton.iterations;
-  out.residual = newton.residual;
-  if (!newton.converged) {
-    out.steady.failure = newton.failure;
-    return result;
-  }
-  out.steady.converged = true;
-  out.transitions = newton.period.transitions;
-  if (o.floquet) {
-    out.multipliers = floquet_multipliers(newton.period, layout);
-    out.largest_multiplier = out.multipliers.size() > 0 ? std::abs(out.multipliers[0]) : 0.0;
-    out.stable = out.largest_multiplier < 1.0;
-  }
+  const PeriodNewtonResult newton = newton_on_period(period, x, layout, o.tolerance, o.max_iterations, omega);
+  if (!take_newton(newton, layout, o.floquet, out)) return result;
   result.state = newton.x;
   record(map, newton.x, o, out);
   ++periods;

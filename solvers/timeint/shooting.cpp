@@ -115,6 +115,24 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
 
 }  // namespace
 
+bool take_newton(const PeriodNewtonResult& newton, const PeriodLayout& layout, bool floquet, ShootingResult& out) {
+  out.steady.cycles += newton.periods;
+  out.steady.total_iterations = newton.iterations;
+  out.residual = newton.residual;
+  if (!newton.converged) {
+    out.steady.failure = newton.failure;
+    return false;
+  }
+  out.steady.converged = true;
+  out.transitions = newton.period.transitions;
+  if (floquet) {
+    out.multipliers = floquet_multipliers(newton.period, layout);
+    out.largest_multiplier = out.multipliers.size() > 0 ? std::abs(out.multipliers[0]) : 0.0;
+    out.stable = out.largest_multiplier < 1.0;
+  }
+  return true;
+}
+
 ShootingResult shooting(const friction::FrictionModel& input, double omega, const ShootingOptions& o,
                         const std::optional<FlowState>& start) {
   friction::FrictionModel model = input;
@@ -131,23 +149,9 @@ ShootingResult shooting(const friction::FrictionModel& input, double omega, cons
   const PeriodMap map = [&](const VectorXd& from, bool jacobian) {
     return one_period(flow, from, o.steps_per_period, o.max_events, jacobian);
   };
-  PeriodNewtonResult newton = newton_on_period(map, x, layout, o.tolerance, o.max_iterations, omega);
-  periods += newton.periods;
-  out.steady.total_iterations = newton.iterations;
-  out.residual = newton.residual;
-  if (!newton.converged) {
-    out.steady.failure = newton.failure;
-    return out;
-  }
-  x = newton.x;
-  out.steady.converged = true;
-  out.transitions = newton.period.transitions;
-  if (o.floquet) {
-    out.multipliers = floquet_multipliers(newton.period, layout);
-    out.largest_multiplier = out.multipliers.size() > 0 ? std::abs(out.multipliers[0]) : 0.0;
-    out.stable = out.largest_multiplier < 1.0;
-  }
-  record(flow, x, o, out);
+  const PeriodNewtonResult newton = newton_on_period(map, x, layout, o.tolerance, o.max_iterations, omega);
+  if (!take_newton(newton, layout, o.floquet, out)) return out;
+  record(flow, newton.x, o, out);
   ++periods;
   return out;
 }

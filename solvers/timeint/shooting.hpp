@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "friction/friction_system.hpp"
+#include "timeint/period_newton.hpp"
 #include "timeint/piecewise_flow.hpp"
 #include "timeint/steady_state.hpp"
 
@@ -47,6 +48,11 @@ struct ShootingResult {
   bool stable = false;              // largest_multiplier < 1 (with floquet)
   FlowState start;                  // the periodic state at theta = 0 (a start for the next frequency)
 };
+
+// A Newton run on a period map into `out` (either map's): the periods, iterations and |R|; the
+// failure, or converged with the transitions and, with `floquet`, the multipliers and the verdict.
+// False when it did not converge.
+bool take_newton(const PeriodNewtonResult& newton, const PeriodLayout& layout, bool floquet, ShootingResult& out);
 
 // Throws std::invalid_argument on invalid options; a run that does not converge says so in
 // steady.failure with |R| and the iteration count (converged == false).

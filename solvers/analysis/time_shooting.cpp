@@ -50,15 +50,13 @@ timeint::ShootingResult shoot(const TimeSpec& spec, const friction::FrictionMode
 // The Newmark map's state x = (q, dq/dtheta, d2q/dtheta2, sliders) at theta = 0 of the harmonic
 // balance's solution at omega (empty without a converged point there): every DOF's harmonics
 // recovered, each slider from T = kt (u - w) at theta = 0.
-std::optional<Eigen::VectorXd> harmonic_balance_start(const PreparedHbm& p, const TimeSpec& spec,
+// `system`: the balance hbm was solved with.
+std::optional<Eigen::VectorXd> harmonic_balance_start(const hbm::HarmonicBalance& system,
                                                       const friction::FrictionModel& model, const HbmLevel& hbm,
                                                       double omega) {
   if (hbm.path.points.empty()) return std::nullopt;
   const hbm::ContinuationPoint& point = nearest_point(hbm.path, omega);
   if (std::abs(point.omega - omega) > 1e-9 * omega) return std::nullopt;
-  HbmSpec h = spec.system;
-  h.harmonics = hbm.harmonics;
-  const hbm::HarmonicBalance system = level_system(p, h, hbm.force, hbm.harmonics, hbm.samples);
   const Eigen::MatrixXd c = system.recover(point.x, omega);
   const Index n = c.rows(), nc = static_cast<Index>(model.contacts.size());
   Eigen::VectorXd x = Eigen::VectorXd::Zero(3 * n + nc);
@@ -88,13 +86,18 @@ void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec
   const auto nf = static_cast<Index>(level.frequency_hz.size());
   const timeint::ShootingOptions options = shooting_options(spec, tracked.dofs);
   level.largest = Eigen::MatrixXd::Constant(nf, responses, std::numeric_limits<double>::quiet_NaN());
+  std::optional<hbm::HarmonicBalance> balance;  // the one level.hbm was solved with, built once
+  if (spec.period_map == TimeSpec::PeriodMap::newmark && level.hbm) {
+    HbmSpec h = spec.system;
+    h.harmonics = level.hbm->harmonics;
+    balance.emplace(level_system(p, h, level.hbm->force, level.hbm->harmonics, level.hbm->samples));
+  }
   Start start;
   for (Index i = 0; i < nf; ++i) {
     const double hz = level.frequency_hz[static_cast<size_t>(i)];
     Start tried = start;
     std::optional<Eigen::VectorXd> from_hbm;
-    if (spec.period_map == TimeSpec::PeriodMap::newmark && level.hbm)
-      from_hbm = harmonic_balance_start(p, spec, model, *level.hbm, kTwoPi * hz);
+    if (balance) from_hbm = harmonic_balance_start(*balance, model, *level.hbm, kTwoPi * hz);
     if (from_hbm) tried.newmark = from_hbm;
     timeint::ShootingResult s = shoot(spec, model, kTwoPi * hz, options, tried);
     if (!s.steady.converged && from_hbm && start.newmark) {

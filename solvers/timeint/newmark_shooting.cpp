@@ -1,16 +1,11 @@
 #include "timeint/newmark_shooting.hpp"
 
-#include <fmt/format.h>
-
-#include <cmath>
 #include <limits>
 #include <memory>
 #include <numbers>
-#include <stdexcept>
 
 #include "timeint/newmark.hpp"
 #include "timeint/period_newton.hpp"
-#include "timeint/static_state.hpp"
 #include "timeint/steady_state.hpp"
 
 namespace bb::timeint {
@@ -66,9 +61,11 @@ class NewmarkPeriod {
   PeriodEval period(const VectorXd& x, bool jacobian, std::vector<DynamicState>* record = nullptr) const {
     PeriodEval out;
     DynamicState s = unpack(x);
+    out.free_slider.resize(static_cast<size_t>(nc_));
+    for (Index k = 0; k < nc_; ++k)  // stuck at the start; cleared below if it ever switches
+      out.free_slider[static_cast<size_t>(k)] = s.contacts[static_cast<size_t>(k)].state == ContactState::stick;
     MatrixXd phi;
     if (jacobian) phi = settle_jacobian(s);
-    std::vector<char> switched(static_cast<size_t>(nc_), 0);
     if (record) record->push_back(s);
     for (int i = 0; i < steps_; ++i) {
       DynamicState next = s;
@@ -81,7 +78,7 @@ class NewmarkPeriod {
       for (Index k = 0; k < nc_; ++k)
         if (next.contacts[static_cast<size_t>(k)].state != s.contacts[static_cast<size_t>(k)].state) {
           ++out.transitions;
-          switched[static_cast<size_t>(k)] = 1;
+          out.free_slider[static_cast<size_t>(k)] = 0;
         }
       s = std::move(next);
       if (record) record->push_back(s);
@@ -94,11 +91,6 @@ class NewmarkPeriod {
       d.segment(2 * n_, n_).setConstant(omega_ * omega_);
       out.monodromy = d.cwiseInverse().asDiagonal() * phi * d.asDiagonal();
     }
-    const DynamicState start = unpack(x);
-    out.free_slider.resize(static_cast<size_t>(nc_));
-    for (Index k = 0; k < nc_; ++k)
-      out.free_slider[static_cast<size_t>(k)] =
-          start.contacts[static_cast<size_t>(k)].state == ContactState::stick && !switched[static_cast<size_t>(k)];
     return out;
   }
 
@@ -171,30 +163,6 @@ class NewmarkPeriod {
   MatrixXd inertia_, keff_;  // M / (beta dt^2) + (1 + alpha) gamma / (beta dt) C, and K_eff
 };
 
-// The static state, then periods marched until they nearly repeat.
-VectorXd warm_start(const friction::FrictionModel& model, const NewmarkPeriod& map, const ShootingOptions& o,
-                    int& periods, std::string& failure) {
-  const StaticState st = static_initial_state(model, o.initial);
-  VectorXd x = VectorXd::Zero(map.size());
-  const Index n = map.dofs();
-  if (st.converged) {
-    x.head(n) = st.q;
-    for (size_t c = 0; c < st.sliders.size(); ++c) x[3 * n + static_cast<Index>(c)] = st.sliders[c];
-  }
-  for (int k = 0; k < o.warmup_periods; ++k) {
-    const PeriodEval p = map.period(x, false);
-    ++periods;
-    if (!p.failure.empty()) {
-      failure = p.failure;
-      return x;
-    }
-    const double change = (p.end - x).head(2 * n).cwiseAbs().maxCoeff();
-    x = p.end;
-    if (change <= 1e-3 * x.head(2 * n).cwiseAbs().maxCoeff()) break;
-  }
-  return x;
-}
-
 void record(const NewmarkPeriod& map, const VectorXd& x, const ShootingOptions& o, ShootingResult& out) {
   std::vector<DynamicState> states;
   (void)map.period(x, false, &states);
@@ -224,32 +192,23 @@ NewmarkShootingResult newmark_shooting(const friction::FrictionModel& input, dou
                                        double alpha, const std::optional<VectorXd>& start) {
   friction::FrictionModel model = input;
   friction::validate_model(model, "shooting");
-  if (!(std::isfinite(omega) && omega > 0.0))
-    throw std::invalid_argument(fmt::format("shooting: omega must be finite and > 0 (got {})", omega));
-  if (o.dofs.empty() || o.harmonics < 0 || o.steps_per_period < 2 * (o.harmonics + 1) || !(o.tolerance > 0.0) ||
-      o.max_iterations < 1 || o.warmup_periods < 0)
-    throw std::invalid_argument(
-        "shooting: a reported DOF, harmonics >= 0, steps_per_period >= 2 (harmonics + 1), tolerance > 0, "
-        "max_iterations >= 1 and warmup_periods >= 0");
-  for (const Index d : o.dofs)
-    if (d < 0 || d >= model.mass.rows())
-      throw std::invalid_argument(fmt::format("shooting: DOF {} is not in [0, {})", d, model.mass.rows()));
+  validate_shooting(model, omega, o);
   const NewmarkPeriod map(model, omega, o.steps_per_period, alpha);
   NewmarkShootingResult result;
   ShootingResult& out = result.result;
   out.steady.omega = omega;
   out.largest_multiplier = std::numeric_limits<double>::quiet_NaN();
   int& periods = out.steady.cycles;
+  const Index n = map.dofs();
+  const PeriodLayout layout{.motion = 3 * n, .slider_offset = 3 * n};
+  const PeriodMap period = [&](const VectorXd& from, bool jacobian) { return map.period(from, jacobian); };
   VectorXd x;
   if (start && start->size() == map.size()) {
     x = *start;
   } else {
-    x = warm_start(model, map, o, periods, out.steady.failure);
+    x = warm_start(model, period, map.size(), layout.slider_offset, o, periods, out.steady.failure);
     if (!out.steady.failure.empty()) return result;
   }
-  const Index n = map.dofs();
-  const PeriodLayout layout{.motion = 3 * n, .slider_offset = 3 * n};
-  const PeriodMap period = [&](const VectorXd& from, bool jacobian) { return map.period(from, jacobian); };
   const PeriodNewtonResult newton = newton_on_period(period, x, layout, o.tolerance, o.max_iterations, omega);
   if (!take_newton(newton, layout, o.floquet, out)) return result;
   result.state = newton.x;

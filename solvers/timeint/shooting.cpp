@@ -21,18 +21,6 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-void validate(const friction::FrictionModel& model, double omega, const ShootingOptions& o) {
-  const auto fail = [](const std::string& what) { throw std::invalid_argument("shooting: " + what); };
-  if (!(std::isfinite(omega) && omega > 0.0)) fail(fmt::format("omega must be finite and > 0 (got {})", omega));
-  if (o.dofs.empty()) fail("at least one DOF to report");
-  for (const Index d : o.dofs)
-    if (d < 0 || d >= model.mass.rows()) fail(fmt::format("DOF {} is not in [0, {})", d, model.mass.rows()));
-  if (o.harmonics < 0 || o.steps_per_period < 2 * (o.harmonics + 1))
-    fail("harmonics >= 0 and steps_per_period >= 2 (harmonics + 1)");
-  if (!(o.tolerance > 0.0) || o.max_iterations < 1 || o.warmup_periods < 0 || o.max_events < 1)
-    fail("tolerance > 0, max_iterations >= 1, warmup_periods >= 0 and max_events >= 1");
-}
-
 VectorXd stack(const FlowState& s) {
   VectorXd x(s.q.size() + s.p.size() + s.w.size());
   x << s.q, s.p, s.w;
@@ -67,32 +55,6 @@ PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, i
   return out;
 }
 
-double scale_of(const PiecewiseFlow& flow, const VectorXd& x) { return x.head(2 * flow.dofs()).cwiseAbs().maxCoeff(); }
-
-// The start: the static state, then periods marched until they nearly repeat.
-VectorXd warm_start(const friction::FrictionModel& model, const PiecewiseFlow& flow, const ShootingOptions& o,
-                    int& periods, std::string& failure) {
-  const StaticState st = static_initial_state(model, o.initial);
-  VectorXd x = VectorXd::Zero(flow.state_size());
-  if (st.converged) {
-    x.head(flow.dofs()) = st.q;
-    for (size_t c = 0; c < st.sliders.size(); ++c) x[2 * flow.dofs() + static_cast<Index>(c)] = st.sliders[c];
-  }
-  for (int k = 0; k < o.warmup_periods; ++k) {
-    const PeriodEval p = one_period(flow, x, o.steps_per_period, o.max_events, false);
-    ++periods;
-    if (!p.failure.empty()) {
-      failure = p.failure;
-      return x;
-    }
-    const VectorXd& next = p.end;
-    const double change = (next - x).head(2 * flow.dofs()).cwiseAbs().maxCoeff();
-    x = next;
-    if (change <= 1e-3 * scale_of(flow, x)) break;
-  }
-  return x;
-}
-
 // The recorded period: samples at the sub-interval ends, located extremes, harmonics.
 void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions& o, ShootingResult& out) {
   const int n_t = o.steps_per_period;
@@ -114,6 +76,41 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
 }
 
 }  // namespace
+
+void validate_shooting(const friction::FrictionModel& model, double omega, const ShootingOptions& o) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("shooting: " + what); };
+  if (!(std::isfinite(omega) && omega > 0.0)) fail(fmt::format("omega must be finite and > 0 (got {})", omega));
+  if (o.dofs.empty()) fail("at least one DOF to report");
+  for (const Index d : o.dofs)
+    if (d < 0 || d >= model.mass.rows()) fail(fmt::format("DOF {} is not in [0, {})", d, model.mass.rows()));
+  if (o.harmonics < 0 || o.steps_per_period < 2 * (o.harmonics + 1))
+    fail("harmonics >= 0 and steps_per_period >= 2 (harmonics + 1)");
+  if (!(o.tolerance > 0.0) || o.max_iterations < 1 || o.warmup_periods < 0 || o.max_events < 1)
+    fail("tolerance > 0, max_iterations >= 1, warmup_periods >= 0 and max_events >= 1");
+}
+
+VectorXd warm_start(const friction::FrictionModel& model, const PeriodMap& map, Index size, Index slider_offset,
+                    const ShootingOptions& o, int& periods, std::string& failure) {
+  const Index n = model.mass.rows();
+  const StaticState st = static_initial_state(model, o.initial);
+  VectorXd x = VectorXd::Zero(size);
+  if (st.converged) {
+    x.head(n) = st.q;
+    for (size_t c = 0; c < st.sliders.size(); ++c) x[slider_offset + static_cast<Index>(c)] = st.sliders[c];
+  }
+  for (int k = 0; k < o.warmup_periods; ++k) {
+    const PeriodEval p = map(x, false);
+    ++periods;
+    if (!p.failure.empty()) {
+      failure = p.failure;
+      return x;
+    }
+    const double change = (p.end - x).head(2 * n).cwiseAbs().maxCoeff();
+    x = p.end;
+    if (change <= 1e-3 * x.head(2 * n).cwiseAbs().maxCoeff()) break;
+  }
+  return x;
+}
 
 bool take_newton(const PeriodNewtonResult& newton, const PeriodLayout& layout, bool floquet, ShootingResult& out) {
   out.steady.cycles += newton.periods;
@@ -137,18 +134,19 @@ ShootingResult shooting(const friction::FrictionModel& input, double omega, cons
                         const std::optional<FlowState>& start) {
   friction::FrictionModel model = input;
   friction::validate_model(model, "shooting");
-  validate(model, omega, o);
+  validate_shooting(model, omega, o);
   const PiecewiseFlow flow(model, omega, kTwoPi / o.steps_per_period);
   ShootingResult out;
   out.steady.omega = omega;
   out.largest_multiplier = std::numeric_limits<double>::quiet_NaN();
   int& periods = out.steady.cycles;
-  VectorXd x = start ? stack(*start) : warm_start(model, flow, o, periods, out.steady.failure);
-  if (!out.steady.failure.empty()) return out;
   const PeriodLayout layout{.motion = 2 * flow.dofs(), .slider_offset = 2 * flow.dofs()};
   const PeriodMap map = [&](const VectorXd& from, bool jacobian) {
     return one_period(flow, from, o.steps_per_period, o.max_events, jacobian);
   };
+  VectorXd x = start ? stack(*start)
+                     : warm_start(model, map, flow.state_size(), layout.slider_offset, o, periods, out.steady.failure);
+  if (!out.steady.failure.empty()) return out;
   const PeriodNewtonResult newton = newton_on_period(map, x, layout, o.tolerance, o.max_iterations, omega);
   if (!take_newton(newton, layout, o.floquet, out)) return out;
   record(flow, newton.x, o, out);

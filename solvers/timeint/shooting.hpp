@@ -49,6 +49,18 @@ struct ShootingResult {
   FlowState start;                  // the periodic state at theta = 0 (a start for the next frequency)
 };
 
+// Throws std::invalid_argument unless omega > 0 and finite and the options are valid (DOFs of the
+// model, steps_per_period >= 2 (harmonics + 1), tolerance > 0, ...): what both period maps require.
+void validate_shooting(const friction::FrictionModel& model, double omega_rad_s, const ShootingOptions& options);
+
+// The start of a run given none, x of `size` entries: the static state (q first, the sliders from
+// slider_offset, the rest zero), then periods of `map` marched until one changes q and its rate
+// (the first 2 n entries) by at most 1e-3 of their largest, at most options.warmup_periods. A
+// failed period leaves the state before it, with the reason in `failure`.
+Eigen::VectorXd warm_start(const friction::FrictionModel& model, const PeriodMap& map, Eigen::Index size,
+                           Eigen::Index slider_offset, const ShootingOptions& options, int& periods,
+                           std::string& failure);
+
 // A Newton run on a period map into `out` (either map's): the periods, iterations and |R|; the
 // failure, or converged with the transitions and, with `floquet`, the multipliers and the verdict.
 // False when it did not converge.

@@ -55,6 +55,23 @@ std::vector<std::string> peak_kinds(const PreparedHbm& p) {
   return p.ip_oop ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
 }
 
+// The peaks' log-sensitivities (columns <kind>_hz / _amp_m / _amp_per_n _dlog_<parameter>), NaN
+// where a peak has none.
+void add_peak_sensitivity_row(const PreparedHbm& p, const HbmSpec& spec, const HbmLevel& level,
+                              std::vector<double>& row) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> none;
+  for (size_t k = 0; k < peak_kinds(p).size(); ++k) {
+    const bool has = k < level.peaks.size();
+    const std::vector<double>& frequency = has ? level.peaks[k].frequency_hz_dlog : none;
+    const std::vector<double>& amplitude = has ? level.peaks[k].amplitude_dlog : none;
+    const std::pair<const std::vector<double>*, double> columns[] = {
+        {&frequency, 1.0}, {&amplitude, 1.0}, {&amplitude, 1.0 / level.force}};  // _hz, _amp_m, _amp_per_n
+    for (const auto& [d, scale] : columns)
+      for (size_t j = 0; j < spec.sensitivities.size(); ++j) row.push_back(j < d->size() ? (*d)[j] * scale : nan);
+  }
+}
+
 // peaks, energy_balance, contact_states and sweep_cost: one row per level, peak or contact.
 void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
   const PreparedHbm& p = o.prepared;
@@ -101,6 +118,7 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
       for (const HbmPeak& pk : level.peaks)
         row.push_back(pk.stability && pk.stability->ok ? pk.stability->max_real : nan);
     }
+    add_peak_sensitivity_row(p, spec, level, row);
     peak_rows.push_back(row);
     cost_rows.push_back({key, level.force, static_cast<double>(level.path.points.size()),
                          static_cast<double>(level.path.corrector_iterations),
@@ -123,6 +141,9 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
     for (const std::string& k : kinds) peak_columns.push_back(k + "_stable");
     for (const std::string& k : kinds) peak_columns.push_back(k + "_floquet_max_re");
   }
+  for (const std::string& k : kinds)
+    for (const char* q : {"_hz_dlog_", "_amp_m_dlog_", "_amp_per_n_dlog_"})
+      for (const HbmParameter& parameter : spec.sensitivities) peak_columns.push_back(k + q + parameter.label);
   o.tables.emplace("peaks", table_from_rows("peaks", peak_columns, peak_rows));
   o.tables.emplace("energy_balance", table_from_rows("energy_balance",
                                                      {"peak", "fe_n", "frequency_hz", "excitation_j", "viscous_j",
@@ -255,9 +276,9 @@ void add_frf_tables(HbmOutcome& o, const HbmSpec& spec) {
     if (!level.stable.empty()) cols.insert(cols.end(), {"stable", "floquet_max_re"});
     if (!level.harmonic_share.empty()) cols.push_back("harmonic_share");
     if (!level.point_harmonics.empty()) cols.insert(cols.end(), {"harmonics", "harmonic_change"});
-    for (const HbmParameter& parameter : spec.sensitivities)
+    for (size_t j = 0; j < level.amplitude_dlog.size(); ++j)
       for (const char* q : {"_amp_m_dlog_", "_phase_deg_dlog_"})
-        for (const std::string& r : p.response_names) cols.push_back(r + q + parameter.label);
+        for (const std::string& r : p.response_names) cols.push_back(r + q + spec.sensitivities[j].label);
     std::vector<std::vector<double>> rows;
     for (size_t i = 0; i < level.path.points.size(); ++i) {
       std::vector<double> row = {static_cast<double>(i + 1), level.frequency_hz[i]};

@@ -194,7 +194,7 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     c.derivative_step = r.positive("derivative_step");
     if (c.derivative_step > 0.1) r.fail("derivative_step", "must be at most 0.1 (relative, in log space)");
   }
-  c.derivatives = r.choice("derivatives", {"auto", "numeric"}, "auto");
+  c.derivatives = r.choice("derivatives", {"auto", "analytic", "numeric"}, "auto");
   if (r.has("function_tolerance")) {
     c.function_tolerance = r.positive("function_tolerance");
     if (c.function_tolerance >= 0.1) r.fail("function_tolerance", "must be below 0.1 (relative change of the cost)");

@@ -74,6 +74,9 @@ struct HbmPeak {
   // With HbmSpec::stability: the Floquet exponents of the peak's solution (Hill's method).
   std::optional<hbm::HillStability> stability;
   int harmonics = 0;  // H of `solution` (the level's, or with the point scope the largest of its neighbours)
+  // Per path of HbmSpec::sensitivities: p d(frequency_hz)/dp and p d(amplitude)/dp as the peak moves
+  // (forced/hbm_peak_sensitivity.hpp); NaN where the peak is not a smooth maximum. Empty = not asked.
+  std::vector<double> frequency_hz_dlog, amplitude_dlog;
 };
 
 struct HbmLevel {

@@ -162,8 +162,11 @@ struct HbmSpec {
   // needs 1-5 from the cubic guess; a small cap makes the rare failures cheap.
   int max_iterations = 20;
   HbmSweepSpec sweep;
-  // Parameters whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp). Empty = none.
+  // Parameters whose log-sensitivities each frf_<Fe> table carries (p d|z|/dp, p d phase/dp) and
+  // the peaks table (p d f/dp, p d|z|/dp as each peak moves). Empty = none.
   std::vector<HbmParameter> sensitivities;
+  // False: the peaks only (a fit of peaks needs no curve's derivatives, one factorization per point).
+  bool path_sensitivities = true;
   std::optional<NonlinearModesSpec> nonlinear_modes;
   // Floquet exponents by Hill's method (hbm/hill_stability.hpp): at no point, at the peaks, or at
   // every path point (and the peaks). The path costs one eigenproblem of size 2 n (2H + 1) per point.

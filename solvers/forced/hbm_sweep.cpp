@@ -15,6 +15,7 @@
 #include "common/seconds_since.hpp"
 #include "forced/hbm_level.hpp"
 #include "forced/hbm_level_system.hpp"
+#include "forced/hbm_peak_sensitivity.hpp"
 #include "forced/hbm_response.hpp"
 #include "frf/sweep.hpp"
 #include "hbm/sensitivity.hpp"
@@ -48,6 +49,15 @@ using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
+// The sweep's iteration cap keeps its rare failed steps cheap; a polish solve starts up to half
+// a step away and must not fail for want of iterations (a smooth residual converges
+// quadratically, not in the few steps a piecewise-linear one takes once its states are right).
+hbm::HarmonicBalance polish_system(const hbm::HarmonicBalance& system) {
+  hbm::HbmOptions patient = system.options();
+  patient.max_iterations = std::max(patient.max_iterations, hbm::HbmOptions{}.max_iterations);
+  return hbm::HarmonicBalance(system.model(), patient);
+}
+
 // The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
 // by golden-section search between the path's neighbours of the largest point (where the path does
 // not fold there), each trial a Newton solve from the nearest path point.
@@ -67,12 +77,7 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
   }
   const hbm::HarmonicBalance& system = systems.at(peak.harmonics);
   const Index nc = static_cast<Index>(system.contact_dofs().size());
-  // The sweep's iteration cap keeps its rare failed steps cheap; a polish solve starts up to half
-  // a step away and must not fail for want of iterations (a smooth residual converges
-  // quadratically, not in the few steps a piecewise-linear one takes once its states are right).
-  hbm::HbmOptions patient = system.options();
-  patient.max_iterations = std::max(patient.max_iterations, hbm::HbmOptions{}.max_iterations);
-  const hbm::HarmonicBalance polish(system.model(), patient);
+  const hbm::HarmonicBalance polish = polish_system(system);
   auto solve = [&](double omega) {
     return hbm::solve_at_frequency(polish, omega,
                                    with_harmonics(nearest_point(level.path, omega).x, nc, peak.harmonics));
@@ -173,8 +178,8 @@ std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const Hb
 
 // Fills level.amplitude_dlog and phase_dlog_deg from the converged path points: with z the
 // first-harmonic amplitude (Z = a1 - i b1), d|z| = Re(conj z dz) / |z| and d arg z = Im(conj z dz) / |z|^2.
-void add_sensitivities(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, HbmLevel& level) {
-  const std::vector<hbm::ModelDerivative> derivatives = log_derivatives(p, spec, systems.at(level.harmonics).model());
+void add_sensitivities(const PreparedHbm& p, const LevelSystems& systems,
+                       const std::vector<hbm::ModelDerivative>& derivatives, HbmLevel& level) {
   const Index n_points = static_cast<Index>(level.path.points.size()), n_resp = static_cast<Index>(p.responses.size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   level.amplitude_dlog.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
@@ -294,9 +299,18 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
       level.harmonics_needed = std::max(level.harmonics_needed, t.needed(spec.harmonic_tolerance));
     }
   }
-  if (!spec.sensitivities.empty()) add_sensitivities(p, spec, systems, level);
+  std::vector<hbm::ModelDerivative> derivatives;
+  if (!spec.sensitivities.empty()) derivatives = log_derivatives(p, spec, systems.at(level.harmonics).model());
+  if (!derivatives.empty() && spec.path_sensitivities) add_sensitivities(p, systems, derivatives, level);
   if (n_points > 0)
-    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, systems, level, k));
+    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) {
+      level.peaks.push_back(find_peak(p, systems, level, k));
+      HbmPeak& peak = level.peaks.back();
+      const double w = peak.solution.omega;
+      if (!derivatives.empty())
+        add_peak_sensitivities(p, polish_system(systems.at(peak.harmonics)), k, derivatives,
+                               w == path.points.front().omega || w == path.points.back().omega, peak);
+    }
   level.seconds = seconds_since(t0);
   return level;
 }

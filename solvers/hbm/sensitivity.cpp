@@ -229,6 +229,15 @@ ModelDerivative excitation_scale_derivative(const friction::FrictionModel& model
   return d;
 }
 
+ModelDerivative frequency_derivative(const friction::FrictionModel& model, double omega) {
+  if (!model.nodal_diameters.empty())
+    throw std::invalid_argument("harmonic-balance sensitivities: the frequency derivative of a cyclic model");
+  ModelDerivative d;
+  d.damping = model.damping / omega;
+  d.mass = 2.0 * model.mass / omega;
+  return d;
+}
+
 Eigen::MatrixXd solution_sensitivity(const HarmonicBalance& system, const HbmSolution& solution,
                                      const std::vector<ModelDerivative>& derivatives) {
   return compute(system, solution, derivatives, false).dx;

@@ -43,6 +43,10 @@ ModelDerivative law_derivative(const friction::FrictionModel& model, contact::La
 ModelDerivative damping_scale_derivative(const friction::FrictionModel& model);
 // d/ds of the model with the harmonic load F replaced by s F, at s = 1 (static load unchanged).
 ModelDerivative excitation_scale_derivative(const friction::FrictionModel& model);
+// d/d omega at omega: D_h = K + i h omega C - (h omega)^2 M changes as with dC = C / omega and
+// dM = 2 M / omega (the friction laws are rate-independent, the loads fixed). Throws
+// std::invalid_argument for a cyclic model, whose nodal diameters carry their own operators.
+ModelDerivative frequency_derivative(const friction::FrictionModel& model, double omega);
 
 // dx/dp in the contact-DOF harmonic layout of HarmonicBalance (unknowns() rows), one column per
 // entry of `derivatives`. Throws SolverError when the solution is not converged or J is singular

@@ -39,6 +39,7 @@ struct CalibrationOutcome {
   double final_cost = 0.0;
   int residual_evaluations = 0;  // model runs (a central-difference Jacobian costs 2 n of them)
   std::string derivatives;       // how the Jacobian was computed ("analytic ..." or "central differences ...")
+  int jacobian_fallbacks = 0;    // analytic Jacobians taken by central differences (a point had no derivative)
   bool converged = false;
   std::string termination;                   // Ceres's report
   std::vector<FitPoint> before;              // fitted points at the case's start values

@@ -53,7 +53,10 @@ struct CalibrationSpec {
   double derivative_step = 1e-4;
   // "auto": analytic derivatives when the model gives them (every fitted point from frf data of an
   // hbm analysis, every parameter a path hbm/sensitivity.hpp differentiates), else central
-  // differences; "numeric": always central differences.
+  // differences; "analytic": the same, and peaks (data and checks of the peaks table) by how each
+  // peak moves (forced/hbm_peak_sensitivity.hpp); "numeric": always central differences. Peaks are
+  // not in "auto": on Table XI their exact local slopes, across the jumps of a rugged cost, led
+  // the fit into a worse minimum than the 1 % differences (bench/README.md).
   std::string derivatives = "auto";
   // Multi-start: the case's values, then starts - 1 points of a Latin hypercube in log space
   // within the bounds (seeded, so a run repeats); the lowest final cost wins.

@@ -47,7 +47,20 @@ double sigma_of(const MeasuredData& m, const std::string& column, Index row, dou
   return m.has(column + "_sigma") ? m.column(column + "_sigma")[row] : fallback;
 }
 
-std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t) {
+// factor d(column)/d log p at one row, one entry per parameter; empty unless every column exists.
+std::vector<double> row_dlog(const ResultTable& t, Index row, const std::string& column,
+                             const std::vector<std::string>& parameters, double factor) {
+  std::vector<double> out;
+  for (const std::string& p : parameters) {
+    const auto c = t.column_index(column + "_dlog_" + p);
+    if (!c) return {};
+    out.push_back(t.values(row, *c) * factor);
+  }
+  return out;
+}
+
+std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t,
+                                  const std::vector<std::string>& parameters) {
   const MeasuredData& m = d.data;
   const Eigen::VectorXd force = result_column(d, t, "force");
   std::map<std::string, Eigen::VectorXd> computed;  // the fitted columns, read once
@@ -68,8 +81,8 @@ std::vector<FitPoint> peak_points(const CalibrationData& d, const ResultTable& t
       const double measured = m.column(q)[i];
       const double sigma =
           sigma_of(m, q, i, (is_frequency ? d.frequency_uncertainty : d.amplitude_uncertainty) * measured);
-      points.push_back(
-          {d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, computed.at(q)[row], sigma, false, {}});
+      points.push_back({d.name, fmt::format("{} at {:g} N", q, f), q, f, measured, computed.at(q)[row], sigma, false,
+                        row_dlog(t, row, d.columns.at(q), parameters, column_to_si(d.columns.at(q)) / sigma)});
     }
   }
   return points;
@@ -219,18 +232,19 @@ std::vector<FitPoint> hysteresis_points(const CalibrationData& d, const ResultTa
 
 double FitPoint::misfit() const { return angle ? wrap_angle(computed - measured) : computed - measured; }
 
-std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal) {
+std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal,
+                                   const ResultTable* table, const std::vector<std::string>& parameters) {
   std::vector<FitPoint> points;
-  for (const CheckEntry& e : entries)
-    points.push_back({e.group,
-                      e.name.substr(std::min(e.name.size(), e.group.size() + 2)),
-                      "check",
-                      static_cast<double>(e.key),
-                      e.reference,
-                      e.computed,
-                      uncertainty_of(cal, e.group) * std::abs(e.reference),
-                      false,
-                      {}});
+  for (const CheckEntry& e : entries) {
+    const double sigma = uncertainty_of(cal, e.group) * std::abs(e.reference);
+    std::vector<double> gradient;
+    if (table && !parameters.empty())
+      for (Index r = 0; r < table->values.rows(); ++r)
+        if (std::lround(table->values(r, 0)) == e.computed_key)
+          gradient = row_dlog(*table, r, e.column, parameters, 1.0 / sigma);
+    points.push_back({e.group, e.name.substr(std::min(e.name.size(), e.group.size() + 2)), "check",
+                      static_cast<double>(e.key), e.reference, e.computed, sigma, false, std::move(gradient)});
+  }
   return points;
 }
 
@@ -239,7 +253,7 @@ std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& 
   const ResultTable& t = table_of(d, tables);
   switch (d.data.kind) {
     case DataKind::peaks:
-      return peak_points(d, t);
+      return peak_points(d, t, parameters);
     case DataKind::frf:
       return frf_points(d, t, parameters);
     case DataKind::hysteresis:

@@ -28,8 +28,11 @@ struct FitPoint {
   double residual() const { return misfit() / sigma; }
 };
 
-// Entries of a fitted check: r = (computed / reference - 1) / sigma_rel.
-std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal);
+// Entries of a fitted check: r = (computed / reference - 1) / sigma_rel. With `table` (the check's
+// result table) and `parameters` (case paths), an entry gets a gradient when its computed row has
+// the column "<compared column>_dlog_<path>" for every one of them.
+std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal,
+                                   const ResultTable* table = nullptr, const std::vector<std::string>& parameters = {});
 
 // The points of one measured curve against the case's result tables:
 //   peaks       per data row, the result row whose force column equals the row's force (to 1e-9
@@ -41,8 +44,8 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
 //               the measured displacement; clamped to the branch's ends outside its range.
 // Throws InputError (naming the case's data block and the data row) when a table or column is
 // missing or the data lie outside the computed curve.
-// `parameters`: case paths; frf points get a gradient when the table has the column
-// "<result column>_dlog_<path>" for every one of them (interpolated like the value).
+// `parameters`: case paths; frf and peaks points get a gradient when the table has the column
+// "<result column>_dlog_<path>" for every one of them (frf: interpolated like the value).
 std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables,
                                   const std::vector<std::string>& parameters = {});
 

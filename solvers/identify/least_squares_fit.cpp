@@ -43,11 +43,18 @@ struct NumericResidual {
 };
 
 // The same residuals with the Jacobian from the model's own sensitivities: one model run per
-// evaluation instead of 2 n + 1 (the parameters are log values: J_kj = p_j dr_k/dp_j).
+// evaluation instead of 2 n + 1 (the parameters are log values: J_kj = p_j dr_k/dp_j). Where a
+// point has no derivative (a peak on a corner of its curve, a singular Jacobian), that evaluation's
+// Jacobian is taken by central differences instead, and counted.
 class AnalyticResidual : public ceres::CostFunction {
  public:
-  AnalyticResidual(const FitEvaluator* evaluate, size_t parameters, int* evaluations, int residuals)
-      : evaluate_(evaluate), evaluations_(evaluations) {
+  AnalyticResidual(const FitEvaluator* evaluate, size_t parameters, int* evaluations, int residuals,
+                   double derivative_step, size_t workers, int* fallbacks)
+      : evaluate_(evaluate),
+        evaluations_(evaluations),
+        fallbacks_(fallbacks),
+        differences_(NumericResidual{evaluate, parameters, evaluations}, static_cast<int>(parameters), residuals,
+                     derivative_step, workers) {
     set_num_residuals(residuals);
     mutable_parameter_block_sizes()->push_back(static_cast<int>(parameters));
   }
@@ -56,22 +63,24 @@ class AnalyticResidual : public ceres::CostFunction {
     const size_t n = static_cast<size_t>(parameter_block_sizes()[0]);
     std::vector<double> values(n);
     for (size_t i = 0; i < n; ++i) values[i] = std::exp(log_values[0][i]);
+    const bool jacobian = jacobians && jacobians[0];
     try {
-      const auto points = (*evaluate_)(values, true);
+      const auto points = (*evaluate_)(values, jacobian);
       ++*evaluations_;
       if (points.size() != static_cast<size_t>(num_residuals())) return false;
+      bool differentiable = true;
       for (size_t k = 0; k < points.size(); ++k) {
         const FitPoint& p = points[k];
         if (!std::isfinite(p.computed)) return false;  // as NumericResidual: Ceres shrinks the step
         residuals[k] = p.residual();
-        if (!jacobians || !jacobians[0]) continue;
-        if (p.gradient.size() != n) return false;
-        for (size_t j = 0; j < n; ++j) {
-          if (!std::isfinite(p.gradient[j])) return false;  // next to a grid point that has no derivative
-          jacobians[0][k * n + j] = p.gradient[j];
-        }
+        if (!jacobian) continue;
+        differentiable = differentiable && p.gradient.size() == n &&
+                         std::all_of(p.gradient.begin(), p.gradient.end(), [](double g) { return std::isfinite(g); });
+        for (size_t j = 0; j < n && differentiable; ++j) jacobians[0][k * n + j] = p.gradient[j];
       }
-      return true;
+      if (differentiable) return true;
+      ++*fallbacks_;
+      return differences_.Evaluate(log_values, residuals, jacobians);
     } catch (const std::exception&) {
       return false;
     }
@@ -80,6 +89,8 @@ class AnalyticResidual : public ceres::CostFunction {
  private:
   const FitEvaluator* evaluate_;
   int* evaluations_;
+  int* fallbacks_;
+  CentralDifferences differences_;
 };
 
 class IterationTrace : public ceres::IterationCallback {
@@ -262,10 +273,10 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   const size_t budget = worker_count(std::numeric_limits<size_t>::max(), cal.threads);
   const size_t column_workers = std::max<size_t>(1, budget / std::max<size_t>(1, at_once));
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
-  const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations) {
+  const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations, int* fallbacks) {
     ceres::CostFunction* cost = nullptr;
     if (analytic) {
-      cost = new AnalyticResidual(&evaluate, n, evaluations, residuals);
+      cost = new AnalyticResidual(&evaluate, n, evaluations, residuals, cal.derivative_step, column_workers, fallbacks);
     } else {
       // derivative_step (default 1e-4): above the eigensolver's 1e-10 noise, below the model's curvature.
       cost = new CentralDifferences(NumericResidual{&evaluate, n, evaluations}, static_cast<int>(n), residuals,
@@ -293,7 +304,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     std::vector<double> x;
     std::string message, brief;
     std::vector<std::pair<int, double>> history;
-    int evaluations = 0;
+    int evaluations = 0, fallbacks = 0;
   };
   std::vector<StartRun> runs(starts.size());
   std::mutex progress_lock;
@@ -308,7 +319,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     run.x.resize(n);
     for (size_t i = 0; i < n; ++i) run.x[i] = std::log(starts[s][i]);
     ceres::Problem problem;
-    build(run.x, problem, &run.evaluations);
+    build(run.x, problem, &run.evaluations, &run.fallbacks);
     IterationTrace trace(locked_progress, run.history, static_cast<int>(s + 1), static_cast<int>(starts.size()),
                          cal.max_iterations);
     ceres::Solver::Options o = options;
@@ -331,6 +342,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   for (size_t s = 0; s < starts.size(); ++s) {
     const CalibrationStart& r = runs[s].result;
     out.residual_evaluations += runs[s].evaluations;
+    out.jacobian_fallbacks += runs[s].fallbacks;
     out.starts.push_back(r);
     if (s == 0 ||
         (r.converged && (!out.starts[out.best].converged || r.final_cost < out.starts[out.best].final_cost)) ||
@@ -359,7 +371,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
   if (starts.size() > 1) warn_other_minima(out, n);
   ceres::Problem problem;
-  build(x, problem, &out.residual_evaluations);  // at the chosen optimum, for the covariance
+  build(x, problem, &out.residual_evaluations, &out.jacobian_fallbacks);  // at the chosen optimum, for the covariance
   out.values.resize(n);
   for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
   add_covariance(problem, x, cal, out);

@@ -53,7 +53,7 @@ std::vector<std::string> parameter_paths(const CalibrationSpec& cal) {
 }
 
 // The fitted points of the case with the given parameter values, and the tables of its curves;
-// with `gradients`, frf points carry d r / d log p from the tables' sensitivity columns.
+// with `gradients`, every point carries d r / d log p from the tables' sensitivity columns.
 std::vector<FitPoint> fitted_points(const CalibratedCase& base, const CalibrationSpec& cal,
                                     const std::vector<double>& values, const WorkLimits& limits,
                                     ResultTables* curves = nullptr, bool gradients = false) {
@@ -62,7 +62,8 @@ std::vector<FitPoint> fitted_points(const CalibratedCase& base, const Calibratio
   std::vector<FitPoint> points;
   for (const CheckSpec& c : spec.checks) {
     if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
-    const auto e = check_points(evaluate_check(c, results.tables), cal);
+    const auto e = check_points(evaluate_check(c, results.tables), cal, &results.tables.at(c.result),
+                                gradients ? parameter_paths(cal) : std::vector<std::string>{});
     points.insert(points.end(), e.begin(), e.end());
   }
   for (const CalibrationData& d : cal.data) {
@@ -74,16 +75,28 @@ std::vector<FitPoint> fitted_points(const CalibratedCase& base, const Calibratio
 }
 
 // The case asking its hbm analysis for the sensitivities to every parameter, when analytic
-// derivatives can serve the whole fit: derivatives = "auto", only frf data, and the analysis
-// differentiates every parameter. Otherwise the reason why not.
+// derivatives can serve the whole fit: frf data (derivatives = "auto" or "analytic"), or also peaks
+// data and checks ("analytic"; a check on a table without sensitivity columns is found at the
+// start), and the analysis differentiates every parameter. Otherwise the reason why not.
 std::variant<CalibratedCase, std::string> analytic_case(const CalibratedCase& base, const CalibrationSpec& cal) {
-  if (cal.derivatives != "auto") return std::string("derivatives = \"numeric\"");
-  if (!cal.fit_checks.empty()) return std::string("fitted checks have no derivatives");
-  for (const CalibrationData& d : cal.data)
-    if (d.data.kind != DataKind::frf) return fmt::format("data '{}' is not frf data", d.name);
+  if (cal.derivatives == "numeric") return std::string("derivatives = \"numeric\"");
+  const bool peaks = cal.derivatives == "analytic";
+  if (!peaks && !cal.fit_checks.empty())
+    return std::string("fitted checks take central differences unless derivatives = \"analytic\"");
+  bool curves = false;
+  for (const CalibrationData& d : cal.data) {
+    if (d.data.kind == DataKind::hysteresis) return fmt::format("data '{}' is a hysteresis loop", d.name);
+    if (!peaks && d.data.kind != DataKind::frf)
+      return fmt::format(
+          "data '{}' is not frf data (peaks take central differences unless derivatives = "
+          "\"analytic\")",
+          d.name);
+    curves = curves || d.data.kind == DataKind::frf;
+  }
   CalibratedCase out = base;
   HbmSpec* hbm = std::get_if<HbmSpec>(&out.spec.analysis);
   if (!hbm) return std::string("the analysis is not hbm");
+  hbm->path_sensitivities = curves;  // peaks alone need no curve's derivatives
   for (const CaseParameter& p : base.parameters) {
     const std::optional<HbmParameter> h = hbm_parameter(p);
     if (!h)
@@ -160,11 +173,12 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
       throw InputError(
           fmt::format("{}: fitted entry '{}' has a zero reference or uncertainty", cal->at.where(), p.label));
   std::string numeric_reason = sensitivity_base ? "" : std::get<std::string>(analytic_base);
+  // A point whose table has no sensitivity columns makes the whole fit numeric; one without a
+  // finite value at some parameters costs that evaluation central differences (least_squares_fit).
   if (sensitivity_base)
     for (const FitPoint& p : before)
-      if (p.gradient.size() != cal->parameters.size() ||
-          !std::all_of(p.gradient.begin(), p.gradient.end(), [](double g) { return std::isfinite(g); }))
-        numeric_reason = fmt::format("no finite sensitivities for '{}' of '{}' at the start", p.label, p.set);
+      if (p.gradient.size() != cal->parameters.size())
+        numeric_reason = fmt::format("no sensitivities for '{}' of '{}'", p.label, p.set);
   const bool analytic = numeric_reason.empty();
   const CalibratedCase& model = analytic ? *sensitivity_base : base;
   const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
@@ -173,7 +187,12 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   CalibrationOutcome out = fit_parameters(*cal, evaluate, analytic, static_cast<int>(before.size()), progress);
   out.before = before;
   out.curves_before = std::move(curves_before);
-  out.derivatives = analytic ? "analytic (implicit function theorem, hbm/sensitivity.hpp)"
+  out.derivatives = analytic ? fmt::format("analytic (implicit function theorem, hbm/sensitivity.hpp){}",
+                                           out.jacobian_fallbacks == 0
+                                               ? ""
+                                               : fmt::format("; {} Jacobians by central differences, relative step "
+                                                             "{:g}, where a fitted point had no derivative",
+                                                             out.jacobian_fallbacks, cal->derivative_step))
                              : fmt::format("central differences, relative step {:g} ({})", cal->derivative_step,
                                            cal->derivatives == "numeric" ? "as asked" : numeric_reason);
   out.after = fitted_points(base, *cal, out.values, limits, &out.curves_after);

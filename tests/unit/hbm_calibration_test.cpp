@@ -27,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string oscillator_case(double kt, double mu) {
+std::string oscillator_case(double kt, double mu, const std::string& derivatives = "") {
   test::OscillatorCase c;
   c.kt = std::to_string(kt);
   c.mu = std::to_string(mu);
@@ -61,7 +61,7 @@ starts = 3
 max_iterations = 30
 function_tolerance = 1e-4
 derivative_step = 1e-2
-)";
+)" + derivatives;
   return test::oscillator_case_text(c);
 }
 
@@ -70,24 +70,29 @@ class HbmCalibration : public test::TempFolderTest {};
 // Two noise draws; each must bring both parameters back within two standard deviations.
 class HbmCalibrationSeeds : public HbmCalibration, public ::testing::WithParamInterface<unsigned> {};
 
-TEST_P(HbmCalibrationSeeds, FrictionParametersComeBackFromNoisyPeaksWithAnOutlier) {
-  const double kt_true = 1.5e6, mu_true = 0.35;
-  std::ofstream(dir_ / "peaks.csv") << "level,peak_hz,peak_amp_per_n\n1,1,1\n2,1,1\n3,1,1\n4,1,1\n5,1,1\n6,1,1\n";
-  std::ofstream(dir_ / "truth.toml") << oscillator_case(kt_true, mu_true);
-  const CaseSpec truth = parse_case_file(dir_ / "truth.toml");
+constexpr double kt_true = 1.5e6, mu_true = 0.35;
+
+// peaks.csv in `dir`: the truth's peaks with noise of seed `seed` and an outlier at level 4.
+void write_noisy_peaks(const fs::path& dir, unsigned seed) {
+  std::ofstream(dir / "peaks.csv") << "level,peak_hz,peak_amp_per_n\n1,1,1\n2,1,1\n3,1,1\n4,1,1\n5,1,1\n6,1,1\n";
+  std::ofstream(dir / "truth.toml") << oscillator_case(kt_true, mu_true);
+  const CaseSpec truth = parse_case_file(dir / "truth.toml");
   const AnalysisResults r = run_analysis(truth.analysis, build_model(truth.model));
   const ResultTable& peaks = r.tables.at("peaks");
   const int f = *peaks.column_index("peak_hz"), a = *peaks.column_index("peak_amp_per_n");
-  std::mt19937 rng(GetParam());
+  std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, 1.0);
-  std::ofstream data(dir_ / "peaks.csv");
+  std::ofstream data(dir / "peaks.csv");
   data.precision(12);
   data << "level,peak_hz,peak_amp_per_n\n";
   for (Eigen::Index i = 0; i < peaks.values.rows(); ++i) {
     const double amp = peaks.values(i, a) * (1 + 0.02 * noise(rng)) * (i == 3 ? 1.3 : 1.0);  // level 4: an outlier
     data << i + 1 << ',' << peaks.values(i, f) * (1 + 0.001 * noise(rng)) << ',' << amp << '\n';
   }
-  data.close();
+}
+
+TEST_P(HbmCalibrationSeeds, FrictionParametersComeBackFromNoisyPeaksWithAnOutlier) {
+  write_noisy_peaks(dir_, GetParam());
   std::ofstream(dir_ / "case.toml") << oscillator_case(5.0e5, 0.8);  // wrong by 3x and 2.3x
   const CalibrationOutcome o = calibrate_case(dir_ / "case.toml");
   for (const CalibrationStart& s : o.starts)
@@ -102,6 +107,33 @@ TEST_P(HbmCalibrationSeeds, FrictionParametersComeBackFromNoisyPeaksWithAnOutlie
     ASSERT_TRUE(std::isfinite(o.std_devs[i]));
     EXPECT_LT(std::abs(o.values[i] - truth_values[i]), 2 * o.std_devs[i]);
   }
+}
+
+// The same fit (one start) with the peaks' own derivatives (forced/hbm_peak_sensitivity.hpp) as its
+// Jacobian: both parameters back within two standard deviations, with fewer model runs than the
+// 2 n + 1 of each central-difference Jacobian (measured: 16 against 108, the same values to 2e-5;
+// the two stuck levels peak at the band's end, where the frequency stays and the amplitude moves
+// as at a fixed frequency).
+TEST_F(HbmCalibration, PeakDerivativesServeAsTheJacobian) {
+  write_noisy_peaks(dir_, 7);
+  const auto one_start = [](std::string text) { return text.replace(text.find("starts = 3"), 10, "starts = 1"); };
+  std::ofstream(dir_ / "numeric.toml") << one_start(oscillator_case(5.0e5, 0.8));
+  std::ofstream(dir_ / "analytic.toml") << one_start(oscillator_case(5.0e5, 0.8, "derivatives = \"analytic\"\n"));
+  const CalibrationOutcome numeric = calibrate_case(dir_ / "numeric.toml");
+  const CalibrationOutcome o = calibrate_case(dir_ / "analytic.toml");
+  std::printf("  %s\n  model runs: analytic %d (%d Jacobians by differences), central differences %d\n",
+              o.derivatives.c_str(), o.residual_evaluations, o.jacobian_fallbacks, numeric.residual_evaluations);
+  EXPECT_EQ(o.derivatives.rfind("analytic", 0), 0u) << o.derivatives;
+  ASSERT_TRUE(o.converged) << o.termination;
+  const double truth_values[] = {kt_true, mu_true};
+  for (size_t i = 0; i < 2; ++i) {
+    std::printf("  %s: analytic %.6g +- %.3g, differences %.6g +- %.3g, truth %.6g\n",
+                o.spec.parameters[i].path.c_str(), o.values[i], o.std_devs[i], numeric.values[i], numeric.std_devs[i],
+                truth_values[i]);
+    ASSERT_TRUE(std::isfinite(o.std_devs[i]));
+    EXPECT_LT(std::abs(o.values[i] - truth_values[i]), 2 * o.std_devs[i]);
+  }
+  EXPECT_LT(o.residual_evaluations, numeric.residual_evaluations);
 }
 
 // A cross-check case that finds no solution with the identified values (a stepped sine cut at 3

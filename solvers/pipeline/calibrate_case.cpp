@@ -62,7 +62,8 @@ std::vector<FitPoint> fitted_points(const CalibratedCase& base, const Calibratio
   std::vector<FitPoint> points;
   for (const CheckSpec& c : spec.checks) {
     if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
-    const auto e = check_points(evaluate_check(c, results.tables), cal, &results.tables.at(c.result),
+    const std::vector<CheckEntry> entries = evaluate_check(c, results.tables);  // names a missing table first
+    const auto e = check_points(entries, cal, &results.tables.at(c.result),
                                 gradients ? parameter_paths(cal) : std::vector<std::string>{});
     points.insert(points.end(), e.begin(), e.end());
   }

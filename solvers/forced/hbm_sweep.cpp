@@ -49,20 +49,13 @@ using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-// The sweep's iteration cap keeps its rare failed steps cheap; a polish solve starts up to half
-// a step away and must not fail for want of iterations (a smooth residual converges
-// quadratically, not in the few steps a piecewise-linear one takes once its states are right).
-hbm::HarmonicBalance polish_system(const hbm::HarmonicBalance& system) {
-  hbm::HbmOptions patient = system.options();
-  patient.max_iterations = std::max(patient.max_iterations, hbm::HbmOptions{}.max_iterations);
-  return hbm::HarmonicBalance(system.model(), patient);
-}
-
 // The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
 // by golden-section search between the path's neighbours of the largest point (where the path does
 // not fold there), each trial a Newton solve from the nearest path point.
 // With the point scope the peak is solved at the largest H of the maximum and its neighbours.
-HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLevel& level, int kind) {
+// With `derivatives`, how the peak moves with them (forced/hbm_peak_sensitivity.hpp).
+HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLevel& level, int kind,
+                  const std::vector<hbm::ModelDerivative>& derivatives) {
   const auto& pts = level.path.points;
   const Eigen::VectorXd values = p.ip_oop ? level.components.col(kind) : level.amplitude.col(0);
   Index k = 0;
@@ -77,7 +70,12 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
   }
   const hbm::HarmonicBalance& system = systems.at(peak.harmonics);
   const Index nc = static_cast<Index>(system.contact_dofs().size());
-  const hbm::HarmonicBalance polish = polish_system(system);
+  // The sweep's iteration cap keeps its rare failed steps cheap; a polish solve starts up to half
+  // a step away and must not fail for want of iterations (a smooth residual converges
+  // quadratically, not in the few steps a piecewise-linear one takes once its states are right).
+  hbm::HbmOptions patient = system.options();
+  patient.max_iterations = std::max(patient.max_iterations, hbm::HbmOptions{}.max_iterations);
+  const hbm::HarmonicBalance polish(system.model(), patient);
   auto solve = [&](double omega) {
     return hbm::solve_at_frequency(polish, omega,
                                    with_harmonics(nearest_point(level.path, omega).x, nc, peak.harmonics));
@@ -132,6 +130,7 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
     peak.sampling_error = (twice.contact_forces(best.x).force - g).norm() / std::max(system.force_scale(), 1e-300);
     peak.truncation = systems.probe(peak.harmonics).at(best.x, best.omega, p.responses);
   }
+  if (!derivatives.empty()) add_peak_sensitivities(p, polish, kind, derivatives, !interior, peak);
   return peak;
 }
 
@@ -303,14 +302,7 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   if (!spec.sensitivities.empty()) derivatives = log_derivatives(p, spec, systems.at(level.harmonics).model());
   if (!derivatives.empty() && spec.path_sensitivities) add_sensitivities(p, systems, derivatives, level);
   if (n_points > 0)
-    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) {
-      level.peaks.push_back(find_peak(p, systems, level, k));
-      HbmPeak& peak = level.peaks.back();
-      const double w = peak.solution.omega;
-      if (!derivatives.empty())
-        add_peak_sensitivities(p, polish_system(systems.at(peak.harmonics)), k, derivatives,
-                               w == path.points.front().omega || w == path.points.back().omega, peak);
-    }
+    for (int k = 0; k < (p.ip_oop ? 2 : 1); ++k) level.peaks.push_back(find_peak(p, systems, level, k, derivatives));
   level.seconds = seconds_since(t0);
   return level;
 }

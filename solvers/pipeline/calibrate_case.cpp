@@ -182,8 +182,10 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
         numeric_reason = fmt::format("no sensitivities for '{}' of '{}'", p.label, p.set);
   const bool analytic = numeric_reason.empty();
   const CalibratedCase& model = analytic ? *sensitivity_base : base;
+  // A run whose Jacobian is not asked for (a trial step, a central difference) runs the case
+  // without the sensitivities the analytic Jacobian added: the same values, none of their cost.
   const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
-    return fitted_points(model, *cal, values, limits, nullptr, gradients);
+    return fitted_points(gradients ? model : base, *cal, values, limits, nullptr, gradients);
   };
   CalibrationOutcome out = fit_parameters(*cal, evaluate, analytic, static_cast<int>(before.size()), progress);
   out.before = before;

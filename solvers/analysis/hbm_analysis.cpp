@@ -12,6 +12,7 @@
 #include <numbers>
 #include <optional>
 
+#include "analysis/stepped_sine_tables.hpp"
 #include "common/errors.hpp"
 #include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
@@ -474,6 +475,15 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   o.nonlinear_modes = std::move(modes.branches);
   o.nonlinear_mode_seconds = modes.seconds;
   o.tables.merge(modes.tables);
+  o.stepped_sines.resize(spec.stepped_sines.size());
+  for_each_index(spec.stepped_sines.size(), worker_count(spec.stepped_sines.size(), spec.threads), [&](size_t i) {
+    o.stepped_sines[i] = run_stepped_sine(o.prepared, spec, spec.stepped_sines[i], progress);
+  });
+  for (const HbmSteppedSine& s : o.stepped_sines)
+    if (s.frequency_hz.empty())
+      throw SolverError(fmt::format("stepped sine '{}' converged at no point; at {:.6g} Hz: {}", s.name,
+                                    s.failed_hz.front(), s.failures.front()));
+  add_stepped_sine_tables(o.prepared, spec, o.stepped_sines, o.tables);
   return o;
 }
 

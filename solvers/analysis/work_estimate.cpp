@@ -55,8 +55,7 @@ WorkEstimate hbm_work(const HbmSpec& s) {
   // The samples: fixed, or doubled from the start up to max_time_samples (aft_tolerance), whose
   // sweeps together cost less than twice the last one.
   const double first_samples = s.time_samples > 0 ? s.time_samples : std::max(64.0, 16.0 * m);
-  const double samples =
-      s.aft_tolerance > 0.0 ? std::max<double>(s.max_time_samples, first_samples) : first_samples;
+  const double samples = s.aft_tolerance > 0.0 ? std::max<double>(s.max_time_samples, first_samples) : first_samples;
   double sample_sum = 0.0, sample_sweeps = 0.0;
   for (double n = first_samples;; n = std::min(2.0 * n, samples)) {
     sample_sum += n;
@@ -66,22 +65,25 @@ WorkEstimate hbm_work(const HbmSpec& s) {
   const bool grid = s.sweep.method == HbmSweepSpec::Method::grid;
   const double frequencies =
       grid ? grid_points(s.sweep.f_min, s.sweep.f_max, s.sweep.step_hz) : 10.0 / std::max(s.sweep.max_step, 1e-6);
-  const double levels = static_cast<double>(std::max<size_t>(s.force_levels.size(), 1));
+  const double levels = static_cast<double>(s.force_levels.size());
+  double stepped = 0.0;  // each point of a stepped sine is a solve like a grid frequency's
+  for (const SteppedSineSpec& sine : s.stepped_sines) stepped += static_cast<double>(sine.frequency_hz.size());
+  const double points = std::max(frequencies * levels + stepped, 1.0);
   // The point scope solves each frequency at a pair of H, raised until they agree.
   const double h_solves = s.harmonic_scope == HbmSpec::HarmonicScope::point ? h_sweeps + 1.0 : h_sweeps;
   const double solves = h_solves * sample_sweeps;
-  const double per_point = h_solves * (4.0 * elements * sample_sum * m * m +
-                                       sample_sweeps * std::pow(unknowns * m, 3.0) / 3.0 +
-                                       (s.stability == HbmSpec::Stability::path ? 10.0 * std::pow(2.0 * unknowns * m, 3.0)
-                                                                                : 0.0));
+  const double per_point =
+      h_solves * (4.0 * elements * sample_sum * m * m + sample_sweeps * std::pow(unknowns * m, 3.0) / 3.0 +
+                  (s.stability == HbmSpec::Stability::path ? 10.0 * std::pow(2.0 * unknowns * m, 3.0) : 0.0));
   const double per_solve_iterations = 5.0;
   WorkEstimate e;
-  e.operations = frequencies * levels * per_solve_iterations * per_point;
+  e.operations = points * per_solve_iterations * per_point;
   // The DFT matrices, and per point and level the solution and its output rows (about 40 numbers).
-  e.bytes = 2.0 * samples * m * 8.0 * elements + frequencies * levels * (unknowns * m + 40.0) * 8.0 * 3.0;
+  e.bytes = 2.0 * samples * m * 8.0 * elements + points * (unknowns * m + 40.0) * 8.0 * 3.0;
   e.basis = fmt::format(
-      "{:.0f} frequencies x {:.0f} levels x {:.0f} sweeps, H up to {}, {:.0f} AFT samples, {:.0f} condensed unknowns",
-      frequencies, levels, solves, top_h, samples, unknowns);
+      "{:.0f} frequencies x {:.0f} levels{} x {:.0f} sweeps, H up to {}, {:.0f} AFT samples, {:.0f} condensed unknowns",
+      frequencies, levels, stepped > 0.0 ? fmt::format(" + {:.0f} stepped-sine points", stepped) : "", solves, top_h,
+      samples, unknowns);
   e.at = s.at;
   e.key = grid ? "analysis.step_hz, harmonics, time_samples" : "analysis.max_step, harmonics, time_samples";
   return e;

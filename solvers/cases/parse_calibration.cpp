@@ -46,7 +46,7 @@ KindColumns kind_columns(DataKind kind) {
     case DataKind::peaks:
       return {{"force"}, {"frequency", "amplitude"}};
     case DataKind::frf:
-      return {{"frequency", "amplitude"}, {"phase"}};
+      return {{"frequency", "amplitude"}, {"phase", "force"}};
     case DataKind::hysteresis:
       return {{"relative_displacement", "tangential_force"}, {}};
   }
@@ -112,6 +112,13 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   }
   for (const std::string& c : allowed.required)
     if (!d.columns.count(c)) r.fail("columns", fmt::format("{} data need a result column for '{}'", kind, c));
+  // Each point was measured at its own force: the fit must compare it with a point solved at that force.
+  if (k == DataKind::frf && d.data.has("force") && !d.columns.count("force"))
+    r.fail("columns",
+           fmt::format("{} gives the force of each point: map 'force' to the force column of the stepped sine that "
+                       "reads this file (e.g. force = \"force_n\" with table = \"frf_<name>\"), so each point is "
+                       "compared with a solve at its own force",
+                       file.string()));
   if (k == DataKind::peaks && !d.columns.count("frequency") && !d.columns.count("amplitude"))
     r.fail("columns", "peaks data need 'frequency', 'amplitude' or both");
   if (r.has("amplitude_uncertainty")) d.amplitude_uncertainty = r.positive("amplitude_uncertainty");

@@ -12,6 +12,7 @@
 #include "cases/case_parameter.hpp"
 #include "cases/parse_frf.hpp"
 #include "cases/parse_friction_law.hpp"
+#include "cases/parse_stepped_sine.hpp"
 
 namespace bb {
 namespace {
@@ -318,8 +319,15 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   }
   s.forces = parse_forces(r);
   s.responses = parse_responses(r);
-  s.force_levels = r.number_array("force_levels");
-  if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level [N]");
+  if (r.has("stepped_sine") && !contacts_required)
+    r.fail("stepped_sine",
+           "only a harmonic balance analysis solves stepped sines point by point (a time analysis "
+           "has stepped_sine = true)");
+  // A case of stepped sines alone sweeps no band.
+  if (r.has("force_levels") || !r.has("stepped_sine")) {
+    s.force_levels = r.number_array("force_levels");
+    if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level [N]");
+  }
   std::set<double> unique;
   std::map<std::string, double> tables;  // each level writes its own table: no two may share a name
   for (double f : s.force_levels) {
@@ -420,6 +428,9 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     s.nonlinear_modes = parse_nonlinear_modes(TomlReader(*t, r.path() + ".nonlinear_modes", r.file()), s);
   }
   parse_cyclic(r, s, contacts_required);
+  s.stepped_sines = parse_stepped_sines(r, folder, s.force_levels);
+  if (!s.stepped_sines.empty() && (s.cyclic || s.gap_damper))
+    r.fail("stepped_sine", "a stepped sine runs on a lumped or reduced model without [analysis.cyclic]");
   return s;
 }
 

@@ -12,6 +12,7 @@
 #include "forced/hbm_level.hpp"
 #include "hbm/harmonic_balance.hpp"
 #include "hbm/harmonic_truncation.hpp"
+#include "hbm/sensitivity.hpp"
 
 namespace bb {
 
@@ -103,6 +104,18 @@ void sweep_grid_windows(const PreparedHbm& p, const HbmSpec& spec, const LevelSy
 // more AFT samples, and no first point is relayed to the next level.
 HbmLevel sweep_hbm_level_windows(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
                                  const HbmProgress& progress, const PeakWindows& windows);
+
+// d(model)/d(log p) for each of spec.sensitivities on the level's model m.
+std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec,
+                                                  const friction::FrictionModel& m);
+
+// p d|z|/dp [m] and p d arg z/dp [deg] of each response's first harmonic z at the converged point
+// (x, omega) of `system`: rows the derivatives, columns the responses; NaN where not defined.
+struct ResponseDlog {
+  Eigen::MatrixXd amplitude, phase_deg;
+};
+ResponseDlog response_dlog(const PreparedHbm& p, const hbm::HarmonicBalance& system, const Eigen::VectorXd& x,
+                           double omega, const std::vector<hbm::ModelDerivative>& derivatives);
 
 // Every peak of the level trusted and its solve converged (and there is at least one).
 bool peaks_trusted(const HbmLevel& level);

@@ -116,6 +116,18 @@ struct GapDamperSpec {
   SourceLocation at;
 };
 
+// A stepped sine as a rig runs it: the frequencies in the order they were stepped (up or down),
+// each at its own force amplitude (a force-controlled rig holds its force only roughly: it drifts
+// along the curve). Each point starts from the one before, as the structure does on the rig, so an
+// up and a down sweep may settle on different branches where the response folds.
+struct SteppedSineSpec {
+  std::string name;                  // writes table frf_<name>
+  std::vector<double> frequency_hz;  // strictly increasing or strictly decreasing
+  std::vector<double> force;         // amplitude of the first force at each frequency [N]
+  std::string file;                  // the measured data it was read from; empty when written in the case
+  SourceLocation at;
+};
+
 struct HbmSpec {
   RomSpec model;                                  // the linear part: masters / file / matrices
   FrfDamping damping;                             // on the linear model's modes (the damper is undamped)
@@ -127,6 +139,7 @@ struct HbmSpec {
   std::vector<std::pair<PointDof, double>> static_loads;  // [N], besides the damper's CF
   std::vector<FrfForce> forces;                           // the excitation pattern; each level scales it
   std::vector<double> force_levels;                       // amplitude of the first force at each level [N]
+  std::vector<SteppedSineSpec> stepped_sines;             // solved at spec.harmonics after the levels
   std::vector<PointDof> responses;                        // first-harmonic amplitudes written per level
   std::optional<std::pair<PointDof, PointDof>> ip_oop;    // (left, right): in-phase / out-of-phase peaks
   int harmonics = 1;

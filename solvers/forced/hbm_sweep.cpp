@@ -43,6 +43,79 @@ hbm::HarmonicBalance patient_level_system(const PreparedHbm& p, const HbmSpec& s
   return level_system(p, patient, force, harmonics, samples);
 }
 
+// d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
+// value turns d/dp into d/d(log p). The damper's contacts come first in the model.
+std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec,
+                                                  const friction::FrictionModel& m) {
+  const size_t damper_contacts = p.damper ? p.damper->contacts.size() : 0;
+  std::vector<hbm::ModelDerivative> out;
+  for (const HbmParameter& parameter : spec.sensitivities) {
+    if (parameter.kind == HbmParameter::Kind::modal_damping) {  // C = zeta C1: dC/d(log zeta) = C
+      out.push_back(hbm::damping_scale_derivative(m));
+      continue;
+    }
+    const bool damper = parameter.kind == HbmParameter::Kind::damper_law;
+    // Each slider's kn, kt, n0 is a fixed share of the point's and its mu the point's, so the
+    // point's log-derivative is the sum over its sliders of theirs.
+    const auto [first, last] =
+        damper ? std::pair<size_t, size_t>{0, damper_contacts} : p.contact_sliders.at(parameter.contact);
+    hbm::ModelDerivative d;
+    d.laws.assign(m.contacts.size(), {});
+    for (size_t k = first; k < last; ++k) {
+      const contact::JenkinsParameters& law = m.contacts[k].law;
+      contact::JenkinsParameters& dl = d.laws[k];
+      switch (parameter.law) {
+        case contact::law_kn:
+          dl.kn = law.kn;
+          break;
+        case contact::law_kt:
+          dl.kt = law.kt;
+          break;
+        case contact::law_mu:
+          dl.mu = law.mu;
+          break;
+        case contact::law_n0:
+          dl.n0 = law.n0;
+          break;
+      }
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+// With z the first-harmonic amplitude (Z = a1 - i b1): d|z| = Re(conj z dz) / |z| and
+// d arg z = Im(conj z dz) / |z|^2.
+ResponseDlog response_dlog(const PreparedHbm& p, const hbm::HarmonicBalance& system, const Eigen::VectorXd& x,
+                           double omega, const std::vector<hbm::ModelDerivative>& derivatives) {
+  const auto n_d = static_cast<Eigen::Index>(derivatives.size()),
+             n_resp = static_cast<Eigen::Index>(p.responses.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ResponseDlog out{Eigen::MatrixXd::Constant(n_d, n_resp, nan), Eigen::MatrixXd::Constant(n_d, n_resp, nan)};
+  hbm::HbmSolution s;
+  s.x = x;
+  s.omega = omega;
+  s.converged = true;  // the caller's point is a converged solve
+  std::vector<Eigen::MatrixXd> dq;
+  try {
+    dq = hbm::response_sensitivity(system, s, derivatives);
+  } catch (const std::exception&) {
+    return out;  // a singular Jacobian (e.g. a free static position): no derivative, NaN
+  }
+  const Eigen::VectorXcd z = first_harmonic(system, x, omega);
+  for (Eigen::Index j = 0; j < n_d; ++j)
+    for (Eigen::Index r = 0; r < n_resp; ++r) {
+      const Eigen::Index dof = p.responses[static_cast<size_t>(r)];
+      const std::complex<double> zr = z[dof],
+                                 dz(dq[static_cast<size_t>(j)](dof, 1), -dq[static_cast<size_t>(j)](dof, 2));
+      const double a2 = std::norm(zr);
+      if (!(a2 > 0.0)) continue;
+      out.amplitude(j, r) = (std::conj(zr) * dz).real() / std::sqrt(a2);
+      out.phase_deg(j, r) = (std::conj(zr) * dz).imag() / a2 * 180.0 / std::numbers::pi;
+    }
+  return out;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -134,49 +207,7 @@ HbmPeak find_peak(const PreparedHbm& p, const LevelSystems& systems, const HbmLe
   return peak;
 }
 
-// d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
-// value turns d/dp into d/d(log p). The damper's contacts come first in the model.
-std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec,
-                                                  const friction::FrictionModel& m) {
-  const size_t damper_contacts = p.damper ? p.damper->contacts.size() : 0;
-  std::vector<hbm::ModelDerivative> out;
-  for (const HbmParameter& parameter : spec.sensitivities) {
-    if (parameter.kind == HbmParameter::Kind::modal_damping) {  // C = zeta C1: dC/d(log zeta) = C
-      out.push_back(hbm::damping_scale_derivative(m));
-      continue;
-    }
-    const bool damper = parameter.kind == HbmParameter::Kind::damper_law;
-    // Each slider's kn, kt, n0 is a fixed share of the point's and its mu the point's, so the
-    // point's log-derivative is the sum over its sliders of theirs.
-    const auto [first, last] =
-        damper ? std::pair<size_t, size_t>{0, damper_contacts} : p.contact_sliders.at(parameter.contact);
-    hbm::ModelDerivative d;
-    d.laws.assign(m.contacts.size(), {});
-    for (size_t k = first; k < last; ++k) {
-      const contact::JenkinsParameters& law = m.contacts[k].law;
-      contact::JenkinsParameters& dl = d.laws[k];
-      switch (parameter.law) {
-        case contact::law_kn:
-          dl.kn = law.kn;
-          break;
-        case contact::law_kt:
-          dl.kt = law.kt;
-          break;
-        case contact::law_mu:
-          dl.mu = law.mu;
-          break;
-        case contact::law_n0:
-          dl.n0 = law.n0;
-          break;
-      }
-    }
-    out.push_back(std::move(d));
-  }
-  return out;
-}
-
-// Fills level.amplitude_dlog and phase_dlog_deg from the converged path points: with z the
-// first-harmonic amplitude (Z = a1 - i b1), d|z| = Re(conj z dz) / |z| and d arg z = Im(conj z dz) / |z|^2.
+// Fills level.amplitude_dlog and phase_dlog_deg from the converged path points.
 void add_sensitivities(const PreparedHbm& p, const LevelSystems& systems,
                        const std::vector<hbm::ModelDerivative>& derivatives, HbmLevel& level) {
   const Index n_points = static_cast<Index>(level.path.points.size()), n_resp = static_cast<Index>(p.responses.size());
@@ -185,27 +216,12 @@ void add_sensitivities(const PreparedHbm& p, const LevelSystems& systems,
   level.phase_dlog_deg.assign(derivatives.size(), Eigen::MatrixXd::Constant(n_points, n_resp, nan));
   for (Index i = 0; i < n_points; ++i) {
     const hbm::ContinuationPoint& pt = level.path.points[static_cast<size_t>(i)];
-    const hbm::HarmonicBalance& system = systems.at(point_h(level, static_cast<size_t>(i)));
-    hbm::HbmSolution s;
-    s.x = pt.x;
-    s.omega = pt.omega;
-    s.converged = true;  // every point of the path is a converged solve
-    std::vector<Eigen::MatrixXd> dq;
-    try {
-      dq = hbm::response_sensitivity(system, s, derivatives);
-    } catch (const std::exception&) {
-      continue;  // a singular Jacobian (e.g. a free static position): no derivative, NaN
+    const ResponseDlog d =
+        response_dlog(p, systems.at(point_h(level, static_cast<size_t>(i))), pt.x, pt.omega, derivatives);
+    for (size_t j = 0; j < derivatives.size(); ++j) {
+      level.amplitude_dlog[j].row(i) = d.amplitude.row(static_cast<Index>(j));
+      level.phase_dlog_deg[j].row(i) = d.phase_deg.row(static_cast<Index>(j));
     }
-    const Eigen::VectorXcd z = first_harmonic(system, pt.x, pt.omega);
-    for (size_t j = 0; j < dq.size(); ++j)
-      for (Index r = 0; r < n_resp; ++r) {
-        const Index dof = p.responses[static_cast<size_t>(r)];
-        const std::complex<double> zr = z[dof], dz(dq[j](dof, 1), -dq[j](dof, 2));
-        const double a2 = std::norm(zr);
-        if (!(a2 > 0.0)) continue;
-        level.amplitude_dlog[j](i, r) = (std::conj(zr) * dz).real() / std::sqrt(a2);
-        level.phase_dlog_deg[j](i, r) = (std::conj(zr) * dz).imag() / a2 * 180.0 / std::numbers::pi;
-      }
   }
 }
 

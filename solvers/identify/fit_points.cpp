@@ -109,15 +109,58 @@ std::vector<Eigen::VectorXd> dlog_columns(const CalibrationData& d, const Result
   return out;
 }
 
+// Rows of the table in increasing frequency: as written (a level's sweep, a stepped sine up) or
+// reversed (a stepped sine down). Throws when the frequencies go neither way.
+std::vector<Index> increasing_rows(const CalibrationData& d, const Eigen::VectorXd& f) {
+  std::vector<Index> rows(static_cast<size_t>(f.size()));
+  for (Index r = 0; r < f.size(); ++r) rows[static_cast<size_t>(r)] = r;
+  if (f.size() > 1 && f[1] < f[0]) std::reverse(rows.begin(), rows.end());
+  for (size_t k = 1; k < rows.size(); ++k)
+    if (!(f[rows[k]] > f[rows[k - 1]]))
+      throw InputError(fmt::format(
+          "{}: calibration data '{}': the frequencies of table '{}' neither increase nor decrease (row {}); use a grid "
+          "sweep or a stepped sine",
+          d.at.where(), d.name, d.table, std::max(rows[k], rows[k - 1]) + 1));
+  return rows;
+}
+
+// Data measured at a force per point against a stepped sine: every table row at a data frequency
+// must have been solved at that row's force (else the case's stepped sine read another file).
+void require_same_forces(const CalibrationData& d, const ResultTable& t, const Eigen::VectorXd& f) {
+  const MeasuredData& m = d.data;
+  const Eigen::VectorXd force = result_column(d, t, "force");
+  Index matched = 0;
+  for (Index i = 0; i < m.rows(); ++i) {
+    const double fq = m.column("frequency")[i], fm = m.column("force")[i];
+    for (Index r = 0; r < f.size(); ++r) {
+      if (std::abs(f[r] - fq) > 1e-9 * fq) continue;
+      if (std::abs(force[r] - fm) > 1e-9 * fm)
+        throw InputError(
+            fmt::format("{}: measured at {:g} N, but table '{}' solved {:g} Hz at {:g} N (case {}): the "
+                        "stepped sine must read this file",
+                        m.where(i), fm, d.table, fq, force[r], d.at.where()));
+      ++matched;
+    }
+  }
+  if (matched == 0)
+    throw InputError(
+        fmt::format("{}: calibration data '{}' give the force of each point, but no row of table '{}' lies "
+                    "at their frequencies: map the table of the stepped sine that reads {}",
+                    d.at.where(), d.name, d.table, m.file.string()));
+}
+
 std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
                                  const std::vector<std::string>& parameters) {
   const MeasuredData& m = d.data;
-  const Eigen::VectorXd f = result_column(d, t, "frequency");
-  for (Index r = 1; r < f.size(); ++r)
-    if (!(f[r] > f[r - 1]))
-      throw InputError(fmt::format(
-          "{}: calibration data '{}': the frequencies of table '{}' do not increase (row {}); use a grid sweep",
-          d.at.where(), d.name, d.table, r + 1));
+  const Eigen::VectorXd written = result_column(d, t, "frequency");
+  const std::vector<Index> order = increasing_rows(d, written);
+  if (m.has("force")) require_same_forces(d, t, written);
+  const auto sorted = [&](const Eigen::VectorXd& v) {
+    Eigen::VectorXd out(v.size());
+    for (size_t k = 0; k < order.size(); ++k) out[static_cast<Index>(k)] = v[order[k]];
+    return out;
+  };
+  const Eigen::VectorXd f = sorted(written);
   // The fitted columns and their sensitivities, read once for all rows.
   struct Fitted {
     Eigen::VectorXd y;
@@ -127,10 +170,10 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
   for (const char* q : {"amplitude", "phase"}) {
     if (!d.columns.count(q)) continue;
     Fitted& c = fitted[q];
-    c.y = result_column(d, t, q);
+    c.y = sorted(result_column(d, t, q));
     if (std::string(q) == "phase")  // unwrap so the interpolation does not cross a 2 pi jump
       for (Index r = 1; r < c.y.size(); ++r) c.y[r] = c.y[r - 1] + wrap_angle(c.y[r] - c.y[r - 1]);
-    c.dlog = dlog_columns(d, t, q, parameters);
+    for (const Eigen::VectorXd& dy : dlog_columns(d, t, q, parameters)) c.dlog.push_back(sorted(dy));
   }
   std::vector<FitPoint> points;
   for (Index i = 0; i < m.rows(); ++i) {

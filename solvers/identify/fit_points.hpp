@@ -38,7 +38,10 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
 //   peaks       per data row, the result row whose force column equals the row's force (to 1e-9
 //               relative); frequency and amplitude as mapped.
 //   frf         the mapped result columns interpolated linearly at each measured frequency (the
-//               computed frequencies must increase and cover the data's range).
+//               computed frequencies must increase or decrease and cover the data's range). Data
+//               with a force per point map `force` to a stepped sine's force column: each table
+//               row at a data frequency must carry that row's force (a failed point is
+//               interpolated over, between its neighbours' forces).
 //   hysteresis  per measured point, the computed force on the branch of the loop that moves the
 //               same way (the direction from the neighbouring measured points), interpolated at
 //               the measured displacement; clamped to the branch's ends outside its range.

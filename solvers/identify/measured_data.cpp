@@ -58,6 +58,8 @@ const std::vector<ColumnSpec>& column_specs(DataKind kind) {
   static const std::vector<ColumnSpec> frf = {{"frequency", {frequency}, true},
                                               {"amplitude", response_dims(), true, true},
                                               {"phase", {angle}},
+                                              {"force", {force}, false, true},
+                                              {"force_phase", {angle}},
                                               {"amplitude_sigma", response_dims(), false, true, "amplitude"},
                                               {"phase_sigma", {angle}, false, true, "phase"}};
   static const std::vector<ColumnSpec> hysteresis = {{"relative_displacement", {length}, true},
@@ -324,12 +326,20 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
                                         min_rows, kind == DataKind::hysteresis ? " (one loop, in time order)" : ""));
   const auto line_of = [&](size_t r) { return static_cast<unsigned>(data.lines[r]); };
   if (kind == DataKind::frf) {
+    // One stepped sine: up (increasing) or down (decreasing), as the rig stepped it.
     const Column& f = *find("frequency");
+    const bool down = n > 1 && f.written[1] < f.written[0];
     for (size_t r = 1; r < n; ++r)
-      if (!(f.written[r] > f.written[r - 1]))
-        throw fail(line_of(r), fmt::format("frequency {} {} is not above the previous row's {} {} (rows must be sorted "
-                                           "by increasing frequency, without duplicates)",
-                                           f.written[r], f.unit.symbol, f.written[r - 1], f.unit.symbol));
+      if (down ? !(f.written[r] < f.written[r - 1]) : !(f.written[r] > f.written[r - 1]))
+        throw fail(line_of(r),
+                   fmt::format("frequency {} {} is not {} the previous row's {} {} (rows must follow one "
+                               "stepped sine, up or down, without repeated frequencies)",
+                               f.written[r], f.unit.symbol, down ? "below" : "above", f.written[r - 1], f.unit.symbol));
+    if (find("force_phase") && !find("force"))
+      throw fail(header_line, "column 'force_phase' needs the column 'force' (the force it is the phase of)");
+    if (find("force_phase") && !find("phase"))
+      throw fail(header_line,
+                 "column 'force_phase' needs the column 'phase' (the response phase it is the reference of)");
   }
   if (kind == DataKind::peaks) {
     const Column& f = *find("force");
@@ -347,6 +357,12 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
     data.units[c.name] = c.unit;
   }
   if (kind != DataKind::hysteresis) amplitude_to_displacement(data);
+  if (data.has("force_phase"))  // the response's phase to the force, as the model computes it
+    for (Eigen::Index r = 0; r < data.rows(); ++r) {
+      double& phase = data.columns["phase"][r];
+      phase = std::remainder(phase - data.columns["force_phase"][r], 2.0 * std::numbers::pi);
+      if (phase <= -std::numbers::pi) phase += 2.0 * std::numbers::pi;
+    }
   return data;
 }
 

@@ -8,7 +8,11 @@
 //               optional amplitude_sigma, frequency_sigma (same dimension as their column).
 //               One row per force level; levels must be distinct.
 //   frf         frequency [frequency], amplitude [length or compliance], optional phase [angle],
-//               amplitude_sigma, phase_sigma. Frequencies strictly increasing (no duplicates).
+//               amplitude_sigma, phase_sigma, force [force] (the force amplitude each point was
+//               measured at: a force-controlled rig's drifts) and force_phase [angle] (the force's
+//               phase on the response's clock; the phase is then read as the response's phase to
+//               the force). One stepped sine: frequencies strictly increasing (up) or strictly
+//               decreasing (down).
 //   hysteresis  relative_displacement [length], tangential_force [force], optional force_sigma
 //               [force]. Rows in time order over the loop; at least 8 rows.
 // The amplitude of frf and peaks data (and its sigma) may also be a velocity or an acceleration
@@ -95,7 +99,8 @@ struct MeasuredData {
 // the column) on: a missing file, a header cell without "[unit]", an unknown unit, a unit of the
 // wrong dimension, an unknown, duplicated or missing required column, a row with too few or too
 // many cells, an empty, non-numeric, NaN or infinite cell, a non-positive amplitude or sigma,
-// unsorted or duplicated frequencies (frf), repeated force levels (peaks), too few rows.
+// frequencies neither strictly increasing nor strictly decreasing (frf), force_phase without force
+// and phase (frf), repeated force levels (peaks), too few rows.
 MeasuredData read_measured_data(const std::filesystem::path& file, DataKind kind);
 
 // A velocity or acceleration amplitude (by units["amplitude"]) and its sigma divided by w^k row by

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -12,8 +14,37 @@
 
 namespace bb {
 
+namespace {
+
+using Eigen::Index;
+
+// The time derivative that turns a computed displacement (or compliance) into what a transducer of
+// `unit` measures: 1 velocity (mobility), 2 acceleration (accelerance), 0 none.
+int time_derivative(Dimension computed, Dimension unit) {
+  if (computed == Dimension::length) return unit == Dimension::velocity ? 1 : unit == Dimension::acceleration ? 2 : 0;
+  if (computed == Dimension::compliance)
+    return unit == Dimension::mobility ? 1 : unit == Dimension::accelerance ? 2 : 0;
+  return 0;
+}
+
+// w = 2 pi f of each kept row, from the table's frequency_hz column.
+Eigen::ArrayXd harmonic_w(const ResultTable& table, const std::vector<Index>& rows) {
+  const auto col = table.column_index("frequency_hz");
+  if (!col)
+    throw InputError(
+        fmt::format("synthetic data: a velocity or acceleration needs the frequency of each row, but table "
+                    "'{}' has no column 'frequency_hz'",
+                    table.name));
+  Eigen::ArrayXd w(static_cast<Index>(rows.size()));
+  for (size_t i = 0; i < rows.size(); ++i)
+    w[static_cast<Index>(i)] = 2.0 * std::numbers::pi * table.values(rows[i], *col);
+  return w;
+}
+
+}  // namespace
+
 void write_synthetic_data(const ResultTable& table, const SyntheticOptions& o, const std::filesystem::path& file) {
-  using Eigen::Index;
+  int derivative = 0;  // of the written amplitude (1 velocity, 2 acceleration)
   if (o.every < 1) throw InputError("synthetic data: 'every' must be >= 1");
   std::vector<Index> rows;
   for (Index r = 0; r < table.values.rows(); r += o.every) rows.push_back(r);
@@ -26,15 +57,25 @@ void write_synthetic_data(const ResultTable& table, const SyntheticOptions& o, c
     const std::optional<Unit> unit = parse_unit(c.unit);
     if (!unit) throw InputError(fmt::format("synthetic data: unknown unit '{}' for column '{}'", c.unit, c.data));
     const std::optional<Dimension> dim = column_dimension(c.result);
-    if (dim && *dim != unit->dimension)
+    const int k = c.data == "amplitude" && dim ? time_derivative(*dim, unit->dimension) : 0;
+    if (dim && *dim != unit->dimension && k == 0)
       throw InputError(fmt::format("synthetic data: '{}' is a {} but unit '{}' is a {}", c.result, dimension_name(*dim),
                                    c.unit, dimension_name(unit->dimension)));
     Eigen::VectorXd v(n);
     for (Index i = 0; i < n; ++i)
       v[i] = table.values(rows[static_cast<size_t>(i)], *col) * column_to_si(c.result) / unit->to_si;
+    if (k > 0) derivative = k, v = (v.array() * harmonic_w(table, rows).pow(k)).matrix();
     values.push_back(v);
     units.push_back(*unit);
   }
+  // A velocity or acceleration leads the displacement by 90 or 180 degrees (v = i w x, a = -w^2 x).
+  for (size_t c = 0; c < o.columns.size(); ++c)
+    if (o.columns[c].data == "phase" && derivative > 0)
+      for (double& phase : values[c]) {
+        const double turn = 2.0 * std::numbers::pi / units[c].to_si;
+        phase = std::remainder(phase + derivative * 0.25 * turn, turn);
+        if (phase <= -0.5 * turn) phase += turn;
+      }
   std::mt19937 rng(o.seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::vector<Index> order(static_cast<size_t>(n));

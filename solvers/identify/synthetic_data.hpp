@@ -31,6 +31,10 @@ struct SyntheticOptions {
 };
 
 // Writes `file` with sigma columns stating the noise used (so a fit weights the points by it).
+// An amplitude written in a velocity or acceleration unit (m/s, m/s^2, g, ...) from a displacement
+// column is what that transducer would read: multiplied by w or w^2 at each row's frequency_hz,
+// its phase column moved by +90 or +180 degrees. A force column (a stepped sine's force_n) is
+// written without noise: the fit takes it as the excitation.
 // Throws InputError when a column is missing from the table or a unit is unknown or of the wrong
 // dimension for its column.
 void write_synthetic_data(const ResultTable& table, const SyntheticOptions& options, const std::filesystem::path& file);

@@ -310,9 +310,10 @@ TEST_F(MeasuredDataFile, SigmaNeedsItsColumnAndItsDimension) {
 }
 
 TEST_F(MeasuredDataFile, UnknownColumnIsRefusedWithTheColumnsOfTheKind) {
-  expect_contains(refusal(write("frequency [Hz], amplitud [m]\n1, 1\n", "rig.csv"), DataKind::frf),
-                  {"rig.csv:1: unknown column 'amplitud'; a frf file has: frequency, amplitude, phase, "
-                   "amplitude_sigma, phase_sigma"});
+  expect_contains(
+      refusal(write("frequency [Hz], amplitud [m]\n1, 1\n", "rig.csv"), DataKind::frf),
+      {"rig.csv:1: unknown column 'amplitud'; a frf file has: frequency, amplitude, phase, force, force_phase, "
+       "amplitude_sigma, phase_sigma"});
   expect_contains(refusal(write("force [N], frequency [Hz], amplitude [m], phase [deg]\n1, 1, 1, 1\n", "peaks.csv"),
                           DataKind::peaks),
                   {"peaks.csv:1: unknown column 'phase'; a peaks file has: force, frequency, amplitude"});
@@ -376,10 +377,37 @@ TEST_F(MeasuredDataFile, NonPositiveAmplitudeOrSigmaIsRefused) {
 TEST_F(MeasuredDataFile, FrfFrequenciesMustIncreaseStrictly) {
   expect_contains(
       refusal(write("# c\nfrequency [Hz], amplitude [m]\n100, 1\n120, 1\n# c\n110, 1\n", "rig.csv"), DataKind::frf),
-      {"rig.csv:6: frequency 110 Hz is not above the previous row's 120 Hz (rows must be sorted by "
-       "increasing frequency, without duplicates)"});
+      {"rig.csv:6: frequency 110 Hz is not above the previous row's 120 Hz (rows must follow one stepped sine, up "
+       "or down, without repeated frequencies)"});
+  expect_contains(refusal(write("frequency [Hz], amplitude [m]\n120, 1\n110, 1\n115, 1\n", "rig.csv"), DataKind::frf),
+                  {"rig.csv:4: frequency 115 Hz is not below the previous row's 110 Hz"});
   expect_contains(refusal(write("frequency [rpm], amplitude [m]\n7200, 1\n7200, 1\n", "rig.csv"), DataKind::frf),
                   {"rig.csv:3: frequency 7200 rpm is not above the previous row's 7200 rpm"});
+}
+
+TEST_F(MeasuredDataFile, DownSweepWithTheForceOfEachPointIsReadInItsOrder) {
+  // A force-controlled rig's stepped sine down in frequency: its force drifts, its force channel
+  // has its own phase; the response's phase is read against the force.
+  const MeasuredData d = read_measured_data(write("frequency [Hz], amplitude [m/s^2], phase [deg], force [mN], "
+                                                  "force_phase [deg]\n"
+                                                  "82, 10, 30, 150, 20\n81, 20, -170, 180, 10\n80, 5, 175, 210, -10\n",
+                                                  "down.csv"),
+                                            DataKind::frf);
+  ASSERT_EQ(d.rows(), 3);
+  EXPECT_DOUBLE_EQ(d.column("frequency")[0], 82.0);
+  EXPECT_DOUBLE_EQ(d.column("frequency")[2], 80.0);
+  EXPECT_DOUBLE_EQ(d.column("force")[1], 0.18);
+  const double w = 2.0 * std::numbers::pi * 81.0;
+  EXPECT_NEAR(d.column("amplitude")[1], 20.0 / (w * w), 1e-15);
+  // -170 - 180 (acceleration to displacement) - 10 (the force's phase) = -360 = 0 deg.
+  EXPECT_NEAR(d.column("phase")[1], 0.0, 1e-12);
+  // 175 - 180 + 10 = 5 deg.
+  EXPECT_NEAR(d.column("phase")[2], 5.0 * std::numbers::pi / 180.0, 1e-12);
+  expect_contains(
+      refusal(write("frequency [Hz], amplitude [m], force_phase [deg]\n1, 1, 0\n", "rig.csv"), DataKind::frf),
+      {"rig.csv:1: column 'force_phase' needs the column 'force'"});
+  expect_contains(refusal(write("frequency [Hz], amplitude [m], force [N]\n1, 1, 0\n", "rig.csv"), DataKind::frf),
+                  {"rig.csv:2: column 'force': '0' must be positive"});
 }
 
 TEST_F(MeasuredDataFile, RepeatedForceLevelIsRefusedNamingBothRows) {

@@ -1,0 +1,51 @@
+#include "analysis/stepped_sine_tables.hpp"
+
+#include <fmt/format.h>
+
+namespace bb {
+
+void add_stepped_sine_tables(const PreparedHbm& p, const HbmSpec& spec, const std::vector<HbmSteppedSine>& sines,
+                             ResultTables& tables) {
+  if (sines.empty()) return;
+  using Eigen::Index;
+  std::vector<std::vector<double>> cost_rows;
+  std::vector<std::string> names, first_failures;
+  for (size_t k = 0; k < sines.size(); ++k) {
+    const HbmSteppedSine& s = sines[k];
+    std::vector<std::string> cols = {"point", "frequency_hz", "force_n"};
+    for (const char* q : {"_amp_m", "_phase_deg", "_max_m"})
+      for (const std::string& r : p.response_names) cols.push_back(r + q);
+    cols.insert(cols.end(), {"residual_n", "iterations"});
+    for (size_t j = 0; j < s.amplitude_dlog.size(); ++j)
+      for (const char* q : {"_amp_m_dlog_", "_phase_deg_dlog_"})
+        for (const std::string& r : p.response_names) cols.push_back(r + q + spec.sensitivities[j].label);
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < s.frequency_hz.size(); ++i) {
+      const Index row = static_cast<Index>(i);
+      std::vector<double> values = {static_cast<double>(s.point[i] + 1), s.frequency_hz[i], s.force[i]};
+      for (const Eigen::MatrixXd* m : {&s.amplitude, &s.phase_deg, &s.excursion})
+        for (Index r = 0; r < m->cols(); ++r) values.push_back((*m)(row, r));
+      values.insert(values.end(), {s.residual[i], static_cast<double>(s.iterations[i])});
+      for (size_t j = 0; j < s.amplitude_dlog.size(); ++j)
+        for (const Eigen::MatrixXd* d : {&s.amplitude_dlog[j], &s.phase_dlog_deg[j]})
+          for (Index r = 0; r < d->cols(); ++r) values.push_back((*d)(row, r));
+      rows.push_back(std::move(values));
+    }
+    const std::string name = "frf_" + s.name;
+    tables.emplace(name, table_from_rows(name, cols, rows));
+    const size_t points = s.frequency_hz.size() + s.failed_hz.size();
+    cost_rows.push_back({static_cast<double>(k + 1), static_cast<double>(points),
+                         static_cast<double>(s.failed_hz.size()), static_cast<double>(s.total_iterations),
+                         static_cast<double>(s.harmonics), static_cast<double>(s.samples), s.seconds});
+    names.push_back(s.name);
+    first_failures.push_back(
+        s.failed_hz.empty() ? "" : fmt::format("{:.6g} Hz: {}", s.failed_hz.front(), s.failures.front()));
+  }
+  ResultTable cost = table_from_rows(
+      "stepped_sine_cost", {"sine", "points", "failed", "iterations", "harmonics", "samples", "seconds"}, cost_rows);
+  cost.add_text_column("name", names);
+  cost.add_text_column("first_failure", first_failures);
+  tables.emplace("stepped_sine_cost", std::move(cost));
+}
+
+}  // namespace bb

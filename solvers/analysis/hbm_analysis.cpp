@@ -484,6 +484,16 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
       throw SolverError(fmt::format("stepped sine '{}' converged at no point; at {:.6g} Hz: {}", s.name,
                                     s.failed_hz.front(), s.failures.front()));
   add_stepped_sine_tables(o.prepared, spec, o.stepped_sines, o.tables);
+  o.response_controls.resize(spec.response_controls.size());
+  for_each_index(spec.response_controls.size(), worker_count(spec.response_controls.size(), spec.threads),
+                 [&](size_t i) {
+                   o.response_controls[i] = run_response_control(o.prepared, spec, spec.response_controls[i], progress);
+                 });
+  for (const HbmControlled& c : o.response_controls)
+    if (c.frequency_hz.empty())
+      throw SolverError(fmt::format("response control '{}' converged at no frequency; at {:.6g} Hz: {}", c.name,
+                                    c.failed_hz.front(), c.failures.front()));
+  add_response_control_tables(o.prepared, spec, o.response_controls, o.tables);
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "forced/hbm_level.hpp"
+#include "forced/hbm_response_control.hpp"
 #include "forced/hbm_stepped_sine.hpp"
 #include "hbm/nonlinear_modes.hpp"
 #include "results/table.hpp"
@@ -24,13 +25,15 @@ struct HbmOutcome {
   double sweep_seconds = 0.0;
   std::vector<hbm::NonlinearModeBranch> nonlinear_modes;  // spec.nonlinear_modes: one per linear mode
   double nonlinear_mode_seconds = 0.0;
-  std::vector<HbmSteppedSine> stepped_sines;  // spec.stepped_sines, in order
+  std::vector<HbmSteppedSine> stepped_sines;     // spec.stepped_sines, in order
+  std::vector<HbmControlled> response_controls;  // spec.response_controls, in order
 };
 
 // prepare + every level + tables: peaks, frf_<Fe>, contact_states, energy_balance, sweep_cost, aft_sampling,
 // harmonic_selection, limits, limit_peaks, damper_static; then the stepped sines (frf_<name>,
-// stepped_sine_cost). Throws SolverError when a level or a stepped sine finds no solution at all or
-// a peak's refinement does not converge: a peak is never reported at a failed solve.
+// stepped_sine_cost) and the response controls (frf_<name>, response_control). Throws SolverError when a level or a
+// stepped sine finds no solution at all or a peak's refinement does not converge: a peak is never reported at a failed
+// solve.
 HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
 
 }  // namespace bb

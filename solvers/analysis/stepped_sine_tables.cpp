@@ -48,4 +48,53 @@ void add_stepped_sine_tables(const PreparedHbm& p, const HbmSpec& spec, const st
   tables.emplace("stepped_sine_cost", std::move(cost));
 }
 
+void add_response_control_tables(const PreparedHbm& p, const HbmSpec& spec, const std::vector<HbmControlled>& controls,
+                                 ResultTables& tables) {
+  if (controls.empty()) return;
+  using Eigen::Index;
+  std::vector<std::vector<double>> summary;
+  std::vector<std::string> names, dofs, quantities, first_failures;
+  const char* quantity[] = {"displacement [m]", "velocity [m/s]", "acceleration [m/s^2]"};
+  for (size_t k = 0; k < controls.size(); ++k) {
+    const HbmControlled& s = controls[k];
+    const ResponseControlSpec& c = spec.response_controls[k];
+    std::vector<std::string> cols = {"point", "frequency_hz", "force_n", "force_phase_deg", "held_m"};
+    for (const char* q : {"_amp_m", "_phase_deg", "_max_m"})
+      for (const std::string& r : p.response_names) cols.push_back(r + q);
+    cols.insert(cols.end(), {"residual_n", "iterations"});
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < s.frequency_hz.size(); ++i) {
+      const Index row = static_cast<Index>(i);
+      std::vector<double> values = {static_cast<double>(s.point[i] + 1), s.frequency_hz[i], s.force[i],
+                                    s.force_phase_deg[i], s.held_m[i]};
+      for (const Eigen::MatrixXd* m : {&s.amplitude, &s.phase_deg, &s.excursion})
+        for (Index r = 0; r < m->cols(); ++r) values.push_back((*m)(row, r));
+      values.insert(values.end(), {s.residual[i], static_cast<double>(s.iterations[i])});
+      rows.push_back(std::move(values));
+    }
+    const std::string name = "frf_" + s.name;
+    tables.emplace(name, table_from_rows(name, cols, rows));
+    summary.push_back({static_cast<double>(k + 1), c.amplitude, static_cast<double>(c.derivative), s.min_force,
+                       s.min_frequency_hz, s.min_phase_deg, s.min_interior ? 1.0 : 0.0,
+                       static_cast<double>(s.frequency_hz.size() + s.failed_hz.size()),
+                       static_cast<double>(s.failed_hz.size()), static_cast<double>(s.total_iterations),
+                       static_cast<double>(s.harmonics), static_cast<double>(s.samples), s.seconds});
+    names.push_back(s.name);
+    dofs.push_back(p.response_names[c.response]);
+    quantities.push_back(quantity[c.derivative]);
+    first_failures.push_back(
+        s.failed_hz.empty() ? "" : fmt::format("{:.6g} Hz: {}", s.failed_hz.front(), s.failures.front()));
+  }
+  ResultTable t =
+      table_from_rows("response_control",
+                      {"control", "amplitude", "derivative", "min_force_n", "min_frequency_hz", "min_phase_deg",
+                       "min_interior", "points", "failed", "iterations", "harmonics", "samples", "seconds"},
+                      summary);
+  t.add_text_column("name", names);
+  t.add_text_column("dof", dofs);
+  t.add_text_column("held", quantities);
+  t.add_text_column("first_failure", first_failures);
+  tables.emplace("response_control", std::move(t));
+}
+
 }  // namespace bb

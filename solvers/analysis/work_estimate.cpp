@@ -68,6 +68,7 @@ WorkEstimate hbm_work(const HbmSpec& s) {
   const double levels = static_cast<double>(s.force_levels.size());
   double stepped = 0.0;  // each point of a stepped sine is a solve like a grid frequency's
   for (const SteppedSineSpec& sine : s.stepped_sines) stepped += static_cast<double>(sine.frequency_hz.size());
+  for (const ResponseControlSpec& c : s.response_controls) stepped += static_cast<double>(c.frequency_hz.size()) + 40.0;
   const double points = std::max(frequencies * levels + stepped, 1.0);
   // The point scope solves each frequency at a pair of H, raised until they agree.
   const double h_solves = s.harmonic_scope == HbmSpec::HarmonicScope::point ? h_sweeps + 1.0 : h_sweeps;

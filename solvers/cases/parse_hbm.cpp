@@ -319,12 +319,13 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   }
   s.forces = parse_forces(r);
   s.responses = parse_responses(r);
-  if (r.has("stepped_sine") && !contacts_required)
-    r.fail("stepped_sine",
-           "only a harmonic balance analysis solves stepped sines point by point (a time analysis "
-           "has stepped_sine = true)");
+  for (const char* key : {"stepped_sine", "response_control"})
+    if (r.has(key) && !contacts_required)
+      r.fail(key,
+             "only a harmonic balance analysis solves stepped sines point by point (a time analysis "
+             "has stepped_sine = true)");
   // A case of stepped sines alone sweeps no band.
-  if (r.has("force_levels") || !r.has("stepped_sine")) {
+  if (r.has("force_levels") || !(r.has("stepped_sine") || r.has("response_control"))) {
     s.force_levels = r.number_array("force_levels");
     if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level [N]");
   }
@@ -428,9 +429,13 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     s.nonlinear_modes = parse_nonlinear_modes(TomlReader(*t, r.path() + ".nonlinear_modes", r.file()), s);
   }
   parse_cyclic(r, s, contacts_required);
-  s.stepped_sines = parse_stepped_sines(r, folder, s.force_levels);
-  if (!s.stepped_sines.empty() && (s.cyclic || s.gap_damper))
-    r.fail("stepped_sine", "a stepped sine runs on a lumped or reduced model without [analysis.cyclic]");
+  std::set<std::string> table_names;  // the levels' tables, then each stepped sine's
+  for (double f : s.force_levels) table_names.insert(hbm_frf_table_name(f));
+  s.stepped_sines = parse_stepped_sines(r, folder, table_names);
+  s.response_controls = parse_response_controls(r, s.responses, table_names);
+  for (const char* key : {"stepped_sine", "response_control"})
+    if (r.has(key) && (s.cyclic || s.gap_damper))
+      r.fail(key, "a stepped sine runs on a lumped or reduced model without [analysis.cyclic]");
   return s;
 }
 

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
+#include "cases/parse_frf.hpp"
 #include "forced/hbm_level.hpp"
 #include "identify/measured_data.hpp"
 
@@ -18,6 +20,37 @@ bool valid_name(const std::string& name) {
   for (char c : name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.' && c != '-') return false;
   return true;
+}
+
+// frequency_hz: the list as stepped, or with step_hz [first, last] on a grid (down when first > last).
+std::vector<double> stepped_frequencies(TomlReader& r) {
+  std::vector<double> f = r.number_array("frequency_hz");
+  if (r.has("step_hz")) {
+    const double step = r.positive("step_hz");
+    if (f.size() != 2) r.fail("frequency_hz", "with step_hz give [first, last] (last < first steps down)");
+    if (!(f[0] > 0.0) || !(f[1] > 0.0) || f[0] == f[1])
+      r.fail("frequency_hz", "needs two different positive frequencies [Hz]");
+    const double span = std::abs(f[1] - f[0]);
+    if (span / step > static_cast<double>(kMaxPoints)) r.fail("step_hz", fmt::format("more than {} steps", kMaxPoints));
+    const auto n = static_cast<size_t>(std::floor(span / step + 1e-9));
+    const double dir = f[1] > f[0] ? 1.0 : -1.0, first = f[0], last = f[1];
+    f.clear();
+    for (size_t i = 0; i <= n; ++i) f.push_back(first + dir * static_cast<double>(i) * step);
+    if (std::abs(f.back() - last) > 1e-9 * last) f.push_back(last);
+    return f;
+  }
+  if (f.empty()) r.fail("frequency_hz", "needs at least one frequency [Hz]");
+  if (f.size() > kMaxPoints) r.fail("frequency_hz", fmt::format("{} points; at most {}", f.size(), kMaxPoints));
+  const bool down = f.size() > 1 && f[1] < f[0];
+  for (size_t i = 0; i < f.size(); ++i) {
+    if (!(f[i] > 0.0) || !std::isfinite(f[i]))
+      r.fail("frequency_hz", fmt::format("every frequency must be positive [Hz], found {}", f[i]));
+    if (i > 0 && (down ? !(f[i] < f[i - 1]) : !(f[i] > f[i - 1])))
+      r.fail("frequency_hz", fmt::format("frequency {} Hz (entry {}) is not {} the one before ({} Hz): a stepped sine "
+                                         "goes one way, up or down, without repeating a frequency",
+                                         f[i], i + 1, down ? "below" : "above", f[i - 1]));
+  }
+  return f;
 }
 
 SteppedSineSpec parse_one(TomlReader& r, const toml::table& t, const std::filesystem::path& folder) {
@@ -42,10 +75,7 @@ SteppedSineSpec parse_one(TomlReader& r, const toml::table& t, const std::filesy
     s.file = file.string();
     return s;
   }
-  s.frequency_hz = r.number_array("frequency_hz");
-  if (s.frequency_hz.empty()) r.fail("frequency_hz", "needs at least one frequency [Hz]");
-  if (s.frequency_hz.size() > kMaxPoints)
-    r.fail("frequency_hz", fmt::format("{} points; at most {}", s.frequency_hz.size(), kMaxPoints));
+  s.frequency_hz = stepped_frequencies(r);
   if (const toml::node* force = t.get("force"); !force || !force->is_array()) {
     s.force.assign(s.frequency_hz.size(), r.number("force"));
   } else {
@@ -56,27 +86,58 @@ SteppedSineSpec parse_one(TomlReader& r, const toml::table& t, const std::filesy
   }
   for (double f : s.force)
     if (!(f > 0.0) || !std::isfinite(f)) r.fail("force", fmt::format("every force must be positive [N], found {}", f));
-  const std::vector<double>& f = s.frequency_hz;
-  const bool down = f.size() > 1 && f[1] < f[0];
-  for (size_t i = 0; i < f.size(); ++i) {
-    if (!(f[i] > 0.0) || !std::isfinite(f[i]))
-      r.fail("frequency_hz", fmt::format("every frequency must be positive [Hz], found {}", f[i]));
-    if (i > 0 && (down ? !(f[i] < f[i - 1]) : !(f[i] > f[i - 1])))
-      r.fail("frequency_hz", fmt::format("frequency {} Hz (entry {}) is not {} the one before ({} Hz): a stepped sine "
-                                         "goes one way, up or down, without repeating a frequency",
-                                         f[i], i + 1, down ? "below" : "above", f[i - 1]));
-  }
+  return s;
+}
+
+ResponseControlSpec parse_control(TomlReader& r, const std::vector<PointDof>& responses) {
+  ResponseControlSpec s;
+  s.at = r.location();
+  s.name = r.string("name");
+  if (!valid_name(s.name))
+    r.fail("name", fmt::format("'{}': use letters, digits, '_', '.' and '-' (it names the table frf_<name>)", s.name));
+  const PointDof dof = parse_point_dof(r, "dof", r.string("dof"));
+  const auto held =
+      std::find_if(responses.begin(), responses.end(), [&](const PointDof& p) { return p.name() == dof.name(); });
+  if (held == responses.end())
+    r.fail("dof",
+           fmt::format("'{}' must be one of analysis.responses (the held response is written with them)", dof.name()));
+  s.response = static_cast<size_t>(held - responses.begin());
+  const char* kinds[] = {"displacement", "velocity", "acceleration"};
+  int given = 0;
+  for (int k = 0; k < 3; ++k)
+    if (r.has(kinds[k])) ++given, s.derivative = k;
+  if (given != 1)
+    r.fail("displacement", "give exactly one held amplitude: displacement [m], velocity [m/s] or acceleration [m/s^2]");
+  s.amplitude = r.number(kinds[s.derivative]);
+  if (!(s.amplitude > 0.0) || !std::isfinite(s.amplitude))
+    r.fail(kinds[s.derivative], fmt::format("the held amplitude must be positive, found {}", s.amplitude));
+  s.frequency_hz = stepped_frequencies(r);
   return s;
 }
 
 }  // namespace
 
+std::vector<ResponseControlSpec> parse_response_controls(TomlReader& r, const std::vector<PointDof>& responses,
+                                                         std::set<std::string>& tables) {
+  std::vector<ResponseControlSpec> out;
+  if (!r.has("response_control")) return out;
+  int i = 0;
+  for (const toml::node& n : r.array("response_control")) {
+    if (!n.is_table()) r.fail("response_control", "write each as an [[analysis.response_control]] table");
+    TomlReader s(*n.as_table(), fmt::format("{}.response_control[{}]", r.path(), i++), r.file());
+    out.push_back(parse_control(s, responses));
+    s.finish();
+    const std::string table = "frf_" + out.back().name;
+    if (!tables.insert(table).second)
+      s.fail("name", fmt::format("table '{}' is already written by a force level or another stepped sine", table));
+  }
+  return out;
+}
+
 std::vector<SteppedSineSpec> parse_stepped_sines(TomlReader& r, const std::filesystem::path& folder,
-                                                 const std::vector<double>& force_levels) {
+                                                 std::set<std::string>& tables) {
   std::vector<SteppedSineSpec> out;
   if (!r.has("stepped_sine")) return out;
-  std::set<std::string> tables;
-  for (double f : force_levels) tables.insert(hbm_frf_table_name(f));
   int i = 0;
   for (const toml::node& n : r.array("stepped_sine")) {
     if (!n.is_table()) r.fail("stepped_sine", "write each stepped sine as an [[analysis.stepped_sine]] table");

@@ -299,6 +299,10 @@ int main(int argc, char** argv) {
       ->required();
   synthesize->add_option("--noise", synth.options.noise, "Relative sigma of amplitudes and forces")
       ->check(CLI::NonNegativeNumber);
+  synthesize
+      ->add_option("--force-noise", synth.options.force_noise,
+                   "Relative sigma of an frf file's force column (a response-controlled curve's measured force)")
+      ->check(CLI::NonNegativeNumber);
   synthesize->add_option("--frequency-noise", synth.options.frequency_noise, "Relative sigma of peak frequencies")
       ->check(CLI::NonNegativeNumber);
   synthesize->add_option("--phase-noise-deg", synth.phase_deg, "Sigma of phases [deg]")->check(CLI::NonNegativeNumber);

@@ -128,6 +128,19 @@ struct SteppedSineSpec {
   SourceLocation at;
 };
 
+// A response-controlled stepped sine: at each frequency, in the order stepped, the force that
+// holds a response's first harmonic at a given amplitude (hbm/response_control.hpp), as rigs run
+// joints and dampers at constant vibration level. The amplitude may be a displacement, a velocity
+// or an acceleration (held constant in that quantity: the displacement is amplitude / w^derivative).
+struct ResponseControlSpec {
+  std::string name;                  // writes table frf_<name>
+  size_t response = 0;               // index into HbmSpec::responses of the held DOF
+  double amplitude = 0.0;            // [m], [m/s] or [m/s^2] by `derivative`
+  int derivative = 0;                // 0 displacement, 1 velocity, 2 acceleration
+  std::vector<double> frequency_hz;  // strictly increasing or strictly decreasing
+  SourceLocation at;
+};
+
 struct HbmSpec {
   RomSpec model;                                  // the linear part: masters / file / matrices
   FrfDamping damping;                             // on the linear model's modes (the damper is undamped)
@@ -140,6 +153,7 @@ struct HbmSpec {
   std::vector<FrfForce> forces;                           // the excitation pattern; each level scales it
   std::vector<double> force_levels;                       // amplitude of the first force at each level [N]
   std::vector<SteppedSineSpec> stepped_sines;             // solved at spec.harmonics after the levels
+  std::vector<ResponseControlSpec> response_controls;     // likewise
   std::vector<PointDof> responses;                        // first-harmonic amplitudes written per level
   std::optional<std::pair<PointDof, PointDof>> ip_oop;    // (left, right): in-phase / out-of-phase peaks
   int harmonics = 1;

@@ -61,7 +61,8 @@ const std::vector<ColumnSpec>& column_specs(DataKind kind) {
                                               {"force", {force}, false, true},
                                               {"force_phase", {angle}},
                                               {"amplitude_sigma", response_dims(), false, true, "amplitude"},
-                                              {"phase_sigma", {angle}, false, true, "phase"}};
+                                              {"phase_sigma", {angle}, false, true, "phase"},
+                                              {"force_sigma", {force}, false, true, "force"}};
   static const std::vector<ColumnSpec> hysteresis = {{"relative_displacement", {length}, true},
                                                      {"tangential_force", {force}, true},
                                                      {"force_sigma", {force}, false, true, "tangential_force"}};

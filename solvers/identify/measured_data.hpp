@@ -9,7 +9,8 @@
 //               One row per force level; levels must be distinct.
 //   frf         frequency [frequency], amplitude [length or compliance], optional phase [angle],
 //               amplitude_sigma, phase_sigma, force [force] (the force amplitude each point was
-//               measured at: a force-controlled rig's drifts) and force_phase [angle] (the force's
+//               measured at: a force-controlled rig's drifts; a response-controlled rig's is the
+//               measurement, with force_sigma) and force_phase [angle] (the force's
 //               phase on the response's clock; the phase is then read as the response's phase to
 //               the force). One stepped sine: frequencies strictly increasing (up) or strictly
 //               decreasing (down).

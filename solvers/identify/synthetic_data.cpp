@@ -96,6 +96,8 @@ void write_synthetic_data(const ResultTable& table, const SyntheticOptions& o, c
       sigma.setConstant(o.noise * v.cwiseAbs().maxCoeff());
     } else if (name == "frequency" && o.kind == DataKind::peaks) {
       for (Index i = 0; i < n; ++i) sigma[i] = o.frequency_noise * v[i];
+    } else if (name == "force" && o.kind == DataKind::frf) {
+      for (Index i = 0; i < n; ++i) sigma[i] = o.force_noise * std::abs(v[i]);
     } else if (name == "phase") {
       sigma.setConstant(o.phase_noise / units[k].to_si);
     } else {

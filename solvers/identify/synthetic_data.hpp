@@ -22,6 +22,7 @@ struct SyntheticOptions {
   std::vector<SyntheticColumn> columns;  // every column the kind requires
   double noise = 0.02;           // relative sigma of amplitudes (per point) and forces (of the loop's largest |force|)
   double frequency_noise = 0.0;  // relative sigma of peak frequencies
+  double force_noise = 0.0;      // relative sigma of an frf file's force column (per point)
   double phase_noise = 0.0;      // sigma of phases [rad]
   int outliers = 0;              // rows whose amplitude or force is scaled by outlier_factor
   double outlier_factor = 1.3;
@@ -33,8 +34,9 @@ struct SyntheticOptions {
 // Writes `file` with sigma columns stating the noise used (so a fit weights the points by it).
 // An amplitude written in a velocity or acceleration unit (m/s, m/s^2, g, ...) from a displacement
 // column is what that transducer would read: multiplied by w or w^2 at each row's frequency_hz,
-// its phase column moved by +90 or +180 degrees. A force column (a stepped sine's force_n) is
-// written without noise: the fit takes it as the excitation.
+// its phase column moved by +90 or +180 degrees. The force column of frf data (a stepped sine's
+// force_n, taken by a fit as the excitation) gets noise only with force_noise (a response-controlled
+// curve's force is the measurement).
 // Throws InputError when a column is missing from the table or a unit is unknown or of the wrong
 // dimension for its column.
 void write_synthetic_data(const ResultTable& table, const SyntheticOptions& options, const std::filesystem::path& file);

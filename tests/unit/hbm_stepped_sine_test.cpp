@@ -181,7 +181,8 @@ TEST_F(HbmSteppedSineTest, DataWithAForcePerPointAreComparedWithTheStepAtThatFor
   }
 }
 
-// The committed rig case (cases/verification/rig_force_controlled_identify.toml), one start: the
+// The committed rig case (cases/verification/rig_force_controlled_identify.toml), one start and no
+// cross-check (ctest's calibrate.verification.rig_force_controlled_identify runs it): the
 // truth of its synthetic data (data/rig/rig_joint_truth.toml) comes back within two standard
 // deviations when each point is solved at the force the shaker held there.
 TEST_F(HbmSteppedSineTest, RigJointComesBackFromCurvesWithDriftingForce) {
@@ -192,6 +193,7 @@ TEST_F(HbmSteppedSineTest, RigJointComesBackFromCurvesWithDriftingForce) {
   for (std::string::size_type at = 0; (at = text.find("\"data/rig/", at)) != std::string::npos;)
     text.replace(at + 1, 0, (cases.generic_string() + "/")), at += cases.generic_string().size() + 10;
   text.replace(text.find("starts = 3"), 10, "starts = 1");
+  text.erase(text.find("cross_check"), text.find('\n', text.find("cross_check")) - text.find("cross_check"));
   const CalibrationOutcome o = calibrate_case(write(text));
   ASSERT_TRUE(o.converged) << o.termination;
   const double truth[] = {5.0e3, 0.5, 0.0015};

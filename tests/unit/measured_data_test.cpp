@@ -313,7 +313,7 @@ TEST_F(MeasuredDataFile, UnknownColumnIsRefusedWithTheColumnsOfTheKind) {
   expect_contains(
       refusal(write("frequency [Hz], amplitud [m]\n1, 1\n", "rig.csv"), DataKind::frf),
       {"rig.csv:1: unknown column 'amplitud'; a frf file has: frequency, amplitude, phase, force, force_phase, "
-       "amplitude_sigma, phase_sigma"});
+       "amplitude_sigma, phase_sigma, force_sigma"});
   expect_contains(refusal(write("force [N], frequency [Hz], amplitude [m], phase [deg]\n1, 1, 1, 1\n", "peaks.csv"),
                           DataKind::peaks),
                   {"peaks.csv:1: unknown column 'phase'; a peaks file has: force, frequency, amplitude"});

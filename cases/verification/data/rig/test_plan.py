@@ -1,6 +1,7 @@
 """The stepped sines of the synthetic rig test (rig_joint_truth.toml): frequencies and the force
-a force-controlled shaker actually held at each of them. Prints the [[analysis.stepped_sine]]
-blocks pasted into rig_joint_truth.toml; run again to check they are unchanged.
+a force-controlled shaker actually held at each of them, then the response-controlled curves.
+Prints the [[analysis.stepped_sine]] and [[analysis.response_control]] blocks pasted into
+rig_joint_truth.toml; run again to check they are unchanged.
 
 Assumptions, each a habit of real rigs rather than data of one: 41 points per curve, 0.05 Hz
 apart, around the resonance of each level; the force dips by up to 25 % of its nominal value at
@@ -31,4 +32,16 @@ for name, force, f0, f1, fr in CURVES:
     print(f'name = "{name}"')
     print("frequency_hz = [" + ", ".join(f"{f:g}" for f in freqs) + "]")
     print("force = [" + ", ".join(f"{F:g}" for F in forces) + "]")
+    print()
+
+# Response-controlled curves: the acceleration of the driving point held at each level while the
+# rig adjusts the force, 61 points 0.05 Hz apart over 77-80 Hz, alternately up and down.
+for k, level in enumerate([5, 7.5, 10, 15, 20, 30, 50, 80]):
+    first, last = (77.0, 80.0) if k % 2 == 0 else (80.0, 77.0)
+    print("[[analysis.response_control]]")
+    print(f'name = "rc_{level:g}"')
+    print('dof = "A.x"')
+    print(f"acceleration = {float(level)}  # [m/s^2]")
+    print(f"frequency_hz = [{first}, {last}]")
+    print("step_hz = 0.05")
     print()

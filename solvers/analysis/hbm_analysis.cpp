@@ -12,7 +12,7 @@
 #include <numbers>
 #include <optional>
 
-#include "analysis/stepped_sine_tables.hpp"
+#include "analysis/hbm_stepped_sines.hpp"
 #include "common/errors.hpp"
 #include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
@@ -475,25 +475,7 @@ HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& p
   o.nonlinear_modes = std::move(modes.branches);
   o.nonlinear_mode_seconds = modes.seconds;
   o.tables.merge(modes.tables);
-  o.stepped_sines.resize(spec.stepped_sines.size());
-  for_each_index(spec.stepped_sines.size(), worker_count(spec.stepped_sines.size(), spec.threads), [&](size_t i) {
-    o.stepped_sines[i] = run_stepped_sine(o.prepared, spec, spec.stepped_sines[i], progress);
-  });
-  for (const HbmSteppedSine& s : o.stepped_sines)
-    if (s.frequency_hz.empty())
-      throw SolverError(fmt::format("stepped sine '{}' converged at no point; at {:.6g} Hz: {}", s.name,
-                                    s.failed_hz.front(), s.failures.front()));
-  add_stepped_sine_tables(o.prepared, spec, o.stepped_sines, o.tables);
-  o.response_controls.resize(spec.response_controls.size());
-  for_each_index(spec.response_controls.size(), worker_count(spec.response_controls.size(), spec.threads),
-                 [&](size_t i) {
-                   o.response_controls[i] = run_response_control(o.prepared, spec, spec.response_controls[i], progress);
-                 });
-  for (const HbmControlled& c : o.response_controls)
-    if (c.frequency_hz.empty())
-      throw SolverError(fmt::format("response control '{}' converged at no frequency; at {:.6g} Hz: {}", c.name,
-                                    c.failed_hz.front(), c.failures.front()));
-  add_response_control_tables(o.prepared, spec, o.response_controls, o.tables);
+  run_stepped_sines(o.prepared, spec, progress, o.stepped_sines, o.response_controls, o.tables);
   return o;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "cases/case_spec.hpp"
@@ -12,7 +13,8 @@ namespace {
 
 constexpr const char* kSupported =
     "material.{E,nu,rho}, section.thickness, mesh.dimensions.<name>, analysis.contact[.<i>].{kn,kt,mu,n0}, "
-    "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force}, analysis.modal_damping, analysis.forces.<i>.amplitude";
+    "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force}, analysis.modal_damping, analysis.forces.<i>.amplitude, "
+    "analysis.model.{stiffness,mass}.<i>.<j>";
 
 std::optional<contact::LawParameter> law_of(const std::string& key) {
   if (key == "kn") return contact::law_kn;
@@ -88,6 +90,15 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
         absent(p, fmt::format("no force {} (the analysis has {})", v.force, forces->size()));
       return (*forces)[v.force].amplitude;
     }
+    double& operator()(const LumpedMatrixEntry& v) {
+      RomSpec* rom = nullptr;
+      if (HbmSpec* hbm = system()) rom = &hbm->model;
+      if (!rom || !rom->matrices) absent(p, "the analysis has no matrices written in the case ([analysis.model])");
+      Eigen::MatrixXd& m = v.mass ? rom->matrices->mass : rom->matrices->stiffness;
+      if (static_cast<Eigen::Index>(std::max(v.row, v.col)) >= m.rows())
+        absent(p, fmt::format("no entry ({}, {}): the model has {} DOFs", v.row, v.col, m.rows()));
+      return m(static_cast<Eigen::Index>(v.row), static_cast<Eigen::Index>(v.col));
+    }
     HbmSpec* system() {
       if (auto* h = std::get_if<HbmSpec>(&spec.analysis)) return h;
       if (auto* t = std::get_if<TimeSpec>(&spec.analysis)) return &t->system;
@@ -140,6 +151,15 @@ CaseParameter parse_parameter_path(const std::string& path) {
         index.find_first_not_of("0123456789") != std::string::npos)
       return unknown();
     p.target = ForceAmplitude{std::stoul(index)};
+  } else if (path.starts_with("analysis.model.stiffness.") || path.starts_with("analysis.model.mass.")) {
+    const bool mass = path.starts_with("analysis.model.mass.");
+    const std::string rest = after(mass ? "analysis.model.mass." : "analysis.model.stiffness.");
+    const size_t dot = rest.find('.');
+    const auto index = [](const std::string& t) {
+      return !t.empty() && t.size() <= 6 && t.find_first_not_of("0123456789") == std::string::npos;
+    };
+    if (dot == std::string::npos || !index(rest.substr(0, dot)) || !index(rest.substr(dot + 1))) return unknown();
+    p.target = LumpedMatrixEntry{mass, std::stoul(rest.substr(0, dot)), std::stoul(rest.substr(dot + 1))};
   } else if (const std::string rest = after("analysis.contact."); !rest.empty()) {
     const size_t dot = rest.find('.');
     if (dot == std::string::npos) {
@@ -165,6 +185,11 @@ double parameter_value(const CaseSpec& spec, const CaseParameter& parameter) {
 
 void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double value) {
   locate(spec, parameter) = value;
+  if (const auto* e = std::get_if<LumpedMatrixEntry>(&parameter.target); e && e->row != e->col) {
+    CaseParameter mirror = parameter;
+    mirror.target = LumpedMatrixEntry{e->mass, e->col, e->row};
+    locate(spec, mirror) = value;  // the matrices stay symmetric
+  }
   if (std::holds_alternative<ArticleDimension>(parameter.target)) {
     spec.model.mesh.two_blade.validate();  // DimensionError is an InputError
   } else if (std::holds_alternative<ContactLawValue>(parameter.target) ||

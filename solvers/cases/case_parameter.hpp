@@ -34,9 +34,16 @@ struct ForceAmplitude {       // analysis.forces.<i>.amplitude (frf, hbm, time)
   size_t force = 0;
 };
 
+struct LumpedMatrixEntry {  // analysis.model.{stiffness,mass}.<i>.<j> of matrices written in the case
+  bool mass = false;
+  size_t row = 0, col = 0;  // set symmetrically: (row, col) and (col, row)
+};
+
 struct CaseParameter {
   std::string path;  // as written in the case file
-  std::variant<MaterialValue, ArticleDimension, ContactLawValue, DamperValue, ModalDampingValue, ForceAmplitude> target;
+  std::variant<MaterialValue, ArticleDimension, ContactLawValue, DamperValue, ModalDampingValue, ForceAmplitude,
+               LumpedMatrixEntry>
+      target;
 };
 
 // The typed reference of `path`; std::invalid_argument (with the supported paths) when its form is unknown.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <numbers>
 
 #include "cases/case_parameter.hpp"
@@ -162,6 +163,15 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     if (param.start < param.lower || param.start > param.upper)
       p.fail("path", fmt::format("the case value {} of '{}' lies outside [{}, {}]", param.start, param.path,
                                  param.lower, param.upper));
+    if (const toml::table* prior = p.optional_table("prior")) {
+      TomlReader q(*prior, p.path() + ".prior", file);
+      const double value = q.number("value"), sigma = q.number("sigma");
+      if (!(sigma > 0.0) || !std::isfinite(sigma))
+        q.fail("sigma", fmt::format("the prior's width must be positive, found {}", sigma));
+      if (!std::isfinite(value)) q.fail("value", "must be finite");
+      q.finish();
+      param.prior = CalibrationParameter::Prior{value, sigma};
+    }
     p.finish();
     c.parameters.push_back(param);
   }
@@ -176,6 +186,20 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   }
   if (c.fit_checks.empty() && c.data.empty())
     r.fail("fit_checks", "needs at least one check name or a [[calibration.data]] block");
+  if (r.has("hold_out")) {  // cross-validation: curves predicted with the identified values, not fitted
+    const std::vector<std::string> held = r.string_array("hold_out");
+    if (held.empty()) r.fail("hold_out", "names no curve to predict (leave it out to fit every curve)");
+    for (const std::string& name : held) {
+      const auto it =
+          std::find_if(c.data.begin(), c.data.end(), [&](const CalibrationData& d) { return d.name == name; });
+      if (it == c.data.end()) r.fail("hold_out", fmt::format("no [[calibration.data]] named '{}'", name));
+      if (it->held_out) r.fail("hold_out", fmt::format("'{}' is named twice", name));
+      it->held_out = true;
+    }
+    if (c.fit_checks.empty() &&
+        std::all_of(c.data.begin(), c.data.end(), [](const CalibrationData& d) { return d.held_out; }))
+      r.fail("hold_out", "holds out every curve: none is left to fit");
+  }
   for (const std::string& name : c.fit_checks) {
     const bool found =
         std::any_of(spec.checks.begin(), spec.checks.end(), [&](const CheckSpec& k) { return k.name == name; });

@@ -18,6 +18,12 @@ struct CalibrationParameter {
   double lower = 0.0;  // bounds, > 0: parameters are fitted in log space
   double upper = 0.0;
   double start = 0.0;  // the value in the case file
+  // A stated prior (value, 1-sigma, in the parameter's units): the residual (p - value) / sigma
+  // joins the fit, so the parameter is held near what is known of it instead of fixed or free.
+  struct Prior {
+    double value = 0.0, sigma = 0.0;
+  };
+  std::optional<Prior> prior;
 };
 
 // One [[calibration.data]] block: a measured curve and the result table that models it.
@@ -28,11 +34,15 @@ struct CalibrationData {
   std::map<std::string, std::string> columns;  // data column -> result column
   // Sigmas when the file has no *_sigma column: relative to each amplitude (peaks, frf), relative
   // to the peak frequency (peaks), absolute in radians (phase), relative to the largest |force| of
-  // the loop (hysteresis: a relative sigma per point would blow up where the force crosses zero).
+  // the loop (hysteresis: a relative sigma per point would blow up where the force crosses zero),
+  // relative to each measured force (a response-controlled curve's).
   double amplitude_uncertainty = 0.02;
   double frequency_uncertainty = 0.001;
   double phase_uncertainty = 0.035;  // 2 degrees
   double force_uncertainty = 0.02;
+  // Named in [calibration] hold_out: not fitted; predicted at the identified values and reported
+  // per curve (cross-validation).
+  bool held_out = false;
   SourceLocation at;
 };
 

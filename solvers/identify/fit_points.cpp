@@ -154,7 +154,12 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
   const MeasuredData& m = d.data;
   const Eigen::VectorXd written = result_column(d, t, "frequency");
   const std::vector<Index> order = increasing_rows(d, written);
-  if (m.has("force")) require_same_forces(d, t, written);
+  // A response-controlled curve measured the force that held the amplitude; a force-controlled
+  // one was driven by its force.
+  const bool force_measured = m.has("force") && t.column_index("held_m").has_value();
+  if (m.has("force") && !force_measured) require_same_forces(d, t, written);
+  const std::vector<const char*> quantities =
+      force_measured ? std::vector<const char*>{"force", "phase"} : std::vector<const char*>{"amplitude", "phase"};
   const auto sorted = [&](const Eigen::VectorXd& v) {
     Eigen::VectorXd out(v.size());
     for (size_t k = 0; k < order.size(); ++k) out[static_cast<Index>(k)] = v[order[k]];
@@ -167,7 +172,7 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
     std::vector<Eigen::VectorXd> dlog;
   };
   std::map<std::string, Fitted> fitted;
-  for (const char* q : {"amplitude", "phase"}) {
+  for (const char* q : quantities) {
     if (!d.columns.count(q)) continue;
     Fitted& c = fitted[q];
     c.y = sorted(result_column(d, t, q));
@@ -183,12 +188,13 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
       throw InputError(
           fmt::format("{}: frequency {:g} Hz lies outside the computed range [{:g}, {:g}] Hz of table '{}' (case {})",
                       m.where(i), fq, f.size() ? f[0] : NAN, f.size() ? f[f.size() - 1] : NAN, d.table, d.at.where()));
-    for (const char* q : {"amplitude", "phase"}) {
+    for (const char* q : quantities) {
       if (!d.columns.count(q)) continue;
       const bool phase = std::string(q) == "phase";
       const double measured = m.column(q)[i];
       const Fitted& c = fitted.at(q);
-      const double sigma = sigma_of(m, q, i, phase ? d.phase_uncertainty : d.amplitude_uncertainty * measured);
+      const double relative = std::string(q) == "force" ? d.force_uncertainty : d.amplitude_uncertainty;
+      const double sigma = sigma_of(m, q, i, phase ? d.phase_uncertainty : relative * measured);
       const double at = std::clamp(fq, f[0], f[f.size() - 1]);
       // Linear in the table's values, so the interpolated derivative is the derivative of the
       // interpolation (the unwrapping adds constants only).
@@ -275,6 +281,36 @@ std::vector<FitPoint> hysteresis_points(const CalibrationData& d, const ResultTa
 
 double FitPoint::misfit() const { return angle ? wrap_angle(computed - measured) : computed - measured; }
 
+double FitPoint::display_scale() const { return angle ? 180.0 / std::numbers::pi : 1.0; }
+
+namespace {
+
+// The unit a result column's values are shown in, by its name's suffix (column_dimension).
+std::string shown_unit(const std::string& column) {
+  const std::optional<Dimension> d = column_dimension(column);
+  if (!d) return "";
+  switch (*d) {
+    case Dimension::length:
+      return "m";
+    case Dimension::force:
+      return "N";
+    case Dimension::frequency:
+      return "Hz";
+    case Dimension::angle:
+      return "deg";
+    case Dimension::compliance:
+      return "m/N";
+    case Dimension::stiffness:
+      return "N/m";
+    case Dimension::time:
+      return "s";
+    default:
+      return "";
+  }
+}
+
+}  // namespace
+
 std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const CalibrationSpec& cal,
                                    const ResultTable* table, const std::vector<std::string>& parameters) {
   std::vector<FitPoint> points;
@@ -287,6 +323,7 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
           gradient = row_dlog(*table, r, e.column, parameters, 1.0 / sigma);
     points.push_back({e.group, e.name.substr(std::min(e.name.size(), e.group.size() + 2)), "check",
                       static_cast<double>(e.key), e.reference, e.computed, sigma, false, std::move(gradient)});
+    points.back().unit = shown_unit(e.column);
   }
   return points;
 }
@@ -294,15 +331,14 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
 std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& tables,
                                   const std::vector<std::string>& parameters) {
   const ResultTable& t = table_of(d, tables);
-  switch (d.data.kind) {
-    case DataKind::peaks:
-      return peak_points(d, t, parameters);
-    case DataKind::frf:
-      return frf_points(d, t, parameters);
-    case DataKind::hysteresis:
-      return hysteresis_points(d, t);
+  std::vector<FitPoint> points = d.data.kind == DataKind::peaks ? peak_points(d, t, parameters)
+                                 : d.data.kind == DataKind::frf ? frf_points(d, t, parameters)
+                                                                : hysteresis_points(d, t);
+  for (FitPoint& p : points) {
+    p.held_out = d.held_out;
+    if (const auto c = d.columns.find(p.quantity); c != d.columns.end()) p.unit = shown_unit(c->second);
   }
-  return {};
+  return points;
 }
 
 }  // namespace bb

@@ -23,8 +23,13 @@ struct FitPoint {
   // d residual / d log p_j per calibration parameter, when the result table carries the model's
   // log-sensitivity columns (analysis/hbm_analysis.hpp); empty otherwise.
   std::vector<double> gradient;
+  bool held_out = false;  // a point of a held-out curve: predicted, not fitted (CalibrationData::held_out)
+  // The unit its values are shown in ("m", "m/N", "Hz", "N", "deg", ... ; empty: none known); SI
+  // in the fields above, degrees shown for an angle (display_scale).
+  std::string unit;
 
-  double misfit() const;  // computed - measured (wrapped for angles)
+  double misfit() const;
+  double display_scale() const;  // 180 / pi for an angle, else 1  // computed - measured (wrapped for angles)
   double residual() const { return misfit() / sigma; }
 };
 
@@ -41,7 +46,9 @@ std::vector<FitPoint> check_points(const std::vector<CheckEntry>& entries, const
 //               computed frequencies must increase or decrease and cover the data's range). Data
 //               with a force per point map `force` to a stepped sine's force column: each table
 //               row at a data frequency must carry that row's force (a failed point is
-//               interpolated over, between its neighbours' forces).
+//               interpolated over, between its neighbours' forces). Against a response-controlled
+//               table (one with a held_m column) the force is what was measured: force and phase
+//               are fitted, the amplitude (what the rig held) is not.
 //   hysteresis  per measured point, the computed force on the branch of the loop that moves the
 //               same way (the direction from the neighbouring measured points), interpolated at
 //               the measured displacement; clamped to the branch's ends outside its range.

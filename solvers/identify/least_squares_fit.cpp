@@ -19,13 +19,41 @@
 namespace bb {
 namespace {
 
+// The robust loss per point: each residual r is replaced by sign(r) sqrt(rho(r^2)), so that the sum
+// of squares Ceres minimizes is sum rho(r_k^2) point by point (Huber: rho(s) = s up to b^2, then
+// 2 b sqrt(s) - b^2; Cauchy: b^2 log(1 + s / b^2)). Given to Ceres as one LossFunction it would act
+// on the whole block's sum, which changes no minimizer: an outlier would weigh as much as any
+// point. A stated prior (quantity "prior") is Gaussian and keeps its residual.
+struct RobustLoss {
+  enum class Kind { none, huber, cauchy } kind = Kind::none;
+  double scale = 1.0;  // b, in sigmas
+
+  static RobustLoss of(const CalibrationSpec& cal) {
+    return {cal.loss == "huber" ? Kind::huber : cal.loss == "cauchy" ? Kind::cauchy : Kind::none, cal.loss_scale};
+  }
+  // (r~, dr~/dr) of a residual r.
+  std::pair<double, double> operator()(double r, const FitPoint& p) const {
+    const double a = std::abs(r), b = scale;
+    if (kind == Kind::none || p.quantity == "prior" || a == 0.0) return {r, 1.0};
+    if (kind == Kind::huber) {
+      if (a <= b) return {r, 1.0};
+      const double t = std::sqrt(2.0 * b * a - b * b);
+      return {std::copysign(t, r), b / t};
+    }
+    const double l = std::log1p(a * a / (b * b));
+    const double t = b * std::sqrt(l);
+    return {std::copysign(t, r), b * a / (std::sqrt(l) * (b * b + a * a))};
+  }
+};
+
 // The residuals r_k = (computed_k - measured_k) / sigma_k (the misfit in units of the stated
-// uncertainty) at log values, for central differences; several may run at once (the Jacobian's
-// columns on workers), hence the atomic count.
+// uncertainty, through the robust loss) at log values, for central differences; several may run at
+// once (the Jacobian's columns on workers), hence the atomic count.
 struct NumericResidual {
   const FitEvaluator* evaluate;
   size_t parameters;
   int* evaluations;
+  RobustLoss loss;
   bool operator()(const std::vector<double>& log_values, double* residuals) const {
     std::vector<double> values(parameters);
     for (size_t i = 0; i < values.size(); ++i) values[i] = std::exp(log_values[i]);
@@ -34,7 +62,7 @@ struct NumericResidual {
       std::atomic_ref<int>(*evaluations).fetch_add(1);
       for (const FitPoint& p : points)
         if (!std::isfinite(p.computed)) return false;  // a peak or mode not found there: Ceres shrinks the step
-      for (size_t k = 0; k < points.size(); ++k) residuals[k] = points[k].residual();
+      for (size_t k = 0; k < points.size(); ++k) residuals[k] = loss(points[k].residual(), points[k]).first;
       return true;
     } catch (const std::exception&) {
       return false;  // an impossible geometry or a failed solve: Ceres shrinks the step
@@ -49,11 +77,12 @@ struct NumericResidual {
 class AnalyticResidual : public ceres::CostFunction {
  public:
   AnalyticResidual(const FitEvaluator* evaluate, size_t parameters, int* evaluations, int residuals,
-                   double derivative_step, size_t workers, int* fallbacks)
+                   double derivative_step, size_t workers, int* fallbacks, RobustLoss loss)
       : evaluate_(evaluate),
         evaluations_(evaluations),
         fallbacks_(fallbacks),
-        differences_(NumericResidual{evaluate, parameters, evaluations}, static_cast<int>(parameters), residuals,
+        loss_(loss),
+        differences_(NumericResidual{evaluate, parameters, evaluations, loss}, static_cast<int>(parameters), residuals,
                      derivative_step, workers) {
     set_num_residuals(residuals);
     mutable_parameter_block_sizes()->push_back(static_cast<int>(parameters));
@@ -72,11 +101,12 @@ class AnalyticResidual : public ceres::CostFunction {
       for (size_t k = 0; k < points.size(); ++k) {
         const FitPoint& p = points[k];
         if (!std::isfinite(p.computed)) return false;  // as NumericResidual: Ceres shrinks the step
-        residuals[k] = p.residual();
+        const auto [r, slope] = loss_(p.residual(), p);
+        residuals[k] = r;
         if (!jacobian) continue;
         differentiable = differentiable && p.gradient.size() == n &&
                          std::all_of(p.gradient.begin(), p.gradient.end(), [](double g) { return std::isfinite(g); });
-        for (size_t j = 0; j < n && differentiable; ++j) jacobians[0][k * n + j] = p.gradient[j];
+        for (size_t j = 0; j < n && differentiable; ++j) jacobians[0][k * n + j] = slope * p.gradient[j];
       }
       if (differentiable) return true;
       ++*fallbacks_;
@@ -90,6 +120,7 @@ class AnalyticResidual : public ceres::CostFunction {
   const FitEvaluator* evaluate_;
   int* evaluations_;
   int* fallbacks_;
+  RobustLoss loss_;
   CentralDifferences differences_;
 };
 
@@ -147,7 +178,7 @@ constexpr double kUnidentified = 1e-8;
 // (Ceres's default min_reciprocal_condition_number, as its DENSE_SVD covariance truncates).
 constexpr double kMinReciprocalCondition = 1e-14;
 
-// The Jacobian of the residuals in log parameters at the problem's values (loss function applied);
+// The Jacobian of the residuals in log parameters at the problem's values (robust loss applied);
 // nullopt when it cannot be evaluated there.
 std::optional<Eigen::MatrixXd> jacobian_at(ceres::Problem& problem) {
   ceres::CRSMatrix crs;
@@ -275,17 +306,16 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
   const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations, int* fallbacks) {
     ceres::CostFunction* cost = nullptr;
+    const RobustLoss loss = RobustLoss::of(cal);
     if (analytic) {
-      cost = new AnalyticResidual(&evaluate, n, evaluations, residuals, cal.derivative_step, column_workers, fallbacks);
+      cost = new AnalyticResidual(&evaluate, n, evaluations, residuals, cal.derivative_step, column_workers, fallbacks,
+                                  loss);
     } else {
       // derivative_step (default 1e-4): above the eigensolver's 1e-10 noise, below the model's curvature.
-      cost = new CentralDifferences(NumericResidual{&evaluate, n, evaluations}, static_cast<int>(n), residuals,
+      cost = new CentralDifferences(NumericResidual{&evaluate, n, evaluations, loss}, static_cast<int>(n), residuals,
                                     cal.derivative_step, column_workers);
     }
-    ceres::LossFunction* loss = nullptr;
-    if (cal.loss == "huber") loss = new ceres::HuberLoss(cal.loss_scale);
-    if (cal.loss == "cauchy") loss = new ceres::CauchyLoss(cal.loss_scale);
-    problem.AddResidualBlock(cost, loss, x.data());
+    problem.AddResidualBlock(cost, nullptr, x.data());
     for (size_t i = 0; i < n; ++i) {
       problem.SetParameterLowerBound(x.data(), static_cast<int>(i), std::log(cal.parameters[i].lower));
       problem.SetParameterUpperBound(x.data(), static_cast<int>(i), std::log(cal.parameters[i].upper));

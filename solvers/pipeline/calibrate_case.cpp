@@ -72,6 +72,15 @@ std::vector<FitPoint> fitted_points(const CalibratedCase& base, const Calibratio
     points.insert(points.end(), e.begin(), e.end());
     if (curves) curves->insert_or_assign(d.table, results.tables.at(d.table));
   }
+  // Stated priors: r = (p - value) / sigma, d r / d log p = p / sigma.
+  for (size_t j = 0; j < cal.parameters.size(); ++j) {
+    const auto& prior = cal.parameters[j].prior;
+    if (!prior) continue;
+    std::vector<double> gradient;
+    if (gradients) gradient.assign(cal.parameters.size(), 0.0), gradient[j] = values[j] / prior->sigma;
+    points.push_back({"priors", cal.parameters[j].path, "prior", static_cast<double>(j + 1), prior->value, values[j],
+                      prior->sigma, false, std::move(gradient)});
+  }
   return points;
 }
 
@@ -108,6 +117,28 @@ std::variant<CalibratedCase, std::string> analytic_case(const CalibratedCase& ba
     if (std::none_of(hbm->sensitivities.begin(), hbm->sensitivities.end(), same)) hbm->sensitivities.push_back(*h);
   }
   return out;
+}
+
+// The case without the stepped sines only held-out curves read: the fit's runs need not compute
+// what only the start and the identified values are compared with.
+CalibratedCase without_held_out_curves(CalibratedCase c, const CalibrationSpec& cal) {
+  HbmSpec* hbm = std::get_if<HbmSpec>(&c.spec.analysis);
+  if (!hbm) return c;
+  const auto only_held_out = [&](const std::string& name) {
+    const std::string table = "frf_" + name;
+    bool held = false;
+    for (const CalibrationData& d : cal.data)
+      if (d.table == table) {
+        if (!d.held_out) return false;
+        held = true;
+      }
+    for (const CheckSpec& k : c.spec.checks)
+      if (k.result == table) return false;
+    return held;
+  };
+  std::erase_if(hbm->stepped_sines, [&](const SteppedSineSpec& s) { return only_held_out(s.name); });
+  std::erase_if(hbm->response_controls, [&](const ResponseControlSpec& s) { return only_held_out(s.name); });
+  return c;
 }
 
 // Replaces the number at `path` of a case table (for the calibrated copy of the case file).
@@ -178,16 +209,29 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   // finite value at some parameters costs that evaluation central differences (least_squares_fit).
   if (sensitivity_base)
     for (const FitPoint& p : before)
-      if (p.gradient.size() != cal->parameters.size())
+      if (!p.held_out && p.gradient.size() != cal->parameters.size())
         numeric_reason = fmt::format("no sensitivities for '{}' of '{}'", p.label, p.set);
   const bool analytic = numeric_reason.empty();
   const CalibratedCase& model = analytic ? *sensitivity_base : base;
   // A run whose Jacobian is not asked for (a trial step, a central difference) runs the case
   // without the sensitivities the analytic Jacobian added: the same values, none of their cost.
-  const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
-    return fitted_points(gradients ? model : base, *cal, values, limits, nullptr, gradients);
+  // Held-out curves are predicted at the start and at the identified values, never fitted.
+  const auto fitted_only = [](std::vector<FitPoint> points) {
+    points.erase(std::remove_if(points.begin(), points.end(), [](const FitPoint& p) { return p.held_out; }),
+                 points.end());
+    return points;
   };
-  CalibrationOutcome out = fit_parameters(*cal, evaluate, analytic, static_cast<int>(before.size()), progress);
+  const CalibratedCase fit_model = without_held_out_curves(model, *cal), fit_base = without_held_out_curves(base, *cal);
+  const CalibrationSpec fit_spec = [&] {
+    CalibrationSpec f = *cal;
+    std::erase_if(f.data, [](const CalibrationData& d) { return d.held_out; });
+    return f;
+  }();
+  const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
+    return fitted_only(fitted_points(gradients ? fit_model : fit_base, fit_spec, values, limits, nullptr, gradients));
+  };
+  CalibrationOutcome out =
+      fit_parameters(*cal, evaluate, analytic, static_cast<int>(fitted_only(before).size()), progress);
   out.before = before;
   out.curves_before = std::move(curves_before);
   out.derivatives = analytic ? fmt::format("analytic (implicit function theorem, hbm/sensitivity.hpp){}",

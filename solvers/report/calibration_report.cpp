@@ -28,19 +28,28 @@ std::ofstream open_out(const fs::path& file) {
   return out;
 }
 
-// Root mean square of the residuals (misfit / sigma) of the points of one set, or of all.
+// Root mean square of the residuals (misfit / sigma) of the points of one set, or of all fitted ones.
 double rms_residual(const std::vector<FitPoint>& points, const std::string& set = {}) {
   double sum = 0.0;
   int n = 0;
   for (const FitPoint& p : points)
-    if (set.empty() || p.set == set) sum += p.residual() * p.residual(), ++n;
+    if (set.empty() ? !p.held_out : p.set == set) sum += p.residual() * p.residual(), ++n;
   return n ? std::sqrt(sum / n) : 0.0;
 }
 
-std::vector<std::string> sets_of(const std::vector<FitPoint>& points) {
+// The largest |computed - measured| / |measured| of a set's points.
+double largest_relative_misfit(const std::vector<FitPoint>& points, const std::string& set) {
+  double worst = 0.0;
+  for (const FitPoint& p : points)
+    if (p.set == set && !p.angle && p.measured != 0.0) worst = std::max(worst, std::abs(p.misfit() / p.measured));
+  return worst;
+}
+
+// The sets of the fitted points, or of the held-out ones.
+std::vector<std::string> sets_of(const std::vector<FitPoint>& points, bool held_out = false) {
   std::vector<std::string> sets;
   for (const FitPoint& p : points)
-    if (std::find(sets.begin(), sets.end(), p.set) == sets.end()) sets.push_back(p.set);
+    if (p.held_out == held_out && std::find(sets.begin(), sets.end(), p.set) == sets.end()) sets.push_back(p.set);
   return sets;
 }
 
@@ -92,6 +101,7 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
   const std::string y_label = quantity == "phase"              ? "phase [deg]"
                               : quantity == "frequency"        ? "frequency [Hz]"
                               : quantity == "tangential_force" ? "tangential force [N]"
+                              : quantity == "force"            ? "force [N]"
                               : y_dim == Dimension::compliance ? "amplitude per newton [m/N]"
                                                                : "amplitude [m]";
   std::string shown = quantity;
@@ -183,13 +193,15 @@ void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_f
   }
   {
     std::ofstream out = open_out(out_dir / "fitted_points.csv");
-    out << "set,point,quantity,x,measured,sigma,computed_start,residual_start,computed_identified,residual_"
-           "identified\n";
+    // Values in the unit of the `unit` column (phases in degrees, as the data and tables give them).
+    out << "set,point,quantity,unit,x,measured,sigma,computed_start,residual_start,computed_identified,residual_"
+           "identified,held_out\n";
     for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
       const FitPoint& a = o.after[k];
-      out << fmt::format("\"{}\",\"{}\",{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g}\n", a.set, a.label,
-                         a.quantity, a.x, a.measured, a.sigma, o.before[k].computed, o.before[k].residual(), a.computed,
-                         a.residual());
+      const double u = a.display_scale();
+      out << fmt::format("\"{}\",\"{}\",{},{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g},{}\n", a.set,
+                         a.label, a.quantity, a.unit, a.x, a.measured * u, a.sigma * u, o.before[k].computed * u,
+                         o.before[k].residual(), a.computed * u, a.residual(), a.held_out ? 1 : 0);
     }
   }
 }
@@ -223,6 +235,17 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
                       rms_residual(o.after, set));
   }
   md << '\n';
+  if (const std::vector<std::string> held = sets_of(o.after, true); !held.empty()) {
+    md << "Held-out curves (cross-validation: predicted with the identified values, not fitted):\n\n"
+          "| held-out set | points | rms residual at start | rms residual identified | largest relative error "
+          "identified |\n|---|---|---|---|---|\n";
+    for (const std::string& set : held) {
+      const auto n = std::count_if(o.after.begin(), o.after.end(), [&](const FitPoint& p) { return p.set == set; });
+      md << fmt::format("| {} | {} | {:.3g} | {:.3g} | {:.3g} % |\n", set, n, rms_residual(o.before, set),
+                        rms_residual(o.after, set), 100.0 * largest_relative_misfit(o.after, set));
+    }
+    md << '\n';
+  }
   if (!o.spec.fit_checks.empty()) {
     md << "| fitted check | sigma (relative) |\n|---|---|\n";
     for (const std::string& name : o.spec.fit_checks)
@@ -231,8 +254,8 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   }
   for (const CalibrationData& d : o.spec.data)
     md << fmt::format(
-        "Data set `{}`: {} file `{}` ({} rows), fitted to table `{}`{}.\n\n", d.name, data_kind_name(d.data.kind),
-        d.data.file.filename().string(), d.data.rows(), d.table,
+        "Data set `{}`: {} file `{}` ({} rows), {} table `{}`{}.\n\n", d.name, data_kind_name(d.data.kind),
+        d.data.file.filename().string(), d.data.rows(), d.held_out ? "held out, predicted by" : "fitted to", d.table,
         d.data.derivative == 0
             ? std::string()
             : fmt::format("; its {} amplitudes (in {}) read as displacement, each row divided by "
@@ -292,21 +315,26 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     md << "\n## Fitted curves over the data\n\n";
     for (const CalibrationData& d : o.spec.data)
       for (const auto& [column, result] : d.columns) {
-        if (column == "force" || (column == "frequency" && d.data.kind != DataKind::peaks) ||
-            column == "relative_displacement")
+        const bool fitted = std::any_of(o.after.begin(), o.after.end(),
+                                        [&](const FitPoint& p) { return p.set == d.name && p.quantity == column; });
+        if ((column == "force" && !fitted) || (column == "frequency" && d.data.kind != DataKind::peaks) ||
+            column == "relative_displacement" || (column == "amplitude" && !fitted))
           continue;
         const Plot p = plot_data_set(o, d, column, out_dir);
         md << (p.file.empty() ? fmt::format("- {}: not drawn ({})\n", p.title, p.note)
                               : fmt::format("![{}]({})\n\n", p.title, p.file));
       }
   }
-  md << "\n## Fitted points\n\n| set | point | measured | sigma | at start | residual | identified | residual "
-        "|\n|---|---|---|---|---|---|---|---|\n";
+  md << "\n## Fitted points\n\n(Points of held-out sets are predicted, not fitted.)\n\n| set | point | unit | measured "
+        "| "
+        "sigma | at start | residual | identified | residual |\n|---|---|---|---|---|---|---|---|---|\n";
   for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
     const FitPoint& b = o.before[k];
     const FitPoint& a = o.after[k];
-    md << fmt::format("| {} | {} | {:.6g} | {:.3g} | {:.6g} | {:+.2f} | {:.6g} | {:+.2f} |\n", a.set, a.label,
-                      a.measured, a.sigma, b.computed, b.residual(), a.computed, a.residual());
+    const double u = a.display_scale();
+    md << fmt::format("| {} | {} | {} | {:.6g} | {:.3g} | {:.6g} | {:+.2f} | {:.6g} | {:+.2f} |\n", a.set, a.label,
+                      a.unit.empty() ? "-" : a.unit, a.measured * u, a.sigma * u, b.computed * u, b.residual(),
+                      a.computed * u, a.residual());
   }
   md << fmt::format(
       "\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`, `fitted_points.csv`{}.\n",

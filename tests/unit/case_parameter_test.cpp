@@ -43,6 +43,36 @@ TEST(CaseParameter, PathsOfAnUnknownFormOrAbsentFromTheCaseAreRefused) {
     EXPECT_THROW((void)parameter_value(spec, parse_parameter_path(absent)), std::invalid_argument) << absent;
 }
 
+TEST(CaseParameter, LumpedMatrixEntriesAreWrittenSymmetrically) {
+  CaseSpec spec = oscillator();  // k = 1e6 N/m, m = 1 kg
+  const CaseParameter k00 = parse_parameter_path("analysis.model.stiffness.0.0");
+  const CaseParameter m00 = parse_parameter_path("analysis.model.mass.0.0");
+  EXPECT_EQ(parameter_value(spec, k00), 1.0e6);
+  EXPECT_EQ(parameter_value(spec, m00), 1.0);
+  set_parameter_value(spec, k00, 2.0e6);
+  set_parameter_value(spec, m00, 3.0);
+  const ReducedModel& rom = *std::get<HbmSpec>(spec.analysis).model.matrices;
+  EXPECT_EQ(rom.stiffness(0, 0), 2.0e6);
+  EXPECT_EQ(rom.mass(0, 0), 3.0);
+  EXPECT_THROW((void)parameter_value(spec, parse_parameter_path("analysis.model.stiffness.1.0")),
+               std::invalid_argument);  // one DOF
+  for (const char* bad : {"analysis.model.stiffness.0", "analysis.model.mass.a.0", "analysis.model.damping.0.0"})
+    EXPECT_THROW((void)parse_parameter_path(bad), std::invalid_argument) << bad;
+  // An off-diagonal entry moves its mirror.
+  CaseSpec two = parse_case_table(
+      toml::parse("[case]\nname = \"b\"\n[analysis]\ntype = \"hbm\"\nfrequency_hz = [100.0, 200.0]\nstep_hz = "
+                  "1.0\nmodal_damping = 0.01\nforces = [{ dof = \"A.x\", amplitude = 1.0 }]\nforce_levels = [1.0]\n"
+                  "responses = [\"A.x\"]\n[analysis.model]\nname = \"b\"\ndofs = [\"A.x\", \"B.x\"]\n"
+                  "stiffness = [[1.1e6, -1.0e5], [-1.0e5, 1.1e6]]\nmass = [[1.0, 0.0], [0.0, 1.0]]\n"
+                  "[[analysis.contact]]\nname = \"c\"\ntangential = { \"A.x\" = 1.0 }\nkn = 1.0e6\nkt = 1.0e6\n"
+                  "mu = 0.3\nn0 = 30.0\n"),
+      "blades.toml");
+  set_parameter_value(two, parse_parameter_path("analysis.model.stiffness.0.1"), -2.0e5);
+  const ReducedModel& r2 = *std::get<HbmSpec>(two.analysis).model.matrices;
+  EXPECT_EQ(r2.stiffness(0, 1), -2.0e5);
+  EXPECT_EQ(r2.stiffness(1, 0), -2.0e5);
+}
+
 TEST(CaseParameter, AWriteThatBreaksTheContactLawIsAnInputError) {
   CaseSpec spec = oscillator();
   EXPECT_THROW(set_parameter_value(spec, parse_parameter_path("analysis.contact.0.mu"), -1.0), InputError);

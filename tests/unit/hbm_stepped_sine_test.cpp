@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -181,20 +182,62 @@ TEST_F(HbmSteppedSineTest, DataWithAForcePerPointAreComparedWithTheStepAtThatFor
   }
 }
 
-// The committed rig case (cases/verification/rig_force_controlled_identify.toml), one start and no
-// cross-check (ctest's calibrate.verification.rig_force_controlled_identify runs it): the
-// truth of its synthetic data (data/rig/rig_joint_truth.toml) comes back within two standard
-// deviations when each point is solved at the force the shaker held there.
-TEST_F(HbmSteppedSineTest, RigJointComesBackFromCurvesWithDriftingForce) {
+// A response-controlled curve measured the force: against a table with held_m the force and the
+// phase are fitted, with the force's own sigma, and the held amplitude is not.
+TEST_F(HbmSteppedSineTest, AResponseControlledCurveFitsTheForceThatHeldTheAmplitude) {
+  ResultTable t =
+      table_from_rows("frf_rc", {"point", "frequency_hz", "force_n", "held_m", "A.x_amp_m", "A.x_phase_deg"},
+                      {{1, 78.0, 0.30, 1e-4, 1e-4, -60.0}, {2, 79.0, 0.20, 1e-4, 1e-4, -90.0}});
+  ResultTables tables;
+  tables.emplace("frf_rc", t);
+  CalibrationData d;
+  d.name = "rc";
+  d.table = "frf_rc";
+  d.data = read_measured_data(write("frequency [Hz], amplitude [m], phase [deg], force [N], force_sigma [N]\n"
+                                    "78.5, 1e-4, -80, 0.27, 0.01\n",
+                                    "rc.csv"),
+                              DataKind::frf);
+  d.columns = {
+      {"frequency", "frequency_hz"}, {"amplitude", "A.x_amp_m"}, {"phase", "A.x_phase_deg"}, {"force", "force_n"}};
+  const std::vector<FitPoint> points = data_points(d, tables);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0].quantity, "force");
+  EXPECT_NEAR(points[0].computed, 0.25, 1e-15);
+  EXPECT_DOUBLE_EQ(points[0].measured, 0.27);
+  EXPECT_DOUBLE_EQ(points[0].sigma, 0.01);
+  EXPECT_EQ(points[1].quantity, "phase");
+  EXPECT_NEAR(points[1].computed, -75.0 * std::numbers::pi / 180.0, 1e-12);
+}
+
+// The committed rig case (cases/verification/rig_force_controlled_identify.toml) with its data
+// read from the source tree, one start and no cross-check (ctest's
+// calibrate.verification.rig_force_controlled_identify runs those); `parameters` replaces its list.
+std::string rig_case(const std::string& parameters = {}) {
   const std::filesystem::path cases = std::filesystem::path(BB_SOURCE_DIR) / "cases" / "verification";
   std::ifstream in(cases / "rig_force_controlled_identify.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  ASSERT_FALSE(text.empty());
+  EXPECT_FALSE(text.empty());
+  const std::string folder = cases.generic_string() + "/";
   for (std::string::size_type at = 0; (at = text.find("\"data/rig/", at)) != std::string::npos;)
-    text.replace(at + 1, 0, (cases.generic_string() + "/")), at += cases.generic_string().size() + 10;
+    text.insert(at + 1, folder), at += folder.size() + 10;
   text.replace(text.find("starts = 3"), 10, "starts = 1");
-  text.erase(text.find("cross_check"), text.find('\n', text.find("cross_check")) - text.find("cross_check"));
-  const CalibrationOutcome o = calibrate_case(write(text));
+  const auto line = [&](const std::string& key) {
+    const auto at = text.find(key);
+    return std::pair{at, text.find('\n', at) - at};
+  };
+  const auto [cross, cross_n] = line("cross_check");
+  text.erase(cross, cross_n);
+  if (!parameters.empty()) {
+    const auto at = text.find("parameters = [");
+    text.replace(at, text.find("]\n", text.find("},\n]", at)) + 1 - at, parameters);
+  }
+  return text;
+}
+
+// The truth of the rig's synthetic data (data/rig/rig_joint_truth.toml) comes back within two
+// standard deviations when each point is solved at the force the shaker held there.
+TEST_F(HbmSteppedSineTest, RigJointComesBackFromCurvesWithDriftingForce) {
+  const CalibrationOutcome o = calibrate_case(write(rig_case()));
   ASSERT_TRUE(o.converged) << o.termination;
   const double truth[] = {5.0e3, 0.5, 0.0015};
   for (size_t i = 0; i < 3; ++i) {
@@ -203,6 +246,29 @@ TEST_F(HbmSteppedSineTest, RigJointComesBackFromCurvesWithDriftingForce) {
     ASSERT_TRUE(std::isfinite(o.std_devs[i]) && o.std_devs[i] > 0.0);
     EXPECT_LT(std::abs(o.values[i] - truth[i]), 2 * o.std_devs[i]);
   }
+  // The held-out response-controlled curves are predicted, not fitted: their points are reported
+  // apart, and at the identified values their forces lie within the data's noise (2 %, 1 sigma).
+  size_t held = 0;
+  for (const FitPoint& p : o.after)
+    if (p.held_out) {
+      ++held;
+      if (p.quantity == "force") EXPECT_LT(std::abs(p.residual()), 5.0) << p.set << " " << p.label;
+    }
+  EXPECT_EQ(held, 8u * 61u * 2u);  // force and phase
+}
+
+// A stated prior holds a parameter near what is known of it: a tight prior away from the truth
+// wins over the data, and the standard deviation is at most the prior's (scaled as every one is).
+TEST_F(HbmSteppedSineTest, ATightPriorHoldsItsParameterAndBoundsItsSpread) {
+  const CalibrationOutcome o = calibrate_case(write(rig_case(
+      "parameters = [\n  { path = \"analysis.contact.0.kt\", lower = 1.0e3, upper = 1.0e5 },\n"
+      "  { path = \"analysis.contact.0.mu\", lower = 0.05, upper = 2.0, prior = { value = 0.45, sigma = 1.0e-4 } },\n"
+      "  { path = \"analysis.modal_damping\", lower = 1.0e-4, upper = 0.02 },\n]")));
+  ASSERT_TRUE(o.converged) << o.termination;
+  EXPECT_NEAR(o.values[1], 0.45, 5e-4);  // 0.5 by the data alone, 0.0052 apart
+  // (the standard deviations are scaled by sqrt(reduced chi-square) when that exceeds 1)
+  EXPECT_LE(o.std_devs[1], 1.0e-4 * std::max(1.0, std::sqrt(o.reduced_chi_square)) * 1.0001);
+  EXPECT_TRUE(std::any_of(o.after.begin(), o.after.end(), [](const FitPoint& p) { return p.set == "priors"; }));
 }
 
 }  // namespace

@@ -75,3 +75,44 @@ TEST(LeastSquaresFit, TwoParametersThatTradeOffAreNamedAsACombination) {
 
 }  // namespace
 }  // namespace bb
+
+namespace bb {
+namespace {
+
+// A constant a measured 20 times with sigma 1 around 2.0 (alternating +-0.5) plus one point at
+// 12.0 (10 sigma off): the mean is pulled to 2.476; a robust loss acts on each point, so the
+// outlier weighs as a point beyond the loss scale and the estimate stays near 2.0.
+FitEvaluator constant_with_outlier() {
+  return [](const std::vector<double>& v, bool) {
+    std::vector<FitPoint> points;
+    for (int k = 0; k <= 20; ++k) {
+      FitPoint p;
+      p.set = "level";
+      p.x = k;
+      p.measured = k == 20 ? 12.0 : 2.0 + (k % 2 ? 0.5 : -0.5);
+      p.computed = v[0];
+      p.sigma = 1.0;
+      points.push_back(p);
+    }
+    return points;
+  };
+}
+
+TEST(LeastSquaresFit, TheRobustLossActsOnEachPointNotOnTheWholeCost) {
+  CalibrationSpec spec = spec_of({"a"});
+  const CalibrationOutcome plain = fit_parameters(spec, constant_with_outlier(), false, 21);
+  EXPECT_NEAR(plain.values[0], 52.0 / 21.0, 1e-6);  // the mean: (20 x 2 + 12) / 21
+  spec.loss = "huber";
+  spec.loss_scale = 1.0;
+  // Huber: 20 points inside the scale and the outlier's constant pull b: 20 (a - 2) = 1 -> 2.05.
+  const CalibrationOutcome huber = fit_parameters(spec, constant_with_outlier(), false, 21);
+  ASSERT_TRUE(huber.converged) << huber.termination;
+  EXPECT_NEAR(huber.values[0], 2.05, 1e-4);
+  spec.loss = "cauchy";
+  const CalibrationOutcome cauchy = fit_parameters(spec, constant_with_outlier(), false, 21);
+  ASSERT_TRUE(cauchy.converged) << cauchy.termination;
+  EXPECT_LT(std::abs(cauchy.values[0] - 2.0), 0.05);
+}
+
+}  // namespace
+}  // namespace bb

@@ -1,8 +1,27 @@
-#include "analysis/stepped_sine_tables.hpp"
+#include "analysis/hbm_stepped_sines.hpp"
 
 #include <fmt/format.h>
 
+#include "common/errors.hpp"
+#include "common/parallel_indices.hpp"
+
 namespace bb {
+namespace {
+
+// Each stepped sine (force- or response-controlled) on the analysis's threads; one that converges at
+// no frequency fails the run, as a level without a solution does.
+template <class Out, class Spec, class Run>
+std::vector<Out> run_stepped(const std::vector<Spec>& specs, int threads, const char* what, const Run& run) {
+  std::vector<Out> out(specs.size());
+  for_each_index(specs.size(), worker_count(specs.size(), threads), [&](size_t i) { out[i] = run(specs[i]); });
+  for (const Out& s : out)
+    if (s.frequency_hz.empty())
+      throw SolverError(fmt::format("{} '{}' converged at no frequency; at {:.6g} Hz: {}", what, s.name,
+                                    s.failed_hz.front(), s.failures.front()));
+  return out;
+}
+
+}  // namespace
 
 void add_stepped_sine_tables(const PreparedHbm& p, const HbmSpec& spec, const std::vector<HbmSteppedSine>& sines,
                              ResultTables& tables) {
@@ -95,6 +114,16 @@ void add_response_control_tables(const PreparedHbm& p, const HbmSpec& spec, cons
   t.add_text_column("held", quantities);
   t.add_text_column("first_failure", first_failures);
   tables.emplace("response_control", std::move(t));
+}
+
+void run_stepped_sines(const PreparedHbm& p, const HbmSpec& spec, const HbmProgress& progress,
+                       std::vector<HbmSteppedSine>& sines, std::vector<HbmControlled>& controls, ResultTables& tables) {
+  sines = run_stepped<HbmSteppedSine>(spec.stepped_sines, spec.threads, "stepped sine",
+                                      [&](const auto& s) { return run_stepped_sine(p, spec, s, progress); });
+  add_stepped_sine_tables(p, spec, sines, tables);
+  controls = run_stepped<HbmControlled>(spec.response_controls, spec.threads, "response control",
+                                        [&](const auto& c) { return run_response_control(p, spec, c, progress); });
+  add_response_control_tables(p, spec, controls, tables);
 }
 
 }  // namespace bb

@@ -1,4 +1,4 @@
-// The tables of an hbm analysis's stepped sines: force-controlled (forced/hbm_stepped_sine.hpp),
+// The stepped sines of an hbm analysis, run and tabled: force-controlled (forced/hbm_stepped_sine.hpp),
 // frf_<name> with the force of each point and stepped_sine_cost; response-controlled
 // (forced/hbm_response_control.hpp), frf_<name> with the force that holds the response and
 // response_control.
@@ -27,5 +27,10 @@ void add_stepped_sine_tables(const PreparedHbm& p, const HbmSpec& spec, const st
 // first_failure.
 void add_response_control_tables(const PreparedHbm& p, const HbmSpec& spec, const std::vector<HbmControlled>& controls,
                                  ResultTables& tables);
+
+// Runs spec.stepped_sines and spec.response_controls on spec.threads workers and adds the tables
+// above. SolverError when one converges at no frequency (as a level without a solution).
+void run_stepped_sines(const PreparedHbm& p, const HbmSpec& spec, const HbmProgress& progress,
+                       std::vector<HbmSteppedSine>& sines, std::vector<HbmControlled>& controls, ResultTables& tables);
 
 }  // namespace bb

@@ -218,6 +218,13 @@ std::optional<HbmParameter> hbm_parameter(const CaseParameter& parameter) {
     out.kind = HbmParameter::Kind::modal_damping;
     return out;
   }
+  if (const auto* e = std::get_if<LumpedMatrixEntry>(&parameter.target)) {
+    out.kind = HbmParameter::Kind::lumped_matrix;
+    out.mass = e->mass;
+    out.row = e->row;
+    out.col = e->col;
+    return out;
+  }
   if (const auto* c = std::get_if<ContactLawValue>(&parameter.target); c && c->contact) {
     out.kind = HbmParameter::Kind::contact_law;
     out.contact = *c->contact;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace bb {
 
 std::optional<std::string> unsupported_sensitivity(const HbmSpec& spec, const HbmParameter& parameter) {
@@ -13,6 +15,14 @@ std::optional<std::string> unsupported_sensitivity(const HbmSpec& spec, const Hb
       return std::nullopt;
     case HbmParameter::Kind::damper_law:
       if (!spec.damper) return "the analysis has no [analysis.damper]";
+      return std::nullopt;
+    case HbmParameter::Kind::lumped_matrix:
+      if (!spec.model.matrices) return "needs the stiffness and mass matrices written in the case ([analysis.model])";
+      if (spec.damper || spec.cyclic || spec.gap_damper)
+        return "an entry of the lumped matrices is differentiated without a damper or [analysis.cyclic]";
+      if (std::max(parameter.row, parameter.col) >= static_cast<size_t>(spec.model.matrices->size()))
+        return fmt::format("no entry ({}, {}): the model has {} DOFs", parameter.row, parameter.col,
+                           spec.model.matrices->size());
       return std::nullopt;
     case HbmParameter::Kind::contact_law:
       if (parameter.contact >= spec.contacts.size())

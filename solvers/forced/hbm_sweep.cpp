@@ -17,6 +17,7 @@
 #include "forced/hbm_level_system.hpp"
 #include "forced/hbm_peak_sensitivity.hpp"
 #include "forced/hbm_response.hpp"
+#include "forced/linear_model.hpp"
 #include "frf/sweep.hpp"
 #include "hbm/sensitivity.hpp"
 
@@ -43,6 +44,35 @@ hbm::HarmonicBalance patient_level_system(const PreparedHbm& p, const HbmSpec& s
   return level_system(p, patient, force, harmonics, samples);
 }
 
+// p d(model)/dp for an entry p of the lumped K or M (and its mirror). The damping built from the
+// matrices (modal, Rayleigh) moves with them: its derivative by central differences of that
+// construction, 1e-6 apart in log p (an eigenproblem of the model's size; C given as a matrix stays).
+hbm::ModelDerivative lumped_entry_derivative(const PreparedHbm& p, const HbmSpec& spec, const HbmParameter& parameter) {
+  const auto i = static_cast<Eigen::Index>(parameter.row), j = static_cast<Eigen::Index>(parameter.col);
+  const Eigen::Index n = p.model.mass.rows();
+  const auto scaled = [&](double factor) {
+    ReducedModel m = p.linear;
+    Eigen::MatrixXd& a = parameter.mass ? m.mass : m.stiffness;
+    a(i, j) *= factor;
+    if (i != j) a(j, i) *= factor;
+    return m;
+  };
+  hbm::ModelDerivative d;
+  Eigen::MatrixXd e = Eigen::MatrixXd::Zero(n, n);
+  e(i, j) = (parameter.mass ? p.linear.mass : p.linear.stiffness)(i, j);
+  e(j, i) = e(i, j);
+  (parameter.mass ? d.mass : d.stiffness) = e;
+  (parameter.mass ? d.stiffness : d.mass) = Eigen::MatrixXd::Zero(n, n);
+  d.damping = Eigen::MatrixXd::Zero(n, n);
+  if (!spec.damping_matrix) {
+    const double h = 1e-6;
+    d.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) =
+        (damping_matrix(spec.damping, scaled(std::exp(h))) - damping_matrix(spec.damping, scaled(std::exp(-h)))) /
+        (2.0 * h);
+  }
+  return d;
+}
+
 // d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
 // value turns d/dp into d/d(log p). The damper's contacts come first in the model.
 std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec,
@@ -52,6 +82,10 @@ std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const Hb
   for (const HbmParameter& parameter : spec.sensitivities) {
     if (parameter.kind == HbmParameter::Kind::modal_damping) {  // C = zeta C1: dC/d(log zeta) = C
       out.push_back(hbm::damping_scale_derivative(m));
+      continue;
+    }
+    if (parameter.kind == HbmParameter::Kind::lumped_matrix) {
+      out.push_back(lumped_entry_derivative(p, spec, parameter));
       continue;
     }
     const bool damper = parameter.kind == HbmParameter::Kind::damper_law;

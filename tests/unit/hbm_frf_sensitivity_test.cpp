@@ -3,7 +3,8 @@
 //   - The dlog columns of the 1-DOF friction oscillator (cases/verification/friction_oscillator_hbm.toml
 //     in a shorter band) agree with central differences of whole re-runs of the case, at a stuck
 //     (0.01 N) and a stick-slip (3 N) level; so do those of the two-blade model with the rigid
-//     damper (damper.kt, damper.mu, zeta) at a slipping and a nearly stuck level.
+//     damper (damper.kt, damper.mu, zeta) at a slipping and a nearly stuck level; and those of the
+//     lumped stiffness and mass.
 //   - Paths the derivative does not cover are refused with file:line.
 //   - The FRF round trip of curve_identification_test.cpp (same data, seeds and start values)
 //     fitted with analytic derivatives recovers kt, mu and zeta within 2 sigma with fewer model
@@ -89,12 +90,12 @@ struct CentralDifferences {
   }
 };
 
-TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
-  const std::vector<std::string> paths = {"analysis.contact.0.kt", "analysis.contact.0.mu", "analysis.contact.0.n0",
-                                          "analysis.modal_damping"};
-  const std::string list =
-      R"(sensitivities = ["analysis.contact.0.kt", "analysis.contact.0.mu", "analysis.contact.0.n0", "analysis.modal_damping"])";
-  const std::filesystem::path file = dir_ / "case.toml";
+// The dlog columns of `paths` on the oscillator at a stuck (0.01 N) and a stick-slip (3 N) level
+// against central differences of whole runs.
+void expect_dlog_columns_match_whole_runs(const std::vector<std::string>& paths, const std::filesystem::path& file) {
+  std::string list = "sensitivities = [";
+  for (const std::string& p : paths) list += "\"" + p + "\", ";
+  list += "]";
   const ResultTables analytic = run(toml::parse(oscillator_case("[0.01, 3.0]", list)), file);
   const toml::table plain = toml::parse(oscillator_case("[0.01, 3.0]", ""));
   for (const std::string& path : paths) {
@@ -108,7 +109,7 @@ TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
         // Relative to the column's scale: |z| itself for the amplitude, one degree for the phase.
         const double scale = std::string(q) == "A.x_amp_m" ? value.cwiseAbs().maxCoeff() : 1.0;
         const double error = fd.error(level, q, exact) / scale;
-        std::printf("  %-9s %-14s d/dlog %-22s max |p d/dp| %.3e, max |analytic - FD| %.2e (relative to %s)\n", level,
+        std::printf("  %-9s %-14s d/dlog %-28s max |p d/dp| %.3e, max |analytic - FD| %.2e (relative to %s)\n", level,
                     q, path.c_str(), exact.cwiseAbs().maxCoeff() / scale, error,
                     std::string(q) == "A.x_amp_m" ? "max |z|" : "1 deg");
         // The analytic columns are exact; what is left is the differences' own error (measured:
@@ -117,6 +118,18 @@ TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
       }
     }
   }
+}
+
+TEST_F(HbmFrfSensitivity, DlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
+  expect_dlog_columns_match_whole_runs(
+      {"analysis.contact.0.kt", "analysis.contact.0.mu", "analysis.contact.0.n0", "analysis.modal_damping"},
+      dir_ / "case.toml");
+}
+
+// An entry of the lumped K or M moves the modal damping built from them too (its derivative by
+// differences of that construction): the columns still meet whole runs.
+TEST_F(HbmFrfSensitivity, LumpedMatrixDlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
+  expect_dlog_columns_match_whole_runs({"analysis.model.stiffness.0.0", "analysis.model.mass.0.0"}, dir_ / "case.toml");
 }
 
 // The two-blade reduced model with the rigid underplatform damper of cases/thesis/table11_calibrate_contact.toml

@@ -239,8 +239,9 @@ std::string rig_case(const std::string& parameters = {}) {
 TEST_F(HbmSteppedSineTest, RigJointComesBackFromCurvesWithDriftingForce) {
   const CalibrationOutcome o = calibrate_case(write(rig_case()));
   ASSERT_TRUE(o.converged) << o.termination;
-  const double truth[] = {5.0e3, 0.5, 0.0015};
-  for (size_t i = 0; i < 3; ++i) {
+  const double truth[] = {5.0e3, 0.5, 0.0015, 2.4e5, 1.0};
+  ASSERT_EQ(o.values.size(), 5u);
+  for (size_t i = 0; i < 5; ++i) {
     std::printf("  %s: identified %.6g +- %.3g, truth %.6g (%.2f sigma)\n", o.spec.parameters[i].path.c_str(),
                 o.values[i], o.std_devs[i], truth[i], std::abs(o.values[i] - truth[i]) / o.std_devs[i]);
     ASSERT_TRUE(std::isfinite(o.std_devs[i]) && o.std_devs[i] > 0.0);

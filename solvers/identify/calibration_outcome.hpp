@@ -28,12 +28,23 @@ struct CalibrationOutcome {
   std::vector<CalibrationStart> starts;  // every start, in order (the first from the case's values)
   size_t best = 0;                       // the start whose result is reported
   CalibrationSpec spec;
-  std::vector<double> values;                   // identified values, in spec.parameters order
-  std::vector<double> std_devs;                 // 1-sigma, from the covariance at the optimum (NaN if unavailable),
-                                                // scaled by reduced_chi_square when that exceeds 1
-  double reduced_chi_square = NAN;              // 2 cost / (residuals - parameters) at the optimum (with the loss)
-  Eigen::MatrixXd correlation;                  // empty if the covariance could not be computed
-  std::vector<std::string> warnings;            // identifiability and convergence warnings
+  std::vector<double> values;         // identified values, in spec.parameters order
+  std::vector<double> std_devs;       // 1-sigma, from the covariance at the optimum (NaN if unavailable),
+                                      // scaled by reduced_chi_square when that exceeds 1
+  double reduced_chi_square = NAN;    // 2 cost / (residuals - parameters) at the optimum (with the loss)
+  Eigen::MatrixXd correlation;        // empty if the covariance could not be computed
+  std::vector<std::string> warnings;  // identifiability and convergence warnings
+  // The cost along the weakest direction (the largest eigenvector of the covariance, in log values),
+  // at t = -2, -1, 1, 2 of its standard deviation: a quadratic cost rises by t^2 / 2 times the
+  // covariance's scale; a much flatter rise shows the linearized spread understates the uncertainty.
+  struct ProfilePoint {
+    double t = 0.0;
+    std::vector<double> values;
+    double rise = NAN;       // cost - cost at the optimum (NaN: the model could not be evaluated)
+    double predicted = 0.0;  // t^2 / 2 times max(1, reduced chi-square)
+  };
+  std::vector<double> weakest_direction;  // unit vector in log values, parameters order; empty: none
+  std::vector<ProfilePoint> weakest_profile;
   std::vector<std::pair<int, double>> history;  // (iteration, cost)
   double initial_cost = 0.0;
   double final_cost = 0.0;

@@ -231,6 +231,49 @@ std::vector<bool> warn_unidentified(const Eigen::MatrixXd& j, const Eigen::Jacob
   return unidentified;
 }
 
+// The cost along the covariance's weakest direction (the identified parameters only), t = -2, -1, 1, 2
+// standard deviations from the optimum x (log values), clamped to the bounds: four model runs.
+void profile_weakest_direction(ceres::Problem& problem, std::vector<double>& x, const Eigen::MatrixXd& c,
+                               const std::vector<bool>& unidentified, const CalibrationSpec& cal,
+                               CalibrationOutcome& out) {
+  const auto n = static_cast<Eigen::Index>(x.size());
+  Eigen::MatrixXd kept = c;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (unidentified[static_cast<size_t>(i)]) kept.row(i).setZero(), kept.col(i).setZero();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(kept);
+  if (eig.info() != Eigen::Success || !(eig.eigenvalues()(n - 1) > 0.0)) return;
+  const Eigen::VectorXd v = eig.eigenvectors().col(n - 1);
+  const double sigma = std::sqrt(eig.eigenvalues()(n - 1));
+  const double scale = std::isfinite(out.reduced_chi_square) ? std::max(1.0, out.reduced_chi_square) : 1.0;
+  const std::vector<double> optimum = x;
+  double cost0 = 0.0;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost0, nullptr, nullptr, nullptr)) return;
+  out.weakest_direction.assign(v.data(), v.data() + n);
+  for (double t : {-2.0, -1.0, 1.0, 2.0}) {
+    CalibrationOutcome::ProfilePoint pt;
+    pt.t = t;
+    pt.predicted = 0.5 * t * t * scale;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const auto k = static_cast<size_t>(i);
+      x[k] = std::clamp(optimum[k] + t * sigma * v(i), std::log(cal.parameters[k].lower),
+                        std::log(cal.parameters[k].upper));
+      pt.values.push_back(std::exp(x[k]));
+    }
+    double cost = 0.0;
+    if (problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr)) pt.rise = cost - cost0;
+    out.weakest_profile.push_back(pt);
+  }
+  x = optimum;
+  double flattest = INFINITY;
+  for (const auto& pt : out.weakest_profile)
+    if (std::abs(pt.t) == 2.0 && std::isfinite(pt.rise)) flattest = std::min(flattest, pt.rise / pt.predicted);
+  if (flattest < 0.25)
+    out.warnings.push_back(fmt::format(
+        "along the weakest direction the cost rises by only {:.2g} of what the covariance predicts at 2 standard "
+        "deviations: the standard deviations understate the uncertainty there (report: weakest direction)",
+        flattest));
+}
+
 // The covariance at the optimum x (log values) as standard deviations and correlations, with the
 // Birge ratio: a fit worse than the stated uncertainties allow (reduced chi-square above 1, e.g.
 // outliers or an imperfect model) scales the covariance up by it. A parameter the points do not
@@ -255,6 +298,7 @@ void add_covariance(ceres::Problem& problem, std::vector<double>& x, const Calib
       c += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
   out.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   if (out.reduced_chi_square > 1.0) c *= out.reduced_chi_square;
+  profile_weakest_direction(problem, x, c, unidentified, cal, out);
   for (size_t i = 0; i < n; ++i) {
     const auto ii = static_cast<Eigen::Index>(i);
     if (!unidentified[i]) out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log -> value

@@ -294,6 +294,21 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
       md << '\n';
     }
   }
+  if (!o.weakest_profile.empty()) {
+    md << "\n## Weakest direction\n\nThe cost along the covariance's largest axis (log values:";
+    for (size_t i = 0; i < o.weakest_direction.size(); ++i)
+      md << fmt::format("{} {:+.3f} `{}`", i ? "," : "", o.weakest_direction[i], o.spec.parameters[i].path);
+    md << "), t standard deviations from the optimum; a quadratic cost rises as predicted.\n\n| t |";
+    for (const auto& p : o.spec.parameters) md << fmt::format(" `{}` |", p.path);
+    md << " cost rise | predicted |\n|---|";
+    for (size_t i = 0; i < o.spec.parameters.size(); ++i) md << "---|";
+    md << "---|---|\n";
+    for (const auto& pt : o.weakest_profile) {
+      md << fmt::format("| {:+g} |", pt.t);
+      for (double v : pt.values) md << fmt::format(" {:.6g} |", v);
+      md << fmt::format(" {:.4g} | {:.4g} |\n", pt.rise, pt.predicted);
+    }
+  }
   if (!o.warnings.empty()) {
     md << "\n## Warnings\n\n";
     for (const auto& w : o.warnings) md << "- " << w << '\n';

@@ -51,6 +51,37 @@ TEST(LeastSquaresFit, AnIdentifiedParameterHasAStandardDeviationAndNoWarning) {
   EXPECT_FALSE(warned(o, "not identified")) << o.warnings.size();
 }
 
+TEST(LeastSquaresFit, TheCostAlongTheWeakestDirectionRisesAsTheCovariancePredictsForALinearModel) {
+  // y = a k + b k^2 with +-1 % on alternate points: the cost is quadratic in (a, b), so at t standard
+  // deviations along an axis of the covariance it rises by t^2 / 2. The fit runs in log values, whose
+  // mapping adds an odd term along the weakest axis (a and b trade off: its sigma is about 0.05 in
+  // log): the rises at -t and +t differ by it and their mean is the quadratic's.
+  const auto line = [](const std::vector<double>& v, int k) { return v[0] * k + v[1] * k * k; };
+  const auto noisy = [line](const std::vector<double>& v, bool) {
+    std::vector<FitPoint> points;
+    for (int k = 1; k <= 5; ++k) {
+      FitPoint p;
+      p.set = "curve";
+      p.x = k;
+      p.measured = line(std::vector<double>{2.0, 3.0}, k) * (1.0 + (k % 2 ? 0.01 : -0.01));
+      p.computed = line(v, k);
+      p.sigma = 0.01 * std::abs(p.measured);
+      points.push_back(p);
+    }
+    return points;
+  };
+  const CalibrationOutcome o = fit_parameters(spec_of({"a", "b"}), noisy, false, 5);
+  ASSERT_TRUE(o.converged) << o.termination;
+  ASSERT_EQ(o.weakest_profile.size(), 4u);
+  ASSERT_EQ(o.weakest_direction.size(), 2u);
+  EXPECT_NEAR(std::hypot(o.weakest_direction[0], o.weakest_direction[1]), 1.0, 1e-12);
+  const auto& p = o.weakest_profile;  // t = -2, -1, 1, 2
+  EXPECT_NEAR((p[0].rise + p[3].rise) / (p[0].predicted + p[3].predicted), 1.0, 0.02);
+  EXPECT_NEAR((p[1].rise + p[2].rise) / (p[1].predicted + p[2].predicted), 1.0, 0.02);
+  for (const CalibrationOutcome::ProfilePoint& pt : p) EXPECT_NEAR(pt.rise / pt.predicted, 1.0, 0.15) << "t = " << pt.t;
+  EXPECT_FALSE(warned(o, "understate"));
+}
+
 TEST(LeastSquaresFit, AParameterWithoutEffectIsNamedAndGetsNoStandardDeviation) {
   const auto only_a = [](const std::vector<double>& v, int k) { return v[0] * k; };
   const CalibrationOutcome o = fit_parameters(spec_of({"a", "b"}), evaluator(only_a), false, 5);

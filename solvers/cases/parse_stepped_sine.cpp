@@ -115,17 +115,18 @@ ResponseControlSpec parse_control(TomlReader& r, const std::vector<PointDof>& re
   return s;
 }
 
-}  // namespace
-
-std::vector<ResponseControlSpec> parse_response_controls(TomlReader& r, const std::vector<PointDof>& responses,
-                                                         std::set<std::string>& tables) {
-  std::vector<ResponseControlSpec> out;
-  if (!r.has("response_control")) return out;
+// Every [[analysis.<key>]] table read by `parse`; each writes the table frf_<name>, which a force
+// level or another stepped sine must not write already (`tables`, updated).
+template <class Spec, class Parse>
+std::vector<Spec> parse_blocks(TomlReader& r, const std::string& key, const char* what, std::set<std::string>& tables,
+                               const Parse& parse) {
+  std::vector<Spec> out;
+  if (!r.has(key)) return out;
   int i = 0;
-  for (const toml::node& n : r.array("response_control")) {
-    if (!n.is_table()) r.fail("response_control", "write each as an [[analysis.response_control]] table");
-    TomlReader s(*n.as_table(), fmt::format("{}.response_control[{}]", r.path(), i++), r.file());
-    out.push_back(parse_control(s, responses));
+  for (const toml::node& n : r.array(key)) {
+    if (!n.is_table()) r.fail(key, fmt::format("write each {} as an [[analysis.{}]] table", what, key));
+    TomlReader s(*n.as_table(), fmt::format("{}.{}[{}]", r.path(), key, i++), r.file());
+    out.push_back(parse(s, *n.as_table()));
     s.finish();
     const std::string table = "frf_" + out.back().name;
     if (!tables.insert(table).second)
@@ -134,21 +135,19 @@ std::vector<ResponseControlSpec> parse_response_controls(TomlReader& r, const st
   return out;
 }
 
+}  // namespace
+
+std::vector<ResponseControlSpec> parse_response_controls(TomlReader& r, const std::vector<PointDof>& responses,
+                                                         std::set<std::string>& tables) {
+  return parse_blocks<ResponseControlSpec>(
+      r, "response_control", "response control", tables,
+      [&](TomlReader& s, const toml::table&) { return parse_control(s, responses); });
+}
+
 std::vector<SteppedSineSpec> parse_stepped_sines(TomlReader& r, const std::filesystem::path& folder,
                                                  std::set<std::string>& tables) {
-  std::vector<SteppedSineSpec> out;
-  if (!r.has("stepped_sine")) return out;
-  int i = 0;
-  for (const toml::node& n : r.array("stepped_sine")) {
-    if (!n.is_table()) r.fail("stepped_sine", "write each stepped sine as an [[analysis.stepped_sine]] table");
-    TomlReader s(*n.as_table(), fmt::format("{}.stepped_sine[{}]", r.path(), i++), r.file());
-    out.push_back(parse_one(s, *n.as_table(), folder));
-    s.finish();
-    const std::string table = "frf_" + out.back().name;
-    if (!tables.insert(table).second)
-      s.fail("name", fmt::format("table '{}' is already written by a force level or another stepped sine", table));
-  }
-  return out;
+  return parse_blocks<SteppedSineSpec>(r, "stepped_sine", "stepped sine", tables,
+                                       [&](TomlReader& s, const toml::table& t) { return parse_one(s, t, folder); });
 }
 
 }  // namespace bb

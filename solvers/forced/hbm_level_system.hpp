@@ -105,6 +105,11 @@ void sweep_grid_windows(const PreparedHbm& p, const HbmSpec& spec, const LevelSy
 HbmLevel sweep_hbm_level_windows(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics,
                                  const HbmProgress& progress, const PeakWindows& windows);
 
+// The first point's start when the model has a damper: the stuck limit's vibration with the
+// contact DOFs at the damper's static pre-solve (seated by CF); nullopt without a damper.
+std::optional<Eigen::VectorXd> damper_seated_start(const PreparedHbm& p, const hbm::HarmonicBalance& system,
+                                                   double omega);
+
 // d(model)/d(log p) for each of spec.sensitivities on the level's model m.
 std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec,
                                                   const friction::FrictionModel& m);

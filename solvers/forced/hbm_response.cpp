@@ -19,6 +19,17 @@ Eigen::VectorXcd first_harmonic(const hbm::HarmonicBalance& system, const Eigen:
   return first_harmonic(system.recover(x, omega));
 }
 
+void write_response_row(const PreparedHbm& p, const Eigen::MatrixXd& q, std::complex<double> force, Eigen::Index row,
+                        Eigen::MatrixXd& amplitude, Eigen::MatrixXd& phase_deg, Eigen::MatrixXd& excursion) {
+  const Eigen::VectorXcd z = first_harmonic(q);
+  for (size_t r = 0; r < p.responses.size(); ++r) {
+    const auto c = static_cast<Eigen::Index>(r);
+    amplitude(row, c) = std::abs(z[p.responses[r]]);
+    phase_deg(row, c) = std::arg(z[p.responses[r]] / force) * 180.0 / std::numbers::pi;
+    excursion(row, c) = largest_excursion(q.row(p.responses[r]));
+  }
+}
+
 double largest_excursion(const Eigen::RowVectorXd& c) {
   using Eigen::Index;
   const Index harmonics = (c.size() - 1) / 2;

@@ -111,14 +111,8 @@ HbmControlled run_response_control(const PreparedHbm& p, const HbmSpec& spec, co
     out.force_phase_deg.push_back(std::arg(s.force) * kDeg);
     out.residual.push_back(s.solution.residual);
     out.iterations.push_back(s.solution.iterations);
-    const Eigen::MatrixXd q = recover_at(unit, s.solution.x, omega, s.force);
-    const Eigen::VectorXcd z = first_harmonic(q);
-    for (Index r = 0; r < n_resp; ++r) {
-      const Complex zr = z[p.responses[static_cast<size_t>(r)]];
-      out.amplitude(row, r) = std::abs(zr);
-      out.phase_deg(row, r) = std::arg(zr / s.force) * kDeg;
-      out.excursion(row, r) = largest_excursion(q.row(p.responses[static_cast<size_t>(r)]));
-    }
+    write_response_row(p, recover_at(unit, s.solution.x, omega, s.force), s.force, row, out.amplitude, out.phase_deg,
+                       out.excursion);
     last = hbm::ControlledStart{s.solution.x, s.force};
     solutions.push_back(*last);
     if (progress && (i + 1) % 25 == 0)

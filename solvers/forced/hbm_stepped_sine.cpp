@@ -17,28 +17,10 @@ namespace {
 using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-// The static pre-solve of a damper as the first point's start, as a level's sweep does.
-std::optional<Eigen::VectorXd> damper_start(const PreparedHbm& p, const hbm::HarmonicBalance& system, double omega) {
-  if (!p.damper_static) return std::nullopt;
-  std::optional<Eigen::VectorXd> initial = system.linearized(omega, true);
-  if (initial) {
-    const auto& dofs = system.contact_dofs();
-    for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
-  }
-  return initial;
-}
-
 void record(const PreparedHbm& p, const hbm::HarmonicBalance& system, const hbm::HbmSolution& s,
             const std::vector<hbm::ModelDerivative>& derivatives, HbmSteppedSine& out) {
   const Index row = static_cast<Index>(out.frequency_hz.size()) - 1;
-  const Eigen::MatrixXd q = system.recover(s.x, s.omega);
-  const Eigen::VectorXcd z = first_harmonic(q);
-  for (size_t r = 0; r < p.responses.size(); ++r) {
-    const Index c = static_cast<Index>(r);
-    out.amplitude(row, c) = std::abs(z[p.responses[r]]);
-    out.phase_deg(row, c) = std::arg(z[p.responses[r]]) * 180.0 / std::numbers::pi;
-    out.excursion(row, c) = largest_excursion(q.row(p.responses[r]));
-  }
+  write_response_row(p, system.recover(s.x, s.omega), 1.0, row, out.amplitude, out.phase_deg, out.excursion);
   if (derivatives.empty()) return;
   const ResponseDlog d = response_dlog(p, system, s.x, s.omega, derivatives);
   for (size_t j = 0; j < derivatives.size(); ++j) {
@@ -80,7 +62,8 @@ HbmSteppedSine run_stepped_sine(const PreparedHbm& p, const HbmSpec& spec, const
         s.iterations += tried;
       }
     } else {
-      s = first_solution(p, spec, force, spec.harmonics, spec.time_samples, omega, damper_start(p, system, omega));
+      s = first_solution(p, spec, force, spec.harmonics, spec.time_samples, omega,
+                         damper_seated_start(p, system, omega));
     }
     out.total_iterations += s.iterations;
     if (!s.converged) {

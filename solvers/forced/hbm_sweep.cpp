@@ -44,6 +44,17 @@ hbm::HarmonicBalance patient_level_system(const PreparedHbm& p, const HbmSpec& s
   return level_system(p, patient, force, harmonics, samples);
 }
 
+std::optional<Eigen::VectorXd> damper_seated_start(const PreparedHbm& p, const hbm::HarmonicBalance& system,
+                                                   double omega) {
+  if (!p.damper_static) return std::nullopt;
+  std::optional<Eigen::VectorXd> initial = system.linearized(omega, true);
+  if (initial) {
+    const auto& dofs = system.contact_dofs();
+    for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Eigen::Index>(i)] = p.damper_static->q[dofs[i]];
+  }
+  return initial;
+}
+
 // p d(model)/dp for an entry p of the lumped K or M (and its mirror). The damping built from the
 // matrices (modal, Rayleigh) moves with them: its derivative by central differences of that
 // construction, 1e-6 apart in log p (an eigenproblem of the model's size; C given as a matrix stays).
@@ -273,16 +284,10 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
   const FirstSolution first = [&](int h) {
     const hbm::HarmonicBalance& system = systems.at(h);
     std::optional<Eigen::VectorXd> initial;
-    if (neighbour) {
+    if (neighbour)
       initial = with_harmonics(neighbour->x, static_cast<Index>(system.contact_dofs().size()), h);
-    } else if (p.damper_static) {
-      // Start from the static pre-solve: the damper seated by CF, the vibration of the stuck limit.
-      initial = system.linearized(omega_start, true);
-      if (initial) {
-        const auto& dofs = system.contact_dofs();
-        for (size_t i = 0; i < dofs.size(); ++i) (*initial)[static_cast<Index>(i)] = p.damper_static->q[dofs[i]];
-      }
-    }
+    else
+      initial = damper_seated_start(p, system, omega_start);
     hbm::HbmSolution s = first_solution(p, spec, force, h, samples, omega_start, initial,
                                         neighbour ? std::optional<double>(neighbour->force) : std::nullopt);
     if (link && s.converged) link->relay.publish(link->level, LevelStart{s.x, h, force});
@@ -324,15 +329,11 @@ HbmLevel sweep_at_samples(const PreparedHbm& p, const HbmSpec& spec, double forc
     const hbm::ContinuationPoint& pt = path.points[i];
     level.frequency_hz.push_back(pt.omega / kTwoPi);
     const Eigen::MatrixXd q = systems.at(point_h(level, i)).recover(pt.x, pt.omega);
-    const Eigen::VectorXcd z = first_harmonic(q);
-    for (size_t r = 0; r < p.responses.size(); ++r) {
-      level.amplitude(static_cast<Index>(i), static_cast<Index>(r)) = std::abs(z[p.responses[r]]);
-      level.excursion(static_cast<Index>(i), static_cast<Index>(r)) = largest_excursion(q.row(p.responses[r]));
-      level.phase_deg(static_cast<Index>(i), static_cast<Index>(r)) =
-          std::arg(z[p.responses[r]]) * 180.0 / std::numbers::pi;
-    }
-    if (p.ip_oop)
+    write_response_row(p, q, 1.0, static_cast<Index>(i), level.amplitude, level.phase_deg, level.excursion);
+    if (p.ip_oop) {
+      const Eigen::VectorXcd z = first_harmonic(q);
       for (int k = 0; k < 2; ++k) level.components(static_cast<Index>(i), k) = peak_values(p, z, k).component;
+    }
   }
   if (spec.harmonic_tolerance > 0.0 && spec.harmonic_criterion == HbmSpec::HarmonicCriterion::share &&
       spec.harmonic_scope == HbmSpec::HarmonicScope::path && n_points > 0) {

@@ -106,18 +106,15 @@ ControlledSolution solve_controlled(const HarmonicBalance& s, double omega, cons
                                     .max_backtracks = s.options().max_backtracks,
                                     .step_solve = NewtonStepSolve::minimum_norm,
                                     .levenberg_marquardt = true};
-  std::vector<ControlledStart> starts;
-  if (initial) starts.push_back(*initial);
-  for (bool stuck : {true, false})
-    if (auto st = linear_start(s, p, omega, c, stuck)) starts.push_back(std::move(*st));
-  if (starts.empty()) {
-    out.solution.failure =
-        fmt::format("no start: the linear limits do not move the held DOF at omega = {:.6g} rad/s", omega);
-    return out;
-  }
-  for (const ControlledStart& start : starts) {
+  // The caller's start, then the linear limits, each built only when the one before has failed
+  // (along a stepped sine the previous point's solution converges in a few iterations).
+  bool started = false;
+  for (int k = initial ? 0 : 1; k < 3; ++k) {
+    const std::optional<ControlledStart> start = k == 0 ? initial : linear_start(s, p, omega, c, k == 1);
+    if (!start) continue;
+    started = true;
     Eigen::VectorXd y(n + 2);
-    y << start.x, start.force.real(), start.force.imag();
+    y << start->x, start->force.real(), start->force.imag();
     DampedNewtonResult r = damped_newton(system, std::move(y), options);
     out.solution.iterations += r.iterations;
     const bool better = r.converged || !std::isfinite(out.solution.residual) || r.residual < out.solution.residual;
@@ -132,6 +129,11 @@ ControlledSolution solve_controlled(const HarmonicBalance& s, double omega, cons
         out.solution.contacts = std::move(*contacts);
     }
     if (r.converged) break;
+  }
+  if (!started) {
+    out.solution.failure =
+        fmt::format("no start: the linear limits do not move the held DOF at omega = {:.6g} rad/s", omega);
+    return out;
   }
   if (out.solution.x.size() == 0) {
     out.solution.x = Eigen::VectorXd::Zero(n);

@@ -215,12 +215,8 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   const CalibratedCase& model = analytic ? *sensitivity_base : base;
   // A run whose Jacobian is not asked for (a trial step, a central difference) runs the case
   // without the sensitivities the analytic Jacobian added: the same values, none of their cost.
-  // Held-out curves are predicted at the start and at the identified values, never fitted.
-  const auto fitted_only = [](std::vector<FitPoint> points) {
-    points.erase(std::remove_if(points.begin(), points.end(), [](const FitPoint& p) { return p.held_out; }),
-                 points.end());
-    return points;
-  };
+  // Held-out curves are predicted at the start and at the identified values, never fitted: the
+  // fit's runs have neither their data blocks nor the stepped sines only they read.
   const CalibratedCase fit_model = without_held_out_curves(model, *cal), fit_base = without_held_out_curves(base, *cal);
   const CalibrationSpec fit_spec = [&] {
     CalibrationSpec f = *cal;
@@ -228,10 +224,10 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
     return f;
   }();
   const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
-    return fitted_only(fitted_points(gradients ? fit_model : fit_base, fit_spec, values, limits, nullptr, gradients));
+    return fitted_points(gradients ? fit_model : fit_base, fit_spec, values, limits, nullptr, gradients);
   };
-  CalibrationOutcome out =
-      fit_parameters(*cal, evaluate, analytic, static_cast<int>(fitted_only(before).size()), progress);
+  const auto fitted = std::count_if(before.begin(), before.end(), [](const FitPoint& p) { return !p.held_out; });
+  CalibrationOutcome out = fit_parameters(*cal, evaluate, analytic, static_cast<int>(fitted), progress);
   out.before = before;
   out.curves_before = std::move(curves_before);
   out.derivatives = analytic ? fmt::format("analytic (implicit function theorem, hbm/sensitivity.hpp){}",

@@ -10,12 +10,14 @@
 //                             assembly, L x) and the Newton step
 //   BM_TableXIContactForces   the contact forces with their Jacobian alone
 //   BM_TableXIStepSolve       the Newton step alone: LU of J, its condition estimate, the solve
-//                             (damped_newton's step where J is well conditioned)
-//   BM_DenseRate              a dense product of the same size: the machine's achievable flop rate
+//                             (damped_newton's step where J is well conditioned: bb::DenseLU)
+//   BM_DenseRate              a dense product of the same size by Eigen (as compiled here)
+//   BM_DenseRateBlas          the same product by the BLAS (OpenBLAS, dispatched to this CPU): the
+//                             machine's achievable flop rate, which `bound_us` uses
 // Counters: `unknowns` n = 9 (2H + 1); `flops` of the iteration's dense algebra, counted: the LU
 // (2/3 n^3) and its solve (2 n^2), the contact Jacobian's products (per contact 2 m^2 s^2 with s
 // the contact DOFs it moves, m = 2H + 1) and the AFT's closed-form integrals (per contact and state
-// run 6 m^2, the motion at every sample 14 m, two periods); `bound_us` = flops at BM_DenseRate's
+// run 6 m^2, the motion at every sample 14 m, two periods); `bound_us` = flops at BM_DenseRateBlas's
 // rate (the iteration's time over bound_us is the ratio issue 31 asks within 3). Measurement only:
 // nothing here asserts a time.
 #include <benchmark/benchmark.h>
@@ -32,7 +34,13 @@
 #include "forced/hbm_level.hpp"
 #include "forced/hbm_level_system.hpp"
 #include "hbm/harmonic_balance.hpp"
+#include "linalg/blas_threads.hpp"
+#include "linalg/dense_lu.hpp"
 #include "model/build_model.hpp"
+
+extern "C" void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const double* alpha,
+                       const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
+                       const int* ldc);
 
 namespace {
 
@@ -107,7 +115,15 @@ double iteration_flops(const bb::hbm::HarmonicBalance& s) {
   return flops;
 }
 
-// The rate of a dense product of the iteration's size [flop/s], one per process.
+// C = A B by the BLAS.
+void blas_product(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, Eigen::MatrixXd& c) {
+  bb::use_one_thread_per_factorization();  // one core, as the sweeps run
+  const int n = static_cast<int>(a.rows());
+  const double one = 1.0, zero = 0.0;
+  dgemm_("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
+}
+
+// The rate of the BLAS's dense product of the iteration's size [flop/s], one per process.
 double dense_rate(Index n) {
   const Eigen::MatrixXd a = Eigen::MatrixXd::Random(n, n), b = Eigen::MatrixXd::Random(n, n);
   Eigen::MatrixXd c(n, n);
@@ -115,7 +131,7 @@ double dense_rate(Index n) {
   const auto t0 = std::chrono::steady_clock::now();
   double elapsed = 0.0;
   while (elapsed < 0.2) {
-    c.noalias() = a * b;
+    blas_product(a, b, c);
     benchmark::DoNotOptimize(c.data());
     ++reps;
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -134,7 +150,7 @@ void report(benchmark::State& state, const bb::hbm::HarmonicBalance& s) {
 
 // damped_newton's step where J is well conditioned: partial-pivot LU, its condition estimate, solve.
 void newton_step(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& residual) {
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(jacobian);
+  const bb::DenseLU lu(jacobian);
   benchmark::DoNotOptimize(lu.rcond());
   Eigen::VectorXd step = lu.solve(-residual);
   benchmark::DoNotOptimize(step.data());
@@ -148,13 +164,13 @@ void BM_TableXIIteration(benchmark::State& state) {
   }
   report(state, p.system);
 }
-BENCHMARK(BM_TableXIIteration)->ArgName("H")->Arg(3)->Arg(7)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TableXIIteration)->ArgName("H")->Arg(3)->Arg(7)->Arg(13)->Unit(benchmark::kMicrosecond);
 
 void BM_TableXIContactForces(benchmark::State& state) {
   const Point p = converged_point(static_cast<int>(state.range(0)));
   for (auto _ : state) benchmark::DoNotOptimize(p.system.contact_forces(p.x));
 }
-BENCHMARK(BM_TableXIContactForces)->ArgName("H")->Arg(3)->Arg(7)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TableXIContactForces)->ArgName("H")->Arg(3)->Arg(7)->Arg(13)->Unit(benchmark::kMicrosecond);
 
 void BM_TableXIStepSolve(benchmark::State& state) {
   const Point p = converged_point(static_cast<int>(state.range(0)));
@@ -162,7 +178,7 @@ void BM_TableXIStepSolve(benchmark::State& state) {
   const Eigen::MatrixXd jacobian = p.linear.operator_ + r.forces.jacobian;
   for (auto _ : state) newton_step(jacobian, r.residual);
 }
-BENCHMARK(BM_TableXIStepSolve)->ArgName("H")->Arg(3)->Arg(7)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TableXIStepSolve)->ArgName("H")->Arg(3)->Arg(7)->Arg(13)->Unit(benchmark::kMicrosecond);
 
 void BM_DenseRate(benchmark::State& state) {
   const Index n = state.range(0);
@@ -176,5 +192,18 @@ void BM_DenseRate(benchmark::State& state) {
       benchmark::Counter(2.0 * static_cast<double>(n * n * n), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_DenseRate)->ArgName("n")->Arg(63)->Arg(135)->Arg(243)->Unit(benchmark::kMicrosecond);
+
+void BM_DenseRateBlas(benchmark::State& state) {
+  const Index n = state.range(0);
+  const Eigen::MatrixXd a = Eigen::MatrixXd::Random(n, n), b = Eigen::MatrixXd::Random(n, n);
+  Eigen::MatrixXd c(n, n);
+  for (auto _ : state) {
+    blas_product(a, b, c);
+    benchmark::DoNotOptimize(c.data());
+  }
+  state.counters["flop_rate"] =
+      benchmark::Counter(2.0 * static_cast<double>(n * n * n), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_DenseRateBlas)->ArgName("n")->Arg(63)->Arg(135)->Arg(243)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -53,6 +53,7 @@ struct RunArgs {
   bool study = false, no_plots = false;
   bb::FidelityMode fidelity = bb::FidelityMode::fixed;
   bb::WorkLimits limits;
+  std::vector<std::string> settings, removals;
 };
 
 int run_command(const RunArgs& a) {
@@ -66,6 +67,8 @@ int run_command(const RunArgs& a) {
     opt.plots = !a.no_plots;
     opt.fidelity = a.fidelity;
     opt.limits = a.limits;
+    opt.settings = a.settings;
+    opt.removals = a.removals;
     if (!a.out.empty()) opt.out_dir = a.cases.size() == 1 ? fs::path(a.out) : fs::path(a.out) / fs::path(c).stem();
     const bb::RunOutcome o = bb::run_case(c, opt);
     print_outcome(o, "");
@@ -253,6 +256,12 @@ int main(int argc, char** argv) {
                   "Output folder (default reports/<case-name>; with several cases, a parent folder)");
   run->add_flag("--study", run_args.study, "Also run the case's [study] (mesh refinement, accuracy vs cost)");
   run->add_flag("--no-plots", run_args.no_plots, "Skip gnuplot figures");
+  run->add_option("--set", run_args.settings,
+                  "dotted.key=VALUE (TOML value) replacing the case file's setting, e.g. --set analysis.harmonics=7; "
+                  "repeatable; the report warns that it ran at it");
+  run->add_option("--unset", run_args.removals,
+                  "dotted.key removed from the case file (a key or a whole table, e.g. analysis.nonlinear_modes); "
+                  "repeatable");
   add_fidelity_option(run, run_args.fidelity);
   add_limit_options(run, run_args.limits);
   CacheArgs cache_args;

@@ -8,6 +8,8 @@
 #include <span>
 #include <vector>
 
+#include "contact/aft_pieces.hpp"
+
 namespace bb::contact {
 namespace {
 
@@ -66,20 +68,6 @@ double illinois(F&& f, double lo, double hi, double f_lo, double f_hi) {
 // What ends a phase. The first four end stick or slip, the last two open or close the contact.
 enum class Event { slip_up, slip_down, stop_positive, stop_negative, open, close };
 
-// The stuck slider of a stick phase, with its derivatives: d w / d[u; v] and d w / d(law).
-struct StuckSlider {
-  double w = 0.0;
-  Eigen::RowVectorXd dw;
-  Eigen::RowVector4d dw_law = Eigen::RowVector4d::Zero();
-};
-
-// A piece of the period in one state, integrated after the march.
-struct Piece {
-  double a = 0.0, b = 0.0;
-  ContactState state = ContactState::stick;
-  int slider = -1;  // index into the march's stuck sliders (stick only)
-};
-
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // The basis and its derivative at the samples: a sweep evaluates thousands of motions of one H
@@ -124,6 +112,15 @@ class EventMarch {
       const double h = static_cast<double>((i + 1) / 2);
       ddu_[i] = -h * h * u[i];
       ddv_[i] = -h * h * v[i];
+    }
+    // sum_h h^k |(a_h, b_h)|: bounds of the k-th derivatives of u and v over the period, k = 2, 3.
+    for (int h = 1; h <= harmonics_; ++h) {
+      const double au = std::hypot(u[2 * h - 1], u[2 * h]), av = std::hypot(v[2 * h - 1], v[2 * h]);
+      const double h2 = static_cast<double>(h) * h;
+      u_bound_[0] += h2 * au;
+      v_bound_[0] += h2 * av;
+      u_bound_[1] += h2 * h * au;
+      v_bound_[1] += h2 * h * av;
     }
   }
 
@@ -196,6 +193,30 @@ class EventMarch {
         return {{Event::close}, 1};
     }
     return {};
+  }
+
+  // A bound of the value's second theta-derivative over the period.
+  double curvature_bound(Event e) const {
+    switch (e) {
+      case Event::slip_up:
+      case Event::slip_down:
+        return p_.kt * u_bound_[0] + p_.mu * p_.kn * v_bound_[0];
+      case Event::stop_positive:
+      case Event::stop_negative:
+        return u_bound_[1] + p_.mu * p_.kn / p_.kt * v_bound_[1];
+      case Event::open:
+      case Event::close:
+        return p_.kn * v_bound_[0];
+    }
+    return 0.0;
+  }
+  // Whether the value can pass the event inside (a, b) though it is before it at both ends: not
+  // when the Taylor bound from either end (its slope there, the curvature bounded) stays before it.
+  bool may_pass_between(Event e, double a, const Motion& begin, double b, const Motion& end) const {
+    const double o = orientation(e), k = 0.5 * curvature_bound(e), d = b - a;
+    const double from_a = o * value(e, begin) + std::max(o * rate(e, begin), 0.0) * d + k * d * d;
+    const double from_b = o * value(e, end) + std::max(-o * rate(e, end), 0.0) * d + k * d * d;
+    return std::min(from_a, from_b) > 0.0;
   }
 
   // The first instant in (a, b] past the event; `a` is taken as before it. Bisection while the
@@ -304,6 +325,7 @@ class EventMarch {
         for (const Watched w = watched(); Event e : std::span(w.events.data(), static_cast<size_t>(w.count))) {
           double fb = value(e, end), until = b;
           if (!past(e, fb)) {  // past and back within the interval?
+            if (!may_pass_between(e, a, begin, b, end)) continue;
             const std::optional<double> turn = turning_point(e, a, begin, b, end);
             if (!turn) continue;
             fb = value(e, motion(*turn));
@@ -334,8 +356,7 @@ class EventMarch {
  private:
   const StuckSlider& stuck() const { return sliders_.back(); }
   Motion current(double theta) const {
-    return {theta,         phi_.dot(u_),  phi_.dot(v_),  dphi_.dot(u_),
-            dphi_.dot(v_), phi_.dot(ddu_), phi_.dot(ddv_)};
+    return {theta, phi_.dot(u_), phi_.dot(v_), dphi_.dot(u_), dphi_.dot(v_), phi_.dot(ddu_), phi_.dot(ddv_)};
   }
 
   // Slip in direction `sign` stops: the slider stays where the Coulomb limit left it.
@@ -376,111 +397,11 @@ class EventMarch {
   const Grid& grid_;
   const bool frictionless_;
   ContactState state_ = ContactState::stick;
-  Eigen::VectorXd ddu_, ddv_;  // coefficients of u'' and v''
+  std::array<double, 2> u_bound_{}, v_bound_{};  // bounds of the 2nd and 3rd derivatives of u, v
+  Eigen::VectorXd ddu_, ddv_;                    // coefficients of u'' and v''
   std::vector<StuckSlider> sliders_;
   Eigen::RowVectorXd phi_, dphi_;  // the basis at the last motion() instant
 };
-
-// Antiderivatives at theta of the basis (m) and of the products of its functions (m x m),
-// unscaled: products of cosines and sines are sums of cos / sin (h +- g) theta, integrated exactly.
-void antiderivatives(double theta, int harmonics, Eigen::VectorXd& first, Eigen::MatrixXd& second) {
-  const int top = 2 * harmonics;
-  thread_local std::vector<double> c, s;
-  c.resize(static_cast<size_t>(top) + 1);
-  s.resize(static_cast<size_t>(top) + 1);
-  const double c1 = std::cos(theta), s1 = std::sin(theta);
-  c[0] = 1.0;
-  s[0] = 0.0;
-  for (int k = 1; k <= top; ++k) {
-    c[static_cast<size_t>(k)] = c[static_cast<size_t>(k) - 1] * c1 - s[static_cast<size_t>(k) - 1] * s1;
-    s[static_cast<size_t>(k)] = s[static_cast<size_t>(k) - 1] * c1 + c[static_cast<size_t>(k) - 1] * s1;
-  }
-  // int cos k = sin k / k (theta for k = 0), even in k; int sin k = -cos k / k (0 for k = 0), odd in k.
-  const auto int_cos = [&](int k) { return k == 0 ? theta : s[static_cast<size_t>(std::abs(k))] / std::abs(k); };
-  const auto int_sin = [&](int k) {
-    return k == 0 ? 0.0 : -c[static_cast<size_t>(std::abs(k))] / static_cast<double>(k);
-  };
-  const Eigen::Index m = 2 * harmonics + 1;
-  first.resize(m);
-  second.resize(m, m);
-  first[0] = second(0, 0) = theta;
-  for (int h = 1; h <= harmonics; ++h) {
-    first[2 * h - 1] = second(0, 2 * h - 1) = second(2 * h - 1, 0) = int_cos(h);
-    first[2 * h] = second(0, 2 * h) = second(2 * h, 0) = int_sin(h);
-    for (int g = 1; g <= harmonics; ++g) {
-      second(2 * h - 1, 2 * g - 1) = 0.5 * (int_cos(h - g) + int_cos(h + g));  // cos h cos g
-      second(2 * h, 2 * g) = 0.5 * (int_cos(h - g) - int_cos(h + g));          // sin h sin g
-      second(2 * h - 1, 2 * g) = second(2 * g, 2 * h - 1) = 0.5 * (int_sin(h + g) + int_sin(g - h));  // cos h sin g
-    }
-  }
-}
-
-// The coefficients of T and N and their derivatives from the pieces of one period. Within a piece
-// T and N are linear in the trigonometric polynomials u, v (stick: kt (u - w0), slip: +-mu N, N =
-// n0 + kn v), so each coefficient is a product with the basis's integral or its Gram matrix over
-// the piece, both in closed form: no quadrature error.
-void integrate(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-               const std::vector<Piece>& pieces, const std::vector<StuckSlider>& sliders, bool with_law,
-               AftResult& r) {
-  const Eigen::Index m = u.size();
-  const int harmonics = harmonics_of(m);
-  // c0 = (1 / 2 pi) int T, a_h = (1 / pi) int T cos h theta, b_h likewise with sin.
-  Eigen::VectorXd scale = Eigen::VectorXd::Constant(m, 1.0 / std::numbers::pi);
-  scale[0] *= 0.5;
-  r.tangential = Eigen::VectorXd::Zero(m);
-  r.normal = Eigen::VectorXd::Zero(m);
-  r.dtangential_du = Eigen::MatrixXd::Zero(m, m);
-  r.dtangential_dv = Eigen::MatrixXd::Zero(m, m);
-  r.dnormal_dv = Eigen::MatrixXd::Zero(m, m);
-  if (with_law) {
-    r.dtangential_dlaw = Eigen::MatrixXd::Zero(m, 4);
-    r.dnormal_dlaw = Eigen::MatrixXd::Zero(m, 4);
-  }
-  Eigen::VectorXd first_a, first_b, mean;
-  Eigen::MatrixXd second_a, second_b, gram;
-  size_t i = 0;
-  while (i < pieces.size()) {
-    // One run of pieces in one state (and one stuck slider).
-    size_t j = i + 1;
-    while (j < pieces.size() && pieces[j].state == pieces[i].state && pieces[j].slider == pieces[i].slider) ++j;
-    const ContactState state = pieces[i].state;
-    const double a = pieces[i].a, b = pieces[j - 1].b;
-    i = j;
-    if (state == ContactState::lift_off) continue;
-    antiderivatives(a, harmonics, first_a, second_a);
-    antiderivatives(b, harmonics, first_b, second_b);
-    mean = scale.cwiseProduct(first_b - first_a);           // (scaled) int phi
-    gram = scale.asDiagonal() * (second_b - second_a);      // (scaled) int phi phi^T
-    const Eigen::VectorXd normal = p.n0 * mean + p.kn * (gram * v);
-    r.normal += normal;
-    r.dnormal_dv += p.kn * gram;
-    if (with_law) {
-      r.dnormal_dlaw.col(law_kn) += gram * v;
-      r.dnormal_dlaw.col(law_n0) += mean;
-    }
-    if (state == ContactState::stick) {
-      const StuckSlider& s = sliders[static_cast<size_t>(pieces[j - 1].slider)];
-      const Eigen::VectorXd elongation = gram * u - s.w * mean;  // int phi (u - w0)
-      r.tangential += p.kt * elongation;
-      r.dtangential_du += p.kt * gram;
-      r.dtangential_du -= p.kt * mean * s.dw.head(m);
-      r.dtangential_dv -= p.kt * mean * s.dw.tail(m);
-      if (with_law) {
-        r.dtangential_dlaw -= p.kt * mean * s.dw_law;
-        r.dtangential_dlaw.col(law_kt) += elongation;
-      }
-    } else {
-      const double sign = state == ContactState::slip_positive ? 1.0 : -1.0;
-      r.tangential += sign * p.mu * normal;
-      r.dtangential_dv += sign * p.mu * p.kn * gram;
-      if (with_law) {
-        r.dtangential_dlaw.col(law_mu) += sign * normal;
-        r.dtangential_dlaw.col(law_kn) += sign * p.mu * (gram * v);
-        r.dtangential_dlaw.col(law_n0) += sign * p.mu * mean;
-      }
-    }
-  }
-}
 
 }  // namespace
 
@@ -527,7 +448,7 @@ AftResult aft_jenkins_events(const JenkinsParameters& p, const Eigen::VectorXd& 
       break;
     }
   }
-  integrate(p, u, v, pieces, march.sliders(), options.law_derivatives, r);
+  integrate_pieces(p, u, v, pieces, march.sliders(), options.law_derivatives, r);
   return r;
 }
 

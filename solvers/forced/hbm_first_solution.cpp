@@ -47,11 +47,13 @@ Homotopy force_homotopy(const PreparedHbm& p, const HbmSpec& spec, double force_
 // Newton continued from the direct solve's best iterate; a homotopy in the force from the previous
 // level's solution; Newton with ten times the sweep's iterations from that best iterate (Newton
 // from a far start on this piecewise-smooth balance approaches the solution only linearly, by
-// Levenberg-Marquardt steps across the contacts' kinks); and last a homotopy from 1/64 of the
-// force. An iteration at H = 1 costs a tenth to a hundredth of one at H = 5-13, so the lifted
-// start comes before the long solves. The homotopy steps start from the last converged force alone
-// with the sweep's iterations: a failed step costs 20 iterations, not the 600 of three patient
-// starts (Table XI, H = 13, 110 N: 4 476 iterations before).
+// Levenberg-Marquardt steps across the contacts' kinks); a homotopy from 1/64 of the force; and
+// for H > 3 the solution at H - 2 (found the same way) lifted by two. An iteration at H = 1 costs a
+// tenth to a hundredth of one at H = 5-13, so the lifted start comes before the long solves, and
+// above H = 7, where the patient solve's 600 iterations cost most (Table XI, H = 13, 100 N, 170 Hz:
+// they failed, the ladder converges), the ladder of H comes before it. The homotopy steps
+// start from the last converged force alone with the sweep's iterations: a failed step costs 20
+// iterations, not the 600 of three patient starts (Table XI, H = 13, 110 N: 4 476 iterations before).
 hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec, double force, int harmonics,
                                 int samples, double omega, const std::optional<Eigen::VectorXd>& initial,
                                 std::optional<double> initial_force) {
@@ -64,19 +66,24 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
     s.iterations = total;
     return s;
   };
-  if (harmonics > 1) {
-    const Eigen::Index dofs = quick.unknowns() / (2 * harmonics + 1);
+  const Eigen::Index dofs = quick.unknowns() / (2 * harmonics + 1);
+  // The solution at `lower` harmonics (found by this function) lifted to H.
+  const auto lifted_from = [&](int lower) -> std::optional<hbm::HbmSolution> {
     std::optional<Eigen::VectorXd> low_initial;
-    if (initial) low_initial = with_harmonics(*initial, dofs, 1);
-    const hbm::HbmSolution low = first_solution(p, sweep_spec, force, 1, samples, omega, low_initial, initial_force);
+    if (initial) low_initial = with_harmonics(*initial, dofs, lower);
+    const hbm::HbmSolution low =
+        first_solution(p, sweep_spec, force, lower, samples, omega, low_initial, initial_force);
     total += low.iterations;
     if (low.converged) {
       hbm::HbmSolution lifted = hbm::solve_at_frequency(quick, omega, with_harmonics(low.x, dofs, harmonics));
       total += lifted.iterations;
-      if (lifted.converged) return done(std::move(lifted));
+      if (lifted.converged) return lifted;
     }
-    failures += fmt::format("; from the H = 1 solution: {}", low.converged ? "no convergence" : low.failure);
-  }
+    failures += fmt::format("; from the H = {} solution: {}", lower, low.converged ? "no convergence" : low.failure);
+    return std::nullopt;
+  };
+  if (harmonics > 1)
+    if (auto s = lifted_from(1)) return done(std::move(*s));
   // The direct solve's best iterate, continued alone: a solve that stalled on a kink has usually
   // come close (Table XI, H = 7, 80 N: 1 more iteration, where 421 from the start).
   const bool came_close = direct.x.size() > 0 && direct.x.allFinite();
@@ -94,6 +101,9 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
     failures +=
         fmt::format("; force homotopy from {:g} N reached {:.4g} of the way", *initial_force, from_neighbour.reached);
   }
+  const bool ladder = harmonics > 3, ladder_first = harmonics > 7;
+  if (ladder_first)
+    if (auto s = lifted_from(harmonics - 2)) return done(std::move(*s));
   const std::optional<Eigen::VectorXd> closest = came_close ? std::optional<Eigen::VectorXd>(direct.x) : initial;
   hbm::HbmSolution patient =
       hbm::solve_at_frequency(patient_level_system(p, sweep_spec, force, harmonics, samples), omega, closest);
@@ -111,6 +121,9 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
   } else {
     failures += "; force homotopy: no solution at 1/64 of the force";
   }
+  // Table XI, H = 7, 260 N, 170 Hz without a neighbour level: every start above failed, the ladder converges.
+  if (ladder && !ladder_first)
+    if (auto s = lifted_from(harmonics - 2)) return done(std::move(*s));
   patient.failure += failures;
   return done(std::move(patient));
 }

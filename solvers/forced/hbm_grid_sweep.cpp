@@ -172,6 +172,52 @@ PointChoice choose_harmonics(const PreparedHbm& p, const HbmSpec& spec, const Le
   }
 }
 
+// Grid frequencies the forward pass lost, solved again from the side beyond them: Newton from the
+// next frequency's solution, then in eight substeps back from it. A forward step can meet a kink or
+// a nearby second solution that the step from above does not (Table XI, H = 13, 200 N, 174.70 Hz:
+// every forward fallback failed while 174.75 Hz converged). Runs of failures are filled from the top
+// down, each from the one just filled. Returns the frequencies (Hz) still failed.
+std::vector<double> retry_from_above(const LevelSystems& systems, const std::vector<double>& grid,
+                                     const std::vector<int>& failed, HbmLevel& level, bool per_point) {
+  hbm::ContinuationResult& path = level.path;
+  std::vector<double> still;
+  for (auto f = failed.rbegin(); f != failed.rend(); ++f) {
+    const int i = *f;
+    const double omega = kTwoPi * grid[static_cast<size_t>(i)];
+    const double above = i + 1 < static_cast<int>(grid.size()) ? kTwoPi * grid[static_cast<size_t>(i + 1)] : kNaN;
+    const auto next = std::find_if(path.points.begin(), path.points.end(),
+                                   [above](const hbm::ContinuationPoint& q) { return q.omega == above; });
+    if (next == path.points.end()) {
+      still.push_back(omega / kTwoPi);
+      continue;
+    }
+    const size_t at = static_cast<size_t>(next - path.points.begin());
+    const int h = per_point ? level.point_harmonics[at] : level.harmonics;
+    const hbm::HarmonicBalance& system = systems.at(h);
+    hbm::HbmSolution s = hbm::solve_at_frequency(system, omega, next->x);
+    path.corrector_iterations += s.iterations;
+    Eigen::VectorXd x = next->x;
+    for (int k = 1; k <= 8 && !s.converged; ++k) {
+      s = hbm::solve_at_frequency(system, above + (omega - above) * k / 8.0, x);
+      path.corrector_iterations += s.iterations;
+      if (!s.converged) break;
+      x = s.x;
+    }
+    if (!s.converged) {
+      still.push_back(omega / kTwoPi);
+      continue;
+    }
+    path.points.insert(path.points.begin() + static_cast<std::ptrdiff_t>(at),
+                       {omega, std::move(s.x), s.residual, s.iterations, 0.0, 1.0});
+    if (per_point) {
+      level.point_harmonics.insert(level.point_harmonics.begin() + static_cast<std::ptrdiff_t>(at), h);
+      level.point_change.insert(level.point_change.begin() + static_cast<std::ptrdiff_t>(at), kNaN);
+    }
+  }
+  std::reverse(still.begin(), still.end());
+  return still;
+}
+
 // sweep_grid on the frequencies `grid`.
 void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
                    const std::vector<double>& grid, HbmLevel& level, const SweepReport& report) {
@@ -214,7 +260,7 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
   }
   accept(omega0, s0, h0, change0, s0.iterations);
 
-  std::vector<double> failed;
+  std::vector<int> failed;  // grid indices
   std::string last_failure;
   // The Jacobian factorized at one frequency serves the next ones as long as it contracts, where
   // its LU costs more than the residuals a chord step spends. Table XI (9 contact DOFs, events AFT):
@@ -280,19 +326,20 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
         accept(omega, s, h_last, kNaN, s.iterations);
         continue;
       }
-      failed.push_back(omega / kTwoPi);
-      level.failed_hz.push_back(omega / kTwoPi);
+      failed.push_back(i);
       last_failure = s.failure;
       ++path.rejected_steps;
       continue;
     }
     accept(omega, s, h, change, iterations);
   }
-  path.converged = failed.empty();
-  if (!failed.empty())
+  const std::vector<double> lost = retry_from_above(systems, grid, failed, level, per_point);
+  level.failed_hz.insert(level.failed_hz.end(), lost.begin(), lost.end());
+  path.converged = lost.empty();
+  if (!lost.empty())
     path.failure =
         fmt::format("{} of {} frequencies did not converge (first at {:.4f} Hz, last at {:.4f} Hz; last: {})",
-                    failed.size(), n, failed.front(), failed.back(), last_failure);
+                    lost.size(), n, lost.front(), lost.back(), last_failure);
   if (per_point) level.harmonics = *std::max_element(level.point_harmonics.begin(), level.point_harmonics.end());
 }
 

@@ -63,8 +63,8 @@ inline int point_h(const HbmLevel& level, size_t i) {
 }
 
 // The first frequency's solution of a level: direct Newton from `initial` (or the linear limits),
-// then (H > 1) the H = 1 solution lifted to H, homotopies in the force and longer Newton solves
-// (hbm_first_solution.cpp). With initial_force, `initial` is a solution at that force (the
+// then (H > 1) the H = 1 solution lifted to H, homotopies in the force, longer Newton solves and
+// (H > 3) the solution at H - 2 lifted by two (hbm_first_solution.cpp). With initial_force, `initial` is a solution at that force (the
 // previous level's), the start of the first homotopy.
 hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
                                 double omega, const std::optional<Eigen::VectorXd>& initial,

@@ -129,12 +129,12 @@ std::optional<HarmonicBalance::Linear> HarmonicBalance::condense(double omega) c
   return linear;
 }
 
-HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::VectorXd& x) const {
+HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::VectorXd& x, bool with_jacobian) const {
   const Index nc = static_cast<Index>(contact_dofs().size());
   const Index m = contact::harmonic_size(options_.harmonics);
   // Column j of the nc x m matrix is harmonic coefficient j of every contact DOF.
   const Eigen::Map<const Eigen::MatrixXd> coefficients(x.data(), nc, m);
-  ContactForces out{Eigen::VectorXd::Zero(unknowns()), Eigen::MatrixXd::Zero(unknowns(), unknowns()), {}, true};
+  ContactForces out{Eigen::VectorXd::Zero(unknowns()), Eigen::MatrixXd(), {}, true};
   Eigen::Map<Eigen::MatrixXd> force(out.force.data(), nc, m);
   for (size_t k = 0; k < system_.contacts_on_c().size(); ++k) {
     const friction::ContactElement& element = system_.contacts_on_c()[k];
@@ -146,8 +146,6 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
       contact::AftResult r = contact::aft_jenkins(element.law, u, gn * x, aft_);
       out.closed = out.closed && r.closed;
       out.force += gt.transpose() * r.tangential + gn.transpose() * r.normal;
-      out.jacobian.noalias() += gt.transpose() * (r.dtangential_du * gt + r.dtangential_dv * gn);
-      out.jacobian.noalias() += gn.transpose() * (r.dnormal_dv * gn);
       out.contacts.push_back(std::move(r));
       continue;
     }
@@ -160,6 +158,27 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
     out.closed = out.closed && r.closed;
     // g = a_t^T T + a_n^T N, per coefficient.
     force += at.transpose() * r.tangential.transpose() + an.transpose() * r.normal.transpose();
+    out.contacts.push_back(std::move(r));
+  }
+  if (with_jacobian) out.jacobian = contact_jacobian(out.contacts);
+  return out;
+}
+
+Eigen::MatrixXd HarmonicBalance::contact_jacobian(const std::vector<contact::AftResult>& contacts) const {
+  const Index nc = static_cast<Index>(contact_dofs().size());
+  const Index m = contact::harmonic_size(options_.harmonics);
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(unknowns(), unknowns());
+  for (size_t k = 0; k < system_.contacts_on_c().size() && k < contacts.size(); ++k) {
+    const friction::ContactElement& element = system_.contacts_on_c()[k];
+    const contact::AftResult& r = contacts[k];
+    if (element.cyclic()) {
+      const Eigen::MatrixXd &gt = cyclic_gaps_[k].tangential, &gn = cyclic_gaps_[k].normal;
+      jacobian.noalias() += gt.transpose() * (r.dtangential_du * gt + r.dtangential_dv * gn);
+      jacobian.noalias() += gn.transpose() * (r.dnormal_dv * gn);
+      continue;
+    }
+    const Eigen::RowVectorXd& at = element.tangential;
+    const Eigen::RowVectorXd& an = element.normal;
     // dg_(j,i)/dx_(l,p) = at_i (dT/du_jl at_p + dT/dv_jl an_p) + an_i dN/dv_jl an_p, only on the
     // few contact DOFs the element moves (its support): a damper contact moves 4-5 of Table XI's 9.
     std::vector<Index> support;
@@ -171,18 +190,18 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
         if (tu == 0.0 && tv == 0.0 && nv == 0.0) continue;
         for (const Index p : support) {
           const double dp_t = tu * at[p] + tv * an[p], dp_n = nv * an[p];
-          for (const Index i : support) out.jacobian(j * nc + i, l * nc + p) += at[i] * dp_t + an[i] * dp_n;
+          for (const Index i : support) jacobian(j * nc + i, l * nc + p) += at[i] * dp_t + an[i] * dp_n;
         }
       }
-    out.contacts.push_back(std::move(r));
   }
-  return out;
+  return jacobian;
 }
 
-HarmonicBalance::Residual HarmonicBalance::residual(const Linear& linear, const Eigen::VectorXd& x) const {
+HarmonicBalance::Residual HarmonicBalance::residual(const Linear& linear, const Eigen::VectorXd& x,
+                                                    bool with_jacobian) const {
   Residual r;
   if (!x.allFinite()) return r;
-  r.forces = contact_forces(x);
+  r.forces = contact_forces(x, with_jacobian);
   r.residual = linear.operator_ * x + r.forces.force - linear.load;
   r.ok = r.residual.allFinite() && r.forces.closed;
   if (r.ok) r.norm = r.residual.norm();

@@ -80,7 +80,10 @@ class HarmonicBalance {
     std::vector<contact::AftResult> contacts;
     bool closed = true;  // every slider loop closed
   };
-  ContactForces contact_forces(const Eigen::VectorXd& x) const;
+  // With with_jacobian false the Jacobian is left empty (contact_jacobian assembles it later).
+  ContactForces contact_forces(const Eigen::VectorXd& x, bool with_jacobian = true) const;
+  // dg/dx from the AFT of every contact at x (ContactForces::contacts).
+  Eigen::MatrixXd contact_jacobian(const std::vector<contact::AftResult>& contacts) const;
 
   // R(x) = L x + g(x) - b for the operator `linear` of some omega.
   struct Residual {
@@ -89,7 +92,7 @@ class HarmonicBalance {
     ContactForces forces;
     bool ok = false;  // x and R finite and every loop closed
   };
-  Residual residual(const Linear& linear, const Eigen::VectorXd& x) const;
+  Residual residual(const Linear& linear, const Eigen::VectorXd& x, bool with_jacobian = true) const;
 
   // Harmonic coefficients (rows: model DOFs, columns: the 2H + 1 coefficients) of every model DOF
   // for the contact-DOF solution x at omega: contact DOFs copied, the others recovered from

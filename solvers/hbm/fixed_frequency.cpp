@@ -15,14 +15,17 @@ namespace bb::hbm {
 
 namespace {
 
-// R, its Jacobian L + dg/dx and (as data) the AFT of every contact at x.
+// R and (as data) the AFT of every contact at x; its Jacobian L + dg/dx assembled when the
+// iteration asks (a rejected trial point does not: on Table XI about a third of the evaluations).
 NewtonPoint balance_at(const HarmonicBalance& s, const HarmonicBalance::Linear& linear, const Eigen::VectorXd& x) {
-  HarmonicBalance::Residual r = s.residual(linear, x);
+  HarmonicBalance::Residual r = s.residual(linear, x, false);
   NewtonPoint p;
   p.valid = r.ok;
-  if (r.ok) p.jacobian = linear.operator_ + r.forces.jacobian;
   p.residual = std::move(r.residual);
   p.data = std::move(r.forces.contacts);
+  p.complete_jacobian = [&s, &linear](NewtonPoint& q) {
+    q.jacobian = linear.operator_ + s.contact_jacobian(std::any_cast<const std::vector<contact::AftResult>&>(q.data));
+  };
   return p;
 }
 
@@ -37,7 +40,8 @@ HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& line
                                     .max_backtracks = s.options().max_backtracks,
                                     .step_solve = NewtonStepSolve::minimum_norm,
                                     .levenberg_marquardt = true,
-                                    .chord = chord};
+                                    .chord = chord,
+                                    .jacobian_at_solution = false};
   DampedNewtonResult r = damped_newton([&](const Eigen::VectorXd& y) { return balance_at(s, linear, y); }, std::move(x),
                                        std::move(at), options);
   HbmSolution out;

@@ -14,9 +14,8 @@ namespace bb {
 namespace {
 
 // The decomposition of J a Newton step was solved with, kept for a second right-hand side.
-using StepDecomposition =
-    std::variant<std::monostate, Eigen::PartialPivLU<Eigen::MatrixXd>, Eigen::FullPivLU<Eigen::MatrixXd>,
-                 Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>>;
+using StepDecomposition = std::variant<std::monostate, DenseLU, Eigen::FullPivLU<Eigen::MatrixXd>,
+                                       Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>>;
 
 Eigen::VectorXd solve_with(const StepDecomposition& d, const Eigen::VectorXd& rhs) {
   return std::visit(
@@ -38,7 +37,7 @@ bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& st
       // fraction of the decomposition's cost (on Table XI at H = 7 the decomposition took a quarter
       // of the sweeps' time).
       if (at.jacobian.rows() == at.jacobian.cols()) {
-        Eigen::PartialPivLU<Eigen::MatrixXd> lu(at.jacobian);
+        DenseLU lu(at.jacobian);
         if (lu.rcond() > 1e-10) {
           step = lu.solve(-at.residual);
           d = std::move(lu);
@@ -53,7 +52,7 @@ bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& st
       break;
     }
     case NewtonStepSolve::partial_pivot_lu: {
-      Eigen::PartialPivLU<Eigen::MatrixXd> lu(at.jacobian);
+      DenseLU lu(at.jacobian);
       step = lu.solve(-at.residual);
       d = std::move(lu);
       break;
@@ -67,6 +66,14 @@ bool newton_step(const NewtonPoint& at, NewtonStepSolve how, Eigen::VectorXd& st
     }
   }
   return step.allFinite();
+}
+
+// The point's Jacobian, from its system's deferred assembly where there is one.
+void complete(NewtonPoint& p) {
+  if (!p.complete_jacobian || !p.valid) return;
+  const auto fill = std::move(p.complete_jacobian);
+  p.complete_jacobian = {};
+  fill(p);
 }
 
 class Iteration {
@@ -139,6 +146,7 @@ class Iteration {
 
   // Levenberg-Marquardt steps of growing damping; the first that lowers the merit at all is taken.
   bool levenberg_marquardt(Eigen::VectorXd& x, NewtonPoint& at, double& merit_at) const {
+    complete(at);
     const Eigen::MatrixXd normal = at.jacobian.transpose() * at.jacobian;
     const Eigen::VectorXd gradient = at.jacobian.transpose() * at.residual;
     const double scale = normal.diagonal().maxCoeff();
@@ -164,7 +172,7 @@ ChordFactorization::ChordFactorization(double contraction) : contraction_(contra
     throw std::invalid_argument(fmt::format("chord contraction must lie in (0, 1), got {}", contraction));
 }
 
-void ChordFactorization::hold(Eigen::PartialPivLU<Eigen::MatrixXd> lu) {
+void ChordFactorization::hold(DenseLU lu) {
   lu_ = std::move(lu);
   held_ = true;
   ++factorizations;
@@ -207,6 +215,7 @@ DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0,
     }
     Eigen::VectorXd step, full;
     StepDecomposition decomposition;
+    complete(out.at);
     if (!newton_step(out.at, options.step_solve, step, decomposition)) {
       stop(NewtonStatus::singular_jacobian, "singular Jacobian");
       break;
@@ -215,7 +224,7 @@ DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0,
                        iteration.secant_step(out.x, out.at, merit, step, full, decomposition) ||
                        (options.levenberg_marquardt && iteration.levenberg_marquardt(out.x, out.at, merit));
     if (options.chord) {
-      auto* lu = std::get_if<Eigen::PartialPivLU<Eigen::MatrixXd>>(&decomposition);
+      auto* lu = std::get_if<DenseLU>(&decomposition);
       if (lu && options.step_solve == NewtonStepSolve::minimum_norm)
         options.chord->hold(std::move(*lu));
       else
@@ -227,6 +236,7 @@ DampedNewtonResult damped_newton(const NewtonSystem& system, Eigen::VectorXd x0,
     }
     ++out.iterations;
   }
+  if (options.jacobian_at_solution) complete(out.at);
   out.residual = std::isfinite(merit) ? merit : std::numeric_limits<double>::infinity();
   if (!out.x.allFinite()) out.x.setZero();  // never hand a non-finite iterate to a caller
   return out;

@@ -28,6 +28,8 @@
 #include <functional>
 #include <string>
 
+#include "linalg/dense_lu.hpp"
+
 namespace bb {
 
 // What the caller's system returns at one x.
@@ -38,6 +40,10 @@ struct NewtonPoint {
   // accepted, and a start point that is not valid ends the iteration at once.
   bool valid = true;
   std::any data;  // anything computed with R (e.g. the contact time histories), handed back with the final point
+  // When set, the system left `jacobian` empty and this fills it from the point (its data): a trial
+  // point the line search rejects, or one a chord step leaves, never needs its Jacobian. Called
+  // before a step is solved at the point and on the point the iteration returns.
+  std::function<void(NewtonPoint&)> complete_jacobian = {};
 };
 
 using NewtonSystem = std::function<NewtonPoint(const Eigen::VectorXd& x)>;
@@ -61,7 +67,7 @@ class ChordFactorization {
   explicit ChordFactorization(double contraction = 0.5);
   double contraction() const { return contraction_; }
   bool fits(Eigen::Index size) const { return held_ && lu_.rows() == size; }
-  void hold(Eigen::PartialPivLU<Eigen::MatrixXd> lu);
+  void hold(DenseLU lu);
   void drop() { held_ = false; }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return lu_.solve(rhs); }
   long chord_steps = 0;     // chord steps taken
@@ -70,7 +76,7 @@ class ChordFactorization {
  private:
   double contraction_;
   bool held_ = false;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  DenseLU lu_;
 };
 
 struct DampedNewtonOptions {
@@ -91,6 +97,8 @@ struct DampedNewtonOptions {
   // Chord steps from this factorization (see above); null: a Newton step at every iteration. Used
   // with step_solve minimum_norm only (the LU of a well-conditioned square Jacobian is kept).
   ChordFactorization* chord = nullptr;
+  // Whether the returned point carries its Jacobian (false: a deferred one is left to the caller).
+  bool jacobian_at_solution = true;
 };
 
 enum class NewtonStatus {

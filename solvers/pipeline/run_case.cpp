@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "analysis/run_analysis.hpp"
+#include "cases/case_settings.hpp"
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
 #include "checks/checks.hpp"
@@ -144,6 +145,12 @@ void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibra
   }
   std::vector<std::string> unevaluated;
   for (const CheckSpec& c : spec.checks) {
+    // A part the command line removed (--unset) takes its results, and the checks on them, along.
+    if (!options.removals.empty() && c.reference_case.empty() && !tables.count(c.result)) {
+      run.warnings.push_back(
+          fmt::format("check '{}' not evaluated: --unset removed its result '{}'", c.name, c.result));
+      continue;
+    }
     const ResultTables* reference = c.reference_case.empty() ? nullptr : &other_run(c.reference_case).results.tables;
     std::optional<RowMatch> pairing;
     if (c.match == CheckSpec::Match::mac) {
@@ -230,7 +237,12 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
   std::optional<StagedFolder> stage;
   bool results_written = false;
   try {
-    const toml::table case_table = read_case_table(case_file);
+    toml::table case_table = read_case_table(case_file);
+    apply_settings(case_table, options.settings, options.removals);
+    for (const std::string& setting : options.settings)
+      run.warnings.push_back(fmt::format("--set {}: the case ran at this setting, not the file's", setting));
+    for (const std::string& key : options.removals)
+      run.warnings.push_back(fmt::format("--unset {}: the case ran without it", key));
     const CaseSpec spec = parse_case_table(case_table, case_file);
     // A bad [calibration] or data file, or a reference that cannot be read, fails here, before any
     // solve, in `run` as in `calibrate`.

@@ -2,6 +2,8 @@
 #pragma once
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "common/work_limits.hpp"
 #include "report/run_record.hpp"
@@ -15,6 +17,8 @@ struct RunOptions {
   bool plots = true;
   FidelityMode fidelity = FidelityMode::fixed;  // fixed: the case's own settings; else its [fidelity] axes
   WorkLimits limits = {};                       // every analysis of the run is estimated against these first
+  std::vector<std::string> settings = {};  // "dotted.key=VALUE" replacing the case file's (cases/case_settings.hpp)
+  std::vector<std::string> removals = {};  // "dotted.key" removed from the case file's
 };
 
 struct RunOutcome {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <any>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -203,6 +204,40 @@ TEST(DampedNewton, CallersMeritConvergenceTestAndDataAreUsed) {
   EXPECT_GT(merit_calls, 0);
   EXPECT_EQ(r.residual, 10.0 * std::abs(std::atan(r.x[0])));
   EXPECT_EQ(std::any_cast<double>(r.at.data), r.x[0]);
+}
+
+// A system that defers its Jacobian: the iteration assembles it only where it solves a step (and
+// on the point it returns, unless told not to), never at the trial points the line search rejects,
+// and converges along the same iterates as with the Jacobian given at every point.
+TEST(DampedNewton, ADeferredJacobianIsAssembledOnlyWhereAStepIsSolved) {
+  int evaluations = 0, assembled = 0;
+  const NewtonSystem deferred = [&](const VectorXd& x) {
+    ++evaluations;
+    NewtonPoint p = arctangent(x);
+    p.jacobian.resize(0, 0);
+    p.data = x[0];
+    p.complete_jacobian = [&assembled](NewtonPoint& q) {
+      ++assembled;
+      q.jacobian = arctangent(VectorXd::Constant(1, std::any_cast<double>(q.data))).jacobian;
+    };
+    return p;
+  };
+  DampedNewtonOptions options{.tolerance = 1e-13};
+  const DampedNewtonResult eager = damped_newton(arctangent, VectorXd::Constant(1, 3.0), options);
+  const DampedNewtonResult lazy = damped_newton(deferred, VectorXd::Constant(1, 3.0), options);
+  ASSERT_TRUE(eager.converged && lazy.converged);
+  EXPECT_EQ(lazy.iterations, eager.iterations);
+  EXPECT_EQ(lazy.x[0], eager.x[0]);
+  // From x = 3 the full step overshoots (atan), so some trials were rejected without a Jacobian:
+  // one per step solved, plus the returned point's.
+  EXPECT_GT(evaluations, lazy.iterations + 1);
+  EXPECT_EQ(assembled, lazy.iterations + 1);
+  EXPECT_EQ(lazy.at.jacobian.rows(), 1);
+  options.jacobian_at_solution = false;
+  assembled = 0;
+  const DampedNewtonResult left = damped_newton(deferred, VectorXd::Constant(1, 3.0), options);
+  EXPECT_EQ(assembled, left.iterations);
+  EXPECT_EQ(left.at.jacobian.size(), 0);
 }
 
 }  // namespace

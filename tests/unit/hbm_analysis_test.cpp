@@ -386,7 +386,10 @@ TEST_F(HbmAnalysis, HarmonicChangeCriterionKeepsTheHigherHOfThePairThatAgrees) {
   EXPECT_NEAR(chosen.peaks[0].component / higher.component, 1.0, 1e-12);
   const double measured = std::max(std::abs(lower.frequency_hz / higher.frequency_hz - 1),
                                    std::abs(lower.component / higher.component - 1));
-  EXPECT_NEAR(trials.back().change, measured, 1e-9);
+  // Each peak is polished by golden section to a bracket of 1e-7 of its frequency
+  // (forced/hbm_sweep.cpp), the windows' from their own path: the two changes agree to the two
+  // brackets, not to rounding.
+  EXPECT_NEAR(trials.back().change, measured, 2e-7);
   EXPECT_LT(error(chosen.peaks[0]), 0.2 * error(single));
   // Friction converges slowly in H: the last change understates the error, the power law through
   // the last three H bounds it.

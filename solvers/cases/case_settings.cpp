@@ -1,0 +1,89 @@
+#include "cases/case_settings.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <memory>
+#include <sstream>
+#include <type_traits>
+#include <utility>
+
+#include "common/errors.hpp"
+#include "common/user_text.hpp"
+
+namespace bb {
+
+namespace {
+
+// A copy of the node without its source region (a parsed node would name line 1 of the case file).
+std::unique_ptr<toml::node> without_source(const toml::node& n) {
+  if (const toml::array* a = n.as_array()) {
+    auto out = std::make_unique<toml::array>();
+    for (const toml::node& e : *a) out->push_back(std::move(*without_source(e)));
+    return out;
+  }
+  if (const toml::table* t = n.as_table()) {
+    auto out = std::make_unique<toml::table>();
+    for (const auto& [k, v] : *t) out->insert(k, std::move(*without_source(v)));
+    return out;
+  }
+  return n.visit([](const auto& v) -> std::unique_ptr<toml::node> {
+    using V = std::decay_t<decltype(v)>;
+    if constexpr (toml::is_value<V>)
+      return std::make_unique<V>(v.get());
+    else
+      return nullptr;
+  });
+}
+
+[[noreturn]] void fail(const std::string& option, const std::string& setting, const std::string& why) {
+  throw InputError(printable(fmt::format("{} '{}': {}", option, setting, why)));
+}
+
+// The table that holds the last part of `key`, and that part.
+std::pair<toml::table*, std::string> holder(toml::table& root, const std::string& key, const std::string& option,
+                                            const std::string& setting) {
+  std::vector<std::string> parts;
+  std::stringstream in(key);
+  for (std::string part; std::getline(in, part, '.');) {
+    if (part.empty()) fail(option, setting, "empty key part");
+    parts.push_back(part);
+  }
+  if (parts.empty()) fail(option, setting, "no key");
+  toml::table* table = &root;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* next = table->get(parts[i]);
+    if (!next || !next->is_table())
+      fail(option, setting,
+           fmt::format("the case has no table [{}]", fmt::join(parts.begin(), parts.begin() + i + 1, ".")));
+    table = next->as_table();
+  }
+  return {table, parts.back()};
+}
+
+}  // namespace
+
+void apply_settings(toml::table& root, const std::vector<std::string>& settings,
+                    const std::vector<std::string>& removals) {
+  for (const std::string& setting : settings) {
+    const size_t eq = setting.find('=');
+    if (eq == std::string::npos || eq == 0) fail("--set", setting, "expected dotted.key=VALUE");
+    toml::table parsed;
+    try {
+      parsed = toml::parse("value = " + setting.substr(eq + 1));
+    } catch (const toml::parse_error& e) {
+      fail("--set", setting, fmt::format("the value is not TOML ({}); strings need quotes", e.description()));
+    }
+    const auto [table, last] = holder(root, setting.substr(0, eq), "--set", setting);
+    const toml::node* value = parsed.get("value");
+    if (!value) fail("--set", setting, "no value");
+    table->insert_or_assign(last, std::move(*without_source(*value)));
+  }
+  for (const std::string& key : removals) {
+    const auto [table, last] = holder(root, key, "--unset", key);
+    if (!table->contains(last)) fail("--unset", key, "the case has no such key");
+    table->erase(last);
+  }
+}
+
+}  // namespace bb

@@ -1,0 +1,58 @@
+// The first frequency of a level's sweep (forced/hbm_level_system.hpp, first_solution) on Table
+// XI's blades and damper (the committed reduced model of table11_calibrate_contact.toml, kt and mu
+// as identified): where Newton from the static state, the H = 1 solution lifted to H, the patient
+// solve and the force homotopy all fail, the solution two harmonics below lifted by two converges.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <optional>
+
+#include "analysis/analysis_spec.hpp"
+#include "cases/case_spec.hpp"
+#include "forced/hbm_level.hpp"
+#include "forced/hbm_level_system.hpp"
+#include "hbm/harmonic_balance.hpp"
+#include "model/build_model.hpp"
+
+namespace bb {
+namespace {
+
+struct TableXI {
+  PreparedHbm prepared;
+  HbmSpec spec;
+};
+
+TableXI table_xi() {
+  const std::filesystem::path file =
+      std::filesystem::path(BB_SOURCE_DIR) / "cases/thesis/table11_calibrate_contact.toml";
+  toml::table root = read_case_table(file);
+  toml::table& analysis = *root["analysis"].as_table();
+  analysis.erase("time_samples");
+  toml::table& damper = *analysis["damper"].as_table();
+  damper.insert_or_assign("kt", 8.09e7);
+  damper.insert_or_assign("mu", 0.7231);
+  const CaseSpec c = parse_case_table(root, file);
+  TableXI out;
+  out.spec = std::get<HbmSpec>(c.analysis);
+  out.prepared = prepare_hbm(build_model(c.model), out.spec);
+  return out;
+}
+
+TEST(HbmFirstSolution, TableXIAt260NAndSevenHarmonicsClimbsFromFiveHarmonics) {
+  const TableXI t = table_xi();
+  constexpr double kForce = 260.0, kOmega = 2 * std::numbers::pi * 170.0;
+  const hbm::HbmSolution s = first_solution(t.prepared, t.spec, kForce, 7, 0, kOmega, std::nullopt);
+  ASSERT_TRUE(s.converged) << s.failure;
+  // A solution of the H = 7 balance: its residual below the solver's tolerance, evaluated afresh.
+  const hbm::HarmonicBalance system = level_system(t.prepared, t.spec, kForce, 7, 0);
+  const auto linear = system.condense(kOmega);
+  ASSERT_TRUE(linear.has_value());
+  const hbm::HarmonicBalance::Residual r = system.residual(*linear, s.x);
+  ASSERT_TRUE(r.ok);
+  EXPECT_LE(r.norm, system.residual_tolerance());
+}
+
+}  // namespace
+}  // namespace bb

@@ -73,8 +73,9 @@ const TableXI& table_xi() {
   return t;
 }
 
-// The system at H and a converged solution at the benchmark's frequency (swept up to it from the
-// band's start, so that it lies on the branch the sweep follows).
+// The system at H and a converged solution at the benchmark's frequency: the level swept over
+// the band as a case sweeps it, then solved at the frequency from the nearest point of its path
+// (so that it lies on the branch the sweep follows).
 struct Point {
   bb::hbm::HarmonicBalance system;
   bb::hbm::HarmonicBalance::Linear linear;
@@ -85,18 +86,13 @@ Point converged_point(int harmonics) {
   const TableXI& t = table_xi();
   bb::hbm::HarmonicBalance system = bb::level_system(t.prepared, t.spec, kForce, harmonics, 0);
   const double omega = 2 * std::numbers::pi * kFrequencyHz;
-  const bb::hbm::HbmSolution first =
-      bb::first_solution(t.prepared, t.spec, kForce, harmonics, 0, 2 * std::numbers::pi * 170.0, std::nullopt);
-  if (!first.converged) throw std::runtime_error("Table XI at 100 N: no first point at 170 Hz");
-  std::optional<Eigen::VectorXd> x = first.x;
-  for (double f = 170.05; f <= kFrequencyHz + 1e-9; f += 0.05) {
-    const bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(system, 2 * std::numbers::pi * f, x);
-    if (!s.converged) throw std::runtime_error("Table XI at 100 N did not converge at " + std::to_string(f) + " Hz");
-    x = s.x;
-  }
+  const bb::HbmLevel level = bb::sweep_hbm_level(t.prepared, t.spec, kForce, harmonics);
+  const bb::hbm::HbmSolution s =
+      bb::hbm::solve_at_frequency(system, omega, bb::nearest_point(level.path, omega).x);
+  if (!s.converged) throw std::runtime_error("Table XI at 100 N did not converge at the benchmark's frequency");
   auto linear = system.condense(omega);
   if (!linear) throw std::runtime_error("singular condensation");
-  return {std::move(system), std::move(*linear), *x};
+  return {std::move(system), std::move(*linear), s.x};
 }
 
 // Counted flops of one iteration (see the header).

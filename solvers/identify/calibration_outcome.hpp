@@ -19,9 +19,10 @@ namespace bb {
 // One start of a multi-start fit.
 struct CalibrationStart {
   std::vector<double> start, values;  // parameter values at the start and at its end
-  double initial_cost = 0.0, final_cost = 0.0;
+  double initial_cost = 0.0, final_cost = 0.0;  // NaN when not evaluated
   int iterations = 0;
   bool converged = false;
+  bool evaluated = true;  // false: the model could not be run at the start values
 };
 
 struct CalibrationOutcome {

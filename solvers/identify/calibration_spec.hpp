@@ -23,7 +23,7 @@ struct CalibrationParameter {
   struct Prior {
     double value = 0.0, sigma = 0.0;
   };
-  std::optional<Prior> prior;
+  std::optional<Prior> prior = {};
 };
 
 // One [[calibration.data]] block: a measured curve and the result table that models it.

@@ -26,10 +26,10 @@ struct FitPoint {
   bool held_out = false;  // a point of a held-out curve: predicted, not fitted (CalibrationData::held_out)
   // The unit its values are shown in ("m", "m/N", "Hz", "N", "deg", ... ; empty: none known); SI
   // in the fields above, degrees shown for an angle (display_scale).
-  std::string unit;
+  std::string unit = {};
 
-  double misfit() const;
-  double display_scale() const;  // 180 / pi for an angle, else 1  // computed - measured (wrapped for angles)
+  double misfit() const;         // computed - measured (wrapped for angles)
+  double display_scale() const;  // 180 / pi for an angle, else 1
   double residual() const { return misfit() / sigma; }
 };
 

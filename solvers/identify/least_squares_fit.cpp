@@ -403,10 +403,12 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     CalibrationStart& r = run.result;
     r.start = starts[s];
     for (double v : run.x) r.values.push_back(std::exp(v));
-    r.initial_cost = summary.initial_cost;
-    r.final_cost = summary.final_cost;
+    // Ceres gives -1 for the costs of a start whose values the model could not be run at.
+    r.evaluated = summary.initial_cost >= 0.0;
+    r.initial_cost = r.evaluated ? summary.initial_cost : NAN;
+    r.final_cost = r.evaluated ? summary.final_cost : NAN;
     r.iterations = static_cast<int>(summary.iterations.size());
-    r.converged = summary.termination_type == ceres::CONVERGENCE;
+    r.converged = r.evaluated && summary.termination_type == ceres::CONVERGENCE;
     run.message = summary.message;
     run.brief = summary.BriefReport();
   };
@@ -418,9 +420,10 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     out.residual_evaluations += runs[s].evaluations;
     out.jacobian_fallbacks += runs[s].fallbacks;
     out.starts.push_back(r);
-    if (s == 0 ||
-        (r.converged && (!out.starts[out.best].converged || r.final_cost < out.starts[out.best].final_cost)) ||
-        (!out.starts[out.best].converged && r.final_cost < out.starts[out.best].final_cost)) {
+    const CalibrationStart& best = out.starts[out.best];
+    if (s == 0 || (r.evaluated && !best.evaluated) ||
+        (r.converged && (!best.converged || r.final_cost < best.final_cost)) ||
+        (!best.converged && r.final_cost < best.final_cost)) {
       out.best = s;
       x = runs[s].x;
       message = runs[s].message;
@@ -436,7 +439,11 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   // A converged start is kept over unconverged ones; a cheaper unconverged start is said, since its
   // end is not a minimum and the true one may lie beyond it.
   for (size_t s = 0; s < out.starts.size(); ++s)
-    if (chosen.converged && !out.starts[s].converged && out.starts[s].final_cost < chosen.final_cost)
+    if (!out.starts[s].evaluated)
+      out.warnings.push_back(fmt::format("start {} could not be evaluated at its start values (the model failed "
+                                         "there: {}): it took no step",
+                                         s + 1, runs[s].message));
+    else if (chosen.converged && !out.starts[s].converged && out.starts[s].final_cost < chosen.final_cost)
       out.warnings.push_back(fmt::format(
           "start {} reached a lower cost ({:.6g}) than the reported start {} ({:.6g}) but did not converge ({}): "
           "the best minimum may lie beyond it; raise max_iterations",

@@ -145,5 +145,43 @@ TEST(LeastSquaresFit, TheRobustLossActsOnEachPointNotOnTheWholeCost) {
   EXPECT_LT(std::abs(cauchy.values[0] - 2.0), 0.05);
 }
 
+// A start whose values the model cannot be run at (Ceres reports its costs as -1) is said to have
+// failed there, never taken for a cheaper minimum than the reported one nor chosen over a start
+// that ran.
+TEST(LeastSquaresFit, AStartTheModelCannotRunAtIsReportedNotTakenForACheaperMinimum) {
+  const auto line = [](const std::vector<double>& v, int k) { return v[0] * k + v[1] * k * k; };
+  const FitEvaluator fails_above_one = [line](const std::vector<double>& v, bool) {
+    std::vector<FitPoint> points;
+    for (int k = 1; k <= 5; ++k) {
+      FitPoint p;
+      p.set = "curve";
+      p.x = k;
+      p.measured = line(std::vector<double>{0.5, 3.0}, k);
+      p.computed = v[0] > 1.0 ? NAN : line(v, k);  // e.g. a sweep that finds no solution there
+      p.sigma = 0.01 * std::abs(p.measured);
+      points.push_back(p);
+    }
+    return points;
+  };
+  CalibrationSpec spec = spec_of({"a", "b"});
+  spec.starts = 3;  // the case's values, then one Latin-hypercube point per half of each log range
+  const CalibrationOutcome o = fit_parameters(spec, fails_above_one, false, 5);
+  ASSERT_EQ(o.starts.size(), 3u);
+  int failed = 0;
+  for (const CalibrationStart& s : o.starts)
+    if (s.start[0] > 1.0) {
+      ++failed;
+      EXPECT_FALSE(s.evaluated);
+      EXPECT_FALSE(s.converged);
+      EXPECT_TRUE(std::isnan(s.final_cost));
+    }
+  ASSERT_EQ(failed, 1);
+  ASSERT_TRUE(o.converged) << o.termination;
+  EXPECT_TRUE(o.starts[o.best].evaluated);
+  EXPECT_NEAR(o.values[0], 0.5, 1e-6);
+  EXPECT_TRUE(warned(o, "could not be evaluated at its start values"));
+  EXPECT_FALSE(warned(o, "reached a lower cost"));
+}
+
 }  // namespace
 }  // namespace bb

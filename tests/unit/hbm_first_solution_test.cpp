@@ -41,18 +41,22 @@ TableXI table_xi(double kt = 8.09e7, double mu = 0.7231) {
   return out;
 }
 
+// x solves the balance at H: its residual, evaluated afresh, below the solver's tolerance.
+void expect_balanced(const TableXI& t, double force, int harmonics, double omega, const Eigen::VectorXd& x) {
+  const hbm::HarmonicBalance system = level_system(t.prepared, t.spec, force, harmonics, 0);
+  const auto linear = system.condense(omega);
+  ASSERT_TRUE(linear.has_value());
+  const hbm::HarmonicBalance::Residual r = system.residual(*linear, x);
+  ASSERT_TRUE(r.ok);
+  EXPECT_LE(r.norm, system.residual_tolerance());
+}
+
 TEST(HbmFirstSolution, TableXIAt260NAndSevenHarmonicsClimbsFromFiveHarmonics) {
   const TableXI t = table_xi();
   constexpr double kForce = 260.0, kOmega = 2 * std::numbers::pi * 170.0;
   const hbm::HbmSolution s = first_solution(t.prepared, t.spec, kForce, 7, 0, kOmega, std::nullopt);
   ASSERT_TRUE(s.converged) << s.failure;
-  // A solution of the H = 7 balance: its residual below the solver's tolerance, evaluated afresh.
-  const hbm::HarmonicBalance system = level_system(t.prepared, t.spec, kForce, 7, 0);
-  const auto linear = system.condense(kOmega);
-  ASSERT_TRUE(linear.has_value());
-  const hbm::HarmonicBalance::Residual r = system.residual(*linear, s.x);
-  ASSERT_TRUE(r.ok);
-  EXPECT_LE(r.norm, system.residual_tolerance());
+  expect_balanced(t, kForce, 7, kOmega, s.x);
 }
 
 // A calibration's trial values far from the data (a Latin-hypercube start, kt 57 times the
@@ -64,12 +68,7 @@ TEST(HbmFirstSolution, TableXIAtAStiffContactStartsFromANeighbouringFrequency) {
   const hbm::HbmSolution s = first_solution(t.prepared, t.spec, kForce, 1, 0, kOmega, std::nullopt);
   ASSERT_TRUE(s.converged) << s.failure;
   EXPECT_EQ(s.omega, kOmega);
-  const hbm::HarmonicBalance system = level_system(t.prepared, t.spec, kForce, 1, 0);
-  const auto linear = system.condense(kOmega);
-  ASSERT_TRUE(linear.has_value());
-  const hbm::HarmonicBalance::Residual r = system.residual(*linear, s.x);
-  ASSERT_TRUE(r.ok);
-  EXPECT_LE(r.norm, system.residual_tolerance());
+  expect_balanced(t, kForce, 1, kOmega, s.x);
 }
 
 }  // namespace

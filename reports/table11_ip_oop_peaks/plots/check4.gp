@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'check4.svg'
-set title 'Check: Energy balance per cycle at every peak, 1e-6'
+set title 'Check: Every sweep reaches 190 Hz with no failed frequency, every peak trusted'
 set xlabel 'entry (order of the report table)'
 set ylabel 'value'
 set key outside right

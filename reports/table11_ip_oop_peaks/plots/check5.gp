@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'check5.svg'
-set title 'Check: Fe = 5 N is the fully stuck limit (eq 3.51): peaks within 1e-5'
+set title 'Check: Energy balance per cycle at every peak, 1e-6'
 set xlabel 'entry (order of the report table)'
 set ylabel 'value'
 set key outside right

@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'check6.svg'
-set title 'Check: Forced peaks on the backbones (single-nonlinear-mode theory): frequency'
+set title 'Check: Fe = 5 N is the fully stuck limit (eq 3.51): peaks within 1e-5'
 set xlabel 'entry (order of the report table)'
 set ylabel 'value'
 set key outside right

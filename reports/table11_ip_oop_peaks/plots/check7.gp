@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'check7.svg'
-set title 'Check: Forced peaks on the backbones (single-nonlinear-mode theory): peak component'
+set title 'Check: Forced peaks on the backbones (single-nonlinear-mode theory): frequency'
 set xlabel 'entry (order of the report table)'
 set ylabel 'value'
 set key outside right

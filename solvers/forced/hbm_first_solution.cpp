@@ -50,10 +50,7 @@ std::optional<hbm::HbmSolution> from_a_neighbouring_frequency(const hbm::Harmoni
     const double beside = omega * (1.0 + d);
     hbm::HbmSolution s = hbm::solve_at_frequency(system, beside, initial);
     iterations += s.iterations;
-    for (int k = 1; k <= 4 && s.converged; ++k) {
-      s = hbm::solve_at_frequency(system, beside + (omega - beside) * k / 4.0, s.x);
-      iterations += s.iterations;
-    }
+    if (s.converged) s = approach_in_steps(system, beside, s.x, omega, 4, iterations);
     if (s.converged) return s;
   }
   return std::nullopt;

@@ -38,6 +38,18 @@ Eigen::VectorXd with_harmonics(const Eigen::VectorXd& x, Index contact_dofs, int
   return y;
 }
 
+hbm::HbmSolution approach_in_steps(const hbm::HarmonicBalance& system, double w0, Eigen::VectorXd x, double omega,
+                                   int steps, int& iterations, ChordFactorization* chord) {
+  hbm::HbmSolution s;
+  for (int k = 1; k <= steps; ++k) {
+    s = hbm::solve_at_frequency(system, w0 + (omega - w0) * k / steps, x, chord);
+    iterations += s.iterations;
+    if (!s.converged) break;
+    x = s.x;
+  }
+  return s;
+}
+
 namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
@@ -196,13 +208,7 @@ std::vector<double> retry_from_above(const LevelSystems& systems, const std::vec
     const hbm::HarmonicBalance& system = systems.at(h);
     hbm::HbmSolution s = hbm::solve_at_frequency(system, omega, next->x);
     path.corrector_iterations += s.iterations;
-    Eigen::VectorXd x = next->x;
-    for (int k = 1; k <= 8 && !s.converged; ++k) {
-      s = hbm::solve_at_frequency(system, above + (omega - above) * k / 8.0, x);
-      path.corrector_iterations += s.iterations;
-      if (!s.converged) break;
-      x = s.x;
-    }
+    if (!s.converged) s = approach_in_steps(system, above, next->x, omega, 8, path.corrector_iterations);
     if (!s.converged) {
       still.push_back(omega / kTwoPi);
       continue;
@@ -293,14 +299,8 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
       // Approach it in smaller steps from the last converged point (a kink between the two).
       h = h_last, change = kNaN;
       const hbm::HarmonicBalance& system = systems.at(h_last);
-      Eigen::VectorXd x = pts.back().x;
-      const double w0 = pts.back().omega;
-      for (int k = 1; k <= 8; ++k) {
-        s = hbm::solve_at_frequency(system, w0 + (omega - w0) * k / 8.0, x, chord_for(system));
-        path.corrector_iterations += s.iterations;
-        if (!s.converged) break;
-        x = s.x;
-      }
+      s = approach_in_steps(system, pts.back().omega, pts.back().x, omega, 8, path.corrector_iterations,
+                            chord_for(system));
       iterations = s.iterations;
     }
     report(omega, i, iterations);

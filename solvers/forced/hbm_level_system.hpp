@@ -53,6 +53,12 @@ double relative_change(double value, double reference);
 // higher ones cut, or added as zero.
 Eigen::VectorXd with_harmonics(const Eigen::VectorXd& x, Eigen::Index contact_dofs, int harmonics);
 
+// The solution at omega approached from a converged solution x at w0 in `steps` equal frequency
+// steps, each from the one before, stopping at the first that fails (returned): the way past a
+// kink between two frequencies. Every solve's iterations are added to `iterations`.
+hbm::HbmSolution approach_in_steps(const hbm::HarmonicBalance& system, double w0, Eigen::VectorXd x, double omega,
+                                   int steps, int& iterations, ChordFactorization* chord = nullptr);
+
 // The point of a non-empty path nearest to omega in frequency (the first of equals): the start
 // of a solve there.
 const hbm::ContinuationPoint& nearest_point(const hbm::ContinuationResult& path, double omega);
@@ -64,8 +70,8 @@ inline int point_h(const HbmLevel& level, size_t i) {
 
 // The first frequency's solution of a level: direct Newton from `initial` (or the linear limits),
 // then (H > 1) the H = 1 solution lifted to H, homotopies in the force, longer Newton solves and
-// (H > 3) the solution at H - 2 lifted by two (hbm_first_solution.cpp). With initial_force, `initial` is a solution at that force (the
-// previous level's), the start of the first homotopy.
+// (H > 3) the solution at H - 2 lifted by two (hbm_first_solution.cpp). With initial_force, `initial` is a solution at
+// that force (the previous level's), the start of the first homotopy.
 hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples,
                                 double omega, const std::optional<Eigen::VectorXd>& initial,
                                 std::optional<double> initial_force = std::nullopt);

@@ -31,12 +31,12 @@ DenseLU::DenseLU(const Eigen::MatrixXd& a) : n_(a.rows()) {
   if (a.rows() != a.cols()) throw std::invalid_argument("DenseLU: the matrix must be square");
   if (n_ == 0) return;
   if (n_ > std::numeric_limits<int>::max() / n_) throw std::invalid_argument("DenseLU: the matrix is too large");
-  norm1_ = a.cwiseAbs().colwise().sum().maxCoeff();
   by_lapack_ = lapack_usable();
   if (!by_lapack_) {
     eigen_.compute(a);
     return;
   }
+  norm1_ = a.cwiseAbs().colwise().sum().maxCoeff();  // for dgecon
   const int n = static_cast<int>(n_);
   lu_ = a;
   pivots_.resize(static_cast<size_t>(n));
@@ -63,10 +63,10 @@ double DenseLU::rcond() const {
 
 Eigen::VectorXd DenseLU::solve(const Eigen::VectorXd& b) const {
   if (b.size() != n_) throw std::invalid_argument("DenseLU: right-hand side of the wrong size");
+  if (n_ == 0) return b;  // neither decomposition was made
   if (!by_lapack_) return eigen_.solve(b);
   if (singular_) return Eigen::VectorXd::Constant(n_, std::numeric_limits<double>::quiet_NaN());
   Eigen::VectorXd x = b;
-  if (n_ == 0) return x;
   const int n = static_cast<int>(n_), one = 1;
   int info = 0;
   dgetrs_("N", &n, &one, lu_.data(), &n, pivots_.data(), x.data(), &n, &info);

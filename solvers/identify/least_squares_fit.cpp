@@ -371,6 +371,10 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   options.function_tolerance = cal.function_tolerance;
   options.parameter_tolerance = 1e-8;
   options.update_state_every_iteration = true;
+  // No projected line search after each step: with bounds, Ceres would take the gradient at every
+  // candidate (a whole Jacobian, 2 n model runs) before evaluating its cost, doubling the runs per
+  // iteration; Ceres still projects each step onto the bounds.
+  options.max_num_line_search_step_size_iterations = 0;
   // Every start is its own problem: they run on `threads` workers, and the best is chosen in start
   // order afterwards, so the outcome is the serial one whatever the workers' timing.
   struct StartRun {
@@ -440,9 +444,10 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   // end is not a minimum and the true one may lie beyond it.
   for (size_t s = 0; s < out.starts.size(); ++s)
     if (!out.starts[s].evaluated)
-      out.warnings.push_back(fmt::format("start {} could not be evaluated at its start values (the model failed "
-                                         "there: {}): it took no step",
-                                         s + 1, runs[s].message));
+      out.warnings.push_back(
+          fmt::format("start {} could not be evaluated at its start values (the model failed "
+                      "there: {}): it took no step",
+                      s + 1, runs[s].message));
     else if (chosen.converged && !out.starts[s].converged && out.starts[s].final_cost < chosen.final_cost)
       out.warnings.push_back(fmt::format(
           "start {} reached a lower cost ({:.6g}) than the reported start {} ({:.6g}) but did not converge ({}): "

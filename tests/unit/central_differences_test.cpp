@@ -1,4 +1,5 @@
-// The parallel central differences of a fit's Jacobian against Ceres's own, bit for bit.
+// The parallel central differences of a fit's Jacobian against Ceres's own, bit for bit, and the
+// centre run taken from the residuals Ceres has just evaluated at the same point.
 #include "identify/central_differences.hpp"
 
 #include <ceres/dynamic_numeric_diff_cost_function.h>
@@ -67,6 +68,38 @@ TEST(CentralDifferences, AFailedRunFailsTheEvaluation) {
   double* jacobians[] = {&j};
   EXPECT_TRUE(differences.Evaluate(parameters, &r, nullptr));
   EXPECT_FALSE(differences.Evaluate(parameters, &r, jacobians));
+}
+
+// Ceres evaluates a candidate's residuals, then (the step accepted) the Jacobian there: that
+// Jacobian takes its centre from the residuals, 2 n runs instead of 2 n + 1, with the same values;
+// at another point all 2 n + 1 run.
+TEST(CentralDifferences, AJacobianWhereTheResidualsWereJustEvaluatedReusesThem) {
+  std::atomic<int> runs{0};
+  const bb::CentralDifferences differences(
+      [&](const std::vector<double>& y, double* r) {
+        ++runs;
+        return model(y.data(), r);
+      },
+      3, 4, 1e-4, 2);
+  const std::vector<double> x = {0.7, -1.3, 0.0}, other = {0.5, -1.3, 0.0};
+  const double* at_x[] = {x.data()};
+  const double* at_other[] = {other.data()};
+  std::vector<double> r(4), j(12), r_fresh(4), j_fresh(12);
+  double* jacobians[] = {j.data()};
+  double* jacobians_fresh[] = {j_fresh.data()};
+  ASSERT_TRUE(differences.Evaluate(at_x, r.data(), nullptr));
+  EXPECT_EQ(runs.load(), 1);
+  ASSERT_TRUE(differences.Evaluate(at_x, r.data(), jacobians));
+  EXPECT_EQ(runs.load(), 7) << "the centre reused";
+  ASSERT_TRUE(differences.Evaluate(at_other, r.data(), jacobians));
+  EXPECT_EQ(runs.load(), 14) << "another point: every run";
+  const bb::CentralDifferences fresh([](const std::vector<double>& y, double* out) { return model(y.data(), out); }, 3,
+                                     4, 1e-4, 1);
+  ASSERT_TRUE(fresh.Evaluate(at_x, r_fresh.data(), jacobians_fresh));
+  ASSERT_TRUE(differences.Evaluate(at_x, r.data(), nullptr));
+  ASSERT_TRUE(differences.Evaluate(at_x, r.data(), jacobians));
+  EXPECT_EQ(r, r_fresh);
+  EXPECT_EQ(j, j_fresh);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // One Newton iteration of Table XI's condensed harmonic balance against its dense-algebra bound
 // (issue 31, point 2). The system: cases/thesis/table11_calibrate_contact.toml (the committed
 // 28-DOF reduced blades, the rigid damper, three Jenkins contacts on 9 contact DOFs) with kt and mu
-// as identified (8.09e7 N/m, 0.7231), the event-resolved AFT at its automatic samples, H = 3 or 7,
+// as identified until 2026-11-28 (8.09e7 N/m, 0.7231), the event-resolved AFT at its automatic samples, H = 3 or 7,
 // at the 100 N level near its OOP peak (176.5 Hz), where the contacts stick, slip and the normal
 // loads vary. Run from the repository root.
 //
@@ -87,8 +87,7 @@ Point converged_point(int harmonics) {
   bb::hbm::HarmonicBalance system = bb::level_system(t.prepared, t.spec, kForce, harmonics, 0);
   const double omega = 2 * std::numbers::pi * kFrequencyHz;
   const bb::HbmLevel level = bb::sweep_hbm_level(t.prepared, t.spec, kForce, harmonics);
-  const bb::hbm::HbmSolution s =
-      bb::hbm::solve_at_frequency(system, omega, bb::nearest_point(level.path, omega).x);
+  const bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(system, omega, bb::nearest_point(level.path, omega).x);
   if (!s.converged) throw std::runtime_error("Table XI at 100 N did not converge at the benchmark's frequency");
   auto linear = system.condense(omega);
   if (!linear) throw std::runtime_error("singular condensation");

@@ -1,6 +1,6 @@
 // The first frequency of a level's sweep (forced/hbm_level_system.hpp, first_solution) on Table
 // XI's blades and damper (the committed reduced model of table11_calibrate_contact.toml, kt and mu
-// as identified): where Newton from the static state, the H = 1 solution lifted to H, the patient
+// as identified until 2026-11-28): where Newton from the static state, the H = 1 solution lifted to H, the patient
 // solve and the force homotopy all fail, the solution two harmonics below lifted by two converges,
 // and at H = 1 (no ladder) a start from a frequency a hair away.
 #include <gtest/gtest.h>

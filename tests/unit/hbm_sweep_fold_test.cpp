@@ -1,7 +1,7 @@
 // Grid sweeps through folds (forced/hbm_grid_sweep.cpp, hbm/continuation.hpp) on the Table XI
-// model with the identified kt and mu, events AFT: a smooth fold that runs back further than half
-// a grid step, a non-smooth one where the branch turns back at a kink, and (at a calibration's
-// trial values) a fold the branch never comes back from, where the response jumps.
+// model with kt = 8.09e7, mu = 0.7231 (identified until 2026-11-28), events AFT: a smooth fold that runs back further
+// than half a grid step, a non-smooth one where the branch turns back at a kink, and (at a calibration's trial values)
+// a fold the branch never comes back from, where the response jumps.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -17,7 +17,8 @@ namespace {
 
 class HbmSweepFold : public test::TempFolderTest {
  protected:
-  // One force level of the model with the identified kt and mu, events AFT, at H harmonics.
+  // One force level of the model with kt and mu (by default those identified until 2026-11-28), events AFT, at H
+  // harmonics.
   AnalysisResults sweep(const std::string& level, const std::string& range, int harmonics, int samples,
                         const std::string& kt = "8.090e7", const std::string& mu = "0.7231") const {
     test::TwoBladeRomCase c;

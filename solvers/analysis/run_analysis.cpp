@@ -52,7 +52,8 @@ AnalysisResults run(const HbmSpec& spec, const Model& model, const HbmProgress& 
 AnalysisResults run(const TimeSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
   TimeOutcome o = run_time(model, spec, progress);
   ResultTables tables = o.tables;
-  return {std::move(tables), std::move(o)};
+  std::string failure = o.failure;
+  return {std::move(tables), std::move(o), std::move(failure)};
 }
 
 AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress&, const WorkLimits&) {
@@ -81,10 +82,17 @@ AnalysisResults run(const CyclicModalSpec& spec, const Model& model, const HbmPr
 
 }  // namespace
 
-AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,
-                             const WorkLimits& limits) {
+AnalysisResults run_analysis_keeping_tables(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,
+                                            const WorkLimits& limits) {
   require_within(estimate_work(spec, model), limits);
   return std::visit([&](const auto& s) { return run(s, model, progress, limits); }, spec);
+}
+
+AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,
+                             const WorkLimits& limits) {
+  AnalysisResults r = run_analysis_keeping_tables(spec, model, progress, limits);
+  if (!r.failure.empty()) throw SolverError(r.failure);
+  return r;
 }
 
 }  // namespace bb

@@ -69,6 +69,9 @@ static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<Analys
 struct AnalysisResults {
   ResultTables tables;
   AnalysisOutcome outcome;
+  // A solver failure found once the tables were built (a time analysis's peak resting on a
+  // frequency without a steady state): the tables stand, the case has no verdict. Empty: none.
+  std::string failure;
 };
 
 // Calls fn(spec, outcome) with the matching alternatives of both.
@@ -88,5 +91,10 @@ decltype(auto) visit_analysis(const AnalysisSpec& spec, const AnalysisResults& r
 // analysis does not report in its tables.
 AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress = {},
                              const WorkLimits& limits = {});
+
+// The same, but a failure found once the tables were built is returned in `failure` with them,
+// not thrown: a run that writes its tables keeps what was solved.
+AnalysisResults run_analysis_keeping_tables(const AnalysisSpec& spec, const Model& model,
+                                            const HbmProgress& progress = {}, const WorkLimits& limits = {});
 
 }  // namespace bb

@@ -208,22 +208,28 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     // A peak of the integration is a result only where the grid point it rests on and both its
     // neighbours reached the steady state: an amplitude still changing from period to period can
     // look like a peak (or hide one) and would be checked as if it were the answer.
-    const auto require_steady = [&](size_t kind, Index at, double f) {
+    // The first reason a peak is not a result: its row then holds NaN for that peak.
+    const auto require_steady = [&](size_t kind, Index at, double f) -> bool {
+      const auto fail = [&](std::string why) {
+        if (o.failure.empty()) o.failure = std::move(why);
+        return false;
+      };
       for (Index i = std::max<Index>(at - 1, 0); i <= std::min<Index>(at + 1, nf - 1); ++i)
         if (level.steady[static_cast<size_t>(i)])
           continue;
         else if (shooting)
-          throw SolverError(fmt::format("time analysis at Fe = {:g} N: the {} rests on {:.4f} Hz, where {}",
-                                        level.force, kinds[kind] == "peak" ? "peak" : kinds[kind] + " peak",
-                                        frequencies[static_cast<size_t>(i)], level.failure[static_cast<size_t>(i)]));
+          return fail(fmt::format("time analysis at Fe = {:g} N: the {} rests on {:.4f} Hz, where {}", level.force,
+                                  kinds[kind] == "peak" ? "peak" : kinds[kind] + " peak",
+                                  frequencies[static_cast<size_t>(i)], level.failure[static_cast<size_t>(i)]));
         else
-          throw SolverError(fmt::format(
+          return fail(fmt::format(
               "time integration at Fe = {:g} N: the {} ({:.4f} Hz) rests on {:.4f} Hz, which did not reach "
               "the steady state within {} periods (cycle-to-cycle change above {:g}); raise max_cycles or "
               "steady_tolerance, or refine steps_per_period",
               level.force,
               kinds[kind] == "peak" ? std::string("peak") : (kinds[kind] == "ip" ? "IP" : "OOP") + std::string(" peak"),
               f, frequencies[static_cast<size_t>(i)], spec.max_cycles, spec.steady_tolerance));
+      return true;
     };
     const auto peaks_of = [&](const Eigen::MatrixXd& amplitude, const Eigen::MatrixXd& components, bool integrated) {
       std::vector<double> prow = {static_cast<double>(l + 1), level.force};
@@ -237,10 +243,10 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
         if (std::isfinite(f))
           at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
         at = std::clamp<Index>(at, 0, nf - 1);
-        if (integrated && spec.require_steady_peaks) require_steady(k, at, f);
+        const bool stands = !(integrated && spec.require_steady_peaks) || require_steady(k, at, f);
         // The right (or first) response: the parabola's value without ip_oop, else the nearest grid value.
-        const double amp = !pair ? v : right < nr ? amplitude(at, right) : v;
-        prow.insert(prow.end(), {f, amp, amp / level.force});
+        const double amp = !stands ? kNan : !pair ? v : right < nr ? amplitude(at, right) : v;
+        prow.insert(prow.end(), {stands ? f : kNan, amp, amp / level.force});
       }
       return prow;
     };

@@ -48,10 +48,14 @@ struct TimeOutcome {
   std::vector<TimeLevel> levels;
   std::optional<TimeHistoryRecord> record;
   double seconds = 0.0;
+  // The first peak that rests on a frequency without a steady state (or periodic solution); its
+  // row holds NaN for that peak, and the run has no verdict. Empty: every peak stands.
+  std::string failure;
 };
 
 // Throws as prepare_hbm; a frequency that does not reach the steady state, or a Newmark step that
-// fails, is reported in the tables (steady = 0, with the change or the message), never thrown.
+// fails, is reported in the tables (steady = 0, with the change or the message), never thrown; a
+// peak resting on one is `failure`.
 TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress = {});
 
 }  // namespace bb

@@ -264,11 +264,18 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     const Model model = choice ? std::move(choice->model) : build_model(spec.model);
     describe_model(used.model, std::holds_alternative<ContactLoopSpec>(used.analysis), model, run);
     try {
-      const AnalysisResults results =
-          choice ? std::move(choice->results) : run_analysis(used.analysis, model, progress, options.limits);
+      const AnalysisResults results = choice
+                                          ? std::move(choice->results)
+                                          : run_analysis_keeping_tables(used.analysis, model, progress, options.limits);
       if (progress) std::fputs("\r\033[K", stderr);
       if (choice) report_fidelity(*spec.fidelity, options.fidelity, *choice, stage->path(), options.plots, run);
       analyse(used, calibration, model, results, stage->path(), options, run, results_written);
+      // What was solved is written; a result that failed after its tables were built leaves the
+      // case without a verdict.
+      if (!results.failure.empty()) {
+        run.checks.clear();
+        throw SolverError(results.failure);
+      }
     } catch (const InputError& e) {
       // Errors found by the solvers concern the model as a whole: name the case they came from.
       const std::string what = e.what();

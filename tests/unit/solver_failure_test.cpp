@@ -3,6 +3,8 @@
 // stepped sine stopped before its steady state, and shooting that does not converge.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "common/errors.hpp"
@@ -39,7 +41,8 @@ class TimeSolverFailure : public test::TempFolderTest {};
 
 // A stepped sine stopped after 3 periods per frequency never reaches the steady state: its peak is
 // a transient amplitude, so the run fails (exit 3) naming the frequency, instead of passing a check.
-TEST_F(TimeSolverFailure, APeakOnAFrequencyThatIsNotSteadyFailsTheRun) {
+// What was integrated is kept: the frf table with each frequency's steady flag, the peak NaN.
+TEST_F(TimeSolverFailure, APeakOnAFrequencyThatIsNotSteadyFailsTheRunAndKeepsItsTables) {
   test::OscillatorCase c;
   c.levels = "[0.1]";
   c.range = "[200.0, 250.0]";
@@ -55,6 +58,12 @@ TEST_F(TimeSolverFailure, APeakOnAFrequencyThatIsNotSteadyFailsTheRun) {
   EXPECT_NE(o.record.message.find("did not reach the steady state within 3 periods"), std::string::npos)
       << o.record.message;
   EXPECT_EQ(exit_code(o.record.status), exit_solver_failed);
+  EXPECT_TRUE(o.record.checks.empty()) << "no verdict";
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "frf.csv"));
+  std::ifstream peaks(dir_ / "out" / "peaks.csv");
+  std::string header, row;
+  ASSERT_TRUE(std::getline(peaks, header) && std::getline(peaks, row));
+  EXPECT_NE(row.find("nan"), std::string::npos) << row;
 }
 
 // Shooting cut to one Newton iteration below rounding cannot converge: the run fails (exit 3) with

@@ -2,7 +2,7 @@
 # project against it: fails unless find_package(bladebench) and the installed headers and library
 # work from outside the source tree. Arguments: BUILD (the build tree), WORK (a scratch folder),
 # CONSUMER (tests/install/consumer, or examples/), GENERATOR; RUN_CTEST=ON runs the project's own
-# tests (the examples) instead of its `consumer` program.
+# tests (the consumer's program and case files, or the examples) instead of its `consumer` program.
 file(REMOVE_RECURSE "${WORK}")
 foreach(step
         "install;--install;${BUILD};--prefix;${WORK}/prefix"

@@ -58,8 +58,9 @@ struct CalibrationSpec {
   // Converged when the cost changes by less than this relative amount in a step (Ceres's
   // function_tolerance); models with solver noise (peaks of a nonlinear sweep) need a looser one.
   double function_tolerance = 1e-10;
-  // Relative step of the central differences (in log space). Models whose response is only
-  // piecewise smooth (AFT sampling of friction contacts) need a step that spans their kinks.
+  // Step of the central differences in the log values, i.e. the relative step of every parameter
+  // whatever its unit. Models whose response is only piecewise smooth (AFT sampling of friction
+  // contacts) need a step that spans their kinks.
   double derivative_step = 1e-4;
   // "auto": analytic derivatives when the model gives them (every fitted point from frf data of an
   // hbm analysis, every parameter a path hbm/sensitivity.hpp differentiates), else central

@@ -3,19 +3,17 @@
 #include <Eigen/Core>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <utility>
 
 #include "common/parallel_indices.hpp"
 
 namespace bb {
 
-CentralDifferences::CentralDifferences(ResidualFunction residual, int parameters, int residuals, double relative_step,
+CentralDifferences::CentralDifferences(ResidualFunction residual, int parameters, int residuals, double step,
                                        std::size_t workers)
     : residual_(std::move(residual)),
       parameters_(parameters),
-      relative_step_(relative_step),
+      step_(step),
       workers_(std::max<std::size_t>(1, workers)) {
   mutable_parameter_block_sizes()->push_back(parameters);
   set_num_residuals(residuals);
@@ -31,11 +29,8 @@ bool CentralDifferences::Evaluate(double const* const* parameters, double* resid
     last_residuals_.assign(residuals, residuals + m);
     return true;
   }
-  // Run 0 at x, run 2j + 1 at x + delta_j e_j, run 2j + 2 at x - delta_j e_j.
+  // Run 0 at x, run 2j + 1 at x + h e_j, run 2j + 2 at x - h e_j.
   const auto n = static_cast<std::size_t>(parameters_);
-  const double min_step = std::sqrt(std::numeric_limits<double>::epsilon());
-  std::vector<double> delta(n);
-  for (std::size_t j = 0; j < n; ++j) delta[j] = std::max(min_step, std::abs(x[j]) * relative_step_);
   std::vector<Eigen::VectorXd> runs(2 * n + 1, Eigen::VectorXd(m));
   std::vector<char> ok(2 * n + 1, 0);
   std::size_t first_run = 0;
@@ -52,7 +47,7 @@ bool CentralDifferences::Evaluate(double const* const* parameters, double* resid
     std::vector<double> y = x;
     if (k > 0) {
       const std::size_t j = (k - 1) / 2;
-      y[j] = k % 2 == 1 ? x[j] + delta[j] : x[j] - delta[j];
+      y[j] = k % 2 == 1 ? x[j] + step_ : x[j] - step_;
     }
     ok[k] = residual_(y, runs[k].data()) ? 1 : 0;
   });
@@ -63,13 +58,8 @@ bool CentralDifferences::Evaluate(double const* const* parameters, double* resid
   // Row-major m x n, as Ceres lays out a parameter block's Jacobian.
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> jacobian(jacobians[0], m,
                                                                                               parameters_);
-  for (std::size_t j = 0; j < n; ++j) {
-    Eigen::VectorXd column = runs[2 * j + 1] - runs[2 * j + 2];
-    double scale = 1.0 / delta[j];
-    scale /= 2;
-    column *= scale;
-    jacobian.col(static_cast<Eigen::Index>(j)) = column;
-  }
+  for (std::size_t j = 0; j < n; ++j)
+    jacobian.col(static_cast<Eigen::Index>(j)) = (runs[2 * j + 1] - runs[2 * j + 2]) / (2.0 * step_);
   return true;
 }
 

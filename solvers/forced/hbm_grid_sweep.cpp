@@ -286,6 +286,11 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
   // pass from above. Table XI at 30 N, H = 1, mu = 0.503: 39 frequencies each spent about 700
   // iterations on them, 15 s for a level that otherwise takes 0.06 s.
   size_t dead_end = 0;
+  const auto lose = [&](int i, const std::string& why) {
+    failed.push_back(i);
+    last_failure = why;
+    ++path.rejected_steps;
+  };
   for (int i = 1; i < n; ++i) {
     const double omega = kTwoPi * grid[static_cast<size_t>(i)];
     const auto& pts = path.points;
@@ -306,14 +311,8 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
       iterations = s.iterations;
     }
     path.corrector_iterations += iterations;
-    if (!s.converged && pts.size() == dead_end) {
-      failed.push_back(i);
-      last_failure = s.failure;
-      ++path.rejected_steps;
-      report(omega, i, iterations);
-      continue;
-    }
-    if (!s.converged) {
+    const bool at_dead_end = !s.converged && pts.size() == dead_end;
+    if (!s.converged && !at_dead_end) {
       // Approach it in smaller steps from the last converged point (a kink between the two).
       h = h_last, change = kNaN;
       const hbm::HarmonicBalance& system = systems.at(h_last);
@@ -322,6 +321,10 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
       iterations = s.iterations;
     }
     report(omega, i, iterations);
+    if (at_dead_end) {
+      lose(i, s.failure);
+      continue;
+    }
     if (!s.converged) {
       // A fold (the branch turns back) or a kink the grid cannot step over: trace the branch by
       // arclength from the last converged point to this frequency, through the fold.
@@ -347,9 +350,7 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
         continue;
       }
       if (bridge == Bridge::folds_back) dead_end = path.points.size();
-      failed.push_back(i);
-      last_failure = s.failure;
-      ++path.rejected_steps;
+      lose(i, s.failure);
       continue;
     }
     accept(omega, s, h, change, iterations);

@@ -18,15 +18,16 @@ CalibrationSpec spec_of(std::vector<std::string> paths) {
   return spec;
 }
 
+// Five points of `model` at k = 1..5, measured at `truth` with 1 % sigma.
 template <class Model>
-FitEvaluator evaluator(Model model) {
-  return [model](const std::vector<double>& v, bool) {
+FitEvaluator evaluator(Model model, std::vector<double> truth = {2.0, 3.0}) {
+  return [model, truth](const std::vector<double>& v, bool) {
     std::vector<FitPoint> points;
     for (int k = 1; k <= 5; ++k) {
       FitPoint p;
       p.set = "curve";
       p.x = k;
-      p.measured = model(std::vector<double>{2.0, 3.0}, k);
+      p.measured = model(truth, k);
       p.computed = model(v, k);
       p.sigma = 0.01 * std::abs(p.measured);
       points.push_back(p);
@@ -152,20 +153,9 @@ TEST(LeastSquaresFit, TheRobustLossActsOnEachPointNotOnTheWholeCost) {
 // failed there, never taken for a cheaper minimum than the reported one nor chosen over a start
 // that ran.
 TEST(LeastSquaresFit, AStartTheModelCannotRunAtIsReportedNotTakenForACheaperMinimum) {
-  const auto line = [](const std::vector<double>& v, int k) { return v[0] * k + v[1] * k * k; };
-  const FitEvaluator fails_above_one = [line](const std::vector<double>& v, bool) {
-    std::vector<FitPoint> points;
-    for (int k = 1; k <= 5; ++k) {
-      FitPoint p;
-      p.set = "curve";
-      p.x = k;
-      p.measured = line(std::vector<double>{0.5, 3.0}, k);
-      p.computed = v[0] > 1.0 ? NAN : line(v, k);  // e.g. a sweep that finds no solution there
-      p.sigma = 0.01 * std::abs(p.measured);
-      points.push_back(p);
-    }
-    return points;
-  };
+  // NaN where a > 1: e.g. a sweep that finds no solution there.
+  const auto fails_above_one = evaluator(
+      [](const std::vector<double>& v, int k) { return v[0] > 1.0 ? NAN : v[0] * k + v[1] * k * k; }, {0.5, 3.0});
   CalibrationSpec spec = spec_of({"a", "b"});
   spec.starts = 3;  // the case's values, then one Latin-hypercube point per half of each log range
   const CalibrationOutcome o = fit_parameters(spec, fails_above_one, false, 5);

@@ -13,7 +13,7 @@ namespace {
 AnalysisResults run(const StaticSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
   ResultTables tables;
   StaticOutcome o = run_static(model, spec, tables);
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
@@ -33,20 +33,20 @@ AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress
     const std::string name = fmt::format("nodal_stresses_mode{}", k);
     tables.emplace(name, nodal_stress_table(name, model.mesh, o.stresses.back().field));
   }
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 AnalysisResults run(const FrfSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
   if (spec.pairs) check_mode_pair_sets(model, *spec.pairs);
   FrfOutcome o = run_frf(model, spec);
   ResultTables tables = o.tables;
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 AnalysisResults run(const HbmSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
   HbmOutcome o = run_hbm(model, spec, progress);
   ResultTables tables = o.tables;
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 AnalysisResults run(const TimeSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
@@ -59,25 +59,25 @@ AnalysisResults run(const TimeSpec& spec, const Model& model, const HbmProgress&
 AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress&, const WorkLimits&) {
   ContactLoopOutcome o = run_contact_loop(spec);
   ResultTables tables = o.tables;
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgress&, const WorkLimits& limits) {
   RotatingOutcome o = run_rotating(model, spec, limits);
   ResultTables tables = o.tables;
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
   ContactModalOutcome o = run_contact_modal(model, spec, progress);
   ResultTables tables = o.tables;
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 AnalysisResults run(const CyclicModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
   CyclicModalOutcome o = run_cyclic_modal(model, spec);
   ResultTables tables = cyclic_modal_tables(o);
-  return {std::move(tables), std::move(o)};
+  return {std::move(tables), std::move(o), {}};
 }
 
 }  // namespace

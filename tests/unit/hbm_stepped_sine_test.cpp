@@ -250,11 +250,13 @@ TEST_F(HbmSteppedSineTest, RigJointComesBackFromCurvesWithDriftingForce) {
   // The held-out response-controlled curves are predicted, not fitted: their points are reported
   // apart, and at the identified values their forces lie within the data's noise (2 %, 1 sigma).
   size_t held = 0;
-  for (const FitPoint& p : o.after)
-    if (p.held_out) {
-      ++held;
-      if (p.quantity == "force") EXPECT_LT(std::abs(p.residual()), 5.0) << p.set << " " << p.label;
+  for (const FitPoint& p : o.after) {
+    if (!p.held_out) continue;
+    ++held;
+    if (p.quantity == "force") {
+      EXPECT_LT(std::abs(p.residual()), 5.0) << p.set << " " << p.label;
     }
+  }
   EXPECT_EQ(held, 8u * 61u * 2u);  // force and phase
 }
 

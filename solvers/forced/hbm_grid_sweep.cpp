@@ -57,11 +57,15 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Unknowns from which a grid sweep reuses factorized Jacobians (chord steps; see sweep_grid_on).
 constexpr Index kChordUnknowns = 200;
 
+// How a bridge by arclength ended: at its grid frequency, or not; folds_back when the branch of the
+// path's last point turned away from the grid frequency and ran back out of the band (a fold that
+// the response jumps off: no step size or later frequency reaches beyond it along that branch).
+enum class Bridge { reached, failed, folds_back };
+
 // Traces the branch by pseudo-arclength from the path's last point to grid[i], through a fold if
-// there is one, and appends the traced points, the last solved at grid[i]; false when it did not
-// arrive (the branch folds back out of the band, or wanders along kinks).
-bool bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<double>& grid, int i, double max_step,
-                         hbm::ContinuationResult& path) {
+// there is one, and appends the traced points, the last solved at grid[i].
+Bridge bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<double>& grid, int i, double max_step,
+                           hbm::ContinuationResult& path) {
   hbm::ContinuationOptions c;
   c.omega_start = path.points.back().omega;
   c.omega_end = kTwoPi * grid[static_cast<size_t>(i)];
@@ -82,7 +86,8 @@ bool bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<d
   const hbm::ContinuationResult bridge = hbm::continue_in_frequency(system, c);
   path.corrector_iterations += bridge.corrector_iterations;
   path.rejected_steps += bridge.rejected_steps;
-  if (!bridge.converged || bridge.points.size() < 2) return false;
+  if (bridge.turned_back) return Bridge::folds_back;
+  if (!bridge.converged || bridge.points.size() < 2) return Bridge::failed;
   path.turning_points += bridge.turning_points;
   path.jumps += bridge.jumps;
   path.corners += bridge.corners;
@@ -97,7 +102,7 @@ bool bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector<d
     path.corrector_iterations += s.iterations;
     if (s.converged) path.points.back() = {c.omega_end, std::move(s.x), s.residual, s.iterations, 0.0, 1.0};
   }
-  return true;
+  return Bridge::reached;
 }
 
 // The start of the next grid point: the polynomial through the last few points where they run
@@ -275,14 +280,19 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
   const auto chord_for = [&chord](const hbm::HarmonicBalance& system) {
     return system.unknowns() >= kChordUnknowns ? &chord : nullptr;
   };
-  // The path's size when every fallback from its last point failed (the bridge did not arrive and
-  // patient Newton did not converge): until a later frequency converges from its guess, they are
-  // not tried again from that same point, and the frequencies between are left to the pass from
-  // above. A bridge from one point meets the same fold or kinks whatever grid frequency it aims
-  // at: Table XI at 30 N, H = 1, mu = 0.503 (a fold the branch runs back from) spent about 700
-  // iterations at each of 39 frequencies, 15 s for a level that otherwise takes 0.06 s; at 80 N,
-  // kt = 3.4e8, mu = 2 (a bridge wandering along kinks near 188.3 Hz) 6 200 at each of 20, 20 s.
+  // The path's size when a bridge from its last point folded back and patient Newton failed too:
+  // until a later frequency converges from its guess, the same fallbacks from that point (substeps,
+  // bridge, patient Newton) are not tried again, and the frequencies beyond the fold are left to the
+  // pass from above. Table XI at 30 N, H = 1, mu = 0.503: 39 frequencies each spent about 700
+  // iterations on them, 15 s for a level that otherwise takes 0.06 s.
   size_t dead_end = 0;
+  // The path's size when a bridge from its last point failed otherwise (it wandered along kinks, or
+  // its corrector stalled): a bridge from the same point meets the same kinks whatever frequency it
+  // aims at, so later frequencies keep their substeps and patient Newton but no bridge from there.
+  // Table XI at 80 N, kt = 3.37e8, mu = 2 (a calibration's trial values): 13 turns near 188.3 Hz,
+  // 5 800 iterations at each of 20 frequencies (20 s); at 260 N, kt = 2.74e7, mu = 1.41 the failed
+  // bridge from 171.90 Hz is followed by 172.00 Hz converging by the later fallbacks.
+  size_t no_bridge = 0;
   const auto lose = [&](int i, const std::string& why) {
     failed.push_back(i);
     last_failure = why;
@@ -326,7 +336,10 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
       // A fold (the branch turns back) or a kink the grid cannot step over: trace the branch by
       // arclength from the last converged point to this frequency, through the fold.
       const size_t before = path.points.size();
-      if (bridge_by_arclength(systems.at(h_last), grid, i, spec.sweep.max_step, path)) {
+      const Bridge bridge = pts.size() == no_bridge
+                                ? Bridge::failed
+                                : bridge_by_arclength(systems.at(h_last), grid, i, spec.sweep.max_step, path);
+      if (bridge == Bridge::reached) {
         if (per_point)
           for (size_t k = before; k < path.points.size(); ++k) {
             level.point_harmonics.push_back(h_last);
@@ -345,7 +358,8 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
         accept(omega, s, h_last, kNaN, s.iterations);
         continue;
       }
-      dead_end = path.points.size();
+      if (bridge == Bridge::folds_back) dead_end = path.points.size();
+      no_bridge = path.points.size();
       lose(i, s.failure);
       continue;
     }

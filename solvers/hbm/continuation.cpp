@@ -341,6 +341,7 @@ ContinuationResult continue_in_frequency(const HarmonicBalance& s, const Continu
       break;
     }
     if (direction * (y[m] - 1.0) < -back_limit) {
+      result.turned_back = true;
       result.failure =
           fmt::format("the path turned back past omega_start (omega = {:.6g} rad/s, |R| = {:.3g} N)", w, c.norm);
       break;

@@ -63,6 +63,9 @@ struct ContinuationResult {
   std::vector<ContinuationPoint> points;
   bool converged = false;  // reached omega_end
   std::string failure;     // with |R| and omega when not converged
+  // Stopped because the path ran back past omega_back: the branch folds away from omega_end, and
+  // no step size reaches omega_end along it.
+  bool turned_back = false;
   int turning_points = 0;  // sign changes of d omega / ds along the path
   int corrector_iterations = 0, rejected_steps = 0;
   int jumps = 0;    // points reached by stepping over a kink after the step fell below min_step

@@ -7,10 +7,12 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <mutex>
 #include <numbers>
 
 #include "analysis/time_sweeps.hpp"
 #include "common/errors.hpp"
+#include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
 #include "common/seconds_since.hpp"
 #include "contact/jenkins_contact.hpp"
@@ -26,11 +28,26 @@ using Eigen::Index;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-// The energy a contact's loop encloses over the recorded samples: sum of T du by the trapezoid rule.
-double loop_work(const std::vector<timeint::ContactSample>& s) {
-  double w = 0.0;
-  for (size_t i = 1; i < s.size(); ++i) w += 0.5 * (s[i].tangential + s[i - 1].tangential) * (s[i].u - s[i - 1].u);
-  return w;
+// The largest relative span, (max - min) / max, over the last periods of the first-harmonic
+// amplitudes the peaks are read from: the IP and OOP components of the pair, else the responses.
+double peak_quantity_span(const timeint::SteadyState& s, const TrackedDofs& tracked, Index responses) {
+  const Eigen::MatrixXcd& z = s.period_harmonics;
+  if (z.rows() == 0 || z.cols() != static_cast<Index>(tracked.dofs.size())) return kNan;
+  Eigen::MatrixXd amplitude;
+  if (tracked.pair) {
+    const Eigen::VectorXcd left = z.col(tracked.pair->first), right = z.col(tracked.pair->second);
+    amplitude.resize(z.rows(), 2);
+    amplitude.col(0) = (left + right).cwiseAbs() / 2;
+    amplitude.col(1) = (right - left).cwiseAbs() / 2;
+  } else {
+    amplitude = z.leftCols(responses).cwiseAbs();
+  }
+  double span = 0.0;
+  for (Index j = 0; j < amplitude.cols(); ++j) {
+    const double top = amplitude.col(j).maxCoeff();
+    if (top > 0.0) span = std::max(span, 1.0 - amplitude.col(j).minCoeff() / top);
+  }
+  return span;
 }
 
 // The stepped sine of one force level: the steady state at each grid frequency, each starting from
@@ -43,6 +60,7 @@ void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, 
   const std::vector<Index>& dofs = tracked.dofs;
   const double force = level.force;
   std::optional<timeint::DynamicState> start;
+  level.envelope_min = level.envelope_max = Eigen::MatrixXd::Constant(nf, nr, kNan);
   for (Index i = 0; i < nf; ++i) {
     const double omega = kTwoPi * frequencies[static_cast<size_t>(i)];
     const timeint::SteadyState s = timeint::steady_state(m, omega, options, start);
@@ -52,6 +70,12 @@ void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, 
     level.newton_iterations += s.total_iterations;
     level.max_step_iterations = std::max(level.max_step_iterations, s.max_iterations);
     level.failure.push_back(s.failure);
+    level.change.push_back(s.change);
+    level.period_multiple.push_back(s.period_multiple);
+    if (s.envelope.rows() == static_cast<Index>(dofs.size()))
+      for (Index r = 0; r < nr; ++r)
+        level.envelope_min(i, r) = s.envelope(r, 0), level.envelope_max(i, r) = s.envelope(r, 1);
+    level.envelope_span.push_back(peak_quantity_span(s, tracked, nr));
     if (s.coefficients.rows() == static_cast<Index>(dofs.size()) &&
         store_first_harmonics(level, i, s.coefficients, tracked, nr))
       start = s.final_state;  // the next frequency starts from here (also when not yet steady)
@@ -132,224 +156,6 @@ TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec,
   return rec;
 }
 
-// The tables of the sweeps: frf (every grid point), peaks (time integration, linear model, and
-// harmonic balance when compared) and time_cost.
-void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<double>& frequencies,
-                      const std::optional<std::pair<Index, Index>>& pair) {
-  const PreparedHbm& p = o.prepared;
-  const auto nf = static_cast<Index>(frequencies.size());
-  const auto nr = static_cast<Index>(p.responses.size());
-  const std::vector<std::string> kinds =
-      pair ? std::vector<std::string>{"ip", "oop"} : std::vector<std::string>{"peak"};
-  std::vector<std::string> frf_cols = {"point", "fe_n", "frequency_hz"};
-  for (const std::string& r : p.response_names) frf_cols.push_back(r + "_amp_m");
-  if (pair) frf_cols.insert(frf_cols.end(), {"ip_component_m", "oop_component_m"});
-  frf_cols.insert(frf_cols.end(), {"cycles", "steady"});
-  const bool shooting = spec.method == TimeSpec::Method::shooting;
-  std::vector<std::string> periodic_cols;  // shooting: also in one table per level, keyed 1..frequencies
-  if (shooting) {
-    for (const std::string& r : p.response_names) periodic_cols.push_back(r + "_max_m");
-    periodic_cols.insert(periodic_cols.end(), {"residual_m", "transitions"});
-    if (spec.floquet) periodic_cols.insert(periodic_cols.end(), {"floquet_max", "stable"});
-    frf_cols.insert(frf_cols.end(), periodic_cols.begin(), periodic_cols.end());
-  }
-  const bool compare = spec.compare_harmonics > 0;
-  for (const std::string& r : p.response_names) frf_cols.push_back("linear_" + r + "_amp_m");
-  if (compare)
-    for (const std::string& r : p.response_names) frf_cols.push_back("hbm_" + r + "_amp_m");
-  std::vector<std::vector<double>> frf_rows, peak_rows, linear_peak_rows, hbm_peak_rows, cost_rows;
-  for (size_t l = 0; l < o.levels.size(); ++l) {
-    const TimeLevel& level = o.levels[l];
-    // HBM amplitudes at the grid frequencies (its converged points are the grid's).
-    std::vector<Eigen::VectorXd> hbm_amp(static_cast<size_t>(nf), Eigen::VectorXd::Constant(nr, kNan));
-    if (level.hbm)
-      for (size_t k = 0; k < level.hbm->frequency_hz.size(); ++k)
-        for (Index i = 0; i < nf; ++i)
-          if (std::abs(level.hbm->frequency_hz[k] - frequencies[static_cast<size_t>(i)]) <
-              1e-9 * frequencies[static_cast<size_t>(i)])
-            hbm_amp[static_cast<size_t>(i)] = level.hbm->amplitude.row(static_cast<Index>(k)).transpose();
-    std::vector<std::vector<double>> level_rows;
-    for (Index i = 0; i < nf; ++i) {
-      std::vector<double> row = {static_cast<double>((l + 1) * 100000 + static_cast<size_t>(i) + 1), level.force,
-                                 frequencies[static_cast<size_t>(i)]};
-      for (Index r = 0; r < nr; ++r) row.push_back(level.amplitude(i, r));
-      if (pair) row.insert(row.end(), {level.components(i, 0), level.components(i, 1)});
-      row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]),
-                             level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
-      std::vector<double> periodic;
-      if (shooting) {
-        const auto f = static_cast<size_t>(i);
-        for (Index r = 0; r < nr; ++r) periodic.push_back(level.largest(i, r));
-        periodic.insert(periodic.end(), {level.residual[f], static_cast<double>(level.transitions[f])});
-        if (spec.floquet)
-          periodic.insert(periodic.end(),
-                          {level.floquet_max[f],
-                           std::isfinite(level.floquet_max[f]) ? (level.floquet_max[f] < 1.0 ? 1.0 : 0.0) : kNan});
-        row.insert(row.end(), periodic.begin(), periodic.end());
-        std::vector<double> own = {static_cast<double>(i + 1), frequencies[f]};
-        for (Index r = 0; r < nr; ++r) own.push_back(level.amplitude(i, r));
-        own.insert(own.end(), periodic.begin(), periodic.end());
-        level_rows.push_back(own);
-      }
-      for (Index r = 0; r < nr; ++r) row.push_back(level.linear(i, r));
-      if (compare)
-        for (Index r = 0; r < nr; ++r) row.push_back(hbm_amp[static_cast<size_t>(i)][r]);
-      frf_rows.push_back(row);
-    }
-    if (shooting) {
-      std::vector<std::string> cols = {"point", "frequency_hz"};
-      for (const std::string& r : p.response_names) cols.push_back(r + "_amp_m");
-      cols.insert(cols.end(), periodic_cols.begin(), periodic_cols.end());
-      const std::string name = fmt::format("frf_{:g}", level.force);
-      o.tables.emplace(name, table_from_rows(name, cols, level_rows));
-    }
-    // Peaks on the grid (parabola through the largest point and its neighbours), the same way for
-    // the time integration and the linear model, so that the two compare like for like.
-    // A peak of the integration is a result only where the grid point it rests on and both its
-    // neighbours reached the steady state: an amplitude still changing from period to period can
-    // look like a peak (or hide one) and would be checked as if it were the answer.
-    // The first reason a peak is not a result: its row then holds NaN for that peak.
-    const auto require_steady = [&](size_t kind, Index at, double f) -> bool {
-      const auto fail = [&](std::string why) {
-        if (o.failure.empty()) o.failure = std::move(why);
-        return false;
-      };
-      for (Index i = std::max<Index>(at - 1, 0); i <= std::min<Index>(at + 1, nf - 1); ++i)
-        if (level.steady[static_cast<size_t>(i)])
-          continue;
-        else if (shooting)
-          return fail(fmt::format("time analysis at Fe = {:g} N: the {} rests on {:.4f} Hz, where {}", level.force,
-                                  kinds[kind] == "peak" ? "peak" : kinds[kind] + " peak",
-                                  frequencies[static_cast<size_t>(i)], level.failure[static_cast<size_t>(i)]));
-        else
-          return fail(fmt::format(
-              "time integration at Fe = {:g} N: the {} ({:.4f} Hz) rests on {:.4f} Hz, which did not reach "
-              "the steady state within {} periods (cycle-to-cycle change above {:g}); raise max_cycles or "
-              "steady_tolerance, or refine steps_per_period",
-              level.force,
-              kinds[kind] == "peak" ? std::string("peak") : (kinds[kind] == "ip" ? "IP" : "OOP") + std::string(" peak"),
-              f, frequencies[static_cast<size_t>(i)], spec.max_cycles, spec.steady_tolerance));
-      return true;
-    };
-    const auto peaks_of = [&](const Eigen::MatrixXd& amplitude, const Eigen::MatrixXd& components, bool integrated) {
-      std::vector<double> prow = {static_cast<double>(l + 1), level.force};
-      for (size_t k = 0; k < kinds.size(); ++k) {
-        const Eigen::VectorXd values =
-            pair ? Eigen::VectorXd(components.col(static_cast<Index>(k))) : Eigen::VectorXd(amplitude.col(0));
-        const Peak sample_peak = largest_sample(frequencies, values);
-        const double f = sample_peak.frequency_hz, v = sample_peak.amplitude;
-        const Index right = pair ? pair->second : 0;
-        Index at = 0;
-        if (std::isfinite(f))
-          at = static_cast<Index>(std::lround((f - frequencies.front()) / spec.system.sweep.step_hz));
-        at = std::clamp<Index>(at, 0, nf - 1);
-        const bool stands = !(integrated && spec.require_steady_peaks) || require_steady(k, at, f);
-        // The right (or first) response: the parabola's value without ip_oop, else the nearest grid value.
-        const double amp = !stands ? kNan : !pair ? v : right < nr ? amplitude(at, right) : v;
-        prow.insert(prow.end(), {stands ? f : kNan, amp, amp / level.force});
-      }
-      return prow;
-    };
-    peak_rows.push_back(peaks_of(level.amplitude, level.components, true));
-    linear_peak_rows.push_back(peaks_of(level.linear, level.linear_components, false));
-    if (level.hbm) {
-      std::vector<double> hrow = {static_cast<double>(l + 1), level.force};
-      for (const HbmPeak& pk : level.hbm->peaks)
-        hrow.insert(hrow.end(),
-                    {pk.solution.converged ? pk.frequency_hz : kNan, pk.solution.converged ? pk.amplitude : kNan,
-                     pk.solution.converged ? pk.amplitude / level.force : kNan});
-      if (level.hbm->peaks.empty()) hrow.insert(hrow.end(), 3 * kinds.size(), kNan);
-      hbm_peak_rows.push_back(hrow);
-    }
-    long not_steady = 0;
-    for (bool s : level.steady) not_steady += s ? 0 : 1;
-    cost_rows.push_back({static_cast<double>(l + 1), level.force, static_cast<double>(nf),
-                         static_cast<double>(level.steps), static_cast<double>(level.newton_iterations),
-                         static_cast<double>(level.max_step_iterations), static_cast<double>(not_steady), level.seconds,
-                         1e6 * level.seconds / std::max<double>(1.0, static_cast<double>(level.steps))});
-  }
-  o.tables.emplace("frf", table_from_rows("frf", frf_cols, frf_rows));
-  std::vector<std::string> peak_cols = {"level", "fe_n"};
-  for (const std::string& k : kinds)
-    for (const char* c : {"_hz", "_amp_m", "_amp_per_n"}) peak_cols.push_back(k + c);
-  o.tables.emplace("peaks", table_from_rows("peaks", peak_cols, peak_rows));
-  o.tables.emplace("peaks_linear", table_from_rows("peaks_linear", peak_cols, linear_peak_rows));
-  if (compare) o.tables.emplace("peaks_hbm", table_from_rows("peaks_hbm", peak_cols, hbm_peak_rows));
-  o.tables.emplace("time_cost", table_from_rows("time_cost",
-                                                {"level", "fe_n", "frequencies", "steps", "newton_iterations",
-                                                 "max_step_iterations", "not_steady", "seconds", "us_per_step"},
-                                                cost_rows));
-}
-
-// The tables of the recorded history: history, one hysteresis loop per contact, hysteresis_summary.
-void add_history_tables(TimeOutcome& o, const TimeSpec& spec) {
-  const PreparedHbm& p = o.prepared;
-  const auto nr = static_cast<Index>(p.responses.size());
-  if (o.record && o.record->history.steps > 0) {
-    const TimeHistoryRecord& rec = *o.record;
-    const timeint::TimeHistory& h = rec.history;
-    std::vector<std::vector<double>> rows;
-    std::vector<std::string> cols = {"instant", "time_s"};
-    for (const std::string& r : p.response_names) cols.push_back(r + "_m");
-    for (size_t i = 0; i < h.time.size(); ++i) {
-      std::vector<double> row = {static_cast<double>(i + 1), h.time[i]};
-      for (Index r = 0; r < nr; ++r) row.push_back(h.displacement(static_cast<Index>(i), r));
-      rows.push_back(row);
-    }
-    o.tables.emplace("history", table_from_rows("history", cols, rows));
-    std::vector<std::vector<double>> summary;
-    for (size_t c = 0; c < h.contacts.size(); ++c) {
-      const std::vector<timeint::ContactSample>& s = h.contacts[c];
-      std::vector<std::vector<double>> loop;
-      std::vector<std::string> states;
-      double stick = 0, slip = 0, open = 0, coulomb = 0, open_force = 0;
-      double su = 0, st = 0, suu = 0, sut = 0, n_stick = 0;
-      const double mu = p.model.contacts[c].law.mu, kt = p.model.contacts[c].law.kt;
-      for (size_t i = 0; i < s.size(); ++i) {
-        loop.push_back({static_cast<double>(i + 1), h.time[i], s[i].u, s[i].tangential, s[i].normal, s[i].slider});
-        states.emplace_back(contact::state_name(s[i].state));
-        if (i == 0) continue;  // the start instant repeats the previous period's end
-        switch (s[i].state) {
-          case contact::ContactState::stick:
-            ++stick;
-            su += s[i].u, st += s[i].tangential, suu += s[i].u * s[i].u, sut += s[i].u * s[i].tangential, ++n_stick;
-            break;
-          case contact::ContactState::lift_off:
-            ++open;
-            open_force = std::max({open_force, std::abs(s[i].tangential), s[i].normal});
-            break;
-          default:
-            ++slip;
-            break;
-        }
-        if (s[i].normal > 0 && mu > 0) coulomb = std::max(coulomb, std::abs(s[i].tangential) / (mu * s[i].normal));
-      }
-      const double n = std::max(1.0, stick + slip + open);
-      const double var = suu - su * su / std::max(1.0, n_stick);
-      // Slope of T against u over the stuck samples: kt when the loop is a line (needs u to vary).
-      const double slope = n_stick >= 2 && var > 1e-30 ? (sut - su * st / n_stick) / var : kNan;
-      const std::string name = "hysteresis_" + p.contact_names[c];
-      ResultTable t = table_from_rows(
-          name, {"instant", "time_s", "relative_tangential_m", "tangential_force_n", "normal_force_n", "slider_m"},
-          loop);
-      t.add_text_column("state", states);
-      o.tables.emplace(name, std::move(t));
-      double nmin = std::numeric_limits<double>::infinity(), nmax = 0, nmean = 0;
-      for (size_t i = 1; i < s.size(); ++i)
-        nmin = std::min(nmin, s[i].normal), nmax = std::max(nmax, s[i].normal), nmean += s[i].normal / (n);
-      summary.push_back({static_cast<double>(c + 1), stick / n, slip / n, open / n, slope, slope / kt, coulomb,
-                         open_force, loop_work(s) / spec.history_cycles, nmin, nmean, nmax});
-    }
-    ResultTable t = table_from_rows(
-        "hysteresis_summary",
-        {"contact", "stick", "slip", "lift_off", "stick_slope_n_per_m", "stick_slope_over_kt", "max_t_over_mu_n",
-         "max_force_when_open_n", "loop_work_per_cycle_j", "min_normal_n", "mean_normal_n", "max_normal_n"},
-        summary);
-    t.add_text_column("name", p.contact_names);
-    o.tables.emplace("hysteresis_summary", std::move(t));
-  }
-}
-
 }  // namespace
 
 TrackedDofs tracked_dofs(const PreparedHbm& p) {
@@ -392,12 +198,23 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   options.newmark.alpha = spec.alpha;
   const std::vector<double> frequencies =
       fixed_grid(spec.system.sweep.f_min, spec.system.sweep.f_max, spec.system.sweep.step_hz);
-  ProgressClock clock(static_cast<int>(spec.system.force_levels.size()));
-  const HbmProgress timed = with_clock(progress, clock);
-  for (double force : spec.system.force_levels) {
-    o.levels.push_back(sweep_level(p, spec, options, tracked, frequencies, force, timed));
-    clock.finished(static_cast<int>(o.levels.size()));
-  }
+  const size_t n = spec.system.force_levels.size();
+  ProgressClock clock(static_cast<int>(n));
+  std::mutex report;  // the progress line and the clock, from every worker
+  int done = 0;
+  const HbmProgress timed = progress ? HbmProgress([&](const std::string& line) {
+    const std::lock_guard<std::mutex> lock(report);
+    progress(line + "  [" + clock.status() + "]");
+  })
+                                     : HbmProgress();
+  // Levels are independent (each marches from its own static state): on `threads` workers, the
+  // results those of the serial run.
+  o.levels.resize(n);
+  for_each_index(n, worker_count(n, spec.system.threads), [&](size_t i) {
+    o.levels[i] = sweep_level(p, spec, options, tracked, frequencies, spec.system.force_levels[i], timed);
+    const std::lock_guard<std::mutex> lock(report);
+    clock.finished(++done);
+  });
   if (spec.history_hz)
     o.record = spec.method == TimeSpec::Method::shooting ? periodic_history(p, spec) : record_history(p, spec, options);
   o.seconds = seconds_since(t_start);

@@ -24,6 +24,14 @@ struct TimeLevel {
   std::vector<int> cycles;           // periods integrated per frequency
   std::vector<bool> steady;          // the cycle-to-cycle criterion was met (shooting: Newton converged)
   std::vector<std::string> failure;  // per frequency, why it is not steady (shooting: |R|, iterations)
+  // Stepped sine only, per frequency: the last cycle-to-cycle change, the periods after which the
+  // motion repeats (timeint::SteadyState::period_multiple), each response's range of first-harmonic
+  // amplitude over the last periods (frequencies x responses) [m], and the largest relative span
+  // of that range over the tracked DOFs ((max - min) / max).
+  std::vector<double> change;
+  std::vector<int> period_multiple;
+  Eigen::MatrixXd envelope_min, envelope_max;
+  std::vector<double> envelope_span;
   // Shooting only, per frequency: the largest |q| of each response over the period [m], the
   // residual [m], transitions per period, and with floquet the largest multiplier's modulus.
   Eigen::MatrixXd largest;

@@ -26,6 +26,11 @@ struct TimeSpec {
   int steps_per_period = 128;      // dt = T / steps_per_period (eq 3.42)
   int max_cycles = 2000;           // per frequency, then the point is reported as not steady
   double steady_tolerance = 1e-6;  // cycle-to-cycle change, relative (timeint/steady_state.hpp)
+  // newmark: a frequency whose motion repeats within no period up to max_period_multiple, but whose
+  // tracked responses' first-harmonic amplitudes span at most this fraction over the last periods
+  // (timeint::SteadyState::envelope), counts as steady in its first harmonic: what a rig's stepped
+  // sine reads from a motion that never repeats exactly. 0: only a motion that repeats counts.
+  double envelope_tolerance = 0.0;
   // A peak resting on a frequency that is not steady stops the run (SolverError). Not a case key:
   // the time-step study turns it off, since it measures the error of such unconverged settings.
   bool require_steady_peaks = true;

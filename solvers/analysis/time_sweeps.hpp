@@ -1,5 +1,6 @@
 // The per-frequency sweeps of a time analysis (analysis/time_analysis.hpp), shared by its two
-// methods: which DOFs they track and how a point's first harmonics enter a level.
+// methods: which DOFs they track, how a point's first harmonics enter a level, and the tables
+// built from the levels (time_tables.cpp).
 #pragma once
 #include <Eigen/Dense>
 
@@ -25,6 +26,14 @@ TrackedDofs tracked_dofs(const PreparedHbm& p);
 // the responses' first-harmonic amplitudes and the IP/OOP components. False when they are not finite.
 bool store_first_harmonics(TimeLevel& level, Eigen::Index i, const Eigen::MatrixXd& coefficients,
                            const TrackedDofs& tracked, Eigen::Index responses);
+
+// frf, peaks, peaks_linear, peaks_hbm (compare_harmonics) and time_cost from o.levels on
+// `frequencies`; a peak resting on a frequency without a steady state sets o.failure (the first).
+void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<double>& frequencies,
+                      const std::optional<std::pair<Eigen::Index, Eigen::Index>>& pair);
+
+// history, hysteresis_<contact> and hysteresis_summary from o.record.
+void add_history_tables(TimeOutcome& o, const TimeSpec& spec);
 
 // The periodic responses of one level by shooting (timeint/shooting.hpp), each frequency started
 // from the previous one's periodic state. On the Newmark map with the harmonic balance of the same

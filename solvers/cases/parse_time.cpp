@@ -36,6 +36,11 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     t.steady_tolerance = r.positive("steady_tolerance");
     if (t.steady_tolerance >= 0.1) r.fail("steady_tolerance", "must be below 0.1 (relative cycle-to-cycle change)");
   }
+  if (r.has("envelope_tolerance")) {
+    t.envelope_tolerance = r.positive("envelope_tolerance");
+    if (t.envelope_tolerance >= 0.1)
+      r.fail("envelope_tolerance", "must be below 0.1 (relative span of the first-harmonic amplitude)");
+  }
   if (r.has("alpha")) {
     t.alpha = r.number("alpha");
     if (!(t.alpha >= -1.0 / 3.0 && t.alpha <= 0.0)) r.fail("alpha", "HHT-alpha must lie in [-1/3, 0]");
@@ -50,7 +55,7 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     t.compare_harmonics = static_cast<int>(*n);
   }
   if (t.method == TimeSpec::Method::shooting) {
-    for (const char* key : {"max_cycles", "steady_tolerance"})
+    for (const char* key : {"max_cycles", "steady_tolerance", "envelope_tolerance"})
       if (r.has(key))
         r.fail(key, "applies to method = \"newmark\"; shooting converges on tolerance and max_iterations");
     if (r.has("alpha") && t.period_map != TimeSpec::PeriodMap::newmark)

@@ -106,18 +106,28 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
   run.facts.emplace_back("model DOFs", std::to_string(p.model.mass.rows()));
   if (spec.system.model.file.empty() && !spec.system.model.matrices)
     describe_cache("Craig-Bampton reduction", p.timing.cache, run);
-  long steps = 0, not_steady = 0;
-  double seconds = 0;
+  long steps = 0, not_steady = 0, by_envelope = 0;
+  double seconds = 0, widest = 0;
   for (const TimeLevel& l : time.levels) {
     steps += l.steps;
     seconds += l.seconds;
-    for (bool s : l.steady) not_steady += s ? 0 : 1;
+    for (size_t i = 0; i < l.steady.size(); ++i) {
+      if (l.steady[i]) continue;
+      ++not_steady;
+      if (spec.envelope_tolerance > 0.0 && i < l.envelope_span.size() && l.envelope_span[i] <= spec.envelope_tolerance)
+        ++by_envelope, widest = std::max(widest, l.envelope_span[i]);
+    }
   }
-  if (not_steady > 0)
+  if (not_steady > by_envelope)
     run.warnings.push_back(
         fmt::format("{} frequencies did not reach the steady state within {} periods: their amplitudes are not the "
-                    "steady response",
-                    not_steady, spec.max_cycles));
+                    "steady response (frf: change, period_multiple and the envelope columns say what the motion did)",
+                    not_steady - by_envelope, spec.max_cycles));
+  if (by_envelope > 0)
+    run.warnings.push_back(fmt::format(
+        "{} frequencies repeat within no period after {} periods, but their first harmonics span at most {:.3g} % "
+        "over the last periods (envelope_tolerance {:.3g} %): read as steady in their first harmonic",
+        by_envelope, spec.max_cycles, 100.0 * widest, 100.0 * spec.envelope_tolerance));
   run.facts.emplace_back("steps / frequencies not steady / time [s]",
                          fmt::format("{} / {} / {:.2f} (per step {:.2f} us)", steps, not_steady, seconds,
                                      1e6 * seconds / static_cast<double>(std::max(1L, steps))));

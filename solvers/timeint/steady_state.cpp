@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <deque>
 #include <numbers>
 #include <stdexcept>
@@ -26,6 +27,8 @@ void validate(double omega, const SteadyStateOptions& options) {
   if (!(options.tolerance > 0.0) || options.min_cycles < 2 || options.max_cycles < options.min_cycles ||
       options.periods_analysed < 1 || options.periods_analysed > options.min_cycles)
     fail("tolerance > 0, 2 <= min_cycles <= max_cycles, 1 <= periods_analysed <= min_cycles");
+  if (options.max_period_multiple < 1 || options.envelope_periods < 1)
+    fail("max_period_multiple >= 1 and envelope_periods >= 1");
 }
 
 // The state at t = 0: from `start` (displacements, velocities, sliders) or the static initial
@@ -61,6 +64,30 @@ double period_change(const MatrixXd& x, const MatrixXd& previous, bool ignore_dr
     change = std::max(change, scale > 0.0 ? d / scale : (d > 0.0 ? INFINITY : 0.0));
   }
   return change;
+}
+
+// Each column's first harmonic a1 - i b1 over one period of samples.
+Eigen::RowVectorXcd first_harmonics(const MatrixXd& x) {
+  const auto n_t = static_cast<double>(x.rows());
+  VectorXd cosine(x.rows()), sine(x.rows());
+  for (Index k = 0; k < x.rows(); ++k) {
+    cosine[k] = std::cos(2.0 * std::numbers::pi * static_cast<double>(k) / n_t);
+    sine[k] = std::sin(2.0 * std::numbers::pi * static_cast<double>(k) / n_t);
+  }
+  Eigen::RowVectorXcd z(x.cols());
+  for (Index j = 0; j < x.cols(); ++j)
+    z[j] = 2.0 / n_t * std::complex<double>(x.col(j).dot(cosine), -x.col(j).dot(sine));
+  return z;
+}
+
+// The smallest k in [2, recent.size() - 1] for which the last period repeats the one k periods
+// before it to the tolerance; 0 when none does.
+int repeating_multiple(const std::deque<MatrixXd>& recent, const SteadyStateOptions& options) {
+  const size_t last = recent.size() - 1;
+  for (size_t k = 2; k <= last; ++k)
+    if (period_change(recent[last], recent[last - k], options.ignore_drift) <= options.tolerance)
+      return static_cast<int>(k);
+  return 0;
 }
 
 // DFT over the last whole periods, their linear trend removed when drift is ignored.
@@ -129,7 +156,9 @@ SteadyState steady_state(const friction::FrictionModel& model, double omega, con
   DynamicState state = std::move(*initial);
 
   const Index nd = static_cast<Index>(options.dofs.size());
-  std::deque<MatrixXd> periods;  // the last periods_analysed + 1 periods, n_t x nd samples each
+  std::deque<MatrixXd> periods;               // the last periods_analysed + 1 periods, n_t x nd samples each
+  std::deque<MatrixXd> recent;                // the last max_period_multiple + 1 periods
+  std::deque<Eigen::RowVectorXcd> harmonics;  // each period's first harmonics, the last envelope_periods
   std::vector<std::vector<ContactSample>> loop;
   while (out.cycles < options.max_cycles) {
     MatrixXd x(n_t, nd);
@@ -160,6 +189,10 @@ SteadyState steady_state(const friction::FrictionModel& model, double omega, con
       out.drift = x.colwise().mean().transpose() - periods.back().colwise().mean().transpose();
       out.change = period_change(x, periods.back(), options.ignore_drift);
     }
+    harmonics.push_back(first_harmonics(x));
+    if (static_cast<int>(harmonics.size()) > options.envelope_periods) harmonics.pop_front();
+    recent.push_back(x);
+    if (static_cast<int>(recent.size()) > options.max_period_multiple + 1) recent.pop_front();
     periods.push_back(std::move(x));
     if (static_cast<int>(periods.size()) > options.periods_analysed) periods.pop_front();
     if (out.cycles >= options.min_cycles && out.change <= options.tolerance) {
@@ -167,11 +200,30 @@ SteadyState steady_state(const friction::FrictionModel& model, double omega, con
       break;
     }
   }
-  if (!out.converged)
+  // A motion that repeats is its last period; the earlier ones were its transient.
+  if (out.converged) harmonics.erase(harmonics.begin(), harmonics.end() - 1);
+  out.period_harmonics = Eigen::MatrixXcd(static_cast<Index>(harmonics.size()), nd);
+  for (size_t p = 0; p < harmonics.size(); ++p) out.period_harmonics.row(static_cast<Index>(p)) = harmonics[p];
+  out.envelope = MatrixXd::Constant(nd, 2, NAN);
+  if (!harmonics.empty()) {
+    out.envelope.col(0) = out.period_harmonics.cwiseAbs().colwise().minCoeff().transpose();
+    out.envelope.col(1) = out.period_harmonics.cwiseAbs().colwise().maxCoeff().transpose();
+  }
+  out.period_multiple = out.converged ? 1 : repeating_multiple(recent, options);
+  if (out.period_multiple > 1) {  // a subharmonic motion: its harmonics over one whole repetition
+    periods.assign(recent.end() - out.period_multiple, recent.end());
+    out.failure = fmt::format(
+        "steady state at omega = {:.9g} rad/s not reached in {} periods: the motion repeats every {} periods (a "
+        "subharmonic response; cycle-to-cycle change {:.3e} > tolerance {:.3e})",
+        omega, out.cycles, out.period_multiple, out.change, options.tolerance);
+  } else if (!out.converged) {
     out.failure = fmt::format(
         "steady state at omega = {:.9g} rad/s not reached in {} periods: cycle-to-cycle "
-        "change {:.3e} > tolerance {:.3e} (largest drift of a period mean {:.3e} m per period)",
-        omega, out.cycles, out.change, options.tolerance, out.drift.cwiseAbs().maxCoeff());
+        "change {:.3e} > tolerance {:.3e} (largest drift of a period mean {:.3e} m per period); no repetition "
+        "within {} periods; first-harmonic amplitude over the last {} periods {:.4g} to {:.4g} m",
+        omega, out.cycles, out.change, options.tolerance, out.drift.cwiseAbs().maxCoeff(), options.max_period_multiple,
+        harmonics.size(), out.envelope(0, 0), out.envelope(0, 1));
+  }
   analyse(periods, options, out);
   out.contacts = std::move(loop);
   out.final_state = state;

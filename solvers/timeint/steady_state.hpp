@@ -39,6 +39,11 @@ struct SteadyStateOptions {
   int min_cycles = 2;        // periods always integrated
   int max_cycles = 2000;     // cap; reaching it gives converged == false with the last change
   int periods_analysed = 1;  // whole periods at the end that enter the DFT (<= min_cycles)
+  // Where the cap is reached, the motion is tested for a period of k forcing periods, k = 2 up to
+  // this (a subharmonic response), and the first-harmonic amplitude of each period is kept over the
+  // last envelope_periods periods (its range: the envelope of a motion that does not repeat).
+  int max_period_multiple = 8;
+  int envelope_periods = 100;
   // Newmark options; time_step is set from omega and steps_per_period.
   NewmarkOptions newmark{};
   // The static initial state used when no start state is given (a damper held only by friction
@@ -57,6 +62,16 @@ struct SteadyState {
   double change = 0.0;        // last cycle-to-cycle change (relative, as tested)
   Eigen::VectorXd drift;      // per tracked DOF, change of the period mean over the last period [m]
   bool converged = false;
+  // 1 when converged; k >= 2 when the cap was reached but the motion repeats every k periods to the
+  // tolerance (still not converged: the harmonics are those of the last k periods); 0 when it
+  // repeats within none of max_period_multiple.
+  int period_multiple = 0;
+  // Each period's first harmonic a1 - i b1 (x = Re(z e^{i omega t}) at the forcing frequency), one
+  // row per period over the last envelope_periods (the last period alone when converged: the
+  // earlier ones are its transient), one column per tracked DOF [m]; and per tracked DOF the
+  // smallest and largest of their moduli (columns min, max) [m].
+  Eigen::MatrixXcd period_harmonics;
+  Eigen::MatrixXd envelope;
   std::string failure;        // cap reached (with the change) or a failed Newmark step; empty when converged
   long total_iterations = 0;  // Newton iterations over the run
   int max_iterations = 0;     // most Newton iterations in one step

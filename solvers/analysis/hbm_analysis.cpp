@@ -436,11 +436,7 @@ std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& s
   ProgressClock clock(static_cast<int>(n));
   std::mutex report;  // the progress line and the clock, from every worker
   int done = 0;
-  const HbmProgress timed = progress ? HbmProgress([&](const std::string& line) {
-    const std::lock_guard<std::mutex> lock(report);
-    progress(line + "  [" + clock.status() + "]");
-  })
-                                     : HbmProgress();
+  const HbmProgress timed = with_clock_locked(progress, clock, report);
   LevelRelay relay(n);
   for_each_index(n, worker_count(n, spec.threads), [&](size_t i) {
     const LevelRelay::Guard published(relay, i);

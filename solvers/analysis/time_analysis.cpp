@@ -202,11 +202,7 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   ProgressClock clock(static_cast<int>(n));
   std::mutex report;  // the progress line and the clock, from every worker
   int done = 0;
-  const HbmProgress timed = progress ? HbmProgress([&](const std::string& line) {
-    const std::lock_guard<std::mutex> lock(report);
-    progress(line + "  [" + clock.status() + "]");
-  })
-                                     : HbmProgress();
+  const HbmProgress timed = with_clock_locked(progress, clock, report);
   // Levels are independent (each marches from its own static state): on `threads` workers, the
   // results those of the serial run.
   o.levels.resize(n);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <mutex>
 #include <string>
 
 namespace bb {
@@ -45,6 +46,17 @@ template <typename Progress>
 Progress with_clock(const Progress& progress, const ProgressClock& clock) {
   if (!progress) return {};
   return [&progress, &clock](const std::string& line) { progress(line + "  [" + clock.status() + "]"); };
+}
+
+// As with_clock, for workers that report at once: one line at a time under `lock`, which the
+// caller also holds to advance the clock.
+template <typename Progress>
+Progress with_clock_locked(const Progress& progress, const ProgressClock& clock, std::mutex& lock) {
+  if (!progress) return {};
+  return [&progress, &clock, &lock](const std::string& line) {
+    const std::lock_guard<std::mutex> guard(lock);
+    progress(line + "  [" + clock.status() + "]");
+  };
 }
 
 }  // namespace bb

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include "report/gnuplot.hpp"
 
@@ -18,13 +20,21 @@ Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out
   const std::string name = time.prepared.response_names.at(response);
   const auto r = static_cast<Eigen::Index>(response);
   bool hbm = false;
+  std::vector<bool> envelope(time.levels.size(), false);  // a level with a point that does not repeat
   {
     std::ofstream out = open_plot_data(out_dir, stem);
-    for (const TimeLevel& l : time.levels) {
-      out << "# Fe = " << l.force << " N, time integration: frequency_hz amplitude linear_amplitude\n";
-      for (size_t i = 0; i < l.frequency_hz.size(); ++i)
-        out << l.frequency_hz[i] << ' ' << l.amplitude(static_cast<Eigen::Index>(i), r) << ' '
-            << l.linear(static_cast<Eigen::Index>(i), r) << '\n';
+    for (size_t k = 0; k < time.levels.size(); ++k) {
+      const TimeLevel& l = time.levels[k];
+      out << "# Fe = " << l.force
+          << " N, time integration: frequency_hz amplitude linear_amplitude, and where the motion is not "
+             "steady the range of its first harmonic over the last periods: envelope_min envelope_max\n";
+      for (size_t i = 0; i < l.frequency_hz.size(); ++i) {
+        const auto f = static_cast<Eigen::Index>(i);
+        const bool open = !l.steady[i] && l.envelope_min.rows() > f && std::isfinite(l.envelope_min(f, r));
+        envelope[k] = envelope[k] || open;
+        out << l.frequency_hz[i] << ' ' << l.amplitude(f, r) << ' ' << l.linear(f, r) << ' '
+            << (open ? l.envelope_min(f, r) : NAN) << ' ' << (open ? l.envelope_max(f, r) : NAN) << '\n';
+      }
       out << "\n\n# harmonic balance: frequency_hz amplitude\n";
       if (l.hbm) {
         hbm = true;
@@ -43,9 +53,15 @@ Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out
       "set ylabel 'amplitude [m]'\nset grid\nset key outside right\nset datafile missing 'nan'\nplot ",
       gnuplot_quote(title));
   for (size_t i = 0; i < time.levels.size(); ++i) {
+    // The ranges first: gnuplot blanks the area around an error bar's centre, which would hide the points.
+    if (envelope[i])
+      script += fmt::format(
+          "{}'{}.dat' index {} using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '{}' title 'Fe = {:g} N, not steady: "
+          "first-harmonic range', \\\n     ",
+          i ? ", \\\n     " : "", stem, 2 * i, kColours[i % 8], time.levels[i].force);
     script +=
         fmt::format("{}'{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title 'Fe = {:g} N, Newmark'",
-                    i ? ", \\\n     " : "", stem, 2 * i, kColours[i % 8], time.levels[i].force);
+                    i && !envelope[i] ? ", \\\n     " : "", stem, 2 * i, kColours[i % 8], time.levels[i].force);
     if (hbm)
       script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N, HBM'",
                             stem, 2 * i + 1, kColours[i % 8], time.levels[i].force);

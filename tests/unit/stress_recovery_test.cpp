@@ -239,7 +239,7 @@ TEST_P(EveryElement, PatchUnderUniformTractionRecoversTheExactUniaxialStress) {
 INSTANTIATE_TEST_SUITE_P(StressRecovery, EveryElement,
                          ::testing::Values(ElementType::q4, ElementType::cst, ElementType::hex8, ElementType::hex8i,
                                            ElementType::hex20),
-                         [](const auto& info) { return std::string(element_name(info.param)); });
+                         [](const auto& element) { return std::string(element_name(element.param)); });
 
 // Pure bending of a beam one hex8i element deep: the incompatible modes make the element exact in
 // bending, and the recovered stress must carry them (sigma_xx linear through the depth, +-M c / I at

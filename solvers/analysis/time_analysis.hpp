@@ -61,6 +61,10 @@ struct TimeOutcome {
   std::string failure;
 };
 
+// Whether frequency i of a level's stepped sine, not steady, counts as steady in its first harmonic
+// (TimeSpec::envelope_tolerance): what the peaks and the report accept.
+bool steady_first_harmonic(const TimeLevel& level, const TimeSpec& spec, Eigen::Index i);
+
 // Throws as prepare_hbm; a frequency that does not reach the steady state, or a Newmark step that
 // fails, is reported in the tables (steady = 0, with the change or the message), never thrown; a
 // peak resting on one is `failure`.

@@ -24,14 +24,6 @@ double loop_work(const std::vector<timeint::ContactSample>& s) {
   return w;
 }
 
-// Whether frequency i of a stepped sine, not steady, counts as steady in its first harmonic
-// (TimeSpec::envelope_tolerance).
-bool steady_first_harmonic(const TimeLevel& level, const TimeSpec& spec, Index i) {
-  return spec.method == TimeSpec::Method::newmark && spec.envelope_tolerance > 0.0 &&
-         !level.steady[static_cast<size_t>(i)] &&
-         level.envelope_span[static_cast<size_t>(i)] <= spec.envelope_tolerance;
-}
-
 // What the motion at frequency i of a stepped sine did where it reached no steady state.
 std::string unsteady_motion(const TimeLevel& level, Index i, const std::string& response) {
   const int k = level.period_multiple[static_cast<size_t>(i)];
@@ -43,8 +35,6 @@ std::string unsteady_motion(const TimeLevel& level, Index i, const std::string& 
       timeint::SteadyStateOptions{}.envelope_periods);
 }
 
-// The tables of the sweeps: frf (every grid point), peaks (time integration, linear model, and
-// harmonic balance when compared) and time_cost.
 // The columns of the frf table, and (shooting) those also in each level's own table.
 std::vector<std::string> frf_columns(const PreparedHbm& p, const TimeSpec& spec, bool pair,
                                      std::vector<std::string>& periodic_cols) {
@@ -116,6 +106,12 @@ std::vector<double> cost_row(const TimeLevel& level, size_t l, const TimeSpec& s
 }
 
 }  // namespace
+
+bool steady_first_harmonic(const TimeLevel& level, const TimeSpec& spec, Index i) {
+  return spec.method == TimeSpec::Method::newmark && spec.envelope_tolerance > 0.0 &&
+         !level.steady[static_cast<size_t>(i)] &&
+         level.envelope_span[static_cast<size_t>(i)] <= spec.envelope_tolerance;
+}
 
 void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<double>& frequencies,
                       const std::optional<std::pair<Index, Index>>& pair) {

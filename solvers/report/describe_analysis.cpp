@@ -114,7 +114,7 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
     for (size_t i = 0; i < l.steady.size(); ++i) {
       if (l.steady[i]) continue;
       ++not_steady;
-      if (spec.envelope_tolerance > 0.0 && i < l.envelope_span.size() && l.envelope_span[i] <= spec.envelope_tolerance)
+      if (steady_first_harmonic(l, spec, static_cast<Eigen::Index>(i)))
         ++by_envelope, widest = std::max(widest, l.envelope_span[i]);
     }
   }

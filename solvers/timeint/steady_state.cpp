@@ -66,26 +66,34 @@ double period_change(const MatrixXd& x, const MatrixXd& previous, bool ignore_dr
   return change;
 }
 
-// Each column's first harmonic a1 - i b1 over one period of samples.
-Eigen::RowVectorXcd first_harmonics(const MatrixXd& x) {
-  const auto n_t = static_cast<double>(x.rows());
-  VectorXd cosine(x.rows()), sine(x.rows());
-  for (Index k = 0; k < x.rows(); ++k) {
-    cosine[k] = std::cos(2.0 * std::numbers::pi * static_cast<double>(k) / n_t);
-    sine[k] = std::sin(2.0 * std::numbers::pi * static_cast<double>(k) / n_t);
+// The first harmonic a1 - i b1 of each column of one period of n_t samples, from cos and sin at
+// the samples (built once per run, used every period).
+class FirstHarmonic {
+ public:
+  explicit FirstHarmonic(int n_t) : cosine_(n_t), sine_(n_t) {
+    for (int k = 0; k < n_t; ++k) {
+      cosine_[k] = std::cos(2.0 * std::numbers::pi * k / n_t);
+      sine_[k] = std::sin(2.0 * std::numbers::pi * k / n_t);
+    }
   }
-  Eigen::RowVectorXcd z(x.cols());
-  for (Index j = 0; j < x.cols(); ++j)
-    z[j] = 2.0 / n_t * std::complex<double>(x.col(j).dot(cosine), -x.col(j).dot(sine));
-  return z;
-}
+  Eigen::RowVectorXcd operator()(const MatrixXd& x) const {
+    const double scale = 2.0 / static_cast<double>(x.rows());
+    Eigen::RowVectorXcd z(x.cols());
+    for (Index j = 0; j < x.cols(); ++j)
+      z[j] = scale * std::complex<double>(x.col(j).dot(cosine_), -x.col(j).dot(sine_));
+    return z;
+  }
 
-// The smallest k in [2, recent.size() - 1] for which the last period repeats the one k periods
-// before it to the tolerance; 0 when none does.
-int repeating_multiple(const std::deque<MatrixXd>& recent, const SteadyStateOptions& options) {
-  const size_t last = recent.size() - 1;
-  for (size_t k = 2; k <= last; ++k)
-    if (period_change(recent[last], recent[last - k], options.ignore_drift) <= options.tolerance)
+ private:
+  VectorXd cosine_, sine_;
+};
+
+// The smallest k in [2, max_period_multiple] for which the last of `periods` repeats the one k
+// periods before it to the tolerance; 0 when none does.
+int repeating_multiple(const std::deque<MatrixXd>& periods, const SteadyStateOptions& options) {
+  const size_t last = periods.size() - 1;
+  for (size_t k = 2; k <= std::min(last, static_cast<size_t>(options.max_period_multiple)); ++k)
+    if (period_change(periods[last], periods[last - k], options.ignore_drift) <= options.tolerance)
       return static_cast<int>(k);
   return 0;
 }
@@ -156,8 +164,11 @@ SteadyState steady_state(const friction::FrictionModel& model, double omega, con
   DynamicState state = std::move(*initial);
 
   const Index nd = static_cast<Index>(options.dofs.size());
-  std::deque<MatrixXd> periods;               // the last periods_analysed + 1 periods, n_t x nd samples each
-  std::deque<MatrixXd> recent;                // the last max_period_multiple + 1 periods
+  // The last periods, n_t x nd samples each: enough for the DFT (periods_analysed) and for the test
+  // of a repetition after k = 2..max_period_multiple periods.
+  const auto kept = static_cast<size_t>(std::max(options.periods_analysed, options.max_period_multiple + 1));
+  std::deque<MatrixXd> periods;
+  const FirstHarmonic first_harmonic(n_t);
   std::deque<Eigen::RowVectorXcd> harmonics;  // each period's first harmonics, the last envelope_periods
   std::vector<std::vector<ContactSample>> loop;
   while (out.cycles < options.max_cycles) {
@@ -189,12 +200,10 @@ SteadyState steady_state(const friction::FrictionModel& model, double omega, con
       out.drift = x.colwise().mean().transpose() - periods.back().colwise().mean().transpose();
       out.change = period_change(x, periods.back(), options.ignore_drift);
     }
-    harmonics.push_back(first_harmonics(x));
+    harmonics.push_back(first_harmonic(x));
     if (static_cast<int>(harmonics.size()) > options.envelope_periods) harmonics.pop_front();
-    recent.push_back(x);
-    if (static_cast<int>(recent.size()) > options.max_period_multiple + 1) recent.pop_front();
     periods.push_back(std::move(x));
-    if (static_cast<int>(periods.size()) > options.periods_analysed) periods.pop_front();
+    if (periods.size() > kept) periods.pop_front();
     if (out.cycles >= options.min_cycles && out.change <= options.tolerance) {
       out.converged = true;
       break;
@@ -209,9 +218,12 @@ SteadyState steady_state(const friction::FrictionModel& model, double omega, con
     out.envelope.col(0) = out.period_harmonics.cwiseAbs().colwise().minCoeff().transpose();
     out.envelope.col(1) = out.period_harmonics.cwiseAbs().colwise().maxCoeff().transpose();
   }
-  out.period_multiple = out.converged ? 1 : repeating_multiple(recent, options);
-  if (out.period_multiple > 1) {  // a subharmonic motion: its harmonics over one whole repetition
-    periods.assign(recent.end() - out.period_multiple, recent.end());
+  out.period_multiple = out.converged ? 1 : repeating_multiple(periods, options);
+  // The DFT over the last periods_analysed periods, or over one whole repetition of a subharmonic motion.
+  const size_t analysed = std::min(
+      periods.size(), static_cast<size_t>(out.period_multiple > 1 ? out.period_multiple : options.periods_analysed));
+  periods.erase(periods.begin(), periods.end() - static_cast<std::ptrdiff_t>(analysed));
+  if (out.period_multiple > 1) {
     out.failure = fmt::format(
         "steady state at omega = {:.9g} rad/s not reached in {} periods: the motion repeats every {} periods (a "
         "subharmonic response; cycle-to-cycle change {:.3e} > tolerance {:.3e})",

@@ -13,7 +13,8 @@ namespace {
 
 constexpr const char* kSupported =
     "material.{E,nu,rho}, section.thickness, mesh.dimensions.<name>, analysis.contact[.<i>].{kn,kt,mu,n0}, "
-    "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force}, analysis.modal_damping, analysis.forces.<i>.amplitude, "
+    "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force,centre.0,centre.1}, analysis.modal_damping, "
+    "analysis.forces.<i>.amplitude, "
     "analysis.model.{stiffness,mass}.<i>.<j>";
 
 std::optional<contact::LawParameter> law_of(const std::string& key) {
@@ -72,7 +73,9 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
     double& operator()(const DamperValue& v) {
       HbmSpec* hbm = system();
       if (!hbm || !hbm->damper) absent(p, "the analysis has no [analysis.damper]");
-      return v.law ? law_field(hbm->damper->law, *v.law) : (*hbm->damper).*v.member;
+      if (v.law) return law_field(hbm->damper->law, *v.law);
+      if (v.centre_axis) return hbm->damper->centre[*v.centre_axis];
+      return (*hbm->damper).*v.member;
     }
     double& operator()(const ModalDampingValue&) {
       FrfDamping* damping = nullptr;
@@ -135,13 +138,15 @@ CaseParameter parse_parameter_path(const std::string& path) {
     if (!std::holds_alternative<ArticleDimension>(p.target)) return unknown();
   } else if (const std::string key = after("analysis.damper."); !key.empty()) {
     if (const auto law = law_of(key); law && *law != contact::law_n0)
-      p.target = DamperValue{law, nullptr};
+      p.target = DamperValue{law, nullptr, std::nullopt};
     else if (key == "mass")
-      p.target = DamperValue{std::nullopt, &DamperSpec::mass};
+      p.target = DamperValue{std::nullopt, &DamperSpec::mass, std::nullopt};
     else if (key == "inertia")
-      p.target = DamperValue{std::nullopt, &DamperSpec::inertia};
+      p.target = DamperValue{std::nullopt, &DamperSpec::inertia, std::nullopt};
     else if (key == "centrifugal_force")
-      p.target = DamperValue{std::nullopt, &DamperSpec::centrifugal_force};
+      p.target = DamperValue{std::nullopt, &DamperSpec::centrifugal_force, std::nullopt};
+    else if (key == "centre.0" || key == "centre.1")
+      p.target = DamperValue{std::nullopt, nullptr, key == "centre.0" ? 0u : 1u};
     else
       return unknown();
   } else if (const std::string force = after("analysis.forces."); !force.empty()) {

@@ -25,9 +25,12 @@ struct ContactLawValue {  // analysis.contact.<i>.<law> (hbm, time); analysis.co
   std::optional<size_t> contact;
   contact::LawParameter law = contact::law_kt;
 };
-struct DamperValue {  // analysis.damper.{kn,kt,mu} (law) or analysis.damper.{mass,inertia,centrifugal_force}
+// analysis.damper.{kn,kt,mu} (law), analysis.damper.{mass,inertia,centrifugal_force} (member) or
+// analysis.damper.centre.{0,1} (x or y of G: where CF acts, which shares it between the points)
+struct DamperValue {
   std::optional<contact::LawParameter> law;
   double DamperSpec::*member = nullptr;
+  std::optional<size_t> centre_axis;
 };
 struct ModalDampingValue {};  // analysis.modal_damping (frf, hbm, time)
 struct ForceAmplitude {       // analysis.forces.<i>.amplitude (frf, hbm, time)

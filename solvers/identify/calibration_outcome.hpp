@@ -18,7 +18,7 @@ namespace bb {
 
 // One start of a multi-start fit.
 struct CalibrationStart {
-  std::vector<double> start, values;  // parameter values at the start and at its end
+  std::vector<double> start, values;            // parameter values at the start and at its end
   double initial_cost = 0.0, final_cost = 0.0;  // NaN when not evaluated
   int iterations = 0;
   bool converged = false;
@@ -52,6 +52,7 @@ struct CalibrationOutcome {
   int residual_evaluations = 0;  // model runs (a central-difference Jacobian costs 2 n of them)
   std::string derivatives;       // how the Jacobian was computed ("analytic ..." or "central differences ...")
   int jacobian_fallbacks = 0;    // analytic Jacobians taken by central differences (a point had no derivative)
+  int one_sided_columns = 0;     // difference columns taken one-sided (the model failed on the other side)
   bool converged = false;
   std::string termination;                   // Ceres's report
   std::vector<FitPoint> before;              // fitted points at the case's start values

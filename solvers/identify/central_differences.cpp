@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <atomic>
 #include <utility>
 
 #include "common/parallel_indices.hpp"
@@ -10,11 +11,12 @@
 namespace bb {
 
 CentralDifferences::CentralDifferences(ResidualFunction residual, int parameters, int residuals, double step,
-                                       std::size_t workers)
+                                       std::size_t workers, int* one_sided)
     : residual_(std::move(residual)),
       parameters_(parameters),
       step_(step),
-      workers_(std::max<std::size_t>(1, workers)) {
+      workers_(std::max<std::size_t>(1, workers)),
+      one_sided_(one_sided) {
   mutable_parameter_block_sizes()->push_back(parameters);
   set_num_residuals(residuals);
 }
@@ -53,13 +55,21 @@ bool CentralDifferences::Evaluate(double const* const* parameters, double* resid
   });
   if (!ok[0]) return false;
   std::copy(runs[0].data(), runs[0].data() + m, residuals);
-  for (const char good : ok)
-    if (!good) return false;
   // Row-major m x n, as Ceres lays out a parameter block's Jacobian.
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> jacobian(jacobians[0], m,
                                                                                               parameters_);
-  for (std::size_t j = 0; j < n; ++j)
-    jacobian.col(static_cast<Eigen::Index>(j)) = (runs[2 * j + 1] - runs[2 * j + 2]) / (2.0 * step_);
+  int one_sided = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const bool up = ok[2 * j + 1] != 0, down = ok[2 * j + 2] != 0;
+    if (!up && !down) return false;
+    auto column = jacobian.col(static_cast<Eigen::Index>(j));
+    if (up && down)
+      column = (runs[2 * j + 1] - runs[2 * j + 2]) / (2.0 * step_);
+    else
+      column = up ? (runs[2 * j + 1] - runs[0]) / step_ : (runs[0] - runs[2 * j + 2]) / step_;
+    one_sided += up != down;
+  }
+  if (one_sided_ && one_sided > 0) std::atomic_ref<int>(*one_sided_).fetch_add(one_sided);
   return true;
 }
 

@@ -10,6 +10,10 @@
 // (Ceres's numeric differences step h |x_j|, which on log values depends on the unit: log kt = 18.4
 // in N/m took a 20 % step, a parameter whose value is 1 one of 1.5e-8.) The result is the same bit
 // for bit whatever the number of workers (the model runs are deterministic and independent).
+//
+// Where the model cannot be run on one side of x (a bound of the physics just beyond the fit's
+// bound, a peak leaving the band), that column is the one-sided difference with the centre run,
+// O(h) instead of O(h^2), and counted; where it fails on both sides the evaluation fails.
 #pragma once
 #include <ceres/cost_function.h>
 
@@ -26,7 +30,9 @@ using ResidualFunction = std::function<bool(const std::vector<double>& x, double
 class CentralDifferences : public ceres::CostFunction {
  public:
   // `residual` must be safe to call from several threads at once. step > 0, workers >= 1.
-  CentralDifferences(ResidualFunction residual, int parameters, int residuals, double step, std::size_t workers);
+  // `one_sided`, when given, counts the columns taken one-sided.
+  CentralDifferences(ResidualFunction residual, int parameters, int residuals, double step, std::size_t workers,
+                     int* one_sided = nullptr);
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
 
  private:
@@ -34,6 +40,7 @@ class CentralDifferences : public ceres::CostFunction {
   int parameters_;
   double step_;
   std::size_t workers_;
+  int* one_sided_;
   // The last successful residual-only evaluation.
   mutable std::mutex last_lock_;
   mutable std::vector<double> last_x_, last_residuals_;

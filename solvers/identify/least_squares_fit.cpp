@@ -1,6 +1,5 @@
 #include "identify/least_squares_fit.hpp"
 
-#include <Eigen/SVD>
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
@@ -10,11 +9,11 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
-#include <optional>
 #include <random>
 
 #include "common/parallel_indices.hpp"
 #include "identify/central_differences.hpp"
+#include "identify/fit_identifiability.hpp"
 
 namespace bb {
 namespace {
@@ -77,13 +76,13 @@ struct NumericResidual {
 class AnalyticResidual : public ceres::CostFunction {
  public:
   AnalyticResidual(const FitEvaluator* evaluate, size_t parameters, int* evaluations, int residuals,
-                   double derivative_step, size_t workers, int* fallbacks, RobustLoss loss)
+                   double derivative_step, size_t workers, int* fallbacks, int* one_sided, RobustLoss loss)
       : evaluate_(evaluate),
         evaluations_(evaluations),
         fallbacks_(fallbacks),
         loss_(loss),
         differences_(NumericResidual{evaluate, parameters, evaluations, loss}, static_cast<int>(parameters), residuals,
-                     derivative_step, workers) {
+                     derivative_step, workers, one_sided) {
     set_num_residuals(residuals);
     mutable_parameter_block_sizes()->push_back(static_cast<int>(parameters));
   }
@@ -169,172 +168,6 @@ std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
   return starts;
 }
 
-// Relative to the largest singular value of the Jacobian (log parameters), the size below which a
-// direction of the parameters is not determined by the fitted points: the pseudo-inverse drops it,
-// which would report it with a variance of zero.
-constexpr double kUnidentified = 1e-8;
-
-// Of (J^T J)'s eigenvalues, those below this share of the largest are dropped from its pseudo-inverse
-// (Ceres's default min_reciprocal_condition_number, as its DENSE_SVD covariance truncates).
-constexpr double kMinReciprocalCondition = 1e-14;
-
-// The Jacobian of the residuals in log parameters at the problem's values (robust loss applied);
-// nullopt when it cannot be evaluated there.
-std::optional<Eigen::MatrixXd> jacobian_at(ceres::Problem& problem) {
-  ceres::CRSMatrix crs;
-  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs)) return std::nullopt;
-  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
-  for (int r = 0; r < crs.num_rows; ++r)
-    for (int k = crs.rows[static_cast<size_t>(r)]; k < crs.rows[static_cast<size_t>(r) + 1]; ++k)
-      j(r, crs.cols[static_cast<size_t>(k)]) = crs.values[static_cast<size_t>(k)];
-  return j;
-}
-
-// The parameters and combinations the fitted points do not determine at the optimum, from the
-// Jacobian in log parameters (scale free) and its SVD: a zero column is a parameter without effect,
-// a vanishing singular value a combination that trades off exactly. Returns the parameters not
-// identified.
-std::vector<bool> warn_unidentified(const Eigen::MatrixXd& j, const Eigen::JacobiSVD<Eigen::MatrixXd>& svd,
-                                    const CalibrationSpec& cal, CalibrationOutcome& out) {
-  const size_t n = cal.parameters.size();
-  std::vector<bool> unidentified(n, false);
-  const Eigen::VectorXd& sv = svd.singularValues();
-  if (sv.size() == 0 || !(sv(0) > 0.0)) {
-    out.warnings.push_back("no parameter has an effect on the fitted points at the optimum: nothing is identified");
-    unidentified.assign(n, true);
-    return unidentified;
-  }
-  for (size_t i = 0; i < n; ++i)
-    if (j.col(static_cast<Eigen::Index>(i)).norm() <= kUnidentified * sv(0)) {
-      unidentified[i] = true;
-      out.warnings.push_back(
-          fmt::format("'{}' has no effect on the fitted points at the optimum: it is not "
-                      "identified (no standard deviation or correlation is given for it)",
-                      cal.parameters[i].path));
-    }
-  for (Eigen::Index k = 0; k < sv.size(); ++k) {
-    if (sv(k) > kUnidentified * sv(0)) continue;
-    std::vector<std::string> terms;  // the weak direction, in log parameters
-    for (Eigen::Index i = 0; i < svd.matrixV().rows(); ++i)
-      if (const double c = svd.matrixV()(i, k); std::abs(c) > 0.2 && !unidentified[static_cast<size_t>(i)])
-        terms.push_back(fmt::format("{:+.2f} log({})", c, cal.parameters[static_cast<size_t>(i)].path));
-    if (terms.size() < 2) continue;  // a single parameter: named above
-    std::string combination;
-    for (const std::string& t : terms) combination += (combination.empty() ? "" : " ") + t;
-    out.warnings.push_back(
-        fmt::format("the fitted points do not determine the combination {} (singular value "
-                    "{:.2g} of the largest): these parameters trade off; hold one of them",
-                    combination, sv(k) / sv(0)));
-    for (Eigen::Index i = 0; i < svd.matrixV().rows(); ++i)
-      if (std::abs(svd.matrixV()(i, k)) > 0.2) unidentified[static_cast<size_t>(i)] = true;
-  }
-  return unidentified;
-}
-
-// The cost along the covariance's weakest direction (the identified parameters only), t = -2, -1, 1, 2
-// standard deviations from the optimum x (log values), clamped to the bounds: four model runs.
-void profile_weakest_direction(ceres::Problem& problem, std::vector<double>& x, const Eigen::MatrixXd& c,
-                               const std::vector<bool>& unidentified, const CalibrationSpec& cal,
-                               CalibrationOutcome& out) {
-  const auto n = static_cast<Eigen::Index>(x.size());
-  Eigen::MatrixXd kept = c;
-  for (Eigen::Index i = 0; i < n; ++i)
-    if (unidentified[static_cast<size_t>(i)]) kept.row(i).setZero(), kept.col(i).setZero();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(kept);
-  if (eig.info() != Eigen::Success || !(eig.eigenvalues()(n - 1) > 0.0)) return;
-  const Eigen::VectorXd v = eig.eigenvectors().col(n - 1);
-  const double sigma = std::sqrt(eig.eigenvalues()(n - 1));
-  const double scale = std::isfinite(out.reduced_chi_square) ? std::max(1.0, out.reduced_chi_square) : 1.0;
-  const std::vector<double> optimum = x;
-  double cost0 = 0.0;
-  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost0, nullptr, nullptr, nullptr)) return;
-  out.weakest_direction.assign(v.data(), v.data() + n);
-  for (double t : {-2.0, -1.0, 1.0, 2.0}) {
-    CalibrationOutcome::ProfilePoint pt;
-    pt.t = t;
-    pt.predicted = 0.5 * t * t * scale;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const auto k = static_cast<size_t>(i);
-      x[k] = std::clamp(optimum[k] + t * sigma * v(i), std::log(cal.parameters[k].lower),
-                        std::log(cal.parameters[k].upper));
-      pt.values.push_back(std::exp(x[k]));
-    }
-    double cost = 0.0;
-    if (problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr)) pt.rise = cost - cost0;
-    out.weakest_profile.push_back(pt);
-  }
-  x = optimum;
-  double flattest = INFINITY;
-  for (const auto& pt : out.weakest_profile)
-    if (std::abs(pt.t) == 2.0 && std::isfinite(pt.rise)) flattest = std::min(flattest, pt.rise / pt.predicted);
-  if (flattest < 0.25)
-    out.warnings.push_back(fmt::format(
-        "along the weakest direction the cost rises by only {:.2g} of what the covariance predicts at 2 standard "
-        "deviations: the standard deviations understate the uncertainty there (report: weakest direction)",
-        flattest));
-}
-
-// The covariance at the optimum x (log values) as standard deviations and correlations, with the
-// Birge ratio: a fit worse than the stated uncertainties allow (reduced chi-square above 1, e.g.
-// outliers or an imperfect model) scales the covariance up by it. A parameter the points do not
-// determine gets none (NaN), rather than the zero the pseudo-inverse would give it. One Jacobian
-// and one SVD serve both the identifiability warnings and the covariance.
-void add_covariance(ceres::Problem& problem, std::vector<double>& x, const CalibrationSpec& cal,
-                    CalibrationOutcome& out) {
-  const size_t n = x.size();
-  out.std_devs.assign(n, NAN);
-  const std::optional<Eigen::MatrixXd> jacobian = jacobian_at(problem);
-  if (!jacobian) {
-    out.warnings.push_back("the covariance could not be computed: the model cannot be evaluated at the optimum");
-    return;
-  }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(*jacobian, Eigen::ComputeFullV);
-  const std::vector<bool> unidentified = warn_unidentified(*jacobian, svd, cal, out);
-  // (J^T J)^+ = V S^-2 V^T over the directions kept.
-  const Eigen::VectorXd& sv = svd.singularValues();
-  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  for (Eigen::Index k = 0; k < sv.size(); ++k)
-    if (sv(k) > 0.0 && sv(k) * sv(k) >= kMinReciprocalCondition * sv(0) * sv(0))
-      c += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
-  out.correlation.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  if (out.reduced_chi_square > 1.0) c *= out.reduced_chi_square;
-  profile_weakest_direction(problem, x, c, unidentified, cal, out);
-  for (size_t i = 0; i < n; ++i) {
-    const auto ii = static_cast<Eigen::Index>(i);
-    if (!unidentified[i]) out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log -> value
-    for (size_t j = 0; j < n; ++j) {
-      const auto jj = static_cast<Eigen::Index>(j);
-      out.correlation(ii, jj) = unidentified[i] || unidentified[j] ? NAN : c(ii, jj) / std::sqrt(c(ii, ii) * c(jj, jj));
-      if (j > i && std::abs(out.correlation(ii, jj)) > 0.95)
-        out.warnings.push_back(fmt::format("'{}' and '{}' correlate at {:.3f}: the data cannot separate them",
-                                           cal.parameters[i].path, cal.parameters[j].path, out.correlation(ii, jj)));
-    }
-  }
-}
-
-// Another start's minimum counts as "as good" when it lies inside the 95 % joint confidence region
-// of the best one: delta chi-square (scaled like the covariance) below the chi-square quantile for
-// n parameters.
-void warn_other_minima(CalibrationOutcome& out, size_t n) {
-  const CalibrationStart& chosen = out.starts[out.best];
-  const double chi2_95[] = {3.84, 5.99, 7.81, 9.49, 11.07, 12.59, 14.07, 15.51, 16.92, 18.31};
-  const double quantile =
-      n <= 10 ? chi2_95[n - 1] : static_cast<double>(n) + 2.0 * std::sqrt(2.0 * static_cast<double>(n));
-  const double scale = std::isfinite(out.reduced_chi_square) ? std::max(1.0, out.reduced_chi_square) : 1.0;
-  for (size_t s = 0; s < out.starts.size(); ++s) {
-    if (s == out.best || !out.starts[s].converged ||
-        2.0 * (out.starts[s].final_cost - chosen.final_cost) / scale >= quantile)
-      continue;
-    bool same = true;
-    for (size_t i = 0; i < n; ++i) same = same && std::abs(std::log(out.starts[s].values[i] / chosen.values[i])) < 0.05;
-    if (!same)
-      out.warnings.push_back(fmt::format(
-          "start {} reaches a cost ({:.6g}) within the 95 % confidence region of the best ({:.6g}) at other "
-          "values: the minimum is not unique",
-          s + 1, out.starts[s].final_cost, chosen.final_cost));
-  }
-}
-
 }  // namespace
 
 CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator& evaluate, bool analytic,
@@ -348,16 +181,17 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   const size_t budget = worker_count(std::numeric_limits<size_t>::max(), cal.threads);
   const size_t column_workers = std::max<size_t>(1, budget / std::max<size_t>(1, at_once));
   // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
-  const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations, int* fallbacks) {
+  const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations, int* fallbacks,
+                         int* one_sided) {
     ceres::CostFunction* cost = nullptr;
     const RobustLoss loss = RobustLoss::of(cal);
     if (analytic) {
       cost = new AnalyticResidual(&evaluate, n, evaluations, residuals, cal.derivative_step, column_workers, fallbacks,
-                                  loss);
+                                  one_sided, loss);
     } else {
       // derivative_step (default 1e-4): above the eigensolver's 1e-10 noise, below the model's curvature.
       cost = new CentralDifferences(NumericResidual{&evaluate, n, evaluations, loss}, static_cast<int>(n), residuals,
-                                    cal.derivative_step, column_workers);
+                                    cal.derivative_step, column_workers, one_sided);
     }
     problem.AddResidualBlock(cost, nullptr, x.data());
     for (size_t i = 0; i < n; ++i) {
@@ -381,8 +215,9 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     CalibrationStart result;
     std::vector<double> x;
     std::string message, brief;
+    bool failed = false;  // stopped because the model could not be run where Ceres asked
     std::vector<std::pair<int, double>> history;
-    int evaluations = 0, fallbacks = 0;
+    int evaluations = 0, fallbacks = 0, one_sided = 0;
   };
   std::vector<StartRun> runs(starts.size());
   std::mutex progress_lock;
@@ -397,7 +232,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     run.x.resize(n);
     for (size_t i = 0; i < n; ++i) run.x[i] = std::log(starts[s][i]);
     ceres::Problem problem;
-    build(run.x, problem, &run.evaluations, &run.fallbacks);
+    build(run.x, problem, &run.evaluations, &run.fallbacks, &run.one_sided);
     IterationTrace trace(locked_progress, run.history, static_cast<int>(s + 1), static_cast<int>(starts.size()),
                          cal.max_iterations);
     ceres::Solver::Options o = options;
@@ -415,6 +250,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     r.converged = r.evaluated && summary.termination_type == ceres::CONVERGENCE;
     run.message = summary.message;
     run.brief = summary.BriefReport();
+    run.failed = summary.termination_type == ceres::FAILURE;
   };
   for_each_index(starts.size(), worker_count(starts.size(), cal.threads), run_start);
   std::vector<double> x;
@@ -423,6 +259,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     const CalibrationStart& r = runs[s].result;
     out.residual_evaluations += runs[s].evaluations;
     out.jacobian_fallbacks += runs[s].fallbacks;
+    out.one_sided_columns += runs[s].one_sided;
     out.starts.push_back(r);
     const CalibrationStart& best = out.starts[out.best];
     if (s == 0 || (r.evaluated && !best.evaluated) ||
@@ -453,11 +290,17 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
           "start {} reached a lower cost ({:.6g}) than the reported start {} ({:.6g}) but did not converge ({}): "
           "the best minimum may lie beyond it; raise max_iterations",
           s + 1, out.starts[s].final_cost, out.best + 1, chosen.final_cost, runs[s].message));
+    else if (s != out.best && runs[s].failed)
+      out.warnings.push_back(
+          fmt::format("start {} stopped after {} iterations at cost {:.6g}: the model could not be run where the fit "
+                      "needed it ({}); its minimum is unknown",
+                      s + 1, out.starts[s].iterations, out.starts[s].final_cost, runs[s].message));
   const double dof = static_cast<double>(residuals) - static_cast<double>(n);
   out.reduced_chi_square = dof > 0 ? 2.0 * out.final_cost / dof : NAN;
   if (starts.size() > 1) warn_other_minima(out, n);
   ceres::Problem problem;
-  build(x, problem, &out.residual_evaluations, &out.jacobian_fallbacks);  // at the chosen optimum, for the covariance
+  // At the chosen optimum, for the covariance.
+  build(x, problem, &out.residual_evaluations, &out.jacobian_fallbacks, &out.one_sided_columns);
   out.values.resize(n);
   for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
   add_covariance(problem, x, cal, out);

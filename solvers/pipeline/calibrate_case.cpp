@@ -238,6 +238,9 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
                                                              out.jacobian_fallbacks, cal->derivative_step))
                              : fmt::format("central differences, relative step {:g} ({})", cal->derivative_step,
                                            cal->derivatives == "numeric" ? "as asked" : numeric_reason);
+  if (out.one_sided_columns > 0)
+    out.derivatives += fmt::format("; {} columns one-sided, where the model could not be run on the other side",
+                                   out.one_sided_columns);
   out.after = fitted_points(base, *cal, out.values, limits, &out.curves_after);
   out.calibrated = table;
   for (size_t i = 0; i < out.values.size(); ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);

@@ -8,7 +8,10 @@
 
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
+#include "forced/hbm_level.hpp"
+#include "model/build_model.hpp"
 #include "oscillator_case.hpp"
+#include "two_blade_rom_case.hpp"
 
 namespace bb {
 namespace {
@@ -86,6 +89,32 @@ TEST(CaseParameter, HbmSensitivitiesCoverTheLawsAndTheModalDampingButNotTheDampe
   EXPECT_FALSE(hbm_parameter(parse_parameter_path("analysis.damper.kn")));  // moves the static seat
   EXPECT_FALSE(hbm_parameter(parse_parameter_path("analysis.forces.0.amplitude")));
   EXPECT_FALSE(hbm_parameter(parse_parameter_path("material.E")));
+}
+
+// G's x decides how CF is shared between the flat face's points L1 and L2 (the moment balance):
+// moving G away from R, towards the lower point L1, loads L1 more, while the loads still balance
+// CF along y whatever G.
+TEST(CaseParameter, TheDamperCentreSharesTheCentrifugalForceBetweenItsPoints) {
+  CaseSpec spec = parse_case_table(toml::parse(test::two_blade_rom_case_text({})), "two_blade_rom.toml");
+  const CaseParameter x = parse_parameter_path("analysis.damper.centre.0");
+  const CaseParameter y = parse_parameter_path("analysis.damper.centre.1");
+  EXPECT_EQ(parameter_value(spec, x), 0.0415);
+  EXPECT_EQ(parameter_value(spec, y), 0.0345);
+  const auto loads = [&](double gx) {
+    set_parameter_value(spec, x, gx);
+    const HbmSpec& hbm = std::get<HbmSpec>(spec.analysis);
+    const PreparedHbm p = prepare_hbm(build_model(spec.model), hbm);
+    const Eigen::VectorXd n = p.damper_static->normal_preload;  // L1, L2, R
+    double vertical = 0.0;
+    for (size_t c = 0; c < p.damper->contacts.size(); ++c)
+      vertical += n[static_cast<Eigen::Index>(c)] * p.damper->contacts[c].normal.y();
+    EXPECT_NEAR(vertical + hbm.damper->centrifugal_force, 0.0, 1e-9 * hbm.damper->centrifugal_force);
+    return n;
+  };
+  const Eigen::VectorXd right = loads(0.0425), left = loads(0.0405);
+  EXPECT_GT(left[0] / (left[0] + left[1]), right[0] / (right[0] + right[1]));
+  EXPECT_EQ(std::get<HbmSpec>(spec.analysis).damper->centre[0], 0.0405);
+  EXPECT_THROW((void)parse_parameter_path("analysis.damper.centre.2"), std::invalid_argument);
 }
 
 }  // namespace

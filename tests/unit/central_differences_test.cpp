@@ -84,19 +84,33 @@ TEST(CentralDifferences, TheStepIsTheSameInAnyUnitOfTheParameter) {
   EXPECT_NEAR(j_si, exact, 1e-3 * exact);                   // O(h^2) of a 1 % step
 }
 
-TEST(CentralDifferences, AFailedRunFailsTheEvaluation) {
-  const bb::CentralDifferences differences(
-      [](const std::vector<double>& y, double* r) {
-        r[0] = y[0];
-        return y[0] < 1.0;  // the forward run, 0.96 + 0.1, fails
+// A run that fails on one side of x (a physical limit just beyond a fit's bound) leaves that
+// column one-sided, counted; a column that fails on both sides fails the evaluation.
+TEST(CentralDifferences, ARunThatFailsOnOneSideLeavesThatColumnOneSided) {
+  const auto linear = [](const std::vector<double>& y, double* r) {
+    r[0] = 3.0 * y[0] - 2.0 * y[1];
+    return y[0] < 1.0;  // the forward run of x0 = 0.96 + 0.1 fails
+  };
+  int one_sided = 0;
+  const bb::CentralDifferences differences(linear, 2, 1, 1e-1, 2, &one_sided);
+  const std::vector<double> x = {0.96, 0.5};
+  const double* parameters[] = {x.data()};
+  double r = 0.0;
+  std::vector<double> j(2);
+  double* jacobians[] = {j.data()};
+  ASSERT_TRUE(differences.Evaluate(parameters, &r, jacobians));
+  EXPECT_NEAR(j[0], 3.0, 1e-12) << "the backward difference of a linear model is exact";
+  EXPECT_NEAR(j[1], -2.0, 1e-12);
+  EXPECT_EQ(one_sided, 1);
+  const bb::CentralDifferences both(
+      [](const std::vector<double>& y, double* out) {
+        out[0] = y[0];
+        return std::abs(y[0] - 0.96) < 1e-12;  // only the centre runs
       },
       1, 1, 1e-1, 2);
-  const std::vector<double> x = {0.96};
-  const double* parameters[] = {x.data()};
-  double r = 0.0, j = 0.0;
-  double* jacobians[] = {&j};
-  EXPECT_TRUE(differences.Evaluate(parameters, &r, nullptr));
-  EXPECT_FALSE(differences.Evaluate(parameters, &r, jacobians));
+  const double* at[] = {x.data()};
+  EXPECT_TRUE(both.Evaluate(at, &r, nullptr));
+  EXPECT_FALSE(both.Evaluate(at, &r, jacobians));
 }
 
 // Ceres evaluates a candidate's residuals, then (the step accepted) the Jacobian there: that

@@ -105,6 +105,20 @@ TEST(LeastSquaresFit, TwoParametersThatTradeOffAreNamedAsACombination) {
   EXPECT_TRUE(std::isnan(o.std_devs[1]));
 }
 
+// A parameter with an effect far too small for the data's uncertainty (b moves the points by 1e-4
+// of a sigma over its whole range) is identified in name only: its standard deviation spans more
+// than its bounds, and the fit says so; a is determined and is not named.
+TEST(LeastSquaresFit, AParameterWhoseUncertaintySpansItsBoundsIsNamed) {
+  const auto faint = [](const std::vector<double>& v, int k) { return v[0] * k + 1e-6 * std::log(v[1]); };
+  const CalibrationOutcome o = fit_parameters(spec_of({"a", "b"}), evaluator(faint), false, 5);
+  ASSERT_TRUE(o.converged) << o.termination;
+  EXPECT_NEAR(o.values[0], 2.0, 1e-4);
+  EXPECT_TRUE(warned(o, "'b' is not determined by the data within its bounds"));
+  EXPECT_FALSE(warned(o, "'a' is not determined"));
+  const auto line = [](const std::vector<double>& v, int k) { return v[0] * k + v[1] * k * k; };
+  EXPECT_FALSE(warned(fit_parameters(spec_of({"a", "b"}), evaluator(line), false, 5), "is not determined"));
+}
+
 }  // namespace
 }  // namespace bb
 

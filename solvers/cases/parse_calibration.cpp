@@ -4,15 +4,14 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <numbers>
 
 #include "cases/case_parameter.hpp"
+#include "cases/read_measured_file.hpp"
 #include "common/errors.hpp"
 #include "common/toml_reader.hpp"
 #include "common/user_text.hpp"
-#include "identify/uff58.hpp"
 
 namespace bb {
 
@@ -62,30 +61,9 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   const std::string kind = r.choice("kind", {"peaks", "frf", "hysteresis"});
   const DataKind k = kind == "peaks" ? DataKind::peaks : kind == "frf" ? DataKind::frf : DataKind::hysteresis;
   const std::filesystem::path file = r.input_file("file", case_file.parent_path());
-  // A Universal File may hold several levels, one dataset 58 each.
-  const std::optional<long> dataset = r.optional_integer("dataset", 1, INT_MAX);
-  if (dataset && !is_universal_file(file))
-    r.fail("dataset", "picks a dataset 58 of a Universal File (.uff, .unv); a CSV file holds one curve");
-  if (dataset && k != DataKind::frf) r.fail("dataset", "a Universal File's datasets are frf data (kind = \"frf\")");
-  std::vector<Uff58Function> functions;
-  try {
-    if (dataset)
-      functions = read_uff58(file);
-    else
-      d.data = read_measured_data(file, k);
-  } catch (const InputError& e) {
-    r.fail("file", e.what());  // the case, line and key that named the file, then the file's own error
-  }
-  if (dataset) {
-    if (static_cast<size_t>(*dataset) > functions.size())
-      r.fail("dataset",
-             fmt::format("dataset {} asked, but {} holds {} dataset(s) 58", *dataset, file.string(), functions.size()));
-    try {
-      d.data = uff58_frf(functions[static_cast<size_t>(*dataset - 1)], file, static_cast<int>(*dataset));
-    } catch (const InputError& e) {
-      r.fail("dataset", e.what());
-    }
-  }
+  const MeasuredFile measured = read_measured_file(r, file, k);
+  d.data = measured.data;
+  const std::optional<long> dataset = measured.dataset;
   const std::string stem = printable(file.stem().string());
   d.name = r.optional_label("name").value_or(dataset ? fmt::format("{} #{}", stem, *dataset) : stem);
   d.table = r.string("table");

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "cases/parse_frf.hpp"
+#include "cases/read_measured_file.hpp"
 #include "forced/hbm_level.hpp"
 #include "identify/measured_data.hpp"
 
@@ -64,7 +65,7 @@ SteppedSineSpec parse_one(TomlReader& r, const toml::table& t, const std::filesy
            "give either file (a measured frf file with a force column) or frequency_hz with force");
   if (r.has("file")) {
     const std::filesystem::path file = r.input_file("file", folder);
-    const MeasuredData data = read_measured_data(file, DataKind::frf);
+    const MeasuredData data = read_measured_file(r, file, DataKind::frf).data;
     if (!data.has("force"))
       r.fail("file", fmt::format("{} has no 'force [<unit>]' column: a stepped sine needs the force of each point",
                                  file.string()));

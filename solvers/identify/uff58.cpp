@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <optional>
 
 #include "common/csv_reader.hpp"
@@ -187,13 +188,15 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
                  fmt::format("the abscissa is not a frequency (specific data type {}, unit label '{}')", axes[0].type,
                              axes[0].units));
     const auto numerator = unit_of(axes[1], 9, r1 + 8);
-    if (!numerator || (numerator->dimension != Dimension::length && numerator->dimension != Dimension::velocity &&
-                       numerator->dimension != Dimension::acceleration))
-      throw fail(r1 + 8, 9,
-                 fmt::format("the ordinate is not a displacement, velocity or acceleration (specific data type {}, "
-                             "unit label '{}')",
-                             axes[1].type, axes[1].units));
     const auto denominator = unit_of(axes[2], 10, r1 + 9);
+    const bool force_record = numerator && numerator->dimension == Dimension::force && !denominator;
+    if (!force_record &&
+        (!numerator || (numerator->dimension != Dimension::length && numerator->dimension != Dimension::velocity &&
+                        numerator->dimension != Dimension::acceleration)))
+      throw fail(r1 + 8, 9,
+                 fmt::format("the ordinate is not a displacement, velocity, acceleration or force (specific data type "
+                             "{}, unit label '{}')",
+                             axes[1].type, axes[1].units));
     if (denominator && denominator->dimension != Dimension::force)
       throw fail(r1 + 9, 10,
                  fmt::format("the denominator is not a force (specific data type {}, unit label '{}')", axes[2].type,
@@ -215,6 +218,11 @@ std::vector<Uff58Function> read_uff58(const fs::path& file) {
 MeasuredData read_uff58_frf(const fs::path& file) { return uff58_frf(read_uff58(file).front(), file, 1); }
 
 MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) {
+  if (f.ordinate_unit.dimension == Dimension::force)
+    throw InputError(
+        fmt::format("{}:{}: dataset 58 #{} is a force record (the reference channel): name it "
+                    "force_dataset and the response record dataset",
+                    file.string(), f.line, index));
   const Eigen::Index n = static_cast<Eigen::Index>(f.values.size());
   MeasuredData d;
   d.file = file;
@@ -232,11 +240,13 @@ MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) 
       return fmt::format("{}:{}: dataset 58 #{}, record 12, value {}", file.string(), f.line, index, i + 1);
     };
     if (!(amplitude[i] > 0.0)) throw InputError(fmt::format("{}: the amplitude is zero", where()));
-    if (i > 0 && !(frequency[i] > frequency[i - 1]))
+    // One stepped sine, up or down, as the rig stepped it.
+    const bool down = n > 1 && f.abscissa[1] < f.abscissa[0];
+    if (i > 0 && !(down ? frequency[i] < frequency[i - 1] : frequency[i] > frequency[i - 1]))
       throw InputError(
-          fmt::format("{}: frequency {} Hz is not above the previous value's {} Hz (values must be "
-                      "sorted by increasing frequency, without duplicates)",
-                      where(), frequency[i], frequency[i - 1]));
+          fmt::format("{}: frequency {} Hz is not {} the previous value's {} Hz (values follow one "
+                      "stepped sine, up or down, without repeated frequencies)",
+                      where(), frequency[i], down ? "below" : "above", frequency[i - 1]));
   }
   d.columns["frequency"] = frequency;
   d.units["frequency"] = f.abscissa_unit;
@@ -250,32 +260,116 @@ MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) 
   return d;
 }
 
-void write_uff58_frf(const MeasuredData& data, const fs::path& file, const std::string& title) {
-  if (data.kind != DataKind::frf || !data.has("frequency") || !data.has("amplitude"))
-    throw InputError(fmt::format("{}: a Universal File holds an FRF: frequency and amplitude", file.string()));
-  const bool compliance = data.units.at("amplitude").dimension == Dimension::compliance;
-  const Eigen::VectorXd& f = data.column("frequency");
-  const Eigen::VectorXd& a = data.column("amplitude");
-  const Eigen::VectorXd phase = data.has("phase") ? data.column("phase") : Eigen::VectorXd::Zero(f.size());
-  std::ofstream out(file);
-  if (!out) throw InputError(fmt::format("{}: cannot write", file.string()));
+MeasuredData uff58_response_with_force(const Uff58Function& response, int response_index, const Uff58Function& force,
+                                       int force_index, const fs::path& file) {
+  const auto where = [&](const Uff58Function& f, int index) {
+    return fmt::format("{}:{}: dataset 58 #{}", file.string(), f.line, index);
+  };
+  if (force.ordinate_unit.dimension != Dimension::force)
+    throw InputError(fmt::format("{}: the force record's ordinate is {}, not a force", where(force, force_index),
+                                 force.ordinate_unit.symbol));
+  const Dimension d = response.ordinate_unit.dimension;
+  if (d != Dimension::length && d != Dimension::velocity && d != Dimension::acceleration)
+    throw InputError(
+        fmt::format("{}: the response record's ordinate is {}: with a force record it must be a "
+                    "displacement, velocity or acceleration, not a ratio to the force",
+                    where(response, response_index), response.ordinate_unit.symbol));
+  if (force.values.size() != response.values.size())
+    throw InputError(
+        fmt::format("{}: {} values, but the response record (dataset 58 #{}) has {}: the two records "
+                    "of one stepped sine have a value at each frequency",
+                    where(force, force_index), force.values.size(), response_index, response.values.size()));
+  // The response as an frf of its own unit, then each point's force and the phase to it.
+  MeasuredData data = uff58_frf(response, file, response_index);
+  const Eigen::Index n = data.rows();
+  Eigen::VectorXd force_amplitude(n), force_phase(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    const double f_force = force.abscissa[k] * force.abscissa_unit.to_si;
+    if (std::abs(f_force - data.column("frequency")[i]) > 1e-9 * data.column("frequency")[i])
+      throw InputError(fmt::format("{}, record 12, value {}: frequency {} Hz, but the response record has {} Hz there",
+                                   where(force, force_index), i + 1, f_force, data.column("frequency")[i]));
+    force_amplitude[i] = std::abs(force.values[k]) * force.ordinate_unit.to_si;
+    force_phase[i] = std::arg(force.values[k]);
+    if (!(force_amplitude[i] > 0.0))
+      throw InputError(fmt::format("{}, record 12, value {}: the force is zero", where(force, force_index), i + 1));
+  }
+  data.columns["force"] = force_amplitude;
+  data.units["force"] = *parse_unit("N");
+  data.columns["force_phase"] = force_phase;
+  data.units["force_phase"] = *parse_unit("rad");
+  if (!data.has("phase")) data.columns["phase"] = Eigen::VectorXd::Zero(n), data.units["phase"] = *parse_unit("rad");
+  for (Eigen::Index i = 0; i < n; ++i) {  // the response's phase to the force, as the model computes it
+    double& p = data.columns["phase"][i];
+    p = std::remainder(p - force_phase[i], 2.0 * std::numbers::pi);
+    if (p <= -std::numbers::pi) p += 2.0 * std::numbers::pi;
+  }
+  return data;
+}
+
+namespace {
+
+// One dataset 58 of complex double values at uneven abscissa: record 6's function type, and the
+// ordinate's specific data type, length exponent, force exponent, label and unit (record 9), over
+// a force (record 10) when `per_force`.
+struct Uff58Record {
+  int function_type = 4;
+  long response_node = 1, reference_node = 1;
+  int ordinate_type = 8, length_exponent = 1, force_exponent = 0;
+  const char* label = "Displacement";
+  const char* unit = "m";
+  bool per_force = false;
+};
+
+void write_record(std::ofstream& out, const std::string& title, const Uff58Record& r, const Eigen::VectorXd& f,
+                  const std::vector<std::complex<double>>& values) {
   const auto axis = [](int type, int length, int force, const char* label, const char* units) {
     return fmt::format("{:10d}{:5d}{:5d}{:5d} {:<20} {:<20}\n", type, length, force, 0, label, units);
   };
   out << "    -1\n    58\n";
   out << fmt::format("{}\n", title.substr(0, 80)) << "bladebench\nNONE\nNONE\nNONE\n";
-  out << fmt::format("{:5d}{:10d}{:5d}{:10d} {:<10}{:10d}{:4d} {:<10}{:10d}{:4d}\n", compliance ? 4 : 1, 1, 1, 0,
-                     "NONE", 1, 1, "NONE", 1, 1);
+  out << fmt::format("{:5d}{:10d}{:5d}{:10d} {:<10}{:10d}{:4d} {:<10}{:10d}{:4d}\n", r.function_type, 1, 1, 0, "NONE",
+                     r.response_node, 1, "NONE", r.reference_node, 1);
   out << fmt::format("{:10d}{:10d}{:10d}{:13.5E}{:13.5E}{:13.5E}\n", 6, f.size(), 0, 0.0, 0.0, 0.0);
   out << axis(18, 0, 0, "Frequency", "Hz");
-  out << axis(8, 1, 0, "Displacement", "m");
-  out << (compliance ? axis(13, 0, 1, "Force", "N") : axis(0, 0, 0, "NONE", "NONE"));
+  out << axis(r.ordinate_type, r.length_exponent, r.force_exponent, r.label, r.unit);
+  out << (r.per_force ? axis(13, 0, 1, "Force", "N") : axis(0, 0, 0, "NONE", "NONE"));
   out << axis(0, 0, 0, "NONE", "NONE");
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    const std::complex<double> h = std::polar(a[i], phase[i]);
-    out << fmt::format("{:13.5E}{:20.12E}{:20.12E}\n", f[i], h.real(), h.imag());
+    const std::complex<double> v = values[static_cast<size_t>(i)];
+    out << fmt::format("{:13.5E}{:20.12E}{:20.12E}\n", f[i], v.real(), v.imag());
   }
   out << "    -1\n";
+}
+
+}  // namespace
+
+void write_uff58_frf(const MeasuredData& data, const fs::path& file, const std::string& title) {
+  if (data.kind != DataKind::frf || !data.has("frequency") || !data.has("amplitude"))
+    throw InputError(fmt::format("{}: a Universal File holds an FRF: frequency and amplitude", file.string()));
+  const bool compliance = data.units.at("amplitude").dimension == Dimension::compliance;
+  const bool with_force = data.has("force");
+  if (compliance && with_force)
+    throw InputError(
+        fmt::format("{}: an FRF per newton with a force per point: write the response instead", file.string()));
+  const Eigen::VectorXd& f = data.column("frequency");
+  const Eigen::VectorXd& a = data.column("amplitude");
+  const Eigen::VectorXd phase = data.has("phase") ? data.column("phase") : Eigen::VectorXd::Zero(f.size());
+  const Eigen::VectorXd force_phase =
+      data.has("force_phase") ? data.column("force_phase") : Eigen::VectorXd::Zero(f.size());
+  std::ofstream out(file);
+  if (!out) throw InputError(fmt::format("{}: cannot write", file.string()));
+  std::vector<std::complex<double>> response, force;
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    response.push_back(std::polar(a[i], phase[i] + force_phase[i]));
+    if (with_force) force.push_back(std::polar(data.column("force")[i], force_phase[i]));
+  }
+  if (with_force) {  // a rig's two channels: the force (reference) record, then the response record
+    write_record(out, title + " (force)", {12, 2, 2, 13, 0, 1, "Force", "N", false}, f, force);
+    write_record(out, title + " (response)", {12, 1, 2, 8, 1, 0, "Displacement", "m", false}, f, response);
+  } else {
+    write_record(out, title, {compliance ? 4 : 1, 1, 1, 8, 1, 0, "Displacement", "m", compliance}, f, response);
+  }
   if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
 }
 

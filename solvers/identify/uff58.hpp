@@ -6,6 +6,8 @@
 // function type and the response / reference DOFs, 7 the data type (2 real, 4 real double, 5
 // complex, 6 complex double), the number of values and the abscissa spacing, 8-11 the axes' data
 // characteristics (specific data type, unit exponents, axis label, axis unit label), 12 the values.
+// A record whose ordinate is a force (no denominator) is a force record: a rig's reference
+// channel, paired with a response record by uff58_response_with_force.
 // Units come from the file: the unit labels of records 8 (abscissa), 9 (numerator) and 10
 // (denominator) when they name known units (identify/measured_data.hpp, parse_unit), else the
 // specific data types (18 frequency -> Hz, 8 displacement -> m, 13 excitation force -> N) in SI.
@@ -38,16 +40,26 @@ std::vector<Uff58Function> read_uff58(const std::filesystem::path& file);
 
 // Dataset 58 number `index` (1-based, in file order) of `file` as frf data: frequency [Hz],
 // amplitude [compliance or length], phase [rad] of the complex values (real data: phase 0 left
-// out). Validated as the CSV reader validates an frf file (increasing frequencies, positive
-// amplitudes); rows point at the record 12 line of each value. A rig's several levels are
-// several datasets of one file.
+// out). Validated as the CSV reader validates an frf file (frequencies strictly increasing or
+// strictly decreasing: one stepped sine up or down; positive amplitudes); rows point at the record 12 line of each
+// value. A rig's several levels are several datasets of one file.
 MeasuredData uff58_frf(const Uff58Function& function, const std::filesystem::path& file, int index);
+
+// A rig's two channels of one stepped sine: the response record (a displacement, velocity or
+// acceleration spectrum) and the force record (the reference channel, a force spectrum) at the same
+// frequencies, as frf data with a force per point: frequency, amplitude, phase (the response's to the
+// force, rad), force [N], force_phase [rad]. Throws InputError naming the file, line and dataset
+// when a record is of the wrong kind or the two differ in their frequencies.
+MeasuredData uff58_response_with_force(const Uff58Function& response, int response_index, const Uff58Function& force,
+                                       int force_index, const std::filesystem::path& file);
 
 // The file's first dataset 58 as frf data (uff58_frf).
 MeasuredData read_uff58_frf(const std::filesystem::path& file);
 
 // Writes frf data (frequency, amplitude, optional phase) as one dataset 58 of complex double
-// values, uneven abscissa, units labelled in records 8-10. Throws InputError when it cannot write.
+// values, uneven abscissa, units labelled in records 8-10; with a force per point (column force,
+// optional force_phase), as two: the force record, then the displacement record (spectra, function
+// type 12), as a rig's reference and response channels. Throws InputError when it cannot write.
 void write_uff58_frf(const MeasuredData& data, const std::filesystem::path& file, const std::string& title);
 
 // True for the extensions read as Universal Files (.uff, .unv, any case).

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "identify/measured_data.hpp"
@@ -101,6 +102,53 @@ TEST(Uff58, WrittenFrfReadsBackToThirteenDigits) {
   }
 }
 
+// A rig's stepped sine with a force that drifts, as two channels: the force record (reference)
+// and the displacement record. Paired, they give each point's force, its phase, and the
+// response's phase to the force, as a CSV file with force columns would; the force record alone is
+// not an FRF, and two records at other frequencies are refused.
+TEST(Uff58, AForceRecordAndAResponseRecordGiveAForcePerPoint) {
+  MeasuredData d;
+  d.kind = DataKind::frf;
+  const Eigen::Index n = 20;
+  Eigen::VectorXd f(n), a(n), p(n), force(n), force_phase(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    f[i] = 80.0 - 0.05 * static_cast<double>(i);  // stepped down
+    force[i] = 0.1 * (1.0 + 0.25 * std::sin(0.7 * static_cast<double>(i)));
+    force_phase[i] = 0.3 * std::cos(static_cast<double>(i));
+    a[i] = 1e-5 * force[i] / (1.0 + 0.01 * static_cast<double>(i));
+    p[i] = -0.1 * static_cast<double>(i);
+  }
+  d.columns = {{"frequency", f}, {"amplitude", a}, {"phase", p}, {"force", force}, {"force_phase", force_phase}};
+  d.units = {{"frequency", *parse_unit("Hz")},
+             {"amplitude", *parse_unit("m")},
+             {"phase", *parse_unit("rad")},
+             {"force", *parse_unit("N")},
+             {"force_phase", *parse_unit("rad")}};
+  const fs::path file = scratch("two_channels.uff");
+  write_uff58_frf(d, file, "drifting force");
+  const std::vector<Uff58Function> records = read_uff58(file);
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0].ordinate_unit.dimension, Dimension::force);
+  const MeasuredData back = uff58_response_with_force(records[1], 2, records[0], 1, file);
+  ASSERT_EQ(back.rows(), n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    EXPECT_NEAR(back.column("frequency")[i], f[i], 1e-9 * f[i]);
+    EXPECT_NEAR(back.column("amplitude")[i], a[i], 1e-12 * a[i]);
+    EXPECT_NEAR(back.column("force")[i], force[i], 1e-12 * force[i]);
+    EXPECT_NEAR(back.column("force_phase")[i], force_phase[i], 1e-11);
+    EXPECT_NEAR(back.column("phase")[i], p[i], 1e-11) << "the response's phase to the force";
+  }
+  EXPECT_THROW((void)uff58_frf(records[0], file, 1), InputError);
+  Uff58Function shifted = records[0];
+  shifted.abscissa[3] += 0.01;
+  try {
+    (void)uff58_response_with_force(records[1], 2, shifted, 1, file);
+    ADD_FAILURE() << "records at other frequencies were paired";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dataset 58 #1, record 12, value 4"), std::string::npos) << e.what();
+  }
+}
+
 // An accelerance (specific data type 12, no unit label: SI) reads as the receptance it implies:
 // each value divided by w^2 at its own frequency, the phase moved by -180 degrees.
 TEST(Uff58, AnAccelerometersFrfReadsAsTheReceptanceItImplies) {
@@ -137,7 +185,7 @@ TEST(Uff58, MalformedFilesNameTheRecord) {
       {replace("  5.00000E-04  5.00000E-04\n", "  5.00000E-04  nan\n"), "record 12: value 'nan'"},
       {replace("         8    1    0    0 Displacement         mm",
                "        15    0    0    0 Pressure             NONE"),
-       "record 9: the ordinate is not a displacement, velocity or acceleration (specific data type 15"},
+       "record 9: the ordinate is not a displacement, velocity, acceleration or force (specific data type 15"},
       {replace("Frequency            Hz", "Frequency            furlong"), "record 8: unit label 'furlong'"},
       {replace("    58\nFRF", "   58b\nFRF"), "binary dataset 58b"},
       {replace("    4         1    1", "    x         1    1"), "record 6: function type"},

@@ -1,0 +1,54 @@
+#include "cases/read_measured_file.hpp"
+
+#include <fmt/format.h>
+
+#include <climits>
+#include <vector>
+
+#include "common/errors.hpp"
+#include "identify/uff58.hpp"
+
+namespace bb {
+
+MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file, DataKind kind) {
+  MeasuredFile out;
+  // A Universal File may hold several levels, one dataset 58 each.
+  const std::optional<long> dataset = r.optional_integer("dataset", 1, INT_MAX);
+  if (dataset && !is_universal_file(file))
+    r.fail("dataset", "picks a dataset 58 of a Universal File (.uff, .unv); a CSV file holds one curve");
+  if (dataset && kind != DataKind::frf) r.fail("dataset", "a Universal File's datasets are frf data (kind = \"frf\")");
+  // A rig's force (reference) channel as its own record: each point's force.
+  const std::optional<long> force_dataset = r.optional_integer("force_dataset", 1, INT_MAX);
+  if (force_dataset && !dataset)
+    r.fail("force_dataset", "pairs a force record with the response record `dataset`: give dataset too");
+  if (force_dataset && *force_dataset == *dataset)
+    r.fail("force_dataset", "is the response record itself: name the force record");
+  std::vector<Uff58Function> functions;
+  try {
+    if (dataset)
+      functions = read_uff58(file);
+    else
+      out.data = read_measured_data(file, kind);
+  } catch (const InputError& e) {
+    r.fail("file", e.what());  // the case, line and key that named the file, then the file's own error
+  }
+  out.dataset = dataset;
+  if (!dataset) return out;
+  for (const auto& [key, index] :
+       {std::pair{"dataset", *dataset}, std::pair{"force_dataset", force_dataset.value_or(1)}})
+    if (static_cast<size_t>(index) > functions.size())
+      r.fail(key,
+             fmt::format("dataset {} asked, but {} holds {} dataset(s) 58", index, file.string(), functions.size()));
+  try {
+    const Uff58Function& response = functions[static_cast<size_t>(*dataset - 1)];
+    out.data = force_dataset ? uff58_response_with_force(response, static_cast<int>(*dataset),
+                                                         functions[static_cast<size_t>(*force_dataset - 1)],
+                                                         static_cast<int>(*force_dataset), file)
+                             : uff58_frf(response, file, static_cast<int>(*dataset));
+  } catch (const InputError& e) {
+    r.fail(force_dataset ? "force_dataset" : "dataset", e.what());
+  }
+  return out;
+}
+
+}  // namespace bb

@@ -1,0 +1,24 @@
+// A measured-data file named by a case block (a calibration data block, a stepped sine): a CSV
+// file, or a Universal File's dataset 58 picked by the block's `dataset` key, with a rig's force
+// (reference) channel paired by `force_dataset` (identify/uff58.hpp).
+#pragma once
+#include <filesystem>
+#include <optional>
+
+#include "common/toml_reader.hpp"
+#include "identify/measured_data.hpp"
+
+namespace bb {
+
+struct MeasuredFile {
+  MeasuredData data;
+  std::optional<long> dataset;  // the Universal File's response record, when picked
+};
+
+// Reads `file` as data of `kind`, with the block's keys `dataset` and `force_dataset`. Throws
+// InputError with file:line:key (then the file's own error) for a file that does not read, a
+// dataset key on a CSV file or on data other than frf, a dataset beyond the file's, a force_dataset
+// without dataset or equal to it, or records that do not pair.
+MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file, DataKind kind);
+
+}  // namespace bb

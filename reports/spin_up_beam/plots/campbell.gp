@@ -6,7 +6,7 @@ set ylabel 'frequency [Hz]'
 set grid
 set key outside right
 set xrange [0:6]
-set yrange [0:5.0630470434]
+set yrange [0:5.06304704331]
 set datafile missing 'nan'
 plot 'campbell.dat' index 0 using 1:2 with linespoints pt 7 ps 0.4 title 'mode 1', \
      'campbell.dat' index 1 using 1:2 with linespoints pt 7 ps 0.4 title 'mode 2', \

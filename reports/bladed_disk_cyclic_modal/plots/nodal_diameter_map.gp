@@ -1,0 +1,18 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'nodal_diameter_map.svg'
+set title 'Nodal-diameter map of the 24-sector structure, engine orders at the top speed'
+set xlabel 'nodal diameter'
+set ylabel 'frequency [Hz]'
+set grid
+set key outside right
+set xrange [-0.5:12.5]
+set xtics 1
+set datafile missing 'nan'
+plot 'nodal_diameter_map.dat' index 0 using 1:2 with linespoints pt 7 ps 0.6 title 'family 1', \
+     'nodal_diameter_map.dat' index 1 using 1:2 with linespoints pt 7 ps 0.6 title 'family 2', \
+     'nodal_diameter_map.dat' index 2 using 1:2 with linespoints pt 7 ps 0.6 title 'family 3', \
+     'nodal_diameter_map.dat' index 3 using 1:2 with linespoints pt 7 ps 0.6 title 'family 4', \
+     'nodal_diameter_map.dat' index 4 using 1:2 with linespoints pt 7 ps 0.6 title 'family 5', \
+     'nodal_diameter_map.dat' index 5 using 1:2 with linespoints pt 7 ps 0.6 title 'family 6', \
+     'nodal_diameter_map.dat' index 6 using 1:2 with points pt 6 ps 1.4 lc rgb 'black' title 'EO x 15000 rpm / 60', \
+     '' index 6 using 1:2:(sprintf('EO %d', $3)) with labels offset 1.5,0.6 notitle

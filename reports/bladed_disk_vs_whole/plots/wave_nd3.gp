@@ -1,0 +1,14 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'wave_nd3.svg'
+set multiplot layout 1,2 title 'Nodal diameter 3, family 1: 641.80 Hz (cosine part on the sector) (displacements x 0.0032)'
+set size ratio -1
+set key off
+set title 'front (x-y)'
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+plot 'wave_nd3.dat' index 0 with lines lc rgb '#bbbbbb', 'wave_nd3.dat' index 1 with lines lc rgb '#1f5fbf'
+set title 'side (z-y)'
+set xlabel 'z [m]'
+set xtics rotate by 90 right
+plot 'wave_nd3.dat' index 2 with lines lc rgb '#bbbbbb', 'wave_nd3.dat' index 3 with lines lc rgb '#1f5fbf'
+unset multiplot

@@ -1,0 +1,12 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'frf_levels_tip_lead.y.svg'
+set title 'Response tip_lead.y at each force level (first harmonic)'
+set logscale y
+set format y '10^{%L}'
+set xlabel 'frequency [Hz]'
+set ylabel 'amplitude [m]'
+set grid
+set key outside right
+plot 'frf_levels_tip_lead.y.dat' index 0 using 1:2 with lines lc rgb '#1f5fbf' title 'Fe = 0.1 N', \
+     'frf_levels_tip_lead.y.dat' index 1 using 1:2 with lines lc rgb '#bf1f1f' title 'Fe = 1 N', \
+     'frf_levels_tip_lead.y.dat' index 2 using 1:2 with lines lc rgb '#2f9f2f' title 'Fe = 3 N'

@@ -1,0 +1,11 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'frf_levels_A.x.svg'
+set title 'Response A.x at each force level (first harmonic)'
+set logscale y
+set format y '10^{%L}'
+set xlabel 'frequency [Hz]'
+set ylabel 'amplitude [m]'
+set grid
+set key outside right
+plot 'frf_levels_A.x.dat' index 0 using 1:2 with lines lc rgb '#1f5fbf' title 'Fe = 0.1 N', \
+     'frf_levels_A.x.dat' index 1 using 1:2 with lines lc rgb '#bf1f1f' title 'Fe = 3 N'

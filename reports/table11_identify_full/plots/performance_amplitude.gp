@@ -1,0 +1,15 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'performance_amplitude.svg'
+set title 'Damper performance: resonance amplitude per newton against CF / Fe'
+set logscale x
+set xlabel 'CF / Fe'
+set ylabel 'amplitude / Fe [m/N]'
+set grid
+set key outside right
+set logscale y
+set format y '10^{%L}'
+set datafile missing 'nan'
+plot 'performance_amplitude.dat' using 1:2 with linespoints pt 7 lc rgb '#1f5fbf' title 'IP (bladebench)', \
+     'performance_amplitude.dat' using 1:3 with linespoints pt 4 dt 2 lc rgb '#1f5fbf' title 'IP (reference)', \
+     'performance_amplitude.dat' using 1:4 with linespoints pt 7 lc rgb '#bf1f1f' title 'OOP (bladebench)', \
+     'performance_amplitude.dat' using 1:5 with linespoints pt 4 dt 2 lc rgb '#bf1f1f' title 'OOP (reference)'

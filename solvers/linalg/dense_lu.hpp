@@ -1,8 +1,8 @@
 // The LU of a square dense matrix with partial pivoting, and its reciprocal condition number in
 // the 1-norm: the Newton steps of the harmonic balance (135 unknowns on Table XI at H = 7, 243 at
-// H = 13). LAPACK's blocked factorization (dgetrf, dgecon, dgetrs; OpenBLAS here, dispatched to the
-// running CPU) takes 0.45-0.8x the time of Eigen's compiled for the baseline x86-64, and its
-// condition estimate a fifth of Eigen's (bench/README.md). Eigen serves where the BLAS must not be
+// H = 13). LAPACK's blocked factorization (dgetrf, dgetrs; OpenBLAS here, dispatched to the
+// running CPU) takes 0.45-0.8x the time of Eigen's compiled for the baseline x86-64; the condition
+// estimate is dgecon's algorithm (dlacn2) with the BLAS's triangular solves (bench/README.md). Eigen serves where the BLAS must not be
 // called from two threads at once (linalg/blas_threads.hpp).
 #pragma once
 #include <Eigen/Dense>

@@ -34,11 +34,13 @@ MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file
   }
   out.dataset = dataset;
   if (!dataset) return out;
-  for (const auto& [key, index] :
-       {std::pair{"dataset", *dataset}, std::pair{"force_dataset", force_dataset.value_or(1)}})
+  const auto within_file = [&](const char* key, long index) {
     if (static_cast<size_t>(index) > functions.size())
       r.fail(key,
              fmt::format("dataset {} asked, but {} holds {} dataset(s) 58", index, file.string(), functions.size()));
+  };
+  within_file("dataset", *dataset);
+  if (force_dataset) within_file("force_dataset", *force_dataset);
   try {
     const Uff58Function& response = functions[static_cast<size_t>(*dataset - 1)];
     out.data = force_dataset ? uff58_response_with_force(response, static_cast<int>(*dataset),

@@ -18,6 +18,12 @@
 namespace bb {
 namespace {
 
+// An angle in (-pi, pi], as arg() gives it.
+double wrapped_phase(double a) {
+  a = std::remainder(a, 2.0 * std::numbers::pi);
+  return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
+}
+
 namespace fs = std::filesystem;
 using enum Dimension;
 
@@ -358,13 +364,14 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
     data.units[c.name] = c.unit;
   }
   if (kind != DataKind::hysteresis) amplitude_to_displacement(data);
-  if (data.has("force_phase"))  // the response's phase to the force, as the model computes it
-    for (Eigen::Index r = 0; r < data.rows(); ++r) {
-      double& phase = data.columns["phase"][r];
-      phase = std::remainder(phase - data.columns["force_phase"][r], 2.0 * std::numbers::pi);
-      if (phase <= -std::numbers::pi) phase += 2.0 * std::numbers::pi;
-    }
+  if (data.has("force_phase")) phase_to_force(data);
   return data;
+}
+
+void phase_to_force(MeasuredData& data) {
+  const Eigen::VectorXd& force_phase = data.columns.at("force_phase");
+  Eigen::VectorXd& phase = data.columns.at("phase");
+  for (Eigen::Index r = 0; r < phase.size(); ++r) phase[r] = wrapped_phase(phase[r] - force_phase[r]);
 }
 
 void amplitude_to_displacement(MeasuredData& data) {
@@ -378,10 +385,7 @@ void amplitude_to_displacement(MeasuredData& data) {
     data.units[name].dimension = displacement;
   }
   if (data.has("phase"))
-    for (double& phase : data.columns["phase"]) {
-      phase = std::remainder(phase - k * 0.5 * std::numbers::pi, 2.0 * std::numbers::pi);
-      if (phase <= -std::numbers::pi) phase += 2.0 * std::numbers::pi;  // (-pi, pi], as arg() gives
-    }
+    for (double& phase : data.columns["phase"]) phase = wrapped_phase(phase - k * 0.5 * std::numbers::pi);
 }
 
 }  // namespace bb

@@ -109,4 +109,9 @@ MeasuredData read_measured_data(const std::filesystem::path& file, DataKind kind
 // `derivative`. Nothing for a displacement. The CSV and Universal File readers call it.
 void amplitude_to_displacement(MeasuredData& data);
 
+// The column phase made the response's phase to the force: phase - force_phase, wrapped to
+// (-pi, pi], as the model computes it. The CSV reader (a force_phase column) and the Universal
+// File reader (a force record) call it.
+void phase_to_force(MeasuredData& data);
+
 }  // namespace bb

@@ -7,7 +7,6 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <numbers>
 #include <optional>
 
 #include "common/csv_reader.hpp"
@@ -229,6 +228,7 @@ MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) 
   d.kind = DataKind::frf;
   Eigen::VectorXd frequency(n), amplitude(n), phase(n);
   bool complex = false;
+  const bool down = n > 1 && f.abscissa[1] < f.abscissa[0];  // one stepped sine, up or down
   for (Eigen::Index i = 0; i < n; ++i) {
     const size_t k = static_cast<size_t>(i);
     frequency[i] = f.abscissa[k] * f.abscissa_unit.to_si;
@@ -240,8 +240,6 @@ MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) 
       return fmt::format("{}:{}: dataset 58 #{}, record 12, value {}", file.string(), f.line, index, i + 1);
     };
     if (!(amplitude[i] > 0.0)) throw InputError(fmt::format("{}: the amplitude is zero", where()));
-    // One stepped sine, up or down, as the rig stepped it.
-    const bool down = n > 1 && f.abscissa[1] < f.abscissa[0];
     if (i > 0 && !(down ? frequency[i] < frequency[i - 1] : frequency[i] > frequency[i - 1]))
       throw InputError(
           fmt::format("{}: frequency {} Hz is not {} the previous value's {} Hz (values follow one "
@@ -299,11 +297,7 @@ MeasuredData uff58_response_with_force(const Uff58Function& response, int respon
   data.columns["force_phase"] = force_phase;
   data.units["force_phase"] = *parse_unit("rad");
   if (!data.has("phase")) data.columns["phase"] = Eigen::VectorXd::Zero(n), data.units["phase"] = *parse_unit("rad");
-  for (Eigen::Index i = 0; i < n; ++i) {  // the response's phase to the force, as the model computes it
-    double& p = data.columns["phase"][i];
-    p = std::remainder(p - force_phase[i], 2.0 * std::numbers::pi);
-    if (p <= -std::numbers::pi) p += 2.0 * std::numbers::pi;
-  }
+  phase_to_force(data);
   return data;
 }
 

@@ -21,7 +21,7 @@ using Clock = std::chrono::steady_clock;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 Eigen::VectorXd modal_zetas(const FrfDamping& d, const Eigen::VectorXd& omega) {
-  if (d.kind == FrfDamping::Kind::modal) return Eigen::VectorXd::Constant(omega.size(), d.zeta);
+  if (d.kind == FrfDamping::Kind::modal) return d.modal_ratios(omega.size());
   const RayleighCoefficients c = rayleigh_of(d);
   return (c.alpha / (2 * omega.array().max(1e-300)) + 0.5 * c.beta * omega.array()).matrix();
 }

@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "cases/case_spec.hpp"
@@ -13,9 +16,22 @@ namespace {
 
 constexpr const char* kSupported =
     "material.{E,nu,rho}, section.thickness, mesh.dimensions.<name>, analysis.contact[.<i>].{kn,kt,mu,n0}, "
-    "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force,centre.0,centre.1}, analysis.modal_damping, "
+    "analysis.contact[.<i>].<the law's own, e.g. chi, beta>, "
+    "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force,centre.0,centre.1}, analysis.modal_damping[.<mode>], "
     "analysis.forces.<i>.amplitude, "
-    "analysis.model.{stiffness,mass}.<i>.<j>";
+    "analysis.model.{stiffness,mass}.<i>.<j>, analysis.model.{frequency_hz,modal_mass}.<i>";
+
+// A 0-based index as written in a path: digits only, at most 6.
+std::optional<size_t> index_of(const std::string& t) {
+  if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  return std::stoul(t);
+}
+
+// A law's own key: a lower-case identifier (which keys exist, only the contact's law knows).
+bool law_key(const std::string& t) {
+  return !t.empty() && t.find_first_not_of("abcdefghijklmnopqrstuvwxyz_0123456789") == std::string::npos &&
+         !std::isdigit(static_cast<unsigned char>(t.front()));
+}
 
 std::optional<contact::LawParameter> law_of(const std::string& key) {
   if (key == "kn") return contact::law_kn;
@@ -41,6 +57,18 @@ double& law_field(contact::JenkinsParameters& law, contact::LawParameter p) {
 
 [[noreturn]] void absent(const CaseParameter& p, const std::string& why) {
   throw std::invalid_argument(fmt::format("'{}': {}", p.path, why));
+}
+
+HbmSpec* system_of(CaseSpec& spec) {
+  if (auto* h = std::get_if<HbmSpec>(&spec.analysis)) return h;
+  if (auto* t = std::get_if<TimeSpec>(&spec.analysis)) return &t->system;
+  return nullptr;
+}
+
+ReducedModel& written_matrices(CaseSpec& spec, const CaseParameter& p) {
+  HbmSpec* hbm = system_of(spec);
+  if (!hbm || !hbm->model.matrices) absent(p, "the analysis has no matrices written in the case ([analysis.model])");
+  return *hbm->model.matrices;
 }
 
 // The number a parameter names inside `spec`, for reading and writing alike.
@@ -77,12 +105,27 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
       if (v.centre_axis) return hbm->damper->centre[*v.centre_axis];
       return (*hbm->damper).*v.member;
     }
-    double& operator()(const ModalDampingValue&) {
+    double& operator()(const ModalDampingValue& v) {
       FrfDamping* damping = nullptr;
       if (auto* frf = std::get_if<FrfSpec>(&spec.analysis)) damping = &frf->damping;
       if (HbmSpec* hbm = system(); hbm && !hbm->damping_matrix) damping = &hbm->damping;
       if (!damping || damping->kind != FrfDamping::Kind::modal) absent(p, "the analysis has no modal_damping");
-      return damping->zeta;
+      if (!v.mode) {
+        if (!damping->mode_zetas.empty())
+          absent(p, "modal_damping is given per mode: name the mode, e.g. analysis.modal_damping.0");
+        return damping->zeta;
+      }
+      if (damping->mode_zetas.empty())
+        absent(p, "modal_damping is one ratio for every mode: write it as an array, one ratio per mode, to vary one");
+      if (*v.mode >= damping->mode_zetas.size())
+        absent(p, fmt::format("no mode {} (modal_damping lists {})", *v.mode, damping->mode_zetas.size()));
+      return damping->mode_zetas[*v.mode];
+    }
+    double& operator()(const LawOwnValue&) {
+      throw std::logic_error("a law's own parameter is not stored as a number");
+    }
+    double& operator()(const ModalCoordinate&) {
+      throw std::logic_error("a modal coordinate's frequency is not stored as a number");
     }
     double& operator()(const ForceAmplitude& v) {
       std::vector<FrfForce>* forces = nullptr;
@@ -94,21 +137,50 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
       return (*forces)[v.force].amplitude;
     }
     double& operator()(const LumpedMatrixEntry& v) {
-      RomSpec* rom = nullptr;
-      if (HbmSpec* hbm = system()) rom = &hbm->model;
-      if (!rom || !rom->matrices) absent(p, "the analysis has no matrices written in the case ([analysis.model])");
-      Eigen::MatrixXd& m = v.mass ? rom->matrices->mass : rom->matrices->stiffness;
+      ReducedModel& model = written_matrices(spec, p);
+      Eigen::MatrixXd& m = v.mass ? model.mass : model.stiffness;
       if (static_cast<Eigen::Index>(std::max(v.row, v.col)) >= m.rows())
         absent(p, fmt::format("no entry ({}, {}): the model has {} DOFs", v.row, v.col, m.rows()));
       return m(static_cast<Eigen::Index>(v.row), static_cast<Eigen::Index>(v.col));
     }
-    HbmSpec* system() {
-      if (auto* h = std::get_if<HbmSpec>(&spec.analysis)) return h;
-      if (auto* t = std::get_if<TimeSpec>(&spec.analysis)) return &t->system;
-      return nullptr;
-    }
+    HbmSpec* system() { return system_of(spec); }
   };
   return std::visit(Locator{spec, p}, p.target);
+}
+
+// The slot of the law of the contact a law's own parameter names.
+std::shared_ptr<const contact::SliderDistribution>& law_slot(CaseSpec& spec, const CaseParameter& p,
+                                                             const LawOwnValue& v) {
+  std::shared_ptr<const contact::SliderDistribution>* slot = nullptr;
+  if (auto* loop = std::get_if<ContactLoopSpec>(&spec.analysis)) {
+    if (v.contact) absent(p, "a contact_loop analysis has one [analysis.contact]: leave out the index");
+    slot = &loop->distribution;
+  } else {
+    HbmSpec* hbm = system_of(spec);
+    if (!hbm) absent(p, "only hbm, time and contact_loop analyses have contacts");
+    if (!v.contact) absent(p, fmt::format("name the contact by its index, e.g. analysis.contact.0.{}", v.key));
+    if (*v.contact >= hbm->contacts.size())
+      absent(p,
+             fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", *v.contact, hbm->contacts.size()));
+    slot = &hbm->contacts[*v.contact].distribution;
+  }
+  if (!*slot) absent(p, fmt::format("the contact's law is jenkins, which has no parameter '{}' of its own", v.key));
+  return *slot;
+}
+
+// The diagonal entries (K_ii, M_ii) of a modal coordinate, checked to be one.
+std::pair<double*, double*> modal_entries(CaseSpec& spec, const CaseParameter& p, const ModalCoordinate& v) {
+  ReducedModel& m = written_matrices(spec, p);
+  const auto i = static_cast<Eigen::Index>(v.mode);
+  if (i >= m.stiffness.rows()) absent(p, fmt::format("no DOF {}: the model has {} DOFs", v.mode, m.stiffness.rows()));
+  const auto coupled = [&](const Eigen::MatrixXd& a) {
+    return a.row(i).cwiseAbs().sum() + a.col(i).cwiseAbs().sum() != 2.0 * std::abs(a(i, i));
+  };
+  if (coupled(m.stiffness) || coupled(m.mass))
+    absent(p, fmt::format("DOF {} is coupled to others in K or M: a frequency and a modal mass belong to a modal "
+                          "model (frequency_hz and modal_mass in [analysis.model])",
+                          v.mode));
+  return {&m.stiffness(i, i), &m.mass(i, i)};
 }
 
 }  // namespace
@@ -132,7 +204,15 @@ CaseParameter parse_parameter_path(const std::string& path) {
     p.target = MaterialValue{&fe::PlaneSection::thickness};
   else if (path == "analysis.modal_damping")
     p.target = ModalDampingValue{};
-  else if (const std::string name = after("mesh.dimensions."); !name.empty()) {
+  else if (const std::string damped = after("analysis.modal_damping."); !damped.empty()) {
+    if (!index_of(damped)) return unknown();
+    p.target = ModalDampingValue{index_of(damped)};
+  } else if (path.starts_with("analysis.model.frequency_hz.") || path.starts_with("analysis.model.modal_mass.")) {
+    const bool mass = path.starts_with("analysis.model.modal_mass.");
+    const auto mode = index_of(after(mass ? "analysis.model.modal_mass." : "analysis.model.frequency_hz."));
+    if (!mode) return unknown();
+    p.target = ModalCoordinate{*mode, mass};
+  } else if (const std::string name = after("mesh.dimensions."); !name.empty()) {
     for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
       if (name == f.name) p.target = ArticleDimension{f.member};
     if (!std::holds_alternative<ArticleDimension>(p.target)) return unknown();
@@ -151,33 +231,28 @@ CaseParameter parse_parameter_path(const std::string& path) {
       return unknown();
   } else if (const std::string force = after("analysis.forces."); !force.empty()) {
     const size_t dot = force.find('.');
-    const std::string index = force.substr(0, dot);
-    if (dot == std::string::npos || force.substr(dot + 1) != "amplitude" || index.empty() || index.size() > 6 ||
-        index.find_first_not_of("0123456789") != std::string::npos)
-      return unknown();
-    p.target = ForceAmplitude{std::stoul(index)};
+    const auto index = index_of(force.substr(0, dot));
+    if (dot == std::string::npos || force.substr(dot + 1) != "amplitude" || !index) return unknown();
+    p.target = ForceAmplitude{*index};
   } else if (path.starts_with("analysis.model.stiffness.") || path.starts_with("analysis.model.mass.")) {
     const bool mass = path.starts_with("analysis.model.mass.");
     const std::string rest = after(mass ? "analysis.model.mass." : "analysis.model.stiffness.");
     const size_t dot = rest.find('.');
-    const auto index = [](const std::string& t) {
-      return !t.empty() && t.size() <= 6 && t.find_first_not_of("0123456789") == std::string::npos;
-    };
-    if (dot == std::string::npos || !index(rest.substr(0, dot)) || !index(rest.substr(dot + 1))) return unknown();
-    p.target = LumpedMatrixEntry{mass, std::stoul(rest.substr(0, dot)), std::stoul(rest.substr(dot + 1))};
+    const auto row = index_of(rest.substr(0, dot)),
+               col = index_of(dot == std::string::npos ? "" : rest.substr(dot + 1));
+    if (!row || !col) return unknown();
+    p.target = LumpedMatrixEntry{mass, *row, *col};
   } else if (const std::string rest = after("analysis.contact."); !rest.empty()) {
     const size_t dot = rest.find('.');
-    if (dot == std::string::npos) {
-      const auto law = law_of(rest);
-      if (!law) return unknown();
-      p.target = ContactLawValue{std::nullopt, *law};
-    } else {
-      const std::string index = rest.substr(0, dot);
-      const auto law = law_of(rest.substr(dot + 1));
-      if (index.empty() || index.size() > 6 || index.find_first_not_of("0123456789") != std::string::npos || !law)
-        return unknown();
-      p.target = ContactLawValue{std::stoul(index), *law};
-    }
+    const std::optional<size_t> contact = dot == std::string::npos ? std::nullopt : index_of(rest.substr(0, dot));
+    if (dot != std::string::npos && !contact) return unknown();
+    const std::string field = dot == std::string::npos ? rest : rest.substr(dot + 1);
+    if (const auto law = law_of(field))
+      p.target = ContactLawValue{contact, *law};
+    else if (law_key(field))
+      p.target = LawOwnValue{contact, field};
+    else
+      return unknown();
   } else {
     return unknown();
   }
@@ -185,10 +260,45 @@ CaseParameter parse_parameter_path(const std::string& path) {
 }
 
 double parameter_value(const CaseSpec& spec, const CaseParameter& parameter) {
-  return locate(const_cast<CaseSpec&>(spec), parameter);  // locate only reads here
+  CaseSpec& s = const_cast<CaseSpec&>(spec);  // only read here
+  if (const auto* v = std::get_if<LawOwnValue>(&parameter.target)) {
+    const auto& law = law_slot(s, parameter, *v);
+    try {
+      return law->parameter(v->key);
+    } catch (const std::invalid_argument& e) {
+      absent(parameter, e.what());
+    }
+  }
+  if (const auto* v = std::get_if<ModalCoordinate>(&parameter.target)) {
+    const auto [k, m] = modal_entries(s, parameter, *v);
+    return v->mass ? *m : std::sqrt(*k / *m) / (2.0 * std::numbers::pi);
+  }
+  return locate(s, parameter);
 }
 
 void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double value) {
+  if (const auto* v = std::get_if<LawOwnValue>(&parameter.target)) {
+    auto& law = law_slot(spec, parameter, *v);
+    parameter_value(spec, parameter);  // names a key the law lacks
+    try {
+      law = law->with_parameter(v->key, value);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("'{}' = {}: {}", parameter.path, value, e.what()));
+    }
+    return;
+  }
+  if (const auto* v = std::get_if<ModalCoordinate>(&parameter.target)) {
+    if (!(value > 0.0) || !std::isfinite(value))
+      throw InputError(fmt::format("'{}' = {}: must be positive and finite", parameter.path, value));
+    const auto [k, m] = modal_entries(spec, parameter, *v);
+    if (v->mass) {
+      *k *= value / *m;
+      *m = value;
+    } else {
+      *k = *m * std::pow(2.0 * std::numbers::pi * value, 2);
+    }
+    return;
+  }
   locate(spec, parameter) = value;
   if (const auto* e = std::get_if<LumpedMatrixEntry>(&parameter.target); e && e->row != e->col) {
     CaseParameter mirror = parameter;
@@ -219,8 +329,15 @@ void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double 
 std::optional<HbmParameter> hbm_parameter(const CaseParameter& parameter) {
   HbmParameter out;
   out.label = parameter.path;
-  if (std::holds_alternative<ModalDampingValue>(parameter.target)) {
-    out.kind = HbmParameter::Kind::modal_damping;
+  if (const auto* d = std::get_if<ModalDampingValue>(&parameter.target)) {
+    out.kind = d->mode ? HbmParameter::Kind::mode_damping : HbmParameter::Kind::modal_damping;
+    out.row = d->mode.value_or(0);
+    return out;
+  }
+  if (const auto* m = std::get_if<ModalCoordinate>(&parameter.target)) {
+    out.kind = HbmParameter::Kind::modal_coordinate;
+    out.mass = m->mass;
+    out.row = m->mode;
     return out;
   }
   if (const auto* e = std::get_if<LumpedMatrixEntry>(&parameter.target)) {

@@ -32,8 +32,16 @@ struct DamperValue {
   double DamperSpec::*member = nullptr;
   std::optional<size_t> centre_axis;
 };
-struct ModalDampingValue {};  // analysis.modal_damping (frf, hbm, time)
-struct ForceAmplitude {       // analysis.forces.<i>.amplitude (frf, hbm, time)
+struct LawOwnValue {  // analysis.contact[.<i>].<key> of a law's own parameters (Iwan's chi, beta)
+  std::optional<size_t> contact;
+  std::string key;
+};
+// analysis.modal_damping (frf, hbm, time), or analysis.modal_damping.<i>: the ratio of mode i
+// (0-based, ascending frequency) when the case gives one per mode
+struct ModalDampingValue {
+  std::optional<size_t> mode;
+};
+struct ForceAmplitude {  // analysis.forces.<i>.amplitude (frf, hbm, time)
   size_t force = 0;
 };
 
@@ -42,10 +50,18 @@ struct LumpedMatrixEntry {  // analysis.model.{stiffness,mass}.<i>.<j> of matric
   size_t row = 0, col = 0;  // set symmetrically: (row, col) and (col, row)
 };
 
+// analysis.model.frequency_hz.<i> or analysis.model.modal_mass.<i> of a modal model (a DOF whose row
+// of K and M is diagonal): the frequency sets K_ii = M_ii (2 pi f)^2; the modal mass sets M_ii and
+// scales K_ii with it, so that the frequency stays. Either order of the two gives the same model.
+struct ModalCoordinate {
+  size_t mode = 0;
+  bool mass = false;
+};
+
 struct CaseParameter {
   std::string path;  // as written in the case file
   std::variant<MaterialValue, ArticleDimension, ContactLawValue, DamperValue, ModalDampingValue, ForceAmplitude,
-               LumpedMatrixEntry>
+               LumpedMatrixEntry, LawOwnValue, ModalCoordinate>
       target;
 };
 

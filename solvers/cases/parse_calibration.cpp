@@ -130,9 +130,18 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     TomlReader p(*n.as_table(), fmt::format("calibration.parameters[{}]", index++), file);
     CalibrationParameter param;
     param.path = p.string("path");
-    param.lower = p.positive("lower");
-    param.upper = p.positive("upper");
+    param.lower = p.number("lower");
+    param.upper = p.number("upper");
+    if (!std::isfinite(param.lower)) p.fail("lower", "must be finite");
+    if (!std::isfinite(param.upper)) p.fail("upper", "must be finite");
     if (!(param.lower < param.upper)) p.fail("upper", "must exceed lower");
+    // Log by default where it can be: relative steps whatever the unit.
+    const std::string scale = p.choice("scale", {"log", "linear"}, param.lower > 0.0 ? "log" : "linear");
+    param.scale = scale == "log" ? CalibrationParameter::Scale::log : CalibrationParameter::Scale::linear;
+    if (param.scale == CalibrationParameter::Scale::log && !(param.lower > 0.0))
+      p.fail("lower", fmt::format("a parameter fitted on a log scale needs lower > 0, found {}; give scale = "
+                                  "\"linear\" for one that may be zero or negative",
+                                  param.lower));
     try {
       param.start = parameter_value(spec, parse_parameter_path(param.path));
     } catch (const std::invalid_argument& e) {
@@ -141,6 +150,18 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     if (param.start < param.lower || param.start > param.upper)
       p.fail("path", fmt::format("the case value {} of '{}' lies outside [{}, {}]", param.start, param.path,
                                  param.lower, param.upper));
+    // A law's own parameter has a domain of its own (an Iwan exponent in (-1, 0]): both bounds
+    // must lie in it, so that no step of the fit leaves it by the bounds' fault.
+    if (const CaseParameter target = parse_parameter_path(param.path);
+        std::holds_alternative<LawOwnValue>(target.target))
+      for (const auto& [key, bound] : {std::pair{"lower", param.lower}, std::pair{"upper", param.upper}}) {
+        CaseSpec probe = spec;
+        try {
+          set_parameter_value(probe, target, bound);
+        } catch (const std::exception& e) {
+          p.fail(key, fmt::format("the law cannot take this bound: {}", e.what()));
+        }
+      }
     if (const toml::table* prior = p.optional_table("prior")) {
       TomlReader q(*prior, p.path() + ".prior", file);
       const double value = q.number("value"), sigma = q.number("sigma");
@@ -201,7 +222,8 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   if (r.has("loss_scale")) c.loss_scale = r.positive("loss_scale");
   if (r.has("derivative_step")) {
     c.derivative_step = r.positive("derivative_step");
-    if (c.derivative_step > 0.1) r.fail("derivative_step", "must be at most 0.1 (relative, in log space)");
+    if (c.derivative_step > 0.1)
+      r.fail("derivative_step", "must be at most 0.1 (relative in log space; of the range on a linear scale)");
   }
   c.derivatives = r.choice("derivatives", {"auto", "analytic", "numeric"}, "auto");
   if (r.has("function_tolerance")) {

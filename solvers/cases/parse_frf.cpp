@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 
 #include "cases/parse_modal.hpp"
@@ -75,6 +76,30 @@ ReducedModel parse_matrices(TomlReader& r) {
     m.dofs.push_back(*dof);
   }
   if (m.dofs.empty()) r.fail("dofs", "needs at least one DOF");
+  if (r.has("frequency_hz")) {
+    // A modal model (a modal test's): one DOF per mode, K = diag(m_i (2 pi f_i)^2), M = diag(m_i).
+    if (r.has("stiffness") || r.has("mass"))
+      r.fail("frequency_hz", "a modal model gives frequency_hz and modal_mass instead of stiffness and mass");
+    const std::vector<double> f = r.number_array("frequency_hz"), mass = r.number_array("modal_mass");
+    if (f.size() != m.dofs.size())
+      r.fail("frequency_hz", fmt::format("expected one frequency per DOF ({}), found {}", m.dofs.size(), f.size()));
+    if (mass.size() != m.dofs.size())
+      r.fail("modal_mass", fmt::format("expected one modal mass per DOF ({}), found {}", m.dofs.size(), mass.size()));
+    const auto n = static_cast<Eigen::Index>(f.size());
+    m.stiffness = Eigen::MatrixXd::Zero(n, n);
+    m.mass = Eigen::MatrixXd::Zero(n, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double fi = f[static_cast<size_t>(i)], mi = mass[static_cast<size_t>(i)];
+      if (!(fi > 0.0) || !std::isfinite(fi))
+        r.fail("frequency_hz", fmt::format("mode {}: a frequency must be positive and finite, found {}", i + 1, fi));
+      if (!(mi > 0.0) || !std::isfinite(mi))
+        r.fail("modal_mass", fmt::format("mode {}: a modal mass must be positive and finite, found {}", i + 1, mi));
+      m.mass(i, i) = mi;
+      m.stiffness(i, i) = mi * std::pow(2.0 * std::numbers::pi * fi, 2);
+    }
+    validate_reduced_model(m, r.location("frequency_hz").where() + ": '" + r.path() + "'");
+    return m;
+  }
   m.stiffness = parse_square_matrix(r, "stiffness", m.dofs.size());
   m.mass = parse_square_matrix(r, "mass", m.dofs.size());
   validate_reduced_model(m, r.location("stiffness").where() + ": '" + r.path() + "'");
@@ -88,13 +113,14 @@ RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
   // The name becomes file names (reduced_models/<name>.toml) and table names (peaks_<name>).
   rom.name = r.name("name");
   if (rom.name == "full") r.fail("name", "\"full\" names the full mesh's curves; choose another name");
-  if (static_cast<int>(r.has("file")) + static_cast<int>(r.has("masters")) + static_cast<int>(r.has("stiffness")) != 1)
+  const bool matrices = r.has("stiffness") || r.has("frequency_hz");
+  if (static_cast<int>(r.has("file")) + static_cast<int>(r.has("masters")) + static_cast<int>(matrices) != 1)
     r.fail("masters",
-           "give one of 'masters' (Craig-Bampton), 'file' (a reduced model on disk) or 'stiffness' + 'mass' + 'dofs' "
-           "(matrices)");
+           "give one of 'masters' (Craig-Bampton), 'file' (a reduced model on disk), 'stiffness' + 'mass' + 'dofs' "
+           "(matrices) or 'frequency_hz' + 'modal_mass' + 'dofs' (a modal model)");
   if (r.has("file")) {
     rom.file = r.input_file("file", folder);
-  } else if (r.has("stiffness")) {
+  } else if (matrices) {
     rom.matrices = parse_matrices(r);
   } else {
     rom.masters = r.string_array("masters");
@@ -123,9 +149,19 @@ FrfDamping parse_damping(TomlReader& r) {
   FrfDamping damping;
   if (r.has("modal_damping") == r.has("rayleigh"))
     r.fail("modal_damping",
-           "give either 'modal_damping' (one ratio for every mode) or 'rayleigh' = { frequency_hz = [f1, f2], zeta = "
+           "give either 'modal_damping' (one ratio for every mode, or one per mode, lowest first) or 'rayleigh' = { "
+           "frequency_hz = [f1, f2], zeta = "
            "[z1, z2] }");
-  if (r.has("modal_damping")) {
+  if (r.has_array("modal_damping")) {
+    // One ratio per mode, lowest first (a modal test's); the modes above the last take its ratio.
+    damping.mode_zetas = r.number_array("modal_damping");
+    if (damping.mode_zetas.empty()) r.fail("modal_damping", "needs at least one ratio (or one number for every mode)");
+    for (size_t i = 0; i < damping.mode_zetas.size(); ++i)
+      if (!(damping.mode_zetas[i] >= 0.0 && damping.mode_zetas[i] < 1.0))
+        r.fail("modal_damping",
+               fmt::format("the ratio of mode {} must lie in [0, 1), found {}", i + 1, damping.mode_zetas[i]));
+    damping.zeta = damping.mode_zetas.front();
+  } else if (r.has("modal_damping")) {
     damping.zeta = r.non_negative("modal_damping", 0.0);
     if (damping.zeta >= 1.0) r.fail("modal_damping", "must be below 1 (critical damping)");
   } else {

@@ -360,8 +360,10 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   {
     TomlReader m(model, r.path() + ".model", r.file());
     if (m.has("damping")) {
-      if (!m.has("stiffness"))
-        m.fail("damping", "a damping matrix goes with matrices written in the case ('dofs', 'stiffness', 'mass')");
+      if (!m.has("stiffness") && !m.has("frequency_hz"))
+        m.fail("damping",
+               "a damping matrix goes with matrices written in the case ('dofs', 'stiffness', 'mass') or a modal "
+               "model ('dofs', 'frequency_hz', 'modal_mass')");
       if (r.has("modal_damping") || r.has("rayleigh"))
         r.fail("modal_damping", "the model gives its damping matrix: leave out modal_damping and rayleigh");
       s.damping_matrix = parse_square_matrix(m, "damping", m.string_array("dofs").size());

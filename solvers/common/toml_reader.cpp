@@ -62,6 +62,11 @@ bool TomlReader::has(const std::string& key) const {
   return table_.contains(key);
 }
 
+bool TomlReader::has_array(const std::string& key) const {
+  const toml::node* n = table_.get(key);
+  return n && n->is_array();
+}
+
 const toml::node& TomlReader::required(const std::string& key) {
   used_.insert(key);
   const toml::node* n = table_.get(key);

@@ -25,6 +25,7 @@ class TomlReader {
   TomlReader(const toml::table& table, std::string path, std::filesystem::path file);
 
   bool has(const std::string& key) const;
+  bool has_array(const std::string& key) const;  // the key is there and holds an array
   double number(const std::string& key);
   std::optional<double> optional_number(const std::string& key);
   double non_negative(const std::string& key, double fallback);

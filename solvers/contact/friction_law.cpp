@@ -1,9 +1,29 @@
 #include "contact/friction_law.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <stdexcept>
 
 namespace bb::contact {
+
+namespace {
+
+[[noreturn]] void no_parameter(const SliderDistribution& law, const std::string& name) {
+  const std::vector<std::string> names = law.parameter_names();
+  throw std::invalid_argument(fmt::format(
+      "the law {} has no parameter '{}' ({})", law.describe(), name,
+      names.empty() ? std::string("it has none of its own") : fmt::format("its own: {}", fmt::join(names, ", "))));
+}
+
+}  // namespace
+
+double SliderDistribution::parameter(const std::string& name) const { no_parameter(*this, name); }
+
+std::shared_ptr<const SliderDistribution> SliderDistribution::with_parameter(const std::string& name, double) const {
+  no_parameter(*this, name);
+}
 
 std::vector<JenkinsParameters> parallel_sliders(const JenkinsParameters& point,
                                                 const SliderDistribution* distribution) {

@@ -40,6 +40,13 @@ class SliderDistribution {
   // Energy dissipated per cycle by the continuous law (not its sliders) under u = A cos(theta) at
   // the constant normal load `point.n0` [J]; empty when the law has no closed form.
   virtual std::optional<double> closed_form_energy(const JenkinsParameters& point, double amplitude) const = 0;
+  // The law's own parameters (beyond the point's kn, kt, mu, N0) by their case keys, e.g. Iwan's
+  // "chi" and "beta": what a calibration may vary. Empty for a law with none.
+  virtual std::vector<std::string> parameter_names() const { return {}; }
+  // One of them; std::invalid_argument naming the law's parameters when `name` is not one.
+  virtual double parameter(const std::string& name) const;
+  // The same law with `name` set to `value`; std::invalid_argument when the value leaves its domain.
+  virtual std::shared_ptr<const SliderDistribution> with_parameter(const std::string& name, double value) const;
 };
 
 // The point's sliders (one, the point itself, when `distribution` is null).

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace bb::contact {
@@ -65,6 +66,24 @@ std::optional<double> IwanDistribution::closed_form_energy(const JenkinsParamete
   const double slip_force = point.mu * point.n0;
   if (!(slip_force > 0.0)) return std::nullopt;
   return iwan_cycle_energy(iwan_density(p_, point.kt, slip_force), amplitude);
+}
+
+double IwanDistribution::parameter(const std::string& name) const {
+  if (name == "chi") return p_.chi;
+  if (name == "beta") return p_.beta;
+  return SliderDistribution::parameter(name);
+}
+
+std::shared_ptr<const SliderDistribution> IwanDistribution::with_parameter(const std::string& name,
+                                                                           double value) const {
+  IwanParameters p = p_;
+  if (name == "chi")
+    p.chi = value;
+  else if (name == "beta")
+    p.beta = value;
+  else
+    return SliderDistribution::with_parameter(name, value);
+  return std::make_shared<IwanDistribution>(p);  // validates
 }
 
 }  // namespace bb::contact

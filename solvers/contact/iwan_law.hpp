@@ -46,6 +46,11 @@ class IwanDistribution final : public SliderDistribution {
   std::vector<SliderShare> shares() const override { return shares_; }
   // At N0 (slip force mu N0); empty when mu N0 = 0.
   std::optional<double> closed_form_energy(const JenkinsParameters& point, double amplitude) const override;
+  // chi and beta. Beta's slider exists only when beta > 0: at 0 the power law takes it back, so
+  // the sliders (not the continuous law) jump there.
+  std::vector<std::string> parameter_names() const override { return {"chi", "beta"}; }
+  double parameter(const std::string& name) const override;
+  std::shared_ptr<const SliderDistribution> with_parameter(const std::string& name, double value) const override;
 
  private:
   IwanParameters p_;

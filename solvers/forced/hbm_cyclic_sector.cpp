@@ -70,7 +70,7 @@ Eigen::MatrixXcd hermitian_damping(const FrfDamping& damping, const Eigen::Matri
   if (eig.info() != Eigen::Success) throw SolverError("cyclic sector: the modes of a nodal diameter failed");
   const Eigen::VectorXd w = eig.eigenvalues().array().max(0.0).sqrt();
   const Eigen::MatrixXcd mp = m * eig.eigenvectors();
-  return mp * (2.0 * damping.zeta * w).asDiagonal() * mp.adjoint();
+  return mp * (2.0 * damping.modal_ratios(w.size()).cwiseProduct(w)).asDiagonal() * mp.adjoint();
 }
 
 void refuse_unsupported(const HbmSpec& spec) {

@@ -62,12 +62,22 @@ struct HbmSweepSpec {
 
 // A parameter of the model whose exact log-sensitivity the analysis adds to its FRF tables
 // (hbm/sensitivity.hpp): one law parameter of one [[analysis.contact]] or of every damper contact,
-// the modal damping ratio, or an entry of the stiffness or mass matrix written in the case.
+// the modal damping ratio (of every mode, or of one mode when they are given per mode), an entry
+// of the stiffness or mass matrix written in the case, or a modal model's frequency or modal mass.
 struct HbmParameter {
-  enum class Kind { contact_law, damper_law, modal_damping, lumped_matrix } kind = Kind::modal_damping;
-  size_t contact = 0;                           // contact_law: index into HbmSpec::contacts
-  bool mass = false;                            // lumped_matrix: an entry of M (else of K),
-  size_t row = 0, col = 0;                      //   (row, col) and its mirror
+  enum class Kind {
+    contact_law,
+    damper_law,
+    modal_damping,
+    mode_damping,
+    lumped_matrix,
+    modal_coordinate
+  } kind = Kind::modal_damping;
+  size_t contact = 0;       // contact_law: index into HbmSpec::contacts
+  bool mass = false;        // lumped_matrix: an entry of M (else of K); modal_coordinate: the modal
+                            //   mass (else the frequency)
+  size_t row = 0, col = 0;  // lumped_matrix: (row, col) and its mirror; mode_damping, modal_coordinate:
+                            //   the mode (row)
   contact::LawParameter law = contact::law_kt;  // contact_law, damper_law
   std::string label;                            // its case path, e.g. "analysis.contact.0.kt": names the columns
 };

@@ -84,6 +84,43 @@ hbm::ModelDerivative lumped_entry_derivative(const PreparedHbm& p, const HbmSpec
   return d;
 }
 
+// A modal model's frequency (K_ii = M_ii w^2: d/d log f = 2 d/d log K_ii) or modal mass (M_ii and
+// K_ii together: the sum of their log-derivatives).
+hbm::ModelDerivative modal_coordinate_derivative(const PreparedHbm& p, const HbmSpec& spec,
+                                                 const HbmParameter& parameter) {
+  HbmParameter entry = parameter;
+  entry.kind = HbmParameter::Kind::lumped_matrix;
+  entry.col = entry.row;
+  entry.mass = false;
+  hbm::ModelDerivative d = lumped_entry_derivative(p, spec, entry);
+  if (!parameter.mass) {
+    d.stiffness *= 2.0;
+    d.damping *= 2.0;
+    return d;
+  }
+  entry.mass = true;
+  const hbm::ModelDerivative m = lumped_entry_derivative(p, spec, entry);
+  d.mass += m.mass;
+  d.damping += m.damping;
+  return d;
+}
+
+// d(model)/d(log zeta_i) of a ratio given per mode: C is linear in each ratio, so the central
+// difference over log zeta_i +- 1e-6 is exact but for rounding.
+hbm::ModelDerivative mode_damping_derivative(const PreparedHbm& p, const HbmSpec& spec, size_t mode) {
+  const double h = 1e-6;
+  const auto damping = [&](double factor) {
+    FrfDamping d = spec.damping;
+    d.mode_zetas.at(mode) *= factor;
+    return damping_matrix(d, p.linear);
+  };
+  const Eigen::Index n = p.model.mass.rows();
+  hbm::ModelDerivative d;
+  d.damping = Eigen::MatrixXd::Zero(n, n);
+  d.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) = (damping(std::exp(h)) - damping(std::exp(-h))) / (2.0 * h);
+  return d;
+}
+
 // d(model)/d(log p) for each of spec.sensitivities: scaling a unit derivative by the parameter's
 // value turns d/dp into d/d(log p). The damper's contacts come first in the model.
 std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const HbmSpec& spec,
@@ -97,6 +134,14 @@ std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const Hb
     }
     if (parameter.kind == HbmParameter::Kind::lumped_matrix) {
       out.push_back(lumped_entry_derivative(p, spec, parameter));
+      continue;
+    }
+    if (parameter.kind == HbmParameter::Kind::modal_coordinate) {
+      out.push_back(modal_coordinate_derivative(p, spec, parameter));
+      continue;
+    }
+    if (parameter.kind == HbmParameter::Kind::mode_damping) {
+      out.push_back(mode_damping_derivative(p, spec, parameter.row));
       continue;
     }
     const bool damper = parameter.kind == HbmParameter::Kind::damper_law;

@@ -56,7 +56,8 @@ ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, c
 }
 
 Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& m) {
-  if (damping.kind == FrfDamping::Kind::modal) return modal_damping_matrix(m.stiffness, m.mass, damping.zeta);
+  if (damping.kind == FrfDamping::Kind::modal)
+    return modal_damping_matrix(m.stiffness, m.mass, damping.modal_ratios(m.stiffness.rows()));
   const RayleighCoefficients c = rayleigh_of(damping);
   return c.alpha * m.mass + c.beta * m.stiffness;
 }

@@ -3,6 +3,9 @@
 // file, or matrices written in the case). Shared by the linear (analysis/frf_spec.hpp) and the
 // nonlinear (forced/hbm_spec.hpp) forced response.
 #pragma once
+#include <Eigen/Dense>
+
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <optional>
@@ -27,9 +30,20 @@ struct FrfForce {
 
 struct FrfDamping {
   enum class Kind { modal, rayleigh } kind = Kind::modal;
-  double zeta = 0.0;                    // modal: the same ratio for every mode
+  double zeta = 0.0;  // modal: the same ratio for every mode
+  // modal, when not empty: the ratios of the lowest modes in ascending frequency, as a modal test
+  // gives them; the modes above the last take its ratio.
+  std::vector<double> mode_zetas;
   std::array<double, 2> rayleigh_hz{};  // rayleigh: zeta fitted at two frequencies (eqs 3.37-3.39)
   std::array<double, 2> rayleigh_zeta{};
+
+  // modal: the ratios of `modes` modes in ascending frequency.
+  Eigen::VectorXd modal_ratios(Eigen::Index modes) const {
+    if (mode_zetas.empty()) return Eigen::VectorXd::Constant(modes, zeta);
+    Eigen::VectorXd z(modes);
+    for (Eigen::Index i = 0; i < modes; ++i) z[i] = mode_zetas[std::min(static_cast<size_t>(i), mode_zetas.size() - 1)];
+    return z;
+  }
 };
 
 // A reduced model: Craig-Bampton on master points, matrices from files, or matrices in the case.

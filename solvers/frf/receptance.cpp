@@ -74,10 +74,18 @@ RayleighCoefficients fit_rayleigh(double omega1, double zeta1, double omega2, do
 }
 
 Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& mass, double zeta) {
+  return modal_damping_matrix(stiffness, mass, Eigen::VectorXd::Constant(stiffness.rows(), zeta));
+}
+
+Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& mass,
+                                     const Eigen::VectorXd& zetas) {
   const Eigen::Index n = stiffness.rows();
   require_square(stiffness, n, "stiffness", "modal_damping_matrix");
   require_square(mass, n, "mass", "modal_damping_matrix");
-  if (!(zeta >= 0.0) || !std::isfinite(zeta))
+  if (zetas.size() != n)
+    throw std::invalid_argument(
+        fmt::format("modal_damping_matrix: {} damping ratios for a model of {} DOFs", zetas.size(), n));
+  if (!((zetas.array() >= 0.0).all()) || !zetas.allFinite())
     throw std::invalid_argument("modal_damping_matrix: zeta must be finite and >= 0");
   if (n == 0) return Eigen::MatrixXd(0, 0);
 
@@ -98,7 +106,7 @@ Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eig
     throw SolverError(
         fmt::format("modal_damping_matrix: the stiffness has a negative eigenvalue w^2 = {:.6g}", lambda[0]));
   Eigen::VectorXd modal(n);
-  for (Eigen::Index r = 0; r < n; ++r) modal[r] = lambda[r] <= rigid ? 0.0 : 2.0 * zeta * std::sqrt(lambda[r]);
+  for (Eigen::Index r = 0; r < n; ++r) modal[r] = lambda[r] <= rigid ? 0.0 : 2.0 * zetas[r] * std::sqrt(lambda[r]);
   const Eigen::MatrixXd m_phi = mass * modes.eigenvectors();
   const Eigen::MatrixXd c = m_phi * modal.asDiagonal() * m_phi.transpose();
   return 0.5 * (c + c.transpose());

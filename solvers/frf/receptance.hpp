@@ -42,6 +42,9 @@ RayleighCoefficients fit_rayleigh(double omega1, double zeta1, double omega2, do
 // Rigid modes (w_r^2 <= 1e-10 max w^2) get no damping. Throws SolverError when M is not positive
 // definite or K has a clearly negative eigenvalue, std::invalid_argument on sizes or zeta < 0.
 Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& mass, double zeta);
+// The same with zeta_r per mode, in ascending frequency (one per DOF of the model).
+Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& mass,
+                                     const Eigen::VectorXd& zetas);
 
 // Direct solve of D(w) x = f, D = K + i w C - w^2 M, for small dense models; an empty `damping`
 // means C = 0. Throws SolverError when D(w) is singular (an undamped resonance hit exactly, see

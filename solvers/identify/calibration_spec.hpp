@@ -2,6 +2,7 @@
 // bounds, against which data: the reference values of chosen checks and/or measured curves read
 // from CSV files with units (identify/measured_data.hpp).
 #pragma once
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -15,9 +16,17 @@ namespace bb {
 
 struct CalibrationParameter {
   std::string path;  // dotted path of a number in the case file, e.g. "mesh.dimensions.L_a" (cases/case_parameter.hpp)
-  double lower = 0.0;  // bounds, > 0: parameters are fitted in log space
+  double lower = 0.0;  // bounds; > 0 for a log scale
   double upper = 0.0;
   double start = 0.0;  // the value in the case file
+  // What the fit varies: log(p) (relative steps whatever the unit; the default for positive
+  // bounds), or p / (upper - lower) (linear: a parameter that may be zero or negative, e.g. an
+  // Iwan joint's exponent chi in (-1, 0]). Starts, steps and the covariance are taken in it.
+  enum class Scale { log, linear } scale = Scale::log;
+  double to_fit(double value) const { return scale == Scale::log ? std::log(value) : value / (upper - lower); }
+  double from_fit(double x) const { return scale == Scale::log ? std::exp(x) : x * (upper - lower); }
+  // d value / d x, at the value.
+  double value_per_fit(double value) const { return scale == Scale::log ? value : upper - lower; }
   // A stated prior (value, 1-sigma, in the parameter's units): the residual (p - value) / sigma
   // joins the fit, so the parameter is held near what is known of it instead of fixed or free.
   struct Prior {

@@ -31,42 +31,44 @@ bool CentralDifferences::Evaluate(double const* const* parameters, double* resid
     last_residuals_.assign(residuals, residuals + m);
     return true;
   }
-  // Run 0 at x, run 2j + 1 at x + h e_j, run 2j + 2 at x - h e_j.
-  const auto n = static_cast<std::size_t>(parameters_);
-  std::vector<Eigen::VectorXd> runs(2 * n + 1, Eigen::VectorXd(m));
-  std::vector<char> ok(2 * n + 1, 0);
-  std::size_t first_run = 0;
+  bool kept = false;  // Ceres evaluated the residuals here just before: reuse them as the centre run
   {
     const std::lock_guard<std::mutex> guard(last_lock_);
-    if (last_x_ == x) {
-      std::copy(last_residuals_.begin(), last_residuals_.end(), runs[0].data());
-      ok[0] = 1;
-      first_run = 1;
-    }
+    if (last_x_ == x) std::copy(last_residuals_.begin(), last_residuals_.end(), residuals), kept = true;
   }
-  for_each_index(2 * n + 1 - first_run, std::min(workers_, 2 * n + 1 - first_run), [&](std::size_t run) {
-    const std::size_t k = run + first_run;
+  if (!kept && !residual_(x, residuals)) return false;
+  std::vector<std::size_t> all(static_cast<std::size_t>(parameters_));
+  for (std::size_t j = 0; j < all.size(); ++j) all[j] = j;
+  return Columns(x, residuals, all, jacobians[0]);
+}
+
+bool CentralDifferences::Columns(const std::vector<double>& x, const double* centre,
+                                 const std::vector<std::size_t>& which, double* jacobian) const {
+  const int m = num_residuals();
+  // Run 2k at x + h e_j, run 2k + 1 at x - h e_j, for j = which[k].
+  const std::size_t runs_count = 2 * which.size();
+  std::vector<Eigen::VectorXd> runs(runs_count, Eigen::VectorXd(m));
+  std::vector<char> ok(runs_count, 0);
+  for_each_index(runs_count, std::min(workers_, std::max<std::size_t>(1, runs_count)), [&](std::size_t run) {
+    const std::size_t j = which[run / 2];
     std::vector<double> y = x;
-    if (k > 0) {
-      const std::size_t j = (k - 1) / 2;
-      y[j] = k % 2 == 1 ? x[j] + step_ : x[j] - step_;
-    }
-    ok[k] = residual_(y, runs[k].data()) ? 1 : 0;
+    y[j] = run % 2 == 0 ? x[j] + step_ : x[j] - step_;
+    ok[run] = residual_(y, runs[run].data()) ? 1 : 0;
   });
-  if (!ok[0]) return false;
-  std::copy(runs[0].data(), runs[0].data() + m, residuals);
+  const Eigen::Map<const Eigen::VectorXd> at(centre, m);
   // Row-major m x n, as Ceres lays out a parameter block's Jacobian.
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> jacobian(jacobians[0], m,
-                                                                                              parameters_);
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(jacobian, m, parameters_);
   int one_sided = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    const bool up = ok[2 * j + 1] != 0, down = ok[2 * j + 2] != 0;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const bool up = ok[2 * k] != 0, down = ok[2 * k + 1] != 0;
     if (!up && !down) return false;
-    auto column = jacobian.col(static_cast<Eigen::Index>(j));
+    auto column = matrix.col(static_cast<Eigen::Index>(which[k]));
     if (up && down)
-      column = (runs[2 * j + 1] - runs[2 * j + 2]) / (2.0 * step_);
+      column = (runs[2 * k] - runs[2 * k + 1]) / (2.0 * step_);
+    else if (up)
+      column = (runs[2 * k] - at) / step_;
     else
-      column = up ? (runs[2 * j + 1] - runs[0]) / step_ : (runs[0] - runs[2 * j + 2]) / step_;
+      column = (at - runs[2 * k + 1]) / step_;
     one_sided += up != down;
   }
   if (one_sided_ && one_sided > 0) std::atomic_ref<int>(*one_sided_).fetch_add(one_sided);

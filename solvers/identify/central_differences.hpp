@@ -34,6 +34,10 @@ class CentralDifferences : public ceres::CostFunction {
   CentralDifferences(ResidualFunction residual, int parameters, int residuals, double step, std::size_t workers,
                      int* one_sided = nullptr);
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+  // Only the columns `which` of the Jacobian at x (row-major m x n, the others untouched), around
+  // `centre`, the residuals at x: two model runs per column. False where a column fails on both sides.
+  bool Columns(const std::vector<double>& x, const double* centre, const std::vector<std::size_t>& which,
+               double* jacobian) const;
 
  private:
   ResidualFunction residual_;

@@ -13,7 +13,13 @@
 namespace bb {
 namespace {
 
-// Relative to the largest singular value of the Jacobian (log parameters), the size below which a
+// How a fit value reads in a warning: log(p), or p / (upper - lower).
+std::string fit_name(const CalibrationParameter& q) {
+  return q.scale == CalibrationParameter::Scale::log ? fmt::format("log({})", q.path)
+                                                     : fmt::format("{} / {:.3g}", q.path, q.upper - q.lower);
+}
+
+// Relative to the largest singular value of the Jacobian (fit values), the size below which a
 // direction of the parameters is not determined by the fitted points: the pseudo-inverse drops it,
 // which would report it with a variance of zero.
 constexpr double kUnidentified = 1e-8;
@@ -22,7 +28,7 @@ constexpr double kUnidentified = 1e-8;
 // (Ceres's default min_reciprocal_condition_number, as its DENSE_SVD covariance truncates).
 constexpr double kMinReciprocalCondition = 1e-14;
 
-// The Jacobian of the residuals in log parameters at the problem's values (robust loss applied);
+// The Jacobian of the residuals in fit values at the problem's values (robust loss applied);
 // nullopt when it cannot be evaluated there.
 std::optional<Eigen::MatrixXd> jacobian_at(ceres::Problem& problem) {
   ceres::CRSMatrix crs;
@@ -35,7 +41,7 @@ std::optional<Eigen::MatrixXd> jacobian_at(ceres::Problem& problem) {
 }
 
 // The parameters and combinations the fitted points do not determine at the optimum, from the
-// Jacobian in log parameters (scale free) and its SVD: a zero column is a parameter without effect,
+// Jacobian in fit values (scale free) and its SVD: a zero column is a parameter without effect,
 // a vanishing singular value a combination that trades off exactly. Returns the parameters not
 // identified.
 std::vector<bool> warn_unidentified(const Eigen::MatrixXd& j, const Eigen::JacobiSVD<Eigen::MatrixXd>& svd,
@@ -58,10 +64,10 @@ std::vector<bool> warn_unidentified(const Eigen::MatrixXd& j, const Eigen::Jacob
     }
   for (Eigen::Index k = 0; k < sv.size(); ++k) {
     if (sv(k) > kUnidentified * sv(0)) continue;
-    std::vector<std::string> terms;  // the weak direction, in log parameters
+    std::vector<std::string> terms;  // the weak direction, in fit values
     for (Eigen::Index i = 0; i < svd.matrixV().rows(); ++i)
       if (const double c = svd.matrixV()(i, k); std::abs(c) > 0.2 && !unidentified[static_cast<size_t>(i)])
-        terms.push_back(fmt::format("{:+.2f} log({})", c, cal.parameters[static_cast<size_t>(i)].path));
+        terms.push_back(fmt::format("{:+.2f} {}", c, fit_name(cal.parameters[static_cast<size_t>(i)])));
     if (terms.size() < 2) continue;  // a single parameter: named above
     std::string combination;
     for (const std::string& t : terms) combination += (combination.empty() ? "" : " ") + t;
@@ -76,7 +82,7 @@ std::vector<bool> warn_unidentified(const Eigen::MatrixXd& j, const Eigen::Jacob
 }
 
 // The cost along the covariance's weakest direction (the identified parameters only), t = -2, -1, 1, 2
-// standard deviations from the optimum x (log values), clamped to the bounds: four model runs.
+// standard deviations from the optimum x (fit values), clamped to the bounds: four model runs.
 void profile_weakest_direction(ceres::Problem& problem, std::vector<double>& x, const Eigen::MatrixXd& c,
                                const std::vector<bool>& unidentified, const CalibrationSpec& cal,
                                CalibrationOutcome& out) {
@@ -99,9 +105,9 @@ void profile_weakest_direction(ceres::Problem& problem, std::vector<double>& x, 
     pt.predicted = 0.5 * t * t * scale;
     for (Eigen::Index i = 0; i < n; ++i) {
       const auto k = static_cast<size_t>(i);
-      x[k] = std::clamp(optimum[k] + t * sigma * v(i), std::log(cal.parameters[k].lower),
-                        std::log(cal.parameters[k].upper));
-      pt.values.push_back(std::exp(x[k]));
+      const CalibrationParameter& q = cal.parameters[k];
+      x[k] = std::clamp(optimum[k] + t * sigma * v(i), q.to_fit(q.lower), q.to_fit(q.upper));
+      pt.values.push_back(q.from_fit(x[k]));
     }
     double cost = 0.0;
     if (problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr)) pt.rise = cost - cost0;
@@ -120,7 +126,7 @@ void profile_weakest_direction(ceres::Problem& problem, std::vector<double>& x, 
 
 }  // namespace
 
-// The covariance at the optimum x (log values) as standard deviations and correlations, with the
+// The covariance at the optimum x (fit values) as standard deviations and correlations, with the
 // Birge ratio: a fit worse than the stated uncertainties allow (reduced chi-square above 1, e.g.
 // outliers or an imperfect model) scales the covariance up by it. A parameter the points do not
 // determine gets none (NaN), rather than the zero the pseudo-inverse would give it. One Jacobian
@@ -147,14 +153,18 @@ void add_covariance(ceres::Problem& problem, std::vector<double>& x, const Calib
   profile_weakest_direction(problem, x, c, unidentified, cal, out);
   for (size_t i = 0; i < n; ++i) {
     const auto ii = static_cast<Eigen::Index>(i);
-    if (!unidentified[i]) out.std_devs[i] = out.values[i] * std::sqrt(std::max(c(ii, ii), 0.0));  // log -> value
-    // A +-1 sigma interval (in log values) wider than the bounds: only the bounds hold it.
-    if (const double width = 2.0 * std::sqrt(std::max(c(ii, ii), 0.0));
-        !unidentified[i] && width > std::log(cal.parameters[i].upper / cal.parameters[i].lower))
-      out.warnings.push_back(fmt::format(
-          "'{}' is not determined by the data within its bounds: its 1-sigma interval (x/ {:.3g}) is wider than "
-          "[{:.6g}, {:.6g}]; its value is the bounds' and the start's, not the data's",
-          cal.parameters[i].path, std::exp(width / 2.0), cal.parameters[i].lower, cal.parameters[i].upper));
+    const CalibrationParameter& q = cal.parameters[i];
+    const double sigma_fit = std::sqrt(std::max(c(ii, ii), 0.0));
+    if (!unidentified[i]) out.std_devs[i] = q.value_per_fit(out.values[i]) * sigma_fit;
+    // A +-1 sigma interval (in fit values) wider than the bounds: only the bounds hold it.
+    if (!unidentified[i] && 2.0 * sigma_fit > q.to_fit(q.upper) - q.to_fit(q.lower))
+      out.warnings.push_back(
+          fmt::format("'{}' is not determined by the data within its bounds: its 1-sigma interval ({}) is wider than "
+                      "[{:.6g}, {:.6g}]; its value is the bounds' and the start's, not the data's",
+                      q.path,
+                      q.scale == CalibrationParameter::Scale::log ? fmt::format("x/ {:.3g}", std::exp(sigma_fit))
+                                                                  : fmt::format("+- {:.3g}", out.std_devs[i]),
+                      q.lower, q.upper));
     for (size_t j = 0; j < n; ++j) {
       const auto jj = static_cast<Eigen::Index>(j);
       out.correlation(ii, jj) = unidentified[i] || unidentified[j] ? NAN : c(ii, jj) / std::sqrt(c(ii, ii) * c(jj, jj));
@@ -179,7 +189,10 @@ void warn_other_minima(CalibrationOutcome& out, size_t n) {
         2.0 * (out.starts[s].final_cost - chosen.final_cost) / scale >= quantile)
       continue;
     bool same = true;
-    for (size_t i = 0; i < n; ++i) same = same && std::abs(std::log(out.starts[s].values[i] / chosen.values[i])) < 0.05;
+    for (size_t i = 0; i < n; ++i) {  // within 5 % (log) or 5 % of the range (linear)
+      const CalibrationParameter& q = out.spec.parameters[i];
+      same = same && std::abs(q.to_fit(out.starts[s].values[i]) - q.to_fit(chosen.values[i])) < 0.05;
+    }
     if (!same)
       out.warnings.push_back(fmt::format(
           "start {} reaches a cost ({:.6g}) within the 95 % confidence region of the best ({:.6g}) at other "

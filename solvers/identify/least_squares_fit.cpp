@@ -45,17 +45,23 @@ struct RobustLoss {
   }
 };
 
+// The parameters' values at fit values x (CalibrationParameter::from_fit).
+std::vector<double> values_at(const CalibrationSpec& cal, const double* x) {
+  std::vector<double> values(cal.parameters.size());
+  for (size_t i = 0; i < values.size(); ++i) values[i] = cal.parameters[i].from_fit(x[i]);
+  return values;
+}
+
 // The residuals r_k = (computed_k - measured_k) / sigma_k (the misfit in units of the stated
-// uncertainty, through the robust loss) at log values, for central differences; several may run at
+// uncertainty, through the robust loss) at fit values, for central differences; several may run at
 // once (the Jacobian's columns on workers), hence the atomic count.
 struct NumericResidual {
   const FitEvaluator* evaluate;
-  size_t parameters;
+  const CalibrationSpec* cal;
   int* evaluations;
   RobustLoss loss;
-  bool operator()(const std::vector<double>& log_values, double* residuals) const {
-    std::vector<double> values(parameters);
-    for (size_t i = 0; i < values.size(); ++i) values[i] = std::exp(log_values[i]);
+  bool operator()(const std::vector<double>& x, double* residuals) const {
+    const std::vector<double> values = values_at(*cal, x.data());
     try {
       const auto points = (*evaluate)(values, false);
       std::atomic_ref<int>(*evaluations).fetch_add(1);
@@ -70,27 +76,28 @@ struct NumericResidual {
 };
 
 // The same residuals with the Jacobian from the model's own sensitivities: one model run per
-// evaluation instead of 2 n + 1 (the parameters are log values: J_kj = p_j dr_k/dp_j). Where a
+// evaluation instead of 2 n + 1 (J_kj = dr_k/dx_j = (dr_k/d log p_j) (dp_j/dx_j) / p_j). Where a
 // point has no derivative (a peak on a corner of its curve, a singular Jacobian), that evaluation's
 // Jacobian is taken by central differences instead, and counted.
 class AnalyticResidual : public ceres::CostFunction {
  public:
-  AnalyticResidual(const FitEvaluator* evaluate, size_t parameters, int* evaluations, int residuals,
-                   double derivative_step, size_t workers, int* fallbacks, int* one_sided, RobustLoss loss)
+  AnalyticResidual(const FitEvaluator* evaluate, const CalibrationSpec* cal, int* evaluations, int residuals,
+                   size_t workers, int* fallbacks, int* one_sided, RobustLoss loss, std::vector<size_t> numeric)
       : evaluate_(evaluate),
+        cal_(cal),
+        numeric_(std::move(numeric)),
         evaluations_(evaluations),
         fallbacks_(fallbacks),
         loss_(loss),
-        differences_(NumericResidual{evaluate, parameters, evaluations, loss}, static_cast<int>(parameters), residuals,
-                     derivative_step, workers, one_sided) {
+        differences_(NumericResidual{evaluate, cal, evaluations, loss}, static_cast<int>(cal->parameters.size()),
+                     residuals, cal->derivative_step, workers, one_sided) {
     set_num_residuals(residuals);
-    mutable_parameter_block_sizes()->push_back(static_cast<int>(parameters));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(cal->parameters.size()));
   }
 
-  bool Evaluate(double const* const* log_values, double* residuals, double** jacobians) const override {
+  bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override {
     const size_t n = static_cast<size_t>(parameter_block_sizes()[0]);
-    std::vector<double> values(n);
-    for (size_t i = 0; i < n; ++i) values[i] = std::exp(log_values[0][i]);
+    const std::vector<double> values = values_at(*cal_, x[0]);
     const bool jacobian = jacobians && jacobians[0];
     try {
       const auto points = (*evaluate_)(values, jacobian);
@@ -103,13 +110,19 @@ class AnalyticResidual : public ceres::CostFunction {
         const auto [r, slope] = loss_(p.residual(), p);
         residuals[k] = r;
         if (!jacobian) continue;
-        differentiable = differentiable && p.gradient.size() == n &&
-                         std::all_of(p.gradient.begin(), p.gradient.end(), [](double g) { return std::isfinite(g); });
-        for (size_t j = 0; j < n && differentiable; ++j) jacobians[0][k * n + j] = slope * p.gradient[j];
+        differentiable = differentiable && p.gradient.size() == n;
+        for (size_t j = 0; j < n && differentiable; ++j) {
+          if (std::find(numeric_.begin(), numeric_.end(), j) != numeric_.end()) continue;
+          const double g = slope * p.gradient[j] * cal_->parameters[j].value_per_fit(values[j]) / values[j];
+          differentiable = std::isfinite(g);
+          jacobians[0][k * n + j] = g;
+        }
       }
-      if (differentiable) return true;
+      if (differentiable)
+        return !jacobian || numeric_.empty() ||
+               differences_.Columns(std::vector<double>(x[0], x[0] + n), residuals, numeric_, jacobians[0]);
       ++*fallbacks_;
-      return differences_.Evaluate(log_values, residuals, jacobians);
+      return differences_.Evaluate(x, residuals, jacobians);
     } catch (const std::exception&) {
       return false;
     }
@@ -117,6 +130,8 @@ class AnalyticResidual : public ceres::CostFunction {
 
  private:
   const FitEvaluator* evaluate_;
+  const CalibrationSpec* cal_;
+  std::vector<size_t> numeric_;  // columns the model does not differentiate
   int* evaluations_;
   int* fallbacks_;
   RobustLoss loss_;
@@ -141,7 +156,7 @@ class IterationTrace : public ceres::IterationCallback {
   int start_, starts_, max_iterations_;
 };
 
-// The spec's values, then starts - 1 points of a Latin hypercube in log space within the bounds.
+// The spec's values, then starts - 1 points of a Latin hypercube in the fit values within the bounds.
 std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
   const size_t n = cal.parameters.size();
   std::vector<double> first(n);
@@ -160,8 +175,9 @@ std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
   for (int k = 0; k < m; ++k) {
     std::vector<double> p(n);
     for (size_t i = 0; i < n; ++i) {
-      const double lo = std::log(cal.parameters[i].lower), hi = std::log(cal.parameters[i].upper);
-      p[i] = std::exp(lo + (hi - lo) * (strata[i][static_cast<size_t>(k)] + unit(rng)) / m);
+      const CalibrationParameter& q = cal.parameters[i];
+      const double lo = q.to_fit(q.lower), hi = q.to_fit(q.upper);
+      p[i] = q.from_fit(lo + (hi - lo) * (strata[i][static_cast<size_t>(k)] + unit(rng)) / m);
     }
     starts.push_back(p);
   }
@@ -171,7 +187,8 @@ std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
 }  // namespace
 
 CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator& evaluate, bool analytic,
-                                  int residuals, const FitProgress& progress) {
+                                  int residuals, const FitProgress& progress,
+                                  const std::vector<bool>& numeric_columns) {
   CalibrationOutcome out;
   out.spec = cal;
   const size_t n = cal.parameters.size();
@@ -180,23 +197,27 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   const size_t at_once = worker_count(starts.size(), cal.threads);
   const size_t budget = worker_count(std::numeric_limits<size_t>::max(), cal.threads);
   const size_t column_workers = std::max<size_t>(1, budget / std::max<size_t>(1, at_once));
-  // The problem for log-values x (Ceres keeps a pointer to x: one problem per start).
+  // The problem for fit values x (Ceres keeps a pointer to x: one problem per start).
   const auto build = [&](std::vector<double>& x, ceres::Problem& problem, int* evaluations, int* fallbacks,
                          int* one_sided) {
     ceres::CostFunction* cost = nullptr;
     const RobustLoss loss = RobustLoss::of(cal);
     if (analytic) {
-      cost = new AnalyticResidual(&evaluate, n, evaluations, residuals, cal.derivative_step, column_workers, fallbacks,
-                                  one_sided, loss);
+      std::vector<size_t> numeric;
+      for (size_t j = 0; j < numeric_columns.size(); ++j)
+        if (numeric_columns[j]) numeric.push_back(j);
+      cost = new AnalyticResidual(&evaluate, &cal, evaluations, residuals, column_workers, fallbacks, one_sided, loss,
+                                  std::move(numeric));
     } else {
       // derivative_step (default 1e-4): above the eigensolver's 1e-10 noise, below the model's curvature.
-      cost = new CentralDifferences(NumericResidual{&evaluate, n, evaluations, loss}, static_cast<int>(n), residuals,
+      cost = new CentralDifferences(NumericResidual{&evaluate, &cal, evaluations, loss}, static_cast<int>(n), residuals,
                                     cal.derivative_step, column_workers, one_sided);
     }
     problem.AddResidualBlock(cost, nullptr, x.data());
     for (size_t i = 0; i < n; ++i) {
-      problem.SetParameterLowerBound(x.data(), static_cast<int>(i), std::log(cal.parameters[i].lower));
-      problem.SetParameterUpperBound(x.data(), static_cast<int>(i), std::log(cal.parameters[i].upper));
+      const CalibrationParameter& q = cal.parameters[i];
+      problem.SetParameterLowerBound(x.data(), static_cast<int>(i), q.to_fit(q.lower));
+      problem.SetParameterUpperBound(x.data(), static_cast<int>(i), q.to_fit(q.upper));
     }
   };
   ceres::Solver::Options options;
@@ -230,7 +251,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   const auto run_start = [&](size_t s) {
     StartRun& run = runs[s];
     run.x.resize(n);
-    for (size_t i = 0; i < n; ++i) run.x[i] = std::log(starts[s][i]);
+    for (size_t i = 0; i < n; ++i) run.x[i] = cal.parameters[i].to_fit(starts[s][i]);
     ceres::Problem problem;
     build(run.x, problem, &run.evaluations, &run.fallbacks, &run.one_sided);
     IterationTrace trace(locked_progress, run.history, static_cast<int>(s + 1), static_cast<int>(starts.size()),
@@ -241,7 +262,7 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     ceres::Solve(o, &problem, &summary);
     CalibrationStart& r = run.result;
     r.start = starts[s];
-    for (double v : run.x) r.values.push_back(std::exp(v));
+    r.values = values_at(cal, run.x.data());
     // Ceres gives -1 for the costs of a start whose values the model could not be run at.
     r.evaluated = summary.initial_cost >= 0.0;
     r.initial_cost = r.evaluated ? summary.initial_cost : NAN;
@@ -302,12 +323,12 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   // At the chosen optimum, for the covariance.
   build(x, problem, &out.residual_evaluations, &out.jacobian_fallbacks, &out.one_sided_columns);
   out.values.resize(n);
-  for (size_t i = 0; i < n; ++i) out.values[i] = std::exp(x[i]);
+  out.values = values_at(cal, x.data());
   add_covariance(problem, x, cal, out);
   for (size_t i = 0; i < n; ++i) {
-    const double span = std::log(cal.parameters[i].upper / cal.parameters[i].lower);
-    if (std::abs(x[i] - std::log(cal.parameters[i].lower)) < 1e-3 * span ||
-        std::abs(x[i] - std::log(cal.parameters[i].upper)) < 1e-3 * span)
+    const CalibrationParameter& q = cal.parameters[i];
+    const double span = q.to_fit(q.upper) - q.to_fit(q.lower);
+    if (std::abs(x[i] - q.to_fit(q.lower)) < 1e-3 * span || std::abs(x[i] - q.to_fit(q.upper)) < 1e-3 * span)
       out.warnings.push_back(fmt::format("'{}' ended on a bound ({:.6g}): the optimum may lie outside the stated range",
                                          cal.parameters[i].path, out.values[i]));
   }

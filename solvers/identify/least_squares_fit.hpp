@@ -23,9 +23,12 @@ struct FitIteration {
 using FitProgress = std::function<void(const FitIteration&)>;
 
 // Fits spec.parameters to the `residuals` points of `evaluate` (analytic: with its gradients, else
-// central differences of relative step spec.derivative_step). Fills every member of the outcome but
-// before/after, curves, calibrated, cross_check and derivatives.
+// central differences of relative step spec.derivative_step). With `analytic`, the columns marked
+// in `numeric_columns` (the parameters the model does not differentiate; their gradient entries
+// are ignored) are central differences, two model runs each. Fills every member of the outcome
+// but before/after, curves, calibrated, cross_check and derivatives.
 CalibrationOutcome fit_parameters(const CalibrationSpec& spec, const FitEvaluator& evaluate, bool analytic,
-                                  int residuals, const FitProgress& progress = {});
+                                  int residuals, const FitProgress& progress = {},
+                                  const std::vector<bool>& numeric_columns = {});
 
 }  // namespace bb

@@ -1,6 +1,7 @@
 #include "pipeline/calibrate_case.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -46,38 +47,54 @@ CaseSpec with_values(const CalibratedCase& base, const std::vector<double>& valu
   return spec;
 }
 
-std::vector<std::string> parameter_paths(const CalibrationSpec& cal) {
+// The paths of the parameters the model differentiates.
+std::vector<std::string> differentiated_paths(const CalibrationSpec& cal, const std::vector<bool>& differentiated) {
   std::vector<std::string> paths;
-  for (const CalibrationParameter& p : cal.parameters) paths.push_back(p.path);
+  for (size_t j = 0; j < cal.parameters.size(); ++j)
+    if (differentiated[j]) paths.push_back(cal.parameters[j].path);
   return paths;
 }
 
+// A point's gradient over the differentiated parameters spread over all of them, NaN for the
+// others (their columns are central differences); empty stays empty (no sensitivities).
+void spread_gradient(FitPoint& p, const std::vector<bool>& differentiated) {
+  if (p.gradient.empty()) return;
+  std::vector<double> all(differentiated.size(), NAN);
+  for (size_t j = 0, k = 0; j < all.size(); ++j)
+    if (differentiated[j]) all[j] = p.gradient.at(k++);
+  p.gradient = std::move(all);
+}
+
 // The fitted points of the case with the given parameter values, and the tables of its curves;
-// with `gradients`, every point carries d r / d log p from the tables' sensitivity columns.
+// with `differentiated`, every point carries d r / d log p from the tables' sensitivity columns
+// for those parameters (NaN for the others).
 std::vector<FitPoint> fitted_points(const CalibratedCase& base, const CalibrationSpec& cal,
                                     const std::vector<double>& values, const WorkLimits& limits,
-                                    ResultTables* curves = nullptr, bool gradients = false) {
+                                    ResultTables* curves = nullptr, const std::vector<bool>* differentiated = nullptr) {
   const CaseSpec spec = with_values(base, values);
   const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits);
+  const std::vector<std::string> paths =
+      differentiated ? differentiated_paths(cal, *differentiated) : std::vector<std::string>{};
   std::vector<FitPoint> points;
   for (const CheckSpec& c : spec.checks) {
     if (std::find(cal.fit_checks.begin(), cal.fit_checks.end(), c.name) == cal.fit_checks.end()) continue;
     const std::vector<CheckEntry> entries = evaluate_check(c, results.tables);  // names a missing table first
-    const auto e = check_points(entries, cal, &results.tables.at(c.result),
-                                gradients ? parameter_paths(cal) : std::vector<std::string>{});
+    const auto e = check_points(entries, cal, &results.tables.at(c.result), paths);
     points.insert(points.end(), e.begin(), e.end());
   }
   for (const CalibrationData& d : cal.data) {
-    const auto e = data_points(d, results.tables, gradients ? parameter_paths(cal) : std::vector<std::string>{});
+    const auto e = data_points(d, results.tables, paths);
     points.insert(points.end(), e.begin(), e.end());
     if (curves) curves->insert_or_assign(d.table, results.tables.at(d.table));
   }
+  if (differentiated)
+    for (FitPoint& p : points) spread_gradient(p, *differentiated);
   // Stated priors: r = (p - value) / sigma, d r / d log p = p / sigma.
   for (size_t j = 0; j < cal.parameters.size(); ++j) {
     const auto& prior = cal.parameters[j].prior;
     if (!prior) continue;
     std::vector<double> gradient;
-    if (gradients) gradient.assign(cal.parameters.size(), 0.0), gradient[j] = values[j] / prior->sigma;
+    if (differentiated) gradient.assign(cal.parameters.size(), 0.0), gradient[j] = values[j] / prior->sigma;
     points.push_back({"priors", cal.parameters[j].path, "prior", static_cast<double>(j + 1), prior->value, values[j],
                       prior->sigma, false, std::move(gradient)});
   }
@@ -87,8 +104,15 @@ std::vector<FitPoint> fitted_points(const CalibratedCase& base, const Calibratio
 // The case asking its hbm analysis for the sensitivities to every parameter, when analytic
 // derivatives can serve the whole fit: frf data (derivatives = "auto" or "analytic"), or also peaks
 // data and checks ("analytic"; a check on a table without sensitivity columns is found at the
-// start), and the analysis differentiates every parameter. Otherwise the reason why not.
-std::variant<CalibratedCase, std::string> analytic_case(const CalibratedCase& base, const CalibrationSpec& cal) {
+// start), and the analysis differentiates at least one parameter (the others' columns are central
+// differences, each named with why). Otherwise the reason why not.
+struct AnalyticCase {
+  CalibratedCase model;
+  std::vector<bool> differentiated;  // per parameter
+  std::vector<std::string> numeric;  // "'path': why" of each parameter that is not
+};
+
+std::variant<AnalyticCase, std::string> analytic_case(const CalibratedCase& base, const CalibrationSpec& cal) {
   if (cal.derivatives == "numeric") return std::string("derivatives = \"numeric\"");
   const bool peaks = cal.derivatives == "analytic";
   if (!peaks && !cal.fit_checks.empty())
@@ -103,19 +127,23 @@ std::variant<CalibratedCase, std::string> analytic_case(const CalibratedCase& ba
           d.name);
     curves = curves || d.data.kind == DataKind::frf;
   }
-  CalibratedCase out = base;
-  HbmSpec* hbm = std::get_if<HbmSpec>(&out.spec.analysis);
+  AnalyticCase out{base, {}, {}};
+  HbmSpec* hbm = std::get_if<HbmSpec>(&out.model.spec.analysis);
   if (!hbm) return std::string("the analysis is not hbm");
   hbm->path_sensitivities = curves;  // peaks alone need no curve's derivatives
   for (const CaseParameter& p : base.parameters) {
     const std::optional<HbmParameter> h = hbm_parameter(p);
-    if (!h)
-      return fmt::format("the analysis has no sensitivities for these parameters ('{}' is not differentiated)", p.path);
-    if (const std::optional<std::string> why = unsupported_sensitivity(*hbm, *h))
-      return fmt::format("the analysis has no sensitivities for these parameters ('{}': {})", p.path, *why);
+    std::optional<std::string> why = h ? unsupported_sensitivity(*hbm, *h) : std::string("not differentiated");
+    out.differentiated.push_back(!why);
+    if (why) {
+      out.numeric.push_back(fmt::format("'{}': {}", p.path, *why));
+      continue;
+    }
     const auto same = [&](const HbmParameter& q) { return q.label == h->label; };
     if (std::none_of(hbm->sensitivities.begin(), hbm->sensitivities.end(), same)) hbm->sensitivities.push_back(*h);
   }
+  if (std::none_of(out.differentiated.begin(), out.differentiated.end(), [](bool d) { return d; }))
+    return fmt::format("the analysis has no sensitivities for these parameters ({})", fmt::join(out.numeric, "; "));
   return out;
 }
 
@@ -144,16 +172,22 @@ CalibratedCase without_held_out_curves(CalibratedCase c, const CalibrationSpec& 
 // Replaces the number at `path` of a case table (for the calibrated copy of the case file).
 void set_number(toml::table& root, const std::string& path, double value) {
   toml::node* n = node_at_path(root, path);
-  if (!n || !n->is_number()) throw InputError(fmt::format("calibration path '{}' is not a number in the case", path));
-  if (toml::value<double>* f = n->as_floating_point()) {
+  if (n && !n->is_number()) throw InputError(fmt::format("calibration path '{}' is not a number in the case", path));
+  if (toml::value<double>* f = n ? n->as_floating_point() : nullptr) {
     *f = value;
     return;
   }
-  const size_t dot = path.rfind('.');  // an integer: replaced by a float in its parent table
+  // An integer, or a key left at its default (e.g. an Iwan beta of 0): a float in its parent.
+  const size_t dot = path.rfind('.');
+  const std::string leaf = path.substr(dot == std::string::npos ? 0 : dot + 1);
   toml::node* parent = dot == std::string::npos ? &root : node_at_path(root, path.substr(0, dot));
-  if (!parent || !parent->is_table())
-    throw InputError(fmt::format("calibration path '{}' is inside an array of numbers", path));
-  parent->as_table()->insert_or_assign(path.substr(dot == std::string::npos ? 0 : dot + 1), value);
+  if (parent && parent->is_table()) {
+    parent->as_table()->insert_or_assign(leaf, value);
+  } else if (toml::array* a = parent ? parent->as_array() : nullptr; a && n) {
+    a->replace(a->begin() + static_cast<std::ptrdiff_t>(std::stoul(leaf)), value);
+  } else {
+    throw InputError(fmt::format("calibration path '{}' is not a number in the case", path));
+  }
 }
 
 // The same parameter paths in an independent model (e.g. Newmark instead of the harmonic balance).
@@ -196,10 +230,11 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   std::vector<double> start;
   for (const CalibrationParameter& p : cal->parameters) start.push_back(p.start);
   const auto analytic_base = analytic_case(base, *cal);
-  const CalibratedCase* sensitivity_base = std::get_if<CalibratedCase>(&analytic_base);
+  const AnalyticCase* sensitivity_base = std::get_if<AnalyticCase>(&analytic_base);
+  const std::vector<bool>* differentiated = sensitivity_base ? &sensitivity_base->differentiated : nullptr;
   ResultTables curves_before;
-  const std::vector<FitPoint> before = fitted_points(sensitivity_base ? *sensitivity_base : base, *cal, start, limits,
-                                                     &curves_before, sensitivity_base != nullptr);
+  const std::vector<FitPoint> before = fitted_points(sensitivity_base ? sensitivity_base->model : base, *cal, start,
+                                                     limits, &curves_before, differentiated);
   for (const FitPoint& p : before)
     if (!(p.sigma > 0.0))
       throw InputError(
@@ -212,7 +247,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
       if (!p.held_out && p.gradient.size() != cal->parameters.size())
         numeric_reason = fmt::format("no sensitivities for '{}' of '{}'", p.label, p.set);
   const bool analytic = numeric_reason.empty();
-  const CalibratedCase& model = analytic ? *sensitivity_base : base;
+  const CalibratedCase& model = analytic ? sensitivity_base->model : base;
   // A run whose Jacobian is not asked for (a trial step, a central difference) runs the case
   // without the sensitivities the analytic Jacobian added: the same values, none of their cost.
   // Held-out curves are predicted at the start and at the identified values, never fitted: the
@@ -224,13 +259,22 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
     return f;
   }();
   const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
-    return fitted_points(gradients ? fit_model : fit_base, fit_spec, values, limits, nullptr, gradients);
+    return fitted_points(gradients ? fit_model : fit_base, fit_spec, values, limits, nullptr,
+                         gradients ? differentiated : nullptr);
   };
   const auto fitted = std::count_if(before.begin(), before.end(), [](const FitPoint& p) { return !p.held_out; });
-  CalibrationOutcome out = fit_parameters(*cal, evaluate, analytic, static_cast<int>(fitted), progress);
+  std::vector<bool> numeric_columns;
+  if (analytic)
+    for (bool d : sensitivity_base->differentiated) numeric_columns.push_back(!d);
+  CalibrationOutcome out =
+      fit_parameters(*cal, evaluate, analytic, static_cast<int>(fitted), progress, numeric_columns);
   out.before = before;
   out.curves_before = std::move(curves_before);
-  out.derivatives = analytic ? fmt::format("analytic (implicit function theorem, hbm/sensitivity.hpp){}",
+  const std::string mixed = analytic && !sensitivity_base->numeric.empty()
+                                ? fmt::format(", central differences (relative step {:g}) for the columns of {}",
+                                              cal->derivative_step, fmt::join(sensitivity_base->numeric, "; "))
+                                : std::string();
+  out.derivatives = analytic ? fmt::format("analytic (implicit function theorem, hbm/sensitivity.hpp){}{}", mixed,
                                            out.jacobian_fallbacks == 0
                                                ? ""
                                                : fmt::format("; {} Jacobians by central differences, relative step "

@@ -262,11 +262,16 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
                           "(2 pi f)^{} and its phase moved by -{} deg",
                           d.data.derivative == 1 ? "velocity" : "acceleration", d.data.units.at("amplitude").symbol,
                           d.data.derivative, 90 * d.data.derivative));
+  const bool any_linear =
+      std::any_of(o.spec.parameters.begin(), o.spec.parameters.end(),
+                  [](const CalibrationParameter& p) { return p.scale == CalibrationParameter::Scale::linear; });
+  const std::string fit_space =
+      any_linear ? "the fit values: log, and value / (upper - lower) for the parameters marked linear" : "log space";
   if (o.starts.size() > 1) {
     md << fmt::format(
-        "## Starts\n\n{} starts (the case's values, then a Latin hypercube in log space, seed {}); start {} is "
+        "## Starts\n\n{} starts (the case's values, then a Latin hypercube in {}, seed {}); start {} is "
         "reported.\n\n",
-        o.starts.size(), o.spec.seed, o.best + 1);
+        o.starts.size(), fit_space, o.spec.seed, o.best + 1);
     md << "| start | converged | cost at start | final cost | iterations |\n|---|---|---|---|---|\n";
     for (size_t s = 0; s < o.starts.size(); ++s)
       md << fmt::format("| {} | {} | {:.6g} | {:.6g} | {} |\n", s + 1, o.starts[s].converged ? "yes" : "no",
@@ -277,7 +282,8 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
         "|\n|---|---|---|---|---|---|\n";
   for (size_t i = 0; i < o.values.size(); ++i) {
     const auto& p = o.spec.parameters[i];
-    md << fmt::format("| `{}` | {:.6g} | {:.6g} | {} | {:.6g} | {:.6g} |\n", p.path, p.start, o.values[i],
+    md << fmt::format("| `{}`{} | {:.6g} | {:.6g} | {} | {:.6g} | {:.6g} |\n", p.path,
+                      p.scale == CalibrationParameter::Scale::linear ? " (linear)" : "", p.start, o.values[i],
                       std::isnan(o.std_devs[i]) ? std::string("not identified") : fmt::format("{:.3g}", o.std_devs[i]),
                       p.lower, p.upper);
   }
@@ -295,7 +301,8 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     }
   }
   if (!o.weakest_profile.empty()) {
-    md << "\n## Weakest direction\n\nThe cost along the covariance's largest axis (log values:";
+    md << fmt::format("\n## Weakest direction\n\nThe cost along the covariance's largest axis ({}:",
+                      any_linear ? "fit values" : "log values");
     for (size_t i = 0; i < o.weakest_direction.size(); ++i)
       md << fmt::format("{} {:+.3f} `{}`", i ? "," : "", o.weakest_direction[i], o.spec.parameters[i].path);
     md << "), t standard deviations from the optimum; a quadratic cost rises as predicted.\n\n| t |";

@@ -220,7 +220,12 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const std::string damping =
       spec.damping_matrix ? "damping matrix given in the case"
       : spec.damping.kind == FrfDamping::Kind::modal
-          ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
+          ? spec.damping.mode_zetas.empty()
+                ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
+                : fmt::format(
+                      "modal damping per mode, zeta = {} from the lowest mode up (the modes above take the "
+                      "last)",
+                      fmt::join(spec.damping.mode_zetas, ", "))
           : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
                         g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]),
                         g(spec.damping.rayleigh_hz[1]));

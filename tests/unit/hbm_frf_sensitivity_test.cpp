@@ -9,7 +9,7 @@
 //   - The FRF round trip of curve_identification_test.cpp (same data, seeds and start values)
 //     fitted with analytic derivatives recovers kt, mu and zeta within 2 sigma with fewer model
 //     evaluations than central differences; with a parameter the analysis cannot differentiate,
-//     "auto" falls back to central differences and says why.
+//     "auto" takes that column by central differences and says why.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -132,6 +132,44 @@ TEST_F(HbmFrfSensitivity, LumpedMatrixDlogColumnsAgreeWithCentralDifferencesOfWh
   expect_dlog_columns_match_whole_runs({"analysis.model.stiffness.0.0", "analysis.model.mass.0.0"}, dir_ / "case.toml");
 }
 
+// The oscillator written as a modal model (frequency 1e3 / (2 pi) Hz and modal mass 1 kg: the same
+// K and M) with its damping given per mode: the modal frequency (K alone, twice its log-derivative),
+// the modal mass (M and K together) and the mode's own ratio meet whole runs.
+TEST_F(HbmFrfSensitivity, ModalModelDlogColumnsAgreeWithCentralDifferencesOfWholeRuns) {
+  const auto modal = [](std::string text) {
+    const auto replace = [&](const std::string& from, const std::string& to) {
+      const size_t at = text.find(from);
+      if (at == std::string::npos) throw std::logic_error("oscillator case without " + from);
+      text.replace(at, from.size(), to);
+    };
+    replace("stiffness = [[1.0e6]]\nmass = [[1.0]]", "frequency_hz = [159.15494309189535]\nmodal_mass = [1.0]");
+    replace("modal_damping = 0.01", "modal_damping = [0.01]");
+    return text;
+  };
+  const std::vector<std::string> paths = {"analysis.model.frequency_hz.0", "analysis.model.modal_mass.0",
+                                          "analysis.modal_damping.0"};
+  std::string list = "sensitivities = [";
+  for (const std::string& p : paths) list += "\"" + p + "\", ";
+  list += "]";
+  const std::filesystem::path file = dir_ / "case.toml";
+  const ResultTables analytic = run(toml::parse(modal(oscillator_case("[0.01, 3.0]", list))), file);
+  const toml::table plain = toml::parse(modal(oscillator_case("[0.01, 3.0]", "")));
+  for (const std::string& path : paths) {
+    const CentralDifferences fd(plain, path, file);
+    for (const char* level : {"frf_0.01", "frf_3"}) {
+      const ResultTable& a = analytic.at(level);
+      for (const char* q : {"A.x_amp_m", "A.x_phase_deg"}) {
+        const Eigen::VectorXd exact = column(a, std::string(q) + "_dlog_" + path);
+        ASSERT_TRUE(exact.allFinite()) << level << " " << q << " " << path;
+        const double scale = std::string(q) == "A.x_amp_m" ? column(a, q).cwiseAbs().maxCoeff() : 1.0;
+        EXPECT_GT(exact.cwiseAbs().maxCoeff() / scale, 1e-3) << "a column that moves: " << path;
+        EXPECT_LT(fd.error(level, q, exact) / scale, q == std::string("A.x_amp_m") ? 1e-6 : 1e-4)
+            << level << " " << q << " " << path;
+      }
+    }
+  }
+}
+
 // The two-blade reduced model with the rigid underplatform damper of cases/thesis/table11_calibrate_contact.toml
 // (three contacts of one law, CF = 300 N), at a slipping (300 N) and a nearly stuck (30 N) level.
 std::string damper_case(const std::string& analysis_extra) {
@@ -245,16 +283,28 @@ std::string write_round_trip_data(const std::filesystem::path& dir, unsigned see
   return blocks;
 }
 
-TEST_F(HbmFrfSensitivity, AutoFallsBackToCentralDifferencesForAParameterWithoutSensitivity) {
+// A parameter the analysis does not differentiate takes its column by central differences (named
+// with why) beside the exact ones; with none differentiated the whole Jacobian is differences.
+TEST_F(HbmFrfSensitivity, AutoTakesCentralDifferencesForTheColumnOfAParameterWithoutSensitivity) {
   const std::string blocks = write_round_trip_data(dir_, 3u);
   write(round_trip_case(5.0e5, 0.8, 0.03, R"([calibration]
 parameters = [{ path = "analysis.contact.0.kt", lower = 1.0e5, upper = 1.0e7 },
               { path = "analysis.forces.0.amplitude", lower = 0.5, upper = 2.0 }]
 max_iterations = 1
 )" + blocks));
-  const CalibrationOutcome out = calibrate_case(dir_ / "case.toml");
-  EXPECT_EQ(out.derivatives.rfind("central differences", 0), 0u) << out.derivatives;
-  EXPECT_NE(out.derivatives.find("analysis.forces.0.amplitude"), std::string::npos) << out.derivatives;
+  const CalibrationOutcome mixed = calibrate_case(dir_ / "case.toml");
+  EXPECT_EQ(mixed.derivatives.rfind("analytic", 0), 0u) << mixed.derivatives;
+  EXPECT_NE(mixed.derivatives.find("central differences (relative step 0.0001) for the columns of "
+                                   "'analysis.forces.0.amplitude': not differentiated"),
+            std::string::npos)
+      << mixed.derivatives;
+  write(round_trip_case(5.0e5, 0.8, 0.03, R"([calibration]
+parameters = [{ path = "analysis.forces.0.amplitude", lower = 0.5, upper = 2.0 }]
+max_iterations = 1
+)" + blocks));
+  const CalibrationOutcome numeric = calibrate_case(dir_ / "case.toml");
+  EXPECT_EQ(numeric.derivatives.rfind("central differences", 0), 0u) << numeric.derivatives;
+  EXPECT_NE(numeric.derivatives.find("analysis.forces.0.amplitude"), std::string::npos) << numeric.derivatives;
 }
 
 class AnalyticRoundTrip : public HbmFrfSensitivity, public ::testing::WithParamInterface<unsigned> {};

@@ -149,3 +149,41 @@ TEST(IwanLaw, RejectsAnExponentOutsideMinusOneToZeroAndTooFewSliders) {
 
 }  // namespace
 }  // namespace bb::contact
+
+namespace bb::contact {
+namespace {
+
+// chi and beta are the law's own parameters: a calibration reads them by name and varies them by
+// building the same law with one changed, which dissipates as a law built so from the start and
+// refuses values outside its domain; a Jenkins point (no distribution) has none.
+TEST(IwanLaw, ChiAndBetaAreItsOwnParametersReadAndVariedByName) {
+  const IwanDistribution law(IwanParameters{.chi = -0.5, .beta = 0.2, .sliders = 32});
+  EXPECT_EQ(law.parameter_names(), (std::vector<std::string>{"chi", "beta"}));
+  EXPECT_EQ(law.parameter("chi"), -0.5);
+  EXPECT_EQ(law.parameter("beta"), 0.2);
+  const auto varied = law.with_parameter("chi", -0.3);
+  const IwanDistribution fresh(IwanParameters{.chi = -0.3, .beta = 0.2, .sliders = 32});
+  EXPECT_EQ(varied->parameter("chi"), -0.3);
+  EXPECT_EQ(varied->parameter("beta"), 0.2);
+  ASSERT_EQ(varied->shares().size(), fresh.shares().size());
+  for (size_t i = 0; i < fresh.shares().size(); ++i) {
+    EXPECT_EQ(varied->shares()[i].stiffness, fresh.shares()[i].stiffness);
+    EXPECT_EQ(varied->shares()[i].load, fresh.shares()[i].load);
+  }
+  EXPECT_EQ(*varied->closed_form_energy(kPoint, 1e-5), *fresh.closed_form_energy(kPoint, 1e-5));
+  EXPECT_NE(*varied->closed_form_energy(kPoint, 1e-5), *law.closed_form_energy(kPoint, 1e-5));
+  EXPECT_EQ(law.with_parameter("beta", 0.5)->parameter("beta"), 0.5);
+  EXPECT_EQ(law.parameter("chi"), -0.5);  // the law itself is unchanged
+  EXPECT_THROW((void)law.with_parameter("chi", 0.1), std::invalid_argument);
+  EXPECT_THROW((void)law.with_parameter("chi", -1.0), std::invalid_argument);
+  EXPECT_THROW((void)law.with_parameter("beta", -0.1), std::invalid_argument);
+  try {
+    (void)law.parameter("gamma");
+    ADD_FAILURE() << "no such parameter";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("chi, beta"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace bb::contact

@@ -2,6 +2,7 @@
 // trade off exactly get no standard deviation and a warning naming them, never a confident zero.
 #include "identify/least_squares_fit.hpp"
 
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -188,6 +189,114 @@ TEST(LeastSquaresFit, AStartTheModelCannotRunAtIsReportedNotTakenForACheaperMini
   EXPECT_NEAR(o.values[0], 0.5, 1e-6);
   EXPECT_TRUE(warned(o, "could not be evaluated at its start values"));
   EXPECT_FALSE(warned(o, "reached a lower cost"));
+}
+
+}  // namespace
+}  // namespace bb
+
+namespace bb {
+namespace {
+
+// On a linear scale the fit varies p / (upper - lower) itself: a parameter whose range holds zero
+// and negative values (an Iwan exponent) is identified, and for a model linear in its parameters
+// the cost is exactly quadratic in the fit values, so the weakest direction's profile rises as
+// predicted at each t (on a log scale only the mean of -t and +t does), and the standard
+// deviations are the closed form's sqrt(diag((J^T J)^-1)) of the value.
+TEST(LeastSquaresFit, ALinearScaleFitsAParameterThatCrossesZeroWithTheClosedFormCovariance) {
+  const auto line = [](const std::vector<double>& v, int k) { return v[0] * k + v[1] * k * k; };
+  CalibrationSpec spec = spec_of({"a", "b"});
+  spec.parameters[0].lower = -2.0;
+  spec.parameters[0].upper = 1.0;
+  spec.parameters[0].start = 0.0;
+  spec.parameters[0].scale = CalibrationParameter::Scale::linear;
+  spec.parameters[1].start = 1.0;
+  spec.starts = 3;
+  const std::vector<double> truth{-0.5, 3.0};
+  const auto noisy = [&](const std::vector<double>& v, bool) {
+    std::vector<FitPoint> points;
+    for (int k = 1; k <= 5; ++k) {
+      FitPoint p;
+      p.set = "curve";
+      p.x = k;
+      p.measured = line(truth, k) + (k % 2 ? 0.05 : -0.05);
+      p.computed = line(v, k);
+      p.sigma = 0.1;
+      points.push_back(p);
+    }
+    return points;
+  };
+  const CalibrationOutcome o = fit_parameters(spec, noisy, false, 5);
+  ASSERT_TRUE(o.converged) << o.termination;
+  // The weighted least-squares solution and covariance of the linear model, in values.
+  Eigen::MatrixXd j(5, 2);
+  Eigen::VectorXd y(5);
+  for (int k = 1; k <= 5; ++k) {
+    j(k - 1, 0) = k / 0.1;
+    j(k - 1, 1) = k * k / 0.1;
+    y(k - 1) = (line(truth, k) + (k % 2 ? 0.05 : -0.05)) / 0.1;
+  }
+  const Eigen::Vector2d best = j.colPivHouseholderQr().solve(y);
+  EXPECT_NEAR(o.values[0], best(0), 1e-6);
+  EXPECT_NEAR(o.values[1], best(1), 1e-6);
+  EXPECT_LT(o.values[0], 0.0);
+  Eigen::Matrix2d c = (j.transpose() * j).inverse();
+  const double dof = 3.0, chi2 = (j * best - y).squaredNorm() / dof;
+  if (chi2 > 1.0) c *= chi2;  // the Birge ratio, as the fit scales it
+  EXPECT_NEAR(o.std_devs[0] / std::sqrt(c(0, 0)), 1.0, 1e-4);
+  // b stays on a log scale: its deviation maps through its value.
+  EXPECT_NEAR(o.std_devs[1] / std::sqrt(c(1, 1)), 1.0, 1e-4);
+  EXPECT_NEAR(o.correlation(0, 1), c(0, 1) / std::sqrt(c(0, 0) * c(1, 1)), 1e-4);
+  for (const CalibrationStart& s : o.starts) EXPECT_TRUE(s.start[0] >= -2.0 && s.start[0] <= 1.0);
+}
+
+TEST(LeastSquaresFit, ALinearScaleMapsValueAndFitValueBothWays) {
+  const CalibrationParameter chi{"analysis.contact.0.chi", -0.9, 0.0, -0.5, CalibrationParameter::Scale::linear};
+  EXPECT_DOUBLE_EQ(chi.from_fit(chi.to_fit(-0.37)), -0.37);
+  EXPECT_DOUBLE_EQ(chi.to_fit(-0.9) - chi.to_fit(0.0), -1.0);  // the range is one fit unit
+  EXPECT_DOUBLE_EQ(chi.value_per_fit(-0.37), 0.9);
+  const CalibrationParameter kt{"analysis.contact.0.kt", 1e3, 1e6, 1e4};
+  EXPECT_DOUBLE_EQ(kt.from_fit(kt.to_fit(2.5e4)), 2.5e4);
+  EXPECT_DOUBLE_EQ(kt.value_per_fit(2.5e4), 2.5e4);
+}
+
+}  // namespace
+}  // namespace bb
+
+namespace bb {
+namespace {
+
+// A model that differentiates some parameters and not others (an Iwan exponent beside the
+// stiffness): the columns it gives are taken, the others by central differences, two runs each;
+// the fit ends where the all-numeric fit ends, with fewer model runs, and without falling back.
+TEST(LeastSquaresFit, ColumnsTheModelDoesNotDifferentiateAreCentralDifferences) {
+  const auto line = [](const std::vector<double>& v, int k) { return v[0] * k + v[1] * k * k + v[2]; };
+  const std::vector<double> truth{2.0, 3.0, 1.5};
+  const auto model = [&](const std::vector<double>& v, bool gradients) {
+    std::vector<FitPoint> points;
+    for (int k = 1; k <= 6; ++k) {
+      FitPoint p;
+      p.set = "curve";
+      p.x = k;
+      p.measured = line(truth, k) * (1.0 + (k % 2 ? 0.01 : -0.01));
+      p.computed = line(v, k);
+      p.sigma = 0.01 * std::abs(p.measured);
+      // d r / d log p for a and c; b's entry is NaN, as calibrate_case leaves an undifferentiated column.
+      if (gradients) p.gradient = {v[0] * k / p.sigma, NAN, v[2] / p.sigma};
+      points.push_back(p);
+    }
+    return points;
+  };
+  CalibrationSpec spec = spec_of({"a", "b", "c"});
+  const CalibrationOutcome numeric = fit_parameters(spec, model, false, 6);
+  const CalibrationOutcome mixed = fit_parameters(spec, model, true, 6, {}, {false, true, false});
+  ASSERT_TRUE(numeric.converged) << numeric.termination;
+  ASSERT_TRUE(mixed.converged) << mixed.termination;
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(mixed.values[i] / numeric.values[i], 1.0, 1e-6) << i;
+    EXPECT_NEAR(mixed.std_devs[i] / numeric.std_devs[i], 1.0, 1e-4) << i;
+  }
+  EXPECT_EQ(mixed.jacobian_fallbacks, 0);
+  EXPECT_LT(mixed.residual_evaluations, numeric.residual_evaluations);
 }
 
 }  // namespace

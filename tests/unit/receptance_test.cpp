@@ -243,3 +243,34 @@ TEST(Receptance, ResponseScalesLinearlyFromMicroToMeganewtons) {
 
 }  // namespace
 }  // namespace bb
+
+namespace bb {
+namespace {
+
+// Damping per mode, as a modal test gives it: the modal matrix Phi^T C Phi is diag(2 zeta_r w_r)
+// with each mode's own ratio, and the direct solve then equals the modal superposition with those
+// ratios at every frequency.
+TEST(Receptance, PerModeDampingGivesEachModeItsOwnRatio) {
+  const Chain c = spring_chain({1.0, 2.0, 1.5}, {1.0e6, 5.0e5, 8.0e5, 0.0});
+  const Modes modes = dense_modes(c);
+  const Eigen::Vector3d zetas(0.002, 0.01, 0.03);
+  const Eigen::MatrixXd damping = modal_damping_matrix(c.stiffness, c.mass, zetas);
+  const Eigen::MatrixXd modal = modes.shapes.transpose() * damping * modes.shapes;
+  for (Eigen::Index r = 0; r < 3; ++r)
+    for (Eigen::Index s = 0; s < 3; ++s)
+      EXPECT_NEAR(modal(r, s), r == s ? 2.0 * zetas[r] * modes.omega[r] : 0.0, 1e-9 * modal.norm());
+  const ModalReceptance superposed = all_dofs(modes, zetas);
+  for (double w : {0.5 * modes.omega[0], modes.omega[0], modes.omega[1], modes.omega[2]}) {
+    const Eigen::MatrixXcd a = superposed.at(w), b = direct_matrix(c, damping, w);
+    EXPECT_LT((a - b).norm(), 1e-9 * a.norm()) << w;
+  }
+  // One ratio for all is the scalar form; a wrong count is refused.
+  EXPECT_LT((modal_damping_matrix(c.stiffness, c.mass, Eigen::Vector3d::Constant(0.02)) -
+             modal_damping_matrix(c.stiffness, c.mass, 0.02))
+                .norm(),
+            1e-12 * damping.norm());
+  EXPECT_THROW((void)modal_damping_matrix(c.stiffness, c.mass, Eigen::Vector2d(0.01, 0.02)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace bb

@@ -118,8 +118,9 @@ std::vector<HbmParameter> parse_sensitivities(TomlReader& r, const HbmSpec& s) {
     }
     if (!parameter)
       fail(
-          "not a supported path (analysis.contact.<i>.{kn,kt,mu,n0}, analysis.damper.{kt,mu}, analysis.modal_damping, "
-          "analysis.model.{stiffness,mass}.<i>.<j>)");
+          "not a supported path (analysis.contact.<i>.{kn,kt,mu,n0}, analysis.damper.{kt,mu}, "
+          "analysis.modal_damping[.<mode>], analysis.model.{stiffness,mass}.<i>.<j>, "
+          "analysis.model.{frequency_hz,modal_mass}.<i>)");
     if (const std::optional<std::string> why = unsupported_sensitivity(s, *parameter)) fail(*why);
     if (std::count(paths.begin(), paths.end(), path) > 1) fail("listed twice");
     out.push_back(*parameter);

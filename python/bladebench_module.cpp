@@ -1,0 +1,238 @@
+// The bladebench Python module: a case's result tables as NumPy arrays, a harmonic-balance sweep of
+// a user's reduced model with Jenkins contacts (matrices in, curves out), and the lowest modes of a
+// case's mesh with their completeness count. Errors are Python exceptions of the command line's
+// classes: InputError (exit class 2: bad input, with file:line:key, or an array of the wrong shape
+// or dtype, with the shape expected) and SolverError (exit class 3: a solver that did not converge).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <complex>
+#include <filesystem>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "analysis/run_analysis.hpp"
+#include "assembly/free_system.hpp"
+#include "cases/case_settings.hpp"
+#include "cases/case_spec.hpp"
+#include "common/errors.hpp"
+#include "hbm/harmonic_balance.hpp"
+#include "linalg/modal_solver.hpp"
+#include "model/build_model.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// "(3, 3)", "(n,)" for an expected shape (-1: any extent).
+std::string shape_text(const std::vector<py::ssize_t>& shape) {
+  std::string out = "(";
+  for (size_t i = 0; i < shape.size(); ++i)
+    out += (i ? ", " : "") + (shape[i] < 0 ? std::string("any") : std::to_string(shape[i]));
+  return out + (shape.size() == 1 ? ",)" : ")");
+}
+
+// The array `value` if it has the dtype T and the shape `expected`; else InputError naming the
+// argument, the expected dtype and shape and what came. No silent conversion: a float32 or an
+// integer array is refused, so that no precision or unit is lost on the way in.
+template <class T>
+py::array_t<T> checked_array(const py::handle& value, const std::string& name, const std::vector<py::ssize_t>& expected,
+                             const std::string& dtype) {
+  if (!py::isinstance<py::array>(value))
+    throw bb::InputError(name + ": expected a NumPy array of dtype " + dtype + " and shape " + shape_text(expected) +
+                         ", got " + std::string(py::str(py::type::of(value).attr("__name__"))));
+  const auto a = py::reinterpret_borrow<py::array>(value);
+  std::vector<py::ssize_t> got(a.shape(), a.shape() + a.ndim());
+  bool fits = got.size() == expected.size();
+  for (size_t i = 0; fits && i < got.size(); ++i) fits = expected[i] < 0 || got[i] == expected[i];
+  if (!a.dtype().is(py::dtype::of<T>()) || !fits)
+    throw bb::InputError(name + ": expected dtype " + dtype + " and shape " + shape_text(expected) + ", got dtype " +
+                         std::string(py::str(a.dtype())) + " and shape " + shape_text(got));
+  return py::reinterpret_borrow<py::array_t<T>>(a);
+}
+
+Eigen::MatrixXd square_matrix(const py::handle& value, const std::string& name, py::ssize_t n) {
+  const auto a = checked_array<double>(value, name, {n, n}, "float64").template unchecked<2>();
+  Eigen::MatrixXd m(n, n);
+  for (py::ssize_t i = 0; i < n; ++i)
+    for (py::ssize_t j = 0; j < n; ++j) m(i, j) = a(i, j);
+  if (!m.allFinite()) throw bb::InputError(name + ": every entry must be finite");
+  return m;
+}
+
+Eigen::RowVectorXd dof_row(const py::handle& value, const std::string& name, py::ssize_t n) {
+  const auto a = checked_array<double>(value, name, {n}, "float64").template unchecked<1>();
+  Eigen::RowVectorXd r(n);
+  for (py::ssize_t i = 0; i < n; ++i) r[i] = a(i);
+  if (!r.allFinite()) throw bb::InputError(name + ": every entry must be finite");
+  return r;
+}
+
+double law_number(const py::dict& contact, const char* key, const std::string& where, double fallback, bool required) {
+  if (!contact.contains(key)) {
+    if (required) throw bb::InputError(where + ": needs '" + key + "'");
+    return fallback;
+  }
+  return py::cast<double>(contact[key]);
+}
+
+// One Jenkins contact from {"tangential": a_t, "normal": a_n (optional), "kn", "kt", "mu", "n0"}.
+bb::friction::ContactElement contact_of(const py::handle& item, size_t index, py::ssize_t n) {
+  const std::string where = "contacts[" + std::to_string(index) + "]";
+  if (!py::isinstance<py::dict>(item))
+    throw bb::InputError(where +
+                         ": expected a dict with 'tangential', 'kt', 'mu', 'n0' (and optionally 'normal', 'kn')");
+  const auto c = py::reinterpret_borrow<py::dict>(item);
+  for (const auto& [key, _] : c) {
+    const std::string k = py::str(key);
+    if (k != "tangential" && k != "normal" && k != "kn" && k != "kt" && k != "mu" && k != "n0")
+      throw bb::InputError(where + ": unknown key '" + k + "' (tangential, normal, kn, kt, mu, n0)");
+  }
+  if (!c.contains("tangential")) throw bb::InputError(where + ": needs 'tangential', one weight per DOF");
+  bb::friction::ContactElement e;
+  e.tangential = dof_row(c["tangential"], where + ".tangential", n);
+  e.normal = c.contains("normal") ? dof_row(c["normal"], where + ".normal", n) : Eigen::RowVectorXd::Zero(n);
+  e.law = {.kn = law_number(c, "kn", where, 0.0, false),
+           .kt = law_number(c, "kt", where, 0.0, true),
+           .mu = law_number(c, "mu", where, 0.0, true),
+           .n0 = law_number(c, "n0", where, 0.0, true)};
+  return e;
+}
+
+py::array_t<double> to_numpy(const Eigen::MatrixXd& m) {
+  py::array_t<double> out({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols())});
+  auto o = out.mutable_unchecked<2>();
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j) o(i, j) = m(i, j);
+  return out;
+}
+
+// {table name: {"columns": [...], "values": 2-D array (rows x columns), "text": {column: [str]}}}.
+py::dict run_case(const std::string& case_file, const std::vector<std::string>& settings) {
+  toml::table root = bb::read_case_table(case_file);
+  bb::apply_settings(root, settings);
+  const bb::CaseSpec spec = bb::parse_case_table(root, case_file);
+  const bb::AnalysisResults results = bb::run_analysis(spec.analysis, bb::build_model(spec.model));
+  py::dict tables;
+  for (const auto& [name, t] : results.tables) {
+    py::dict text;
+    for (size_t c = 0; c < t.text_columns.size(); ++c) text[py::str(t.text_columns[c])] = t.text[c];
+    py::dict table;
+    table["columns"] = t.columns;
+    table["values"] = to_numpy(t.values);
+    table["text"] = text;
+    tables[py::str(name)] = table;
+  }
+  return tables;
+}
+
+// The first-harmonic amplitude of every DOF over the frequencies, each frequency solved from the
+// one before (natural continuation; a frequency that does not converge is marked and skipped).
+py::dict hbm_sweep(const py::handle& mass, const py::handle& stiffness, const py::handle& damping,
+                   const py::handle& force, const py::handle& frequencies_hz, const py::list& contacts, int harmonics,
+                   double tolerance) {
+  const py::ssize_t n = checked_array<double>(mass, "mass", {-1, -1}, "float64").shape(0);  // the model's DOFs
+  if (n < 1) throw bb::InputError("mass: the model needs at least one DOF");
+  if (harmonics < 1 || harmonics > 100) throw bb::InputError("harmonics: must lie in [1, 100]");
+  if (!(tolerance > 0.0 && tolerance < 1e-2)) throw bb::InputError("tolerance: must lie in (0, 1e-2)");
+  bb::friction::FrictionModel model;
+  model.mass = square_matrix(mass, "mass", n);
+  model.stiffness = square_matrix(stiffness, "stiffness", n);
+  model.damping = square_matrix(damping, "damping", n);
+  {
+    const auto f = checked_array<std::complex<double>>(force, "force", {n}, "complex128").unchecked<1>();
+    model.harmonic_load.resize(n);
+    for (py::ssize_t i = 0; i < n; ++i) model.harmonic_load[i] = f(i);
+  }
+  if (contacts.empty()) throw bb::InputError("contacts: needs at least one contact");
+  for (size_t k = 0; k < contacts.size(); ++k) model.contacts.push_back(contact_of(contacts[k], k, n));
+  const auto hz = checked_array<double>(frequencies_hz, "frequencies_hz", {-1}, "float64").unchecked<1>();
+  for (py::ssize_t i = 0; i < hz.shape(0); ++i)
+    if (!(hz(i) > 0.0) || !std::isfinite(hz(i))) throw bb::InputError("frequencies_hz: every frequency must be > 0");
+  std::optional<bb::hbm::HarmonicBalance> system;
+  try {
+    system.emplace(model, bb::hbm::HbmOptions{.harmonics = harmonics, .tolerance = tolerance});
+  } catch (const std::invalid_argument& e) {
+    throw bb::InputError(e.what());
+  }
+  const py::ssize_t count = hz.shape(0), coefficients = 2 * harmonics + 1;
+  py::array_t<double> amplitude({count, n}), coefficients_out({count, n, coefficients});
+  py::array_t<bool> converged(count);
+  auto a = amplitude.mutable_unchecked<2>();
+  auto q = coefficients_out.mutable_unchecked<3>();
+  auto ok = converged.mutable_unchecked<1>();
+  std::vector<std::string> failures;
+  std::optional<Eigen::VectorXd> previous;
+  for (py::ssize_t i = 0; i < count; ++i) {
+    const double omega = 2.0 * std::numbers::pi * hz(i);
+    const bb::hbm::HbmSolution s = bb::hbm::solve_at_frequency(*system, omega, previous);
+    ok(i) = s.converged;
+    if (!s.converged) {
+      failures.push_back(s.failure);
+      for (py::ssize_t d = 0; d < n; ++d) {
+        a(i, d) = NAN;
+        for (py::ssize_t c = 0; c < coefficients; ++c) q(i, d, c) = NAN;
+      }
+      continue;
+    }
+    previous = s.x;
+    const Eigen::MatrixXd all = system->recover(s.x, omega);  // rows: DOFs; columns: c0, a1, b1, ...
+    for (py::ssize_t d = 0; d < n; ++d) {
+      a(i, d) = std::hypot(all(d, 1), all(d, 2));
+      for (py::ssize_t c = 0; c < coefficients; ++c) q(i, d, c) = all(d, c);
+    }
+  }
+  py::dict out;
+  out["frequency_hz"] = py::array_t<double>(count, &hz(0));
+  out["amplitude"] = amplitude;
+  out["coefficients"] = coefficients_out;
+  out["converged"] = converged;
+  out["failures"] = failures;
+  return out;
+}
+
+// The lowest modes of the case's mesh (its [material], [mesh], boundary conditions), with the
+// completeness count: the eigenvalues below the last one counted by the inertia of K - sigma M.
+py::dict mesh_modes(const std::string& case_file, int count) {
+  if (count < 1 || count > 10000) throw bb::InputError("count: must lie in [1, 10000]");
+  const bb::CaseSpec spec = bb::parse_case_file(case_file);
+  if (spec.model.mesh.kind == bb::MeshSpec::Kind::none)
+    throw bb::InputError(case_file + ": the case has no mesh (a [mesh] section)");
+  const bb::FreeSystem system = bb::assemble_free_system(bb::build_model(spec.model));
+  bb::ModalOptions options;
+  options.n_modes = count;
+  const bb::ModalSolution modes = bb::lowest_modes(system.stiffness, system.mass, options);
+  const Eigen::VectorXd hz = modes.eigenvalues.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
+  py::dict out;
+  out["frequency_hz"] = py::array_t<double>(hz.size(), hz.data());
+  out["shapes"] = to_numpy(modes.shapes);
+  out["sturm_count"] = modes.sturm_count;
+  out["complete"] = modes.sturm_count == static_cast<int>(modes.eigenvalues.size());
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(bladebench, m) {
+  m.doc() =
+      "bladebench: harmonic balance with friction contacts, modes and validation cases (README.md, section Python)";
+  auto input_error = py::register_exception<bb::InputError>(m, "InputError", PyExc_ValueError);
+  auto solver_error = py::register_exception<bb::SolverError>(m, "SolverError", PyExc_RuntimeError);
+  input_error.attr("exit_code") = 2;  // the command line's exit code for the same failure
+  solver_error.attr("exit_code") = 3;
+  m.def("run_case", &run_case, py::arg("case_file"), py::arg("settings") = std::vector<std::string>{},
+        "Runs a case file's analysis; returns {table: {'columns', 'values' (2-D float64), 'text'}}. settings: "
+        "'dotted.key=VALUE' strings as `bladebench run --set`.");
+  m.def("hbm_sweep", &hbm_sweep, py::arg("mass"), py::arg("stiffness"), py::arg("damping"), py::arg("force"),
+        py::arg("frequencies_hz"), py::arg("contacts"), py::arg("harmonics") = 1, py::arg("tolerance") = 1e-9,
+        "Harmonic-balance sweep of a reduced model (n x n float64 M, K, C; complex128 force of n) with Jenkins "
+        "contacts; returns frequency_hz, amplitude (frequencies x n, first harmonic), coefficients (frequencies x "
+        "n x 2H+1: c0, a1, b1, ...), converged, failures.");
+  m.def("mesh_modes", &mesh_modes, py::arg("case_file"), py::arg("count") = 6,
+        "The lowest modes of a case's mesh: frequency_hz, shapes (free DOFs x count), sturm_count, complete.");
+}

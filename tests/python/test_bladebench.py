@@ -1,0 +1,112 @@
+"""The bladebench Python module against closed forms and the command line's own semantics.
+
+Run by ctest (test python.pytest) with PYTHONPATH at the built module and BLADEBENCH_SOURCE at the
+source tree.
+"""
+import math
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import bladebench
+
+SOURCE = pathlib.Path(os.environ.get("BLADEBENCH_SOURCE", pathlib.Path(__file__).resolve().parents[2]))
+CANTILEVER = str(SOURCE / "cases/verification/cantilever_modal_q4.toml")
+
+
+def oscillator(mu, force, frequencies, kt=1.0e6, harmonics=1):
+    """A 1 kg mass on 1e6 N/m with 10 N s/m and a Jenkins contact to the ground (n0 = 30 N)."""
+    return bladebench.hbm_sweep(
+        mass=np.array([[1.0]]), stiffness=np.array([[1.0e6]]), damping=np.array([[10.0]]),
+        force=np.array([force], dtype=complex), frequencies_hz=np.asarray(frequencies, dtype=float),
+        contacts=[{"tangential": np.array([1.0]), "kt": kt, "mu": mu, "n0": 30.0}], harmonics=harmonics)
+
+
+def linear_amplitude(k, force, frequencies):
+    w = 2 * math.pi * np.asarray(frequencies)
+    return abs(force) / np.abs(k - w**2 + 1j * w * 10.0)
+
+
+def test_a_stuck_contact_is_a_spring_in_parallel():
+    """Far below the slip force (mu n0 = 30 N) the contact sticks: the response is that of k + kt."""
+    f = np.linspace(150.0, 260.0, 45)
+    out = oscillator(mu=1.0, force=0.01, frequencies=f)
+    assert out["converged"].all()
+    assert out["amplitude"].shape == (45, 1)
+    np.testing.assert_allclose(out["amplitude"][:, 0], linear_amplitude(2.0e6, 0.01, f), rtol=1e-7)
+
+
+def test_a_contact_without_friction_carries_nothing():
+    """mu = 0: the slider slips freely and the oscillator is the linear one of k alone."""
+    f = np.linspace(120.0, 200.0, 33)
+    out = oscillator(mu=0.0, force=1.0, frequencies=f)
+    assert out["converged"].all()
+    np.testing.assert_allclose(out["amplitude"][:, 0], linear_amplitude(1.0e6, 1.0, f), rtol=1e-7)
+
+
+def test_stick_slip_puts_the_peak_between_the_free_and_the_stuck_resonance():
+    f = np.arange(140.0, 241.0, 1.0)
+    out = oscillator(mu=0.3, force=5.0, frequencies=f, harmonics=5)
+    assert out["converged"].all(), out["failures"]
+    peak = f[np.argmax(out["amplitude"][:, 0])]
+    free, stuck = math.sqrt(1.0e6) / (2 * math.pi), math.sqrt(2.0e6) / (2 * math.pi)
+    assert free < peak < stuck
+    assert out["coefficients"].shape == (f.size, 1, 11)  # c0, a1, b1, ..., a5, b5
+    first = out["coefficients"][:, 0, 1:3]
+    np.testing.assert_allclose(np.hypot(first[:, 0], first[:, 1]), out["amplitude"][:, 0], rtol=1e-12)
+
+
+def test_a_case_runs_and_its_frequencies_scale_with_the_square_root_of_the_modulus():
+    base = bladebench.run_case(CANTILEVER)
+    stiffer = bladebench.run_case(CANTILEVER, settings=["material.E=4.0e11"])
+    table = base["frequencies"]
+    column = table["columns"].index("frequency_hz")
+    assert table["values"].dtype == np.float64 and table["values"].shape[1] == len(table["columns"])
+    # f ~ sqrt(E / rho); to the eigensolver's convergence (Lanczos residuals, 2e-8 seen on mode 1).
+    np.testing.assert_allclose(stiffer["frequencies"]["values"][:, column] / table["values"][:, column],
+                               math.sqrt(2.0), rtol=1e-6)
+
+
+def test_mesh_modes_are_complete_and_those_of_the_case():
+    modes = bladebench.mesh_modes(CANTILEVER, count=4)
+    assert modes["complete"] and modes["sturm_count"] == 4
+    assert np.all(np.diff(modes["frequency_hz"]) > 0)
+    table = bladebench.run_case(CANTILEVER)["frequencies"]
+    hz = table["values"][:4, table["columns"].index("frequency_hz")]
+    np.testing.assert_allclose(modes["frequency_hz"], hz, rtol=1e-8)
+    shapes = modes["shapes"]
+    assert shapes.shape[1] == 4 and np.isfinite(shapes).all()
+
+
+def test_an_array_of_the_wrong_dtype_or_shape_is_refused_with_the_shape_expected():
+    with pytest.raises(bladebench.InputError, match=r"mass: expected dtype float64 and shape \(any, any\), "
+                                                    r"got dtype float32"):
+        bladebench.hbm_sweep(np.array([[1.0]], dtype=np.float32), np.array([[1.0]]), np.array([[0.0]]),
+                             np.array([1.0 + 0j]), np.array([10.0]), [{"tangential": np.array([1.0]),
+                                                                        "kt": 1.0, "mu": 0.1, "n0": 1.0}])
+    with pytest.raises(bladebench.InputError, match=r"stiffness: expected dtype float64 and shape \(1, 1\), "
+                                                    r"got dtype float64 and shape \(2, 2\)"):
+        bladebench.hbm_sweep(np.eye(1), np.eye(2), np.zeros((1, 1)), np.array([1.0 + 0j]), np.array([10.0]),
+                             [{"tangential": np.array([1.0]), "kt": 1.0, "mu": 0.1, "n0": 1.0}])
+    with pytest.raises(bladebench.InputError, match=r"force: expected dtype complex128 and shape \(1,\)"):
+        bladebench.hbm_sweep(np.eye(1), np.eye(1), np.zeros((1, 1)), np.array([1.0]), np.array([10.0]),
+                             [{"tangential": np.array([1.0]), "kt": 1.0, "mu": 0.1, "n0": 1.0}])
+    with pytest.raises(bladebench.InputError, match=r"contacts\[0\]: unknown key 'k_t'"):
+        bladebench.hbm_sweep(np.eye(1), np.eye(1), np.zeros((1, 1)), np.array([1.0 + 0j]), np.array([10.0]),
+                             [{"tangential": np.array([1.0]), "k_t": 1.0, "mu": 0.1, "n0": 1.0}])
+
+
+def test_errors_carry_the_command_lines_exit_classes_and_messages():
+    assert issubclass(bladebench.InputError, ValueError) and bladebench.InputError.exit_code == 2
+    assert issubclass(bladebench.SolverError, RuntimeError) and bladebench.SolverError.exit_code == 3
+    bad = SOURCE / "tests/bad_input/modal_model_frequency_count.toml"
+    with pytest.raises(bladebench.InputError, match=r"modal_model_frequency_count.toml:\d+: "
+                                                    r"'analysis.model.frequency_hz': expected one frequency per DOF"):
+        bladebench.run_case(str(bad))
+    with pytest.raises(bladebench.InputError, match="unknown.key"):
+        bladebench.run_case(CANTILEVER, settings=["unknown.key=1"])
+    # A contact law the harmonic balance refuses (negative stiffness) is bad input, not a crash.
+    with pytest.raises(bladebench.InputError, match="kt"):
+        oscillator(mu=0.3, force=1.0, frequencies=[150.0], kt=-1.0)

@@ -8,6 +8,7 @@
 
 #include "cases/parse_frf.hpp"
 #include "cases/read_measured_file.hpp"
+#include "common/stepped_order.hpp"
 #include "forced/hbm_level.hpp"
 #include "identify/measured_data.hpp"
 
@@ -42,14 +43,14 @@ std::vector<double> stepped_frequencies(TomlReader& r) {
   }
   if (f.empty()) r.fail("frequency_hz", "needs at least one frequency [Hz]");
   if (f.size() > kMaxPoints) r.fail("frequency_hz", fmt::format("{} points; at most {}", f.size(), kMaxPoints));
-  const bool down = f.size() > 1 && f[1] < f[0];
+  const std::optional<SteppedBreak> order = first_unstepped(f);
   for (size_t i = 0; i < f.size(); ++i) {
     if (!(f[i] > 0.0) || !std::isfinite(f[i]))
       r.fail("frequency_hz", fmt::format("every frequency must be positive [Hz], found {}", f[i]));
-    if (i > 0 && (down ? !(f[i] < f[i - 1]) : !(f[i] > f[i - 1])))
+    if (order && i == order->index)
       r.fail("frequency_hz", fmt::format("frequency {} Hz (entry {}) is not {} the one before ({} Hz): a stepped sine "
                                          "goes one way, up or down, without repeating a frequency",
-                                         f[i], i + 1, down ? "below" : "above", f[i - 1]));
+                                         f[i], i + 1, order->down ? "below" : "above", f[i - 1]));
   }
   return f;
 }

@@ -13,6 +13,7 @@
 #include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "common/input_number.hpp"
+#include "common/stepped_order.hpp"
 #include "identify/uff58.hpp"
 
 namespace bb {
@@ -335,13 +336,13 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
   if (kind == DataKind::frf) {
     // One stepped sine: up (increasing) or down (decreasing), as the rig stepped it.
     const Column& f = *find("frequency");
-    const bool down = n > 1 && f.written[1] < f.written[0];
-    for (size_t r = 1; r < n; ++r)
-      if (down ? !(f.written[r] < f.written[r - 1]) : !(f.written[r] > f.written[r - 1]))
-        throw fail(line_of(r),
-                   fmt::format("frequency {} {} is not {} the previous row's {} {} (rows must follow one "
-                               "stepped sine, up or down, without repeated frequencies)",
-                               f.written[r], f.unit.symbol, down ? "below" : "above", f.written[r - 1], f.unit.symbol));
+    if (const auto b = first_unstepped(f.written)) {
+      const size_t r = b->index;
+      throw fail(line_of(r), fmt::format("frequency {} {} is not {} the previous row's {} {} (rows must follow one "
+                                         "stepped sine, up or down, without repeated frequencies)",
+                                         f.written[r], f.unit.symbol, b->down ? "below" : "above", f.written[r - 1],
+                                         f.unit.symbol));
+    }
     if (find("force_phase") && !find("force"))
       throw fail(header_line, "column 'force_phase' needs the column 'force' (the force it is the phase of)");
     if (find("force_phase") && !find("phase"))

@@ -11,6 +11,7 @@
 
 #include "common/csv_reader.hpp"
 #include "common/errors.hpp"
+#include "common/stepped_order.hpp"
 #include "common/user_text.hpp"
 
 namespace bb {
@@ -228,7 +229,7 @@ MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) 
   d.kind = DataKind::frf;
   Eigen::VectorXd frequency(n), amplitude(n), phase(n);
   bool complex = false;
-  const bool down = n > 1 && f.abscissa[1] < f.abscissa[0];  // one stepped sine, up or down
+  const std::optional<SteppedBreak> order = first_unstepped(f.abscissa);  // one stepped sine, up or down
   for (Eigen::Index i = 0; i < n; ++i) {
     const size_t k = static_cast<size_t>(i);
     frequency[i] = f.abscissa[k] * f.abscissa_unit.to_si;
@@ -240,11 +241,11 @@ MeasuredData uff58_frf(const Uff58Function& f, const fs::path& file, int index) 
       return fmt::format("{}:{}: dataset 58 #{}, record 12, value {}", file.string(), f.line, index, i + 1);
     };
     if (!(amplitude[i] > 0.0)) throw InputError(fmt::format("{}: the amplitude is zero", where()));
-    if (i > 0 && !(down ? frequency[i] < frequency[i - 1] : frequency[i] > frequency[i - 1]))
+    if (order && k == order->index)
       throw InputError(
           fmt::format("{}: frequency {} Hz is not {} the previous value's {} Hz (values follow one "
                       "stepped sine, up or down, without repeated frequencies)",
-                      where(), frequency[i], down ? "below" : "above", frequency[i - 1]));
+                      where(), frequency[i], order->down ? "below" : "above", frequency[i - 1]));
   }
   d.columns["frequency"] = frequency;
   d.units["frequency"] = f.abscissa_unit;

@@ -1,6 +1,6 @@
 set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
 set output 'mode3.svg'
-set multiplot layout 1,2 title 'Mode 3: 259.6690 Hz (displacements x 0.221)'
+set multiplot layout 1,2 title 'Mode 3: 259.6690 Hz (displacements x 0.222)'
 set size ratio -1
 set key off
 set title 'front (x-y)'

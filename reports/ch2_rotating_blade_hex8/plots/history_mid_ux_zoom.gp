@@ -6,4 +6,4 @@ set ylabel 'u_x [m]'
 set grid
 set key bottom right
 set xrange [0:0.0855397]
-plot 'history_mid_ux_zoom.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_x', -3.96418614671e-08 with lines dt 2 lc rgb '#bf1f1f' title 'steady centrifugal deflection'
+plot 'history_mid_ux_zoom.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_x', -3.96418614662e-08 with lines dt 2 lc rgb '#bf1f1f' title 'steady centrifugal deflection'

@@ -5,4 +5,4 @@ set xlabel 'time [s]'
 set ylabel 'u_x [m]'
 set grid
 set key bottom right
-plot 'history_tip_ux.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_x', -1.89091504343e-09 with lines dt 2 lc rgb '#bf1f1f' title 'steady centrifugal deflection'
+plot 'history_tip_ux.dat' using 1:2 with lines lc rgb '#1f5fbf' title 'u_x', -1.89091504028e-09 with lines dt 2 lc rgb '#bf1f1f' title 'steady centrifugal deflection'

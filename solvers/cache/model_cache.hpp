@@ -18,6 +18,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "cache/cache_use.hpp"
 #include "cache/content_key.hpp"
 
 namespace bb {
@@ -25,7 +26,7 @@ namespace bb {
 struct ModelCacheSettings {
   std::filesystem::path folder;
   std::uintmax_t max_bytes = std::uintmax_t{4} << 30;  // least recently used entries go beyond this
-  double min_build_seconds = 1.0;  // cheaper results are not worth an entry (and its disk space)
+  double min_build_seconds = 1.0;                      // cheaper results are not worth an entry (and its disk space)
 };
 
 // nullopt turns the cache off (the default of a program that never calls this).
@@ -35,15 +36,6 @@ const std::optional<ModelCacheSettings>& model_cache_settings();
 // The folder the CLI uses unless told otherwise: $BLADEBENCH_CACHE_DIR, else
 // $XDG_CACHE_HOME/bladebench, else $HOME/.cache/bladebench; nullopt when none is set.
 std::optional<std::filesystem::path> default_model_cache_folder();
-
-// What a lookup did, for the report.
-struct CacheUse {
-  enum class Outcome { off, loaded, stored, not_stored };
-  Outcome outcome = Outcome::off;
-  double seconds = 0.0;        // to load or to store the entry
-  double build_seconds = 0.0;  // to compute it, here or in the run that stored it
-  std::string note;            // why the cache was not used, or an entry was rebuilt or not written
-};
 
 // One entry, locked for as long as the object lives (when the cache is on).
 class CacheEntry {

@@ -3,7 +3,7 @@
 // K, M, every modal option but the number of modes, and the program itself: an entry holding more
 // modes serves a request for fewer; one holding fewer is replaced by the larger solution.
 #pragma once
-#include "cache/model_cache.hpp"
+#include "cache/cache_use.hpp"
 #include "linalg/modal_solver.hpp"
 
 namespace bb {

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "cache/model_cache.hpp"
+#include "cache/cache_use.hpp"
 #include "linalg/spd_factor.hpp"
 #include "reduction/reduced_model.hpp"
 

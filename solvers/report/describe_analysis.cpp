@@ -8,7 +8,7 @@
 #include <limits>
 #include <numbers>
 
-#include "cache/model_cache.hpp"
+#include "cache/cache_use.hpp"
 #include "report/describe_cyclic.hpp"
 #include "report/describe_hbm.hpp"
 

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "analysis/hbm_analysis.hpp"
-#include "cache/model_cache.hpp"
+#include "cache/cache_use.hpp"
 #include "report/run_record.hpp"
 
 namespace bb {

@@ -12,6 +12,7 @@
 #include "common/seconds_since.hpp"
 #include "forced/linear_model.hpp"
 #include "frf/receptance.hpp"
+#include "linalg/dense_eigen.hpp"
 #include "reduction/reduced_model_io.hpp"
 
 namespace bb {
@@ -122,10 +123,9 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
     r.in.push_back(index(forces[j].dof));
     r.force[static_cast<Eigen::Index>(j)] = forces[j].amplitude;
   }
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(m.stiffness, m.mass);
-  if (eig.info() != Eigen::Success)
-    throw SolverError(fmt::format("reduced model '{}': its eigenproblem failed", rom.name));
-  const Eigen::VectorXd omega = eig.eigenvalues().array().max(0.0).sqrt();
+  const DenseEigen<double> eig = symmetric_eigen(m.stiffness, m.mass);
+  if (!eig.ok) throw SolverError(fmt::format("reduced model '{}': its eigenproblem failed", rom.name));
+  const Eigen::VectorXd omega = eig.values.array().max(0.0).sqrt();
   r.outcome.frequencies_hz = omega / kTwoPi;
   if (rom.method == RomSpec::Method::modal) {
     ModalReceptance h;
@@ -134,9 +134,8 @@ RomResponse reduced_response(const Model& model, const FreeSystem& system, const
     h.shapes_out.resize(static_cast<Eigen::Index>(r.out.size()), omega.size());
     h.shapes_in.resize(static_cast<Eigen::Index>(r.in.size()), omega.size());
     for (size_t i = 0; i < r.out.size(); ++i)
-      h.shapes_out.row(static_cast<Eigen::Index>(i)) = eig.eigenvectors().row(r.out[i]);
-    for (size_t j = 0; j < r.in.size(); ++j)
-      h.shapes_in.row(static_cast<Eigen::Index>(j)) = eig.eigenvectors().row(r.in[j]);
+      h.shapes_out.row(static_cast<Eigen::Index>(i)) = eig.vectors.row(r.out[i]);
+    for (size_t j = 0; j < r.in.size(); ++j) h.shapes_in.row(static_cast<Eigen::Index>(j)) = eig.vectors.row(r.in[j]);
     r.modal = std::move(h);
   } else {
     r.damping = damping_matrix(spec.damping, m);

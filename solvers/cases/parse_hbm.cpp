@@ -13,6 +13,7 @@
 #include "cases/parse_frf.hpp"
 #include "cases/parse_friction_law.hpp"
 #include "cases/parse_stepped_sine.hpp"
+#include "linalg/dense_eigen.hpp"
 
 namespace bb {
 namespace {
@@ -372,7 +373,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
           1e-8 * s.damping_matrix->cwiseAbs().maxCoeff())
         m.fail("damping", "must be symmetric");
       // Negative damping feeds energy in: no steady forced response exists to balance.
-      const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(*s.damping_matrix).eigenvalues();
+      const Eigen::VectorXd eig = symmetric_eigen(*s.damping_matrix, false).values;
       if (eig.size() > 0 && eig.minCoeff() < -1e-12 * std::max(eig.cwiseAbs().maxCoeff(), 1e-300))
         m.fail("damping",
                fmt::format("must be positive semi-definite (negative damping); its smallest eigenvalue is {:.6g}",

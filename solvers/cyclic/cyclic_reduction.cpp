@@ -1,6 +1,5 @@
 #include "cyclic/cyclic_reduction.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -8,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "cyclic/cyclic_projection.hpp"
+#include "linalg/dense_eigen.hpp"
 #include "linalg/real_form.hpp"
 #include "reduction/craig_bampton.hpp"
 
@@ -95,10 +95,10 @@ SectorReduction cyclic_craig_bampton(const Sparse& stiffness, const Sparse& mass
     Eigen::MatrixXcd q = complex_modes(recovery.rightCols(2 * pairs), mc, pairs);
     // Rayleigh-Ritz in their span: exact eigenvectors of the Hermitian problem, not mixtures of a pair.
     const Eigen::MatrixXcd kq = hermitian_part(q.adjoint() * (k * q)), mq = hermitian_part(q.adjoint() * (mc * q));
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> ritz(kq, mq);
-    if (ritz.info() != Eigen::Success) throw SolverError("cyclic Craig-Bampton: the Rayleigh-Ritz step failed");
-    basis.rightCols(pairs) = q * ritz.eigenvectors();
-    out.mode_frequencies_hz = ritz.eigenvalues().array().max(0.0).sqrt() / (2 * std::numbers::pi);
+    const DenseEigen<std::complex<double>> ritz = symmetric_eigen(kq, mq);
+    if (!ritz.ok) throw SolverError("cyclic Craig-Bampton: the Rayleigh-Ritz step failed");
+    basis.rightCols(pairs) = q * ritz.vectors;
+    out.mode_frequencies_hz = ritz.values.array().max(0.0).sqrt() / (2 * std::numbers::pi);
   }
   out.stiffness = hermitian_part(basis.adjoint() * (k * basis));
   out.mass = hermitian_part(basis.adjoint() * (mc * basis));

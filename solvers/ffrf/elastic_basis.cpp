@@ -1,6 +1,5 @@
 #include "ffrf/elastic_basis.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "linalg/dense_eigen.hpp"
 #include "linalg/modal_solver.hpp"
 #include "linalg/spd_factor.hpp"
 
@@ -48,9 +48,9 @@ Modes modes_at_rest(const RotatingBody& body, int n_modes) {
   const int n = body.n_free();
   if (n <= kDenseEigenLimit || 2 * n_modes > n) {
     const Eigen::MatrixXd k(body.stiffness), m(body.mass);
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k, m);
-    if (eig.info() != Eigen::Success) throw SolverError("modal elastic basis: dense eigensolver failed");
-    return {eig.eigenvectors().leftCols(n_modes), eig.eigenvalues().head(n_modes)};
+    const DenseEigen<double> eig = symmetric_eigen(k, m);
+    if (!eig.ok) throw SolverError("modal elastic basis: dense eigensolver failed");
+    return {eig.vectors.leftCols(n_modes), eig.values.head(n_modes)};
   }
   ModalOptions options;
   options.n_modes = n_modes;

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "common/errors.hpp"
+#include "linalg/dense_eigen.hpp"
 
 namespace bb::ffrf {
 namespace {
@@ -44,10 +45,9 @@ DenseOperators dense_operators(const ProjectedBody& body, const RotatingModesOpt
 Eigen::VectorXcd state_space_eigenvalues(const DenseOperators& ops, double speed, const RotatingModesOptions& o) {
   const double s = o.stiffening ? 1.0 : 0.0, w2 = speed * speed;
   const Eigen::MatrixXd k_eff = ops.k + (s * w2) * ops.ks - w2 * ops.mp;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> sym(k_eff, ops.m);
-  if (sym.info() != Eigen::Success)
-    throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
-  const Eigen::VectorXd lambda = sym.eigenvalues();
+  const DenseEigen<double> sym = symmetric_eigen(k_eff, ops.m);
+  if (!sym.ok) throw SolverError(fmt::format("rotating modes at {} rad/s: eigensolver failed", speed));
+  const Eigen::VectorXd lambda = sym.values;
   const Eigen::Index n = lambda.size();
   Eigen::VectorXcd out(2 * n);
   if (!o.coriolis || speed == 0.0) {  // s = +-sqrt(-lambda): purely imaginary or a real pair
@@ -58,7 +58,7 @@ Eigen::VectorXcd state_space_eigenvalues(const DenseOperators& ops, double speed
     }
     return out;
   }
-  const Eigen::MatrixXd& psi = sym.eigenvectors();
+  const Eigen::MatrixXd& psi = sym.vectors;
   const Eigen::MatrixXd c = psi.transpose() * ((2.0 * speed) * ops.g) * psi;
   const double w_floor = 1e-12 * std::sqrt(lambda.cwiseAbs().maxCoeff());
   Eigen::VectorXd w(n);
@@ -189,7 +189,7 @@ double divergence_speed(const ProjectedBody& body, bool stiffening) {
   const Eigen::MatrixXd li = llt.matrixL().solve(Eigen::MatrixXd::Identity(k.rows(), k.cols()));
   Eigen::MatrixXd b = li * soft * li.transpose();
   b = 0.5 * (b + b.transpose()).eval();
-  const double mu = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(b, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+  const double mu = symmetric_eigen(b, false).values.maxCoeff();
   return mu > 0.0 ? 1.0 / std::sqrt(mu) : std::numeric_limits<double>::infinity();
 }
 

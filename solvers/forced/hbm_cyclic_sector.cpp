@@ -20,6 +20,7 @@
 #include "forced/hbm_level.hpp"
 #include "forced/linear_model.hpp"
 #include "frf/receptance.hpp"
+#include "linalg/dense_eigen.hpp"
 
 namespace bb {
 namespace {
@@ -66,10 +67,10 @@ Eigen::MatrixXcd hermitian_damping(const FrfDamping& damping, const Eigen::Matri
     const RayleighCoefficients c = rayleigh_of(damping);
     return c.alpha * m + c.beta * k;
   }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> eig(k, m);
-  if (eig.info() != Eigen::Success) throw SolverError("cyclic sector: the modes of a nodal diameter failed");
-  const Eigen::VectorXd w = eig.eigenvalues().array().max(0.0).sqrt();
-  const Eigen::MatrixXcd mp = m * eig.eigenvectors();
+  const DenseEigen<std::complex<double>> eig = symmetric_eigen(k, m);
+  if (!eig.ok) throw SolverError("cyclic sector: the modes of a nodal diameter failed");
+  const Eigen::VectorXd w = eig.values.array().max(0.0).sqrt();
+  const Eigen::MatrixXcd mp = m * eig.vectors;
   return mp * (2.0 * damping.modal_ratios(w.size()).cwiseProduct(w)).asDiagonal() * mp.adjoint();
 }
 
@@ -243,9 +244,7 @@ PreparedHbm prepare_sector(const Model& model, const HbmSpec& spec) {
   p.model.damping = zero.damping.real();
   const int k1 = linear.diameter(1);
   const SectorReduction& first = folded.at(std::min(k1, N - k1));
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> eig(first.stiffness, first.mass,
-                                                                       Eigen::EigenvaluesOnly);
-  p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
+  p.linear_frequencies_hz = symmetric_eigen(first.stiffness, first.mass, false).values.array().max(0.0).sqrt() / kTwoPi;
   add_dampers_and_loads(
       p, model, spec, 1,
       [&](int, const std::string& point, int d) {
@@ -287,9 +286,8 @@ PreparedHbm prepare_whole(const Model& model, const HbmSpec& spec) {
   m.stiffness.topLeftCorner(nw, nw) = blades.stiffness;
   m.damping.topLeftCorner(nw, nw) = damping_matrix(spec.damping, blades);
   for (Index i = nw; i < n; ++i) m.mass(i, i) = spec.gap_damper->mass;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(blades.stiffness, blades.mass,
-                                                                      Eigen::EigenvaluesOnly);
-  p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
+  p.linear_frequencies_hz =
+      symmetric_eigen(blades.stiffness, blades.mass, false).values.array().max(0.0).sqrt() / kTwoPi;
   const Index points = static_cast<Index>(spec.model.masters.size());
   std::map<std::string, Index> point_number;
   for (Index i = 0; i < points; ++i) point_number[spec.model.masters[static_cast<size_t>(i)]] = i;

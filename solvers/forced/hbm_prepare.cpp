@@ -14,6 +14,7 @@
 #include "forced/hbm_level.hpp"
 #include "forced/linear_model.hpp"
 #include "friction/whole_ring.hpp"
+#include "linalg/dense_eigen.hpp"
 
 namespace bb {
 namespace {
@@ -98,9 +99,8 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
   p.blade_dofs = blades.size();
   for (const ReducedDof& d : blades.dofs) p.dof_names.push_back(d.name());
   {
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(blades.stiffness, blades.mass,
-                                                                  Eigen::EigenvaluesOnly);
-    p.linear_frequencies_hz = eig.eigenvalues().array().max(0.0).sqrt() / kTwoPi;
+    p.linear_frequencies_hz =
+        symmetric_eigen(blades.stiffness, blades.mass, false).values.array().max(0.0).sqrt() / kTwoPi;
   }
   const Eigen::MatrixXd blade_damping =
       spec.damping_matrix ? *spec.damping_matrix : damping_matrix(spec.damping, blades);

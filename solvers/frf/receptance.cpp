@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "linalg/dense_eigen.hpp"
 
 namespace bb {
 namespace {
@@ -90,24 +91,23 @@ Eigen::MatrixXd modal_damping_matrix(const Eigen::MatrixXd& stiffness, const Eig
   if (n == 0) return Eigen::MatrixXd(0, 0);
 
   // Eigen's generalized solver factors M by LLT without reporting a failure, so check M first.
-  const Eigen::VectorXd mass_eigenvalues =
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(mass, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::VectorXd mass_eigenvalues = symmetric_eigen(mass, false).values;
   if (!(mass_eigenvalues[0] > 1e-14 * mass_eigenvalues[n - 1]))
     throw SolverError(
         fmt::format("modal_damping_matrix: the mass matrix is not positive definite (eigenvalues {:.3g} .. {:.3g})",
                     mass_eigenvalues[0], mass_eigenvalues[n - 1]));
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(stiffness, mass);
-  if (modes.info() != Eigen::Success) throw SolverError("modal_damping_matrix: the dense eigensolver did not converge");
+  const DenseEigen<double> modes = symmetric_eigen(stiffness, mass);
+  if (!modes.ok) throw SolverError("modal_damping_matrix: the dense eigensolver did not converge");
 
   // Eigenvectors come mass-normalized (Phi^T M Phi = I), which the formula needs.
-  const Eigen::VectorXd& lambda = modes.eigenvalues();
+  const Eigen::VectorXd& lambda = modes.values;
   const double rigid = 1e-10 * lambda.cwiseAbs().maxCoeff();
   if (lambda[0] < -rigid)
     throw SolverError(
         fmt::format("modal_damping_matrix: the stiffness has a negative eigenvalue w^2 = {:.6g}", lambda[0]));
   Eigen::VectorXd modal(n);
   for (Eigen::Index r = 0; r < n; ++r) modal[r] = lambda[r] <= rigid ? 0.0 : 2.0 * zetas[r] * std::sqrt(lambda[r]);
-  const Eigen::MatrixXd m_phi = mass * modes.eigenvectors();
+  const Eigen::MatrixXd m_phi = mass * modes.vectors;
   const Eigen::MatrixXd c = m_phi * modal.asDiagonal() * m_phi.transpose();
   return 0.5 * (c + c.transpose());
 }

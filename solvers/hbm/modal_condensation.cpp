@@ -5,6 +5,8 @@
 #include <complex>
 #include <limits>
 
+#include "linalg/dense_eigen.hpp"
+
 namespace bb::hbm {
 
 namespace {
@@ -24,9 +26,9 @@ std::optional<ModalBasis> ModalBasis::of(const friction::FrictionModel& model, c
   const Eigen::MatrixXd c = model.damping.size() > 0 ? model.damping : Eigen::MatrixXd::Zero(k.rows(), k.cols());
   if (k.rows() == 0 || !symmetric(k) || !symmetric(m) || !symmetric(c)) return std::nullopt;
   if (Eigen::LLT<Eigen::MatrixXd>(m).info() != Eigen::Success) return std::nullopt;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k, m);
-  if (eig.info() != Eigen::Success) return std::nullopt;
-  const Eigen::MatrixXd& phi = eig.eigenvectors();  // M-orthonormal
+  const DenseEigen<double> eig = symmetric_eigen(k, m);
+  if (!eig.ok) return std::nullopt;
+  const Eigen::MatrixXd& phi = eig.vectors;  // M-orthonormal
   const Eigen::MatrixXd modal_c = phi.transpose() * c * phi;
   const double largest = modal_c.cwiseAbs().maxCoeff();
   const Eigen::MatrixXd off = modal_c - Eigen::MatrixXd(modal_c.diagonal().asDiagonal());
@@ -36,7 +38,7 @@ std::optional<ModalBasis> ModalBasis::of(const friction::FrictionModel& model, c
   b.other_ = other;
   b.phi_c_ = phi(contact, Eigen::all);
   b.phi_o_ = phi(other, Eigen::all);
-  b.lambda_ = eig.eigenvalues();
+  b.lambda_ = eig.values;
   b.damping_ = modal_c.diagonal();
   return b;
 }

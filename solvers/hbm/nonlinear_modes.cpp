@@ -9,6 +9,7 @@
 
 #include "hbm/condensed_balance.hpp"
 #include "linalg/damped_newton.hpp"
+#include "linalg/dense_eigen.hpp"
 
 namespace bb::hbm {
 
@@ -163,16 +164,16 @@ NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, i
 
   // The stuck linear mode: the start of the branch and its phase reference.
   const Eigen::MatrixXd k_stuck = friction::stuck_stiffness(model);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k_stuck, model.mass);
-  if (eig.info() != Eigen::Success || !(eig.eigenvalues()[linear_mode - 1] > 0.0))
+  const DenseEigen<double> eig = symmetric_eigen(k_stuck, model.mass);
+  if (!eig.ok || !(eig.values[linear_mode - 1] > 0.0))
     throw std::invalid_argument(fmt::format(
         "nonlinear modes: stuck linear mode {} has no positive eigenvalue (M not positive definite, or a rigid-body "
         "mode with every contact stuck)",
         linear_mode));
   NonlinearModeBranch branch;
   branch.linear_mode = linear_mode;
-  branch.linear_omega = std::sqrt(eig.eigenvalues()[linear_mode - 1]);
-  branch.linear_shape = eig.eigenvectors().col(linear_mode - 1);  // M-normalized
+  branch.linear_omega = std::sqrt(eig.values[linear_mode - 1]);
+  branch.linear_shape = eig.vectors.col(linear_mode - 1);  // M-normalized
   const Eigen::VectorXd& phi = branch.linear_shape;
   const double kmax = k_stuck.diagonal().cwiseAbs().maxCoeff();
 

@@ -1,6 +1,5 @@
 #include "identify/fit_identifiability.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
 #include <fmt/format.h>
@@ -9,6 +8,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
+
+#include "linalg/dense_eigen.hpp"
 
 namespace bb {
 namespace {
@@ -90,10 +91,10 @@ void profile_weakest_direction(ceres::Problem& problem, std::vector<double>& x, 
   Eigen::MatrixXd kept = c;
   for (Eigen::Index i = 0; i < n; ++i)
     if (unidentified[static_cast<size_t>(i)]) kept.row(i).setZero(), kept.col(i).setZero();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(kept);
-  if (eig.info() != Eigen::Success || !(eig.eigenvalues()(n - 1) > 0.0)) return;
-  const Eigen::VectorXd v = eig.eigenvectors().col(n - 1);
-  const double sigma = std::sqrt(eig.eigenvalues()(n - 1));
+  const DenseEigen<double> eig = symmetric_eigen(kept);
+  if (!eig.ok || !(eig.values(n - 1) > 0.0)) return;
+  const Eigen::VectorXd v = eig.vectors.col(n - 1);
+  const double sigma = std::sqrt(eig.values(n - 1));
   const double scale = std::isfinite(out.reduced_chi_square) ? std::max(1.0, out.reduced_chi_square) : 1.0;
   const std::vector<double> optimum = x;
   double cost0 = 0.0;

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "linalg/blas_threads.hpp"
+#include "linalg/dense_eigen.hpp"
 
 namespace bb {
 namespace {
@@ -114,11 +115,11 @@ HermitianLanczosResult hermitian_lanczos(const ComplexSparse& stiffness, const C
       next = basis.w().col(basis.size() - 1);
     }
     basis.orthogonalize(next);  // the Krylov-Schur residual direction, kept across the restart
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> ritz(basis.projection());
+    const DenseEigen<std::complex<double>> ritz = symmetric_eigen(Eigen::MatrixXcd(basis.projection()));
     const Index m = basis.size();
     // Largest mu first: the lowest eigenvalues lambda = sigma + 1 / mu.
-    const Eigen::MatrixXcd y = ritz.eigenvectors().rowwise().reverse();
-    const Eigen::VectorXd mu = ritz.eigenvalues().reverse();
+    const Eigen::MatrixXcd y = ritz.vectors.rowwise().reverse();
+    const Eigen::VectorXd mu = ritz.values.reverse();
     worst = 0.0;
     for (Index i = 0; i < o.nev; ++i) {
       const Eigen::VectorXcd r = basis.w().leftCols(m) * y.col(i) - mu[i] * (basis.v().leftCols(m) * y.col(i));

@@ -1,6 +1,5 @@
 #include "reduction/craig_bampton.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
+#include "linalg/dense_eigen.hpp"
 #include "linalg/inertia.hpp"
 #include "linalg/modal_solver.hpp"
 
@@ -95,11 +95,11 @@ ModalSolution fixed_interface_modes(const Sparse& k_ss, const Sparse& m_ss, cons
     modal.ordering = options.ordering;
     return lowest_modes(k_ss, m_ss, modal);
   }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(k_ss), Eigen::MatrixXd(m_ss)};
-  if (dense.info() != Eigen::Success) throw SolverError("Craig-Bampton: dense fixed-interface eigensolve failed");
+  const DenseEigen<double> dense = symmetric_eigen(Eigen::MatrixXd(k_ss), Eigen::MatrixXd(m_ss));
+  if (!dense.ok) throw SolverError("Craig-Bampton: dense fixed-interface eigensolve failed");
   ModalSolution sol;
-  sol.eigenvalues = dense.eigenvalues();
-  sol.shapes = dense.eigenvectors();  // M_ss-normalized by construction
+  sol.eigenvalues = dense.values;
+  sol.shapes = dense.vectors;  // M_ss-normalized by construction
   sol.converged_modes = static_cast<int>(sol.eigenvalues.size());
   return sol;
 }

@@ -20,6 +20,7 @@
 
 #include "cache/cache_use.hpp"
 #include "cache/content_key.hpp"
+#include "common/seconds_since.hpp"
 
 namespace bb {
 
@@ -85,9 +86,6 @@ template <class Result, class FillKey, class Build, class Encode, class Decode>
 Result through_model_cache(std::string_view kind, FillKey fill_key, Build build, Encode encode, Decode decode,
                            CacheUse& use) {
   using Clock = std::chrono::steady_clock;
-  const auto seconds_since = [](Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-  };
   auto t0 = Clock::now();
   if (!model_cache_settings()) {
     Result result = build();

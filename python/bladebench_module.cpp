@@ -3,6 +3,7 @@
 // case's mesh with their completeness count. Errors are Python exceptions of the command line's
 // classes: InputError (exit class 2: bad input, with file:line:key, or an array of the wrong shape
 // or dtype, with the shape expected) and SolverError (exit class 3: a solver that did not converge).
+#include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -104,14 +105,6 @@ bb::friction::ContactElement contact_of(const py::handle& item, size_t index, py
   return e;
 }
 
-py::array_t<double> to_numpy(const Eigen::MatrixXd& m) {
-  py::array_t<double> out({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols())});
-  auto o = out.mutable_unchecked<2>();
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) o(i, j) = m(i, j);
-  return out;
-}
-
 // {table name: {"columns": [...], "values": 2-D array (rows x columns), "text": {column: [str]}}}.
 py::dict run_case(const std::string& case_file, const std::vector<std::string>& settings) {
   toml::table root = bb::read_case_table(case_file);
@@ -124,7 +117,7 @@ py::dict run_case(const std::string& case_file, const std::vector<std::string>& 
     for (size_t c = 0; c < t.text_columns.size(); ++c) text[py::str(t.text_columns[c])] = t.text[c];
     py::dict table;
     table["columns"] = t.columns;
-    table["values"] = to_numpy(t.values);
+    table["values"] = t.values;  // pybind11/eigen.h: a float64 array
     table["text"] = text;
     tables[py::str(name)] = table;
   }
@@ -209,8 +202,8 @@ py::dict mesh_modes(const std::string& case_file, int count) {
   const bb::ModalSolution modes = bb::lowest_modes(system.stiffness, system.mass, options);
   const Eigen::VectorXd hz = modes.eigenvalues.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
   py::dict out;
-  out["frequency_hz"] = py::array_t<double>(hz.size(), hz.data());
-  out["shapes"] = to_numpy(modes.shapes);
+  out["frequency_hz"] = hz;
+  out["shapes"] = modes.shapes;
   out["sturm_count"] = modes.sturm_count;
   out["complete"] = modes.sturm_count == static_cast<int>(modes.eigenvalues.size());
   return out;

@@ -160,7 +160,6 @@ FrfDamping parse_damping(TomlReader& r) {
       if (!(damping.mode_zetas[i] >= 0.0 && damping.mode_zetas[i] < 1.0))
         r.fail("modal_damping",
                fmt::format("the ratio of mode {} must lie in [0, 1), found {}", i + 1, damping.mode_zetas[i]));
-    damping.zeta = damping.mode_zetas.front();
   } else if (r.has("modal_damping")) {
     damping.zeta = r.non_negative("modal_damping", 0.0);
     if (damping.zeta >= 1.0) r.fail("modal_damping", "must be below 1 (critical damping)");

@@ -55,6 +55,17 @@ std::optional<Eigen::VectorXd> damper_seated_start(const PreparedHbm& p, const h
   return initial;
 }
 
+// dC/d(log p) on the blade DOFs by central differences 1e-6 apart in log p of the damping
+// `build(factor)` gives with p scaled by `factor` (exact but for rounding where C is linear in p).
+template <class Build>
+Eigen::MatrixXd damping_log_derivative(const PreparedHbm& p, Build build) {
+  const double h = 1e-6;
+  const Eigen::Index n = p.model.mass.rows();
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(n, n);
+  d.topLeftCorner(p.blade_dofs, p.blade_dofs) = (build(std::exp(h)) - build(std::exp(-h))) / (2.0 * h);
+  return d;
+}
+
 // p d(model)/dp for an entry p of the lumped K or M (and its mirror). The damping built from the
 // matrices (modal, Rayleigh) moves with them: its derivative by central differences of that
 // construction, 1e-6 apart in log p (an eigenproblem of the model's size; C given as a matrix stays).
@@ -74,13 +85,9 @@ hbm::ModelDerivative lumped_entry_derivative(const PreparedHbm& p, const HbmSpec
   e(j, i) = e(i, j);
   (parameter.mass ? d.mass : d.stiffness) = e;
   (parameter.mass ? d.stiffness : d.mass) = Eigen::MatrixXd::Zero(n, n);
-  d.damping = Eigen::MatrixXd::Zero(n, n);
-  if (!spec.damping_matrix) {
-    const double h = 1e-6;
-    d.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) =
-        (damping_matrix(spec.damping, scaled(std::exp(h))) - damping_matrix(spec.damping, scaled(std::exp(-h)))) /
-        (2.0 * h);
-  }
+  d.damping = spec.damping_matrix ? Eigen::MatrixXd::Zero(n, n) : damping_log_derivative(p, [&](double factor) {
+    return damping_matrix(spec.damping, scaled(factor));
+  });
   return d;
 }
 
@@ -105,19 +112,14 @@ hbm::ModelDerivative modal_coordinate_derivative(const PreparedHbm& p, const Hbm
   return d;
 }
 
-// d(model)/d(log zeta_i) of a ratio given per mode: C is linear in each ratio, so the central
-// difference over log zeta_i +- 1e-6 is exact but for rounding.
+// d(model)/d(log zeta_i) of a ratio given per mode (C is linear in it).
 hbm::ModelDerivative mode_damping_derivative(const PreparedHbm& p, const HbmSpec& spec, size_t mode) {
-  const double h = 1e-6;
-  const auto damping = [&](double factor) {
-    FrfDamping d = spec.damping;
-    d.mode_zetas.at(mode) *= factor;
-    return damping_matrix(d, p.linear);
-  };
-  const Eigen::Index n = p.model.mass.rows();
   hbm::ModelDerivative d;
-  d.damping = Eigen::MatrixXd::Zero(n, n);
-  d.damping.topLeftCorner(p.blade_dofs, p.blade_dofs) = (damping(std::exp(h)) - damping(std::exp(-h))) / (2.0 * h);
+  d.damping = damping_log_derivative(p, [&](double factor) {
+    FrfDamping scaled = spec.damping;
+    scaled.mode_zetas.at(mode) *= factor;
+    return damping_matrix(scaled, p.linear);
+  });
   return d;
 }
 

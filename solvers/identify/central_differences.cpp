@@ -34,7 +34,10 @@ bool CentralDifferences::Evaluate(double const* const* parameters, double* resid
   bool kept = false;  // Ceres evaluated the residuals here just before: reuse them as the centre run
   {
     const std::lock_guard<std::mutex> guard(last_lock_);
-    if (last_x_ == x) std::copy(last_residuals_.begin(), last_residuals_.end(), residuals), kept = true;
+    if (last_x_ == x) {
+      std::copy(last_residuals_.begin(), last_residuals_.end(), residuals);
+      kept = true;
+    }
   }
   if (!kept && !residual_(x, residuals)) return false;
   std::vector<std::size_t> all(static_cast<std::size_t>(parameters_));

@@ -40,19 +40,12 @@ namespace {
 
 std::string g(double v) { return fmt::format("{:.6g}", v); }
 
-std::string modal_ratios_text(const FrfDamping& d) {
-  if (d.mode_zetas.empty()) return g(d.zeta);
-  std::string out;
-  for (double z : d.mode_zetas) out += (out.empty() ? "" : ", ") + g(z);
-  return fmt::format("{} on the lowest {} modes (the modes above the last take its ratio)", out, d.mode_zetas.size());
-}
-
 void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
   std::string forces;
   for (const FrfForce& f : spec.forces)
     forces += fmt::format("{}{} N on {}", forces.empty() ? "" : ", ", g(f.amplitude), f.dof.name());
   const std::string damping = spec.damping.kind == FrfDamping::Kind::modal
-                                  ? fmt::format("modal, zeta = {}", modal_ratios_text(spec.damping))
+                                  ? fmt::format("modal, zeta = {}", describe_modal_ratios(spec.damping))
                                   : fmt::format("Rayleigh, zeta = {} at {} Hz and {} at {} Hz",
                                                 g(spec.damping.rayleigh_zeta[0]), g(spec.damping.rayleigh_hz[0]),
                                                 g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[1]));

@@ -200,6 +200,15 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
 
 }  // namespace
 
+std::string describe_modal_ratios(const FrfDamping& d) {
+  if (d.mode_zetas.empty()) return g(d.zeta);
+  std::string out;
+  for (double z : d.mode_zetas) out += (out.empty() ? "" : ", ") + g(z);
+  const size_t n = d.mode_zetas.size();
+  return fmt::format("{} on the lowest {} (the modes above the last take its ratio)", out,
+                     n == 1 ? std::string("mode") : fmt::format("{} modes", n));
+}
+
 std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec) {
   std::string out;
   const auto add = [&](const std::string& name, const contact::JenkinsParameters& law,
@@ -222,10 +231,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
       : spec.damping.kind == FrfDamping::Kind::modal
           ? spec.damping.mode_zetas.empty()
                 ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
-                : fmt::format(
-                      "modal damping per mode, zeta = {} from the lowest mode up (the modes above take the "
-                      "last)",
-                      fmt::join(spec.damping.mode_zetas, ", "))
+                : fmt::format("modal damping {}", describe_modal_ratios(spec.damping))
           : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
                         g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]),
                         g(spec.damping.rayleigh_hz[1]));

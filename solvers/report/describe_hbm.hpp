@@ -13,6 +13,9 @@ void describe_cache(const std::string& what, const CacheUse& use, RunRecord& run
 
 void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run);
 
+// The modal damping ratio, or the ratios given per mode with what they cover (frf and hbm alike).
+std::string describe_modal_ratios(const FrfDamping& d);
+
 // "name: kn .. N/m, kt .. N/m, mu .." per point contact (the damper's, then the case's, with its law
 // when it is not a single Jenkins slider), "; "-separated; empty without contacts.
 std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec);

@@ -8,7 +8,9 @@
 
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
+#include "linalg/cached_modes.hpp"
 #include "linalg/inertia.hpp"
+#include "linalg/slepc_modes.hpp"
 
 namespace bb {
 
@@ -32,7 +34,8 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   result.assembly_seconds = system.assembly_seconds;
   // A band is sized by the Sturm count at its top: exactly the modes below f_max are asked for.
   const double two_pi = 2 * std::numbers::pi;
-  if (selection.band_max_hz) {
+  const bool sliced_band = selection.band_max_hz && options.eigensolver == Eigensolver::slepc;
+  if (selection.band_max_hz && !sliced_band) {
     const InertiaCount below =
         eigenvalues_below(system.stiffness, system.mass, std::pow(two_pi * *selection.band_max_hz, 2));
     if (!below.ok)
@@ -42,7 +45,13 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
           fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));
     options.n_modes = std::max(below.negative, 1);
   }
-  ModalSolution sol = cached_lowest_modes(system.stiffness, system.mass, options, &result.cache);
+  // SLEPc slices the band itself: its count comes from the factorizations at the band's ends.
+  ModalSolution sol = sliced_band ? slepc_modes_below(system.stiffness, system.mass,
+                                                      std::pow(two_pi * *selection.band_max_hz, 2), options)
+                                  : cached_lowest_modes(system.stiffness, system.mass, options, &result.cache);
+  if (sliced_band && sol.eigenvalues.size() >= dofs.n_free)
+    throw InputError(
+        fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));
   if (selection.band_min_hz || selection.band_max_hz) {
     std::vector<Eigen::Index> keep;
     for (Eigen::Index i = 0; i < sol.eigenvalues.size(); ++i) {

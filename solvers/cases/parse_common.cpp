@@ -1,5 +1,7 @@
 #include "cases/parse_common.hpp"
 
+#include "distributed/distributed.hpp"
+
 namespace bb {
 
 Direction parse_direction(TomlReader& r, const std::string& key, const std::string& value) {
@@ -11,6 +13,15 @@ Direction parse_direction(TomlReader& r, const std::string& key, const std::stri
 
 LoadSplit parse_split(TomlReader& r, const std::string& key) {
   return r.choice(key, {"equal", "consistent"}) == "equal" ? LoadSplit::equal : LoadSplit::consistent_edge;
+}
+
+Eigensolver parse_eigensolver(TomlReader& r) {
+  if (r.choice("eigensolver", {"spectra", "slepc"}, "spectra") == "spectra") return Eigensolver::spectra;
+  if (!distributed::built_with_slepc())
+    r.fail("eigensolver",
+           "\"slepc\" needs a bladebench built with PETSc/SLEPc: install Debian's libslepc-real-dev and "
+           "libpetsc-real-dev (./run.sh does) and configure again (cmake --preset release)");
+  return Eigensolver::slepc;
 }
 
 }  // namespace bb

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/toml_reader.hpp"
+#include "linalg/modal_solver.hpp"
 #include "model/model.hpp"
 
 namespace bb {
@@ -13,6 +14,8 @@ namespace bb {
 Direction parse_direction(TomlReader& r, const std::string& key, const std::string& value);
 // "equal" or "consistent".
 LoadSplit parse_split(TomlReader& r, const std::string& key);
+// `eigensolver = "spectra" | "slepc"` (default spectra); slepc in a build without it is refused here.
+Eigensolver parse_eigensolver(TomlReader& r);
 
 // fn(reader) for each [[key]] table of `top`; a non-table entry is an error.
 template <typename Fn>

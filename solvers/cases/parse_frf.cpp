@@ -7,6 +7,7 @@
 #include <numbers>
 #include <set>
 
+#include "cases/parse_common.hpp"
 #include "cases/parse_modal.hpp"
 
 namespace bb {
@@ -136,6 +137,7 @@ RomSpec parse_rom(TomlReader& r, const fs::path& folder) {
     } else {
       rom.modes_below_hz = r.positive("modes_below_hz");
     }
+    rom.eigensolver = parse_eigensolver(r);
   }
   const std::string method = r.choice("method", {"direct", "modal"}, "direct");
   rom.method = method == "modal" ? RomSpec::Method::modal : RomSpec::Method::direct;

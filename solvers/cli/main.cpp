@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -22,6 +23,7 @@
 #include "common/errors.hpp"
 #include "common/progress_clock.hpp"
 #include "common/user_text.hpp"
+#include "distributed/distributed.hpp"
 #include "identify/synthetic_data.hpp"
 #include "identify/uff58.hpp"
 #include "model/build_model.hpp"
@@ -56,22 +58,40 @@ struct RunArgs {
   std::vector<std::string> settings, removals;
 };
 
+// Under mpirun every rank runs the case (its eigensolves shared by all ranks); rank 0 writes the
+// report, the others write into a folder of their own that is removed afterwards.
+struct RankFolder {
+  fs::path path;
+  RankFolder() {
+    if (bb::distributed::is_root()) return;
+    path = fs::temp_directory_path() /
+           fmt::format("bladebench-rank{}-{}", bb::distributed::rank(), static_cast<long>(::getpid()));
+  }
+  ~RankFolder() {
+    std::error_code ignored;
+    if (!path.empty()) fs::remove_all(path, ignored);
+  }
+};
+
 int run_command(const RunArgs& a) {
   // With several cases --out is the parent of their report folders; with one, the folder itself
   // (checked by the run, which then reports where it could not write).
-  if (a.cases.size() > 1 && !a.out.empty()) bb::prepare_output_parent(a.out, "--out");
+  const RankFolder rank_folder;
+  const bool root = rank_folder.path.empty();
+  if (root && a.cases.size() > 1 && !a.out.empty()) bb::prepare_output_parent(a.out, "--out");
   int rc = bb::exit_pass;
   for (const std::string& c : a.cases) {
     bb::RunOptions opt;
     opt.study = a.study;
-    opt.plots = !a.no_plots;
+    opt.plots = root && !a.no_plots;
     opt.fidelity = a.fidelity;
     opt.limits = a.limits;
     opt.settings = a.settings;
     opt.removals = a.removals;
     if (!a.out.empty()) opt.out_dir = a.cases.size() == 1 ? fs::path(a.out) : fs::path(a.out) / fs::path(c).stem();
+    if (!root) opt.out_dir = rank_folder.path / fs::path(c).stem();
     const bb::RunOutcome o = bb::run_case(c, opt);
-    print_outcome(o, "");
+    if (root) print_outcome(o, "");
     rc = std::max(rc, bb::exit_code(o.record.status));
   }
   return rc;
@@ -240,6 +260,29 @@ void configure_cache(const CacheArgs& args) {
   bb::configure_model_cache(bb::ModelCacheSettings{*folder});
 }
 
+// The subcommand on every MPI rank. run and validate use the ranks (one case shared, or the cases
+// shared out); every other subcommand runs on rank 0 while the others wait. The exit code is the
+// worst over the ranks, the same on each. Without mpirun: the command.
+int command_on_ranks(bool uses_ranks, const std::function<int()>& body) {
+  const int ranks = bb::distributed::size();
+  if (ranks == 1) return body();
+  bb::configure_model_cache(std::nullopt);  // every rank must solve what the others solve
+  if (!uses_ranks) {
+    bb::distributed::set_shared_solves(false);
+    if (bb::distributed::is_root())
+      std::fprintf(stderr, "warning: this command runs on one MPI rank; the other %d ranks wait\n", ranks - 1);
+  }
+  int rc = uses_ranks || bb::distributed::is_root() ? body() : bb::exit_pass;
+  std::vector<int> worst{rc};
+  try {
+    bb::distributed::max_over_ranks(worst);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    bb::distributed::abort_all(bb::exit_solver_failed);
+  }
+  return worst[0];
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -363,16 +406,26 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : bb::exit_bad_input;
   }
-  configure_cache(cache_args);
-  if (*calibrate) return calibrate_command(calibrate_args);
-  if (*synthesize) {
-    synth.command = "bladebench";
-    for (int i = 1; i < argc; ++i) synth.command += std::string(" ") + argv[i];
-    return synthesize_command(synth);
+  try {
+    bb::distributed::start_if_launched();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", bb::printable(e.what()).c_str());
+    return bb::exit_solver_failed;
   }
-  if (*export_ccx) return export_command(export_args);
-  if (*html) return guarded([&] { return html_command(html_folder); });
-  if (*compare) return guarded([&] { return compare_command(compare_args); });
-  if (*run) return guarded([&] { return run_command(run_args); });
-  return guarded([&] { return validate_command(validate_args); });
+  configure_cache(cache_args);
+  const int rc = command_on_ranks(*run || *validate, [&] {
+    if (*calibrate) return calibrate_command(calibrate_args);
+    if (*synthesize) {
+      synth.command = "bladebench";
+      for (int i = 1; i < argc; ++i) synth.command += std::string(" ") + argv[i];
+      return synthesize_command(synth);
+    }
+    if (*export_ccx) return export_command(export_args);
+    if (*html) return guarded([&] { return html_command(html_folder); });
+    if (*compare) return guarded([&] { return compare_command(compare_args); });
+    if (*run) return guarded([&] { return run_command(run_args); });
+    return guarded([&] { return validate_command(validate_args); });
+  });
+  bb::distributed::finish();
+  return rc;
 }

@@ -10,13 +10,13 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <optional>
 
 #include "cache/model_cache.hpp"
 #include "cli/command_options.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
+#include "distributed/distributed.hpp"
 #include "pipeline/child_runs.hpp"
 #include "report/html_page.hpp"
 #include "report/output_folder.hpp"
@@ -100,7 +100,19 @@ int validate_command(const ValidateArgs& a) {
           fmt::format("two case files share the name '{}': {} and {} (validate writes one report "
                       "folder per case file name)",
                       bb::printable(f.stem().string()), bb::printable(it->second.string()), bb::printable(f.string())));
-  bb::prepare_output_parent(a.out, "--out");
+  if (bb::distributed::is_root()) bb::prepare_output_parent(a.out, "--out");
+  // Under mpirun the ranks share the cases out (each case's eigensolves on its own rank).
+  const int ranks = bb::distributed::size(), rank = bb::distributed::rank();
+  if (ranks > 1) {
+    std::vector<int> ready{0};
+    bb::distributed::max_over_ranks(ready);  // the output folder exists before any rank writes into it
+    bb::distributed::set_shared_solves(false);
+    if (bb::distributed::is_root() && static_cast<size_t>(ranks) > files.size())
+      std::fprintf(stderr, "warning: %d ranks for %zu cases: %zu ranks have nothing to run\n", ranks, files.size(),
+                   static_cast<size_t>(ranks) - files.size());
+  }
+  std::vector<size_t> mine;  // the cases this rank runs: every ranks-th
+  for (size_t i = static_cast<size_t>(rank); i < files.size(); i += static_cast<size_t>(ranks)) mine.push_back(i);
   std::vector<std::pair<size_t, bb::IndexEntry>> done;  // (file, entry) in the order runs finish
   int rc = bb::exit_pass;
   auto record = [&](size_t i, bb::IndexEntry e, int code) {
@@ -117,8 +129,7 @@ int validate_command(const ValidateArgs& a) {
       if (!j.is_discarded() && j.contains("wall_time_s") && j["wall_time_s"].is_number())
         previous[i] = j["wall_time_s"].get<double>();
     }
-    std::vector<size_t> order(files.size());
-    std::iota(order.begin(), order.end(), size_t{0});
+    std::vector<size_t> order = mine;
     std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return previous[x] > previous[y]; });
     std::vector<std::vector<std::string>> commands;
     for (size_t i : order) commands.push_back(child_command(a, files[i], fs::path(a.out) / files[i].stem()));
@@ -127,7 +138,7 @@ int validate_command(const ValidateArgs& a) {
       const size_t i = order[started];
       const fs::path out_dir = fs::path(a.out) / files[i].stem();
       // The child's own verdict lines, whole, under this run's counter.
-      std::fprintf(stderr, "[%zu/%zu] %s", ++finished, files.size(), bb::printable(r.output, true).c_str());
+      std::fprintf(stderr, "[%zu/%zu] %s", ++finished, mine.size(), bb::printable(r.output, true).c_str());
       std::optional<bb::IndexEntry> e = entry_of_child(out_dir, a.out, r);
       if (!e) {
         e.emplace();
@@ -141,7 +152,8 @@ int validate_command(const ValidateArgs& a) {
       record(i, *e, bb::exit_code(e->status));
     });
   } else {
-    for (size_t i = 0; i < files.size(); ++i) {
+    for (size_t n = 0; n < mine.size(); ++n) {
+      const size_t i = mine[n];
       bb::RunOptions opt;
       opt.study = a.study;
       opt.plots = !a.no_plots;
@@ -150,7 +162,7 @@ int validate_command(const ValidateArgs& a) {
       // Output folder by file stem first; the case name is only known after parsing.
       opt.out_dir = fs::path(a.out) / files[i].stem();
       const bb::RunOutcome o = bb::run_case(files[i], opt);
-      print_outcome(o, fmt::format("[{}/{}] ", i + 1, files.size()));
+      print_outcome(o, fmt::format("[{}/{}] ", n + 1, mine.size()));
       // The entry as its summary.json says, as for a child process; from memory when none was written.
       std::optional<bb::IndexEntry> e;
       if (o.written) e = bb::read_index_entry(o.out_dir, a.out);
@@ -166,6 +178,28 @@ int validate_command(const ValidateArgs& a) {
         e->fidelity = o.record.fidelity;
       }
       record(i, *e, bb::exit_code(o.record.status));
+    }
+  }
+  if (ranks > 1) {
+    // Every rank's exit codes; the root reads the other ranks' cases from their summary.json.
+    std::vector<int> codes(files.size(), -1);
+    for (const auto& [i, e] : done) codes[i] = bb::exit_code(e.status);
+    bb::distributed::max_over_ranks(codes);
+    if (!bb::distributed::is_root()) return *std::max_element(codes.begin(), codes.end());
+    for (size_t i = 0; i < files.size(); ++i) {
+      if (static_cast<int>(i % static_cast<size_t>(ranks)) == rank) continue;
+      const fs::path out_dir = fs::path(a.out) / files[i].stem();
+      std::optional<bb::IndexEntry> e = bb::read_index_entry(out_dir, a.out);
+      if (e && bb::exit_code(e->status) != codes[i]) e.reset();
+      if (!e) {
+        e.emplace();
+        e->case_name = files[i].stem().string();
+        e->report = fs::relative(out_dir / "report.md", a.out);
+        e->status = codes[i] == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed;
+        e->message = fmt::format("the run on MPI rank {} exited with code {} and no report",
+                                 i % static_cast<size_t>(ranks), codes[i]);
+      }
+      record(i, *e, codes[i]);
     }
   }
   std::sort(done.begin(), done.end(), [](const auto& x, const auto& y) { return x.first < y.first; });

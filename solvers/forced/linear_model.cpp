@@ -52,6 +52,7 @@ ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, c
                         ? fixed_interface_count(system.stiffness, system.mass, masters, rom.modes_below_hz)
                         : rom.modes;
   options.ordering = ordering_for_dimension(model.mesh.dim);
+  options.eigensolver = rom.eigensolver;
   return cached_craig_bampton(system.stiffness, system.mass, masters, names, options, timing);
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "linalg/modal_solver.hpp"
 #include "model/model.hpp"
 #include "reduction/reduced_model.hpp"
 
@@ -48,12 +49,13 @@ struct FrfDamping {
 
 // A reduced model: Craig-Bampton on master points, matrices from files, or matrices in the case.
 struct RomSpec {
-  std::string name;                      // names its columns and tables, e.g. "rom"
-  std::vector<std::string> masters;      // point names, all three directions of each, in this order
-  int modes = 10;                        // fixed-interface modes
-  double modes_below_hz = 0.0;           // > 0: instead, every fixed-interface mode below this [Hz]
-  std::filesystem::path file;            // a reduced-model sidecar (reduction/reduced_model_io.hpp) instead
-  std::optional<ReducedModel> matrices;  // or matrices written in the case (a lumped model)
+  std::string name;                                // names its columns and tables, e.g. "rom"
+  std::vector<std::string> masters;                // point names, all three directions of each, in this order
+  int modes = 10;                                  // fixed-interface modes
+  double modes_below_hz = 0.0;                     // > 0: instead, every fixed-interface mode below this [Hz]
+  Eigensolver eigensolver = Eigensolver::spectra;  // of the fixed-interface modes and constraint modes
+  std::filesystem::path file;                      // a reduced-model sidecar (reduction/reduced_model_io.hpp) instead
+  std::optional<ReducedModel> matrices;            // or matrices written in the case (a lumped model)
   enum class Method { direct, modal } method = Method::direct;
   std::vector<FrfForce> forces;     // empty: the analysis's
   std::vector<PointDof> responses;  // empty: the analysis's

@@ -23,6 +23,7 @@ ModalSolution cached_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, 
         key.add(options.tolerance).add(std::int64_t{options.subspace_size});
         key.add(std::int64_t{static_cast<int>(options.ordering)}).add(std::int64_t{options.verify_count});
         key.add(options.cluster_tolerance).add(std::int64_t{options.max_reruns});
+        if (options.eigensolver == Eigensolver::slepc) key.add(std::string_view("slepc"));
       },
       [&] { return lowest_modes(stiffness, mass, options); },
       [](const ModalSolution& s) {

@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "linalg/hermitian_lanczos.hpp"
 #include "linalg/inertia.hpp"
+#include "linalg/slepc_modes.hpp"
 #include "linalg/spd_factor.hpp"
 
 namespace bb {
@@ -208,12 +209,17 @@ BasicModalSolution<Scalar> complete_lowest_modes(const Eigen::SparseMatrix<Scala
 
 ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                            const ModalOptions& options) {
+  if (options.eigensolver == Eigensolver::slepc) return slepc_lowest_modes(stiffness, mass, options);
   return complete_lowest_modes(stiffness, mass, options);
 }
 
 HermitianModalSolution lowest_modes(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
                                     const Eigen::SparseMatrix<std::complex<double>>& mass,
                                     const ModalOptions& options) {
+  if (options.eigensolver == Eigensolver::slepc)
+    throw InputError(
+        "eigensolver = \"slepc\" solves real symmetric pencils; a complex Hermitian one (a cyclic sector's "
+        "travelling-wave nodal diameters) takes the default eigensolver (\"spectra\")");
   return complete_lowest_modes(stiffness, mass, options);
 }
 

@@ -12,8 +12,14 @@
 
 namespace bb {
 
+// spectra: CHOLMOD shift-invert, Spectra's Lanczos and a MUMPS Sturm count, in this process.
+// slepc: SLEPc's Krylov-Schur spectrum slicing with MUMPS Cholesky at each shift, over MPI ranks,
+// whose own inertias prove the count (linalg/slepc_modes.hpp; real symmetric pencils only).
+enum class Eigensolver { spectra, slepc };
+
 struct ModalOptions {
   int n_modes = 6;
+  Eigensolver eigensolver = Eigensolver::spectra;
   // Shift sigma = -(2 pi f)^2 < 0 keeps K - sigma M positive definite for any K >= 0, so one
   // Cholesky factor serves, rigid-body modes included.
   double shift_frequency_hz = 1.0;

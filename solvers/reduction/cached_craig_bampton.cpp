@@ -51,6 +51,7 @@ ReducedModel cached_craig_bampton(const Eigen::SparseMatrix<double>& stiffness, 
         for (size_t i = 0; i < masters.size(); ++i) key.add(std::int64_t{masters[i]}).add(master_names[i].name());
         key.add(std::int64_t{options.n_modes}).add(std::int64_t{static_cast<int>(options.ordering)});
         key.add(options.shift_frequency_hz);
+        if (options.eigensolver == Eigensolver::slepc) key.add(std::string_view("slepc"));
       },
       [&] { return craig_bampton(stiffness, mass, masters, master_names, options, &t); },
       [&](const ReducedModel& built) { return encode(built, t); },

@@ -13,6 +13,7 @@
 #include "linalg/dense_eigen.hpp"
 #include "linalg/inertia.hpp"
 #include "linalg/modal_solver.hpp"
+#include "linalg/slepc_modes.hpp"
 
 namespace bb {
 namespace {
@@ -93,6 +94,7 @@ ModalSolution fixed_interface_modes(const Sparse& k_ss, const Sparse& m_ss, cons
     modal.n_modes = options.n_modes;
     modal.shift_frequency_hz = options.shift_frequency_hz;
     modal.ordering = options.ordering;
+    modal.eigensolver = options.eigensolver;
     return lowest_modes(k_ss, m_ss, modal);
   }
   const DenseEigen<double> dense = symmetric_eigen(Eigen::MatrixXd(k_ss), Eigen::MatrixXd(m_ss));
@@ -145,17 +147,21 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
   Sparse k_ss;
   if (ns > 0) {
     k_ss = slave_block(stiffness, p);
-    SpdFactorization factor(options.ordering);
-    const FactorStatus status = factor.factorize(k_ss);
-    if (!status.ok) {
-      const std::string where = status.weakest_column >= 0
-                                    ? fmt::format("; free DOF {} is not held by the masters or constraints",
-                                                  p.slaves[static_cast<size_t>(status.weakest_column)])
-                                    : std::string();
-      throw InputError(
-          fmt::format("Craig-Bampton: the slave stiffness K_ss cannot be factored: {}{}", status.message, where));
+    if (options.eigensolver == Eigensolver::slepc) {
+      if (nm > 0) psi = -slepc_solve_spd(k_ss, slave_master_block(stiffness, masters, p));
+    } else {
+      SpdFactorization factor(options.ordering);
+      const FactorStatus status = factor.factorize(k_ss);
+      if (!status.ok) {
+        const std::string where = status.weakest_column >= 0
+                                      ? fmt::format("; free DOF {} is not held by the masters or constraints",
+                                                    p.slaves[static_cast<size_t>(status.weakest_column)])
+                                      : std::string();
+        throw InputError(
+            fmt::format("Craig-Bampton: the slave stiffness K_ss cannot be factored: {}{}", status.message, where));
+      }
+      if (nm > 0) psi = -factor.solve(slave_master_block(stiffness, masters, p));
     }
-    if (nm > 0) psi = -factor.solve(slave_master_block(stiffness, masters, p));
   }
   if (timing) timing->constraint_modes_seconds = seconds_since(t0);
 

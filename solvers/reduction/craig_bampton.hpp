@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cache/cache_use.hpp"
+#include "linalg/modal_solver.hpp"
 #include "linalg/spd_factor.hpp"
 #include "reduction/reduced_model.hpp"
 
@@ -16,6 +17,8 @@ struct CraigBamptonOptions {
   int n_modes = 10;                             // fixed-interface modes kept (may be 0: Guyan)
   FillOrdering ordering = FillOrdering::metis;  // for K_ss and the shift-invert factor
   double shift_frequency_hz = 1.0;              // see ModalOptions
+  // slepc: the fixed-interface modes by SLEPc and the constraint modes by PETSc's MUMPS Cholesky.
+  Eigensolver eigensolver = Eigensolver::spectra;
 };
 
 struct CraigBamptonTiming {

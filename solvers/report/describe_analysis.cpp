@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "cache/cache_use.hpp"
+#include "distributed/distributed.hpp"
 #include "report/describe_cyclic.hpp"
 #include "report/describe_hbm.hpp"
 
@@ -197,19 +198,27 @@ void describe(const StaticSpec&, const StaticOutcome& outcome, const Model& mode
 void describe(const ModalSpec& spec, const ModalOutcome& outcome, const Model& model, RunRecord& run) {
   const ModalResult& modal = outcome.modal;
   const ModeSelection& sel = spec.modes;
+  const bool slepc = spec.options.eigensolver == Eigensolver::slepc;
+  const int ranks = distributed::shared_solves() ? distributed::size() : 1;
   run.facts.emplace_back(
-      "analysis", fmt::format("modal, {}, Lanczos shift-invert (Spectra + CHOLMOD)",
-                              sel.band_max_hz ? fmt::format("all modes in [{}, {}] Hz", sel.band_min_hz.value_or(0.0),
-                                                            *sel.band_max_hz)
-                                              : fmt::format("lowest {} modes", sel.lowest)));
+      "analysis",
+      fmt::format("modal, {}, {}",
+                  sel.band_max_hz
+                      ? fmt::format("all modes in [{}, {}] Hz", sel.band_min_hz.value_or(0.0), *sel.band_max_hz)
+                      : fmt::format("lowest {} modes", sel.lowest),
+                  slepc ? fmt::format("SLEPc Krylov-Schur spectrum slicing (MUMPS Cholesky per shift), {} MPI rank{}",
+                                      ranks, ranks > 1 ? "s" : "")
+                        : std::string("Lanczos shift-invert (Spectra + CHOLMOD)")));
   run.facts.emplace_back("free DOFs", std::to_string(modal.n_free_dofs));
-  run.facts.emplace_back("Lanczos iterations", std::to_string(modal.iterations));
-  run.facts.emplace_back("completeness (Sturm count of K - sigma M)",
-                         modal.sturm_count < 0
-                             ? std::string("not checked (every mode found is a rigid-body mode)")
-                             : fmt::format("{} modes below {:.6g} Hz, all found ({} Lanczos run{}, count {:.3f} s)",
-                                           modal.sturm_count, modal.sturm_frequency_hz, modal.lanczos_runs,
-                                           modal.lanczos_runs > 1 ? "s" : "", modal.sturm_seconds));
+  run.facts.emplace_back(slepc ? "Krylov-Schur iterations" : "Lanczos iterations", std::to_string(modal.iterations));
+  const std::string runs = slepc ? std::string("from the inertias of the slicing's own factorizations")
+                                 : fmt::format("{} Lanczos run{}, count {:.3f} s", modal.lanczos_runs,
+                                               modal.lanczos_runs > 1 ? "s" : "", modal.sturm_seconds);
+  run.facts.emplace_back(slepc ? "completeness (inertias of K - sigma M at the slicing's ends)"
+                               : "completeness (Sturm count of K - sigma M)",
+                         modal.sturm_count < 0 ? std::string("not checked (every mode found is a rigid-body mode)")
+                                               : fmt::format("{} modes below {:.6g} Hz, all found ({})",
+                                                             modal.sturm_count, modal.sturm_frequency_hz, runs));
   if (modal.rigid_body_modes > 0)
     run.facts.emplace_back("rigid-body modes (free model)", std::to_string(modal.rigid_body_modes));
   run.facts.emplace_back("max eigen-residual (backward error)", fmt::format("{:.3e}", modal.max_residual));

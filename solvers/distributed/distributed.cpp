@@ -1,0 +1,136 @@
+#include "distributed/distributed.hpp"
+
+#include <dlfcn.h>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+
+#include "common/errors.hpp"
+
+namespace bb::distributed {
+namespace {
+
+struct State {
+  std::once_flag once;
+  const bb_plugin* plugin = nullptr;
+  std::string failure;  // why the plugin could not start
+  bool started = false;
+  bool shared = true;
+};
+
+State& state() {
+  static State s;
+  return s;
+}
+
+std::vector<std::string> plugin_candidates() {
+  std::vector<std::string> c;
+  if (const char* p = std::getenv("BLADEBENCH_SLEPC_PLUGIN"); p && *p) c.emplace_back(p);
+#ifdef BB_SLEPC_PLUGIN_BUILD
+  c.emplace_back(BB_SLEPC_PLUGIN_BUILD);
+#endif
+#ifdef BB_SLEPC_PLUGIN_INSTALL
+  c.emplace_back(BB_SLEPC_PLUGIN_INSTALL);
+#endif
+  return c;
+}
+
+// RTLD_DEEPBIND: the plugin's libraries (PETSc -> MPI MUMPS) resolve their symbols among themselves
+// first, not in the sequential MUMPS this program links.
+void load(State& s) {
+  std::string tried;
+  for (const std::string& path : plugin_candidates()) {
+    if (!std::filesystem::exists(path)) {
+      tried += fmt::format("{}{} (missing)", tried.empty() ? "" : ", ", path);
+      continue;
+    }
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+    if (!handle) {
+      s.failure = fmt::format("cannot load the PETSc/SLEPc plugin {}: {}", path, dlerror());
+      return;
+    }
+    using Entry = const bb_plugin* (*)();
+    const auto entry = reinterpret_cast<Entry>(dlsym(handle, "bladebench_plugin"));
+    const bb_plugin* p = entry ? entry() : nullptr;
+    if (!p || p->abi_version != BB_PLUGIN_ABI_VERSION) {
+      s.failure = fmt::format("{} is not this build's PETSc/SLEPc plugin (interface version {}, expected {})", path,
+                              p ? p->abi_version : -1, BB_PLUGIN_ABI_VERSION);
+      return;
+    }
+    char message[512] = {0};
+    if (p->initialize(message, sizeof message) != 0) {
+      s.failure = fmt::format("MPI / PETSc / SLEPc did not start: {}", message);
+      return;
+    }
+    s.plugin = p;
+    s.started = true;
+    std::atexit([] { finish(); });  // a program that never calls finish() still ends MPI cleanly
+    return;
+  }
+  s.failure = fmt::format("the PETSc/SLEPc plugin was not found (looked for {})", tried);
+}
+
+}  // namespace
+
+bool built_with_slepc() {
+#ifdef BB_SLEPC_PLUGIN_BUILD
+  return true;
+#else
+  return false;
+#endif
+}
+
+const bb_plugin& plugin(const std::string& what_needs_it) {
+  if (!built_with_slepc())
+    throw InputError(fmt::format(
+        "{}: this bladebench was built without PETSc/SLEPc. Install Debian's libslepc-real-dev and "
+        "libpetsc-real-dev (./run.sh does), then configure again (cmake --preset release) to build the plugin",
+        what_needs_it));
+  State& s = state();
+  std::call_once(s.once, [&] { load(s); });
+  if (!s.plugin) throw SolverError(fmt::format("{}: {}", what_needs_it, s.failure));
+  return *s.plugin;
+}
+
+bool launched_by_mpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+void start_if_launched() {
+  if (!launched_by_mpi()) return;
+  if (!built_with_slepc()) {
+    std::fprintf(stderr,
+                 "warning: started by mpirun, but this bladebench was built without PETSc/SLEPc: every rank runs "
+                 "alone\n");
+    return;
+  }
+  plugin("mpirun");
+}
+
+void finish() {
+  State& s = state();
+  if (s.started) s.plugin->finalize();
+  s.started = false;
+}
+
+int rank() { return state().started ? state().plugin->rank() : 0; }
+int size() { return state().started ? state().plugin->size() : 1; }
+
+void set_shared_solves(bool shared) { state().shared = shared; }
+bool shared_solves() { return state().shared; }
+
+void max_over_ranks(std::vector<int>& values) {
+  if (size() > 1 && state().plugin->allreduce_max(values.data(), static_cast<int>(values.size())) != 0)
+    throw SolverError("MPI_Allreduce over the ranks failed");
+}
+
+void abort_all(int exit_code) {
+  if (size() > 1) state().plugin->abort_all(exit_code);
+}
+
+}  // namespace bb::distributed

@@ -1,0 +1,41 @@
+// Work beyond one process: the PETSc/SLEPc plugin (distributed/plugin_abi.h), loaded on first use
+// or at start-up under mpirun, and what a run needs to know of its ranks.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "distributed/plugin_abi.h"
+
+namespace bb::distributed {
+
+// Whether this build has the plugin (CMake found PETSc and SLEPc).
+bool built_with_slepc();
+
+// The plugin, started; InputError naming `what_needs_it` and how to get it when this build has no
+// plugin, SolverError when it cannot be loaded or MPI and PETSc cannot start.
+const bb_plugin& plugin(const std::string& what_needs_it);
+
+// Whether this process was started by mpirun / mpiexec (Open MPI, MPICH or PMIx environment).
+bool launched_by_mpi();
+
+// At program start: under mpirun, load the plugin and start MPI so that the ranks are known before
+// any output is written. A build without the plugin runs each rank alone, with a warning.
+void start_if_launched();
+// MPI finalized, if this process started it.
+void finish();
+
+int rank();  // 0 without MPI
+int size();  // 1 without MPI
+inline bool is_root() { return rank() == 0; }
+
+// Whether eigensolves span every rank (one case run by all ranks) or stay on each rank (the ranks
+// share out independent runs). Default: every rank.
+void set_shared_solves(bool shared);
+bool shared_solves();
+
+// Element-wise maximum over the ranks; unchanged without MPI.
+void max_over_ranks(std::vector<int>& values);
+// Every rank stops with this exit code (mpirun reports it); returns only without MPI.
+void abort_all(int exit_code);
+
+}  // namespace bb::distributed

@@ -1,0 +1,251 @@
+#include "linalg/slepc_modes.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <numeric>
+#include <vector>
+
+#include "common/errors.hpp"
+#include "distributed/distributed.hpp"
+
+namespace bb {
+namespace {
+
+// The upper triangle row by row: column c of a symmetric matrix stored whole (or its lower
+// triangle) holds row c of the upper triangle in its entries r >= c.
+struct UpperRows {
+  std::vector<int64_t> start, column;
+  std::vector<double> value;
+  bb_upper_csr view() const {
+    return {static_cast<int64_t>(start.size()) - 1, start.data(), column.data(), value.data()};
+  }
+};
+
+UpperRows upper_rows(const Eigen::SparseMatrix<double>& a) {
+  UpperRows u;
+  u.start.reserve(static_cast<size_t>(a.cols()) + 1);
+  u.start.push_back(0);
+  for (int c = 0; c < a.outerSize(); ++c) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it)
+      if (it.row() >= c) {
+        u.column.push_back(it.row());
+        u.value.push_back(it.value());
+      }
+    u.start.push_back(static_cast<int64_t>(u.column.size()));
+  }
+  return u;
+}
+
+const bb_plugin& slepc() { return distributed::plugin("eigensolver = \"slepc\""); }
+
+// A failure on one rank while the others wait in a collective call would hang them: under mpirun
+// the failing rank says why and stops every rank (exit 3).
+void stop_on_failure(int status, const std::string& what, const char* message) {
+  if (status == 0) return;
+  const std::string text = fmt::format("{}: {}", what, message);
+  if (distributed::shared_solves() && distributed::size() > 1) {
+    std::fprintf(stderr, "error: MPI rank %d of %d: %s\n", distributed::rank(), distributed::size(), text.c_str());
+    std::fflush(stderr);
+    distributed::abort_all(exit_solver_failed);
+  }
+  throw SolverError(text);
+}
+
+// BLADEBENCH_FAULT_RANK=r fails the solve on rank r before it starts (the abort path's test).
+bool fault_injected() {
+  const char* r = std::getenv("BLADEBENCH_FAULT_RANK");
+  return r && *r && std::atoi(r) == distributed::rank();
+}
+
+struct Result {
+  bb_modes_result raw{};
+  ~Result() {
+    if (raw.eigenvalues || raw.vectors || raw.shift_values || raw.inertias) slepc().free_result(&raw);
+  }
+};
+
+void run(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+         const bb_modes_request& request, Result& out, const std::string& what) {
+  const UpperRows k = upper_rows(stiffness), m = upper_rows(mass);
+  const bb_upper_csr kv = k.view(), mv = m.view();
+  char message[1024] = "fault injected by BLADEBENCH_FAULT_RANK";
+  const int status = fault_injected() ? 1 : slepc().modes(&kv, &mv, &request, &out.raw, message, sizeof message);
+  stop_on_failure(status, what, message);
+}
+
+bb_modes_request request_for(const ModalOptions& options) {
+  bb_modes_request r{};
+  r.world = distributed::shared_solves() ? 1 : 0;
+  r.lower = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
+  r.tolerance = options.tolerance;
+  r.max_iterations = options.max_iterations;
+  r.partitions = 1;
+  return r;
+}
+
+// Mass-normalized, the largest entry of each shape positive: the same shapes on any number of ranks.
+ModalSolution solution_of(const bb_modes_result& r, const Eigen::SparseMatrix<double>& mass,
+                          const Eigen::SparseMatrix<double>* stiffness) {
+  std::vector<int> order(static_cast<size_t>(r.count));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return r.eigenvalues[a] < r.eigenvalues[b]; });
+  ModalSolution sol;
+  sol.eigenvalues.resize(r.count);
+  sol.shapes.resize(static_cast<Eigen::Index>(r.n), r.count);
+  for (int j = 0; j < r.count; ++j) {
+    const int i = order[static_cast<size_t>(j)];
+    sol.eigenvalues[j] = r.eigenvalues[i];
+    Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(r.vectors + static_cast<int64_t>(i) * r.n, r.n);
+    x /= std::sqrt(x.dot(mass * x));
+    // The Rayleigh quotient: its error is the square of the vector's, where Krylov-Schur's Ritz value
+    // carries the vector's error itself (3e-9 on Table VI's close pair at tolerance 1e-10).
+    if (stiffness) sol.eigenvalues[j] = x.dot(*stiffness * x);
+    Eigen::Index top = 0;
+    x.cwiseAbs().maxCoeff(&top);
+    if (x[top] < 0) x = -x;
+    sol.shapes.col(j) = x;
+  }
+  sol.iterations = r.iterations;
+  sol.converged_modes = r.count;
+  return sol;
+}
+
+// Eigenvalues in [lower, upper] by the inertias at the interval's ends (the slicing's first and
+// last shift), checked against what was returned.
+ModalSolution sliced(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                     bb_modes_request request, const std::string& what) {
+  Result r;
+  run(stiffness, mass, request, r, what);
+  if (r.raw.shifts < 2)
+    throw SolverError(
+        fmt::format("{}: the slicing reported {} shifts (the interval's two ends expected)", what, r.raw.shifts));
+  const int below_upper = r.raw.inertias[r.raw.shifts - 1], below_lower = r.raw.inertias[0];
+  const int count = below_upper - below_lower;
+  if (count != r.raw.count)
+    throw SolverError(
+        fmt::format("{}: {} eigenvalues returned in [{:.6g}, {:.6g}] rad^2/s^2 but the inertias of "
+                    "its ends count {}: a mode would be missing",
+                    what, r.raw.count, request.lower, request.upper, count));
+  ModalSolution sol = solution_of(r.raw, mass, &stiffness);
+  sol.sturm_count = below_upper;
+  sol.sturm_shift = request.upper;
+  sol.sturm_seconds = 0.0;  // from the slicing's own factorizations
+  sol.lanczos_runs = 1;
+  return sol;
+}
+
+double max_backward_error(const Eigen::SparseMatrix<double>& k, const Eigen::SparseMatrix<double>& m,
+                          const ModalSolution& sol) {
+  auto norm1 = [](const Eigen::SparseMatrix<double>& a) {
+    double best = 0.0;
+    for (int c = 0; c < a.outerSize(); ++c) {
+      double sum = 0.0;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it) sum += std::abs(it.value());
+      best = std::max(best, sum);
+    }
+    return best;
+  };
+  const double kn = norm1(k), mn = norm1(m);
+  double worst = 0.0;
+  for (Eigen::Index j = 0; j < sol.shapes.cols(); ++j) {
+    const Eigen::VectorXd x = sol.shapes.col(j);
+    const double scale = (kn + std::abs(sol.eigenvalues[j]) * mn) * x.norm();
+    worst = std::max(worst, (k * x - sol.eigenvalues[j] * (m * x)).norm() / std::max(scale, 1e-300));
+  }
+  return worst;
+}
+
+}  // namespace
+
+ModalSolution slepc_modes_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                                double cut, const ModalOptions& options) {
+  bb_modes_request request = request_for(options);
+  if (!(cut > request.lower))
+    throw InputError(
+        fmt::format("eigensolver = \"slepc\": the band's top ({:.6g} rad^2/s^2) must lie above the "
+                    "shift ({:.6g})",
+                    cut, request.lower));
+  request.upper = cut;
+  ModalSolution sol = sliced(stiffness, mass, request, "SLEPc spectrum slicing");
+  sol.max_residual = max_backward_error(stiffness, mass, sol);
+  return sol;
+}
+
+ModalSolution slepc_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                                 const ModalOptions& options) {
+  const auto n = stiffness.rows();
+  if (options.n_modes < 1) throw std::invalid_argument("n_modes must be >= 1");
+  if (options.n_modes >= n)
+    throw SolverError(fmt::format("asked for {} modes of a model with only {} free DOFs", options.n_modes, n));
+  // The estimate's Ritz values lie above the eigenvalues they approximate, so an interval up to the
+  // n-th of them (and a cluster's width more) holds at least n modes.
+  bb_modes_request estimate = request_for(options);
+  estimate.n_estimate = options.n_modes;
+  // A Ritz value's error is about the square of its residual: 1e-6 places the cut to 1e-12.
+  estimate.tolerance = std::max(options.tolerance, 1e-6);
+  Result first;
+  run(stiffness, mass, estimate, first, "SLEPc Krylov-Schur (the band's top)");
+  const ModalSolution guess = solution_of(first.raw, mass, nullptr);
+  const double top = guess.eigenvalues.maxCoeff();
+  const double lambda_n = guess.eigenvalues[options.n_modes - 1];
+  // A rigid n-th mode: cut at a small share of the first elastic eigenvalue (as the Sturm count does).
+  double cut = lambda_n + options.cluster_tolerance * std::abs(lambda_n);
+  if (!(top > 0.0) || std::abs(lambda_n) <= 1e-8 * top) {
+    cut = 0.0;
+    for (Eigen::Index k = options.n_modes; k < guess.eigenvalues.size(); ++k)
+      if (guess.eigenvalues[k] > 1e-8 * top) {
+        cut = 1e-3 * guess.eigenvalues[k];
+        break;
+      }
+    if (!(cut > 0.0)) {
+      ModalSolution sol = guess;
+      sol.lanczos_runs = 1;
+      sol.max_residual = max_backward_error(stiffness, mass, sol);
+      return sol;
+    }
+  }
+  bb_modes_request slice = request_for(options);
+  slice.upper = cut;
+  ModalSolution sol = sliced(stiffness, mass, slice, "SLEPc spectrum slicing");
+  if (sol.eigenvalues.size() < options.n_modes)
+    throw SolverError(fmt::format("SLEPc spectrum slicing found {} modes below {:.6g} Hz where {} were asked for",
+                                  sol.eigenvalues.size(), std::sqrt(std::max(cut, 0.0)) / (2 * std::numbers::pi),
+                                  options.n_modes));
+  // The estimate may have missed a member of a repeated eigenvalue, putting its n-th Ritz value on
+  // the next mode: keep the n-th mode's cluster and no more. Every eigenvalue below the slicing's
+  // top is in `sol`, so the kept ones are all those below the lower cut.
+  const double kept_lambda = sol.eigenvalues[options.n_modes - 1];
+  if (std::abs(kept_lambda) > 1e-8 * top) {
+    const double kept_cut = kept_lambda + options.cluster_tolerance * std::abs(kept_lambda);
+    const auto kept = static_cast<Eigen::Index>((sol.eigenvalues.array() <= kept_cut).count());
+    if (kept < sol.eigenvalues.size()) {
+      sol.eigenvalues.conservativeResize(kept);
+      sol.shapes.conservativeResize(Eigen::NoChange, kept);
+      sol.converged_modes = static_cast<int>(kept);
+      sol.sturm_count = static_cast<int>(kept);
+      sol.sturm_shift = kept_cut;
+    }
+  }
+  sol.iterations += guess.iterations;
+  sol.lanczos_runs = 2;
+  sol.max_residual = max_backward_error(stiffness, mass, sol);
+  return sol;
+}
+
+Eigen::MatrixXd slepc_solve_spd(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixXd& b) {
+  const UpperRows u = upper_rows(a);
+  const bb_upper_csr view = u.view();
+  Eigen::MatrixXd x(b.rows(), b.cols());
+  char message[1024] = {0};
+  const int status = slepc().solve_spd(&view, b.data(), b.cols(), distributed::shared_solves() ? 1 : 0, x.data(),
+                                       message, sizeof message);
+  stop_on_failure(status, "PETSc MUMPS Cholesky solve", message);
+  return x;
+}
+
+}  // namespace bb

@@ -19,6 +19,7 @@ struct State {
   std::string failure;  // why the plugin could not start
   bool started = false;
   bool shared = true;
+  int shared_solves = 0;
 };
 
 State& state() {
@@ -123,6 +124,9 @@ int size() { return state().started ? state().plugin->size() : 1; }
 
 void set_shared_solves(bool shared) { state().shared = shared; }
 bool shared_solves() { return state().shared; }
+
+void count_shared_solve() { ++state().shared_solves; }
+int shared_solve_count() { return state().shared_solves; }
 
 void max_over_ranks(std::vector<int>& values) {
   if (size() > 1 && state().plugin->allreduce_max(values.data(), static_cast<int>(values.size())) != 0)

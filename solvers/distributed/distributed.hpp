@@ -33,6 +33,10 @@ inline bool is_root() { return rank() == 0; }
 void set_shared_solves(bool shared);
 bool shared_solves();
 
+// Solves shared by every rank so far (a run under mpirun with none computed the same on each).
+void count_shared_solve();
+int shared_solve_count();
+
 // Element-wise maximum over the ranks; unchanged without MPI.
 void max_over_ranks(std::vector<int>& values);
 // Every rank stops with this exit code (mpirun reports it); returns only without MPI.

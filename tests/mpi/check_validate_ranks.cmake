@@ -39,3 +39,11 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E env BLADEBENCH_FAULT_RANK=1
 if(NOT code EQUAL 3 OR NOT "${out}${err}" MATCHES "MPI rank 1 of 2: SLEPc[^\n]*fault injected")
   message(FATAL_ERROR "a solve failing on rank 1 of 2 exited ${code}, expected 3 with that rank's message:\n${out}\n${err}")
 endif()
+
+# More ranks than work: a case with nothing to share runs on every rank, exit 0, with a warning.
+execute_process(COMMAND ${MPIEXEC} ${MPIFLAGS} -np 2 ${BIN} run ${WORK}/cases/cantilever_modal_q4.toml
+                        --out ${WORK}/unshared --no-plots --no-cache
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+if(NOT code EQUAL 0 OR NOT err MATCHES "shares no work over them")
+  message(FATAL_ERROR "a case without shared work on 2 ranks exited ${code}, expected 0 with a warning:\n${out}\n${err}")
+endif()

@@ -110,8 +110,14 @@ struct CalibrateArgs {
 
 int calibrate_command(const CalibrateArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  const fs::path out =
-      a.out.empty() ? fs::path("reports") / (fs::path(a.case_file).stem().string() + "-calibration") : fs::path(a.out);
+  // Under mpirun the ranks share the starts out (identify/least_squares_fit.cpp); each rank's model
+  // runs stay on that rank; rank 0 writes.
+  bb::distributed::set_shared_solves(bb::distributed::size() == 1);
+  const RankFolder rank_folder;
+  const bool root = rank_folder.path.empty();
+  const fs::path out = !root           ? rank_folder.path
+                       : a.out.empty() ? fs::path("reports") / (fs::path(a.case_file).stem().string() + "-calibration")
+                                       : fs::path(a.out);
   return guarded([&] {
     // Before the fit, which may take minutes: an unusable --out fails now.
     bb::StagedFolder stage(out);
@@ -135,6 +141,10 @@ int calibrate_command(const CalibrateArgs& a) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bb::write_calibration_outputs(o, a.case_file, wall, stage.path(), !a.no_plots);
     stage.commit();
+    const int rc = !o.converged || !o.cross_check_failure.empty() ? bb::exit_solver_failed
+                   : o.cross_check_passed()                       ? bb::exit_pass
+                                                                  : bb::exit_check_failed;
+    if (!root) return rc;
     std::fprintf(stderr, "%s: %s, cost %.6g -> %.6g in %.1f s -> %s\n", a.case_file.c_str(),
                  o.converged ? "converged" : "NOT converged", o.initial_cost, o.final_cost, wall,
                  (out / "report.md").string().c_str());
@@ -146,8 +156,7 @@ int calibrate_command(const CalibrateArgs& a) {
       if (!e.pass)
         std::fprintf(stderr, "  cross-check FAIL %s: computed %.9g, reference %.9g, |error| %.3g > tolerance %.3g\n",
                      e.name.c_str(), e.computed, e.reference, e.abs_error, e.tolerance);
-    if (!o.converged || !o.cross_check_failure.empty()) return bb::exit_solver_failed;
-    return o.cross_check_passed() ? bb::exit_pass : bb::exit_check_failed;
+    return rc;
   });
 }
 
@@ -265,8 +274,8 @@ void configure_cache(const CacheArgs& args) {
   bb::configure_model_cache(bb::ModelCacheSettings{*folder});
 }
 
-// The subcommand on every MPI rank. run and validate use the ranks (one case shared, or the cases
-// shared out); every other subcommand runs on rank 0 while the others wait. The exit code is the
+// The subcommand on every MPI rank. run, validate and calibrate use the ranks (one case shared, the
+// cases or the starts shared out); every other subcommand runs on rank 0 while the others wait. The exit code is the
 // worst over the ranks, the same on each. Without mpirun: the command.
 int command_on_ranks(bool uses_ranks, const std::function<int()>& body) {
   const int ranks = bb::distributed::size();
@@ -418,7 +427,7 @@ int main(int argc, char** argv) {
     return bb::exit_solver_failed;
   }
   configure_cache(cache_args);
-  const int rc = command_on_ranks(*run || *validate, [&] {
+  const int rc = command_on_ranks(*run || *validate || *calibrate, [&] {
     if (*calibrate) return calibrate_command(calibrate_args);
     if (*synthesize) {
       synth.command = "bladebench";

@@ -133,6 +133,27 @@ void max_over_ranks(std::vector<int>& values) {
     throw SolverError("MPI_Allreduce over the ranks failed");
 }
 
+std::vector<std::string> gather_from_all(const std::string& mine) {
+  const int ranks = size();
+  if (ranks == 1) return {mine};
+  const bb_plugin& p = *state().plugin;
+  std::vector<int64_t> sizes(static_cast<size_t>(ranks));
+  if (p.allgather_sizes(static_cast<int64_t>(mine.size()), sizes.data()) != 0)
+    throw SolverError("MPI_Allgather of the ranks' result sizes failed");
+  int64_t total = 0;
+  for (int64_t n : sizes) total += n;
+  std::string all(static_cast<size_t>(total), '\0');
+  if (p.allgather_bytes(mine.data(), static_cast<int64_t>(mine.size()), sizes.data(), all.data()) != 0)
+    throw SolverError("MPI_Allgatherv of the ranks' results failed (or they exceed 2 GB)");
+  std::vector<std::string> out;
+  size_t at = 0;
+  for (int64_t n : sizes) {
+    out.push_back(all.substr(at, static_cast<size_t>(n)));
+    at += static_cast<size_t>(n);
+  }
+  return out;
+}
+
 void abort_all(int exit_code) {
   if (size() > 1) state().plugin->abort_all(exit_code);
 }

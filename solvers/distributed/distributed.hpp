@@ -39,6 +39,8 @@ int shared_solve_count();
 
 // Element-wise maximum over the ranks; unchanged without MPI.
 void max_over_ranks(std::vector<int>& values);
+// Every rank's `mine`, in rank order, on every rank; {mine} without MPI.
+std::vector<std::string> gather_from_all(const std::string& mine);
 // Every rank stops with this exit code (mpirun reports it); returns only without MPI.
 void abort_all(int exit_code);
 

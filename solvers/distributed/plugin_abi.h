@@ -11,7 +11,7 @@
 extern "C" {
 #endif
 
-#define BB_PLUGIN_ABI_VERSION 1
+#define BB_PLUGIN_ABI_VERSION 2
 
 /* Upper triangle (column >= row) of a symmetric matrix, row by row, on every rank whole. */
 typedef struct {
@@ -53,6 +53,9 @@ typedef struct {
   /* Every rank's values combined by max, in place. */
   int (*allreduce_max)(int* values, int count);
   int (*barrier)(void);
+  /* Every rank's byte count (all: size() entries), then every rank's bytes in rank order (all: their sum). */
+  int (*allgather_sizes)(int64_t mine, int64_t* all);
+  int (*allgather_bytes)(const char* mine, int64_t mine_size, const int64_t* sizes, char* all);
   void (*abort_all)(int exit_code);
   /* 0 on success; otherwise the message says why (PETSc's error text, or a count that disagrees). */
   int (*modes)(const bb_upper_csr* stiffness, const bb_upper_csr* mass, const bb_modes_request* request,

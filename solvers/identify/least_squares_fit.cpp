@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <numeric>
 #include <random>
 
 #include "common/parallel_indices.hpp"
+#include "distributed/byte_record.hpp"
+#include "distributed/distributed.hpp"
 #include "identify/central_differences.hpp"
 #include "identify/fit_identifiability.hpp"
 
@@ -156,6 +159,88 @@ class IterationTrace : public ceres::IterationCallback {
   int start_, starts_, max_iterations_;
 };
 
+// One start's run, as a rank sends it to the others.
+struct StartRun {
+  CalibrationStart result;
+  std::vector<double> x;
+  std::string message, brief;
+  bool failed = false;  // stopped because the model could not be run where Ceres asked
+  std::vector<std::pair<int, double>> history;
+  int evaluations = 0, fallbacks = 0, one_sided = 0;
+};
+
+std::string to_bytes(const StartRun& r) {
+  distributed::ByteWriter w;
+  const CalibrationStart& c = r.result;
+  w.put(c.start).put(c.values).put(c.initial_cost).put(c.final_cost).put(c.iterations);
+  w.put(static_cast<int>(c.converged)).put(static_cast<int>(c.evaluated));
+  w.put(r.x).put(r.message).put(r.brief).put(static_cast<int>(r.failed));
+  std::vector<int> iterations;
+  std::vector<double> costs;
+  for (const auto& [i, cost] : r.history) {
+    iterations.push_back(i);
+    costs.push_back(cost);
+  }
+  w.put(iterations).put(costs).put(r.evaluations).put(r.fallbacks).put(r.one_sided);
+  return w.bytes();
+}
+
+StartRun from_bytes(const std::string& bytes) {
+  distributed::ByteReader in(bytes);
+  StartRun r;
+  CalibrationStart& c = r.result;
+  int converged = 0, evaluated = 0, failed = 0;
+  in.get(c.start);
+  in.get(c.values);
+  in.get(c.initial_cost);
+  in.get(c.final_cost);
+  in.get(c.iterations);
+  in.get(converged);
+  in.get(evaluated);
+  in.get(r.x);
+  in.get(r.message);
+  in.get(r.brief);
+  in.get(failed);
+  std::vector<int> iterations;
+  std::vector<double> costs;
+  in.get(iterations);
+  in.get(costs);
+  in.get(r.evaluations);
+  in.get(r.fallbacks);
+  in.get(r.one_sided);
+  c.converged = converged != 0;
+  c.evaluated = evaluated != 0;
+  r.failed = failed != 0;
+  for (size_t k = 0; k < iterations.size() && k < costs.size(); ++k) r.history.emplace_back(iterations[k], costs[k]);
+  return r;
+}
+
+// Under mpirun (ranks sharing out independent runs) rank r runs starts r, r + ranks, ... and every
+// rank receives all of them; otherwise every start here, on `workers` threads.
+void run_starts_over_ranks(std::vector<StartRun>& runs, size_t workers, const std::function<void(size_t)>& run_start) {
+  const int ranks = distributed::size();
+  if (ranks == 1 || distributed::shared_solves()) {
+    for_each_index(runs.size(), workers, run_start);
+    return;
+  }
+  std::vector<size_t> mine;
+  for (size_t s = static_cast<size_t>(distributed::rank()); s < runs.size(); s += static_cast<size_t>(ranks))
+    mine.push_back(s);
+  for_each_index(mine.size(), std::min(workers, std::max<size_t>(mine.size(), 1)),
+                 [&](size_t k) { run_start(mine[k]); });
+  distributed::ByteWriter w;
+  for (size_t s : mine) w.put(to_bytes(runs[s]));
+  const std::vector<std::string> all = distributed::gather_from_all(w.bytes());
+  for (int r = 0; r < ranks; ++r) {
+    distributed::ByteReader in(all[static_cast<size_t>(r)]);
+    for (size_t s = static_cast<size_t>(r); s < runs.size(); s += static_cast<size_t>(ranks)) {
+      std::string bytes;
+      in.get(bytes);
+      runs[s] = from_bytes(bytes);
+    }
+  }
+}
+
 // The spec's values, then starts - 1 points of a Latin hypercube in the fit values within the bounds.
 std::vector<std::vector<double>> start_points(const CalibrationSpec& cal) {
   const size_t n = cal.parameters.size();
@@ -230,16 +315,9 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   // candidate (a whole Jacobian, 2 n model runs) before evaluating its cost, doubling the runs per
   // iteration; Ceres still projects each step onto the bounds.
   options.max_num_line_search_step_size_iterations = 0;
-  // Every start is its own problem: they run on `threads` workers, and the best is chosen in start
-  // order afterwards, so the outcome is the serial one whatever the workers' timing.
-  struct StartRun {
-    CalibrationStart result;
-    std::vector<double> x;
-    std::string message, brief;
-    bool failed = false;  // stopped because the model could not be run where Ceres asked
-    std::vector<std::pair<int, double>> history;
-    int evaluations = 0, fallbacks = 0, one_sided = 0;
-  };
+  // Every start is its own problem: they run on `threads` workers (and, under mpirun, shared out
+  // over the ranks), and the best is chosen in start order afterwards, so the outcome is the serial
+  // one whatever the workers' timing.
   std::vector<StartRun> runs(starts.size());
   std::mutex progress_lock;
   FitProgress locked_progress;  // the caller's, one line at a time
@@ -273,7 +351,11 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     run.brief = summary.BriefReport();
     run.failed = summary.termination_type == ceres::FAILURE;
   };
-  for_each_index(starts.size(), worker_count(starts.size(), cal.threads), run_start);
+  run_starts_over_ranks(runs, worker_count(starts.size(), cal.threads), run_start);
+  if (const auto ranks = static_cast<size_t>(distributed::size());
+      ranks > starts.size() && !distributed::shared_solves())
+    out.warnings.push_back(
+        fmt::format("{} MPI ranks for {} starts: {} ranks ran none", ranks, starts.size(), ranks - starts.size()));
   std::vector<double> x;
   std::string message;
   for (size_t s = 0; s < starts.size(); ++s) {

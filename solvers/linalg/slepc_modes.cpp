@@ -77,6 +77,10 @@ void run(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix
   char message[1024] = "fault injected by BLADEBENCH_FAULT_RANK";
   const int status = fault_injected() ? 1 : slepc().modes(&kv, &mv, &request, &out.raw, message, sizeof message);
   stop_on_failure(status, what, message);
+  // For bench/: each SLEPc call's time and the shifts it factorized (BLADEBENCH_SLEPC_TRACE=1).
+  if (std::getenv("BLADEBENCH_SLEPC_TRACE") && distributed::is_root())
+    std::fprintf(stderr, "slepc: %s: %d eigenpairs, %d shifts, %d iterations, %.3f s\n", what.c_str(), out.raw.count,
+                 out.raw.shifts, out.raw.iterations, out.raw.seconds);
 }
 
 bb_modes_request request_for(const ModalOptions& options) {
@@ -190,7 +194,7 @@ ModalSolution slepc_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, c
   // A Ritz value's error is about the square of its residual: 1e-6 places the cut to 1e-12.
   estimate.tolerance = std::max(options.tolerance, 1e-6);
   Result first;
-  run(stiffness, mass, estimate, first, "SLEPc Krylov-Schur (the band's top)");
+  run(stiffness, mass, estimate, first, "SLEPc Krylov-Schur (the n-th eigenvalue)");
   const ModalSolution guess = solution_of(first.raw, mass, nullptr);
   const double top = guess.eigenvalues.maxCoeff();
   const double lambda_n = guess.eigenvalues[options.n_modes - 1];

@@ -11,6 +11,8 @@
 #include "common/errors.hpp"
 #include "linalg/hermitian_lanczos.hpp"
 #include "linalg/inertia.hpp"
+#include "linalg/modal_cut.hpp"
+#include "linalg/modal_residual.hpp"
 #include "linalg/slepc_modes.hpp"
 #include "linalg/spd_factor.hpp"
 
@@ -101,47 +103,6 @@ HermitianModalSolution lanczos_run(const Eigen::SparseMatrix<std::complex<double
   sol.iterations = r.restarts + 1;
   sol.converged_modes = nev;
   return sol;
-}
-
-template <class Scalar>
-double norm1(const Eigen::SparseMatrix<Scalar>& a) {
-  double best = 0.0;
-  for (int c = 0; c < a.outerSize(); ++c) {
-    double sum = 0.0;
-    for (typename Eigen::SparseMatrix<Scalar>::InnerIterator it(a, c); it; ++it) sum += std::abs(it.value());
-    best = std::max(best, sum);
-  }
-  return best;
-}
-
-// Normwise backward error, meaningful for rigid-body modes too (where K x ~ 0).
-template <class Scalar>
-double max_backward_error(const Eigen::SparseMatrix<Scalar>& stiffness, const Eigen::SparseMatrix<Scalar>& mass,
-                          const BasicModalSolution<Scalar>& sol) {
-  const double k_norm = norm1(stiffness), m_norm = norm1(mass);
-  double worst = 0.0;
-  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k) {
-    const Eigen::Matrix<Scalar, Eigen::Dynamic, 1> kx = stiffness * sol.shapes.col(k);
-    const double scale = (k_norm + std::abs(sol.eigenvalues[k]) * m_norm) * sol.shapes.col(k).norm();
-    const double res = (kx - sol.eigenvalues[k] * (mass * sol.shapes.col(k))).norm() / std::max(scale, 1e-300);
-    worst = std::max(worst, res);
-  }
-  return worst;
-}
-
-// The shift at which the Sturm count is taken: just above the n-th eigenvalue, so that a repeated
-// eigenvalue there is counted whole. When the n-th mode is a rigid-body mode (lambda ~ 0, where the
-// count would hinge on rounding), a small fraction of the first elastic eigenvalue found; nullopt
-// when none was found (every computed mode is rigid: nothing to separate).
-std::optional<double> count_shift(const Eigen::VectorXd& eigenvalues, int n, double cluster_tolerance) {
-  const double top = eigenvalues.maxCoeff();
-  if (!(top > 0.0)) return std::nullopt;
-  const double lambda_n = eigenvalues[n - 1];
-  const double rigid = 1e-8 * top;
-  if (std::abs(lambda_n) > rigid) return lambda_n + cluster_tolerance * std::abs(lambda_n);
-  for (Eigen::Index k = n; k < eigenvalues.size(); ++k)
-    if (eigenvalues[k] > rigid) return 1e-3 * eigenvalues[k];
-  return std::nullopt;
 }
 
 template <class Scalar>

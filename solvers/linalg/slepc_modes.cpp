@@ -8,10 +8,13 @@
 #include <cstdlib>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "common/errors.hpp"
 #include "distributed/distributed.hpp"
+#include "linalg/modal_cut.hpp"
+#include "linalg/modal_residual.hpp"
 
 namespace bb {
 namespace {
@@ -144,27 +147,6 @@ ModalSolution sliced(const Eigen::SparseMatrix<double>& stiffness, const Eigen::
   return sol;
 }
 
-double max_backward_error(const Eigen::SparseMatrix<double>& k, const Eigen::SparseMatrix<double>& m,
-                          const ModalSolution& sol) {
-  auto norm1 = [](const Eigen::SparseMatrix<double>& a) {
-    double best = 0.0;
-    for (int c = 0; c < a.outerSize(); ++c) {
-      double sum = 0.0;
-      for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it) sum += std::abs(it.value());
-      best = std::max(best, sum);
-    }
-    return best;
-  };
-  const double kn = norm1(k), mn = norm1(m);
-  double worst = 0.0;
-  for (Eigen::Index j = 0; j < sol.shapes.cols(); ++j) {
-    const Eigen::VectorXd x = sol.shapes.col(j);
-    const double scale = (kn + std::abs(sol.eigenvalues[j]) * mn) * x.norm();
-    worst = std::max(worst, (k * x - sol.eigenvalues[j] * (m * x)).norm() / std::max(scale, 1e-300));
-  }
-  return worst;
-}
-
 }  // namespace
 
 ModalSolution slepc_modes_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
@@ -197,29 +179,19 @@ ModalSolution slepc_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, c
   run(stiffness, mass, estimate, first, "SLEPc Krylov-Schur (the n-th eigenvalue)");
   const ModalSolution guess = solution_of(first.raw, mass, nullptr);
   const double top = guess.eigenvalues.maxCoeff();
-  const double lambda_n = guess.eigenvalues[options.n_modes - 1];
-  // A rigid n-th mode: cut at a small share of the first elastic eigenvalue (as the Sturm count does).
-  double cut = lambda_n + options.cluster_tolerance * std::abs(lambda_n);
-  if (!(top > 0.0) || std::abs(lambda_n) <= 1e-8 * top) {
-    cut = 0.0;
-    for (Eigen::Index k = options.n_modes; k < guess.eigenvalues.size(); ++k)
-      if (guess.eigenvalues[k] > 1e-8 * top) {
-        cut = 1e-3 * guess.eigenvalues[k];
-        break;
-      }
-    if (!(cut > 0.0)) {
-      ModalSolution sol = guess;
-      sol.lanczos_runs = 1;
-      sol.max_residual = max_backward_error(stiffness, mass, sol);
-      return sol;
-    }
+  const std::optional<double> cut = count_shift(guess.eigenvalues, options.n_modes, options.cluster_tolerance);
+  if (!cut) {  // every mode found is rigid: nothing to separate, as the default eigensolver does
+    ModalSolution sol = guess;
+    sol.lanczos_runs = 1;
+    sol.max_residual = max_backward_error(stiffness, mass, sol);
+    return sol;
   }
   bb_modes_request slice = request_for(options);
-  slice.upper = cut;
+  slice.upper = *cut;
   ModalSolution sol = sliced(stiffness, mass, slice, "SLEPc spectrum slicing");
   if (sol.eigenvalues.size() < options.n_modes)
     throw SolverError(fmt::format("SLEPc spectrum slicing found {} modes below {:.6g} Hz where {} were asked for",
-                                  sol.eigenvalues.size(), std::sqrt(std::max(cut, 0.0)) / (2 * std::numbers::pi),
+                                  sol.eigenvalues.size(), std::sqrt(std::max(*cut, 0.0)) / (2 * std::numbers::pi),
                                   options.n_modes));
   // The estimate may have missed a member of a repeated eigenvalue, putting its n-th Ritz value on
   // the next mode: keep the n-th mode's cluster and no more. Every eigenvalue below the slicing's

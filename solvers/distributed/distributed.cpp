@@ -39,8 +39,8 @@ std::vector<std::string> plugin_candidates() {
   return c;
 }
 
-// RTLD_DEEPBIND: the plugin's libraries (PETSc -> MPI MUMPS) resolve their symbols among themselves
-// first, not in the sequential MUMPS this program links.
+// RTLD_LOCAL: the plugin's libraries (PETSc -> the MPI build of MUMPS) stay out of the global scope,
+// as the sequential MUMPS does (linalg/inertia.cpp), so neither resolves to the other.
 void load(State& s) {
   std::string tried;
   for (const std::string& path : plugin_candidates()) {
@@ -48,7 +48,7 @@ void load(State& s) {
       tried += fmt::format("{}{} (missing)", tried.empty() ? "" : ", ", path);
       continue;
     }
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
       s.failure = fmt::format("cannot load the PETSc/SLEPc plugin {}: {}", path, dlerror());
       return;

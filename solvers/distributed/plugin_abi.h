@@ -1,6 +1,7 @@
 /* The C interface between bladebench and its PETSc/SLEPc plugin (libbladebench_slepc.so).
-   The plugin is loaded at run time with its own symbol scope: PETSc links the MPI build of MUMPS,
-   the rest of bladebench the sequential one, and the two define the same symbols. Nothing but
+   The plugin is loaded at run time into a symbol scope of its own: PETSc links the MPI build of
+   MUMPS, bladebench's Sturm counts the sequential one (itself a module, linalg/mumps_module), and
+   the two define the same symbols. Nothing but
    plain C types crosses this line; arrays the plugin allocates are released by bb_plugin_free. */
 #ifndef BLADEBENCH_DISTRIBUTED_PLUGIN_ABI_H
 #define BLADEBENCH_DISTRIBUTED_PLUGIN_ABI_H

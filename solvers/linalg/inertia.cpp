@@ -1,12 +1,16 @@
 #include "linalg/inertia.hpp"
 
+#include <dlfcn.h>
 #include <dmumps_c.h>
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
 #include <mutex>
+#include <string>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "linalg/blas_threads.hpp"
 
 namespace bb {
@@ -81,6 +85,30 @@ InertiaCount eigenvalues_below(const Eigen::SparseMatrix<std::complex<double>>& 
 
 namespace {
 
+// The sequential MUMPS is loaded at run time into a symbol scope of its own (RTLD_LOCAL), through
+// the module that links it (linalg/mumps_module): the PETSc/SLEPc plugin links the MPI build of
+// MUMPS, which defines the same symbols, and neither may resolve to the other.
+using DmumpsC = void (*)(DMUMPS_STRUC_C*);
+DmumpsC sequential_mumps() {
+  static const DmumpsC entry = [] {
+    std::string tried;
+    for (const char* path : {BB_MUMPS_MODULE_BUILD, BB_MUMPS_MODULE_INSTALL}) {
+      if (!std::filesystem::exists(path)) {
+        tried += fmt::format("{}{} (missing)", tried.empty() ? "" : ", ", path);
+        continue;
+      }
+      void* handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+      if (!handle) throw SolverError(fmt::format("cannot load the sequential MUMPS module {}: {}", path, dlerror()));
+      using Entry = void* (*)();
+      const auto entry_point = reinterpret_cast<Entry>(dlsym(handle, "bladebench_dmumps_c"));
+      if (!entry_point) throw SolverError(fmt::format("{} is not bladebench's sequential MUMPS module", path));
+      return reinterpret_cast<DmumpsC>(entry_point());
+    }
+    throw SolverError(fmt::format("the sequential MUMPS module was not found (looked for {})", tried));
+  }();
+  return entry;
+}
+
 InertiaCount negative_pivots(LowerTriangle& a) {
   const auto t0 = std::chrono::steady_clock::now();
   InertiaCount out;
@@ -91,6 +119,7 @@ InertiaCount negative_pivots(LowerTriangle& a) {
   use_one_thread_per_factorization();
   static std::mutex mumps;
   const std::lock_guard<std::mutex> one_at_a_time(mumps);
+  const DmumpsC dmumps_c = sequential_mumps();
   DMUMPS_STRUC_C id{};
   id.comm_fortran = kUseCommWorld;
   id.par = 1;

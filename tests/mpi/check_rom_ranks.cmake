@@ -1,0 +1,33 @@
+# A Craig-Bampton reduction with its fixed-interface modes by SLEPc and its constraint modes by
+# PETSc's MUMPS Cholesky, through the command line on 1 and 2 ranks: the reduced model's frequencies
+# are the default eigensolver's within 1e-9. Arguments: BIN, CASE, WORK, MPIEXEC, MPIFLAGS, PYTHON.
+file(REMOVE_RECURSE ${WORK})
+file(READ ${CASE} text)
+string(REPLACE "[[analysis.rom]]" "[[analysis.rom]]\neigensolver = \"slepc\"" sliced "${text}")
+file(WRITE ${WORK}/cantilever_rom.toml "${sliced}")
+foreach(entry default slepc_1 slepc_2)
+  if(entry STREQUAL "default")
+    set(file ${CASE})
+    set(launcher "")
+  else()
+    set(file ${WORK}/cantilever_rom.toml)
+    set(launcher "")
+    if(entry STREQUAL "slepc_2")
+      set(launcher ${MPIEXEC} ${MPIFLAGS} -np 2)
+    endif()
+  endif()
+  execute_process(COMMAND ${launcher} ${BIN} run ${file} --out ${WORK}/${entry} --no-plots --no-cache
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "${entry}: exited ${code}, expected 0 (a case without checks):\n${out}\n${err}")
+  endif()
+endforeach()
+foreach(entry slepc_1 slepc_2)
+  execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/compare_frequencies.py
+                          ${WORK}/default/rom_frequencies_rom.csv ${WORK}/${entry}/rom_frequencies_rom.csv 1e-9
+                  RESULT_VARIABLE code OUTPUT_VARIABLE said ERROR_VARIABLE why)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "${entry}: the reduced model differs from the default eigensolver's: ${why}")
+  endif()
+  message(STATUS "${entry}: ${said}")
+endforeach()

@@ -421,7 +421,7 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : bb::exit_bad_input;
   }
   try {
-    bb::distributed::start_if_launched();
+    if (!bb::distributed::start_if_launched()) return bb::exit_pass;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", bb::printable(e.what()).c_str());
     return bb::exit_solver_failed;

@@ -102,15 +102,24 @@ bool launched_by_mpi() {
   return false;
 }
 
-void start_if_launched() {
-  if (!launched_by_mpi()) return;
+bool start_if_launched() {
+  if (!launched_by_mpi()) return true;
   if (!built_with_slepc()) {
+    // The launcher's environment still tells the rank; the others leave so that rank 0 alone writes.
+    int launched_rank = 0;
+    for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+      if (const char* r = std::getenv(v); r && *r) {
+        launched_rank = std::atoi(r);
+        break;
+      }
+    if (launched_rank != 0) return false;
     std::fprintf(stderr,
-                 "warning: started by mpirun, but this bladebench was built without PETSc/SLEPc: every rank runs "
-                 "alone\n");
-    return;
+                 "warning: started by mpirun, but this bladebench was built without PETSc/SLEPc: rank 0 runs "
+                 "alone, the other ranks stop\n");
+    return true;
   }
   plugin("mpirun");
+  return true;
 }
 
 void finish() {

@@ -19,8 +19,9 @@ const bb_plugin& plugin(const std::string& what_needs_it);
 bool launched_by_mpi();
 
 // At program start: under mpirun, load the plugin and start MPI so that the ranks are known before
-// any output is written. A build without the plugin runs each rank alone, with a warning.
-void start_if_launched();
+// any output is written. False for a process that must not run the command: under mpirun in a build
+// without the plugin, every rank but 0 (rank 0 runs alone, with a warning).
+bool start_if_launched();
 // MPI finalized, if this process started it.
 void finish();
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "assembly/assemble.hpp"
 #include "common/errors.hpp"
@@ -34,24 +35,25 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   result.assembly_seconds = system.assembly_seconds;
   // A band is sized by the Sturm count at its top: exactly the modes below f_max are asked for.
   const double two_pi = 2 * std::numbers::pi;
-  const bool sliced_band = selection.band_max_hz && options.eigensolver == Eigensolver::slepc;
-  if (selection.band_max_hz && !sliced_band) {
-    const InertiaCount below =
-        eigenvalues_below(system.stiffness, system.mass, std::pow(two_pi * *selection.band_max_hz, 2));
-    if (!below.ok)
-      throw SolverError(fmt::format("modal band: Sturm count at {} Hz: {}", *selection.band_max_hz, below.message));
-    if (below.negative >= dofs.n_free)
+  const std::optional<double> band_top =
+      selection.band_max_hz ? std::optional<double>(std::pow(two_pi * *selection.band_max_hz, 2)) : std::nullopt;
+  const auto refuse_band_of_every_mode = [&](Eigen::Index below_top) {
+    if (below_top >= dofs.n_free)
       throw InputError(
           fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));
+  };
+  const bool sliced_band = band_top && options.eigensolver == Eigensolver::slepc;
+  if (band_top && !sliced_band) {
+    const InertiaCount below = eigenvalues_below(system.stiffness, system.mass, *band_top);
+    if (!below.ok)
+      throw SolverError(fmt::format("modal band: Sturm count at {} Hz: {}", *selection.band_max_hz, below.message));
+    refuse_band_of_every_mode(below.negative);
     options.n_modes = std::max(below.negative, 1);
   }
   // SLEPc slices the band itself: its count comes from the factorizations at the band's ends.
-  ModalSolution sol = sliced_band ? slepc_modes_below(system.stiffness, system.mass,
-                                                      std::pow(two_pi * *selection.band_max_hz, 2), options)
+  ModalSolution sol = sliced_band ? slepc_modes_below(system.stiffness, system.mass, *band_top, options)
                                   : cached_lowest_modes(system.stiffness, system.mass, options, &result.cache);
-  if (sliced_band && sol.eigenvalues.size() >= dofs.n_free)
-    throw InputError(
-        fmt::format("'analysis.band_hz': the band holds all {} modes of the model; lower its top", dofs.n_free));
+  if (sliced_band) refuse_band_of_every_mode(sol.eigenvalues.size());
   if (selection.band_min_hz || selection.band_max_hz) {
     std::vector<Eigen::Index> keep;
     for (Eigen::Index i = 0; i < sol.eigenvalues.size(); ++i) {

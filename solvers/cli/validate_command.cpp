@@ -111,8 +111,7 @@ int validate_command(const ValidateArgs& a) {
       std::fprintf(stderr, "warning: %d ranks for %zu cases: %zu ranks have nothing to run\n", ranks, files.size(),
                    static_cast<size_t>(ranks) - files.size());
   }
-  std::vector<size_t> mine;  // the cases this rank runs: every ranks-th
-  for (size_t i = static_cast<size_t>(rank); i < files.size(); i += static_cast<size_t>(ranks)) mine.push_back(i);
+  const std::vector<size_t> mine = bb::distributed::share_of_rank(files.size(), rank);
   std::vector<std::pair<size_t, bb::IndexEntry>> done;  // (file, entry) in the order runs finish
   int rc = bb::exit_pass;
   auto record = [&](size_t i, bb::IndexEntry e, int code) {
@@ -187,7 +186,7 @@ int validate_command(const ValidateArgs& a) {
     bb::distributed::max_over_ranks(codes);
     if (!bb::distributed::is_root()) return *std::max_element(codes.begin(), codes.end());
     for (size_t i = 0; i < files.size(); ++i) {
-      if (static_cast<int>(i % static_cast<size_t>(ranks)) == rank) continue;
+      if (bb::distributed::owner_of(i) == rank) continue;
       const fs::path out_dir = fs::path(a.out) / files[i].stem();
       std::optional<bb::IndexEntry> e = bb::read_index_entry(out_dir, a.out);
       if (e && bb::exit_code(e->status) != codes[i]) e.reset();
@@ -197,7 +196,7 @@ int validate_command(const ValidateArgs& a) {
         e->report = fs::relative(out_dir / "report.md", a.out);
         e->status = codes[i] == bb::exit_bad_input ? bb::RunStatus::bad_input : bb::RunStatus::solver_failed;
         e->message = fmt::format("the run on MPI rank {} exited with code {} and no report",
-                                 i % static_cast<size_t>(ranks), codes[i]);
+                                 bb::distributed::owner_of(i), codes[i]);
       }
       record(i, *e, codes[i]);
     }

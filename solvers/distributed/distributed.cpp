@@ -1,14 +1,13 @@
 #include "distributed/distributed.hpp"
 
-#include <dlfcn.h>
 #include <fmt/format.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <mutex>
 
 #include "common/errors.hpp"
+#include "common/run_time_module.hpp"
 
 namespace bb::distributed {
 namespace {
@@ -39,39 +38,31 @@ std::vector<std::string> plugin_candidates() {
   return c;
 }
 
-// RTLD_LOCAL: the plugin's libraries (PETSc -> the MPI build of MUMPS) stay out of the global scope,
-// as the sequential MUMPS does (linalg/inertia.cpp), so neither resolves to the other.
+// The plugin in a symbol scope of its own (common/run_time_module.hpp): its PETSc links the MPI build
+// of MUMPS, the Sturm counts the sequential one (linalg/inertia.cpp).
 void load(State& s) {
-  std::string tried;
-  for (const std::string& path : plugin_candidates()) {
-    if (!std::filesystem::exists(path)) {
-      tried += fmt::format("{}{} (missing)", tried.empty() ? "" : ", ", path);
-      continue;
-    }
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) {
-      s.failure = fmt::format("cannot load the PETSc/SLEPc plugin {}: {}", path, dlerror());
-      return;
-    }
+  const bb_plugin* p = nullptr;
+  try {
     using Entry = const bb_plugin* (*)();
-    const auto entry = reinterpret_cast<Entry>(dlsym(handle, "bladebench_plugin"));
-    const bb_plugin* p = entry ? entry() : nullptr;
-    if (!p || p->abi_version != BB_PLUGIN_ABI_VERSION) {
-      s.failure = fmt::format("{} is not this build's PETSc/SLEPc plugin (interface version {}, expected {})", path,
-                              p ? p->abi_version : -1, BB_PLUGIN_ABI_VERSION);
-      return;
-    }
-    char message[512] = {0};
-    if (p->initialize(message, sizeof message) != 0) {
-      s.failure = fmt::format("MPI / PETSc / SLEPc did not start: {}", message);
-      return;
-    }
-    s.plugin = p;
-    s.started = true;
-    std::atexit([] { finish(); });  // a program that never calls finish() still ends MPI cleanly
+    p = reinterpret_cast<Entry>(
+        run_time_module_entry(plugin_candidates(), "bladebench_plugin", "the PETSc/SLEPc plugin"))();
+  } catch (const SolverError& e) {
+    s.failure = e.what();
     return;
   }
-  s.failure = fmt::format("the PETSc/SLEPc plugin was not found (looked for {})", tried);
+  if (!p || p->abi_version != BB_PLUGIN_ABI_VERSION) {
+    s.failure = fmt::format("the PETSc/SLEPc plugin found is not this build's (interface version {}, expected {})",
+                            p ? p->abi_version : -1, BB_PLUGIN_ABI_VERSION);
+    return;
+  }
+  char message[512] = {0};
+  if (p->initialize(message, sizeof message) != 0) {
+    s.failure = fmt::format("MPI / PETSc / SLEPc did not start: {}", message);
+    return;
+  }
+  s.plugin = p;
+  s.started = true;
+  std::atexit([] { finish(); });  // a program that never calls finish() still ends MPI cleanly
 }
 
 }  // namespace
@@ -130,6 +121,12 @@ void finish() {
 
 int rank() { return state().started ? state().plugin->rank() : 0; }
 int size() { return state().started ? state().plugin->size() : 1; }
+
+std::vector<std::size_t> share_of_rank(std::size_t count, int rank) {
+  std::vector<std::size_t> runs;
+  for (auto i = static_cast<std::size_t>(rank); i < count; i += static_cast<std::size_t>(size())) runs.push_back(i);
+  return runs;
+}
 
 void set_shared_solves(bool shared) { state().shared = shared; }
 bool shared_solves() { return state().shared; }

@@ -1,6 +1,7 @@
 // Work beyond one process: the PETSc/SLEPc plugin (distributed/plugin_abi.h), loaded on first use
 // or at start-up under mpirun, and what a run needs to know of its ranks.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ void finish();
 int rank();  // 0 without MPI
 int size();  // 1 without MPI
 inline bool is_root() { return rank() == 0; }
+
+// Independent runs 0..count-1 shared out over the ranks: rank r takes r, r + size(), ... (every one
+// without MPI), and run i belongs to rank i % size().
+std::vector<std::size_t> share_of_rank(std::size_t count, int rank);
+inline int owner_of(std::size_t run) { return static_cast<int>(run % static_cast<std::size_t>(size())); }
 
 // Whether eigensolves span every rank (one case run by all ranks) or stay on each rank (the ranks
 // share out independent runs). Default: every rank.

@@ -12,7 +12,7 @@
 extern "C" {
 #endif
 
-#define BB_PLUGIN_ABI_VERSION 2
+#define BB_PLUGIN_ABI_VERSION 3
 
 /* Upper triangle (column >= row) of a symmetric matrix, row by row, on every rank whole. */
 typedef struct {
@@ -29,7 +29,6 @@ typedef struct {
   int n_estimate;     /* > 0: no slicing; the n eigenvalues nearest `lower` by shift-invert (estimates of a band top) */
   double tolerance;   /* relative residual */
   int max_iterations;
-  int partitions;     /* sub-communicators of the slicing (each its own part of the interval); 1 = one */
 } bb_modes_request;
 
 typedef struct {

@@ -223,9 +223,7 @@ void run_starts_over_ranks(std::vector<StartRun>& runs, size_t workers, const st
     for_each_index(runs.size(), workers, run_start);
     return;
   }
-  std::vector<size_t> mine;
-  for (size_t s = static_cast<size_t>(distributed::rank()); s < runs.size(); s += static_cast<size_t>(ranks))
-    mine.push_back(s);
+  const std::vector<size_t> mine = distributed::share_of_rank(runs.size(), distributed::rank());
   for_each_index(mine.size(), std::min(workers, std::max<size_t>(mine.size(), 1)),
                  [&](size_t k) { run_start(mine[k]); });
   distributed::ByteWriter w;
@@ -233,7 +231,7 @@ void run_starts_over_ranks(std::vector<StartRun>& runs, size_t workers, const st
   const std::vector<std::string> all = distributed::gather_from_all(w.bytes());
   for (int r = 0; r < ranks; ++r) {
     distributed::ByteReader in(all[static_cast<size_t>(r)]);
-    for (size_t s = static_cast<size_t>(r); s < runs.size(); s += static_cast<size_t>(ranks)) {
+    for (size_t s : distributed::share_of_rank(runs.size(), r)) {
       std::string bytes;
       in.get(bytes);
       runs[s] = from_bytes(bytes);

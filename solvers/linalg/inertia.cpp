@@ -1,16 +1,15 @@
 #include "linalg/inertia.hpp"
 
-#include <dlfcn.h>
 #include <dmumps_c.h>
 #include <fmt/format.h>
 
 #include <chrono>
-#include <filesystem>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/run_time_module.hpp"
 #include "linalg/blas_threads.hpp"
 
 namespace bb {
@@ -91,20 +90,11 @@ namespace {
 using DmumpsC = void (*)(DMUMPS_STRUC_C*);
 DmumpsC sequential_mumps() {
   static const DmumpsC entry = [] {
-    std::string tried;
-    for (const char* path : {BB_MUMPS_MODULE_BUILD, BB_MUMPS_MODULE_INSTALL}) {
-      if (!std::filesystem::exists(path)) {
-        tried += fmt::format("{}{} (missing)", tried.empty() ? "" : ", ", path);
-        continue;
-      }
-      void* handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
-      if (!handle) throw SolverError(fmt::format("cannot load the sequential MUMPS module {}: {}", path, dlerror()));
-      using Entry = void* (*)();
-      const auto entry_point = reinterpret_cast<Entry>(dlsym(handle, "bladebench_dmumps_c"));
-      if (!entry_point) throw SolverError(fmt::format("{} is not bladebench's sequential MUMPS module", path));
-      return reinterpret_cast<DmumpsC>(entry_point());
-    }
-    throw SolverError(fmt::format("the sequential MUMPS module was not found (looked for {})", tried));
+    using Entry = void* (*)();
+    const auto entry_point =
+        reinterpret_cast<Entry>(run_time_module_entry({BB_MUMPS_MODULE_BUILD, BB_MUMPS_MODULE_INSTALL},
+                                                      "bladebench_dmumps_c", "bladebench's sequential MUMPS module"));
+    return reinterpret_cast<DmumpsC>(entry_point());
   }();
   return entry;
 }

@@ -92,7 +92,6 @@ bb_modes_request request_for(const ModalOptions& options) {
   r.lower = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
   r.tolerance = options.tolerance;
   r.max_iterations = options.max_iterations;
-  r.partitions = 1;
   return r;
 }
 
@@ -110,8 +109,7 @@ ModalSolution solution_of(const bb_modes_result& r, const Eigen::SparseMatrix<do
     sol.eigenvalues[j] = r.eigenvalues[i];
     Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(r.vectors + static_cast<int64_t>(i) * r.n, r.n);
     x /= std::sqrt(x.dot(mass * x));
-    // The Rayleigh quotient: its error is the square of the vector's, where Krylov-Schur's Ritz value
-    // carries the vector's error itself (3e-9 on Table VI's close pair at tolerance 1e-10).
+    // The Rayleigh quotient of the shape as returned: an error in the shape enters it only squared.
     if (stiffness) sol.eigenvalues[j] = x.dot(*stiffness * x);
     Eigen::Index top = 0;
     x.cwiseAbs().maxCoeff(&top);
@@ -178,7 +176,6 @@ ModalSolution slepc_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, c
   Result first;
   run(stiffness, mass, estimate, first, "SLEPc Krylov-Schur (the n-th eigenvalue)");
   const ModalSolution guess = solution_of(first.raw, mass, nullptr);
-  const double top = guess.eigenvalues.maxCoeff();
   const std::optional<double> cut = count_shift(guess.eigenvalues, options.n_modes, options.cluster_tolerance);
   if (!cut) {  // every mode found is rigid: nothing to separate, as the default eigensolver does
     ModalSolution sol = guess;
@@ -196,17 +193,15 @@ ModalSolution slepc_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, c
   // The estimate may have missed a member of a repeated eigenvalue, putting its n-th Ritz value on
   // the next mode: keep the n-th mode's cluster and no more. Every eigenvalue below the slicing's
   // top is in `sol`, so the kept ones are all those below the lower cut.
-  const double kept_lambda = sol.eigenvalues[options.n_modes - 1];
-  if (std::abs(kept_lambda) > 1e-8 * top) {
-    const double kept_cut = kept_lambda + options.cluster_tolerance * std::abs(kept_lambda);
-    const auto kept = static_cast<Eigen::Index>((sol.eigenvalues.array() <= kept_cut).count());
-    if (kept < sol.eigenvalues.size()) {
-      sol.eigenvalues.conservativeResize(kept);
-      sol.shapes.conservativeResize(Eigen::NoChange, kept);
-      sol.converged_modes = static_cast<int>(kept);
-      sol.sturm_count = static_cast<int>(kept);
-      sol.sturm_shift = kept_cut;
-    }
+  const std::optional<double> kept_cut = count_shift(sol.eigenvalues, options.n_modes, options.cluster_tolerance);
+  const auto kept =
+      kept_cut ? static_cast<Eigen::Index>((sol.eigenvalues.array() <= *kept_cut).count()) : sol.eigenvalues.size();
+  if (kept < sol.eigenvalues.size()) {
+    sol.eigenvalues.conservativeResize(kept);
+    sol.shapes.conservativeResize(Eigen::NoChange, kept);
+    sol.converged_modes = static_cast<int>(kept);
+    sol.sturm_count = static_cast<int>(kept);
+    sol.sturm_shift = *kept_cut;
   }
   sol.iterations += guess.iterations;
   sol.lanczos_runs = 2;

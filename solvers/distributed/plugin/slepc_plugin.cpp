@@ -195,7 +195,6 @@ int modes(const bb_upper_csr* stiffness, const bb_upper_csr* mass, const bb_mode
   if (slicing) {
     BB_TRY(EPSSetWhichEigenpairs(eps, EPS_ALL));
     BB_TRY(EPSSetInterval(eps, request->lower, request->upper));
-    if (request->partitions > 1) BB_TRY(EPSKrylovSchurSetPartitions(eps, request->partitions));
   } else {
     BB_TRY(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
     BB_TRY(EPSSetTarget(eps, request->lower));

@@ -17,6 +17,7 @@
 #include <numbers>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"
 #include "mesh/hex_block.hpp"
@@ -24,7 +25,6 @@
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kRootWidth = 0.035, kRootHeight = 0.015, kAirfoilWidth = 0.0054, kAirfoilLength = 0.157;
 constexpr double kThickness = 0.05, kAxisBelowRoot = 0.25;
 

@@ -17,14 +17,14 @@
 
 namespace {
 
-struct Scene {
+struct StressScene {
   bb::Model model;
   Eigen::MatrixXd displacements;
 };
 
-const Scene& scene() {
-  static const Scene s = [] {
-    Scene out;
+const StressScene& stress_scene() {
+  static const StressScene s = [] {
+    StressScene out;
     out.model = bb::build_model(bb::parse_case_file("cases/thesis/table06_glued_modal.toml").model);
     const Eigen::MatrixXd& x = out.model.mesh.coords;
     out.displacements.resize(x.rows(), 3);
@@ -37,7 +37,7 @@ const Scene& scene() {
 }
 
 void BM_StressRecoveryTableVI(benchmark::State& state) {
-  const Scene& s = scene();
+  const StressScene& s = stress_scene();
   for (auto _ : state) benchmark::DoNotOptimize(bb::recover_stresses(s.model.mesh, s.model.section, s.displacements));
   state.counters["elements"] = s.model.mesh.n_elements();
   state.counters["nodes"] = s.model.mesh.n_nodes();
@@ -45,7 +45,7 @@ void BM_StressRecoveryTableVI(benchmark::State& state) {
 
 // What a static run adds after the solve: the recovery plus the nodal_stresses and nodal_strains tables.
 void BM_StressRecoveryAndTablesTableVI(benchmark::State& state) {
-  const Scene& s = scene();
+  const StressScene& s = stress_scene();
   for (auto _ : state) {
     const bb::StressField f = bb::recover_stresses(s.model.mesh, s.model.section, s.displacements);
     benchmark::DoNotOptimize(bb::nodal_stress_table("nodal_stresses", s.model.mesh, f));

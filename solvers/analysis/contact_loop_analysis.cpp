@@ -8,10 +8,11 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "common/constants.hpp"
+
 namespace bb {
 namespace {
 
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 using contact::ContactState;
 
 bool slipping(ContactState s) { return s == ContactState::slip_positive || s == ContactState::slip_negative; }

@@ -8,6 +8,7 @@
 #include <complex>
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
 #include "forced/linear_model.hpp"
@@ -19,7 +20,6 @@ namespace bb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 Eigen::VectorXd modal_zetas(const FrfDamping& d, const Eigen::VectorXd& omega) {
   if (d.kind == FrfDamping::Kind::modal) return d.modal_ratios(omega.size());
@@ -27,6 +27,9 @@ Eigen::VectorXd modal_zetas(const FrfDamping& d, const Eigen::VectorXd& omega) {
   return (c.alpha / (2 * omega.array().max(1e-300)) + 0.5 * c.beta * omega.array()).matrix();
 }
 
+}  // namespace
+
+// Not file-local: PreparedFrf, declared in the header, holds one.
 // Full mesh: eq 3.32 over its lowest modes plus the static residual of the rest.
 struct FullResponse {
   ModalReceptance receptance;
@@ -34,6 +37,8 @@ struct FullResponse {
 
   Eigen::VectorXcd at(double omega) const { return receptance.at(omega) * force.cast<std::complex<double>>(); }
 };
+
+namespace {
 
 FullResponse full_response(const Model& model, const FreeSystem& system, const FrfSpec& spec,
                            const ModalResult& modal) {
@@ -79,6 +84,9 @@ FullResponse full_response(const Model& model, const FreeSystem& system, const F
   return r;
 }
 
+}  // namespace
+
+// Not file-local: PreparedFrf, declared in the header, holds one.
 // A reduced model with its response function.
 struct RomResponse {
   RomOutcome outcome;
@@ -99,11 +107,14 @@ struct RomResponse {
   }
 };
 
-RomResponse reduced_response(const Model& model, const FreeSystem& system, const FrfSpec& spec, const RomSpec& rom) {
+namespace {
+
+RomResponse reduced_response(const Model& model, const FreeSystem& system, const FrfSpec& spec, const RomSpec& rom,
+                             const ModelCacheSettings* cache) {
   const auto t0 = Clock::now();
   RomResponse r;
   r.outcome.name = rom.name;
-  r.outcome.model = build_reduced_model(model, system, rom, &r.outcome.timing);
+  r.outcome.model = build_reduced_model(model, system, rom, &r.outcome.timing, cache);
   const ReducedModel& m = r.outcome.model;
   const std::vector<FrfForce>& forces = rom.forces.empty() ? spec.forces : rom.forces;
   const std::vector<PointDof>& responses = rom.responses.empty() ? spec.responses : rom.responses;
@@ -293,7 +304,8 @@ struct PreparedFrf {
   double full_setup_seconds = 0.0;
 };
 
-std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built) {
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built,
+                                               const ModelCacheSettings* cache) {
   auto p = std::make_shared<PreparedFrf>();
   const int models = (spec.full_model ? 1 : 0) + static_cast<int>(spec.roms.size());
   int done = 0;
@@ -319,7 +331,7 @@ std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec
     lowest.lowest = spec.full_modes;
     ModalOptions options;
     options.ordering = ordering_for_dimension(model.mesh.dim);
-    p->full_modal = solve_modal(model, system, lowest, options);
+    p->full_modal = solve_modal(model, system, lowest, options, cache);
     if (spec.pairs) p->labels = label_mode_pairs(model, *p->full_modal, *spec.pairs);
     p->full = full_response(model, system, spec, *p->full_modal);
     p->full_setup_seconds = seconds_since(t0);
@@ -330,7 +342,7 @@ std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec
     if (built) built(++done, models);
   }
   for (const RomSpec& rom : spec.roms) {
-    p->roms.push_back(reduced_response(model, system, spec, rom));
+    p->roms.push_back(reduced_response(model, system, spec, rom, cache));
     p->curves.push_back({rom.name, p->roms.back().outputs, p->columns});
     p->columns += static_cast<int>(p->roms.back().outputs.size());
     if (built) built(++done, models);
@@ -426,8 +438,8 @@ FrfOutcome sweep_frf(const PreparedFrf& p, const FrfSpec& spec) {
   return o;
 }
 
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built) {
-  return sweep_frf(*prepare_frf(model, spec, built), spec);
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built, const ModelCacheSettings* cache) {
+  return sweep_frf(*prepare_frf(model, spec, built, cache), spec);
 }
 
 }  // namespace bb

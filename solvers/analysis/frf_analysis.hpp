@@ -48,10 +48,13 @@ struct FrfOutcome {
 
 // The models of an analysis made ready to respond (modes, residual flexibility, reductions):
 // the expensive part, done once. Throws as run_frf.
-// `built(done, total)` follows the models (the full one, then each reduced one) as they are made.
+// `built(done, total)` follows the models (the full one, then each reduced one) as they are made;
+// the full model's modes and the Craig-Bampton reductions go through the model cache in `cache`,
+// when given.
 struct PreparedFrf;
 using ModelsBuilt = std::function<void(int done, int total)>;
-std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built = {});
+std::shared_ptr<const PreparedFrf> prepare_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built = {},
+                                               const ModelCacheSettings* cache = nullptr);
 const std::vector<FrfCurveSet>& frf_curves(const PreparedFrf& prepared);
 // The outputs of model `curve` (an index into frf_curves) at one frequency, for the spec's forces.
 Eigen::VectorXcd frf_respond(const PreparedFrf& prepared, size_t curve, double frequency_hz);
@@ -60,6 +63,7 @@ FrfOutcome sweep_frf(const PreparedFrf& prepared, const FrfSpec& spec);
 
 // prepare_frf + sweep_frf. Throws InputError for points that are not one-node sets, constrained DOFs, masters that
 // repeat, responses or forces a reduced model does not hold; SolverError from the solvers.
-FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built = {});
+FrfOutcome run_frf(const Model& model, const FrfSpec& spec, const ModelsBuilt& built = {},
+                   const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "analysis/hbm_stepped_sines.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
@@ -28,7 +29,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // Energy the contact dissipates per cycle: T against u, u's coefficients from its samples (exact:
 // u holds H harmonics and the AFT takes at least 2H + 1 samples).
@@ -452,9 +452,10 @@ std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& s
 
 }  // namespace
 
-HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress) {
+HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress,
+                   const ModelCacheSettings* cache) {
   HbmOutcome o;
-  o.prepared = prepare_hbm(model, spec);
+  o.prepared = prepare_hbm(model, spec, cache);
   const auto t0 = Clock::now();
   o.levels = sweep_levels(o.prepared, spec, progress);
   o.sweep_seconds = seconds_since(t0);

@@ -33,7 +33,8 @@ struct HbmOutcome {
 // harmonic_selection, limits, limit_peaks, damper_static; then the stepped sines (frf_<name>,
 // stepped_sine_cost) and the response controls (frf_<name>, response_control). Throws SolverError when a level or a
 // stepped sine finds no solution at all or a peak's refinement does not converge: a peak is never reported at a failed
-// solve.
-HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {});
+// solve. The reduction goes through the model cache in `cache`, when given (prepare_hbm).
+HbmOutcome run_hbm(const Model& model, const HbmSpec& spec, const HbmProgress& progress = {},
+                   const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

@@ -15,12 +15,13 @@
 
 namespace bb {
 
-ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options) {
-  return solve_modal(model, assemble_free_system(model), selection, options);
+ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options,
+                        const ModelCacheSettings* cache) {
+  return solve_modal(model, assemble_free_system(model), selection, options, cache);
 }
 
 ModalResult solve_modal(const Model& model, const FreeSystem& system, const ModeSelection& selection,
-                        const ModalOptions& base_options) {
+                        const ModalOptions& base_options, const ModelCacheSettings* cache) {
   const Mesh& mesh = model.mesh;
   const DofMap& dofs = system.dofs;
   ModalOptions options = base_options;
@@ -52,7 +53,7 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
   }
   // SLEPc slices the band itself: its count comes from the factorizations at the band's ends.
   ModalSolution sol = sliced_band ? slepc_modes_below(system.stiffness, system.mass, *band_top, options)
-                                  : cached_lowest_modes(system.stiffness, system.mass, options, &result.cache);
+                                  : cached_lowest_modes(system.stiffness, system.mass, options, cache, &result.cache);
   if (sliced_band) refuse_band_of_every_mode(sol.eigenvalues.size());
   if (selection.band_min_hz || selection.band_max_hz) {
     std::vector<Eigen::Index> keep;

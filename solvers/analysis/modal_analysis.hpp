@@ -35,10 +35,12 @@ struct ModalResult {
   CacheUse cache;
 };
 
-// Throws InputError when more modes are asked than the model has free DOFs.
-ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options);
+// Throws InputError when more modes are asked than the model has free DOFs. The lowest modes go
+// through the model cache in `cache`, when given.
+ModalResult solve_modal(const Model& model, const ModeSelection& selection, const ModalOptions& options,
+                        const ModelCacheSettings* cache = nullptr);
 ModalResult solve_modal(const Model& model, const FreeSystem& system, const ModeSelection& selection,
-                        const ModalOptions& options);
+                        const ModalOptions& options, const ModelCacheSettings* cache = nullptr);
 
 // The lowest options.n_modes modes.
 ModalResult solve_modal(const Model& model, const ModalOptions& options);

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "analysis/stress_tables.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
 #include "ffrf/elastic_basis.hpp"
@@ -23,8 +24,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 const char* axis_name(int d) { return d == 0 ? "x" : d == 1 ? "y" : "z"; }
 

@@ -10,15 +10,17 @@
 namespace bb {
 namespace {
 
-AnalysisResults run(const StaticSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
+AnalysisResults run(const StaticSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&,
+                    const ModelCacheSettings*) {
   ResultTables tables;
   StaticOutcome o = run_static(model, spec, tables);
   return {std::move(tables), std::move(o), {}};
 }
 
-AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
+AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&,
+                    const ModelCacheSettings* cache) {
   if (spec.pairs) check_mode_pair_sets(model, *spec.pairs);
-  ModalOutcome o{solve_modal(model, spec.modes, spec.options), {}};
+  ModalOutcome o{solve_modal(model, spec.modes, spec.options, cache), {}};
   const ModalResult& modal = o.modal;
   ResultTable frequencies = frequency_table(modal.frequencies_hz);
   if (spec.pairs) add_mode_labels(frequencies, label_mode_pairs(model, modal, *spec.pairs));
@@ -36,45 +38,52 @@ AnalysisResults run(const ModalSpec& spec, const Model& model, const HbmProgress
   return {std::move(tables), std::move(o), {}};
 }
 
-AnalysisResults run(const FrfSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
+AnalysisResults run(const FrfSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&,
+                    const ModelCacheSettings* cache) {
   if (spec.pairs) check_mode_pair_sets(model, *spec.pairs);
-  FrfOutcome o = run_frf(model, spec);
+  FrfOutcome o = run_frf(model, spec, {}, cache);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o), {}};
 }
 
-AnalysisResults run(const HbmSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
-  HbmOutcome o = run_hbm(model, spec, progress);
+AnalysisResults run(const HbmSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&,
+                    const ModelCacheSettings* cache) {
+  HbmOutcome o = run_hbm(model, spec, progress, cache);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o), {}};
 }
 
-AnalysisResults run(const TimeSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
-  TimeOutcome o = run_time(model, spec, progress);
+AnalysisResults run(const TimeSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&,
+                    const ModelCacheSettings* cache) {
+  TimeOutcome o = run_time(model, spec, progress, cache);
   ResultTables tables = o.tables;
   std::string failure = o.failure;
   return {std::move(tables), std::move(o), std::move(failure)};
 }
 
-AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress&, const WorkLimits&) {
+AnalysisResults run(const ContactLoopSpec& spec, const Model&, const HbmProgress&, const WorkLimits&,
+                    const ModelCacheSettings*) {
   ContactLoopOutcome o = run_contact_loop(spec);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o), {}};
 }
 
-AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgress&, const WorkLimits& limits) {
+AnalysisResults run(const RotatingSpec& spec, const Model& model, const HbmProgress&, const WorkLimits& limits,
+                    const ModelCacheSettings*) {
   RotatingOutcome o = run_rotating(model, spec, limits);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o), {}};
 }
 
-AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&) {
+AnalysisResults run(const ContactModalSpec& spec, const Model& model, const HbmProgress& progress, const WorkLimits&,
+                    const ModelCacheSettings*) {
   ContactModalOutcome o = run_contact_modal(model, spec, progress);
   ResultTables tables = o.tables;
   return {std::move(tables), std::move(o), {}};
 }
 
-AnalysisResults run(const CyclicModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&) {
+AnalysisResults run(const CyclicModalSpec& spec, const Model& model, const HbmProgress&, const WorkLimits&,
+                    const ModelCacheSettings*) {
   CyclicModalOutcome o = run_cyclic_modal(model, spec);
   ResultTables tables = cyclic_modal_tables(o);
   return {std::move(tables), std::move(o), {}};
@@ -83,14 +92,14 @@ AnalysisResults run(const CyclicModalSpec& spec, const Model& model, const HbmPr
 }  // namespace
 
 AnalysisResults run_analysis_keeping_tables(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,
-                                            const WorkLimits& limits) {
+                                            const WorkLimits& limits, const ModelCacheSettings* cache) {
   require_within(estimate_work(spec, model), limits);
-  return std::visit([&](const auto& s) { return run(s, model, progress, limits); }, spec);
+  return std::visit([&](const auto& s) { return run(s, model, progress, limits, cache); }, spec);
 }
 
 AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,
-                             const WorkLimits& limits) {
-  AnalysisResults r = run_analysis_keeping_tables(spec, model, progress, limits);
+                             const WorkLimits& limits, const ModelCacheSettings* cache) {
+  AnalysisResults r = run_analysis_keeping_tables(spec, model, progress, limits, cache);
   if (!r.failure.empty()) throw SolverError(r.failure);
   return r;
 }

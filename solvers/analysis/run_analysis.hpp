@@ -88,13 +88,15 @@ decltype(auto) visit_analysis(const AnalysisSpec& spec, const AnalysisResults& r
 // Runs the analysis. `progress` receives the progress lines of long sweeps (none when empty).
 // Throws InputError for a spec the model cannot serve (unknown points, sets) or whose estimated
 // work or memory exceeds `limits` (before any solve), SolverError when a solver fails in a way the
-// analysis does not report in its tables.
+// analysis does not report in its tables. Modes and Craig-Bampton reductions go through the model
+// cache in `cache`, when given.
 AnalysisResults run_analysis(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress = {},
-                             const WorkLimits& limits = {});
+                             const WorkLimits& limits = {}, const ModelCacheSettings* cache = nullptr);
 
 // The same, but a failure found once the tables were built is returned in `failure` with them,
 // not thrown: a run that writes its tables keeps what was solved.
 AnalysisResults run_analysis_keeping_tables(const AnalysisSpec& spec, const Model& model,
-                                            const HbmProgress& progress = {}, const WorkLimits& limits = {});
+                                            const HbmProgress& progress = {}, const WorkLimits& limits = {},
+                                            const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "analysis/time_sweeps.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
@@ -25,8 +26,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
-constexpr double kTwoPi = 2 * std::numbers::pi;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 // The largest relative span, (max - min) / max, over the last periods of the first-harmonic
 // amplitudes the peaks are read from: the IP and OOP components of the pair, else the responses.
@@ -183,10 +182,11 @@ bool store_first_harmonics(TimeLevel& level, Index i, const Eigen::MatrixXd& coe
   return true;
 }
 
-TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress) {
+TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress,
+                     const ModelCacheSettings* cache) {
   const auto t_start = Clock::now();
   TimeOutcome o;
-  o.prepared = prepare_hbm(model, spec.system);
+  o.prepared = prepare_hbm(model, spec.system, cache);
   const PreparedHbm& p = o.prepared;
   const TrackedDofs tracked = tracked_dofs(p);
   timeint::SteadyStateOptions options;

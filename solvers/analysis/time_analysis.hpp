@@ -67,7 +67,8 @@ bool steady_first_harmonic(const TimeLevel& level, const TimeSpec& spec, Eigen::
 
 // Throws as prepare_hbm; a frequency that does not reach the steady state, or a Newmark step that
 // fails, is reported in the tables (steady = 0, with the change or the message), never thrown; a
-// peak resting on one is `failure`.
-TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress = {});
+// peak resting on one is `failure`. The reduction goes through the model cache in `cache`, when given.
+TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress = {},
+                     const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "analysis/time_sweeps.hpp"
+#include "common/constants.hpp"
 #include "forced/hbm_level_system.hpp"
 #include "timeint/newmark_shooting.hpp"
 #include "timeint/shooting.hpp"
@@ -13,7 +14,6 @@ namespace bb {
 namespace {
 
 using Eigen::Index;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 timeint::ShootingOptions shooting_options(const TimeSpec& spec, const std::vector<Index>& dofs) {
   timeint::ShootingOptions o;

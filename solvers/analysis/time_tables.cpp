@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "analysis/time_sweeps.hpp"
+#include "common/constants.hpp"
 #include "frf/sweep.hpp"
 
 namespace bb {
 namespace {
 
 using Eigen::Index;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 // The energy a contact's loop encloses over the recorded samples: sum of T du by the trapezoid rule.
 double loop_work(const std::vector<timeint::ContactSample>& s) {

@@ -8,17 +8,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "mesh/hex_block.hpp"
 
 namespace bb {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-void require_positive(const char* name, double value) {
-  if (!(value > 0) || !std::isfinite(value))
-    throw DimensionError(name, fmt::format("{} must be a positive finite size, found {}", name, value));
-}
 
 // Cartesian point of the parameters: polar inside the rim; above it the arc length from the blade's
 // axis at the rim, R_rim (theta - theta_m), is kept at every radius.
@@ -53,7 +47,8 @@ double BladedDiskDimensions::tip_radius() const { return platform_radius() + pla
 void BladedDiskDimensions::validate() const {
   if (sectors < 3 || sectors > 1000)
     throw DimensionError("sectors", fmt::format("sectors must lie in 3..1000, found {}", sectors));
-  for (const BladedDiskDimensionField& f : bladed_disk_dimension_fields()) require_positive(f.name, this->*f.member);
+  for (const BladedDiskDimensionField& f : bladed_disk_dimension_fields())
+    require_positive_size(f.name, this->*f.member);
   if (refinement < 1 || refinement > 64)
     throw DimensionError("refinement", fmt::format("refinement must lie in 1..64, found {}", refinement));
   if (chord_divisions < 2 || chord_divisions % 2 != 0)

@@ -18,4 +18,7 @@ class DimensionError : public InputError {
   std::string name_;
 };
 
+// Throws DimensionError unless `value`, the size called `name`, is positive and finite.
+void require_positive_size(const char* name, double value);
+
 }  // namespace bb

@@ -49,11 +49,6 @@ class BlockList {
   ElementType element_;
 };
 
-void require_positive(const char* name, double value) {
-  if (!(value > 0) || !std::isfinite(value))
-    throw DimensionError(name, fmt::format("{} must be a positive finite size, found {}", name, value));
-}
-
 }  // namespace
 
 double TwoBladeDimensions::contact_rise() const {
@@ -100,7 +95,7 @@ std::span<const char* const> two_blade_contact_set_names() {
 
 void TwoBladeDimensions::validate() const {
   for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
-    if (std::string_view(f.name) != "w_t") require_positive(f.name, this->*f.member);
+    if (std::string_view(f.name) != "w_t") require_positive_size(f.name, this->*f.member);
   if (!(w_t >= 0) || !std::isfinite(w_t))
     throw DimensionError("w_t", fmt::format("w_t must be >= 0 (0 = equal to w), found {}", w_t));
   if (!(beta_deg > 0 && beta_deg < 90))

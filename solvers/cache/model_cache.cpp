@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -18,11 +18,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::string_view kMagic = "bladebench-model-cache 1";
-
-std::optional<ModelCacheSettings>& settings() {
-  static std::optional<ModelCacheSettings> s;
-  return s;
-}
 
 std::span<const std::byte> as_bytes(const std::vector<std::uint8_t>& v) {
   return {reinterpret_cast<const std::byte*>(v.data()), v.size()};
@@ -52,10 +47,6 @@ void prune(const fs::path& folder, std::uintmax_t max_bytes) {
 
 }  // namespace
 
-void configure_model_cache(std::optional<ModelCacheSettings> s) { settings() = std::move(s); }
-
-const std::optional<ModelCacheSettings>& model_cache_settings() { return settings(); }
-
 std::optional<fs::path> default_model_cache_folder() {
   if (const char* dir = std::getenv("BLADEBENCH_CACHE_DIR"); dir && *dir) return fs::path(dir);
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "bladebench";
@@ -63,9 +54,8 @@ std::optional<fs::path> default_model_cache_folder() {
   return std::nullopt;
 }
 
-CacheEntry::CacheEntry(const ContentKey& key) {
-  const auto& s = settings();
-  if (!s) return;
+CacheEntry::CacheEntry(const ModelCacheSettings& settings, const ContentKey& key) : settings_(settings) {
+  const ModelCacheSettings* s = &settings_;
   if (program_fingerprint().empty()) {
     note_ = "the program's own file cannot be read, so no key could tell its versions apart: cache not used";
     return;
@@ -117,7 +107,7 @@ std::optional<std::vector<std::uint8_t>> CacheEntry::load() {
 }
 
 bool CacheEntry::store(const std::vector<std::uint8_t>& payload, double build_seconds) {
-  if (!enabled_ || build_seconds < settings()->min_build_seconds) return false;
+  if (!enabled_ || build_seconds < settings_.min_build_seconds) return false;
   const fs::path temp = file_.string() + fmt::format(".tmp-{}", ::getpid());
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
@@ -138,7 +128,7 @@ bool CacheEntry::store(const std::vector<std::uint8_t>& payload, double build_se
     note_ = fmt::format("could not write {}: not cached", file_.string());
     return false;
   }
-  prune(file_.parent_path(), settings()->max_bytes);
+  prune(file_.parent_path(), settings_.max_bytes);
   return true;
 }
 

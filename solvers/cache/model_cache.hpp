@@ -1,6 +1,7 @@
 // The model cache: derived models that cost tens of seconds to compute (Craig-Bampton reductions of
 // the two-blade mesh) stored on disk under a content key, so the cases that share one compute it
-// once. Off unless the program turns it on (the CLI does, `--no-cache` to bypass; cases/README.md).
+// once. Used only where a caller hands its settings in (the CLI does, `--no-cache` to bypass;
+// cases/README.md).
 //
 // An entry is one file `<key name>.bbcache`: a header line with the payload's size and checksum,
 // then the payload. An entry whose size or checksum disagrees, or that does not decode, is
@@ -20,28 +21,15 @@
 
 #include "cache/cache_use.hpp"
 #include "cache/content_key.hpp"
+#include "cache/model_cache_settings.hpp"
 #include "common/seconds_since.hpp"
 
 namespace bb {
 
-struct ModelCacheSettings {
-  std::filesystem::path folder;
-  std::uintmax_t max_bytes = std::uintmax_t{4} << 30;  // least recently used entries go beyond this
-  double min_build_seconds = 1.0;                      // cheaper results are not worth an entry (and its disk space)
-};
-
-// nullopt turns the cache off (the default of a program that never calls this).
-void configure_model_cache(std::optional<ModelCacheSettings> settings);
-const std::optional<ModelCacheSettings>& model_cache_settings();
-
-// The folder the CLI uses unless told otherwise: $BLADEBENCH_CACHE_DIR, else
-// $XDG_CACHE_HOME/bladebench, else $HOME/.cache/bladebench; nullopt when none is set.
-std::optional<std::filesystem::path> default_model_cache_folder();
-
-// One entry, locked for as long as the object lives (when the cache is on).
+// One entry of the cache in `settings`, locked for as long as the object lives.
 class CacheEntry {
  public:
-  explicit CacheEntry(const ContentKey& key);
+  CacheEntry(const ModelCacheSettings& settings, const ContentKey& key);
   ~CacheEntry();
   CacheEntry(const CacheEntry&) = delete;
   CacheEntry& operator=(const CacheEntry&) = delete;
@@ -61,6 +49,7 @@ class CacheEntry {
   const std::string& note() const { return note_; }
 
  private:
+  ModelCacheSettings settings_;
   bool enabled_ = false;
   std::filesystem::path file_;
   int lock_fd_ = -1;
@@ -74,7 +63,7 @@ template <class T>
 struct IsOptional<std::optional<T>> : std::true_type {};
 }  // namespace detail
 
-// The protocol every kind of entry follows. With the cache off, `build()` runs, timed. Otherwise
+// The protocol every kind of entry follows. Without a cache (`cache` null), `build()` runs, timed. Otherwise
 // the entry keyed by `kind`, the program and what `fill_key(ContentKey&)` adds is locked and looked
 // up: `decode(json)` turns a sound entry back into the result (and throws on one that does not
 // fit the model, which is then discarded and rebuilt); a `decode` that returns std::optional may
@@ -83,11 +72,11 @@ struct IsOptional<std::optional<T>> : std::true_type {};
 // stored with its build time when that was long enough. `use` says what happened;
 // `use.build_seconds` is the build time, here or in the run that stored the entry.
 template <class Result, class FillKey, class Build, class Encode, class Decode>
-Result through_model_cache(std::string_view kind, FillKey fill_key, Build build, Encode encode, Decode decode,
-                           CacheUse& use) {
+Result through_model_cache(const ModelCacheSettings* cache, std::string_view kind, FillKey fill_key, Build build,
+                           Encode encode, Decode decode, CacheUse& use) {
   using Clock = std::chrono::steady_clock;
   auto t0 = Clock::now();
-  if (!model_cache_settings()) {
+  if (!cache) {
     Result result = build();
     use.outcome = CacheUse::Outcome::off;
     use.build_seconds = seconds_since(t0);
@@ -96,7 +85,7 @@ Result through_model_cache(std::string_view kind, FillKey fill_key, Build build,
   ContentKey key(kind);
   key.add(program_fingerprint());
   fill_key(key);
-  CacheEntry entry(key);
+  CacheEntry entry(*cache, key);
   t0 = Clock::now();
   if (const auto payload = entry.load()) {
     try {

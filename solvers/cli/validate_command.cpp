@@ -12,7 +12,7 @@
 #include <map>
 #include <optional>
 
-#include "cache/model_cache.hpp"
+#include "cache/model_cache_settings.hpp"
 #include "cli/command_options.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
@@ -43,9 +43,9 @@ std::vector<std::string> child_command(const ValidateArgs& a, const fs::path& fi
   if (a.study) c.emplace_back("--study");
   if (a.no_plots) c.emplace_back("--no-plots");
   append_limit_args(a.limits, c);
-  if (const auto& cache = bb::model_cache_settings()) {
+  if (a.cache) {
     c.emplace_back("--cache-dir");
-    c.push_back(cache->folder.string());
+    c.push_back(a.cache->folder.string());
   } else {
     c.emplace_back("--no-cache");
   }
@@ -158,6 +158,7 @@ int validate_command(const ValidateArgs& a) {
       opt.plots = !a.no_plots;
       opt.fidelity = a.fidelity;
       opt.limits = a.limits;
+      opt.cache = a.cache;
       // Output folder by file stem first; the case name is only known after parsing.
       opt.out_dir = fs::path(a.out) / files[i].stem();
       const bb::RunOutcome o = bb::run_case(files[i], opt);

@@ -1,8 +1,10 @@
 // `bladebench validate`: every case under a folder, in this process or in child processes, and
 // reports/index.md.
 #pragma once
+#include <optional>
 #include <string>
 
+#include "cache/model_cache_settings.hpp"
 #include "common/work_limits.hpp"
 #include "pipeline/run_case.hpp"
 
@@ -14,6 +16,7 @@ struct ValidateArgs {
   bb::FidelityMode fidelity = bb::FidelityMode::fixed;
   int jobs = 1;
   bb::WorkLimits limits;
+  std::optional<bb::ModelCacheSettings> cache;  // handed to every case's run (and child process)
 };
 
 int validate_command(const ValidateArgs& a);

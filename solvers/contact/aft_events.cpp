@@ -8,12 +8,11 @@
 #include <span>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "contact/aft_pieces.hpp"
 
 namespace bb::contact {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // [1, cos t, sin t, ..., cos Ht, sin Ht] and its derivative in theta.
 void basis_at(double theta, int harmonics, Eigen::RowVectorXd& phi, Eigen::RowVectorXd& dphi) {

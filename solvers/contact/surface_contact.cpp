@@ -4,12 +4,10 @@
 #include <stdexcept>
 
 #include "fe/face_shape.hpp"
+#include "fe/gauss_abscissae.hpp"
 
 namespace bb {
 namespace {
-
-constexpr double kG2 = 0.57735026918962576451;  // 1/sqrt(3)
-constexpr double kG3 = 0.77459666924148337704;  // sqrt(3/5)
 
 template <int N, int G>
 void add_points(const Mesh& mesh, int pair, const ContactFacetPair& f, const double (&x)[G], const double (&w)[G],
@@ -53,8 +51,8 @@ void for_each_dof(const ContactPoint& p, Fn&& fn) {
 
 std::vector<ContactPoint> contact_points(const Mesh& mesh, const std::vector<ContactPair>& pairs) {
   if (mesh.dim != 3 && !pairs.empty()) throw std::invalid_argument("contact_points: contact needs a solid mesh");
-  static constexpr double x2[2] = {-kG2, kG2}, w2[2] = {1.0, 1.0};
-  static constexpr double x3[3] = {-kG3, 0.0, kG3}, w3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  static constexpr double x2[2] = {-fe::kG2, fe::kG2}, w2[2] = {1.0, 1.0};
+  static constexpr double x3[3] = {-fe::kG3, 0.0, fe::kG3}, w3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
   std::vector<ContactPoint> points;
   for (size_t p = 0; p < pairs.size(); ++p)
     for (const ContactFacetPair& f : pairs[p].facets) {

@@ -6,11 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "fe/gauss_abscissae.hpp"
+
 namespace bb::fe {
 namespace {
-
-constexpr double kG2 = 0.57735026918962576451;  // 1/sqrt(3)
-constexpr double kG3 = 0.77459666924148337704;  // sqrt(3/5)
 
 // One integration point of an isoparametric element: physical shape gradients (dim x nodes),
 // shape values and the weight times det J.

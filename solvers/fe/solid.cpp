@@ -17,6 +17,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "fe/gauss_abscissae.hpp"
+
 namespace bb::fe {
 namespace {
 
@@ -28,9 +30,6 @@ constexpr double kHex20Nodes[20][3] = {
     {0, -1, 1},   {1, 0, 1},   {0, 1, 1},  {-1, 0, 1},   // 13-16: edges 5-6, 6-7, 7-8, 8-5
     {-1, -1, 0},  {1, -1, 0},  {1, 1, 0},  {-1, 1, 0},   // 17-20: edges 1-5, 2-6, 3-7, 4-8
 };
-
-constexpr double kG2 = 0.57735026918962576451;  // 1/sqrt(3): 2-point Gauss abscissa
-constexpr double kG3 = 0.77459666924148337704;  // sqrt(3/5): 3-point Gauss abscissa
 
 // Shape functions and their natural derivatives (rows d/dxi, d/deta, d/dzeta) at every Gauss
 // point, computed once: the element routines then only form J, invert it and multiply.

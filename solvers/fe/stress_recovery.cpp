@@ -6,12 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fe/gauss_abscissae.hpp"
+
 namespace bb::fe {
 namespace {
 
 // The 2-point rule's abscissa is 1/sqrt(3): a node at +-1 lies at +-sqrt(3) in units of it.
 constexpr double kSqrt3 = 1.7320508075688772935;
-constexpr double kG3 = 0.77459666924148337704;  // sqrt(3/5), the 3-point rule's abscissa
 
 // Linear Lagrange basis through r = -1, +1 evaluated at r.
 double linear(int i, double r) { return 0.5 * (1.0 + (i == 0 ? -r : r)); }

@@ -2,12 +2,10 @@
 #include "fe/surface_load.hpp"
 
 #include "fe/face_shape.hpp"
+#include "fe/gauss_abscissae.hpp"
 
 namespace bb::fe {
 namespace {
-
-constexpr double kG2 = 0.57735026918962576451;  // 1/sqrt(3)
-constexpr double kG3 = 0.77459666924148337704;  // sqrt(3/5)
 
 template <int N, int G>
 Eigen::Matrix<double, 3 * N, 1> face_load(const Eigen::Matrix<double, N, 3>& xyz, double pressure,

@@ -9,13 +9,12 @@
 #include <limits>
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "linalg/dense_eigen.hpp"
 
 namespace bb::ffrf {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 struct DenseOperators {
   Eigen::MatrixXd m, k, mp, g, ks;

@@ -8,12 +8,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 
 namespace bb::ffrf {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 void require_finite(double v, const char* what) {
   if (!std::isfinite(v)) throw InputError(fmt::format("rotation profile: {} must be finite, got {}", what, v));

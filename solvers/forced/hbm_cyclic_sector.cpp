@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "assembly/free_system.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
 #include "cyclic/cyclic_boundary.hpp"
@@ -27,7 +28,6 @@ namespace {
 
 using Eigen::Index;
 using Complex = std::complex<double>;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 const std::vector<int>& node_set(const Model& model, const std::string& name, const std::string& where) {
   const auto it = model.node_sets.find(name);
@@ -255,7 +255,7 @@ PreparedHbm prepare_sector(const Model& model, const HbmSpec& spec) {
 }
 
 // The whole disk: N turned copies of the sector, reduced together with the same cut.
-PreparedHbm prepare_whole(const Model& model, const HbmSpec& spec) {
+PreparedHbm prepare_whole(const Model& model, const HbmSpec& spec, const ModelCacheSettings* cache) {
   const HbmCyclicSpec& c = *spec.cyclic;
   const int N = c.sectors;
   const Model whole = whole_from_sector(model, N, c.face_tolerance);
@@ -265,7 +265,7 @@ PreparedHbm prepare_whole(const Model& model, const HbmSpec& spec) {
     for (const std::string& point : spec.model.masters) rom.masters.push_back(fmt::format("{}@{}", point, j));
   const FreeSystem system = assemble_free_system(whole);
   PreparedHbm p;
-  p.linear = build_reduced_model(whole, system, rom, &p.timing);
+  p.linear = build_reduced_model(whole, system, rom, &p.timing, cache);
   const ReducedModel& blades = p.linear;
   const Index nb = static_cast<Index>(spec.model.masters.size()) * 3, nw = blades.size();
   std::map<std::string, Index> first_sector;
@@ -300,10 +300,10 @@ PreparedHbm prepare_whole(const Model& model, const HbmSpec& spec) {
 
 }  // namespace
 
-PreparedHbm prepare_cyclic_sector(const Model& model, const HbmSpec& spec) {
+PreparedHbm prepare_cyclic_sector(const Model& model, const HbmSpec& spec, const ModelCacheSettings* cache) {
   const auto t0 = std::chrono::steady_clock::now();
   refuse_unsupported(spec);
-  PreparedHbm p = spec.cyclic->whole ? prepare_whole(model, spec) : prepare_sector(model, spec);
+  PreparedHbm p = spec.cyclic->whole ? prepare_whole(model, spec, cache) : prepare_sector(model, spec);
   try {
     const hbm::HarmonicBalance check(p.model, {});  // sizes, contact laws and a nonsingular non-contact part
   } catch (const std::invalid_argument& e) {

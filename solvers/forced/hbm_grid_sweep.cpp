@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "forced/hbm_level_system.hpp"
 #include "forced/hbm_response.hpp"
 #include "frf/sweep.hpp"
@@ -52,7 +53,6 @@ hbm::HbmSolution approach_in_steps(const hbm::HarmonicBalance& system, double w0
 
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Unknowns from which a grid sweep reuses factorized Jacobians (chord steps; see sweep_grid_on).
 constexpr Index kChordUnknowns = 200;

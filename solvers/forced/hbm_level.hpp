@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cache/model_cache_settings.hpp"
 #include "damper/rigid_damper.hpp"
 #include "forced/hbm_spec.hpp"
 #include "forced/level_relay.hpp"
@@ -46,11 +47,12 @@ struct PreparedHbm {
 };
 
 // Throws InputError for unknown DOFs or points, a singular static problem or a damper whose static
-// pre-solve fails (message with the reason); SolverError from the reduction.
-PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec);
+// pre-solve fails (message with the reason); SolverError from the reduction. A Craig-Bampton
+// reduction goes through the model cache in `cache`, when given.
+PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCacheSettings* cache = nullptr);
 // The same for one meshed sector of a tuned disk ([analysis.cyclic] with Craig-Bampton masters and
 // an [analysis.gap_damper]), or the whole disk built from it (forced/hbm_cyclic_sector.cpp).
-PreparedHbm prepare_cyclic_sector(const Model& model, const HbmSpec& spec);
+PreparedHbm prepare_cyclic_sector(const Model& model, const HbmSpec& spec, const ModelCacheSettings* cache = nullptr);
 
 struct HbmPeak {
   std::string kind;  // "IP", "OOP", or "peak" (maximum of the first response)

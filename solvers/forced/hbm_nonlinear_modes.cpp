@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "contact/state_fractions.hpp"
 #include "forced/hbm_response.hpp"
@@ -19,11 +20,9 @@ namespace {
 
 using Eigen::Index;
 using Complex = std::complex<double>;
-constexpr double kTwoPi = 2 * std::numbers::pi;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 // First-harmonic complex amplitudes Z = a1 - i b1 of every DOF.
-Eigen::VectorXcd first_harmonic(const hbm::NonlinearModePoint& p) {
+Eigen::VectorXcd mode_first_harmonic(const hbm::NonlinearModePoint& p) {
   return p.coefficients.col(1).cast<Complex>() - Complex(0.0, 1.0) * p.coefficients.col(2).cast<Complex>();
 }
 
@@ -41,7 +40,7 @@ BackbonePoint backbone_point(const PreparedHbm& p, const hbm::NonlinearModePoint
   b.amplitude = pt.modal_amplitude;
   b.frequency_hz = pt.omega / kTwoPi;
   b.damping_ratio = pt.damping_ratio();
-  const Eigen::VectorXcd z = first_harmonic(pt);
+  const Eigen::VectorXcd z = mode_first_harmonic(pt);
   // |psi^H F| per newton of the first force, psi = Z / a.
   const double modal_force = std::abs(z.dot(p.model.harmonic_load)) / pt.modal_amplitude;
   b.force_for_peak = modal_force > 0 ? pt.kappa * pt.omega * pt.modal_amplitude / modal_force : kNan;

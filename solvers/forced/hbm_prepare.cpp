@@ -9,6 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
 #include "forced/hbm_level.hpp"
@@ -21,7 +22,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // Coordinates of a one-node set.
 std::array<double, 2> point_position(const Model& model, const std::string& point) {
@@ -88,13 +88,13 @@ void expand_to_whole_ring(PreparedHbm& p, const HbmCyclicSpec& cyclic) {
 
 }  // namespace
 
-PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec) {
-  if (spec.cyclic && !spec.model.masters.empty()) return prepare_cyclic_sector(model, spec);
+PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCacheSettings* cache) {
+  if (spec.cyclic && !spec.model.masters.empty()) return prepare_cyclic_sector(model, spec, cache);
   const auto t0 = Clock::now();
   PreparedHbm p;
   FreeSystem system;
   if (!spec.model.masters.empty()) system = assemble_free_system(model);
-  p.linear = build_reduced_model(model, system, spec.model, &p.timing);
+  p.linear = build_reduced_model(model, system, spec.model, &p.timing, cache);
   const ReducedModel& blades = p.linear;
   p.blade_dofs = blades.size();
   for (const ReducedDof& d : blades.dofs) p.dof_names.push_back(d.name());

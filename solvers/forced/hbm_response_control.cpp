@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 
+#include "common/constants.hpp"
 #include "common/seconds_since.hpp"
 #include "forced/hbm_level_system.hpp"
 #include "forced/hbm_response.hpp"
@@ -18,7 +19,6 @@ namespace {
 
 using Eigen::Index;
 using Complex = std::complex<double>;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // The displacement amplitude that holds `amplitude` in the controlled quantity at omega.

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <optional>
 
+#include "common/constants.hpp"
 #include "common/seconds_since.hpp"
 #include "forced/hbm_level_system.hpp"
 #include "forced/hbm_response.hpp"
@@ -15,7 +16,6 @@ namespace bb {
 namespace {
 
 using Eigen::Index;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 void record(const PreparedHbm& p, const hbm::HarmonicBalance& system, const hbm::HbmSolution& s,
             const std::vector<hbm::ModelDerivative>& derivatives, HbmSteppedSine& out) {

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <optional>
 
+#include "common/constants.hpp"
 #include "common/seconds_since.hpp"
 #include "forced/hbm_level.hpp"
 #include "forced/hbm_level_system.hpp"
@@ -212,7 +213,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // The peak of `kind` (0 in-phase, 1 out-of-phase, or the first response) along the path, refined
 // by golden-section search between the path's neighbours of the largest point (where the path does

@@ -4,15 +4,14 @@
 
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "reduction/cached_craig_bampton.hpp"
 #include "reduction/reduced_model_io.hpp"
 
 namespace bb {
 
-namespace {
-constexpr double kTwoPi = 2 * std::numbers::pi;
-}  // namespace
+namespace {}  // namespace
 
 int node_of_point(const Model& model, const std::string& point) {
   const auto it = model.node_sets.find(point);
@@ -37,7 +36,7 @@ RayleighCoefficients rayleigh_of(const FrfDamping& d) {
 }
 
 ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, const RomSpec& rom,
-                                 CraigBamptonTiming* timing) {
+                                 CraigBamptonTiming* timing, const ModelCacheSettings* cache) {
   if (!rom.file.empty()) return read_reduced_model(rom.file);
   if (rom.matrices) return *rom.matrices;
   std::vector<int> masters;
@@ -53,7 +52,7 @@ ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, c
                         : rom.modes;
   options.ordering = ordering_for_dimension(model.mesh.dim);
   options.eigensolver = rom.eigensolver;
-  return cached_craig_bampton(system.stiffness, system.mass, masters, names, options, timing);
+  return cached_craig_bampton(system.stiffness, system.mass, masters, names, options, cache, timing);
 }
 
 Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& m) {

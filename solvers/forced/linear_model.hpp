@@ -6,6 +6,7 @@
 #include <string>
 
 #include "assembly/free_system.hpp"
+#include "cache/model_cache_settings.hpp"
 #include "forced/linear_model_spec.hpp"
 #include "frf/receptance.hpp"
 #include "model/model.hpp"
@@ -22,9 +23,10 @@ int free_index(const Model& model, const FreeSystem& system, const PointDof& dof
 RayleighCoefficients rayleigh_of(const FrfDamping& damping);
 
 // A reduced model as `rom` asks: Craig-Bampton of `system` (the free system of `model`) on its
-// masters, read from its file, or its matrices. Throws InputError for unknown or constrained points.
+// masters (through the model cache in `cache`, when given), read from its file, or its matrices.
+// Throws InputError for unknown or constrained points.
 ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, const RomSpec& rom,
-                                 CraigBamptonTiming* timing = nullptr);
+                                 CraigBamptonTiming* timing = nullptr, const ModelCacheSettings* cache = nullptr);
 // The damping matrix of a reduced or lumped model: modal (the same ratio on each of its modes) or Rayleigh.
 Eigen::MatrixXd damping_matrix(const FrfDamping& damping, const ReducedModel& model);
 

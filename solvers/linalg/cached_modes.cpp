@@ -9,13 +9,13 @@
 namespace bb {
 
 ModalSolution cached_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                                  const ModalOptions& options, CacheUse* use) {
+                                  const ModalOptions& options, const ModelCacheSettings* cache, CacheUse* use) {
   using nlohmann::json;
   CacheUse local;
   CacheUse& used = use ? *use : local;
   std::string subset;
   ModalSolution result = through_model_cache<ModalSolution>(
-      "modes",
+      cache, "modes",
       [&](ContentKey& key) {
         key.add(stiffness).add(mass);
         // Not the number of modes: an entry holding more serves a request for fewer (leading_modes).

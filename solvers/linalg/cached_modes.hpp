@@ -4,12 +4,15 @@
 // modes serves a request for fewer; one holding fewer is replaced by the larger solution.
 #pragma once
 #include "cache/cache_use.hpp"
+#include "cache/model_cache_settings.hpp"
 #include "linalg/modal_solver.hpp"
 
 namespace bb {
 
 // `use->build_seconds` is the time of lowest_modes, here or in the run that stored the entry.
+// Without `cache`, lowest_modes() runs.
 ModalSolution cached_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                                  const ModalOptions& options, CacheUse* use = nullptr);
+                                  const ModalOptions& options, const ModelCacheSettings* cache,
+                                  CacheUse* use = nullptr);
 
 }  // namespace bb

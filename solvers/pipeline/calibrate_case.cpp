@@ -70,9 +70,10 @@ void spread_gradient(FitPoint& p, const std::vector<bool>& differentiated) {
 // for those parameters (NaN for the others).
 std::vector<FitPoint> fitted_points(const CalibratedCase& base, const CalibrationSpec& cal,
                                     const std::vector<double>& values, const WorkLimits& limits,
-                                    ResultTables* curves = nullptr, const std::vector<bool>* differentiated = nullptr) {
+                                    const ModelCacheSettings* cache, ResultTables* curves = nullptr,
+                                    const std::vector<bool>* differentiated = nullptr) {
   const CaseSpec spec = with_values(base, values);
-  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits);
+  const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits, cache);
   const std::vector<std::string> paths =
       differentiated ? differentiated_paths(cal, *differentiated) : std::vector<std::string>{};
   std::vector<FitPoint> points;
@@ -191,12 +192,13 @@ void set_number(toml::table& root, const std::string& path, double value) {
 }
 
 // The same parameter paths in an independent model (e.g. Newmark instead of the harmonic balance).
-void cross_check(const CalibrationSpec& cal, const WorkLimits& limits, CalibrationOutcome& out) {
+void cross_check(const CalibrationSpec& cal, const WorkLimits& limits, const ModelCacheSettings* cache,
+                 CalibrationOutcome& out) {
   const auto t0 = std::chrono::steady_clock::now();
   const CalibratedCase cross = with_parameters(parse_case_file(cal.cross_check), cal);
   const CaseSpec spec = with_values(cross, out.values);
   try {
-    const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits);
+    const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits, cache);
     for (const CheckSpec& c : spec.checks) {
       const auto e = evaluate_check(c, results.tables);
       out.cross_check.insert(out.cross_check.end(), e.begin(), e.end());
@@ -220,7 +222,8 @@ bool CalibrationOutcome::cross_check_passed() const {
          std::all_of(cross_check.begin(), cross_check.end(), [](const CheckEntry& e) { return e.pass; });
 }
 
-CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& progress, const WorkLimits& limits) {
+CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& progress, const WorkLimits& limits,
+                                  const ModelCacheSettings* cache) {
   const toml::table table = read_case_table(case_file);
   CaseSpec spec = parse_case_table(table, case_file);
   const std::optional<CalibrationSpec> cal = parse_calibration(table, case_file, spec);
@@ -234,7 +237,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   const std::vector<bool>* differentiated = sensitivity_base ? &sensitivity_base->differentiated : nullptr;
   ResultTables curves_before;
   const std::vector<FitPoint> before = fitted_points(sensitivity_base ? sensitivity_base->model : base, *cal, start,
-                                                     limits, &curves_before, differentiated);
+                                                     limits, cache, &curves_before, differentiated);
   for (const FitPoint& p : before)
     if (!(p.sigma > 0.0))
       throw InputError(
@@ -259,7 +262,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
     return f;
   }();
   const FitEvaluator evaluate = [&](const std::vector<double>& values, bool gradients) {
-    return fitted_points(gradients ? fit_model : fit_base, fit_spec, values, limits, nullptr,
+    return fitted_points(gradients ? fit_model : fit_base, fit_spec, values, limits, cache, nullptr,
                          gradients ? differentiated : nullptr);
   };
   const auto fitted = std::count_if(before.begin(), before.end(), [](const FitPoint& p) { return !p.held_out; });
@@ -285,10 +288,10 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   if (out.one_sided_columns > 0)
     out.derivatives += fmt::format("; {} columns one-sided, where the model could not be run on the other side",
                                    out.one_sided_columns);
-  out.after = fitted_points(base, *cal, out.values, limits, &out.curves_after);
+  out.after = fitted_points(base, *cal, out.values, limits, cache, &out.curves_after);
   out.calibrated = table;
   for (size_t i = 0; i < out.values.size(); ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);
-  if (!cal->cross_check.empty()) cross_check(*cal, limits, out);
+  if (!cal->cross_check.empty()) cross_check(*cal, limits, cache, out);
   return out;
 }
 

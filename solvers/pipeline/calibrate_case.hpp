@@ -7,6 +7,7 @@
 #pragma once
 #include <filesystem>
 
+#include "cache/model_cache_settings.hpp"
 #include "common/work_limits.hpp"
 #include "identify/calibration_outcome.hpp"
 #include "identify/least_squares_fit.hpp"
@@ -15,8 +16,9 @@ namespace bb {
 
 // Throws InputError for a malformed case, [calibration] or data file; a failed fit is reported in
 // the outcome. `progress` receives every trust-region iteration (none when empty); every evaluation
-// of the model (and the cross-check) is held to `limits` before it runs.
+// of the model (and the cross-check) is held to `limits` before it runs, and takes its modes and
+// reductions through the model cache in `cache`, when given.
 CalibrationOutcome calibrate_case(const std::filesystem::path& case_file, const FitProgress& progress = {},
-                                  const WorkLimits& limits = {});
+                                  const WorkLimits& limits = {}, const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

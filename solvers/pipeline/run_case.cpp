@@ -119,7 +119,8 @@ void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibra
     if (it == other_cases.end()) {
       const CaseSpec other = parse_case_file(file);
       Model other_model = build_model(other.model);
-      AnalysisResults other_results = run_analysis(other.analysis, other_model, {}, options.limits);
+      AnalysisResults other_results =
+          run_analysis(other.analysis, other_model, {}, options.limits, cache_or_none(options.cache));
       it = other_cases.emplace(file, OtherRun{std::move(other_model), std::move(other_results)}).first;
     }
     return it->second;
@@ -200,7 +201,8 @@ void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibra
   }
   if (options.study && spec.study) {
     const HbmProgress progress = terminal_progress();
-    run_study(*spec.study, spec, model, results, out, options.plots, run, progress, options.limits);
+    run_study(*spec.study, spec, model, results, out, options.plots, run, progress, options.limits,
+              cache_or_none(options.cache));
     if (progress) std::fputs("\r\033[K", stderr);
   }
   bool all_pass = true;
@@ -259,14 +261,15 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     if (options.fidelity != FidelityMode::fixed && !spec.fidelity)
       run.warnings.push_back("--fidelity: the case has no [fidelity] section; it ran at its own settings");
     if (options.fidelity != FidelityMode::fixed && spec.fidelity)
-      choice.emplace(run_with_fidelity(spec, options.fidelity, progress, options.limits));
+      choice.emplace(run_with_fidelity(spec, options.fidelity, progress, options.limits, cache_or_none(options.cache)));
     const CaseSpec& used = choice ? choice->spec : spec;
     const Model model = choice ? std::move(choice->model) : build_model(spec.model);
     describe_model(used.model, std::holds_alternative<ContactLoopSpec>(used.analysis), model, run);
     try {
       const AnalysisResults results = choice
                                           ? std::move(choice->results)
-                                          : run_analysis_keeping_tables(used.analysis, model, progress, options.limits);
+                                          : run_analysis_keeping_tables(used.analysis, model, progress, options.limits,
+                                                                        cache_or_none(options.cache));
       if (progress) std::fputs("\r\033[K", stderr);
       if (choice) report_fidelity(*spec.fidelity, options.fidelity, *choice, stage->path(), options.plots, run);
       analyse(used, calibration, model, results, stage->path(), options, run, results_written);

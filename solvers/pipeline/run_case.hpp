@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cache/model_cache_settings.hpp"
 #include "common/work_limits.hpp"
 #include "report/run_record.hpp"
 #include "study/fidelity_spec.hpp"
@@ -15,8 +16,9 @@ struct RunOptions {
   std::optional<std::filesystem::path> out_dir;  // default reports/<case-name>
   bool study = false;                            // also run the case's [study]
   bool plots = true;
-  FidelityMode fidelity = FidelityMode::fixed;  // fixed: the case's own settings; else its [fidelity] axes
-  WorkLimits limits = {};                       // every analysis of the run is estimated against these first
+  FidelityMode fidelity = FidelityMode::fixed;   // fixed: the case's own settings; else its [fidelity] axes
+  WorkLimits limits = {};                        // every analysis of the run is estimated against these first
+  std::optional<ModelCacheSettings> cache = {};  // modes and reductions stored and reused there (none: not cached)
   std::vector<std::string> settings = {};  // "dotted.key=VALUE" replacing the case file's (cases/case_settings.hpp)
   std::vector<std::string> removals = {};  // "dotted.key" removed from the case file's
 };

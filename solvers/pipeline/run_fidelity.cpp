@@ -45,8 +45,8 @@ struct LevelRun {
 
 class Climber {
  public:
-  Climber(const CaseSpec& spec, const HbmProgress& progress, const WorkLimits& limits)
-      : base_(spec), f_(*spec.fidelity), progress_(progress), limits_(limits) {}
+  Climber(const CaseSpec& spec, const HbmProgress& progress, const WorkLimits& limits, const ModelCacheSettings* cache)
+      : base_(spec), f_(*spec.fidelity), progress_(progress), limits_(limits), cache_(cache) {}
 
   // The run at these level indices, computed once.
   LevelRun& at(const std::vector<int>& index) {
@@ -62,7 +62,7 @@ class Climber {
     // A level too coarse to solve (a sweep that cannot reach the steady state, say) is a level whose
     // error is unbounded: the climb records it and goes on.
     try {
-      run->results = run_analysis(run->spec.analysis, *run->model, progress_, limits_);
+      run->results = run_analysis(run->spec.analysis, *run->model, progress_, limits_, cache_);
     } catch (const SolverError& e) {
       run->failure = e.what();
     }
@@ -104,6 +104,7 @@ class Climber {
   const FidelitySpec& f_;
   HbmProgress progress_;
   WorkLimits limits_;
+  const ModelCacheSettings* cache_;
   std::map<std::vector<int>, std::unique_ptr<LevelRun>> runs_;
 };
 
@@ -165,11 +166,11 @@ double relative_difference(const ResultTable& coarse, const ResultTable& fine, c
 }
 
 FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress,
-                                 const WorkLimits& limits) {
+                                 const WorkLimits& limits, const ModelCacheSettings* cache) {
   if (!spec.fidelity) throw InputError(fmt::format("{}: --fidelity needs a [fidelity] section", spec.file.string()));
   const FidelitySpec& f = *spec.fidelity;
   const size_t n_axes = f.axes.size();
-  Climber climber(spec, progress, limits);
+  Climber climber(spec, progress, limits, cache);
   // Differences between two runs; a missing column or key names the [fidelity] section.
   const auto difference = [&](const LevelRun& coarse, const LevelRun& fine) {
     if (!coarse.failure.empty() || !fine.failure.empty()) return std::numeric_limits<double>::infinity();

@@ -36,8 +36,8 @@ double relative_difference(const ResultTable& coarse, const ResultTable& fine, c
 // Runs the case's analysis at the levels `mode` asks for (fixed is not a mode here). A level whose
 // solve fails (SolverError) has an infinite difference to its neighbours, so the climb passes it.
 // Throws InputError when the case has no [fidelity] or the result table lacks a column, and
-// SolverError when the chosen levels failed.
+// SolverError when the chosen levels failed. Every level's run uses the model cache in `cache`, when given.
 FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const HbmProgress& progress = {},
-                                 const WorkLimits& limits = {});
+                                 const WorkLimits& limits = {}, const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

@@ -44,6 +44,7 @@ struct StudyRun {
   RunRecord& run;
   const HbmProgress& line;
   const WorkLimits& limits;
+  const ModelCacheSettings* cache;
 
   void operator()(const RefinementStudySpec& s) const {
     run.study = run_refinement_study(spec.model, s, study_progress(line, "mesh refinement"));
@@ -54,13 +55,13 @@ struct StudyRun {
   }
   void operator()(const ModalRefinementStudySpec& s) const {
     run.modal_study = run_modal_refinement_study(spec.model, std::get<ModalSpec>(spec.analysis), s,
-                                                 study_progress(line, "modal refinement"));
+                                                 study_progress(line, "modal refinement"), cache);
     run.study_note = s.note;
     if (plots) run.study_plots.push_back(plot_modal_refinement(*run.modal_study, out, "study_modal"));
   }
   void operator()(const RomStudySpec& s) const {
-    table(run_rom_study(std::get<FrfSpec>(spec.analysis), s, model, study_progress(line, "reduced models")), s.note,
-          "rom_study", "study_rom", plot_rom_study);
+    table(run_rom_study(std::get<FrfSpec>(spec.analysis), s, model, study_progress(line, "reduced models"), cache),
+          s.note, "rom_study", "study_rom", plot_rom_study);
   }
   void operator()(const HbmHarmonicsStudySpec& s) const {
     const HbmOutcome& hbm = std::get<HbmOutcome>(results.outcome);
@@ -69,8 +70,8 @@ struct StudyRun {
           s.note, "hbm_harmonics_study", "study_harmonics", plot_hbm_harmonics_study);
   }
   void operator()(const TimeStepStudySpec& s) const {
-    table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s, study_progress(line, "time steps")), s.note,
-          "time_step_study", "study_time_steps", plot_time_step_study);
+    table(run_time_step_study(model, std::get<TimeSpec>(spec.analysis), s, study_progress(line, "time steps"), cache),
+          s.note, "time_step_study", "study_time_steps", plot_time_step_study);
   }
 
   void operator()(const RotatingFidelityStudySpec& s) const {
@@ -93,8 +94,9 @@ struct StudyRun {
 }  // namespace
 
 void run_study(const StudySpec& study, const CaseSpec& spec, const Model& model, const AnalysisResults& results,
-               const fs::path& out, bool plots, RunRecord& run, const HbmProgress& progress, const WorkLimits& limits) {
-  std::visit(StudyRun{spec, model, results, out, plots, run, progress, limits}, study);
+               const fs::path& out, bool plots, RunRecord& run, const HbmProgress& progress, const WorkLimits& limits,
+               const ModelCacheSettings* cache) {
+  std::visit(StudyRun{spec, model, results, out, plots, run, progress, limits, cache}, study);
 }
 
 }  // namespace bb

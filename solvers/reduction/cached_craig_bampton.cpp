@@ -27,7 +27,8 @@ ReducedModel decode(const json& j, CraigBamptonTiming& t) {
   m.mass = matrix_from_json(j.at("mass"));
   m.recovery = matrix_from_json(j.at("recovery"));
   m.fixed_interface_frequencies_hz = matrix_from_json(j.at("fixed_interface_frequencies_hz"));
-  for (const json& d : j.at("dofs")) m.dofs.push_back({d.at(0).get<std::string>(), d.at(1).get<int>(), d.at(2).get<int>()});
+  for (const json& d : j.at("dofs"))
+    m.dofs.push_back({d.at(0).get<std::string>(), d.at(1).get<int>(), d.at(2).get<int>()});
   const json& times = j.at("timing");
   t.constraint_modes_seconds = times.at(0).get<double>();
   t.fixed_interface_seconds = times.at(1).get<double>();
@@ -39,13 +40,14 @@ ReducedModel decode(const json& j, CraigBamptonTiming& t) {
 
 ReducedModel cached_craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                                   const std::vector<int>& masters, const std::vector<ReducedDof>& master_names,
-                                  const CraigBamptonOptions& options, CraigBamptonTiming* timing) {
+                                  const CraigBamptonOptions& options, const ModelCacheSettings* cache,
+                                  CraigBamptonTiming* timing) {
   CraigBamptonTiming local;
   CraigBamptonTiming& t = timing ? *timing : local;
   CraigBamptonTiming stored;  // the phase times of the run that stored a loaded entry
   CacheUse use;
   ReducedModel m = through_model_cache<ReducedModel>(
-      "craig_bampton",
+      cache, "craig_bampton",
       [&](ContentKey& key) {
         key.add(stiffness).add(mass);
         for (size_t i = 0; i < masters.size(); ++i) key.add(std::int64_t{masters[i]}).add(master_names[i].name());

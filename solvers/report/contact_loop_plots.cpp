@@ -13,7 +13,6 @@ Plot plot_contact_loop(const ContactLoopOutcome& loop, const std::filesystem::pa
   using contact::ContactState;
   const std::array<ContactState, 4> states{ContactState::stick, ContactState::slip_positive,
                                            ContactState::slip_negative, ContactState::lift_off};
-  const std::array<const char*, 4> colours{"#1f5fbf", "#bf1f1f", "#bf8f1f", "#2f9f2f"};
   {
     std::ofstream out = open_plot_data(out_dir, stem);
     out << "# the closed loop: u [m] T [N]\n";
@@ -36,7 +35,7 @@ Plot plot_contact_loop(const ContactLoopOutcome& loop, const std::filesystem::pa
       gnuplot_quote(title), stem);
   for (size_t i = 0; i < states.size(); ++i)
     script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title '{}'", stem,
-                          i + 1, colours[i], contact::state_name(states[i]));
+                          i + 1, series_colour(i), contact::state_name(states[i]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

@@ -12,6 +12,7 @@
 #include "distributed/distributed.hpp"
 #include "report/describe_cyclic.hpp"
 #include "report/describe_hbm.hpp"
+#include "report/number_format.hpp"
 
 namespace bb {
 
@@ -39,24 +40,23 @@ void describe_cache(const std::string& what, const CacheUse& u, RunRecord& run) 
 
 namespace {
 
-std::string g(double v) { return fmt::format("{:.6g}", v); }
-
 void describe(const FrfSpec& spec, const FrfOutcome& frf, RunRecord& run) {
   std::string forces;
   for (const FrfForce& f : spec.forces)
-    forces += fmt::format("{}{} N on {}", forces.empty() ? "" : ", ", g(f.amplitude), f.dof.name());
-  const std::string damping = spec.damping.kind == FrfDamping::Kind::modal
-                                  ? fmt::format("modal, zeta = {}", describe_modal_ratios(spec.damping))
-                                  : fmt::format("Rayleigh, zeta = {} at {} Hz and {} at {} Hz",
-                                                g(spec.damping.rayleigh_zeta[0]), g(spec.damping.rayleigh_hz[0]),
-                                                g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[1]));
+    forces += fmt::format("{}{} N on {}", forces.empty() ? "" : ", ", format_setting(f.amplitude), f.dof.name());
+  const std::string damping =
+      spec.damping.kind == FrfDamping::Kind::modal
+          ? fmt::format("modal, zeta = {}", describe_modal_ratios(spec.damping))
+          : fmt::format("Rayleigh, zeta = {} at {} Hz and {} at {} Hz", format_setting(spec.damping.rayleigh_zeta[0]),
+                        format_setting(spec.damping.rayleigh_hz[0]), format_setting(spec.damping.rayleigh_zeta[1]),
+                        format_setting(spec.damping.rayleigh_hz[1]));
   run.facts.emplace_back(
-      "analysis",
-      fmt::format(
-          "linear forced response, {} to {} Hz, {} ({} frequencies), {}; force {}", g(spec.f_min), g(spec.f_max),
-          spec.adaptive ? fmt::format("step {} Hz refined to {} Hz around peaks", g(spec.step), g(spec.min_step))
-                        : fmt::format("step {} Hz", g(spec.step)),
-          frf.sweep.frequency_hz.size(), damping, forces));
+      "analysis", fmt::format("linear forced response, {} to {} Hz, {} ({} frequencies), {}; force {}",
+                              format_setting(spec.f_min), format_setting(spec.f_max),
+                              spec.adaptive ? fmt::format("step {} Hz refined to {} Hz around peaks",
+                                                          format_setting(spec.step), format_setting(spec.min_step))
+                                            : fmt::format("step {} Hz", format_setting(spec.step)),
+                              frf.sweep.frequency_hz.size(), damping, forces));
   if (frf.full_modal) {
     run.facts.emplace_back(
         "full mesh",
@@ -92,15 +92,17 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
   const PreparedHbm& p = time.prepared;
   run.facts.emplace_back(
       "analysis",
-      fmt::format(
-          "direct time integration ({}), {} steps per period, stepped sine {} to {} Hz every {} Hz, "
-          "each frequency to a cycle-to-cycle change below {} (at most {} periods) from the "
-          "previous one's state; first {} harmonic(s) by DFT over the last period",
-          spec.alpha == 0.0 ? "Newmark average acceleration" : fmt::format("HHT-alpha, alpha = {}", g(spec.alpha)),
-          spec.steps_per_period, g(spec.system.sweep.f_min), g(spec.system.sweep.f_max), g(spec.system.sweep.step_hz),
-          g(spec.steady_tolerance), spec.max_cycles, spec.system.harmonics));
+      fmt::format("direct time integration ({}), {} steps per period, stepped sine {} to {} Hz every {} Hz, "
+                  "each frequency to a cycle-to-cycle change below {} (at most {} periods) from the "
+                  "previous one's state; first {} harmonic(s) by DFT over the last period",
+                  spec.alpha == 0.0 ? "Newmark average acceleration"
+                                    : fmt::format("HHT-alpha, alpha = {}", format_setting(spec.alpha)),
+                  spec.steps_per_period, format_setting(spec.system.sweep.f_min),
+                  format_setting(spec.system.sweep.f_max), format_setting(spec.system.sweep.step_hz),
+                  format_setting(spec.steady_tolerance), spec.max_cycles, spec.system.harmonics));
   std::string levels;
-  for (double f : spec.system.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
+  for (double f : spec.system.force_levels)
+    levels += fmt::format("{}{}", levels.empty() ? "" : ", ", format_setting(f));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
   const std::string contacts = describe_contacts(p, spec.system);
   run.facts.emplace_back("contacts", contacts.empty() ? "none (linear model)" : contacts);
@@ -138,23 +140,25 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
     run.facts.emplace_back(
         "recorded run",
         fmt::format("{} Hz, Fe = {} N: steady after {} periods ({}), then {} periods recorded{}",
-                    g(time.record->frequency_hz), g(time.record->force), time.record->steady.cycles,
+                    format_setting(time.record->frequency_hz), format_setting(time.record->force),
+                    time.record->steady.cycles,
                     time.record->steady.converged ? "converged" : time.record->steady.failure, spec.history_cycles,
                     time.record->history.converged ? "" : ": " + time.record->history.failure));
 }
 
 void describe(const ContactLoopSpec& spec, const ContactLoopOutcome& loop, RunRecord& run) {
   const contact::JenkinsParameters& p = spec.law;
+  run.facts.emplace_back("analysis",
+                         fmt::format("friction-contact test rig: one Jenkins contact under u = {} cos(theta) m, "
+                                     "v = {} cos(theta + {} deg) m (v > 0 presses), {} samples per period, "
+                                     "AFT march to the periodic steady state",
+                                     format_setting(spec.tangential_amplitude), format_setting(spec.normal_amplitude),
+                                     format_setting(spec.normal_phase_deg), spec.samples));
   run.facts.emplace_back(
-      "analysis",
-      fmt::format("friction-contact test rig: one Jenkins contact under u = {} cos(theta) m, "
-                  "v = {} cos(theta + {} deg) m (v > 0 presses), {} samples per period, "
-                  "AFT march to the periodic steady state",
-                  g(spec.tangential_amplitude), g(spec.normal_amplitude), g(spec.normal_phase_deg), spec.samples));
-  run.facts.emplace_back("contact",
-                         fmt::format("kn {} N/m, kt {} N/m, mu {}, n0 {} N: slip force mu n0 = {} N, slip displacement "
-                                     "mu n0 / kt = {} m",
-                                     g(p.kn), g(p.kt), g(p.mu), g(p.n0), g(p.mu * p.n0), g(p.mu * p.n0 / p.kt)));
+      "contact", fmt::format("kn {} N/m, kt {} N/m, mu {}, n0 {} N: slip force mu n0 = {} N, slip displacement "
+                             "mu n0 / kt = {} m",
+                             format_setting(p.kn), format_setting(p.kt), format_setting(p.mu), format_setting(p.n0),
+                             format_setting(p.mu * p.n0), format_setting(p.mu * p.n0 / p.kt)));
   run.facts.emplace_back("periods marched / loop closed",
                          fmt::format("{} / {} (slider mismatch {:.3g} m)", loop.aft.periods,
                                      loop.aft.closed ? "yes" : "NO", loop.aft.closure_mismatch));
@@ -244,9 +248,11 @@ void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run
       "analysis",
       fmt::format("rotating body, floating frame of reference: {} for {} s; axis through ({}, {}, {}) m along "
                   "({}, {}, {}); gravity ({}, {}, {}) m/s^2; geometric stiffening {}, Coriolis {}",
-                  o.profile, g(spec.end_time), g(spec.axis_point.x()), g(spec.axis_point.y()), g(spec.axis_point.z()),
-                  g(spec.axis_direction.x()), g(spec.axis_direction.y()), g(spec.axis_direction.z()),
-                  g(spec.gravity.x()), g(spec.gravity.y()), g(spec.gravity.z()), spec.stiffening ? "on" : "off",
+                  o.profile, format_setting(spec.end_time), format_setting(spec.axis_point.x()),
+                  format_setting(spec.axis_point.y()), format_setting(spec.axis_point.z()),
+                  format_setting(spec.axis_direction.x()), format_setting(spec.axis_direction.y()),
+                  format_setting(spec.axis_direction.z()), format_setting(spec.gravity.x()),
+                  format_setting(spec.gravity.y()), format_setting(spec.gravity.z()), spec.stiffening ? "on" : "off",
                   spec.coriolis ? "on" : "off"));
   run.facts.emplace_back("elastic coordinates",
                          spec.modal_basis ? fmt::format("{} of {} free DOFs: {} fixed-interface modes at rest + "
@@ -256,7 +262,7 @@ void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run
   run.facts.emplace_back(
       "time integration",
       fmt::format("generalized-alpha, rho_inf = {}, dt = {:.4g} s ({}), {} steps, {} factorizations",
-                  g(spec.rho_infinity), o.time_step,
+                  format_setting(spec.rho_infinity), o.time_step,
                   spec.time_step > 0 ? "as given" : "40 steps per period of the lowest rotating mode", o.history.steps,
                   o.history.factorizations));
   run.facts.emplace_back("setup / integration / Campbell [s]",
@@ -265,7 +271,7 @@ void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run
   std::string modes;
   for (Eigen::Index m = 0; m < o.modes_at_speed.frequencies_hz.size(); ++m)
     modes += fmt::format("{}{:.2f}", m ? ", " : "", o.modes_at_speed.frequencies_hz[m]);
-  run.facts.emplace_back(fmt::format("rotating modes at {} rad/s [Hz]", g(o.modes_at_speed.speed)), modes);
+  run.facts.emplace_back(fmt::format("rotating modes at {} rad/s [Hz]", format_setting(o.modes_at_speed.speed)), modes);
   std::string crossings;
   for (const ffrf::EngineOrderCrossing& c : o.crossings)
     crossings += fmt::format("{}EO {} x mode {} at {:.4g} rad/s ({:.0f} rpm, {:.2f} Hz)", crossings.empty() ? "" : "; ",
@@ -276,20 +282,21 @@ void describe(const RotatingSpec& spec, const RotatingOutcome& o, RunRecord& run
     run.warnings.push_back(
         fmt::format("the linearized model is unstable at {} rad/s (growth rate {:.3g} 1/s): the centrifugal softening "
                     "exceeds the stiffness",
-                    g(o.modes_at_speed.speed), o.modes_at_speed.max_growth_rate));
+                    format_setting(o.modes_at_speed.speed), o.modes_at_speed.max_growth_rate));
 }
 
 void describe(const ContactModalSpec& spec, const ContactModalOutcome& o, RunRecord& run) {
   run.facts.emplace_back(
       "analysis",
-      fmt::format("static contact (penalty, status iterations) and modes about it, at {} interferences x {} penalty "
-                  "factors; kn = FKN E / h (h: the contact face's size), normal law {}, tangential {}; stress "
-                  "stiffening {}",
-                  spec.interferences.size(), spec.penalty_factors.size(),
-                  spec.roughness > 0 ? fmt::format("stiffening with the pressure (roughness {:g} m)", spec.roughness)
-                                     : std::string("linear"),
-                  spec.sticking ? fmt::format("sticking, kt = {} kn", g(spec.tangential_ratio)) : "frictionless",
-                  spec.prestress ? "on" : "off"));
+      fmt::format(
+          "static contact (penalty, status iterations) and modes about it, at {} interferences x {} penalty "
+          "factors; kn = FKN E / h (h: the contact face's size), normal law {}, tangential {}; stress "
+          "stiffening {}",
+          spec.interferences.size(), spec.penalty_factors.size(),
+          spec.roughness > 0 ? fmt::format("stiffening with the pressure (roughness {:g} m)", spec.roughness)
+                             : std::string("linear"),
+          spec.sticking ? fmt::format("sticking, kt = {} kn", format_setting(spec.tangential_ratio)) : "frictionless",
+          spec.prestress ? "on" : "off"));
   run.facts.emplace_back("contact pairs", fmt::format("{} ({} Gauss points), {} free DOFs",
                                                       fmt::join(o.pair_names, ", "), o.contact_points, o.free_dofs));
   double static_s = 0, modal_s = 0;
@@ -360,7 +367,7 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
           d.airfoil_divisions * d.refinement);
       std::string dims;
       for (const BladedDiskDimensionField& f : bladed_disk_dimension_fields())
-        dims += fmt::format("{}{} = {}", dims.empty() ? "" : ", ", f.name, g(d.*f.member));
+        dims += fmt::format("{}{} = {}", dims.empty() ? "" : ", ", f.name, format_setting(d.*f.member));
       run.facts.emplace_back("bladed-disk dimensions [m]", dims);
       break;
     }
@@ -369,10 +376,10 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
       source = fmt::format(
           "two-blade article (2 blades, 2 wedges, fixture), refinement {}, {} divisions through t, "
           "{} along the airfoil, glued at coincident nodes (tolerance {} m)",
-          d.refinement, d.nz(), d.airfoil_divisions * d.refinement, g(spec.mesh.merge_tolerance));
+          d.refinement, d.nz(), d.airfoil_divisions * d.refinement, format_setting(spec.mesh.merge_tolerance));
       std::string dims;
       for (const TwoBladeDimensionField& f : two_blade_dimension_fields())
-        dims += fmt::format("{}{} = {}", dims.empty() ? "" : ", ", f.name, g(d.*f.member));
+        dims += fmt::format("{}{} = {}", dims.empty() ? "" : ", ", f.name, format_setting(d.*f.member));
       run.facts.emplace_back("two-blade dimensions [m, deg]", dims);
       break;
     }
@@ -381,16 +388,17 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
   run.facts.emplace_back("elements", elements);
   run.facts.emplace_back("nodes", std::to_string(mesh.n_nodes()));
   run.facts.emplace_back("E [Pa], nu, rho [kg/m^3]",
-                         fmt::format("{}, {}, {}", g(spec.section.youngs_modulus), g(spec.section.poisson_ratio),
-                                     g(spec.section.density)));
-  if (mesh.dim == 2) run.facts.emplace_back("thickness [m]", g(spec.section.thickness));
+                         fmt::format("{}, {}, {}", format_setting(spec.section.youngs_modulus),
+                                     format_setting(spec.section.poisson_ratio), format_setting(spec.section.density)));
+  if (mesh.dim == 2) run.facts.emplace_back("thickness [m]", format_setting(spec.section.thickness));
   for (const auto& l : model.loads)
     run.facts.emplace_back(fmt::format("load on '{}'", l.set),
-                           fmt::format("{} N along {}, split {}", g(l.total), "xyz"[l.direction],
+                           fmt::format("{} N along {}, split {}", format_setting(l.total), "xyz"[l.direction],
                                        l.split == LoadSplit::equal ? "equally" : "consistently over the edge"));
   auto vec = [&](const Eigen::Vector3d& v) {
-    return mesh.dim == 2 ? fmt::format("({}, {})", g(v.x()), g(v.y()))
-                         : fmt::format("({}, {}, {})", g(v.x()), g(v.y()), g(v.z()));
+    return mesh.dim == 2
+               ? fmt::format("({}, {})", format_setting(v.x()), format_setting(v.y()))
+               : fmt::format("({}, {}, {})", format_setting(v.x()), format_setting(v.y()), format_setting(v.z()));
   };
   const char* facets = mesh.dim == 2 ? "boundary edges" : "boundary faces";
   for (const SurfaceLoad& l : model.surface_loads)
@@ -398,7 +406,7 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
         fmt::format("{} on '{}'", l.kind == SurfaceLoad::Kind::pressure ? "pressure" : "traction", l.set),
         l.kind == SurfaceLoad::Kind::pressure
             ? fmt::format("{} Pa normal to the {} of the set (> 0 pushes into the body), consistent nodal forces",
-                          g(l.pressure), facets)
+                          format_setting(l.pressure), facets)
             : fmt::format("{} Pa on the {} of the set, consistent nodal forces", vec(l.traction), facets));
   for (const BodyLoad& l : model.body_loads)
     run.facts.emplace_back(
@@ -407,7 +415,8 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
             ? fmt::format("{} m/s^2 on every element, through its consistent mass", vec(l.acceleration))
             : fmt::format("{} rad/s about the axis ({}, {}, {}) through {} m, through the consistent mass (no spin "
                           "softening, no stress stiffening)",
-                          g(l.speed), g(l.axis.x()), g(l.axis.y()), g(l.axis.z()), vec(l.origin)));
+                          format_setting(l.speed), format_setting(l.axis.x()), format_setting(l.axis.y()),
+                          format_setting(l.axis.z()), vec(l.origin)));
 }
 
 void describe_analysis(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model, RunRecord& run) {

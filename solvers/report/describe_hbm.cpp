@@ -10,11 +10,11 @@
 #include <limits>
 #include <numbers>
 
+#include "report/number_format.hpp"
+
 namespace bb {
 
 namespace {
-
-std::string g(double v) { return fmt::format("{:.6g}", v); }
 
 // The peak with the largest `value` over every level (none when no value is positive), named as
 // the report's facts and warnings name it: "OOP peak at Fe = 30 N".
@@ -23,7 +23,8 @@ struct WorstPeak {
   const HbmLevel* level = nullptr;
   const HbmPeak* peak = nullptr;
   std::string name() const {
-    return peak ? fmt::format("{} at Fe = {} N", peak->kind == "peak" ? "peak" : peak->kind + " peak", g(level->force))
+    return peak ? fmt::format("{} at Fe = {} N", peak->kind == "peak" ? "peak" : peak->kind + " peak",
+                              format_setting(level->force))
                 : std::string();
   }
 };
@@ -45,8 +46,8 @@ void describe_nonlinear_modes(const HbmSpec& spec, const HbmOutcome& hbm, RunRec
   run.facts.emplace_back(
       "nonlinear modes (extended periodic motion concept, Krack 2015)",
       fmt::format("{} branch(es), modal amplitude {} to {} m kg^1/2 in {} log steps, H = {}: {} points in {:.3f} s",
-                  hbm.nonlinear_modes.size(), g(nm.amplitude_min), g(nm.amplitude_max), nm.points, spec.harmonics,
-                  points, hbm.nonlinear_mode_seconds));
+                  hbm.nonlinear_modes.size(), format_setting(nm.amplitude_min), format_setting(nm.amplitude_max),
+                  nm.points, spec.harmonics, points, hbm.nonlinear_mode_seconds));
   for (const hbm::NonlinearModeBranch& b : hbm.nonlinear_modes) {
     double lo = b.points.front().omega, hi = lo, dmin = b.points.front().damping_ratio(), dmax = dmin;
     for (const hbm::NonlinearModePoint& p : b.points) {
@@ -70,9 +71,9 @@ void describe_stability(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
     for (const HbmLevel& l : hbm.levels) {
       int unstable = 0, unknown = 0;
       for (double s : l.stable) unstable += s == 0.0 ? 1 : 0, unknown += std::isnan(s) ? 1 : 0;  // NaN: unresolved
-      per_level +=
-          fmt::format("{}{} N: {} of {}{}", per_level.empty() ? "" : "; ", g(l.force), unstable, l.stable.size(),
-                      unknown ? fmt::format(" ({} unknown: growth beyond the band H resolves)", unknown) : "");
+      per_level += fmt::format("{}{} N: {} of {}{}", per_level.empty() ? "" : "; ", format_setting(l.force), unstable,
+                               l.stable.size(),
+                               unknown ? fmt::format(" ({} unknown: growth beyond the band H resolves)", unknown) : "");
     }
     run.facts.emplace_back("unstable path points (Hill's method; frf_<Fe> columns stable, floquet_max_re)", per_level);
   }
@@ -80,15 +81,16 @@ void describe_stability(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
     for (const HbmPeak& pk : l.peaks) {
       if (!pk.stability || !pk.stability->ok)
         run.warnings.push_back(fmt::format("the stability of the {} at Fe = {} N was not computed: {}", pk.kind,
-                                           g(l.force), pk.stability ? pk.stability->failure : "no converged solution"));
+                                           format_setting(l.force),
+                                           pk.stability ? pk.stability->failure : "no converged solution"));
       else if (!pk.stability->growing && !pk.stability->unresolved.empty())
         run.warnings.push_back(fmt::format("the stability of the {} at Fe = {} N ({:.4f} Hz) is unknown: {}", pk.kind,
-                                           g(l.force), pk.frequency_hz, pk.stability->unresolved));
+                                           format_setting(l.force), pk.frequency_hz, pk.stability->unresolved));
       else if (pk.stability->growing)
         run.warnings.push_back(fmt::format(
             "the {} at Fe = {} N ({:.4f} Hz) lies on an unstable solution (largest Floquet exponent real part {:.3g} "
             "1/s): the motion would leave it",
-            pk.kind, g(l.force), pk.frequency_hz, pk.stability->max_real));
+            pk.kind, format_setting(l.force), pk.frequency_hz, pk.stability->max_real));
     }
 }
 
@@ -113,25 +115,25 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
       std::vector<int> at_peaks;
       for (const HbmPeak& pk : l.peaks) at_peaks.push_back(pk.harmonics);
       per_level += fmt::format("{}{} N: H = {}-{} (mean {:.2f}; peaks at H = {})", per_level.empty() ? "" : "; ",
-                               g(l.force), *lo, *hi, mean, fmt::join(at_peaks, ", "));
+                               format_setting(l.force), *lo, *hi, mean, fmt::join(at_peaks, ", "));
       const auto points_unmet = std::count_if(l.point_change.begin(), l.point_change.end(),
                                               [&](double c) { return !(c <= spec.harmonic_tolerance); });
       if (points_unmet > 0)
-        unmet += fmt::format("{}{} N ({} of {})", unmet.empty() ? "" : ", ", g(l.force), points_unmet,
+        unmet += fmt::format("{}{} N ({} of {})", unmet.empty() ? "" : ", ", format_setting(l.force), points_unmet,
                              l.point_harmonics.size());
     }
     run.facts.emplace_back(
         fmt::format("Harmonics per frequency, raised by {} until the responses at the frequency change by <= {} from "
                     "the H one step below (at most H = {}; the next frequency starts a step lower; frf_<Fe> columns "
                     "harmonics and harmonic_change, table harmonics_per_point)",
-                    spec.harmonic_step, g(spec.harmonic_tolerance), spec.max_harmonics),
+                    spec.harmonic_step, format_setting(spec.harmonic_tolerance), spec.max_harmonics),
         per_level);
     if (!unmet.empty())
       run.warnings.push_back(fmt::format(
           "at some frequencies no two H up to max_harmonics = {} agreed to harmonic_tolerance = {} (or a pair did not "
           "converge and the point was reached by the fallback): {} (frf_<Fe> column harmonic_change is NaN or above "
           "the tolerance there)",
-          spec.max_harmonics, g(spec.harmonic_tolerance), unmet));
+          spec.max_harmonics, format_setting(spec.harmonic_tolerance), unmet));
   } else if (spec.harmonic_tolerance > 0.0) {
     std::string per_level, unmet, beyond, missed;
     bool windowed = false;
@@ -143,16 +145,17 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
         windowed = windowed || t.window_hz > 0.0;
         if (t.chosen) change = t.change, estimate = t.estimated_error;
         if (t.band_change > spec.harmonic_tolerance)
-          missed += fmt::format("{}{} N (H = {}: {:.2e})", missed.empty() ? "" : ", ", g(l.force), t.harmonics,
-                                t.band_change);
+          missed += fmt::format("{}{} N (H = {}: {:.2e})", missed.empty() ? "" : ", ", format_setting(l.force),
+                                t.harmonics, t.band_change);
       }
       per_level += fmt::format(
-          "{}{} N: H = {} (tried {}{})", per_level.empty() ? "" : "; ", g(l.force), l.harmonics, tried,
+          "{}{} N: H = {} (tried {}{})", per_level.empty() ? "" : "; ", format_setting(l.force), l.harmonics, tried,
           by_change ? fmt::format("; change {:.2e}, estimated error {:.2e}", change, estimate) : std::string());
       if (by_change && !(change <= spec.harmonic_tolerance))
-        unmet += fmt::format("{}{} N (H = {})", unmet.empty() ? "" : ", ", g(l.force), l.harmonics);
+        unmet += fmt::format("{}{} N (H = {})", unmet.empty() ? "" : ", ", format_setting(l.force), l.harmonics);
       else if (by_change && estimate > spec.harmonic_tolerance)
-        beyond += fmt::format("{}{} N (H = {}: {:.2e})", beyond.empty() ? "" : ", ", g(l.force), l.harmonics, estimate);
+        beyond += fmt::format("{}{} N (H = {}: {:.2e})", beyond.empty() ? "" : ", ", format_setting(l.force),
+                              l.harmonics, estimate);
     }
     const std::string scope =
         spec.harmonic_scope == HbmSpec::HarmonicScope::peaks ? "the peaks" : "every point and peak";
@@ -161,10 +164,10 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
                                 "previous good H (its sweep at its end, or over the band for the peaks, with trusted "
                                 "peaks) is <= {} (at most "
                                 "H = {}; table harmonic_selection)",
-                                spec.harmonic_step, scope, g(spec.harmonic_tolerance), spec.max_harmonics)
+                                spec.harmonic_step, scope, format_setting(spec.harmonic_tolerance), spec.max_harmonics)
                   : fmt::format("Harmonics per level, raised until the truncation share at {} <= {} and the sweep "
                                 "reaches its end with trusted peaks (at most H = {}; table harmonic_selection)",
-                                scope, g(spec.harmonic_tolerance), spec.max_harmonics),
+                                scope, format_setting(spec.harmonic_tolerance), spec.max_harmonics),
         per_level + (windowed ? "; w: swept on windows around the previous H's peaks (column window_hz), the H "
                                 "chosen then over the whole band"
                               : ""));
@@ -173,23 +176,23 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
           "the whole band's sweep at the H chosen on windows around the peaks moved the peaks by more than "
           "harmonic_tolerance = {} from the windows' at {}: the band holds a maximum the windows did not see "
           "(table harmonic_selection, column band_change)",
-          g(spec.harmonic_tolerance), missed));
+          format_setting(spec.harmonic_tolerance), missed));
     if (by_change) {
       if (!unmet.empty())
         run.warnings.push_back(fmt::format(
             "the change with H did not fall to harmonic_tolerance = {} at {}: no two good H up to max_harmonics = {} "
             "agreed (table harmonic_selection)",
-            g(spec.harmonic_tolerance), unmet, spec.max_harmonics));
+            format_setting(spec.harmonic_tolerance), unmet, spec.max_harmonics));
       if (!beyond.empty())
         run.warnings.push_back(fmt::format(
             "the change with H met harmonic_tolerance = {} but the power law through the last three H puts the "
             "error above it at {}: the result converges slowly in H, the change understates its error",
-            g(spec.harmonic_tolerance), beyond));
+            format_setting(spec.harmonic_tolerance), beyond));
     } else if (worst > spec.harmonic_tolerance)
       run.warnings.push_back(fmt::format(
           "the harmonic truncation share {:.2e} at the {} exceeds harmonic_tolerance = {}: no H up to max_harmonics = "
           "{} met it with a sweep that reached its end and trusted peaks",
-          worst, where, g(spec.harmonic_tolerance), spec.max_harmonics));
+          worst, where, format_setting(spec.harmonic_tolerance), spec.max_harmonics));
   } else if (worst > 1e-2) {
     run.warnings.push_back(
         fmt::format("the harmonics above H would add {:.1f} % of the motion at the {}: raise harmonics or set "
@@ -201,9 +204,9 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
 }  // namespace
 
 std::string describe_modal_ratios(const FrfDamping& d) {
-  if (d.mode_zetas.empty()) return g(d.zeta);
+  if (d.mode_zetas.empty()) return format_setting(d.zeta);
   std::string out;
-  for (double z : d.mode_zetas) out += (out.empty() ? "" : ", ") + g(z);
+  for (double z : d.mode_zetas) out += (out.empty() ? "" : ", ") + format_setting(z);
   const size_t n = d.mode_zetas.size();
   return fmt::format("{} on the lowest {} (the modes above the last take its ratio)", out,
                      n == 1 ? std::string("mode") : fmt::format("{} modes", n));
@@ -213,8 +216,9 @@ std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec) {
   std::string out;
   const auto add = [&](const std::string& name, const contact::JenkinsParameters& law,
                        const contact::SliderDistribution* distribution) {
-    out += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}{}", out.empty() ? "" : "; ", name, g(law.kn), g(law.kt),
-                       g(law.mu), distribution ? ", " + distribution->describe() : "");
+    out += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}{}", out.empty() ? "" : "; ", name, format_setting(law.kn),
+                       format_setting(law.kt), format_setting(law.mu),
+                       distribution ? ", " + distribution->describe() : "");
   };
   const size_t damper = p.damper ? p.damper->contacts.size() : 0;
   for (size_t c = 0; c < damper; ++c) add(p.contact_names[c], p.model.contacts[c].law, nullptr);
@@ -225,23 +229,24 @@ std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec) {
 void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   const PreparedHbm& p = hbm.prepared;
   std::string levels;
-  for (double f : spec.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", g(f));
+  for (double f : spec.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", format_setting(f));
   const std::string damping =
       spec.damping_matrix ? "damping matrix given in the case"
       : spec.damping.kind == FrfDamping::Kind::modal
           ? spec.damping.mode_zetas.empty()
-                ? fmt::format("modal damping {} on every mode of the linear model", g(spec.damping.zeta))
+                ? fmt::format("modal damping {} on every mode of the linear model", format_setting(spec.damping.zeta))
                 : fmt::format("modal damping {}", describe_modal_ratios(spec.damping))
-          : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz", g(spec.damping.rayleigh_zeta[0]),
-                        g(spec.damping.rayleigh_zeta[1]), g(spec.damping.rayleigh_hz[0]),
-                        g(spec.damping.rayleigh_hz[1]));
-  const std::string sweep = spec.sweep.method == HbmSweepSpec::Method::grid
-                                ? fmt::format("a {} Hz grid (Newton from the secant guess)", g(spec.sweep.step_hz))
-                                : "pseudo-arclength continuation";
-  run.facts.emplace_back("analysis",
-                         fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by {}; {}",
-                                     spec.harmonics, spec.time_samples > 0 ? g(spec.time_samples) : "automatic",
-                                     g(spec.sweep.f_min), g(spec.sweep.f_max), sweep, damping));
+          : fmt::format("Rayleigh damping fitted to zeta = {}, {} at {}, {} Hz",
+                        format_setting(spec.damping.rayleigh_zeta[0]), format_setting(spec.damping.rayleigh_zeta[1]),
+                        format_setting(spec.damping.rayleigh_hz[0]), format_setting(spec.damping.rayleigh_hz[1]));
+  const std::string sweep =
+      spec.sweep.method == HbmSweepSpec::Method::grid
+          ? fmt::format("a {} Hz grid (Newton from the secant guess)", format_setting(spec.sweep.step_hz))
+          : "pseudo-arclength continuation";
+  run.facts.emplace_back(
+      "analysis", fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by {}; {}",
+                              spec.harmonics, spec.time_samples > 0 ? format_setting(spec.time_samples) : "automatic",
+                              format_setting(spec.sweep.f_min), format_setting(spec.sweep.f_max), sweep, damping));
   run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
   if (spec.cyclic)
     run.facts.emplace_back(
@@ -275,15 +280,15 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
     reached += l.path.converged ? 1 : 0;
     points += static_cast<int>(l.path.points.size());
     if (!l.path.converged)
-      run.facts.emplace_back(fmt::format("sweep at Fe = {} N stopped", g(l.force)), l.path.failure);
+      run.facts.emplace_back(fmt::format("sweep at Fe = {} N stopped", format_setting(l.force)), l.path.failure);
   }
   run.facts.emplace_back("sweeps that reached the end / points",
                          fmt::format("{} of {} / {}", reached, hbm.levels.size(), points));
   for (const HbmLevel& l : hbm.levels)
     for (const HbmPeak& pk : l.peaks)
       if (!pk.trusted)
-        run.warnings.push_back(fmt::format("{} peak at Fe = {} N ({:.4f} Hz) is doubtful: {}", pk.kind, g(l.force),
-                                           pk.frequency_hz, pk.doubt));
+        run.warnings.push_back(fmt::format("{} peak at Fe = {} N ({:.4f} Hz) is doubtful: {}", pk.kind,
+                                           format_setting(l.force), pk.frequency_hz, pk.doubt));
   const WorstPeak sampled = worst_peak(hbm, [](const HbmPeak& pk) { return pk.sampling_error; });
   const double worst = sampled.value;
   const std::string where = sampled.name();
@@ -293,18 +298,18 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
   if (spec.aft_tolerance > 0.0) {
     std::string per_level;
     for (const HbmLevel& l : hbm.levels)
-      per_level += fmt::format("{}{} N: {} ({} sweep{})", per_level.empty() ? "" : "; ", g(l.force), l.samples,
-                               l.sampling_trials.size(), l.sampling_trials.size() == 1 ? "" : "s");
+      per_level += fmt::format("{}{} N: {} ({} sweep{})", per_level.empty() ? "" : "; ", format_setting(l.force),
+                               l.samples, l.sampling_trials.size(), l.sampling_trials.size() == 1 ? "" : "s");
     run.facts.emplace_back(fmt::format("AFT samples per level, raised until the peaks' sampling error <= {} and the "
                                        "sweep reaches its end with trusted peaks (at most {}; table aft_sampling)",
-                                       g(spec.aft_tolerance), spec.max_time_samples),
+                                       format_setting(spec.aft_tolerance), spec.max_time_samples),
                            per_level);
   }
   if (spec.aft_tolerance > 0.0 && worst > spec.aft_tolerance)
     run.warnings.push_back(
         fmt::format("the AFT sampling error {:.2e} at the {} exceeds aft_tolerance = {} even at the "
                     "largest samples tried (max_time_samples = {})",
-                    worst, where, g(spec.aft_tolerance), spec.max_time_samples));
+                    worst, where, format_setting(spec.aft_tolerance), spec.max_time_samples));
   else if (!(spec.aft_tolerance > 0.0) && worst > 1e-3)
     run.warnings.push_back(
         fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples or set "

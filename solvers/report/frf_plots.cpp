@@ -49,11 +49,10 @@ Plot plot_frf(const FrfOutcome& frf, const std::string& output, const fs::path& 
       if (f >= f0 && f <= f1)
         script += fmt::format("set arrow from {},graph 0 to {},graph 1 nohead dt 3 lc rgb '#bbbbbb'\n", f, f);
     }
-  const char* colours[] = {"#1f5fbf", "#bf1f1f", "#2f9f2f", "#9f2fbf", "#bf8f1f"};
   script += "plot ";
   for (size_t i = 0; i < curves.size(); ++i)
     script += fmt::format("{}'{}.dat' using 1:{} with lines lw {} lc rgb '{}' title '{}'", i ? ", \\\n     " : "", stem,
-                          i + 2, i == 0 ? 2 : 1, colours[i % 5], gnuplot_quote(curves[i].first));
+                          i + 2, i == 0 ? 2 : 1, series_colour(i), gnuplot_quote(curves[i].first));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

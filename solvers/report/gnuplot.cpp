@@ -21,6 +21,12 @@ std::string shell_quote(const std::string& s) {
 
 }  // namespace
 
+const char* series_colour(size_t i) {
+  static constexpr const char* kPalette[] = {"#1f5fbf", "#bf1f1f", "#2f9f2f", "#9f2fbf",
+                                             "#bf8f1f", "#1f9fbf", "#7f7f7f", "#000000"};
+  return kPalette[i % 8];
+}
+
 std::string gnuplot_quote(const std::string& s) {
   std::string out;
   // Doubled quotes inside '...'; a line break would end the string and start a gnuplot command.

@@ -15,8 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kColours[] = {"#1f5fbf", "#bf1f1f", "#2f9f2f", "#9f2fbf", "#bf8f1f", "#1f9fbf", "#7f7f7f", "#000000"};
-
 // The abscissa of the performance plots: CF / Fe with a damper, Fe otherwise.
 double abscissa(const HbmOutcome& hbm, double force) {
   return hbm.prepared.damper ? hbm.prepared.centrifugal_force / force : force;
@@ -41,10 +39,14 @@ Plot plot_hbm_levels(const HbmOutcome& hbm, size_t response, bool per_newton, co
                          (per_newton ? l.force : 1.0);
         const bool near_unstable = unstable(i) || (i > 0 && unstable(i - 1)) || unstable(i + 1);
         out << l.frequency_hz[i] << ' ';
-        if (unstable(i)) out << "nan ";
-        else out << a << ' ';
-        if (near_unstable) out << a;
-        else out << "nan";
+        if (unstable(i))
+          out << "nan ";
+        else
+          out << a << ' ';
+        if (near_unstable)
+          out << a;
+        else
+          out << "nan";
         out << '\n';
       }
       out << "\n\n";
@@ -68,10 +70,10 @@ Plot plot_hbm_levels(const HbmOutcome& hbm, size_t response, bool per_newton, co
     for (double st : l.stable) any_unstable = any_unstable || st == 0.0;
   for (size_t i = 0; i < hbm.levels.size(); ++i) {
     script += fmt::format("{}'{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N'",
-                          i ? ", \\\n     " : "", stem, i, kColours[i % 8], hbm.levels[i].force);
+                          i ? ", \\\n     " : "", stem, i, series_colour(i), hbm.levels[i].force);
     if (any_unstable)
       script += fmt::format(", \\\n     '{}.dat' index {} using 1:3 with lines dt 2 lc rgb '{}' {}", stem, i,
-                            kColours[i % 8], i == 0 ? "title 'unstable (Hill)'" : "notitle");
+                            series_colour(i), i == 0 ? "title 'unstable (Hill)'" : "notitle");
   }
   if (per_newton)
     script += fmt::format(
@@ -126,11 +128,11 @@ Plot plot_hbm_performance(const HbmOutcome& hbm, const std::string& quantity, co
   for (size_t k = 0; k < kinds.size(); ++k) {
     std::string upper = kinds[k] == "peak" ? "peak" : kinds[k] == "ip" ? "IP" : "OOP";
     script += fmt::format("{}'{}.dat' using 1:{} with linespoints pt 7 lc rgb '{}' title '{} (bladebench)'",
-                          k ? ", \\\n     " : "", stem, 2 + 2 * k, kColours[k], upper);
+                          k ? ", \\\n     " : "", stem, 2 + 2 * k, series_colour(k), upper);
     if (!ref[k].empty())
       script +=
           fmt::format(", \\\n     '{}.dat' using 1:{} with linespoints pt 4 dt 2 lc rgb '{}' title '{} (reference)'",
-                      stem, 3 + 2 * k, kColours[k], upper);
+                      stem, 3 + 2 * k, series_colour(k), upper);
   }
   script += '\n';
   return draw(out_dir, stem, title, script);
@@ -168,7 +170,7 @@ Plot plot_contact_states(const HbmOutcome& hbm, const std::string& kind, const f
     script += fmt::format(
         "{0}'{1}.dat' using 1:{2} with linespoints pt 7 lc rgb '{3}' title '{4} stick', \\\n"
         "     '{1}.dat' using 1:{5} with linespoints pt 4 dt 2 lc rgb '{3}' title '{4} lift-off'",
-        c ? ", \\\n     " : "", stem, 2 + 2 * c, kColours[c % 8], gnuplot_quote(contacts[c]), 3 + 2 * c);
+        c ? ", \\\n     " : "", stem, 2 + 2 * c, series_colour(c), gnuplot_quote(contacts[c]), 3 + 2 * c);
   script += '\n';
   return draw(out_dir, stem, title, script);
 }
@@ -209,7 +211,7 @@ Plot plot_hbm_harmonics_study(const ResultTable& study, const fs::path& out_dir,
     script += fmt::format(
         "{0}'{1}.dat' index {2} using 1:2 with linespoints pt 7 lc rgb '{3}' title '{4}', "
         "'{1}.dat' index {2} using 1:2:(sprintf('H=%d', $3)) with labels offset 0,1 notitle",
-        i ? ", \\\n     " : "", stem, i, kColours[i % 8], gnuplot_quote(titles[i]));
+        i ? ", \\\n     " : "", stem, i, series_colour(i), gnuplot_quote(titles[i]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

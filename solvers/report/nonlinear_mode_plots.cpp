@@ -10,8 +10,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kColours[] = {"#1f5fbf", "#bf1f1f", "#2f9f2f", "#9f2fbf", "#bf8f1f", "#1f9fbf"};
-
 // The amplitude column of the nonlinear_modes table drawn for mode m, and its legend.
 std::string amplitude_column(const HbmOutcome& hbm, const NonlinearModesSpec& nm, size_t m) {
   if (!nm.peaks.empty() && nm.peaks[m] != "peak") return nm.peaks[m] + "_component_m";
@@ -48,7 +46,7 @@ Plot plot_backbones(const HbmOutcome& hbm, const HbmSpec& spec, const fs::path& 
       gnuplot_quote(title));
   for (size_t m = 0; m < nm.linear_modes.size(); ++m)
     script += fmt::format("{}'{}.dat' index {} using 1:2 with lines lw 2 lc rgb '{}' title 'mode {} ({})' noenhanced",
-                          m ? ", \\\n     " : "", stem, m, kColours[m % 6], nm.linear_modes[m],
+                          m ? ", \\\n     " : "", stem, m, series_colour(m), nm.linear_modes[m],
                           gnuplot_quote(amplitude_legend(hbm, nm, m)));
   script +=
       fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points pt 7 lc rgb '#000000' title 'sweep peaks'\n",
@@ -72,7 +70,7 @@ Plot plot_modal_damping(const HbmOutcome& hbm, const fs::path& out_dir, const st
       gnuplot_quote(title));
   for (size_t m = 0; m < hbm.nonlinear_modes.size(); ++m)
     script += fmt::format("{}'{}.dat' index {} using 1:2 with lines lw 2 lc rgb '{}' title 'mode {}'",
-                          m ? ", \\\n     " : "", stem, m, kColours[m % 6], hbm.nonlinear_modes[m].linear_mode);
+                          m ? ", \\\n     " : "", stem, m, series_colour(m), hbm.nonlinear_modes[m].linear_mode);
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

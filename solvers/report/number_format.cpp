@@ -64,6 +64,8 @@ std::string unit_of_column(const std::string& column) {
   return "";
 }
 
+std::string format_setting(double value) { return fmt::format("{:.6g}", value); }
+
 std::string format_number(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";

@@ -14,6 +14,8 @@ std::string unit_of_column(const std::string& column);
 std::string format_number(double value);
 // format_number with the unit after a space, when there is one.
 std::string format_quantity(double value, const std::string& unit);
+// Six significant digits as printf's %g writes them: a setting echoed in a report's description.
+std::string format_setting(double value);
 // A fraction as a percentage with its sign: +0.54 %, -12.30 %, +2.0e-6 %, 0 %.
 std::string format_percent(double fraction);
 // A duration: 0.013 s, 1.2 s, 372.6 s, 1 h 02 min.

@@ -12,10 +12,6 @@ namespace bb {
 
 namespace fs = std::filesystem;
 
-namespace {
-const char* const kColours[] = {"#1f5fbf", "#bf1f1f", "#2f9f2f", "#9f2fbf", "#bf8f1f", "#1f9fbf", "#7f7f7f", "#000000"};
-}
-
 Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out_dir, const std::string& stem) {
   const std::string name = time.prepared.response_names.at(response);
   const auto r = static_cast<Eigen::Index>(response);
@@ -58,17 +54,17 @@ Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out
       script += fmt::format(
           "{}'{}.dat' index {} using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '{}' title 'Fe = {:g} N, not steady: "
           "first-harmonic range', \\\n     ",
-          i ? ", \\\n     " : "", stem, 2 * i, kColours[i % 8], time.levels[i].force);
+          i ? ", \\\n     " : "", stem, 2 * i, series_colour(i), time.levels[i].force);
     script +=
         fmt::format("{}'{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title 'Fe = {:g} N, Newmark'",
-                    i && !envelope[i] ? ", \\\n     " : "", stem, 2 * i, kColours[i % 8], time.levels[i].force);
+                    i && !envelope[i] ? ", \\\n     " : "", stem, 2 * i, series_colour(i), time.levels[i].force);
     if (hbm)
       script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N, HBM'",
-                            stem, 2 * i + 1, kColours[i % 8], time.levels[i].force);
+                            stem, 2 * i + 1, series_colour(i), time.levels[i].force);
     script += fmt::format(
         ", \\\n     '{}.dat' index {} using 1:3 with lines dt 2 lc rgb '{}' title 'Fe = {:g} N, linear (contacts as "
         "springs)'",
-        stem, 2 * i, kColours[i % 8], time.levels[i].force);
+        stem, 2 * i, series_colour(i), time.levels[i].force);
   }
   script += '\n';
   return draw(out_dir, stem, title, script);
@@ -93,7 +89,7 @@ Plot plot_hysteresis(const TimeOutcome& time, const fs::path& out_dir, const std
   for (size_t c = 0; c < h.contacts.size(); ++c)
     script +=
         fmt::format("{}'{}.dat' index {} using 1:2 with lines lw 2 lc rgb '{}' title '{}'", c ? ", \\\n     " : "",
-                    stem, c, kColours[c % 8], gnuplot_quote(time.prepared.contact_names[c]));
+                    stem, c, series_colour(c), gnuplot_quote(time.prepared.contact_names[c]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }
@@ -118,7 +114,7 @@ Plot plot_contact_forces(const TimeOutcome& time, const fs::path& out_dir, const
     script += fmt::format(
         "{0}'{1}.dat' index {2} using 1:2 with lines lw 2 lc rgb '{3}' title '{4} N', "
         "'{1}.dat' index {2} using 1:3 with lines dt 2 lc rgb '{3}' title '{4} T'",
-        c ? ", \\\n     " : "", stem, c, kColours[c % 8], gnuplot_quote(time.prepared.contact_names[c]));
+        c ? ", \\\n     " : "", stem, c, series_colour(c), gnuplot_quote(time.prepared.contact_names[c]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }
@@ -150,7 +146,7 @@ Plot plot_time_step_study(const ResultTable& study, const fs::path& out_dir, con
     script += fmt::format(
         "{0}'{1}.dat' index {2} using 1:2 with linespoints pt 7 lc rgb '{3}' title 'steady tolerance {4:g}', "
         "'{1}.dat' index {2} using 1:2:(sprintf('%d', $3)) with labels offset 0,1 notitle",
-        i ? ", \\\n     " : "", stem, i, kColours[i % 8], tolerances[i]);
+        i ? ", \\\n     " : "", stem, i, series_colour(i), tolerances[i]);
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

@@ -8,8 +8,8 @@
 namespace bb {
 
 ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal_spec,
-                                                 const ModalRefinementStudySpec& s,
-                                                 const StudyProgress& progress) {
+                                                 const ModalRefinementStudySpec& s, const StudyProgress& progress,
+                                                 const ModelCacheSettings* cache) {
   ModalRefinementResult out;
   out.modes = s.modes;
   const int total = static_cast<int>(s.elements.size() * s.refinements.size());
@@ -32,7 +32,7 @@ ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const Mo
       const Model model = build_model(level);
       ModeSelection lowest;
       lowest.lowest = s.modes;
-      const ModalResult modal = solve_modal(model, lowest, modal_spec.options);
+      const ModalResult modal = solve_modal(model, lowest, modal_spec.options, cache);
       ModalRefinementRow row;
       row.element = element;
       row.refinement = r;

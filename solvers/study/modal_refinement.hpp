@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "analysis/modal_spec.hpp"
+#include "cache/model_cache_settings.hpp"
 #include "model/model_spec.hpp"
 #include "study/study_progress.hpp"
 #include "study/study_spec.hpp"
@@ -30,6 +31,7 @@ struct ModalRefinementResult {
 
 ModalRefinementResult run_modal_refinement_study(const ModelSpec& spec, const ModalSpec& modal,
                                                  const ModalRefinementStudySpec& study,
-                                                 const StudyProgress& progress = {});
+                                                 const StudyProgress& progress = {},
+                                                 const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

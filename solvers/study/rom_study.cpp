@@ -10,7 +10,7 @@
 namespace bb {
 
 ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model,
-                          const StudyProgress& progress) {
+                          const StudyProgress& progress, const ModelCacheSettings* cache) {
   FrfSpec frf = spec;
   frf.pairs.reset();  // the study compares frequencies by index: no labels
   frf.force_levels.clear();
@@ -26,7 +26,7 @@ ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const 
       set_of_variant.push_back(set);
     }
   // Progress per model built (the full one and each variant's reduction): the sweep after them is cheap.
-  const FrfOutcome o = run_frf(model, frf, progress);
+  const FrfOutcome o = run_frf(model, frf, progress, cache);
   const Eigen::VectorXd& full = o.full_modal->frequencies_hz;
   const ResultTable& full_peaks = o.tables.at("peaks_full");
   const double n_frequencies = static_cast<double>(o.sweep.frequency_hz.size());

@@ -3,6 +3,7 @@
 // reduction time and time per frequency, all against the full mesh of the case.
 #pragma once
 #include "analysis/frf_spec.hpp"
+#include "cache/model_cache_settings.hpp"
 #include "model/model.hpp"
 #include "results/table.hpp"
 #include "study/study_progress.hpp"
@@ -16,6 +17,6 @@ namespace bb {
 // text column master_set.
 // `progress` hears of the start and the end only: the variants share one sweep.
 ResultTable run_rom_study(const FrfSpec& spec, const RomStudySpec& study, const Model& model,
-                          const StudyProgress& progress = {});
+                          const StudyProgress& progress = {}, const ModelCacheSettings* cache = nullptr);
 
 }  // namespace bb

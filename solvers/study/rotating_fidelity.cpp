@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "analysis/rotating_analysis.hpp"
+#include "common/constants.hpp"
 #include "ffrf/elastic_basis.hpp"
 #include "ffrf/rotating_body.hpp"
 #include "ffrf/rotating_modes.hpp"
@@ -16,7 +17,6 @@ namespace bb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 struct Level {
   std::string model;

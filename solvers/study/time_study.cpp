@@ -7,7 +7,7 @@
 namespace bb {
 
 ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const TimeStepStudySpec& study,
-                                const StudyProgress& progress) {
+                                const StudyProgress& progress, const ModelCacheSettings* cache) {
   struct Variant {
     int steps;
     double tolerance;
@@ -25,7 +25,7 @@ ResultTable run_time_step_study(const Model& model, const TimeSpec& spec, const 
       s.compare_harmonics = 0;
       s.require_steady_peaks = false;  // a coarse variant's unsteady peak is the error this study measures
       s.system.force_levels = {spec.system.force_levels.front()};
-      variants.push_back({n, t, run_time(model, s)});
+      variants.push_back({n, t, run_time(model, s, {}, cache)});
       if (progress) progress(static_cast<int>(variants.size()), total);
     }
   // The reference: most steps per period, then the smallest tolerance.

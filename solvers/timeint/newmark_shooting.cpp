@@ -4,6 +4,7 @@
 #include <memory>
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "timeint/newmark.hpp"
 #include "timeint/period_newton.hpp"
 #include "timeint/steady_state.hpp"
@@ -16,8 +17,6 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // x = (q, v / omega, a / omega^2, w): every entry in metres, so one tolerance scales them all.
 class NewmarkPeriod {

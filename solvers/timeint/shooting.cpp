@@ -8,6 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "common/constants.hpp"
 #include "timeint/period_newton.hpp"
 
 namespace bb::timeint {
@@ -18,8 +19,6 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 VectorXd stack(const FlowState& s) {
   VectorXd x(s.q.size() + s.p.size() + s.w.size());

@@ -14,34 +14,18 @@
 #include <random>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "contact/jenkins_contact.hpp"
+#include "fourier_series.hpp"
 
 namespace bb::contact {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 AftOptions events(int samples) {
   AftOptions o;
   o.samples = samples;
   o.resolve_events = true;
   return o;
-}
-
-// Describing function of the Jenkins element under U cos(theta) at slip force F (Griffin 1980):
-// a1 = (kt U / pi)(beta - sin 2 beta / 2), b1 = -(kt U / pi) sin^2 beta, cos beta = 1 - 2 F / (kt U).
-Eigen::Vector2d describing_function(double amplitude, double kt, double slip_force) {
-  if (kt * amplitude <= slip_force) return {kt * amplitude, 0.0};
-  const double beta = std::acos(1.0 - 2.0 * slip_force / (kt * amplitude));
-  return {kt * amplitude / kPi * (beta - 0.5 * std::sin(2.0 * beta)),
-          -kt * amplitude / kPi * std::pow(std::sin(beta), 2)};
-}
-
-double evaluate(const Eigen::VectorXd& c, double theta) {
-  double x = c[0];
-  for (int h = 1; h <= harmonics_of(c.size()); ++h)
-    x += c[2 * h - 1] * std::cos(h * theta) + c[2 * h] * std::sin(h * theta);
-  return x;
 }
 
 // u and v out of phase with second harmonics: the contact opens for part of the cycle, slips under
@@ -120,25 +104,14 @@ TEST(AftEvents, EnergyWithLiftOffIsTheIntegralOfTdu) {
   EXPECT_NEAR(w, work, 1e-6 * work);
 }
 
-Eigen::VectorXd random_coefficients(std::mt19937& rng, int harmonics, double amplitude) {
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  Eigen::VectorXd c(harmonic_size(harmonics));
-  c[0] = 0.5 * amplitude * unit(rng);
-  for (int h = 1; h <= harmonics; ++h) {
-    c[2 * h - 1] = amplitude * unit(rng) / h;
-    c[2 * h] = amplitude * unit(rng) / h;
-  }
-  return c;
-}
-
-struct Regime {
+struct EventRegime {
   const char* name;
   JenkinsParameters p;
   double u_amplitude, v_amplitude, u_cos, v_cos;
 };
 
-const std::vector<Regime>& regimes() {
-  static const std::vector<Regime> all = {
+const std::vector<EventRegime>& regimes() {
+  static const std::vector<EventRegime> all = {
       {"stick", {.kn = 1e6, .kt = 1e6, .mu = 0.5, .n0 = 1000.0}, 1e-5, 1e-5, 0.0, 0.0},
       {"stick-slip", {.kn = 1e6, .kt = 1e6, .mu = 0.5, .n0 = 1000.0}, 1e-3, 1e-5, 2.5e-3, 0.0},
       {"partial lift-off", {.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 1000.0}, 1e-3, 1e-5, 2.5e-3, 2e-4}};
@@ -150,7 +123,7 @@ TEST(AftEvents, JacobianMatchesCentralDifferencesAtEveryColumn) {
   double worst = 0.0;
   int checked = 0;
   for (int harmonics : {1, 3})
-    for (const Regime& regime : regimes())
+    for (const EventRegime& regime : regimes())
       for (int trial = 0; trial < 4; ++trial) {
         const Eigen::Index m = harmonic_size(harmonics);
         Eigen::VectorXd u = random_coefficients(rng, harmonics, regime.u_amplitude);
@@ -188,7 +161,7 @@ TEST(AftEvents, JacobianMatchesCentralDifferencesAtEveryColumn) {
 TEST(AftEvents, LawDerivativesMatchCentralDifferences) {
   std::mt19937 rng(7);
   double worst = 0.0;
-  for (const Regime& regime : regimes())
+  for (const EventRegime& regime : regimes())
     for (int trial = 0; trial < 3; ++trial) {
       Eigen::VectorXd u = random_coefficients(rng, 2, regime.u_amplitude);
       Eigen::VectorXd v = random_coefficients(rng, 2, regime.v_amplitude);

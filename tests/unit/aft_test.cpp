@@ -15,12 +15,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "contact/jenkins_contact.hpp"
+#include "fourier_series.hpp"
 
 namespace bb::contact {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 Eigen::VectorXd cosine(int harmonics, double amplitude, double phase = 0.0) {
   // amplitude cos(theta - phase) in the layout [c0, a1, b1, ...].
@@ -28,13 +28,6 @@ Eigen::VectorXd cosine(int harmonics, double amplitude, double phase = 0.0) {
   c[1] = amplitude * std::cos(phase);
   c[2] = amplitude * std::sin(phase);
   return c;
-}
-
-double evaluate(const Eigen::VectorXd& c, double theta) {
-  double x = c[0];
-  for (int h = 1; h <= harmonics_of(c.size()); ++h)
-    x += c[2 * h - 1] * std::cos(h * theta) + c[2 * h] * std::sin(h * theta);
-  return x;
 }
 
 // Steady force of a Jenkins element under u = U cos(theta) at a constant slip force F = mu N: the
@@ -49,20 +42,6 @@ double parallelogram(double theta, double amplitude, double kt, double slip_forc
   if (theta >= kPi) theta -= kPi;
   const double beta = std::acos(1.0 - 2.0 * slip_force / (kt * amplitude));
   return sign * (theta < beta ? slip_force - kt * amplitude * (1.0 - std::cos(theta)) : -slip_force);
-}
-
-// Describing function of the Jenkins element (Griffin, "Friction damping of resonant stresses in gas
-// turbine engine airfoils", J. Eng. Power 102, 1980, whose equivalent stiffness and damping of the
-// elastic-Coulomb damper are these coefficients divided by U): integrating the loop above against
-// cos and sin over a period,
-//   a1 = (kt U / pi) (beta - sin(2 beta) / 2),   b1 = -(kt U / pi) sin^2(beta)   (U > F / kt),
-//   a1 = kt U, b1 = 0 (stuck), with cos beta = 1 - 2 F / (kt U).
-// Then W = -pi b1 U = kt U^2 sin^2 beta = 4 F (U - F / kt), the parallelogram's area.
-Eigen::Vector2d describing_function(double amplitude, double kt, double slip_force) {
-  if (kt * amplitude <= slip_force) return {kt * amplitude, 0.0};
-  const double beta = std::acos(1.0 - 2.0 * slip_force / (kt * amplitude));
-  return {kt * amplitude / kPi * (beta - 0.5 * std::sin(2.0 * beta)),
-          -kt * amplitude / kPi * std::pow(std::sin(beta), 2)};
 }
 
 // First harmonic of the response to U cos(theta - phase): the loop above delayed by `phase`.
@@ -257,18 +236,6 @@ TEST(AftJenkins, EnergyWithVariableNormalLoadAndLiftOffIsTheIntegralOfTdu) {
       work, reference, std::abs(work - reference) / reference);
   EXPECT_GT(reference, 0.0);
   EXPECT_NEAR(work, reference, 1e-3 * reference);
-}
-
-// Random coefficient vector: c0 within +-amplitude / 2, harmonic h within +-amplitude / h.
-Eigen::VectorXd random_coefficients(std::mt19937& rng, int harmonics, double amplitude, double mean = 0.0) {
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  Eigen::VectorXd c(harmonic_size(harmonics));
-  c[0] = mean + 0.5 * amplitude * unit(rng);
-  for (int h = 1; h <= harmonics; ++h) {
-    c[2 * h - 1] = amplitude * unit(rng) / h;
-    c[2 * h] = amplitude * unit(rng) / h;
-  }
-  return c;
 }
 
 TEST(AftJenkins, JacobianMatchesCentralDifferences) {

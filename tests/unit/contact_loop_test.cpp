@@ -10,11 +10,10 @@
 
 #include "analysis/contact_loop_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "common/constants.hpp"
 
 namespace bb {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 ContactLoopSpec rig(double u_amp, double v_amp = 0.0, int samples = 256) {
   ContactLoopSpec s;

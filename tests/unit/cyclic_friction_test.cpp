@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "common/constants.hpp"
 #include "friction/whole_ring.hpp"
 #include "hbm/condensed_balance.hpp"
 #include "hbm/cycle_energy.hpp"
@@ -20,7 +21,6 @@ namespace bb {
 namespace {
 
 using Eigen::Index;
-constexpr double kPi = std::numbers::pi;
 
 // Sector DOFs: platform x (tangential) and y (radial), blade tip x, damper x and y. The damper is
 // pressed up into two platforms by its centrifugal load: its own blade's and the next blade's.

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "bladed_disk_sector_fixture.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "cyclic/cyclic_modes.hpp"
 #include "cyclic/whole_disk.hpp"
@@ -17,8 +18,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 Eigen::VectorXd spectrum_hz(const SectorReduction& r) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> eig(r.stiffness, r.mass, Eigen::EigenvaluesOnly);

@@ -9,6 +9,7 @@
 
 #include "assembly/free_system.hpp"
 #include "bladed_disk_sector_fixture.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "cyclic/cyclic_campbell.hpp"
 #include "cyclic/cyclic_modes.hpp"
@@ -18,8 +19,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // One sector of a ring of N masses m, each grounded by k0 and coupled to the next by kc: the
 // sector holds its own mass (DOF 0, left face) and the coupling spring's far end (DOF 1, the next

@@ -9,6 +9,7 @@
 
 #include "analysis/static_analysis.hpp"
 #include "assembly/load_vector.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "fe/surface_load.hpp"
 #include "mesh/boundary.hpp"
@@ -20,8 +21,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // A flat square 8-node face under a uniform pressure: the serendipity shares, -1/12 of p A at each
 // corner and 1/3 at each mid-edge node (against the outward normal), the textbook result.

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "ffrf/elastic_basis.hpp"
 #include "ffrf/rotating_modes.hpp"
@@ -17,8 +18,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 test::BeamSpec blade_like_beam() {
   test::BeamSpec b;

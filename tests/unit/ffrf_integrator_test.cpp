@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "assembly/assemble.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "ffrf/rotating_modes.hpp"
 #include "ffrf_test_models.hpp"
@@ -26,7 +27,6 @@
 namespace bb {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "ffrf/rotating_modes.hpp"
 #include "ffrf_test_models.hpp"
@@ -19,8 +20,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // Slender square beam (L / h = 50), hub radius 0: the axis z passes through the root-face centre.
 test::BeamSpec southwell_beam() {

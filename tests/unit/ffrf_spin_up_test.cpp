@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"
@@ -31,7 +32,6 @@
 namespace bb {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kL = 10.0, kEA = 2.8e7, kEI = 1.4e4, kRhoA = 1.2, kOs = 6.0, kTs = 15.0;
 
 // Square section with I / A = EI / EA: h^2 = 12 EI / EA.

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
 
@@ -18,7 +19,6 @@ namespace bb {
 namespace {
 
 using Complex = std::complex<double>;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // One response, modal superposition at a frequency in Hz.
 ResponseAt modal_response(const ModalReceptance& modal) {

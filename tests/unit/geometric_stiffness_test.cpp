@@ -15,6 +15,7 @@
 
 #include "assembly/assemble.hpp"
 #include "assembly/dof_map.hpp"
+#include "common/constants.hpp"
 #include "fe/initial_stress.hpp"
 #include "ffrf/body_assembly.hpp"
 #include "ffrf_test_models.hpp"
@@ -22,8 +23,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // One element of any type: coordinates, stresses of a nodal displacement, K_sigma of point stresses.
 struct ElementCase {

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "cases/case_spec.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "forced/hbm_level.hpp"
 #include "forced/level_relay.hpp"
@@ -26,8 +27,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // m = 1 kg, k = 1e6 N/m, zeta = 0.01 (c = 20 N s/m); a Jenkins contact to the ground with
 // kt = 1e6 N/m and constant normal load n0 = 30 N; mu and the force levels are filled in.

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "contact/aft.hpp"
 #include "contact/jenkins_contact.hpp"
 #include "friction_oscillator.hpp"
@@ -21,8 +22,6 @@ namespace {
 using contact::ContactState;
 using test::first_harmonic_amplitude;
 using test::FrictionOscillator;
-
-constexpr double kPi = std::numbers::pi;
 
 // m = 1 kg, k = 1e6 N/m (1000 rad/s free of the contact), 1 % viscous damping; the stuck contact
 // adds kt = 5e5 N/m (1225 rad/s), and lets go at mu N0 = 10 N, i.e. after 2e-5 m.

@@ -8,12 +8,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "hbm/nonlinear_modes.hpp"
 
 namespace bb::hbm {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // m = 1 kg on k = 1e6 N/m, c = 20 N s/m; a contact to the ground with kt = 5e5 N/m and a constant
 // normal load of 20 N, mu = 0.5: it lets go after x_s = mu N / kt = 2e-5 m.

@@ -13,6 +13,7 @@
 
 #include "analysis/hbm_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "common/constants.hpp"
 #include "friction_oscillator.hpp"
 #include "hbm/response_control.hpp"
 #include "model/build_model.hpp"
@@ -24,7 +25,6 @@ namespace bb {
 namespace {
 
 using Complex = std::complex<double>;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 hbm::HarmonicBalance unit_system(friction::FrictionModel m, int harmonics = 1) {
   m.harmonic_load = Eigen::VectorXcd::Constant(m.mass.rows(), 0.0);

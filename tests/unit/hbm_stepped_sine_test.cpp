@@ -18,6 +18,7 @@
 
 #include "analysis/hbm_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "identify/fit_points.hpp"
 #include "model/build_model.hpp"
@@ -28,8 +29,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 class HbmSteppedSineTest : public test::TempFolderTest {
  protected:

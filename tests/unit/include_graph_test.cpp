@@ -1,6 +1,7 @@
 // The architecture of solvers/ as a test: folders are layers, and an #include from one folder into
-// another is a dependency. The dependency graph between folders must have no cycle, and the case-file
-// layer is a leaf that only the pipeline and the command line use (solvers/README.md).
+// another is a dependency. The dependency graph between folders must have no cycle, a folder includes
+// only folders that solvers/README.md lists above it, the case-file layer is a leaf that only the
+// pipeline and the command line use, and the physics library never includes the harness.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -65,6 +67,67 @@ TEST(Architecture, FolderIncludesFormNoCycle) {
     std::vector<std::string> path;
     const std::string cycle = find_cycle(g, folder, path, done);
     EXPECT_TRUE(cycle.empty()) << "include cycle between folders: " << cycle;
+  }
+}
+
+// The folders in the order solvers/README.md draws its layers: the first word of every line of its
+// first code block that starts in the first column.
+std::vector<std::string> readme_layers() {
+  std::ifstream in(fs::path(BB_SOURCE_DIR) / "solvers" / "README.md");
+  std::vector<std::string> layers;
+  std::string line;
+  int fences = 0;
+  while (std::getline(in, line) && fences < 2) {
+    if (line.rfind("```", 0) == 0) {
+      ++fences;
+    } else if (fences == 1 && !line.empty() && line[0] != ' ') {
+      layers.push_back(line.substr(0, line.find(' ')));
+    }
+  }
+  return layers;
+}
+
+// The harness's folders, as solvers/CMakeLists.txt splits the libraries (BB_HARNESS_FOLDERS), and cli.
+std::set<std::string> harness_folders() {
+  std::ifstream in(fs::path(BB_SOURCE_DIR) / "solvers" / "CMakeLists.txt");
+  const std::regex list(R"re(^set\(BB_HARNESS_FOLDERS ([a-z_ ]+)\))re");
+  std::set<std::string> out{"cli"};
+  std::string line;
+  std::smatch m;
+  while (std::getline(in, line))
+    if (std::regex_search(line, m, list)) {
+      std::istringstream words(m[1].str());
+      for (std::string w; words >> w;) out.insert(w);
+    }
+  return out;
+}
+
+TEST(Architecture, EveryFolderIncludesOnlyFoldersAboveItInTheReadme) {
+  const std::vector<std::string> layers = readme_layers();
+  ASSERT_GT(layers.size(), 20u);
+  const auto rank = [&](const std::string& folder) {
+    return std::find(layers.begin(), layers.end(), folder) - layers.begin();
+  };
+  const auto missing = static_cast<std::ptrdiff_t>(layers.size());
+  for (const auto& [folder, edges] : folder_graph()) {
+    if (rank(folder) == missing) {
+      ADD_FAILURE() << folder << "/ is missing from solvers/README.md's layer list";
+      continue;
+    }
+    for (const auto& [to, file] : edges)
+      if (rank(to) > rank(folder))
+        ADD_FAILURE() << folder << "/ includes " << to << "/ (" << file << "), which solvers/README.md lists below it";
+  }
+}
+
+TEST(Architecture, ThePhysicsLibraryNeverIncludesTheHarness) {
+  const std::set<std::string> harness = harness_folders();
+  ASSERT_GT(harness.size(), 5u);
+  for (const auto& [folder, edges] : folder_graph()) {
+    if (harness.count(folder)) continue;
+    for (const auto& [to, file] : edges)
+      if (harness.count(to))
+        ADD_FAILURE() << "physics folder " << folder << "/ includes the harness's " << to << "/ (" << file << ")";
   }
 }
 

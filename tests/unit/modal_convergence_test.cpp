@@ -13,6 +13,7 @@
 
 #include "analysis/modal_analysis.hpp"
 #include "assembly/assemble.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "linalg/modal_solver.hpp"
 #include "mesh/mapped_quad.hpp"
@@ -20,8 +21,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // A rectangular-section beam; as a 1D Timoshenko beam: A = h t, I = t h^3 / 12, G = E / 2(1 + nu).
 struct Beam {

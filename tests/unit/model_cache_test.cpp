@@ -2,12 +2,14 @@
 // a stored reduction comes back bit for bit, a damaged entry is detected and rebuilt, the folder
 // stays within its size bound, quick results are not stored, and with the cache off nothing is
 // written.
+#include "cache/model_cache.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <optional>
 
 #include "cache/content_key.hpp"
-#include "cache/model_cache.hpp"
 #include "linalg/cached_modes.hpp"
 #include "reduction/cached_craig_bampton.hpp"
 #include "temp_folder.hpp"
@@ -60,14 +62,11 @@ class ModelCache : public test::TempFolderTest {
  protected:
   void SetUp() override {
     TempFolderTest::SetUp();
-    configure_model_cache(ModelCacheSettings{.folder = dir_ / "cache", .min_build_seconds = 0.0});
-  }
-  void TearDown() override {
-    configure_model_cache(std::nullopt);
-    TempFolderTest::TearDown();
+    settings_ = ModelCacheSettings{.folder = dir_ / "cache", .min_build_seconds = 0.0};
   }
   ReducedModel reduce(CraigBamptonTiming& t) const {
-    return cached_craig_bampton(k_, m_, {n_ - 1}, {ReducedDof{"tip", 0, 0}}, options_, &t);
+    return cached_craig_bampton(k_, m_, {n_ - 1}, {ReducedDof{"tip", 0, 0}}, options_,
+                                settings_ ? &*settings_ : nullptr, &t);
   }
   std::vector<fs::path> entries() const {
     std::vector<fs::path> out;
@@ -78,6 +77,7 @@ class ModelCache : public test::TempFolderTest {
   int n_ = 30;
   Eigen::SparseMatrix<double> k_ = chain_stiffness(n_), m_ = unit_mass(n_);
   CraigBamptonOptions options_{.n_modes = 4};
+  std::optional<ModelCacheSettings> settings_;  // handed to every reduction (none: no cache)
 };
 
 TEST_F(ModelCache, SecondReductionIsLoadedBitForBit) {
@@ -133,7 +133,7 @@ TEST_F(ModelCache, TruncatedEntryIsDetectedAndRebuilt) {
 }
 
 TEST_F(ModelCache, FolderIsPrunedToItsBound) {
-  configure_model_cache(ModelCacheSettings{.folder = dir_ / "cache", .max_bytes = 1, .min_build_seconds = 0.0});
+  settings_ = ModelCacheSettings{.folder = dir_ / "cache", .max_bytes = 1, .min_build_seconds = 0.0};
   CraigBamptonTiming t;
   reduce(t);
   EXPECT_TRUE(entries().empty());
@@ -142,7 +142,7 @@ TEST_F(ModelCache, FolderIsPrunedToItsBound) {
 }
 
 TEST_F(ModelCache, QuickResultsAreNotStored) {
-  configure_model_cache(ModelCacheSettings{.folder = dir_ / "cache", .min_build_seconds = 1e9});
+  settings_ = ModelCacheSettings{.folder = dir_ / "cache", .min_build_seconds = 1e9};
   CraigBamptonTiming t;
   reduce(t);
   EXPECT_EQ(t.cache.outcome, CacheUse::Outcome::not_stored);
@@ -153,8 +153,8 @@ TEST_F(ModelCache, ModesComeBackBitForBitWithTheirCompletenessCount) {
   ModalOptions options;
   options.n_modes = 5;
   CacheUse first, second;
-  const ModalSolution a = cached_lowest_modes(k_, m_, options, &first);
-  const ModalSolution b = cached_lowest_modes(k_, m_, options, &second);
+  const ModalSolution a = cached_lowest_modes(k_, m_, options, &*settings_, &first);
+  const ModalSolution b = cached_lowest_modes(k_, m_, options, &*settings_, &second);
   EXPECT_EQ(first.outcome, CacheUse::Outcome::stored);
   EXPECT_EQ(second.outcome, CacheUse::Outcome::loaded);
   EXPECT_EQ(second.build_seconds, first.build_seconds);
@@ -164,12 +164,12 @@ TEST_F(ModelCache, ModesComeBackBitForBitWithTheirCompletenessCount) {
   EXPECT_GE(b.sturm_count, 5);
   options.n_modes = 6;
   CacheUse third;
-  const ModalSolution six = cached_lowest_modes(k_, m_, options, &third);
+  const ModalSolution six = cached_lowest_modes(k_, m_, options, &*settings_, &third);
   EXPECT_EQ(third.outcome, CacheUse::Outcome::stored);  // five stored modes cannot serve six
   // Fewer modes than stored: the leading ones of the larger solution, said so in the note.
   options.n_modes = 4;
   CacheUse fourth;
-  const ModalSolution four = cached_lowest_modes(k_, m_, options, &fourth);
+  const ModalSolution four = cached_lowest_modes(k_, m_, options, &*settings_, &fourth);
   EXPECT_EQ(fourth.outcome, CacheUse::Outcome::loaded);
   EXPECT_EQ(fourth.note, "the lowest 4 of 6 stored modes");
   ASSERT_EQ(four.eigenvalues.size(), 4);
@@ -179,7 +179,7 @@ TEST_F(ModelCache, ModesComeBackBitForBitWithTheirCompletenessCount) {
 }
 
 TEST_F(ModelCache, OffWritesNothing) {
-  configure_model_cache(std::nullopt);
+  settings_.reset();
   CraigBamptonTiming t;
   reduce(t);
   EXPECT_NE(t.cache.outcome, CacheUse::Outcome::loaded);

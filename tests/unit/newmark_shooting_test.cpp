@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "common/constants.hpp"
 #include "friction_oscillator.hpp"
 #include "oscillator_case.hpp"
 #include "pipeline/run_case.hpp"
@@ -24,7 +25,6 @@ namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // Two DOFs: x along the contact, y pressing it (N = 5 N + kn y, opening when y < -5e-6 m), both
 // driven, so that the contact sticks, slips both ways and lifts off within a period at 150 Hz.

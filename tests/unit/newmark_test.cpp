@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "timeint/static_state.hpp"
 
 namespace bb::timeint {
@@ -19,7 +20,6 @@ namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-constexpr double kPi = std::numbers::pi;
 
 friction::FrictionModel one_dof(double m, double c, double k) {
   friction::FrictionModel model;

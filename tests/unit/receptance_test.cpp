@@ -13,13 +13,13 @@
 #include <utility>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 
 namespace bb {
 namespace {
 
 using Complex = std::complex<double>;
-constexpr double kPi = std::numbers::pi;
 
 struct Chain {
   Eigen::MatrixXd stiffness, mass;

@@ -19,10 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kNbsp = "\u00a0";
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_text;
 
 TEST(NumberFormat, ColumnSuffixesGiveTheirSiUnits) {
   EXPECT_EQ(unit_of_column("frequency_hz"), "Hz");

@@ -24,12 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_text;
 
 // Every entry of `folder`, recursively, as relative paths: what a run left behind.
 std::vector<std::string> entries(const fs::path& folder) {

@@ -10,6 +10,7 @@
 
 #include "analysis/modal_analysis.hpp"
 #include "cases/case_spec.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/run_case.hpp"
@@ -17,8 +18,6 @@
 
 namespace bb {
 namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 TEST(AmplitudeSpectrum, FindsTheFrequencyAndAmplitudeOfASinusoidBetweenItsBins) {
   const double dt = 1e-4, f = 191.37, a = 2.5e-5;

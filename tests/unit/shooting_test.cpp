@@ -9,6 +9,7 @@
 #include <complex>
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "friction_oscillator.hpp"
 #include "timeint/piecewise_flow.hpp"
 
@@ -17,7 +18,6 @@ namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-constexpr double kPi = std::numbers::pi;
 
 // Den Hartog's largest displacement of the non-stop motion (references/verification/coulomb_den_hartog.py).
 double den_hartog(double m, double k, double slip_force, double force, double omega) {

@@ -53,7 +53,6 @@ hbm::HbmSolution approach_in_steps(const hbm::HarmonicBalance& system, double w0
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Unknowns from which a grid sweep reuses factorized Jacobians (chord steps; see sweep_grid_on).
 constexpr Index kChordUnknowns = 200;
 
@@ -153,7 +152,7 @@ double largest_relative_change(const std::vector<double>& lower, const std::vect
 struct PointChoice {
   hbm::HbmSolution solution;
   int harmonics = 0;
-  double change = kNaN;  // from the H one step below; NaN when the pair did not both converge
+  double change = kNan;  // from the H one step below; NaN when the pair did not both converge
   int iterations = 0;
 };
 
@@ -173,7 +172,7 @@ PointChoice choose_harmonics(const PreparedHbm& p, const HbmSpec& spec, const Le
     const int b = std::min(a + step, top);
     hbm::HbmSolution sb = solve(b, sa.converged ? &sa.x : nullptr);
     c.iterations += sb.iterations;
-    double change = kNaN;
+    double change = kNan;
     if (sa.converged && sb.converged)
       change = largest_relative_change(point_values(p, systems.at(a), sa.x, omega),
                                        point_values(p, systems.at(b), sb.x, omega));
@@ -201,7 +200,7 @@ std::vector<double> retry_from_above(const LevelSystems& systems, const std::vec
   for (auto f = failed.rbegin(); f != failed.rend(); ++f) {
     const int i = *f;
     const double omega = kTwoPi * grid[static_cast<size_t>(i)];
-    const double above = i + 1 < static_cast<int>(grid.size()) ? kTwoPi * grid[static_cast<size_t>(i + 1)] : kNaN;
+    const double above = i + 1 < static_cast<int>(grid.size()) ? kTwoPi * grid[static_cast<size_t>(i + 1)] : kNan;
     const auto next = std::find_if(path.points.begin(), path.points.end(),
                                    [above](const hbm::ContinuationPoint& q) { return q.omega == above; });
     if (next == path.points.end()) {
@@ -222,7 +221,7 @@ std::vector<double> retry_from_above(const LevelSystems& systems, const std::vec
                        {omega, std::move(s.x), s.residual, s.iterations, 0.0, 1.0});
     if (per_point) {
       level.point_harmonics.insert(level.point_harmonics.begin() + static_cast<std::ptrdiff_t>(at), h);
-      level.point_change.insert(level.point_change.begin() + static_cast<std::ptrdiff_t>(at), kNaN);
+      level.point_change.insert(level.point_change.begin() + static_cast<std::ptrdiff_t>(at), kNan);
     }
   }
   std::reverse(still.begin(), still.end());
@@ -249,7 +248,7 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
   const double omega0 = kTwoPi * grid.front();
   hbm::HbmSolution s0;
   int h0 = level.harmonics;
-  double change0 = kNaN;
+  double change0 = kNan;
   if (per_point) {
     PointChoice c =
         choose_harmonics(p, spec, systems, omega0, level.harmonics, [&](int h, const Eigen::VectorXd* from) {
@@ -304,7 +303,7 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
     const Eigen::VectorXd guess = extrapolated(pts, omega, nc, h_last);
     hbm::HbmSolution s;
     int h = h_last, iterations = 0;
-    double change = kNaN;
+    double change = kNan;
     if (per_point) {
       // Start one step below the previous point's pair, so that H falls again past a resonance.
       PointChoice c = choose_harmonics(
@@ -321,7 +320,7 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
     const bool at_dead_end = !s.converged && pts.size() == dead_end;
     if (!s.converged && !at_dead_end) {
       // Approach it in smaller steps from the last converged point (a kink between the two).
-      h = h_last, change = kNaN;
+      h = h_last, change = kNan;
       const hbm::HarmonicBalance& system = systems.at(h_last);
       s = approach_in_steps(system, pts.back().omega, pts.back().x, omega, 8, path.corrector_iterations,
                             chord_for(system));
@@ -343,7 +342,7 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
         if (per_point)
           for (size_t k = before; k < path.points.size(); ++k) {
             level.point_harmonics.push_back(h_last);
-            level.point_change.push_back(kNaN);
+            level.point_change.push_back(kNan);
           }
         continue;
       }
@@ -355,7 +354,7 @@ void sweep_grid_on(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems
           patient_level_system(p, spec, level.force, h_last, systems.at(h_last).aft_options().samples), omega, guess);
       path.corrector_iterations += s.iterations;
       if (s.converged) {
-        accept(omega, s, h_last, kNaN, s.iterations);
+        accept(omega, s, h_last, kNan, s.iterations);
         continue;
       }
       if (bridge == Bridge::folds_back) dead_end = path.points.size();

@@ -19,10 +19,6 @@ namespace {
 using Index = Eigen::Index;
 using Complex = std::complex<double>;
 
-// A partial-pivoting LU is singular for our purposes when its reciprocal condition estimate is
-// below this: the solve would amplify rounding by more than ~1e13.
-constexpr double kSingularRcond = 1e-13;
-
 friction::FrictionModel validated(friction::FrictionModel model) {
   friction::validate_model(model, "harmonic balance", true);
   return model;

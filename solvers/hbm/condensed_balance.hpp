@@ -30,6 +30,10 @@
 
 namespace bb::hbm {
 
+// A partial-pivoting LU is singular for the harmonic balance's purposes when its reciprocal
+// condition estimate is below this: the solve would amplify rounding by more than ~1e13.
+inline constexpr double kSingularRcond = 1e-13;
+
 struct HbmOptions {
   int harmonics = 1;  // H >= 1
   // AFT options; samples = 0 picks max(64, 16 (2H + 1)), enough for coefficient errors ~1e-4 on

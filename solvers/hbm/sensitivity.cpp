@@ -16,9 +16,6 @@ namespace {
 using Index = Eigen::Index;
 using Complex = std::complex<double>;
 
-// Same threshold as the solver's: below it a solve amplifies rounding by more than ~1e13.
-constexpr double kSingularRcond = 1e-13;
-
 // Rows x cols of K + i hw C - hw^2 M for any (M, C, K), also for their derivatives; empty = zero.
 Eigen::MatrixXcd block(const Eigen::MatrixXd& k, const Eigen::MatrixXd& c, const Eigen::MatrixXd& m, double hw,
                        const std::vector<Index>& rows, const std::vector<Index>& cols) {

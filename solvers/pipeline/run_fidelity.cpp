@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "cases/parse_fidelity.hpp"
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/power_law.hpp"
 #include "model/build_model.hpp"
@@ -18,7 +19,6 @@
 namespace bb {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // A relative difference this small is the solvers' own rounding (their tolerances are 1e-9 to
 // 1e-10): the axis no longer changes the result (the event-resolved AFT's samples), and a power law
 // through such noise means nothing.
@@ -67,7 +67,7 @@ class Climber {
       run->failure = e.what();
     }
     run->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    run->unknowns = run->failure.empty() ? unknowns(run->spec.analysis, *run->model, run->results) : kNaN;
+    run->unknowns = run->failure.empty() ? unknowns(run->spec.analysis, *run->model, run->results) : kNan;
     return *runs_.emplace(index, std::move(run)).first->second;
   }
 
@@ -117,8 +117,8 @@ double fidelity_abscissa(const FidelityAxisSpec& axis, int level) {
 struct FrontierRow {
   std::vector<int> index;
   size_t axis = 0;
-  double difference = kNaN;  // against the next finer level of the axis
-  double estimated_error = kNaN;
+  double difference = kNan;  // against the next finer level of the axis
+  double estimated_error = kNan;
 };
 
 }  // namespace
@@ -182,7 +182,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
   };
   std::vector<FrontierRow> rows;
   std::vector<int> index(n_axes, 0);
-  std::vector<double> axis_error(n_axes, kNaN);
+  std::vector<double> axis_error(n_axes, kNan);
   if (mode == FidelityMode::reference)
     for (size_t a = 0; a < n_axes; ++a) index[a] = static_cast<int>(f.axes[a].levels.size()) - 1;
   if (mode == FidelityMode::automatic) {
@@ -193,7 +193,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
       climber.at(index);
       double total = 0.0;
       size_t worst = n_axes;
-      std::vector<double> estimate(n_axes, kNaN);
+      std::vector<double> estimate(n_axes, kNan);
       for (size_t a = 0; a < n_axes; ++a) {
         const bool finest = index[a] + 1 == static_cast<int>(f.axes[a].levels.size());
         const int i = index[a];
@@ -202,7 +202,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
           // No finer level: the power law through the last three levels, extrapolated one level on
           // (NaN when fewer than two differences were met on the way).
           const auto& h = history[a];
-          estimate[a] = kNaN;
+          estimate[a] = kNan;
           if (!h.empty() && h.back() <= kUnchanged) {
             estimate[a] = 0.0;
           } else if (h.size() >= 2 && i >= 2) {
@@ -213,7 +213,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
           std::vector<int> finer = index;
           ++finer[a];
           const double d = difference(climber.run(index), climber.at(finer));
-          rows.push_back({finer, a, d, kNaN});
+          rows.push_back({finer, a, d, kNan});
           if (!climber.run(finer).failure.empty()) {
             // The finer level does not solve: this axis cannot be refined, and its error is unknown.
             estimate[a] = std::numeric_limits<double>::infinity();
@@ -230,7 +230,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
             std::vector<int> two_on = finer;
             ++two_on[a];
             const double d_next = difference(climber.run(finer), climber.at(two_on));
-            rows.push_back({two_on, a, d_next, kNaN});
+            rows.push_back({two_on, a, d_next, kNan});
             estimate[a] = d + power_law_error({x(i), x(i + 1), x(i + 2)}, d, d_next);
           } else {
             estimate[a] = d;  // two levels only: the difference is all there is
@@ -240,14 +240,14 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
         }
         total += estimate[a];
       }
-      rows.push_back({index, n_axes, kNaN, total});
+      rows.push_back({index, n_axes, kNan, total});
       axis_error = estimate;
       if (total <= f.target || worst == n_axes) break;
       ++index[worst];
     }
   } else {
     climber.at(index);
-    rows.push_back({index, n_axes, kNaN, kNaN});
+    rows.push_back({index, n_axes, kNan, kNan});
   }
   FidelityChoice choice;
   LevelRun& chosen = climber.run(index);
@@ -261,7 +261,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
   choice.settings = climber.settings_of(index);
   choice.estimated_error = 0.0;
   for (double e : axis_error) choice.estimated_error += e;
-  if (mode != FidelityMode::automatic) choice.estimated_error = kNaN;
+  if (mode != FidelityMode::automatic) choice.estimated_error = kNan;
   choice.met = mode == FidelityMode::automatic && choice.estimated_error <= f.target;
   // frontier: the combinations the climb stood on (axis "combined", with the summed estimate) and
   // the one-level-finer probes of each axis (with their difference to the combination below).
@@ -276,7 +276,7 @@ FidelityChoice run_with_fidelity(const CaseSpec& spec, FidelityMode mode, const 
     const bool combined = r.axis == n_axes;
     const bool is_chosen = combined && r.index == index && k + 1 == rows.size();
     std::vector<double> row = {static_cast<double>(values.size() + 1),
-                               combined ? kNaN : f.axes[r.axis].levels[static_cast<size_t>(r.index[r.axis])],
+                               combined ? kNan : f.axes[r.axis].levels[static_cast<size_t>(r.index[r.axis])],
                                run.unknowns,
                                run.seconds,
                                r.difference,

@@ -36,7 +36,7 @@ namespace {
 
 class HbmFrfSensitivity : public test::TempFolderTest {};
 
-std::string oscillator_case(const std::string& levels, const std::string& analysis_extra) {
+std::string sensitivity_case(const std::string& levels, const std::string& analysis_extra) {
   test::OscillatorCase c;
   c.levels = levels;
   c.range = "[150.0, 240.0]";
@@ -96,8 +96,8 @@ void expect_dlog_columns_match_whole_runs(const std::vector<std::string>& paths,
   std::string list = "sensitivities = [";
   for (const std::string& p : paths) list += "\"" + p + "\", ";
   list += "]";
-  const ResultTables analytic = run(toml::parse(oscillator_case("[0.01, 3.0]", list)), file);
-  const toml::table plain = toml::parse(oscillator_case("[0.01, 3.0]", ""));
+  const ResultTables analytic = run(toml::parse(sensitivity_case("[0.01, 3.0]", list)), file);
+  const toml::table plain = toml::parse(sensitivity_case("[0.01, 3.0]", ""));
   for (const std::string& path : paths) {
     const CentralDifferences fd(plain, path, file);
     for (const char* level : {"frf_0.01", "frf_3"}) {
@@ -152,8 +152,8 @@ TEST_F(HbmFrfSensitivity, ModalModelDlogColumnsAgreeWithCentralDifferencesOfWhol
   for (const std::string& p : paths) list += "\"" + p + "\", ";
   list += "]";
   const std::filesystem::path file = dir_ / "case.toml";
-  const ResultTables analytic = run(toml::parse(modal(oscillator_case("[0.01, 3.0]", list))), file);
-  const toml::table plain = toml::parse(modal(oscillator_case("[0.01, 3.0]", "")));
+  const ResultTables analytic = run(toml::parse(modal(sensitivity_case("[0.01, 3.0]", list))), file);
+  const toml::table plain = toml::parse(modal(sensitivity_case("[0.01, 3.0]", "")));
   for (const std::string& path : paths) {
     const CentralDifferences fd(plain, path, file);
     for (const char* level : {"frf_0.01", "frf_3"}) {
@@ -213,7 +213,7 @@ TEST_F(HbmFrfSensitivity, UnsupportedPathsAreRefusedWithTheirLine) {
   for (const char* bad : {R"(sensitivities = ["analysis.contact.1.kt"])", R"(sensitivities = ["analysis.damper.kt"])",
                           R"(sensitivities = ["analysis.model.mass"])",
                           R"(sensitivities = ["analysis.contact.0.kt", "analysis.contact.0.kt"])"}) {
-    const std::filesystem::path file = write(oscillator_case("[1.0]", bad));
+    const std::filesystem::path file = write(sensitivity_case("[1.0]", bad));
     try {
       (void)parse_case_table(read_case_table(file), file);
       FAIL() << bad << " was accepted";
@@ -222,7 +222,7 @@ TEST_F(HbmFrfSensitivity, UnsupportedPathsAreRefusedWithTheirLine) {
       EXPECT_NE(std::string(e.what()).find("sensitivities"), std::string::npos) << e.what();
     }
   }
-  std::string rayleigh = oscillator_case("[1.0]", R"(sensitivities = ["analysis.modal_damping"])");
+  std::string rayleigh = sensitivity_case("[1.0]", R"(sensitivities = ["analysis.modal_damping"])");
   rayleigh.replace(rayleigh.find("modal_damping = 0.01"), 20,
                    "rayleigh = { frequency_hz = [100.0, 300.0], zeta = [0.01, 0.01] }");
   const std::filesystem::path file = write(rayleigh);

@@ -144,7 +144,7 @@ Mesh distorted_solid_mesh(ElementType type) {
   return test::mesh_from_grid(grid, type);
 }
 
-Mesh distorted_mesh(ElementType type) {
+Mesh distorted_element_mesh(ElementType type) {
   return element_dimension(type) == 2 ? distorted_plane_mesh(type) : distorted_solid_mesh(type);
 }
 
@@ -154,7 +154,7 @@ class EveryElement : public ::testing::TestWithParam<ElementType> {};
 // every extrapolated nodal value and every average is D eps exactly, and the elements agree.
 TEST_P(EveryElement, LinearFieldGivesTheExactConstantStressAtEveryNodeAndPoint) {
   const ElementType type = GetParam();
-  const Mesh mesh = distorted_mesh(type);
+  const Mesh mesh = distorted_element_mesh(type);
   const fe::PlaneSection material = test::steel_section(0.02);
   const int dim = mesh.dim;
   Eigen::Matrix3d grad;
@@ -194,7 +194,7 @@ TEST_P(EveryElement, LinearFieldGivesTheExactConstantStressAtEveryNodeAndPoint) 
 TEST_P(EveryElement, PatchUnderUniformTractionRecoversTheExactUniaxialStress) {
   const ElementType type = GetParam();
   Model model;
-  model.mesh = distorted_mesh(type);
+  model.mesh = distorted_element_mesh(type);
   model.section = test::steel_section(0.02);
   const int dim = model.mesh.dim;
   const double length = dim == 2 ? 2.0 : 1.0;

@@ -21,7 +21,7 @@
 namespace bb {
 namespace {
 
-constexpr double kE = 2.0e11;
+constexpr double kYoungs = 2.0e11;
 
 HexBlockSpec box(double x1, double y1, double z0, double z1, int nx, int ny, int nz, ElementType type) {
   HexBlockSpec b;
@@ -42,7 +42,7 @@ Model two_blocks(ElementType type, double a, double la, double lb, int n, double
   m.mesh = concatenate_meshes({generate_hex_block(box(a, a, 0, la, n, n, n, type)),
                                generate_hex_block(box(a, a, la, la + lb, n, n, n, type))},
                               &origin);
-  m.section = {.youngs_modulus = kE, .poisson_ratio = nu, .density = 7800.0};
+  m.section = {.youngs_modulus = kYoungs, .poisson_ratio = nu, .density = 7800.0};
   auto select = [&](const std::string& name, int body, int axis, double value) {
     for (int node : origin[static_cast<size_t>(body)])
       if (std::abs(m.mesh.coords(node, axis) - value) < 1e-12) m.node_sets[name].push_back(node);
@@ -94,7 +94,7 @@ TEST_P(ContactPatch, InterferenceGivesTheSeriesSpringForceAndAUniformPressure) {
     const auto n_points = static_cast<Eigen::Index>(contact_points(m.mesh, m.contact_pairs).size());
     const Pressed p = press(m, kn, Eigen::VectorXd::Constant(n_points, -delta));
     const double area = a * a;
-    const double force = delta / (la / (kE * area) + lb / (kE * area) + 1 / (kn * area));
+    const double force = delta / (la / (kYoungs * area) + lb / (kYoungs * area) + 1 / (kn * area));
     double resultant = 0.0;
     for (size_t k = 0; k < p.points.size(); ++k) {
       EXPECT_TRUE(p.solution.closed[k]);
@@ -110,7 +110,7 @@ TEST_P(ContactPatch, InterferenceGivesTheSeriesSpringForceAndAUniformPressure) {
   // The stiff limit: the elastic solution of the two blocks.
   const auto n_points = static_cast<Eigen::Index>(contact_points(m.mesh, m.contact_pairs).size());
   const Pressed stiff = press(m, 1e20, Eigen::VectorXd::Constant(n_points, -delta));
-  EXPECT_NEAR(stiff.solution.pressure[0], delta * kE / (la + lb), 1e-5 * delta * kE / (la + lb));
+  EXPECT_NEAR(stiff.solution.pressure[0], delta * kYoungs / (la + lb), 1e-5 * delta * kYoungs / (la + lb));
 }
 
 INSTANTIATE_TEST_SUITE_P(Elements, ContactPatch, ::testing::Values(ElementType::hex8, ElementType::hex20),
@@ -145,9 +145,9 @@ TEST(StaticContact, TheRoughLawIsConsistentAndTheBlocksSettleOnItsClosedForm) {
   double lo = 0, hi = delta;  // penetration d
   for (int i = 0; i < 200; ++i) {
     const double d = 0.5 * (lo + hi);
-    (kn * sigma * std::expm1(d / sigma) > kE * (delta - d) / (la + lb) ? hi : lo) = d;
+    (kn * sigma * std::expm1(d / sigma) > kYoungs * (delta - d) / (la + lb) ? hi : lo) = d;
   }
-  const double p = kE * (delta - lo) / (la + lb);
+  const double p = kYoungs * (delta - lo) / (la + lb);
   for (Eigen::Index i = 0; i < n; ++i) EXPECT_NEAR(s.pressure[i], p, 1e-8 * p);
   EXPECT_GT(s.newton_iterations, 1);
   EXPECT_NEAR(s.normal_stiffness[0], kn + p / sigma, 1e-6 * (kn + p / sigma));
@@ -222,7 +222,7 @@ TEST(StaticContact, ABodyHeldOnlyByFrictionlessContactIsASolverError) {
 TEST(ContactModal, BarOnThePenaltySpringHasTheFixedSpringBarFrequencies) {
   const double a = 0.01, length = 0.5, kappa = 1.0;
   Model m;
-  m.section = {.youngs_modulus = kE, .poisson_ratio = 0.0, .density = 7800.0};
+  m.section = {.youngs_modulus = kYoungs, .poisson_ratio = 0.0, .density = 7800.0};
   {
     std::vector<std::vector<int>> origin;
     m.mesh = concatenate_meshes({generate_hex_block(box(a, a, 0, length, 1, 1, 24, ElementType::hex20)),
@@ -249,7 +249,7 @@ TEST(ContactModal, BarOnThePenaltySpringHasTheFixedSpringBarFrequencies) {
   // kn = FKN E / h and K = kn a^2 = kappa E a^2 / L: FKN = kappa h / L.
   spec.penalty_factors = {kappa * h / length};
   const ContactModalOutcome o = run_contact_modal(m, spec);
-  const double c = std::sqrt(kE / 7800.0);
+  const double c = std::sqrt(kYoungs / 7800.0);
   // Roots of tan(x) = -x / kappa on (pi/2, pi) and (3 pi/2, 2 pi), by bisection.
   auto root = [&](double lo, double hi) {
     for (int i = 0; i < 200; ++i) {

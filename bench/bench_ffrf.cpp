@@ -14,10 +14,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
-#include "common/constants.hpp"
 #include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"
 #include "mesh/hex_block.hpp"

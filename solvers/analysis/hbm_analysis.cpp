@@ -9,7 +9,6 @@
 #include <limits>
 #include <map>
 #include <mutex>
-#include <numbers>
 #include <optional>
 
 #include "analysis/hbm_stepped_sines.hpp"

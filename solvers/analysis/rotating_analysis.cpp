@@ -7,8 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <limits>
-#include <numbers>
 
 #include "analysis/stress_tables.hpp"
 #include "common/constants.hpp"

@@ -6,9 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <mutex>
-#include <numbers>
 
 #include "analysis/time_sweeps.hpp"
 #include "common/constants.hpp"

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <numbers>
 
 #include "analysis/time_sweeps.hpp"
 #include "common/constants.hpp"

@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cmath>
-#include <numbers>
 
 #include "common/constants.hpp"
 #include "mesh/hex_block.hpp"

@@ -55,15 +55,14 @@ std::optional<fs::path> default_model_cache_folder() {
 }
 
 CacheEntry::CacheEntry(const ModelCacheSettings& settings, const ContentKey& key) : settings_(settings) {
-  const ModelCacheSettings* s = &settings_;
   if (program_fingerprint().empty()) {
     note_ = "the program's own file cannot be read, so no key could tell its versions apart: cache not used";
     return;
   }
   std::error_code ec;
-  fs::create_directories(s->folder, ec);
-  file_ = s->folder / (key.name() + ".bbcache");
-  const fs::path lock = s->folder / (key.name() + ".lock");
+  fs::create_directories(settings_.folder, ec);
+  file_ = settings_.folder / (key.name() + ".bbcache");
+  const fs::path lock = settings_.folder / (key.name() + ".lock");
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0 || ::flock(lock_fd_, LOCK_EX) != 0) {
     note_ = fmt::format("cannot lock {} ({}): cache not used", lock.string(), std::strerror(errno));

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <complex>
 #include <map>
-#include <numbers>
 
 #include "assembly/free_system.hpp"
 #include "common/constants.hpp"

@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numbers>
 
 #include "common/constants.hpp"
 #include "forced/hbm_level_system.hpp"

@@ -5,8 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <limits>
-#include <numbers>
 #include <optional>
 #include <utility>
 

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <numbers>
 #include <stdexcept>
 
 #include "common/constants.hpp"

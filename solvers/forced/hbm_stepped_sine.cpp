@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 #include "common/constants.hpp"

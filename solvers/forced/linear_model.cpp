@@ -2,16 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <numbers>
-
 #include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "reduction/cached_craig_bampton.hpp"
 #include "reduction/reduced_model_io.hpp"
 
 namespace bb {
-
-namespace {}  // namespace
 
 int node_of_point(const Model& model, const std::string& point) {
   const auto it = model.node_sets.find(point);

@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numbers>
 
 #include "cache/cache_use.hpp"
 #include "distributed/distributed.hpp"

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 #include "analysis/rotating_analysis.hpp"
 #include "common/constants.hpp"

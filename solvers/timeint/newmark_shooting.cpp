@@ -2,7 +2,6 @@
 
 #include <limits>
 #include <memory>
-#include <numbers>
 
 #include "common/constants.hpp"
 #include "timeint/newmark.hpp"

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <complex>
-#include <numbers>
 #include <optional>
 #include <stdexcept>
 

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "bladed_disk_sector_fixture.hpp"
 #include "common/constants.hpp"

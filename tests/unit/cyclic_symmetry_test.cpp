@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "assembly/free_system.hpp"
 #include "bladed_disk_sector_fixture.hpp"

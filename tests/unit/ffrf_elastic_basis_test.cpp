@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 
 #include "common/constants.hpp"

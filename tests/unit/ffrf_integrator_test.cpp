@@ -14,7 +14,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <vector>
 

@@ -17,12 +17,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <regex>
 #include <string>
 #include <vector>
 
-#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "ffrf/ffrf_integrator.hpp"
 #include "ffrf/rotating_modes.hpp"

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <numbers>
 #include <string>
 #include <vector>
 

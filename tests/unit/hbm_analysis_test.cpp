@@ -12,7 +12,6 @@
 #include <complex>
 #include <cstdio>
 #include <map>
-#include <numbers>
 #include <string>
 
 #include "cases/case_spec.hpp"

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <utility>
 

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <complex>
 #include <fstream>
-#include <numbers>
 #include <sstream>
 #include <string>
 

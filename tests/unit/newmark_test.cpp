@@ -9,7 +9,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <numbers>
 #include <vector>
 
 #include "common/constants.hpp"

@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <complex>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "analysis/modal_analysis.hpp"
 #include "cases/case_spec.hpp"

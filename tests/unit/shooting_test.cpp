@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <complex>
-#include <numbers>
 
 #include "common/constants.hpp"
 #include "friction_oscillator.hpp"

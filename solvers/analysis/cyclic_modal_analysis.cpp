@@ -91,8 +91,10 @@ CyclicModalOutcome run_cyclic_modal(const Model& model, const CyclicModalSpec& s
     diameters.clear();
     for (int k = 0; 2 * k <= spec.sectors; ++k) diameters.push_back(k);
   }
-  // Independent eigenproblems, one per core, each with its own factorizations.
-  const int threads = blas_allows_concurrent_calls() ? spec.threads : 1;
+  // Independent eigenproblems, one per core, each with its own factorizations; on SLEPc one at a
+  // time, in the same order on every rank (PETSc's solves are collective and not thread-safe).
+  const bool concurrent = blas_allows_concurrent_calls() && spec.options.eigensolver != Eigensolver::slepc;
+  const int threads = concurrent ? spec.threads : 1;
   o.diameters.resize(diameters.size());
   for_each_index(diameters.size(), worker_count(diameters.size(), threads), [&](std::size_t i) {
     o.diameters[i] = nodal_diameter_modes(s.stiffness, s.mass, cyclic, diameters[i], spec.families, spec.options);

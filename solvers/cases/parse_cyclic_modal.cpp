@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cases/parse_common.hpp"
+
 namespace bb {
 
 CyclicModalSpec parse_cyclic_modal(TomlReader& r) {
@@ -32,6 +34,7 @@ CyclicModalSpec parse_cyclic_modal(TomlReader& r) {
   s.options.tolerance = r.optional_number("tolerance").value_or(s.options.tolerance);
   if (!(s.options.tolerance > 0.0 && s.options.tolerance < 1.0))
     r.fail("tolerance", fmt::format("must lie in (0, 1) (a relative eigen-residual), found {}", s.options.tolerance));
+  s.options.eigensolver = parse_eigensolver(r);
   s.whole = r.boolean("whole", false);
   if (const auto n = r.optional_integer("threads")) {
     if (*n < 1 || *n > 256)

@@ -1,5 +1,6 @@
 #include "linalg/modal_solver.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Spectra/SymGEigsShiftSolver.h>
 #include <fmt/format.h>
 
@@ -13,6 +14,7 @@
 #include "linalg/inertia.hpp"
 #include "linalg/modal_cut.hpp"
 #include "linalg/modal_residual.hpp"
+#include "linalg/real_form.hpp"
 #include "linalg/slepc_modes.hpp"
 #include "linalg/spd_factor.hpp"
 
@@ -166,6 +168,49 @@ BasicModalSolution<Scalar> complete_lowest_modes(const Eigen::SparseMatrix<Scala
   }
 }
 
+// The Hermitian pencil on SLEPc (a real build of PETSc) through its real form, where every
+// eigenvalue appears twice (z and i z): 2n real modes are solved and folded back into n complex
+// ones by a Rayleigh-Ritz step on the complex span of (a + i b) of each real vector (a; b). That
+// span has dimension n exactly: its Gram matrix has n eigenvalues near 2 and n near 0.
+HermitianModalSolution slepc_hermitian_lowest_modes(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
+                                                    const Eigen::SparseMatrix<std::complex<double>>& mass,
+                                                    const ModalOptions& options) {
+  if (options.n_modes < 1) throw std::invalid_argument("n_modes must be >= 1");
+  ModalOptions doubled = options;
+  doubled.n_modes = 2 * options.n_modes;
+  const ModalSolution real = slepc_lowest_modes(real_form(stiffness), real_form(mass), doubled);
+  const Eigen::Index n = stiffness.rows(), found = real.eigenvalues.size();
+  if (found % 2 != 0 || (real.sturm_count >= 0 && real.sturm_count % 2 != 0))
+    throw SolverError(fmt::format(
+        "the real form of a Hermitian pencil gave {} modes and a count of {}: each eigenvalue must appear twice", found,
+        real.sturm_count));
+  const Eigen::MatrixXcd z = real.shapes.topRows(n).cast<std::complex<double>>() +
+                             std::complex<double>(0.0, 1.0) * real.shapes.bottomRows(n).cast<std::complex<double>>();
+  const Eigen::MatrixXcd mz = mass * z;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> gram(z.adjoint() * mz);
+  const Eigen::Index keep = found / 2;
+  const Eigen::VectorXd g = gram.eigenvalues();  // ascending
+  if (!(g[found - keep] > 1.0 && (keep == found || g[found - keep - 1] < 1.0)))
+    throw SolverError(
+        fmt::format("the real form's {} modes do not span {} complex ones (Gram eigenvalues {:.3g} "
+                    "and {:.3g} around the cut, 2 and 0 expected)",
+                    found, keep, g[found - keep], keep == found ? 0.0 : g[found - keep - 1]));
+  const Eigen::MatrixXcd basis =
+      z * (gram.eigenvectors().rightCols(keep) * g.tail(keep).cwiseSqrt().cwiseInverse().asDiagonal());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> ritz(basis.adjoint() * (stiffness * basis));
+  HermitianModalSolution sol;
+  sol.eigenvalues = ritz.eigenvalues();
+  sol.shapes = basis * ritz.eigenvectors();
+  sol.iterations = real.iterations;
+  sol.converged_modes = static_cast<int>(keep);
+  sol.sturm_count = real.sturm_count < 0 ? -1 : real.sturm_count / 2;
+  sol.sturm_shift = real.sturm_shift;
+  sol.lanczos_runs = real.lanczos_runs;
+  sol.sturm_seconds = real.sturm_seconds;
+  sol.max_residual = max_backward_error(stiffness, mass, sol);
+  return sol;
+}
+
 }  // namespace
 
 ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
@@ -177,10 +222,7 @@ ModalSolution lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const E
 HermitianModalSolution lowest_modes(const Eigen::SparseMatrix<std::complex<double>>& stiffness,
                                     const Eigen::SparseMatrix<std::complex<double>>& mass,
                                     const ModalOptions& options) {
-  if (options.eigensolver == Eigensolver::slepc)
-    throw InputError(
-        "eigensolver = \"slepc\" solves real symmetric pencils; a complex Hermitian one (a cyclic sector's "
-        "travelling-wave nodal diameters) takes the default eigensolver (\"spectra\")");
+  if (options.eigensolver == Eigensolver::slepc) return slepc_hermitian_lowest_modes(stiffness, mass, options);
   return complete_lowest_modes(stiffness, mass, options);
 }
 

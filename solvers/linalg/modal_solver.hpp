@@ -14,7 +14,8 @@ namespace bb {
 
 // spectra: CHOLMOD shift-invert, Spectra's Lanczos and a MUMPS Sturm count, in this process.
 // slepc: SLEPc's Krylov-Schur spectrum slicing with MUMPS Cholesky at each shift, over MPI ranks,
-// whose own inertias prove the count (linalg/slepc_modes.hpp; real symmetric pencils only).
+// whose own inertias prove the count (linalg/slepc_modes.hpp); a Hermitian pencil through its real
+// form of twice the size.
 enum class Eigensolver { spectra, slepc };
 
 struct ModalOptions {

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "distributed/distributed.hpp"
@@ -17,6 +19,7 @@ namespace bb {
 namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
+using ComplexSparse = Eigen::SparseMatrix<std::complex<double>>;
 
 // A fixed-fixed chain of n unit masses and unit springs, `copies` times side by side (uncoupled):
 // lambda_j = 4 sin^2(j pi / (2 (n + 1))), each `copies` times.
@@ -135,13 +138,71 @@ TEST(SlepcModes, CraigBamptonOnSlepcIsTheDefaultReductionUpToTheSignOfEachMode) 
   EXPECT_LT((a.recovery.leftCols(3) - b.recovery.leftCols(3)).cwiseAbs().maxCoeff(), 1e-10);  // constraint modes
 }
 
-TEST(SlepcModes, AHermitianPencilIsRefusedWithTheEigensolverItNeeds) {
-  Eigen::SparseMatrix<std::complex<double>> k(4, 4), m(4, 4);
-  for (int i = 0; i < 4; ++i) {
-    k.insert(i, i) = 2.0;
-    m.insert(i, i) = 1.0;
+// A twisted ring of n unit masses (`copies` uncoupled copies side by side): K tridiagonal with the
+// corner coupling -e^{i theta}, a Bloch wave of phase theta; lambda_j = 4 sin^2((theta + 2 pi j) / (2 n)),
+// j = 0 .. n - 1, each `copies` times.
+void twisted_ring(int n, int copies, double theta, ComplexSparse& k, ComplexSparse& m) {
+  std::vector<Eigen::Triplet<std::complex<double>>> kt, mt;
+  for (int c = 0; c < copies; ++c)
+    for (int i = 0; i < n; ++i) {
+      const int r = c * n + i, next = c * n + (i + 1) % n;
+      const std::complex<double> coupling = i + 1 < n ? -1.0 : -std::polar(1.0, theta);
+      kt.emplace_back(r, r, 2.0);
+      kt.emplace_back(next, r, coupling);
+      kt.emplace_back(r, next, std::conj(coupling));
+      mt.emplace_back(r, r, 1.0);
+    }
+  k.resize(n * copies, n * copies);
+  m.resize(n * copies, n * copies);
+  k.setFromTriplets(kt.begin(), kt.end());
+  m.setFromTriplets(mt.begin(), mt.end());
+}
+
+std::vector<double> twisted_ring_eigenvalues(int n, int copies, double theta) {
+  std::vector<double> values;
+  for (int j = 0; j < n; ++j)
+    for (int c = 0; c < copies; ++c)
+      values.push_back(4 * std::pow(std::sin((theta + 2 * std::numbers::pi * j) / (2 * n)), 2));
+  std::sort(values.begin(), values.end());
+  return values;
+}
+
+TEST(SlepcModes, AHermitianPencilThroughItsRealFormHasTheClosedFormEigenvaluesOnceAndTheirCount) {
+  SKIP_WITHOUT_SLEPC();
+  ComplexSparse k, m;
+  const int n = 90;
+  const double theta = 0.7;
+  twisted_ring(n, 1, theta, k, m);
+  const HermitianModalSolution sol = lowest_modes(k, m, slepc_options(5));
+  const std::vector<double> exact = twisted_ring_eigenvalues(n, 1, theta);
+  ASSERT_EQ(sol.eigenvalues.size(), 5) << "each eigenvalue once, not twice as in the real form";
+  for (int i = 0; i < 5; ++i) EXPECT_NEAR(sol.eigenvalues[i], exact[static_cast<size_t>(i)], 1e-10) << "mode " << i;
+  EXPECT_EQ(sol.sturm_count, 5) << "the real form's count, halved";
+  const Eigen::MatrixXcd gram = sol.shapes.adjoint() * (m * sol.shapes);
+  EXPECT_LT((gram - Eigen::MatrixXcd::Identity(5, 5)).norm(), 1e-10) << "complex M-orthonormal shapes";
+  EXPECT_LT(sol.max_residual, 1e-10);
+  // The same waves as the default eigensolver's, up to a complex phase each.
+  ModalOptions spectra = slepc_options(5);
+  spectra.eigensolver = Eigensolver::spectra;
+  const HermitianModalSolution ref = lowest_modes(k, m, spectra);
+  ASSERT_EQ(ref.eigenvalues.size(), 5);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_NEAR(sol.eigenvalues[i], ref.eigenvalues[i], 1e-10 * ref.eigenvalues[i]) << "mode " << i;
+    EXPECT_NEAR(std::abs(ref.shapes.col(i).dot(m * sol.shapes.col(i))), 1.0, 1e-8) << "mode " << i;
   }
-  EXPECT_THROW(lowest_modes(k, m, slepc_options(1)), InputError);
+}
+
+TEST(SlepcModes, ARepeatedComplexEigenvalueStraddlingTheRequestIsReturnedWhole) {
+  SKIP_WITHOUT_SLEPC();
+  ComplexSparse k, m;
+  twisted_ring(40, 2, 0.3, k, m);  // every eigenvalue twice: four times in the real form
+  const HermitianModalSolution sol = lowest_modes(k, m, slepc_options(3));
+  const std::vector<double> exact = twisted_ring_eigenvalues(40, 2, 0.3);
+  ASSERT_EQ(sol.eigenvalues.size(), 4) << "the third eigenvalue's second member comes too";
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(sol.eigenvalues[i], exact[static_cast<size_t>(i)], 1e-10) << "mode " << i;
+  EXPECT_EQ(sol.sturm_count, 4);
+  const Eigen::MatrixXcd gram = sol.shapes.adjoint() * (m * sol.shapes);
+  EXPECT_LT((gram - Eigen::MatrixXcd::Identity(4, 4)).norm(), 1e-10) << "a repeated pair's members independent";
 }
 
 }  // namespace

@@ -43,6 +43,9 @@ typedef struct {
   double seconds;
 } bb_modes_result;
 
+/* solve_spd's status when A is singular or indefinite: the caller's input, not a solver failure. */
+#define BB_NOT_POSITIVE_DEFINITE 2
+
 typedef struct {
   int abi_version;
   /* MPI and PETSc/SLEPc started (MPI_Init when nobody has); 0 on success. */
@@ -60,7 +63,8 @@ typedef struct {
   /* 0 on success; otherwise the message says why (PETSc's error text, or a count that disagrees). */
   int (*modes)(const bb_upper_csr* stiffness, const bb_upper_csr* mass, const bb_modes_request* request,
                bb_modes_result* result, char* message, size_t message_size);
-  /* X = A^{-1} B for symmetric positive definite A (MUMPS Cholesky), B and X n x columns column-major. */
+  /* X = A^{-1} B for symmetric positive definite A (MUMPS Cholesky), B and X n x columns column-major;
+     BB_NOT_POSITIVE_DEFINITE when A has a null or negative pivot (every rank returns it). */
   int (*solve_spd)(const bb_upper_csr* a, const double* b, int64_t columns, int world, double* x, char* message,
                    size_t message_size);
   void (*free_result)(bb_modes_result* result);

@@ -217,6 +217,8 @@ Eigen::MatrixXd slepc_solve_spd(const Eigen::SparseMatrix<double>& a, const Eige
   char message[1024] = {0};
   const int status = slepc().solve_spd(&view, b.data(), b.cols(), distributed::shared_solves() ? 1 : 0, x.data(),
                                        message, sizeof message);
+  // MUMPS's pivot counts are global: every rank throws alike, none waits.
+  if (status == BB_NOT_POSITIVE_DEFINITE) throw NotPositiveDefinite(message);
   stop_on_failure(status, "PETSc MUMPS Cholesky solve", message);
   return x;
 }

@@ -5,6 +5,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <stdexcept>
+
 #include "linalg/modal_solver.hpp"
 
 namespace bb {
@@ -19,7 +21,13 @@ ModalSolution slepc_lowest_modes(const Eigen::SparseMatrix<double>& stiffness, c
 ModalSolution slepc_modes_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                                 double cut, const ModalOptions& options);
 
-// A^{-1} B for symmetric positive definite A by MUMPS Cholesky through PETSc.
+// A singular or indefinite A given to slepc_solve_spd (what MUMPS's pivots say).
+struct NotPositiveDefinite : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A^{-1} B for symmetric positive definite A by MUMPS Cholesky through PETSc; throws
+// NotPositiveDefinite when A has a null or negative pivot, SolverError on any other failure.
 Eigen::MatrixXd slepc_solve_spd(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixXd& b);
 
 }  // namespace bb

@@ -148,7 +148,14 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
   if (ns > 0) {
     k_ss = slave_block(stiffness, p);
     if (options.eigensolver == Eigensolver::slepc) {
-      if (nm > 0) psi = -slepc_solve_spd(k_ss, slave_master_block(stiffness, masters, p));
+      try {
+        if (nm > 0) psi = -slepc_solve_spd(k_ss, slave_master_block(stiffness, masters, p));
+      } catch (const NotPositiveDefinite& e) {
+        throw InputError(fmt::format(
+            "Craig-Bampton: the slave stiffness K_ss cannot be factored: {} (slave DOFs the masters and constraints "
+            "do not hold)",
+            e.what()));
+      }
     } else {
       SpdFactorization factor(options.ordering);
       const FactorStatus status = factor.factorize(k_ss);

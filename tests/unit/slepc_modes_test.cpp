@@ -138,6 +138,30 @@ TEST(SlepcModes, CraigBamptonOnSlepcIsTheDefaultReductionUpToTheSignOfEachMode) 
   EXPECT_LT((a.recovery.leftCols(3) - b.recovery.leftCols(3)).cwiseAbs().maxCoeff(), 1e-10);  // constraint modes
 }
 
+TEST(SlepcModes, CraigBamptonWithSlavesTheMastersDoNotHoldIsBadInputAsOnTheDefault) {
+  SKIP_WITHOUT_SLEPC();
+  // Two free-free chains side by side, one master on the first: the second floats.
+  Sparse k, m;
+  chain(30, 2, k, m);
+  k.coeffRef(0, 0) = k.coeffRef(29, 29) = k.coeffRef(30, 30) = k.coeffRef(59, 59) = 1.0;
+  const std::vector<int> masters{0};
+  const std::vector<ReducedDof> names{{"a", 0, 0}};
+  CraigBamptonOptions options;
+  options.n_modes = 2;
+  options.shift_frequency_hz = 0.01;
+  for (Eigensolver solver : {Eigensolver::spectra, Eigensolver::slepc}) {
+    options.eigensolver = solver;
+    try {
+      (void)craig_bampton(k, m, masters, names, options);
+      ADD_FAILURE() << "a floating slave set was reduced by eigensolver " << static_cast<int>(solver);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("K_ss cannot be factored"), std::string::npos) << e.what();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "not bad input: " << e.what();
+    }
+  }
+}
+
 // A twisted ring of n unit masses (`copies` uncoupled copies side by side): K tridiagonal with the
 // corner coupling -e^{i theta}, a Bloch wave of phase theta; lambda_j = 4 sin^2((theta + 2 pi j) / (2 n)),
 // j = 0 .. n - 1, each `copies` times.

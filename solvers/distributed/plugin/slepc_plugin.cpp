@@ -68,10 +68,11 @@ int initialize(char* message, size_t message_size) {
   PetscPushErrorHandler(record_error, nullptr);
   // The factorization of every shift: MUMPS Cholesky (LDL^T with 2x2 pivots), whose inertia the
   // slicing reads; ICNTL(13) = 1 keeps the root node off ScaLAPACK, which would not give it.
-  PetscOptionsInsertString(nullptr,
-                           "-bb_st_ksp_type preonly -bb_st_pc_type cholesky -bb_st_pc_factor_mat_solver_type mumps "
-                           "-bb_st_mat_mumps_icntl_13 1 -bb_spd_ksp_type preonly -bb_spd_pc_type cholesky "
-                           "-bb_spd_pc_factor_mat_solver_type mumps");
+  PetscOptionsInsertString(
+      nullptr,
+      "-bb_st_ksp_type preonly -bb_st_pc_type cholesky -bb_st_pc_factor_mat_solver_type mumps "
+      "-bb_st_mat_mumps_icntl_13 1 -bb_spd_ksp_type preonly -bb_spd_pc_type cholesky "
+      "-bb_spd_pc_factor_mat_solver_type mumps -bb_spd_mat_mumps_icntl_24 1 -bb_spd_mat_mumps_cntl_3 1e-12");
   return 0;
 }
 
@@ -272,6 +273,25 @@ int solve_spd(const bb_upper_csr* a, const double* b, int64_t columns, int world
   BB_TRY(KSPSetOperators(ksp, mat, mat));
   BB_TRY(KSPSetFromOptions(ksp));
   BB_TRY(KSPSetUp(ksp));
+  // A singular or indefinite A would still factor (a tiny pivot, a large wrong solution): MUMPS's
+  // null-pivot detection (ICNTL(24): a pivot under CNTL(3) = 1e-12 of the scaled matrix's norm; a
+  // floating cantilever's null pivot measured 1e-14 to 1e-13, Table VIII's 88 k-DOF K_ss has none)
+  // and its negative-pivot count (INFOG(28), INFOG(12)) refuse it.
+  PC pc = nullptr;
+  Mat factor = nullptr;
+  PetscInt null_pivots = 0, negative_pivots = 0;
+  BB_TRY(KSPGetPC(ksp, &pc));
+  BB_TRY(PCFactorGetMatrix(pc, &factor));
+  BB_TRY(MatMumpsGetInfog(factor, 28, &null_pivots));
+  BB_TRY(MatMumpsGetInfog(factor, 12, &negative_pivots));
+  if (null_pivots > 0 || negative_pivots > 0) {
+    say(message, message_size,
+        "the matrix is not positive definite: MUMPS found " + std::to_string(null_pivots) + " null and " +
+            std::to_string(negative_pivots) + " negative pivots of " + std::to_string(a->n));
+    KSPDestroy(&ksp);
+    MatDestroy(&mat);
+    return BB_NOT_POSITIVE_DEFINITE;
+  }
   Vec rhs = nullptr, x = nullptr;
   BB_TRY(MatCreateVecs(mat, &x, &rhs));
   PetscInt first = 0, last = 0;

@@ -43,9 +43,8 @@ ReducedModel build_reduced_model(const Model& model, const FreeSystem& system, c
       names.push_back({point, d, 0});
     }
   CraigBamptonOptions options;
-  options.n_modes = rom.modes_below_hz > 0.0
-                        ? fixed_interface_count(system.stiffness, system.mass, masters, rom.modes_below_hz)
-                        : rom.modes;
+  options.n_modes = rom.modes;
+  options.modes_below_hz = rom.modes_below_hz;
   options.ordering = ordering_for_dimension(model.mesh.dim);
   options.eigensolver = rom.eigensolver;
   return cached_craig_bampton(system.stiffness, system.mass, masters, names, options, cache, timing);

@@ -52,7 +52,7 @@ ReducedModel cached_craig_bampton(const Eigen::SparseMatrix<double>& stiffness, 
         key.add(stiffness).add(mass);
         for (size_t i = 0; i < masters.size(); ++i) key.add(std::int64_t{masters[i]}).add(master_names[i].name());
         key.add(std::int64_t{options.n_modes}).add(std::int64_t{static_cast<int>(options.ordering)});
-        key.add(options.shift_frequency_hz);
+        key.add(options.shift_frequency_hz).add(options.modes_below_hz);
         if (options.eigensolver == Eigensolver::slepc) key.add(std::string_view("slepc"));
       },
       [&] { return craig_bampton(stiffness, mass, masters, master_names, options, &t); },
@@ -60,7 +60,9 @@ ReducedModel cached_craig_bampton(const Eigen::SparseMatrix<double>& stiffness, 
       [&](const json& j) {
         ReducedModel loaded = decode(j, stored);
         validate_reduced_model(loaded, "the model cache");
-        if (loaded.size() != static_cast<int>(masters.size()) + options.n_modes ||
+        const bool band = options.modes_below_hz > 0.0;
+        if ((band ? loaded.size() < static_cast<int>(masters.size())
+                  : loaded.size() != static_cast<int>(masters.size()) + options.n_modes) ||
             loaded.recovery.rows() != stiffness.rows())
           throw std::runtime_error("its sizes do not match the model");
         return loaded;

@@ -86,17 +86,22 @@ Eigen::MatrixXd slave_master_block(const Sparse& a, const std::vector<int>& mast
   return b;
 }
 
+ModalOptions modal_options(const CraigBamptonOptions& options, int n_modes) {
+  ModalOptions modal;
+  modal.n_modes = n_modes;
+  modal.shift_frequency_hz = options.shift_frequency_hz;
+  modal.ordering = options.ordering;
+  modal.eigensolver = options.eigensolver;
+  return modal;
+}
+
+double eigenvalue_of(double frequency_hz) { return std::pow(2 * std::numbers::pi * frequency_hz, 2); }
+
 // Lowest n fixed-interface modes of (K_ss, M_ss). Lanczos needs n < n_s; when every slave mode
 // is kept the slave set is small enough for a dense solve, and the reduction is then exact.
-ModalSolution fixed_interface_modes(const Sparse& k_ss, const Sparse& m_ss, const CraigBamptonOptions& options) {
-  if (options.n_modes < k_ss.rows()) {
-    ModalOptions modal;
-    modal.n_modes = options.n_modes;
-    modal.shift_frequency_hz = options.shift_frequency_hz;
-    modal.ordering = options.ordering;
-    modal.eigensolver = options.eigensolver;
-    return lowest_modes(k_ss, m_ss, modal);
-  }
+ModalSolution fixed_interface_modes(const Sparse& k_ss, const Sparse& m_ss, int n_modes,
+                                    const CraigBamptonOptions& options) {
+  if (n_modes < k_ss.rows()) return lowest_modes(k_ss, m_ss, modal_options(options, n_modes));
   const DenseEigen<double> dense = symmetric_eigen(Eigen::MatrixXd(k_ss), Eigen::MatrixXd(m_ss));
   if (!dense.ok) throw SolverError("Craig-Bampton: dense fixed-interface eigensolve failed");
   ModalSolution sol;
@@ -121,6 +126,49 @@ Eigen::MatrixXd project(const Sparse& a, const Eigen::MatrixXd& t) {
   return 0.5 * (out + out.transpose());
 }
 
+// Psi = -K_ss^-1 K_sm (thesis eq 3.4). A K_ss that does not factor is the caller's input: slaves
+// that the masters and constraints do not hold.
+Eigen::MatrixXd constraint_modes(const Sparse& stiffness, const Sparse& k_ss, const std::vector<int>& masters,
+                                 const Partition& p, const CraigBamptonOptions& options) {
+  const std::string refusal = "Craig-Bampton: the slave stiffness K_ss cannot be factored: ";
+  if (options.eigensolver == Eigensolver::slepc) {
+    try {
+      return -slepc_solve_spd(k_ss, slave_master_block(stiffness, masters, p));
+    } catch (const NotPositiveDefinite& e) {
+      throw InputError(refusal + e.what() + " (slave DOFs the masters and constraints do not hold)");
+    }
+  }
+  SpdFactorization factor(options.ordering);
+  const FactorStatus status = factor.factorize(k_ss);
+  if (!status.ok) {
+    const std::string where = status.weakest_column >= 0
+                                  ? fmt::format("; free DOF {} is not held by the masters or constraints",
+                                                p.slaves[static_cast<size_t>(status.weakest_column)])
+                                  : std::string();
+    throw InputError(refusal + status.message + where);
+  }
+  return -factor.solve(slave_master_block(stiffness, masters, p));
+}
+
+// The fixed-interface modes: the lowest options.n_modes, or with modes_below_hz every one below it
+// (on SLEPc by one slicing, whose inertias give the count; else a Sturm count first).
+ModalSolution fixed_interface_band(const Sparse& k_ss, const Sparse& m_ss, const CraigBamptonOptions& options) {
+  if (!(options.modes_below_hz > 0.0)) return fixed_interface_modes(k_ss, m_ss, options.n_modes, options);
+  const double cut = eigenvalue_of(options.modes_below_hz);
+  if (options.eigensolver == Eigensolver::slepc) return slepc_modes_below(k_ss, m_ss, cut, modal_options(options, 1));
+  const InertiaCount c = eigenvalues_below(k_ss, m_ss, cut);
+  if (!c.ok)
+    throw SolverError(fmt::format("Craig-Bampton: the fixed-interface modes below {} Hz cannot be counted: {}",
+                                  options.modes_below_hz, c.message));
+  if (c.negative == 0) return ModalSolution{};
+  ModalSolution modes = fixed_interface_modes(k_ss, m_ss, c.negative, options);
+  modes.eigenvalues.conservativeResize(c.negative);  // a cluster straddling the cut stays below it
+  modes.shapes.conservativeResize(Eigen::NoChange, c.negative);
+  modes.sturm_count = c.negative;
+  modes.sturm_shift = cut;
+  return modes;
+}
+
 }  // namespace
 
 ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
@@ -134,56 +182,42 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
   if (options.n_modes < 0)
     throw InputError(
         fmt::format("Craig-Bampton: the number of fixed-interface modes must be >= 0, found {}", options.n_modes));
+  const bool band = options.modes_below_hz > 0.0;
   auto t0 = Clock::now();
   const Partition p = partition_dofs(n, masters, master_names);
   const auto nm = static_cast<Eigen::Index>(masters.size());
   const auto ns = static_cast<Eigen::Index>(p.slaves.size());
-  if (options.n_modes > ns)
+  if (!band && options.n_modes > ns)
     throw InputError(fmt::format("Craig-Bampton: asked for {} fixed-interface modes but there are only {} slave DOFs",
                                  options.n_modes, ns));
-  if (nm + options.n_modes == 0) throw InputError("Craig-Bampton: no masters and no modes: nothing to keep");
+  if (!band && nm + options.n_modes == 0) throw InputError("Craig-Bampton: no masters and no modes: nothing to keep");
 
   Eigen::MatrixXd psi(ns, nm);  // static constraint modes, thesis eq 3.4
   Sparse k_ss;
   if (ns > 0) {
     k_ss = slave_block(stiffness, p);
-    if (options.eigensolver == Eigensolver::slepc) {
-      try {
-        if (nm > 0) psi = -slepc_solve_spd(k_ss, slave_master_block(stiffness, masters, p));
-      } catch (const NotPositiveDefinite& e) {
-        throw InputError(fmt::format(
-            "Craig-Bampton: the slave stiffness K_ss cannot be factored: {} (slave DOFs the masters and constraints "
-            "do not hold)",
-            e.what()));
-      }
-    } else {
-      SpdFactorization factor(options.ordering);
-      const FactorStatus status = factor.factorize(k_ss);
-      if (!status.ok) {
-        const std::string where = status.weakest_column >= 0
-                                      ? fmt::format("; free DOF {} is not held by the masters or constraints",
-                                                    p.slaves[static_cast<size_t>(status.weakest_column)])
-                                      : std::string();
-        throw InputError(
-            fmt::format("Craig-Bampton: the slave stiffness K_ss cannot be factored: {}{}", status.message, where));
-      }
-      if (nm > 0) psi = -factor.solve(slave_master_block(stiffness, masters, p));
-    }
+    if (nm > 0) psi = constraint_modes(stiffness, k_ss, masters, p, options);
   }
   if (timing) timing->constraint_modes_seconds = seconds_since(t0);
 
   t0 = Clock::now();
   ModalSolution modes;
-  if (options.n_modes > 0) {
-    modes = fixed_interface_modes(k_ss, slave_block(mass, p), options);
-    modes.eigenvalues.conservativeResize(options.n_modes);
-    modes.shapes.conservativeResize(Eigen::NoChange, options.n_modes);
+  if (ns > 0 && (band || options.n_modes > 0)) {
+    modes = fixed_interface_band(k_ss, slave_block(mass, p), options);
+    if (!band) {
+      modes.eigenvalues.conservativeResize(options.n_modes);
+      modes.shapes.conservativeResize(Eigen::NoChange, options.n_modes);
+    }
   }
+  const auto n_modes = static_cast<int>(modes.eigenvalues.size());
+  if (nm + n_modes == 0)
+    throw InputError(fmt::format("Craig-Bampton: no masters and no fixed-interface mode below {} Hz: nothing to keep",
+                                 options.modes_below_hz));
   k_ss = Sparse();  // no longer needed; free it before the n x r products
   if (timing) timing->fixed_interface_seconds = seconds_since(t0);
 
   t0 = Clock::now();
-  const Eigen::Index r = nm + options.n_modes;
+  const Eigen::Index r = nm + n_modes;
   ReducedModel model;
   // T = [I 0; Psi Phi] (thesis eq 3.5), with its rows in the input's free-DOF order.
   model.recovery = Eigen::MatrixXd::Zero(n, r);
@@ -191,13 +225,13 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
   for (Eigen::Index j = 0; j < ns; ++j) {
     const int dof = p.slaves[static_cast<size_t>(j)];
     model.recovery.row(dof).head(nm) = psi.row(j);
-    if (options.n_modes > 0) model.recovery.row(dof).tail(options.n_modes) = modes.shapes.row(j);
+    if (n_modes > 0) model.recovery.row(dof).tail(n_modes) = modes.shapes.row(j);
   }
   psi = Eigen::MatrixXd();
   model.stiffness = project(stiffness, model.recovery);
   model.mass = project(mass, model.recovery);
   model.dofs = master_names;
-  for (int k = 1; k <= options.n_modes; ++k) model.dofs.push_back(ReducedDof{"", -1, k});
+  for (int k = 1; k <= n_modes; ++k) model.dofs.push_back(ReducedDof{"", -1, k});
   model.fixed_interface_frequencies_hz = modes.eigenvalues.array().max(0.0).sqrt() / (2 * std::numbers::pi);
   if (timing) timing->projection_seconds = seconds_since(t0);
   return model;
@@ -208,8 +242,8 @@ int fixed_interface_count(const Eigen::SparseMatrix<double>& stiffness, const Ei
   const std::vector<ReducedDof> names(masters.size(), ReducedDof{"master", -1, 0});
   const Partition p = partition_dofs(static_cast<int>(stiffness.rows()), masters, names);
   if (p.slaves.empty()) return 0;
-  const double sigma = std::pow(2 * std::numbers::pi * cut_frequency_hz, 2);
-  const InertiaCount c = eigenvalues_below(slave_block(stiffness, p), slave_block(mass, p), sigma);
+  const InertiaCount c =
+      eigenvalues_below(slave_block(stiffness, p), slave_block(mass, p), eigenvalue_of(cut_frequency_hz));
   if (!c.ok)
     throw SolverError(fmt::format("Craig-Bampton: the fixed-interface modes below {} Hz cannot be counted: {}",
                                   cut_frequency_hz, c.message));

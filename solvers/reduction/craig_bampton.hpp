@@ -19,6 +19,9 @@ struct CraigBamptonOptions {
   double shift_frequency_hz = 1.0;              // see ModalOptions
   // slepc: the fixed-interface modes by SLEPc and the constraint modes by PETSc's MUMPS Cholesky.
   Eigensolver eigensolver = Eigensolver::spectra;
+  // > 0: every fixed-interface mode below this [Hz] instead of n_modes (on SLEPc one slicing, whose
+  // inertias give the count; else a Sturm count of K_ss - (2 pi f)^2 M_ss first).
+  double modes_below_hz = 0.0;
 };
 
 struct CraigBamptonTiming {

@@ -138,6 +138,31 @@ TEST(SlepcModes, CraigBamptonOnSlepcIsTheDefaultReductionUpToTheSignOfEachMode) 
   EXPECT_LT((a.recovery.leftCols(3) - b.recovery.leftCols(3)).cwiseAbs().maxCoeff(), 1e-10);  // constraint modes
 }
 
+TEST(SlepcModes, CraigBamptonBelowACutTakesItsCountFromTheSlicingAndEqualsTheDefault) {
+  SKIP_WITHOUT_SLEPC();
+  Sparse k, m;
+  chain(119, 1, k, m);
+  const std::vector<int> masters{0, 59, 118};
+  const std::vector<ReducedDof> names{{"a", 0, 0}, {"b", 0, 0}, {"c", 0, 0}};
+  CraigBamptonOptions options;
+  options.shift_frequency_hz = 0.01;
+  // The slaves are two chains of 58 held at both ends: lambda_j = 4 sin^2(j pi / 118), each twice.
+  const double cut_hz = std::sqrt(chain_eigenvalue(58, 4) * 1.01) / (2 * std::numbers::pi);
+  options.modes_below_hz = cut_hz;
+  const ReducedModel a = craig_bampton(k, m, masters, names, options);
+  options.eigensolver = Eigensolver::slepc;
+  const ReducedModel b = craig_bampton(k, m, masters, names, options);
+  ASSERT_EQ(a.fixed_interface_frequencies_hz.size(), 8) << "4 eigenvalues below the cut, each twice";
+  ASSERT_EQ(b.fixed_interface_frequencies_hz.size(), 8);
+  for (int j = 0; j < 8; ++j)
+    EXPECT_NEAR(b.fixed_interface_frequencies_hz[j], a.fixed_interface_frequencies_hz[j],
+                1e-9 * a.fixed_interface_frequencies_hz[j]);
+  EXPECT_LT((a.stiffness.diagonal() - b.stiffness.diagonal()).cwiseAbs().maxCoeff(),
+            1e-9 * a.stiffness.cwiseAbs().maxCoeff());
+  options.modes_below_hz = 1e-6;  // no mode below: the masters alone
+  EXPECT_EQ(craig_bampton(k, m, masters, names, options).size(), 3);
+}
+
 TEST(SlepcModes, CraigBamptonWithSlavesTheMastersDoNotHoldIsBadInputAsOnTheDefault) {
   SKIP_WITHOUT_SLEPC();
   // Two free-free chains side by side, one master on the first: the second floats.

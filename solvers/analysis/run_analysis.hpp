@@ -67,7 +67,7 @@ static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<Analys
               "one outcome per analysis type");
 
 struct AnalysisResults {
-  ResultTables tables;
+  ResultTables tables;  // every table of the run, held here only: the outcome's own are moved in
   AnalysisOutcome outcome;
   // A solver failure found once the tables were built (a time analysis's peak resting on a
   // frequency without a steady state): the tables stand, the case has no verdict. Empty: none.

@@ -26,6 +26,7 @@ struct PlotTarget {
   const std::vector<CheckSpec>& checks;
   const fs::path& out;
   RunRecord& run;
+  const ResultTables& tables;  // the run's, which hold every outcome's tables
 };
 
 Eigen::VectorXd nodal_von_mises(const StressField& field) {
@@ -89,7 +90,7 @@ void plots(const HbmSpec& spec, const HbmOutcome& h, const PlotTarget& t) {
     if ((std::string(kind) == "peak") != h.prepared.ip_oop.has_value())
       t.run.plots.push_back(plot_contact_states(h, kind, t.out, fmt::format("contact_states_{}", kind)));
   if (spec.nonlinear_modes) {
-    t.run.plots.push_back(plot_backbones(h, spec, t.out, "nonlinear_mode_backbones"));
+    t.run.plots.push_back(plot_backbones(h, spec, t.tables.at("nonlinear_modes"), t.out, "nonlinear_mode_backbones"));
     t.run.plots.push_back(plot_modal_damping(h, t.out, "nonlinear_mode_damping"));
   }
 }
@@ -99,11 +100,11 @@ void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget&
     for (int d = 0; d < std::min(o.dim, 2);
          ++d) {  // x and y, as the thesis (the z motion of a blade turning about z is nil)
       const std::string stem = fmt::format("history_{}_u{}", o.history_sets[s], "xyz"[d]);
-      t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem));
+      t.run.plots.push_back(plot_rotating_history(o, t.tables, s, d, t.out, stem));
       // The first few periods of the first rotating mode, where the oscillation can be seen.
       const double f1 = o.modes_at_speed.frequencies_hz.size() > 0 ? o.modes_at_speed.frequencies_hz[0] : 0.0;
       if (f1 > 0 && spec.end_time > 20.0 / f1)
-        t.run.plots.push_back(plot_rotating_history(o, s, d, t.out, stem + "_zoom", 20.0 / f1));
+        t.run.plots.push_back(plot_rotating_history(o, t.tables, s, d, t.out, stem + "_zoom", 20.0 / f1));
     }
   t.run.plots.push_back(plot_campbell(o, spec.engine_orders, t.out, "campbell"));
   t.run.plots.push_back(plot_nodal_contour(t.model.mesh, nodal_von_mises(o.steady_stresses), "Pa", t.out,
@@ -114,7 +115,8 @@ void plots(const RotatingSpec& spec, const RotatingOutcome& o, const PlotTarget&
 void plots(const ContactModalSpec& spec, const ContactModalOutcome& o, const PlotTarget& t) {
   for (int m = 1; m <= spec.modes; ++m)
     t.run.plots.push_back(plot_contact_mode(o, spec, m, t.out, fmt::format("contact_mode{}", m)));
-  if (o.tables.count("contact_state")) t.run.plots.push_back(plot_contact_pressure(o, t.out, "contact_pressure"));
+  if (t.tables.count("contact_state"))
+    t.run.plots.push_back(plot_contact_pressure(o, t.tables.at("contact_state"), t.out, "contact_pressure"));
 }
 
 void plots(const CyclicModalSpec& spec, const CyclicModalOutcome& o, const PlotTarget& t) {
@@ -133,7 +135,7 @@ void plots(const CyclicModalSpec& spec, const CyclicModalOutcome& o, const PlotT
 
 void plot_analysis(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model,
                    const std::vector<CheckSpec>& checks, const fs::path& out, RunRecord& run) {
-  const PlotTarget target{model, checks, out, run};
+  const PlotTarget target{model, checks, out, run, results.tables};
   visit_analysis(spec, results, [&](const auto& s, const auto& outcome) { plots(s, outcome, target); });
 }
 

@@ -34,8 +34,8 @@ Plot plot_contact_mode(const ContactModalOutcome& o, const ContactModalSpec& spe
   return draw(out_dir, stem, title, script);
 }
 
-Plot plot_contact_pressure(const ContactModalOutcome& o, const fs::path& out_dir, const std::string& stem) {
-  const ResultTable& s = o.tables.at("contact_state");
+Plot plot_contact_pressure(const ContactModalOutcome& o, const ResultTable& s, const fs::path& out_dir,
+                           const std::string& stem) {
   const int pair = *s.column_index("pair"), x = *s.column_index("x_m"), p = *s.column_index("pressure_pa");
   {
     std::ofstream out = open_plot_data(out_dir, stem);

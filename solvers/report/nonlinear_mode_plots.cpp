@@ -22,9 +22,9 @@ std::string amplitude_legend(const HbmOutcome& hbm, const NonlinearModesSpec& nm
 
 }  // namespace
 
-Plot plot_backbones(const HbmOutcome& hbm, const HbmSpec& spec, const fs::path& out_dir, const std::string& stem) {
+Plot plot_backbones(const HbmOutcome& hbm, const HbmSpec& spec, const ResultTable& t, const fs::path& out_dir,
+                    const std::string& stem) {
   const NonlinearModesSpec& nm = *spec.nonlinear_modes;
-  const ResultTable& t = hbm.tables.at("nonlinear_modes");
   const int mode = *t.column_index("mode"), hz = *t.column_index("frequency_hz");
   {
     std::ofstream out = open_plot_data(out_dir, stem);

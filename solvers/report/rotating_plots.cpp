@@ -11,11 +11,11 @@ namespace bb {
 
 namespace fs = std::filesystem;
 
-Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, const fs::path& out_dir,
-                           const std::string& stem, double zoom) {
+Plot plot_rotating_history(const RotatingOutcome& o, const ResultTables& tables, size_t set, int direction,
+                           const fs::path& out_dir, const std::string& stem, double zoom) {
   const char axis = "xyz"[direction];
   const std::string name = o.history_sets.at(set);
-  const ResultTable& d = o.tables.at("deflection");
+  const ResultTable& d = tables.at("deflection");
   const auto static_column = d.column_index(fmt::format("static_u{}_m", axis));
   {
     // The whole run from histories.csv's rows; a zoom from every step.
@@ -26,7 +26,7 @@ Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, 
       for (size_t i = 0; i < o.history.time.size() && o.history.time[i] <= zoom; ++i)
         out << o.history.time[i] << ' ' << o.set_histories(static_cast<Eigen::Index>(i), c) << '\n';
     } else {
-      const ResultTable& h = o.tables.at("histories");
+      const ResultTable& h = tables.at("histories");
       const auto column = h.column_index(fmt::format("{}.u{}_m", name, axis));
       for (Eigen::Index i = 0; i < h.values.rows(); ++i) out << h.values(i, 1) << ' ' << h.values(i, *column) << '\n';
     }

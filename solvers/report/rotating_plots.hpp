@@ -13,9 +13,9 @@
 namespace bb {
 
 // One figure per set and direction: u(t) with the steady static deflection as a dashed line; with
-// zoom > 0 only the first `zoom` seconds.
-Plot plot_rotating_history(const RotatingOutcome& o, size_t set, int direction, const std::filesystem::path& out_dir,
-                           const std::string& stem, double zoom = 0.0);
+// zoom > 0 only the first `zoom` seconds. `tables`: the run's (its deflection and histories).
+Plot plot_rotating_history(const RotatingOutcome& o, const ResultTables& tables, size_t set, int direction,
+                           const std::filesystem::path& out_dir, const std::string& stem, double zoom = 0.0);
 Plot plot_campbell(const RotatingOutcome& o, const std::vector<int>& engine_orders,
                    const std::filesystem::path& out_dir, const std::string& stem);
 

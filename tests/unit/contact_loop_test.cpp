@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "analysis/contact_loop_analysis.hpp"
+#include "analysis/run_analysis.hpp"
 #include "cases/case_spec.hpp"
 #include "common/constants.hpp"
 
@@ -151,6 +152,19 @@ TEST(ContactLoop, VerificationCaseParsesIntoTheRigSpec) {
   EXPECT_EQ(std::get<ContactLoopSpec>(spec.analysis).normal_amplitude, 2e-6);
   EXPECT_EQ(std::get<ContactLoopSpec>(spec.analysis).law.kt, 5e7);
   EXPECT_EQ(spec.model.mesh.kind, MeshSpec::Kind::none);
+}
+
+TEST(ContactLoop, ARunHoldsItsTablesOnceInTheResultsNotAgainInTheOutcome) {
+  const ContactLoopSpec s = rig(3e-6);
+  const ContactLoopOutcome alone = run_contact_loop(s);
+  const AnalysisResults r = run_analysis(AnalysisSpec{s}, Model{});
+  const auto& outcome = std::get<ContactLoopOutcome>(r.outcome);
+  EXPECT_TRUE(outcome.tables.empty()) << "the outcome's tables were moved into the results";
+  ASSERT_EQ(r.tables.size(), alone.tables.size());
+  for (const auto& [name, table] : alone.tables) {
+    ASSERT_TRUE(r.tables.count(name)) << name;
+    EXPECT_EQ(r.tables.at(name).values, table.values) << name;
+  }
 }
 
 }  // namespace

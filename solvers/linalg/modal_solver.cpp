@@ -83,8 +83,11 @@ ModalSolution lanczos_run(const Eigen::SparseMatrix<double>& stiffness, const Ei
   sol.shapes = eigs.eigenvectors();
   sol.iterations = static_cast<int>(eigs.num_iterations());
   sol.converged_modes = static_cast<int>(found);
-  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k)
+  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k) {
     sol.shapes.col(k) /= std::sqrt(sol.shapes.col(k).dot(mass * sol.shapes.col(k)));
+    sol.eigenvalues[k] = rayleigh_quotient(stiffness, mass, Eigen::VectorXd(sol.shapes.col(k)));
+  }
+  sort_by_eigenvalue(sol);
   return sol;
 }
 
@@ -104,6 +107,9 @@ HermitianModalSolution lanczos_run(const Eigen::SparseMatrix<std::complex<double
   sol.shapes = r.shapes;
   sol.iterations = r.restarts + 1;
   sol.converged_modes = nev;
+  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k)
+    sol.eigenvalues[k] = rayleigh_quotient(stiffness, mass, Eigen::VectorXcd(sol.shapes.col(k)));
+  sort_by_eigenvalue(sol);
   return sol;
 }
 
@@ -201,6 +207,9 @@ HermitianModalSolution slepc_hermitian_lowest_modes(const Eigen::SparseMatrix<st
   HermitianModalSolution sol;
   sol.eigenvalues = ritz.eigenvalues();
   sol.shapes = basis * ritz.eigenvectors();
+  for (Eigen::Index k = 0; k < sol.shapes.cols(); ++k)
+    sol.eigenvalues[k] = rayleigh_quotient(stiffness, mass, Eigen::VectorXcd(sol.shapes.col(k)));
+  sort_by_eigenvalue(sol);
   sol.iterations = real.iterations;
   sol.converged_modes = static_cast<int>(keep);
   sol.sturm_count = real.sturm_count < 0 ? -1 : real.sturm_count / 2;

@@ -110,12 +110,13 @@ ModalSolution solution_of(const bb_modes_result& r, const Eigen::SparseMatrix<do
     Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(r.vectors + static_cast<int64_t>(i) * r.n, r.n);
     x /= std::sqrt(x.dot(mass * x));
     // The Rayleigh quotient of the shape as returned: an error in the shape enters it only squared.
-    if (stiffness) sol.eigenvalues[j] = x.dot(*stiffness * x);
+    if (stiffness) sol.eigenvalues[j] = rayleigh_quotient(*stiffness, mass, x);
     Eigen::Index top = 0;
     x.cwiseAbs().maxCoeff(&top);
     if (x[top] < 0) x = -x;
     sol.shapes.col(j) = x;
   }
+  sort_by_eigenvalue(sol);
   sol.iterations = r.iterations;
   sol.converged_modes = r.count;
   return sol;

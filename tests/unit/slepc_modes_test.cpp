@@ -119,18 +119,32 @@ TEST(SlepcModes, SpdSolveByMumpsMatchesADenseSolve) {
   EXPECT_LT((x - dense).cwiseAbs().maxCoeff(), 1e-12 * dense.cwiseAbs().maxCoeff());
 }
 
+// A chain of n held at three masters (its ends and its middle), reduced by the default eigensolver
+// and by SLEPc with the same options.
+struct ChainReductions {
+  Sparse k, m;
+  std::vector<int> masters;
+  std::vector<ReducedDof> names{{"a", 0, 0}, {"b", 0, 0}, {"c", 0, 0}};
+  ReducedModel spectra, slepc;
+};
+ChainReductions reduce_three_point_chain(int n, CraigBamptonOptions options) {
+  ChainReductions r;
+  chain(n, 1, r.k, r.m);
+  r.masters = {0, n / 2, n - 1};
+  options.shift_frequency_hz = 0.01;
+  options.eigensolver = Eigensolver::spectra;
+  r.spectra = craig_bampton(r.k, r.m, r.masters, r.names, options);
+  options.eigensolver = Eigensolver::slepc;
+  r.slepc = craig_bampton(r.k, r.m, r.masters, r.names, options);
+  return r;
+}
+
 TEST(SlepcModes, CraigBamptonOnSlepcIsTheDefaultReductionUpToTheSignOfEachMode) {
   SKIP_WITHOUT_SLEPC();
-  Sparse k, m;
-  chain(120, 1, k, m);
-  const std::vector<int> masters{0, 60, 119};
-  const std::vector<ReducedDof> names{{"a", 0, 0}, {"b", 0, 0}, {"c", 0, 0}};
   CraigBamptonOptions options;
   options.n_modes = 5;
-  options.shift_frequency_hz = 0.01;
-  const ReducedModel a = craig_bampton(k, m, masters, names, options);
-  options.eigensolver = Eigensolver::slepc;
-  const ReducedModel b = craig_bampton(k, m, masters, names, options);
+  const ChainReductions r = reduce_three_point_chain(120, options);
+  const ReducedModel &a = r.spectra, &b = r.slepc;
   // A mode's sign flips its row and column of the coupling blocks; magnitudes are the same.
   const double scale = a.stiffness.cwiseAbs().maxCoeff();
   EXPECT_LT((a.stiffness.cwiseAbs() - b.stiffness.cwiseAbs()).cwiseAbs().maxCoeff(), 1e-9 * scale);
@@ -140,18 +154,11 @@ TEST(SlepcModes, CraigBamptonOnSlepcIsTheDefaultReductionUpToTheSignOfEachMode) 
 
 TEST(SlepcModes, CraigBamptonBelowACutTakesItsCountFromTheSlicingAndEqualsTheDefault) {
   SKIP_WITHOUT_SLEPC();
-  Sparse k, m;
-  chain(119, 1, k, m);
-  const std::vector<int> masters{0, 59, 118};
-  const std::vector<ReducedDof> names{{"a", 0, 0}, {"b", 0, 0}, {"c", 0, 0}};
-  CraigBamptonOptions options;
-  options.shift_frequency_hz = 0.01;
   // The slaves are two chains of 58 held at both ends: lambda_j = 4 sin^2(j pi / 118), each twice.
-  const double cut_hz = std::sqrt(chain_eigenvalue(58, 4) * 1.01) / (2 * std::numbers::pi);
-  options.modes_below_hz = cut_hz;
-  const ReducedModel a = craig_bampton(k, m, masters, names, options);
-  options.eigensolver = Eigensolver::slepc;
-  const ReducedModel b = craig_bampton(k, m, masters, names, options);
+  CraigBamptonOptions options;
+  options.modes_below_hz = std::sqrt(chain_eigenvalue(58, 4) * 1.01) / (2 * std::numbers::pi);
+  const ChainReductions r = reduce_three_point_chain(119, options);
+  const ReducedModel &a = r.spectra, &b = r.slepc;
   ASSERT_EQ(a.fixed_interface_frequencies_hz.size(), 8) << "4 eigenvalues below the cut, each twice";
   ASSERT_EQ(b.fixed_interface_frequencies_hz.size(), 8);
   for (int j = 0; j < 8; ++j)
@@ -160,7 +167,8 @@ TEST(SlepcModes, CraigBamptonBelowACutTakesItsCountFromTheSlicingAndEqualsTheDef
   EXPECT_LT((a.stiffness.diagonal() - b.stiffness.diagonal()).cwiseAbs().maxCoeff(),
             1e-9 * a.stiffness.cwiseAbs().maxCoeff());
   options.modes_below_hz = 1e-6;  // no mode below: the masters alone
-  EXPECT_EQ(craig_bampton(k, m, masters, names, options).size(), 3);
+  options.eigensolver = Eigensolver::slepc;
+  EXPECT_EQ(craig_bampton(r.k, r.m, r.masters, r.names, options).size(), 3);
 }
 
 TEST(SlepcModes, CraigBamptonWithSlavesTheMastersDoNotHoldIsBadInputAsOnTheDefault) {

@@ -202,6 +202,7 @@ NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, i
   // The first guess: the stuck mode at the first amplitude.
   q.col(1) = amplitudes.front() * phi;
   double last_a = amplitudes.front();
+  int skips_in_a_row = 0;
   for (size_t i = 0; i < amplitudes.size(); ++i) {
     double target = amplitudes[i], from = i == 0 ? target : last_a;
     int halvings = 0;
@@ -224,6 +225,7 @@ NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, i
           pt.residual = r.residual;
           pt.iterations = r.iterations;
           branch.points.push_back(std::move(pt));
+          skips_in_a_row = 0;
           break;
         }
         halvings = std::max(halvings - 1, 0);
@@ -231,15 +233,22 @@ NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, i
         continue;
       }
       if (++halvings > options.max_halvings) {
-        branch.failure = fmt::format(
+        const std::string why = fmt::format(
             "nonlinear mode {}: no periodic motion at modal amplitude {:.4g} (from {:.4g}, {} halvings of the step): "
             "{}",
             linear_mode, a, last_a, options.max_halvings, r.converged ? "negative frequency" : r.failure);
+        if (i + 1 < amplitudes.size() && skips_in_a_row < options.max_skips) {
+          if (branch.skipped.empty()) branch.first_skip = why;
+          branch.skipped.push_back(target);
+          ++skips_in_a_row;
+          break;
+        }
+        branch.failure = why;
         return branch;
       }
     }
   }
-  branch.converged = true;
+  branch.converged = branch.skipped.empty();
   return branch;
 }
 

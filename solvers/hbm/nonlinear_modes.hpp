@@ -26,7 +26,11 @@ struct NonlinearModeOptions {
   contact::AftOptions aft{};  // samples = 0: max(64, 16 (2H + 1)), as HbmOptions
   double tolerance = 1e-9;    // on the scaled residual (forces over k_max a, k_max the largest stuck stiffness)
   int max_iterations = 30;    // Newton iterations per amplitude
-  int max_halvings = 6;       // halvings of a failed amplitude step before the branch stops
+  int max_halvings = 6;       // halvings of a failed amplitude step before the amplitude is given up
+  // Requested amplitudes given up in a row (each after its halvings) before the branch stops: at a
+  // corner of the contact states (a contact that sticks throughout next to one that shakes down to
+  // its Coulomb limit) Newton can stall at one amplitude and converge again past it.
+  int max_skips = 3;
 };
 
 struct NonlinearModePoint {
@@ -45,13 +49,17 @@ struct NonlinearModeBranch {
   double linear_omega = 0.0;  // its frequency [rad/s]
   Eigen::VectorXd linear_shape;
   std::vector<NonlinearModePoint> points;  // converged points, by increasing amplitude
-  bool converged = false;                  // every requested amplitude reached
-  std::string failure;                     // else where and why it stopped (with the residual)
+  bool converged = false;                  // every requested amplitude reached (none skipped)
+  std::string failure;                     // where and why it stopped short of the last (with the residual)
+  // Requested amplitudes the branch went past without a solution, and why the first one failed.
+  std::vector<double> skipped;
+  std::string first_skip;
 };
 
 // The branch of stuck linear mode `linear_mode` (1-based, ascending frequency of K_stuck, M) at the
 // given amplitudes (positive, increasing), each solve continued from the last; a failed step is
-// halved in log-amplitude up to options.max_halvings times. `static_guess` (n entries, or empty)
+// halved in log-amplitude up to options.max_halvings times, then that amplitude is skipped and the
+// next tried from the last solution, up to options.max_skips in a row. `static_guess` (n entries, or empty)
 // seeds the static part. Throws std::invalid_argument on an invalid model, mode index or amplitude
 // list; a Newton failure ends the branch (converged == false, failure says where) and never
 // yields a non-finite point.

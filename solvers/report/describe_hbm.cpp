@@ -58,7 +58,12 @@ void describe_nonlinear_modes(const HbmSpec& spec, const HbmOutcome& hbm, RunRec
                                        b.linear_omega / (2 * std::numbers::pi)),
                            fmt::format("frequency {:.4f} to {:.4f} Hz, damping ratio {:.4g} to {:.4g}",
                                        lo / (2 * std::numbers::pi), hi / (2 * std::numbers::pi), dmin, dmax));
-    if (!b.converged) run.warnings.push_back(fmt::format("the branch stopped early: {}", b.failure));
+    if (!b.skipped.empty())
+      run.warnings.push_back(
+          fmt::format("nonlinear mode {}: the branch went past {} requested amplitude(s) without a "
+                      "solution ({:.4g} m kg^1/2); the first: {}",
+                      b.linear_mode, b.skipped.size(), fmt::join(b.skipped, ", "), b.first_skip));
+    if (!b.failure.empty()) run.warnings.push_back(fmt::format("the branch stopped early: {}", b.failure));
   }
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"

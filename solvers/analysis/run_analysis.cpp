@@ -10,6 +10,13 @@
 namespace bb {
 namespace {
 
+// An outcome whose tables the analysis built into it: moved into the results, held there only.
+template <class Outcome>
+AnalysisResults results_of(Outcome o, std::string failure = {}) {
+  ResultTables tables = std::move(o.tables);
+  return {std::move(tables), std::move(o), std::move(failure)};
+}
+
 // What every analysis may use besides its spec.
 struct RunContext {
   const Model& model;
@@ -47,40 +54,27 @@ AnalysisResults run(const ModalSpec& spec, const RunContext& c) {
 
 AnalysisResults run(const FrfSpec& spec, const RunContext& c) {
   if (spec.pairs) check_mode_pair_sets(c.model, *spec.pairs);
-  FrfOutcome o = run_frf(c.model, spec, {}, c.cache);
-  ResultTables tables = std::move(o.tables);
-  return {std::move(tables), std::move(o), {}};
+  return results_of(run_frf(c.model, spec, {}, c.cache));
 }
 
 AnalysisResults run(const HbmSpec& spec, const RunContext& c) {
-  HbmOutcome o = run_hbm(c.model, spec, c.progress, c.cache);
-  ResultTables tables = std::move(o.tables);
-  return {std::move(tables), std::move(o), {}};
+  return results_of(run_hbm(c.model, spec, c.progress, c.cache));
 }
 
 AnalysisResults run(const TimeSpec& spec, const RunContext& c) {
   TimeOutcome o = run_time(c.model, spec, c.progress, c.cache);
-  ResultTables tables = std::move(o.tables);
   std::string failure = o.failure;
-  return {std::move(tables), std::move(o), std::move(failure)};
+  return results_of(std::move(o), std::move(failure));
 }
 
-AnalysisResults run(const ContactLoopSpec& spec, const RunContext&) {
-  ContactLoopOutcome o = run_contact_loop(spec);
-  ResultTables tables = std::move(o.tables);
-  return {std::move(tables), std::move(o), {}};
-}
+AnalysisResults run(const ContactLoopSpec& spec, const RunContext&) { return results_of(run_contact_loop(spec)); }
 
 AnalysisResults run(const RotatingSpec& spec, const RunContext& c) {
-  RotatingOutcome o = run_rotating(c.model, spec, c.limits);
-  ResultTables tables = std::move(o.tables);
-  return {std::move(tables), std::move(o), {}};
+  return results_of(run_rotating(c.model, spec, c.limits));
 }
 
 AnalysisResults run(const ContactModalSpec& spec, const RunContext& c) {
-  ContactModalOutcome o = run_contact_modal(c.model, spec, c.progress);
-  ResultTables tables = std::move(o.tables);
-  return {std::move(tables), std::move(o), {}};
+  return results_of(run_contact_modal(c.model, spec, c.progress));
 }
 
 AnalysisResults run(const CyclicModalSpec& spec, const RunContext& c) {

@@ -59,10 +59,10 @@ struct NonlinearModeBranch {
 // The branch of stuck linear mode `linear_mode` (1-based, ascending frequency of K_stuck, M) at the
 // given amplitudes (positive, increasing), each solve continued from the last; a failed step is
 // halved in log-amplitude up to options.max_halvings times, then that amplitude is skipped and the
-// next tried from the last solution, up to options.max_skips in a row. `static_guess` (n entries, or empty)
-// seeds the static part. Throws std::invalid_argument on an invalid model, mode index or amplitude
-// list; a Newton failure ends the branch (converged == false, failure says where) and never
-// yields a non-finite point.
+// next tried from the last solution, up to options.max_skips in a row. `static_guess` (n entries, or
+// empty) seeds the static part. Throws std::invalid_argument on an invalid model, mode index or
+// amplitude list; Newton failures skip amplitudes or end the branch (converged == false; skipped and
+// failure say which and where) and never yield a non-finite point.
 NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& model, int linear_mode,
                                          const std::vector<double>& amplitudes, const Eigen::VectorXd& static_guess,
                                          const NonlinearModeOptions& options);

@@ -151,22 +151,26 @@ Eigen::MatrixXd constraint_modes(const Sparse& stiffness, const Sparse& k_ss, co
   return -factor.solve(slave_master_block(stiffness, masters, p));
 }
 
-// The fixed-interface modes: the lowest options.n_modes, or with modes_below_hz every one below it
-// (on SLEPc by one slicing, whose inertias give the count; else a Sturm count first).
-ModalSolution fixed_interface_band(const Sparse& k_ss, const Sparse& m_ss, const CraigBamptonOptions& options) {
-  if (!(options.modes_below_hz > 0.0)) return fixed_interface_modes(k_ss, m_ss, options.n_modes, options);
-  const double cut = eigenvalue_of(options.modes_below_hz);
-  if (options.eigensolver == Eigensolver::slepc) return slepc_modes_below(k_ss, m_ss, cut, modal_options(options, 1));
-  const InertiaCount c = eigenvalues_below(k_ss, m_ss, cut);
+// The fixed-interface modes below cut_hz: the Sturm count of K_ss - (2 pi f)^2 M_ss.
+int count_below(const Sparse& k_ss, const Sparse& m_ss, double cut_hz) {
+  const InertiaCount c = eigenvalues_below(k_ss, m_ss, eigenvalue_of(cut_hz));
   if (!c.ok)
-    throw SolverError(fmt::format("Craig-Bampton: the fixed-interface modes below {} Hz cannot be counted: {}",
-                                  options.modes_below_hz, c.message));
-  if (c.negative == 0) return ModalSolution{};
-  ModalSolution modes = fixed_interface_modes(k_ss, m_ss, c.negative, options);
-  modes.eigenvalues.conservativeResize(c.negative);  // a cluster straddling the cut stays below it
-  modes.shapes.conservativeResize(Eigen::NoChange, c.negative);
-  modes.sturm_count = c.negative;
-  modes.sturm_shift = cut;
+    throw SolverError(
+        fmt::format("Craig-Bampton: the fixed-interface modes below {} Hz cannot be counted: {}", cut_hz, c.message));
+  return c.negative;
+}
+
+// The fixed-interface modes kept: the lowest options.n_modes, or with modes_below_hz every one below
+// it (on SLEPc by one slicing, whose inertias give the count; else a Sturm count first).
+ModalSolution fixed_interface_band(const Sparse& k_ss, const Sparse& m_ss, const CraigBamptonOptions& options) {
+  const bool band = options.modes_below_hz > 0.0;
+  if (band && options.eigensolver == Eigensolver::slepc)
+    return slepc_modes_below(k_ss, m_ss, eigenvalue_of(options.modes_below_hz), modal_options(options, 1));
+  const int kept = band ? count_below(k_ss, m_ss, options.modes_below_hz) : options.n_modes;
+  if (kept == 0) return ModalSolution{};
+  ModalSolution modes = fixed_interface_modes(k_ss, m_ss, kept, options);
+  modes.eigenvalues.conservativeResize(kept);  // a cluster straddling the last kept mode is cut there
+  modes.shapes.conservativeResize(Eigen::NoChange, kept);
   return modes;
 }
 
@@ -203,13 +207,7 @@ ReducedModel craig_bampton(const Eigen::SparseMatrix<double>& stiffness, const E
 
   t0 = Clock::now();
   ModalSolution modes;
-  if (ns > 0 && (band || options.n_modes > 0)) {
-    modes = fixed_interface_band(k_ss, slave_block(mass, p), options);
-    if (!band) {
-      modes.eigenvalues.conservativeResize(options.n_modes);
-      modes.shapes.conservativeResize(Eigen::NoChange, options.n_modes);
-    }
-  }
+  if (ns > 0) modes = fixed_interface_band(k_ss, slave_block(mass, p), options);
   const auto n_modes = static_cast<int>(modes.eigenvalues.size());
   if (nm + n_modes == 0)
     throw InputError(fmt::format("Craig-Bampton: no masters and no fixed-interface mode below {} Hz: nothing to keep",
@@ -243,12 +241,7 @@ int fixed_interface_count(const Eigen::SparseMatrix<double>& stiffness, const Ei
   const std::vector<ReducedDof> names(masters.size(), ReducedDof{"master", -1, 0});
   const Partition p = partition_dofs(static_cast<int>(stiffness.rows()), masters, names);
   if (p.slaves.empty()) return 0;
-  const InertiaCount c =
-      eigenvalues_below(slave_block(stiffness, p), slave_block(mass, p), eigenvalue_of(cut_frequency_hz));
-  if (!c.ok)
-    throw SolverError(fmt::format("Craig-Bampton: the fixed-interface modes below {} Hz cannot be counted: {}",
-                                  cut_frequency_hz, c.message));
-  return c.negative;
+  return count_below(slave_block(stiffness, p), slave_block(mass, p), cut_frequency_hz);
 }
 
 }  // namespace bb

@@ -8,16 +8,14 @@
 #include <complex>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <optional>
 
 #include "analysis/hbm_stepped_sines.hpp"
 #include "common/constants.hpp"
 #include "common/errors.hpp"
-#include "common/parallel_indices.hpp"
-#include "common/progress_clock.hpp"
 #include "common/seconds_since.hpp"
 #include "contact/state_fractions.hpp"
+#include "forced/hbm_levels.hpp"
 #include "forced/hbm_nonlinear_modes.hpp"
 #include "forced/hbm_response.hpp"
 #include "frf/receptance.hpp"
@@ -422,31 +420,6 @@ void add_damper_table(HbmOutcome& o) {
     t.add_text_column("name", names);
     o.tables.emplace("damper_static", std::move(t));
   }
-}
-
-// Every force level, each swept by one of `spec.threads` workers. Levels share the prepared model
-// (read only) and, through the relay, each level's first solution, the start of the next level's
-// first point: levels are handed out in list order, so a level waits only for one that has
-// started, and the results are those of the serial run. A level that throws stops none of the
-// others; the first in level order is rethrown, as the serial run would have stopped there.
-std::vector<HbmLevel> sweep_levels(const PreparedHbm& prepared, const HbmSpec& spec, const HbmProgress& progress) {
-  const size_t n = spec.force_levels.size();
-  std::vector<HbmLevel> levels(n);
-  ProgressClock clock(static_cast<int>(n));
-  std::mutex report;  // the progress line and the clock, from every worker
-  int done = 0;
-  const HbmProgress timed = with_clock_locked(progress, clock, report);
-  LevelRelay relay(n);
-  for_each_index(n, worker_count(n, spec.threads), [&](size_t i) {
-    const LevelRelay::Guard published(relay, i);
-    const LevelLink link{relay, i};
-    const double f = spec.force_levels[i];
-    levels[i] = spec.harmonic_tolerance > 0.0 ? sweep_hbm_level_adaptive(prepared, spec, f, timed, &link)
-                                              : sweep_hbm_level(prepared, spec, f, spec.harmonics, timed, true, &link);
-    const std::lock_guard<std::mutex> lock(report);
-    clock.finished(++done);
-  });
-  return levels;
 }
 
 }  // namespace

@@ -93,10 +93,10 @@ int run_command(const RunArgs& a) {
     if (!root) opt.out_dir = rank_folder.path / fs::path(c).stem();
     const bb::RunOutcome o = bb::run_case(c, opt);
     if (root) print_outcome(o, "");
-    if (root && bb::distributed::size() > 1 && bb::distributed::shared_solve_count() == 0)
+    if (root && bb::distributed::size() > 1 && bb::distributed::shared_work_count() == 0)
       std::fprintf(stderr,
-                   "  warning: %d MPI ranks, but this case shares no work over them (no eigensolver = \"slepc\"): "
-                   "every rank computed the same\n",
+                   "  warning: %d MPI ranks, but this case shares no work over them (no eigensolver = \"slepc\", no "
+                   "force levels to share out): every rank computed the same\n",
                    bb::distributed::size());
     rc = std::max(rc, bb::exit_code(o.record.status));
   }

@@ -18,7 +18,7 @@ struct State {
   std::string failure;  // why the plugin could not start
   bool started = false;
   bool shared = true;
-  int shared_solves = 0;
+  int shared_work = 0;
 };
 
 State& state() {
@@ -131,8 +131,8 @@ std::vector<std::size_t> share_of_rank(std::size_t count, int rank) {
 void set_shared_solves(bool shared) { state().shared = shared; }
 bool shared_solves() { return state().shared; }
 
-void count_shared_solve() { ++state().shared_solves; }
-int shared_solve_count() { return state().shared_solves; }
+void count_shared_work() { ++state().shared_work; }
+int shared_work_count() { return state().shared_work; }
 
 void max_over_ranks(std::vector<int>& values) {
   if (size() > 1 && state().plugin->allreduce_max(values.data(), static_cast<int>(values.size())) != 0)
@@ -158,6 +158,26 @@ std::vector<std::string> gather_from_all(const std::string& mine) {
     at += static_cast<size_t>(n);
   }
   return out;
+}
+
+void send_to(int to, int tag, const std::string& bytes) {
+  if (size() > 1 && state().plugin->send_bytes(to, tag, bytes.data(), static_cast<int64_t>(bytes.size())) != 0)
+    throw SolverError(fmt::format("MPI_Isend to rank {} failed", to));
+}
+
+std::string receive_from(int from, int tag) {
+  if (size() == 1) throw SolverError("a message from another rank was awaited without MPI");
+  const bb_plugin& p = *state().plugin;
+  int64_t n = 0;
+  if (p.probe_bytes(from, tag, &n) != 0) throw SolverError(fmt::format("MPI_Probe for rank {} failed", from));
+  std::string bytes(static_cast<size_t>(n), '\0');
+  if (p.receive_bytes(from, tag, bytes.data(), n) != 0)
+    throw SolverError(fmt::format("MPI_Recv from rank {} failed", from));
+  return bytes;
+}
+
+void complete_sends() {
+  if (size() > 1 && state().plugin->complete_sends() != 0) throw SolverError("MPI_Wait for a sent message failed");
 }
 
 void abort_all(int exit_code) {

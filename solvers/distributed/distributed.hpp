@@ -40,14 +40,23 @@ inline int owner_of(std::size_t run) { return static_cast<int>(run % static_cast
 void set_shared_solves(bool shared);
 bool shared_solves();
 
-// Solves shared by every rank so far (a run under mpirun with none computed the same on each).
-void count_shared_solve();
-int shared_solve_count();
+// Work shared by the ranks of one case so far (an eigensolve over every rank, force levels shared
+// out); a run under mpirun with none computed the same on each rank.
+void count_shared_work();
+int shared_work_count();
 
 // Element-wise maximum over the ranks; unchanged without MPI.
 void max_over_ranks(std::vector<int>& values);
 // Every rank's `mine`, in rank order, on every rank; {mine} without MPI.
 std::vector<std::string> gather_from_all(const std::string& mine);
+// Point to point, for runs that hand a result on to the next (a force level's first solution to the
+// rank of the next level). `bytes` go to rank `to` without waiting for their receipt; receive_from
+// waits for the next message from `from` with `tag`; complete_sends waits until every message this
+// rank sent has been received. MPI calls only from the thread that started MPI.
+void send_to(int to, int tag, const std::string& bytes);
+std::string receive_from(int from, int tag);
+void complete_sends();
+
 // Every rank stops with this exit code (mpirun reports it); returns only without MPI.
 void abort_all(int exit_code);
 

@@ -12,7 +12,7 @@
 extern "C" {
 #endif
 
-#define BB_PLUGIN_ABI_VERSION 3
+#define BB_PLUGIN_ABI_VERSION 4
 
 /* Upper triangle (column >= row) of a symmetric matrix, row by row, on every rank whole. */
 typedef struct {
@@ -60,6 +60,13 @@ typedef struct {
   int (*allgather_sizes)(int64_t mine, int64_t* all);
   int (*allgather_bytes)(const char* mine, int64_t mine_size, const int64_t* sizes, char* all);
   void (*abort_all)(int exit_code);
+  /* Bytes to one rank without waiting for their receipt (the plugin keeps a copy until complete_sends). */
+  int (*send_bytes)(int to, int tag, const char* bytes, int64_t size);
+  /* The size of the next message from `from` with `tag` (waits for it), then the message itself. */
+  int (*probe_bytes)(int from, int tag, int64_t* size);
+  int (*receive_bytes)(int from, int tag, char* bytes, int64_t size);
+  /* Waits until every message this rank sent has been received. */
+  int (*complete_sends)(void);
   /* 0 on success; otherwise the message says why (PETSc's error text, or a count that disagrees). */
   int (*modes)(const bb_upper_csr* stiffness, const bb_upper_csr* mass, const bb_modes_request* request,
                bb_modes_result* result, char* message, size_t message_size);

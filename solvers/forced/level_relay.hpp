@@ -22,14 +22,23 @@ struct LevelStart {
 // Levels are handed to workers in list order (common/parallel_indices.hpp), so a level waits only
 // for one that has started; every level must publish once (LevelRelay::Guard makes sure), or its
 // successor would wait for ever.
+// Over MPI ranks (level i on rank i % ranks, each rank's levels in order on the thread that started
+// MPI), a start whose successor belongs to another rank is sent there, and one whose predecessor
+// does is received from it.
 class LevelRelay {
  public:
-  explicit LevelRelay(std::size_t levels) : published_(levels, false), starts_(levels) {}
+  enum class Scope { threads, ranks };
+  explicit LevelRelay(std::size_t levels, Scope scope = Scope::threads)
+      : scope_(scope), published_(levels, false), starts_(levels) {}
 
   // The first solution of level - 1, once it has one or has ended without; none for level 0.
-  std::optional<LevelStart> from_neighbour(std::size_t level) const;
+  std::optional<LevelStart> from_neighbour(std::size_t level);
   // The first call for a level counts, later ones are ignored.
   void publish(std::size_t level, std::optional<LevelStart> start);
+  // Over ranks, once this rank's levels have ended: receives what was sent to a level of this rank
+  // that never asked (it stopped before its first point), so that no message outlives the relay;
+  // then waits until this rank's own messages have been received.
+  void finish();
 
   // Publishes "no solution" for a level that ends (or throws) without having published.
   class Guard {
@@ -37,7 +46,7 @@ class LevelRelay {
     Guard(LevelRelay& relay, std::size_t level) : relay_(relay), level_(level) {}
     Guard(const Guard&) = delete;
     Guard& operator=(const Guard&) = delete;
-    ~Guard() { relay_.publish(level_, std::nullopt); }
+    ~Guard();
 
    private:
     LevelRelay& relay_;
@@ -45,8 +54,10 @@ class LevelRelay {
   };
 
  private:
-  mutable std::mutex mutex_;
-  mutable std::condition_variable changed_;
+  bool remote(std::size_t level) const;  // over ranks: level belongs to another rank
+  Scope scope_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
   std::vector<bool> published_;
   std::vector<std::optional<LevelStart>> starts_;
 };

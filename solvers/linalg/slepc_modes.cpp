@@ -76,7 +76,7 @@ void run(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix
          const bb_modes_request& request, Result& out, const std::string& what) {
   const UpperRows k = upper_rows(stiffness), m = upper_rows(mass);
   const bb_upper_csr kv = k.view(), mv = m.view();
-  if (request.world) distributed::count_shared_solve();
+  if (request.world) distributed::count_shared_work();
   char message[1024] = "fault injected by BLADEBENCH_FAULT_RANK";
   const int status = fault_injected() ? 1 : slepc().modes(&kv, &mv, &request, &out.raw, message, sizeof message);
   stop_on_failure(status, what, message);
@@ -214,7 +214,7 @@ Eigen::MatrixXd slepc_solve_spd(const Eigen::SparseMatrix<double>& a, const Eige
   const UpperRows u = upper_rows(a);
   const bb_upper_csr view = u.view();
   Eigen::MatrixXd x(b.rows(), b.cols());
-  if (distributed::shared_solves()) distributed::count_shared_solve();
+  if (distributed::shared_solves()) distributed::count_shared_work();
   char message[1024] = {0};
   const int status = slepc().solve_spd(&view, b.data(), b.cols(), distributed::shared_solves() ? 1 : 0, x.data(),
                                        message, sizeof message);

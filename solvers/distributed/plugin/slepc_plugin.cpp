@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <list>
 #include <string>
 #include <vector>
 
@@ -124,6 +125,49 @@ int allgather_bytes(const char* mine, int64_t mine_size, const int64_t* sizes, c
 }
 
 void abort_all(int exit_code) { MPI_Abort(MPI_COMM_WORLD, exit_code); }
+
+// Messages sent and not yet known to be received, with their bytes (std::list: the buffers stay put).
+struct PendingSend {
+  std::vector<char> bytes;
+  MPI_Request request = MPI_REQUEST_NULL;
+};
+std::list<PendingSend>& pending_sends() {
+  static std::list<PendingSend> pending;
+  return pending;
+}
+
+int send_bytes(int to, int tag, const char* bytes, int64_t size) {
+  if (size > INT32_MAX) return 1;  // MPI's counts are int
+  PendingSend& s = pending_sends().emplace_back();
+  s.bytes.assign(bytes, bytes + size);
+  return MPI_Isend(s.bytes.data(), static_cast<int>(size), MPI_CHAR, to, tag, MPI_COMM_WORLD, &s.request) == MPI_SUCCESS
+             ? 0
+             : 1;
+}
+
+int probe_bytes(int from, int tag, int64_t* size) {
+  MPI_Status status;
+  if (MPI_Probe(from, tag, MPI_COMM_WORLD, &status) != MPI_SUCCESS) return 1;
+  int count = 0;
+  if (MPI_Get_count(&status, MPI_CHAR, &count) != MPI_SUCCESS) return 1;
+  *size = count;
+  return 0;
+}
+
+int receive_bytes(int from, int tag, char* bytes, int64_t size) {
+  if (size > INT32_MAX) return 1;
+  return MPI_Recv(bytes, static_cast<int>(size), MPI_CHAR, from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE) == MPI_SUCCESS
+             ? 0
+             : 1;
+}
+
+int complete_sends() {
+  int failed = 0;
+  for (PendingSend& s : pending_sends())
+    if (MPI_Wait(&s.request, MPI_STATUS_IGNORE) != MPI_SUCCESS) failed = 1;
+  pending_sends().clear();
+  return failed;
+}
 
 // PETSc's default row split: the first n % p ranks take one row more.
 void owned_rows(MPI_Comm comm, int64_t n, int64_t* first, int64_t* count) {
@@ -336,6 +380,10 @@ const bb_plugin the_plugin = {.abi_version = BB_PLUGIN_ABI_VERSION,
                               .allgather_sizes = allgather_sizes,
                               .allgather_bytes = allgather_bytes,
                               .abort_all = abort_all,
+                              .send_bytes = send_bytes,
+                              .probe_bytes = probe_bytes,
+                              .receive_bytes = receive_bytes,
+                              .complete_sends = complete_sends,
                               .modes = modes,
                               .solve_spd = solve_spd,
                               .free_result = free_result};

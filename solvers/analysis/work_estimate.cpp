@@ -122,11 +122,15 @@ WorkEstimate analysis_work(const TimeSpec& t, const Model& model) {
 
 WorkEstimate analysis_work(const ContactLoopSpec&, const Model&) { return {}; }
 
+WorkEstimate analysis_work(const ModalSpec& s, const Model& model) {
+  return estimate_mesh_work(model, s.options.out_of_core);
+}
+
 // Each nodal diameter (at each speed) factors a real problem of up to twice the sector (the
 // cosine and sine parts): twice the memory, 4x the flops of the mesh's; the whole structure of N
 // sectors, N times the unknowns (flops as n^2, memory as n^(4/3), estimate_mesh_work's 3D laws).
 WorkEstimate analysis_work(const CyclicModalSpec& s, const Model& model) {
-  const WorkEstimate mesh = estimate_mesh_work(model);
+  const WorkEstimate mesh = estimate_mesh_work(model, s.options.out_of_core);
   const double diameters =
       s.nodal_diameters.empty() ? std::floor(s.sectors / 2.0) + 1.0 : static_cast<double>(s.nodal_diameters.size());
   const double speeds = static_cast<double>(std::max<size_t>(s.speeds_rpm.size(), 1));
@@ -152,7 +156,11 @@ WorkEstimate analysis_work(const Spec&, const Model& model) {
 
 }  // namespace
 
-WorkEstimate estimate_mesh_work(const Model& model) {
+// Out of core, the share of the factors MUMPS holds in memory at once (its active fronts and the
+// blocks it reads back), from the two-blade article at 1.28 M DOFs (bench/README.md).
+constexpr double kOutOfCoreFactorShare = 0.25;
+
+WorkEstimate estimate_mesh_work(const Model& model, bool factors_out_of_core) {
   const Mesh& mesh = model.mesh;
   const double n = static_cast<double>(mesh.n_nodes()) * mesh.dim;
   if (n < 1.0 || mesh.blocks.empty()) return {};
@@ -164,9 +172,9 @@ WorkEstimate estimate_mesh_work(const Model& model) {
   WorkEstimate e;
   e.operations = flops;
   // K and M as triplets and compressed, the factor, a few vectors per DOF.
-  e.bytes = n * row * (16.0 + 24.0) + factor * 12.0 + n * 200.0;
-  e.basis = fmt::format("{:.0f} DOFs of {} {} elements, factor about {:.3g} nonzeros", n, mesh.n_elements(),
-                        element_name(mesh.blocks.front().type), factor);
+  e.bytes = n * row * (16.0 + 24.0) + factor * 12.0 * (factors_out_of_core ? kOutOfCoreFactorShare : 1.0) + n * 200.0;
+  e.basis = fmt::format("{:.0f} DOFs of {} {} elements, factor about {:.3g} nonzeros{}", n, mesh.n_elements(),
+                        element_name(mesh.blocks.front().type), factor, factors_out_of_core ? " (out of core)" : "");
   e.key = "mesh";
   return e;
 }

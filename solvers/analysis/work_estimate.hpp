@@ -10,7 +10,9 @@ namespace bb {
 
 // The factorization of the mesh's stiffness (sparse Cholesky, nested-dissection fill): what the
 // static, modal, FRF and reduction solves of a mesh cost at least. Zero for an empty mesh.
-WorkEstimate estimate_mesh_work(const Model& model);
+// `factors_out_of_core`: MUMPS keeps the factors on disk (ModalOptions::out_of_core), and only
+// the share of them it works on at once counts in memory.
+WorkEstimate estimate_mesh_work(const Model& model, bool factors_out_of_core = false);
 
 // The analysis's own estimate (the mesh's, plus sweeps, steps, harmonics and samples); the
 // larger of memory and operations decide. A rotating analysis bounds its steps itself, once its

@@ -24,4 +24,13 @@ Eigensolver parse_eigensolver(TomlReader& r) {
   return Eigensolver::slepc;
 }
 
+bool parse_out_of_core(TomlReader& r, Eigensolver eigensolver) {
+  const bool out_of_core = r.boolean("out_of_core", false);
+  if (out_of_core && eigensolver != Eigensolver::slepc)
+    r.fail("out_of_core",
+           "needs eigensolver = \"slepc\" (MUMPS keeps its factors on disk; the default eigensolver's CHOLMOD "
+           "factor stays in memory)");
+  return out_of_core;
+}
+
 }  // namespace bb

@@ -16,6 +16,8 @@ Direction parse_direction(TomlReader& r, const std::string& key, const std::stri
 LoadSplit parse_split(TomlReader& r, const std::string& key);
 // `eigensolver = "spectra" | "slepc"` (default spectra); slepc in a build without it is refused here.
 Eigensolver parse_eigensolver(TomlReader& r);
+// `out_of_core = true | false` (default false), only with eigensolver = "slepc".
+bool parse_out_of_core(TomlReader& r, Eigensolver eigensolver);
 
 // fn(reader) for each [[key]] table of `top`; a non-table entry is an error.
 template <typename Fn>

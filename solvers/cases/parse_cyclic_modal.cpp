@@ -35,6 +35,7 @@ CyclicModalSpec parse_cyclic_modal(TomlReader& r) {
   if (!(s.options.tolerance > 0.0 && s.options.tolerance < 1.0))
     r.fail("tolerance", fmt::format("must lie in (0, 1) (a relative eigen-residual), found {}", s.options.tolerance));
   s.options.eigensolver = parse_eigensolver(r);
+  s.options.out_of_core = parse_out_of_core(r, s.options.eigensolver);
   s.whole = r.boolean("whole", false);
   if (const auto n = r.optional_integer("threads")) {
     if (*n < 1 || *n > 256)

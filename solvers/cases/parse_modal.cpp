@@ -23,6 +23,7 @@ ModalSpec parse_modal(TomlReader& r) {
   a.options.shift_frequency_hz = r.optional_number("shift_hz").value_or(a.options.shift_frequency_hz);
   a.options.tolerance = r.optional_number("tolerance").value_or(a.options.tolerance);
   a.options.eigensolver = parse_eigensolver(r);
+  a.options.out_of_core = parse_out_of_core(r, a.options.eigensolver);
   if (!(a.options.tolerance > 0.0 && a.options.tolerance < 1.0))
     r.fail("tolerance", fmt::format("must lie in (0, 1) (a relative eigen-residual), found {}", a.options.tolerance));
   a.pairs = parse_mode_pairs(r);

@@ -29,6 +29,7 @@ typedef struct {
   int n_estimate;     /* > 0: no slicing; the n eigenvalues nearest `lower` by shift-invert (estimates of a band top) */
   double tolerance;   /* relative residual */
   int max_iterations;
+  int out_of_core;    /* 1: MUMPS keeps its factors on disk (ICNTL(22) = 1) */
 } bb_modes_request;
 
 typedef struct {

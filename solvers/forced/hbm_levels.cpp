@@ -88,7 +88,7 @@ std::vector<HbmLevel> sweep_over_ranks(const PreparedHbm& prepared, const HbmSpe
   if (distributed::is_root() && static_cast<size_t>(ranks) > n)
     std::fprintf(stderr, "warning: %d MPI ranks for %zu force levels: %zu ranks sweep none\n", ranks, n,
                  static_cast<size_t>(ranks) - n);
-  distributed::count_shared_work();
+  if (n > 1) distributed::count_shared_work();
   std::vector<std::string> mine;
   {
     const SolvesOnThisRank scope;

@@ -21,6 +21,9 @@ enum class Eigensolver { spectra, slepc };
 struct ModalOptions {
   int n_modes = 6;
   Eigensolver eigensolver = Eigensolver::spectra;
+  // slepc: MUMPS writes its factors to disk (MUMPS_OOC_TMPDIR, else /tmp) and reads them back at
+  // every solve, for a mesh whose factors do not fit in memory; the same modes, more time.
+  bool out_of_core = false;
   // Shift sigma = -(2 pi f)^2 < 0 keeps K - sigma M positive definite for any K >= 0, so one
   // Cholesky factor serves, rigid-body modes included.
   double shift_frequency_hz = 1.0;

@@ -92,6 +92,7 @@ bb_modes_request request_for(const ModalOptions& options) {
   r.lower = -std::pow(2 * std::numbers::pi * options.shift_frequency_hz, 2);
   r.tolerance = options.tolerance;
   r.max_iterations = options.max_iterations;
+  r.out_of_core = options.out_of_core ? 1 : 0;
   return r;
 }
 

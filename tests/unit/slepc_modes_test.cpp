@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdlib>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "common/errors.hpp"
@@ -82,6 +84,30 @@ TEST(SlepcModes, AgreesWithTheDefaultEigensolverToTheLastDigitsItResolves) {
     EXPECT_NEAR(std::abs(a.shapes.col(j).dot(m * b.shapes.col(j))), 1.0, 1e-8);  // same shape up to sign
   }
   EXPECT_EQ(a.sturm_count, b.sturm_count);
+}
+
+// Out of core, MUMPS writes its factors to MUMPS_OOC_TMPDIR and reads them back at every solve:
+// the same factors, so the same modes and count as in memory. A folder that does not exist makes
+// the out-of-core solve fail (and only it): the key reaches MUMPS.
+TEST(SlepcModes, OutOfCoreFactorsGiveTheModesInMemoryGives) {
+  SKIP_WITHOUT_SLEPC();
+  Sparse k, m;
+  chain(300, 1, k, m);
+  ModalOptions on_disk = slepc_options(8);
+  on_disk.out_of_core = true;
+  const ModalSolution a = lowest_modes(k, m, slepc_options(8)), b = lowest_modes(k, m, on_disk);
+  ASSERT_EQ(a.eigenvalues.size(), b.eigenvalues.size());
+  for (Eigen::Index j = 0; j < a.eigenvalues.size(); ++j) EXPECT_NEAR(b.eigenvalues[j] / a.eigenvalues[j], 1.0, 1e-13);
+  EXPECT_EQ(a.sturm_count, b.sturm_count);
+  const char* before = std::getenv("MUMPS_OOC_TMPDIR");
+  const std::string kept = before ? before : "";
+  ::setenv("MUMPS_OOC_TMPDIR", "/nonexistent/bladebench-ooc", 1);
+  EXPECT_THROW((void)lowest_modes(k, m, on_disk), SolverError);
+  EXPECT_NO_THROW((void)lowest_modes(k, m, slepc_options(8)));
+  if (before)
+    ::setenv("MUMPS_OOC_TMPDIR", kept.c_str(), 1);
+  else
+    ::unsetenv("MUMPS_OOC_TMPDIR");
 }
 
 TEST(SlepcModes, ARepeatedEigenvalueThatStraddlesTheCountComesBackWhole) {

@@ -23,6 +23,7 @@
 #include "oscillator_case.hpp"
 #include "pipeline/run_case.hpp"
 #include "temp_folder.hpp"
+#include "two_blades_case.hpp"
 
 namespace bb {
 namespace {
@@ -38,37 +39,6 @@ std::string oscillator_case(const std::string& mu, const std::string& levels,
   c.tolerance = "1e-12";
   return test::oscillator_case_text(c);
 }
-
-// Two 1 kg blades, each grounded by k = 1e6 N/m, coupled by kc = 1e5 N/m and by a contact on
-// q_A - q_B (kt = 2e5 N/m, mu = 0.3, n0 = 20 N), forced on B.
-constexpr const char* kBladesCase = R"(
-[case]
-name = "blades"
-[analysis]
-type = "hbm"
-frequency_hz = [140.0, 215.0]
-step_hz = 0.2
-harmonics = 1
-time_samples = 128
-tolerance = 1e-12
-modal_damping = 0.01
-forces = [{ dof = "B.x", amplitude = 1.0 }]
-force_levels = [0.01, 10.0, 1000.0]
-responses = ["B.x", "A.x"]
-ip_oop = { left = "A.x", right = "B.x" }
-[analysis.model]
-name = "blades"
-dofs = ["A.x", "B.x"]
-stiffness = [[1.1e6, -1.0e5], [-1.0e5, 1.1e6]]
-mass = [[1.0, 0.0], [0.0, 1.0]]
-[[analysis.contact]]
-name = "platform"
-tangential = { "A.x" = 1.0, "B.x" = -1.0 }
-kn = 1.0e6
-kt = 2.0e5
-mu = 0.3
-n0 = 20.0
-)";
 
 // Peak of |1 / (k - w^2 m + i w c)| with c = 2 zeta sqrt(k_mode m) (the damping of the mode, here
 // the free one): (frequency [Hz], amplitude per newton).
@@ -140,7 +110,7 @@ TEST_F(HbmAnalysis, FrictionlessContactGivesTheFreeLinearOscillatorAtEveryLevel)
 
 TEST_F(HbmAnalysis, EnergyBalancesAtEveryPeakFromStuckToGrossSlip) {
   for (const std::string& text :
-       {oscillator_case("0.3", "[0.01, 1.0, 3.0, 10.0, 100.0, 10000.0]"), std::string(kBladesCase)}) {
+       {oscillator_case("0.3", "[0.01, 1.0, 3.0, 10.0, 100.0, 10000.0]"), std::string(test::kTwoBladesCase)}) {
     const HbmOutcome o = run(text);
     const ResultTable& t = o.tables.at("energy_balance");
     const int expected = static_cast<int>(o.levels.size()) * (o.prepared.ip_oop ? 2 : 1);
@@ -162,7 +132,7 @@ TEST_F(HbmAnalysis, EnergyBalancesAtEveryPeakFromStuckToGrossSlip) {
 // next level in list order: swept on three threads they give the tables of the serial run, every
 // bit (timings aside).
 TEST_F(HbmAnalysis, LevelsSweptInParallelAreTheSerialRunBitForBit) {
-  std::string text = kBladesCase;
+  std::string text = test::kTwoBladesCase;
   text.replace(text.find("harmonics = 1\n"), 14, "harmonics = 1\nthreads = 1\n");
   const HbmOutcome serial = run(text);
   std::string parallel_text = text;
@@ -189,7 +159,7 @@ TEST_F(HbmAnalysis, LevelsSweptInParallelAreTheSerialRunBitForBit) {
 // given the very solution, the first point takes no Newton iteration and is that solution, where
 // the static start needs some (stick-slip at the first frequency, H = 5).
 TEST_F(HbmAnalysis, AFirstPointStartsFromThePreviousLevelsSolution) {
-  std::string text = kBladesCase;
+  std::string text = test::kTwoBladesCase;
   text.replace(text.find("harmonics = 1\n"), 14, "harmonics = 5\n");
   text.replace(text.find("force_levels = [0.01, 10.0, 1000.0]"), 35, "force_levels = [45.0]");
   const CaseSpec spec = parse_case_file(write(text));
@@ -210,7 +180,7 @@ TEST_F(HbmAnalysis, AFirstPointStartsFromThePreviousLevelsSolution) {
 TEST_F(HbmAnalysis, InPhasePeakOfSymmetricBladesIsTheClosedFormAtEveryLevel) {
   // a_t = (1, -1) is orthogonal to the IP mode (1, 1) and M, C, K are diagonal in (IP, OOP): the IP
   // component (q_A + q_B) / 2 is (F / 2m) / (w1^2 - w^2 + 2 i zeta w1 w), w1^2 = k / m, at any level.
-  const HbmOutcome o = run(kBladesCase);
+  const HbmOutcome o = run(test::kTwoBladesCase);
   const double c_ip = 2 * 0.01 * std::sqrt(1.0e6 * 1.0);
   const auto [ip_hz, per_n] = linear_peak(1.0e6, 1.0, c_ip);
   ASSERT_EQ(o.levels.size(), 3u);

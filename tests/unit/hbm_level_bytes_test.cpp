@@ -13,46 +13,30 @@
 #include "cases/case_spec.hpp"
 #include "model/build_model.hpp"
 #include "temp_folder.hpp"
+#include "two_blades_case.hpp"
 
 namespace bb {
 namespace {
 
-// Two blades coupled by a friction contact (stick to gross slip over the levels), H = 3, with the
-// Floquet exponents of every path point and a second response: every optional part of a level set.
-constexpr const char* kBladesCase = R"(
-[case]
-name = "blades"
-[analysis]
-type = "hbm"
-frequency_hz = [150.0, 200.0]
-step_hz = 1.0
-harmonics = 3
-time_samples = 64
-tolerance = 1e-10
-modal_damping = 0.01
-stability = "path"
-forces = [{ dof = "B.x", amplitude = 1.0 }]
-force_levels = [5.0, 200.0]
-responses = ["B.x", "A.x"]
-ip_oop = { left = "A.x", right = "B.x" }
-[analysis.model]
-name = "blades"
-dofs = ["A.x", "B.x"]
-stiffness = [[1.1e6, -1.0e5], [-1.0e5, 1.1e6]]
-mass = [[1.0, 0.0], [0.0, 1.0]]
-[[analysis.contact]]
-name = "platform"
-tangential = { "A.x" = 1.0, "B.x" = -1.0 }
-kn = 1.0e6
-kt = 2.0e5
-mu = 0.3
-n0 = 20.0
-)";
+// The two blades at H = 3 over a narrower band, with the Floquet exponents of every path point:
+// every optional part of a level set.
+std::string blades_case() {
+  std::string text = test::kTwoBladesCase;
+  const auto swap = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  swap("frequency_hz = [140.0, 215.0]", "frequency_hz = [150.0, 200.0]");
+  swap("step_hz = 0.2", "step_hz = 1.0");
+  swap("harmonics = 1\n", "harmonics = 3\nstability = \"path\"\n");
+  swap("time_samples = 128", "time_samples = 64");
+  swap("force_levels = [0.01, 10.0, 1000.0]", "force_levels = [5.0, 200.0]");
+  return text;
+}
 
 class HbmLevelBytes : public test::TempFolderTest {};
 
 TEST_F(HbmLevelBytes, ALevelReadBackIsTheLevelWrittenBitForBit) {
-  const CaseSpec spec = parse_case_file(write(kBladesCase));
+  const CaseSpec spec = parse_case_file(write(blades_case()));
   const HbmOutcome o = run_hbm(build_model(spec.model), std::get<HbmSpec>(spec.analysis));
   ASSERT_EQ(o.levels.size(), 2u);
   for (const HbmLevel& level : o.levels) {

@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/run_time_module.hpp"
+#include "distributed/plugin.hpp"
 
 namespace bb::distributed {
 namespace {

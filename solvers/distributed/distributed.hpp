@@ -1,20 +1,14 @@
-// Work beyond one process: the PETSc/SLEPc plugin (distributed/plugin_abi.h), loaded on first use
-// or at start-up under mpirun, and what a run needs to know of its ranks.
+// Work beyond one process: MPI start-up under mpirun and what a run needs to know of its ranks
+// (the PETSc/SLEPc plugin itself: distributed/plugin.hpp, for the solves that call it).
 #pragma once
 #include <cstddef>
 #include <string>
 #include <vector>
 
-#include "distributed/plugin_abi.h"
-
 namespace bb::distributed {
 
 // Whether this build has the plugin (CMake found PETSc and SLEPc).
 bool built_with_slepc();
-
-// The plugin, started; InputError naming `what_needs_it` and how to get it when this build has no
-// plugin, SolverError when it cannot be loaded or MPI and PETSc cannot start.
-const bb_plugin& plugin(const std::string& what_needs_it);
 
 // Whether this process was started by mpirun / mpiexec (Open MPI, MPICH or PMIx environment).
 bool launched_by_mpi();

@@ -13,6 +13,7 @@
 
 #include "common/errors.hpp"
 #include "distributed/distributed.hpp"
+#include "distributed/plugin.hpp"
 #include "linalg/modal_cut.hpp"
 #include "linalg/modal_residual.hpp"
 

@@ -74,10 +74,13 @@ std::string swept_or_error(const std::function<HbmLevel()>& sweep) {
 // Eigensolves inside a level belong to that level's rank alone while the ranks share out levels.
 class SolvesOnThisRank {
  public:
-  SolvesOnThisRank() { distributed::set_shared_solves(false); }
+  SolvesOnThisRank() : before_(distributed::shared_solves()) { distributed::set_shared_solves(false); }
   SolvesOnThisRank(const SolvesOnThisRank&) = delete;
   SolvesOnThisRank& operator=(const SolvesOnThisRank&) = delete;
-  ~SolvesOnThisRank() { distributed::set_shared_solves(true); }
+  ~SolvesOnThisRank() { distributed::set_shared_solves(before_); }
+
+ private:
+  bool before_;
 };
 
 // Level i on rank i % ranks, each rank's in order on its one thread (MPI is started funneled); then

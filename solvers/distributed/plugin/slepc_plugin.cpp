@@ -250,6 +250,8 @@ int modes(const bb_upper_csr* stiffness, const bb_upper_csr* mass, const bb_mode
   // definite mass it cost Table VI's vectors two orders of backward error (3.4e-13 against 8.7e-16)
   // and 10 % of the time.
   BB_TRY(EPSSetPurify(eps, PETSC_FALSE));
+  // Set on every call: the options database is global and outlives it; the case's out_of_core
+  // decides, over any PETSC_OPTIONS value of the same option.
   BB_TRY(PetscOptionsSetValue(nullptr, "-bb_st_mat_mumps_icntl_22", request->out_of_core ? "1" : "0"));
   BB_TRY(EPSSetFromOptions(eps));
   BB_TRY(EPSSolve(eps));

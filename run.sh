@@ -2,7 +2,7 @@
 # bladebench's two set-up commands (see README.md):
 #   ./run.sh all   install missing packages, build Release, run every case (with studies), write reports/
 #   ./run.sh test  install missing packages, build Release, run the default test set (ctest, no 'study'
-#                  label), then build with AddressSanitizer + UBSan and run the unit and bad-input tests
+#                  label), then build with AddressSanitizer + UBSan (clang) and run the unit and bad-input tests
 # Extra: ./run.sh asan  only the sanitizer part of 'test'.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -10,6 +10,7 @@ cd "$(dirname "$0")"
 PACKAGES=(build-essential cmake pkg-config libeigen3-dev libspectra-dev libtomlplusplus-dev libfccp-dev
           libceres-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev
           libbenchmark-dev gnuplot-nox libcmark-gfm-dev libcmark-gfm-extensions-dev libxxhash-dev chromium ccache
+          clang libclang-rt-14-dev
           pybind11-dev python3-dev python3-numpy python3-pytest
           libslepc-real-dev libpetsc-real-dev openmpi-bin)
 

@@ -4,7 +4,9 @@
 // dense matrices), and one way to split and trim a CSV line.
 #pragma once
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__)            // a GCC-only warning (clang has no such group)
 #pragma GCC diagnostic ignored "-Wstringop-truncation"  // inside libfccp's error-message copy
+#endif
 #include <libfccp/csv.h>
 #pragma GCC diagnostic pop
 

@@ -183,7 +183,8 @@ double energy_scale(const detail::Dynamics& d, const RotationProfile& rotation, 
 void record(FfrfHistory& h, const Eigen::MatrixXd& rows, const detail::StepState& s, double alpha,
             const detail::Snapshot& snap, const Ledger& ledger, double torque) {
   h.time.push_back(s.t);
-  h.displacement.row(static_cast<Eigen::Index>(h.time.size()) - 1) = (rows * s.q).transpose();
+  if (h.displacement.cols() > 0)  // a row of a matrix without columns is offset from a null pointer
+    h.displacement.row(static_cast<Eigen::Index>(h.time.size()) - 1) = (rows * s.q).transpose();
   h.angle.push_back(s.theta);
   h.speed.push_back(s.omega);
   h.acceleration.push_back(alpha);

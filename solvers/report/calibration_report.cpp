@@ -337,8 +337,9 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     md << "\n## Fitted curves over the data\n\n";
     for (const CalibrationData& d : o.spec.data)
       for (const auto& [column, result] : d.columns) {
+        const std::string& quantity = column;  // clang 14 cannot capture a structured binding (P1091)
         const bool fitted = std::any_of(o.after.begin(), o.after.end(),
-                                        [&](const FitPoint& p) { return p.set == d.name && p.quantity == column; });
+                                        [&](const FitPoint& p) { return p.set == d.name && p.quantity == quantity; });
         if ((column == "force" && !fitted) || (column == "frequency" && d.data.kind != DataKind::peaks) ||
             column == "relative_displacement" || (column == "amplitude" && !fitted))
           continue;

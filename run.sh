@@ -31,7 +31,13 @@ ensure_packages() {
 }
 
 build() {
-  cmake --preset "$1" >/dev/null
+  local out
+  out=$(cmake --preset "$1" 2>&1) || { echo "$out" >&2; exit 1; }
+  # A tree configured with another compiler (GCC before 2026-11-29): CMake deletes its cache and
+  # configures without the preset's variables (the asan tree without sanitizers); once more sets them.
+  if grep -q "require your cache to be deleted" <<<"$out"; then
+    cmake --preset "$1" >/dev/null
+  fi
   cmake --build --preset "$1" -j "$(nproc)"
 }
 

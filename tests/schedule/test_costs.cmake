@@ -3,8 +3,7 @@
 # a fresh clone (CI) does not have: there the declaration order held a 144-s test until late and
 # left a core idle at the end while the RUN_SERIAL MPI tests waited for it. Seconds are the larger
 # of the Release and the asan tree's times on the 2-core machine on 2026-11-29; only their order
-# matters. Included by ctest after the tests it names are declared (schedule/CMakeLists.txt); a
-# name not in the run is ignored.
+# matters. Applied by apply_costs.cmake; check_costs.cmake checks that every name is a test of the tree.
 set(BB_TEST_COSTS
   SweepExtremes.AtSevenHarmonicsEverySweepReachesItsEndOrSaysWhere 144
   HbmSweepFold.ABridgeThatWandersAlongKinksIsNotTriedAgainFromTheSamePoint 75
@@ -41,11 +40,3 @@ set(BB_TEST_COSTS
   calibrate.verification.friction_oscillator_identify_uff 8
   calibrate.verification.friction_oscillator_identify_frf 8
   HbmSteppedSineTest.RigJointComesBackFromCurvesWithDriftingForce 8)
-list(LENGTH BB_TEST_COSTS bb_cost_count)
-math(EXPR bb_cost_last "${bb_cost_count} - 1")
-foreach(i RANGE 0 ${bb_cost_last} 2)
-  math(EXPR j "${i} + 1")
-  list(GET BB_TEST_COSTS ${i} bb_test)
-  list(GET BB_TEST_COSTS ${j} bb_seconds)
-  set_tests_properties(${bb_test} PROPERTIES COST ${bb_seconds})
-endforeach()

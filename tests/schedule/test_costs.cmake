@@ -2,7 +2,7 @@
 # COST it learns each test's time from a previous run (Testing/Temporary/CTestCostData.txt), which
 # a fresh clone (CI) does not have: there the declaration order held a 144-s test until late and
 # left a core idle at the end while the RUN_SERIAL MPI tests waited for it. Seconds are the larger
-# of the Release and the asan tree's times on the 2-core machine on 2026-11-29; only their order
+# of the GCC Release and asan trees' recorded times on the 2-core machine, 2026-11-29; only their order
 # matters. Applied by apply_costs.cmake; check_costs.cmake checks that every name is a test of the tree.
 set(BB_TEST_COSTS
   SweepExtremes.AtSevenHarmonicsEverySweepReachesItsEndOrSaysWhere 144

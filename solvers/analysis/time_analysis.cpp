@@ -25,28 +25,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 
-// The largest relative span, (max - min) / max, over the last periods of the first-harmonic
-// amplitudes the peaks are read from: the IP and OOP components of the pair, else the responses.
-double peak_quantity_span(const timeint::SteadyState& s, const TrackedDofs& tracked, Index responses) {
-  const Eigen::MatrixXcd& z = s.period_harmonics;
-  if (z.rows() == 0 || z.cols() != static_cast<Index>(tracked.dofs.size())) return kNan;
-  Eigen::MatrixXd amplitude;
-  if (tracked.pair) {
-    const Eigen::VectorXcd left = z.col(tracked.pair->first), right = z.col(tracked.pair->second);
-    amplitude.resize(z.rows(), 2);
-    amplitude.col(0) = (left + right).cwiseAbs() / 2;
-    amplitude.col(1) = (right - left).cwiseAbs() / 2;
-  } else {
-    amplitude = z.leftCols(responses).cwiseAbs();
-  }
-  double span = 0.0;
-  for (Index j = 0; j < amplitude.cols(); ++j) {
-    const double top = amplitude.col(j).maxCoeff();
-    if (top > 0.0) span = std::max(span, 1.0 - amplitude.col(j).minCoeff() / top);
-  }
-  return span;
-}
-
 // The stepped sine of one force level: the steady state at each grid frequency, each starting from
 // the previous one's final state.
 void stepped_sine(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const friction::FrictionModel& m,
@@ -122,7 +100,7 @@ TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint:
     level.hbm = sweep_hbm_level(p, h, force, spec.compare_harmonics);
   }
   if (spec.method == TimeSpec::Method::shooting)
-    periodic_sweep(level, p, spec, m, tracked, nr, progress);
+    periodic_sweep(level, p, spec, m, tracked, nr, options, progress);
   else
     stepped_sine(level, p, spec, m, options, tracked, progress);
   linear_on_grid(level, p, m, tracked.pair.has_value());
@@ -178,6 +156,26 @@ bool store_first_harmonics(TimeLevel& level, Index i, const Eigen::MatrixXd& coe
     level.components(i, 1) = std::abs(z[pair->second] - z[pair->first]) / 2;
   }
   return true;
+}
+
+double peak_quantity_span(const timeint::SteadyState& s, const TrackedDofs& tracked, Index responses) {
+  const Eigen::MatrixXcd& z = s.period_harmonics;
+  if (z.rows() == 0 || z.cols() != static_cast<Index>(tracked.dofs.size())) return kNan;
+  Eigen::MatrixXd amplitude;
+  if (tracked.pair) {
+    const Eigen::VectorXcd left = z.col(tracked.pair->first), right = z.col(tracked.pair->second);
+    amplitude.resize(z.rows(), 2);
+    amplitude.col(0) = (left + right).cwiseAbs() / 2;
+    amplitude.col(1) = (right - left).cwiseAbs() / 2;
+  } else {
+    amplitude = z.leftCols(responses).cwiseAbs();
+  }
+  double span = 0.0;
+  for (Index j = 0; j < amplitude.cols(); ++j) {
+    const double top = amplitude.col(j).maxCoeff();
+    if (top > 0.0) span = std::max(span, 1.0 - amplitude.col(j).minCoeff() / top);
+  }
+  return span;
 }
 
 TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress& progress,

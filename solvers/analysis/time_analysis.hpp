@@ -24,7 +24,7 @@ struct TimeLevel {
   std::vector<int> cycles;           // periods integrated per frequency
   std::vector<bool> steady;          // the cycle-to-cycle criterion was met (shooting: Newton converged)
   std::vector<std::string> failure;  // per frequency, why it is not steady (shooting: |R|, iterations)
-  // Stepped sine only, per frequency: the last cycle-to-cycle change, the periods after which the
+  // Where marched (marches()), per frequency: the last cycle-to-cycle change, the periods after which the
   // motion repeats (timeint::SteadyState::period_multiple), each response's range of first-harmonic
   // amplitude over the last periods (frequencies x responses) [m], and the largest relative span
   // of that range over the tracked DOFs ((max - min) / max).
@@ -60,6 +60,10 @@ struct TimeOutcome {
   // row holds NaN for that peak, and the run has no verdict. Empty: every peak stands.
   std::string failure;
 };
+
+// Whether frequencies without a steady state (newmark) or periodic solution (shooting on the Newmark
+// map) are marched: the frf table then says what their motion did (change, period, envelope).
+bool marches(const TimeSpec& spec);
 
 // Whether frequency i of a level's stepped sine, not steady, counts as steady in its first harmonic
 // (TimeSpec::envelope_tolerance): what the peaks and the report accept.

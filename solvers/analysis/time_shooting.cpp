@@ -78,15 +78,68 @@ std::optional<Eigen::VectorXd> harmonic_balance_start(const hbm::HarmonicBalance
   return x;
 }
 
+// Where Newton found no periodic solution on the Newmark map: the march from where it started
+// (the harmonic balance's solution, else the previous frequency's orbit, else the static state).
+// A march that settles gives Newton a start next to the stable orbit it found; one that does not
+// is what the model does instead, its envelope kept in the level (no stable periodic solution near
+// the start). Frequency i of `level` gets the march's change, period and envelope.
+timeint::ShootingResult march_then_shoot(TimeLevel& level, Index i, const TimeSpec& spec,
+                                         const friction::FrictionModel& model, double omega,
+                                         const timeint::ShootingOptions& options,
+                                         const timeint::SteadyStateOptions& march, const TrackedDofs& tracked,
+                                         const Start& from, const std::string& newton_failure, Start& tried) {
+  std::optional<timeint::DynamicState> begin;
+  if (from.newmark) begin = timeint::newmark_state(model, omega, *from.newmark);
+  const timeint::SteadyState m = timeint::steady_state(model, omega, march, begin);
+  const auto f = static_cast<size_t>(i);
+  level.change[f] = m.change;
+  level.period_multiple[f] = m.period_multiple;
+  if (m.envelope.rows() >= level.envelope_min.cols())
+    for (Index r = 0; r < level.envelope_min.cols(); ++r)
+      level.envelope_min(i, r) = m.envelope(r, 0), level.envelope_max(i, r) = m.envelope(r, 1);
+  level.envelope_span[f] = peak_quantity_span(m, tracked, level.envelope_min.cols());
+  timeint::ShootingResult s;
+  if (m.converged) {
+    tried = {};
+    tried.newmark = timeint::newmark_packed(m.final_state, omega);
+    s = shoot(spec, model, omega, options, tried);
+    s.steady.cycles += m.cycles;
+    if (s.steady.converged) return s;
+  }
+  s.steady = m;
+  s.steady.converged = false;
+  s.residual = std::numeric_limits<double>::quiet_NaN();
+  s.largest_multiplier = std::numeric_limits<double>::quiet_NaN();
+  s.steady.failure = fmt::format(
+      "no periodic solution found: Newton failed ({}), and the march from {} {}", newton_failure,
+      from.newmark ? "there" : "the static state",
+      m.converged ? "settled, but Newton failed from its orbit as well"
+      : m.period_multiple > 1
+          ? fmt::format("repeats every {} periods after {} (a subharmonic response)", m.period_multiple, m.cycles)
+          : fmt::format("repeats within no {} periods after {} (cycle-to-cycle change {:.3g}): its envelope "
+                        "stands for the response",
+                        march.max_period_multiple, m.cycles, m.change));
+  return s;
+}
+
 }  // namespace
 
 void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec, const friction::FrictionModel& model,
-                    const TrackedDofs& tracked, Index responses, const HbmProgress& progress) {
+                    const TrackedDofs& tracked, Index responses, const timeint::SteadyStateOptions& march,
+                    const HbmProgress& progress) {
   const auto nf = static_cast<Index>(level.frequency_hz.size());
   const timeint::ShootingOptions options = shooting_options(spec, tracked.dofs);
+  const bool newmark_map = spec.period_map == TimeSpec::PeriodMap::newmark;
   level.largest = Eigen::MatrixXd::Constant(nf, responses, std::numeric_limits<double>::quiet_NaN());
+  if (newmark_map) {  // filled where a frequency is marched
+    level.change.assign(static_cast<size_t>(nf), std::numeric_limits<double>::quiet_NaN());
+    level.period_multiple.assign(static_cast<size_t>(nf), 0);
+    level.envelope_span.assign(static_cast<size_t>(nf), std::numeric_limits<double>::quiet_NaN());
+    level.envelope_min = level.envelope_max =
+        Eigen::MatrixXd::Constant(nf, responses, std::numeric_limits<double>::quiet_NaN());
+  }
   std::optional<hbm::HarmonicBalance> balance;  // the one level.hbm was solved with, built once
-  if (spec.period_map == TimeSpec::PeriodMap::newmark && level.hbm) {
+  if (newmark_map && level.hbm) {
     HbmSpec h = spec.system;
     h.harmonics = level.hbm->harmonics;
     balance.emplace(level_system(p, h, level.hbm->force, level.hbm->harmonics, level.hbm->samples));
@@ -103,10 +156,15 @@ void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec
       tried = start;  // from the previous frequency's periodic state
       s = shoot(spec, model, kTwoPi * hz, options, tried);
     }
-    if (!s.steady.converged && (start.flow || start.newmark)) {
+    if (!s.steady.converged && newmark_map) {
+      Start from = start;
+      if (from_hbm) from.newmark = from_hbm;
+      s = march_then_shoot(level, i, spec, model, kTwoPi * hz, options, march, tracked, from, s.steady.failure, tried);
+    } else if (!s.steady.converged && (start.flow || start.newmark)) {
       tried = {};
       s = shoot(spec, model, kTwoPi * hz, options, tried);  // from the static state
     }
+    if (newmark_map && s.steady.converged) level.period_multiple[static_cast<size_t>(i)] = 1;
     level.cycles.push_back(s.steady.cycles);
     level.steady.push_back(s.steady.converged);
     level.failure.push_back(s.steady.failure);
@@ -116,7 +174,10 @@ void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec
     level.steps += static_cast<long>(s.steady.cycles) * spec.steps_per_period;
     level.newton_iterations += s.steady.total_iterations;
     level.max_step_iterations = std::max(level.max_step_iterations, static_cast<int>(s.steady.total_iterations));
-    if (s.steady.converged && store_first_harmonics(level, i, s.steady.coefficients, tracked, responses)) {
+    // A frequency without a periodic solution keeps the first harmonics of the march's last period.
+    const bool harmonics = s.steady.coefficients.rows() == static_cast<Index>(tracked.dofs.size()) &&
+                           store_first_harmonics(level, i, s.steady.coefficients, tracked, responses);
+    if (harmonics && s.steady.converged) {
       level.largest.row(i) = s.largest.head(responses).transpose();
       start = std::move(tried);
     }

@@ -43,7 +43,7 @@ std::vector<std::string> frf_columns(const PreparedHbm& p, const TimeSpec& spec,
   if (pair) frf_cols.insert(frf_cols.end(), {"ip_component_m", "oop_component_m"});
   frf_cols.insert(frf_cols.end(), {"cycles", "steady"});
   const bool shooting = spec.method == TimeSpec::Method::shooting;
-  if (!shooting) {  // what a frequency without a steady state did instead
+  if (marches(spec)) {  // what a frequency without a steady state (or periodic solution) did instead
     frf_cols.insert(frf_cols.end(), {"change", "period_multiple", "envelope_span"});
     for (const std::string& r : p.response_names) frf_cols.insert(frf_cols.end(), {r + "_env_min_m", r + "_env_max_m"});
   }
@@ -107,9 +107,12 @@ std::vector<double> cost_row(const TimeLevel& level, size_t l, const TimeSpec& s
 
 }  // namespace
 
+bool marches(const TimeSpec& spec) {
+  return spec.method == TimeSpec::Method::newmark || spec.period_map == TimeSpec::PeriodMap::newmark;
+}
+
 bool steady_first_harmonic(const TimeLevel& level, const TimeSpec& spec, Index i) {
-  return spec.method == TimeSpec::Method::newmark && spec.envelope_tolerance > 0.0 &&
-         !level.steady[static_cast<size_t>(i)] &&
+  return marches(spec) && spec.envelope_tolerance > 0.0 && !level.steady[static_cast<size_t>(i)] &&
          level.envelope_span[static_cast<size_t>(i)] <= spec.envelope_tolerance;
 }
 
@@ -142,7 +145,7 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
       if (pair) row.insert(row.end(), {level.components(i, 0), level.components(i, 1)});
       row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]),
                              level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
-      if (!shooting) {
+      if (marches(spec)) {
         row.insert(row.end(), {level.change[static_cast<size_t>(i)],
                                static_cast<double>(level.period_multiple[static_cast<size_t>(i)]),
                                level.envelope_span[static_cast<size_t>(i)]});

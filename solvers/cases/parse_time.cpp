@@ -54,11 +54,13 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     if (*n < 0 || *n > 50) r.fail("compare_harmonics", "must lie in [0, 50] (0: no harmonic-balance comparison)");
     t.compare_harmonics = static_cast<int>(*n);
   }
-  if (t.method == TimeSpec::Method::shooting) {
+  if (t.method == TimeSpec::Method::shooting && t.period_map != TimeSpec::PeriodMap::newmark) {
     for (const char* key : {"max_cycles", "steady_tolerance", "envelope_tolerance"})
       if (r.has(key))
-        r.fail(key, "applies to method = \"newmark\"; shooting converges on tolerance and max_iterations");
-    if (r.has("alpha") && t.period_map != TimeSpec::PeriodMap::newmark)
+        r.fail(key,
+               "applies to method = \"newmark\" (or to shooting with period_map = \"newmark\", which marches where "
+               "Newton finds no periodic solution); shooting converges on tolerance and max_iterations");
+    if (r.has("alpha"))
       r.fail("alpha", "applies to method = \"newmark\" (or to shooting with period_map = \"newmark\")");
   }
   t.system = parse_hbm(r, folder, false);

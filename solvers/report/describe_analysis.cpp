@@ -119,16 +119,26 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
         ++by_envelope, widest = std::max(widest, l.envelope_span[i]);
     }
   }
-  if (not_steady > by_envelope)
+  const bool shooting = spec.method == TimeSpec::Method::shooting;
+  if (not_steady > by_envelope && shooting)
+    run.warnings.push_back(fmt::format(
+        "{} frequencies have no periodic solution found{}", not_steady - by_envelope,
+        marches(spec) ? fmt::format(" (Newton failed, and the march from its start repeats within no period after "
+                                    "{} periods): their amplitudes are the march's last period (frf: change, "
+                                    "period_multiple and the envelope columns say what the motion did)",
+                                    spec.max_cycles)
+                      : " (Newton failed; frf: residual_m)"));
+  else if (not_steady > by_envelope)
     run.warnings.push_back(
         fmt::format("{} frequencies did not reach the steady state within {} periods: their amplitudes are not the "
                     "steady response (frf: change, period_multiple and the envelope columns say what the motion did)",
                     not_steady - by_envelope, spec.max_cycles));
   if (by_envelope > 0)
     run.warnings.push_back(fmt::format(
-        "{} frequencies repeat within no period after {} periods, but their first harmonics span at most {:.3g} % "
+        "{} frequencies {} within no period after {} periods, but their first harmonics span at most {:.3g} % "
         "over the last periods (envelope_tolerance {:.3g} %): read as steady in their first harmonic",
-        by_envelope, spec.max_cycles, 100.0 * widest, 100.0 * spec.envelope_tolerance));
+        by_envelope, shooting ? "have no periodic solution found, and the march from each repeats" : "repeat",
+        spec.max_cycles, 100.0 * widest, 100.0 * spec.envelope_tolerance));
   run.facts.emplace_back("steps / frequencies not steady / time [s]",
                          fmt::format("{} / {} / {:.2f} (per step {:.2f} us)", steps, not_steady, seconds,
                                      1e6 * seconds / static_cast<double>(std::max(1L, steps))));

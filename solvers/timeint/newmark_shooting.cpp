@@ -2,6 +2,7 @@
 
 #include <limits>
 #include <memory>
+#include <stdexcept>
 
 #include "common/constants.hpp"
 #include "timeint/newmark.hpp"
@@ -48,12 +49,7 @@ class NewmarkPeriod {
     return s;
   }
 
-  VectorXd pack(const DynamicState& s) const {
-    VectorXd x(size());
-    x << s.displacement, s.velocity / omega_, s.acceleration / (omega_ * omega_), VectorXd::Zero(nc_);
-    for (Index k = 0; k < nc_; ++k) x[3 * n_ + k] = s.contacts[static_cast<size_t>(k)].slider;
-    return x;
-  }
+  VectorXd pack(const DynamicState& s) const { return newmark_packed(s, omega_); }
 
   // One period from x; `record` (when not null) gets every step's state.
   PeriodEval period(const VectorXd& x, bool jacobian, std::vector<DynamicState>* record = nullptr) const {
@@ -184,6 +180,22 @@ PeriodMap newmark_period_map(const friction::FrictionModel& model, double omega,
   friction::validate_model(checked, "shooting");
   auto map = std::make_shared<const NewmarkPeriod>(checked, omega, steps, alpha);
   return [map](const VectorXd& x, bool jacobian) { return map->period(x, jacobian); };
+}
+
+DynamicState newmark_state(const friction::FrictionModel& model, double omega, const VectorXd& x) {
+  friction::FrictionModel checked = model;
+  friction::validate_model(checked, "shooting");
+  const NewmarkPeriod map(checked, omega, 2, 0.0);  // the step does not enter the unpacking
+  if (x.size() != map.size()) throw std::invalid_argument("newmark_state: the state has the wrong size");
+  return map.unpack(x);
+}
+
+VectorXd newmark_packed(const DynamicState& s, double omega) {
+  const Index n = s.displacement.size(), nc = static_cast<Index>(s.contacts.size());
+  VectorXd x(3 * n + nc);
+  x << s.displacement, s.velocity / omega, s.acceleration / (omega * omega), VectorXd::Zero(nc);
+  for (Index k = 0; k < nc; ++k) x[3 * n + k] = s.contacts[static_cast<size_t>(k)].slider;
+  return x;
 }
 
 NewmarkShootingResult newmark_shooting(const friction::FrictionModel& input, double omega, const ShootingOptions& o,

@@ -38,4 +38,10 @@ struct NewmarkShootingResult {
 [[nodiscard]] PeriodMap newmark_period_map(const friction::FrictionModel& model, double omega_rad_s,
                                            int steps_per_period, double alpha);
 
+// The map's state x as a Newmark state at t = 0 (the sliders settled onto their modes), and back:
+// a march (timeint/steady_state.hpp) continues from the one, Newton starts from the other.
+[[nodiscard]] DynamicState newmark_state(const friction::FrictionModel& model, double omega_rad_s,
+                                         const Eigen::VectorXd& x);
+[[nodiscard]] Eigen::VectorXd newmark_packed(const DynamicState& state, double omega_rad_s);
+
 }  // namespace bb::timeint

@@ -10,6 +10,7 @@ set(BB_TEST_COSTS
   calibrate.verification.rig_modal_joint_identify 68
   HbmCalibration.PeakDerivativesServeAsTheJacobian 62
   robust.table11_h13 59
+  case.thesis.table11_periodic_100_60 39
   fidelity.sec342_slip_hysteresis_auto 34
   case.thesis.sec32_root_contact 34
   case.beyond.bladed_disk_vs_whole_forced_12 32

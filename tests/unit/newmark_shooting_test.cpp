@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <complex>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -138,39 +140,106 @@ TEST(NewmarkShooting, EqualsTheSameIntegratorMarchedToItsSteadyState) {
 
 class NewmarkShootingCase : public test::TempFolderTest {};
 
-// Through a case: each frequency starts from the harmonic balance's solution there (compare_harmonics),
-// Newton needs at most one correction from it (a run is the period evaluated, corrected, recorded),
-// and the periodic amplitude agrees with the H = 9 balance to its truncation (3e-4 measured).
-TEST_F(NewmarkShootingCase, EachFrequencyStartsFromTheHarmonicBalanceAndAgreesWithIt) {
+// The oscillator's frf rows by column name.
+std::vector<std::map<std::string, double>> frf_rows(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream header(line);
+  for (std::string cell; std::getline(header, cell, ',');) names.push_back(cell);
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    std::map<std::string, double> row;
+    std::stringstream ss(line);
+    size_t k = 0;
+    for (std::string cell; std::getline(ss, cell, ',') && k < names.size(); ++k) row[names[k]] = std::stod(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// The friction oscillator at 20 N, every 5 Hz over `range`, by shooting on the Newmark map with
+// Floquet multipliers, plus `keys`.
+std::string newmark_map_case(const std::string& range, const std::string& keys) {
   test::OscillatorCase c;
   c.levels = "[20.0]";
+  c.range = range;
   c.step = "5.0";
   c.samples = "0";
   std::string text = test::oscillator_case_text(c);
   const std::string from = "type = \"hbm\"";
-  text.replace(text.find(from), from.size(),
-               "type = \"time\"\nmethod = \"shooting\"\nperiod_map = \"newmark\"\nalpha = -0.05\n"
-               "steps_per_period = 512\nfloquet = true\ncompare_harmonics = 9");
+  text.replace(
+      text.find(from), from.size(),
+      "type = \"time\"\nmethod = \"shooting\"\nperiod_map = \"newmark\"\nalpha = -0.05\nfloquet = true\n" + keys);
+  return text;
+}
+
+// Through a case: each frequency starts from the harmonic balance's solution there (compare_harmonics),
+// Newton needs at most one correction from it (a run is the period evaluated, corrected, recorded),
+// and the periodic amplitude agrees with the H = 9 balance to its truncation (3e-4 measured).
+TEST_F(NewmarkShootingCase, EachFrequencyStartsFromTheHarmonicBalanceAndAgreesWithIt) {
+  std::string text = newmark_map_case("[130.0, 260.0]", "steps_per_period = 512\ncompare_harmonics = 9\n");
   text.replace(text.find("harmonics = 1\n"), 14, "harmonics = 3\n");
   const RunOutcome o = run_case(write(text), {.out_dir = dir_ / "out", .study = false, .plots = false});
   ASSERT_EQ(o.record.status, RunStatus::no_checks) << o.record.message;
-  std::ifstream in(o.out_dir / "frf.csv");
-  std::string line;
-  std::getline(in, line);
-  int rows = 0;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
-    ASSERT_EQ(v.size(), 13u)
-        << line;  // point, fe, hz, amp, cycles, steady, max, residual, transitions, floquet, stable, linear, hbm
-    EXPECT_EQ(v[5], 1.0) << line;
-    EXPECT_LE(v[4], 4.0) << line;
-    EXPECT_NEAR(v[3] / v[12], 1.0, 1e-3) << line;
-    EXPECT_EQ(v[10], 1.0) << line;  // stable
-    ++rows;
+  const auto rows = frf_rows(o.out_dir / "frf.csv");
+  EXPECT_EQ(rows.size(), 27u);
+  for (const auto& r : rows) {
+    const double hz = r.at("frequency_hz");
+    EXPECT_EQ(r.at("steady"), 1.0) << hz;
+    EXPECT_LE(r.at("cycles"), 4.0) << hz;
+    EXPECT_TRUE(std::isnan(r.at("change"))) << hz;  // not marched
+    EXPECT_NEAR(r.at("A.x_amp_m") / r.at("hbm_A.x_amp_m"), 1.0, 1e-3) << hz;
+    EXPECT_EQ(r.at("stable"), 1.0) << hz;
   }
-  EXPECT_EQ(rows, 27);
+}
+
+// Where Newton cannot reach the orbit (one iteration allowed, from 400 periods marched to 1e-3), the
+// march to the steady state stands in, and Newton from its orbit needs no more than that one: every
+// frequency periodic and stable, its amplitude that of the march, which the frf row keeps.
+TEST_F(NewmarkShootingCase, WhereNewtonFailsTheMarchFindsTheOrbitAndNewtonFinishesFromIt) {
+  const RunOutcome o =
+      run_case(write(newmark_map_case("[150.0, 170.0]",
+                                      "steps_per_period = 256\nmax_iterations = 1\nsteady_tolerance = 1e-9\n")),
+               {.out_dir = dir_ / "out", .study = false, .plots = false});
+  ASSERT_EQ(o.record.status, RunStatus::no_checks) << o.record.message;
+  const auto rows = frf_rows(o.out_dir / "frf.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  int marched = 0;
+  for (const auto& r : rows) {
+    EXPECT_EQ(r.at("steady"), 1.0) << r.at("frequency_hz");
+    EXPECT_EQ(r.at("stable"), 1.0) << r.at("frequency_hz");
+    EXPECT_EQ(r.at("period_multiple"), 1.0) << r.at("frequency_hz");
+    EXPECT_LT(r.at("floquet_max"), 1.0) << r.at("frequency_hz");
+    if (std::isfinite(r.at("change"))) {
+      ++marched;
+      EXPECT_LE(r.at("change"), 1e-9) << r.at("frequency_hz");
+      EXPECT_NEAR(r.at("A.x_amp_m") / r.at("A.x_env_max_m"), 1.0, 1e-7) << r.at("frequency_hz");
+    }
+  }
+  EXPECT_GE(marched, 1);
+}
+
+// A march that cannot settle (two periods allowed) leaves the frequency without a periodic solution:
+// the frf row keeps what the motion did, and a peak resting on it leaves the run without a verdict.
+TEST_F(NewmarkShootingCase, WhereTheMarchDoesNotSettleThereIsNoPeriodicSolutionAndNoVerdict) {
+  const RunOutcome o = run_case(
+      write(newmark_map_case("[150.0, 170.0]", "steps_per_period = 256\nmax_iterations = 1\nmax_cycles = 2\n")),
+      {.out_dir = dir_ / "out", .study = false, .plots = false});
+  EXPECT_EQ(o.record.status, RunStatus::solver_failed) << o.record.message;
+  EXPECT_NE(o.record.message.find("no periodic solution found"), std::string::npos) << o.record.message;
+  const auto rows = frf_rows(o.out_dir / "frf.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  int without = 0;
+  for (const auto& r : rows) {
+    if (r.at("steady") == 1.0) continue;
+    ++without;
+    EXPECT_TRUE(std::isnan(r.at("floquet_max"))) << r.at("frequency_hz");
+    EXPECT_TRUE(std::isfinite(r.at("change"))) << r.at("frequency_hz");
+    EXPECT_GT(r.at("A.x_amp_m"), 0.0) << r.at("frequency_hz");  // the march's last period
+  }
+  EXPECT_GE(without, 1);
 }
 
 }  // namespace

@@ -188,7 +188,7 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
       return false;
     };
     const auto peaks_of = [&](const Eigen::MatrixXd& amplitude, const Eigen::MatrixXd& components, bool integrated) {
-      std::vector<double> prow = {static_cast<double>(l + 1), level.force};
+      std::vector<double> prow = {static_cast<double>(l + 1), level.force}, envelope;
       for (size_t k = 0; k < kinds.size(); ++k) {
         const Eigen::VectorXd values =
             pair ? Eigen::VectorXd(components.col(static_cast<Index>(k))) : Eigen::VectorXd(amplitude.col(0));
@@ -203,7 +203,14 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
         // The right (or first) response: the parabola's value without ip_oop, else the nearest grid value.
         const double amp = !stands ? kNan : !pair ? v : right < nr ? amplitude(at, right) : v;
         prow.insert(prow.end(), {stands ? f : kNan, amp, amp / level.force});
+        // Where the motion at the peak does not repeat: the range its first harmonic spans there.
+        if (integrated && marches(spec)) {
+          const bool open = stands && !level.steady[static_cast<size_t>(at)] && right < nr;
+          envelope.insert(envelope.end(),
+                          {open ? level.envelope_min(at, right) : kNan, open ? level.envelope_max(at, right) : kNan});
+        }
       }
+      prow.insert(prow.end(), envelope.begin(), envelope.end());
       return prow;
     };
     peak_rows.push_back(peaks_of(level.amplitude, level.components, true));
@@ -223,7 +230,11 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
   std::vector<std::string> peak_cols = {"level", "fe_n"};
   for (const std::string& k : kinds)
     for (const char* c : {"_hz", "_amp_m", "_amp_per_n"}) peak_cols.push_back(k + c);
-  o.tables.emplace("peaks", table_from_rows("peaks", peak_cols, peak_rows));
+  std::vector<std::string> time_peak_cols = peak_cols;
+  if (marches(spec))
+    for (const std::string& k : kinds)
+      time_peak_cols.insert(time_peak_cols.end(), {k + "_env_min_m", k + "_env_max_m"});
+  o.tables.emplace("peaks", table_from_rows("peaks", time_peak_cols, peak_rows));
   o.tables.emplace("peaks_linear", table_from_rows("peaks_linear", peak_cols, linear_peak_rows));
   if (compare) o.tables.emplace("peaks_hbm", table_from_rows("peaks_hbm", peak_cols, hbm_peak_rows));
   o.tables.emplace("time_cost",

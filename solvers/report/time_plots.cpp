@@ -52,12 +52,12 @@ Plot plot_time_frf(const TimeOutcome& time, size_t response, const fs::path& out
     // The ranges first: gnuplot blanks the area around an error bar's centre, which would hide the points.
     if (envelope[i])
       script += fmt::format(
-          "{}'{}.dat' index {} using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '{}' title 'Fe = {:g} N, not steady: "
+          "{}'{}.dat' index {} using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '{}' title 'Fe = {:g} N, not periodic: "
           "first-harmonic range', \\\n     ",
           i ? ", \\\n     " : "", stem, 2 * i, series_colour(i), time.levels[i].force);
-    script +=
-        fmt::format("{}'{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title 'Fe = {:g} N, Newmark'",
-                    i && !envelope[i] ? ", \\\n     " : "", stem, 2 * i, series_colour(i), time.levels[i].force);
+    script += fmt::format(
+        "{}'{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title 'Fe = {:g} N, time domain'",
+        i && !envelope[i] ? ", \\\n     " : "", stem, 2 * i, series_colour(i), time.levels[i].force);
     if (hbm)
       script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with lines lc rgb '{}' title 'Fe = {:g} N, HBM'",
                             stem, 2 * i + 1, series_colour(i), time.levels[i].force);

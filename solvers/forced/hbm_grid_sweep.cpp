@@ -74,7 +74,9 @@ Bridge bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector
   // wander along its null space far below it).
   c.max_step = std::max(max_step, 0.25 * (c.omega_end - c.omega_start) / c.omega_start);
   c.min_step = 1e-4 * c.initial_step;
-  c.omega_back = std::max(c.omega_start - kTwoPi * grid.front(), 1e-3 * c.omega_start);  // within the band
+  // Back to 1 % below the band's start: a fold's lower turn need not lie inside the band (the same
+  // level swept from 172 Hz turns at 171.7 Hz: the bridge stopped there, 11 frequencies failed).
+  c.omega_back = std::max(c.omega_start - kTwoPi * grid.front(), 0.0) + 0.01 * c.omega_start;
   c.max_points = 5000;
   // A bridge crosses a fold or two (the worst Table XI needs: 4 turning points at 60 N, H = 5);
   // 60 N at H = 2 wandered 5000 points and 183 turning points near 174.75 Hz (64 s) without

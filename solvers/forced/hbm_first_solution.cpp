@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "forced/hbm_level_system.hpp"
+#include "hbm/continuation.hpp"
 
 namespace bb {
 
@@ -56,6 +58,35 @@ std::optional<hbm::HbmSolution> from_a_neighbouring_frequency(const hbm::Harmoni
   return std::nullopt;
 }
 
+// The solution at omega traced by pseudo-arclength from a frequency 5 % away, where the response is
+// far from resonance and Newton from the linear limits converges: the path passes the folds and
+// kinks between (Table XI, H = 5, 80 N, 172.2 Hz: every start at that frequency, the force homotopy
+// and the neighbours 1 % away failed, inside a fold of the branch).
+std::optional<hbm::HbmSolution> by_arclength_from_afar(const hbm::HarmonicBalance& system, double omega,
+                                                       int& iterations) {
+  for (const double d : {-0.05, 0.05}) {
+    hbm::ContinuationOptions c;
+    c.omega_start = omega * (1.0 + d);
+    c.omega_end = omega;
+    c.initial_step = 0.05 * std::abs(d);
+    c.max_step = 0.25 * std::abs(d);
+    c.min_step = 1e-4 * c.initial_step;
+    c.max_points = 5000;
+    c.max_turning_points = 12;  // a fold or two, not a walk along kinks (as the sweep's bridges)
+    const hbm::ContinuationResult path = hbm::continue_in_frequency(system, c);
+    iterations += path.corrector_iterations;
+    if (!path.converged || path.points.size() < 2) continue;
+    // The path ends at or just past omega: solved there from the last arc interpolated.
+    const hbm::ContinuationPoint& a = path.points[path.points.size() - 2];
+    const hbm::ContinuationPoint& b = path.points.back();
+    const double t = b.omega == a.omega ? 1.0 : (omega - a.omega) / (b.omega - a.omega);
+    hbm::HbmSolution s = hbm::solve_at_frequency(system, omega, Eigen::VectorXd(a.x + t * (b.x - a.x)));
+    iterations += s.iterations;
+    if (s.converged) return s;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 // The first frequency's solution, from the cheapest start that converges: direct Newton from the
@@ -65,13 +96,13 @@ std::optional<hbm::HbmSolution> from_a_neighbouring_frequency(const hbm::Harmoni
 // level's solution; Newton with ten times the sweep's iterations from that best iterate (Newton
 // from a far start on this piecewise-smooth balance approaches the solution only linearly, by
 // Levenberg-Marquardt steps across the contacts' kinks); a homotopy from 1/64 of the force; and
-// for H > 3 the solution at H - 2 (found the same way) lifted by two; last, from a frequency a
-// tenth or a hundredth of a percent away. An iteration at H = 1 costs a
-// tenth to a hundredth of one at H = 5-13, so the lifted start comes before the long solves, and
-// above H = 7, where the patient solve's 600 iterations cost most (Table XI, H = 13, 100 N, 170 Hz:
-// they failed, the ladder converges), the ladder of H comes before it. The homotopy steps
-// start from the last converged force alone with the sweep's iterations: a failed step costs 20
-// iterations, not the 600 of three patient starts (Table XI, H = 13, 110 N: 4 476 iterations before).
+// for H > 3 the solution at H - 2 (found the same way) lifted by two; from a frequency a
+// tenth or a hundredth of a percent away; last, along the branch by arclength from 5 % away. An iteration at H = 1
+// costs a tenth to a hundredth of one at H = 5-13, so the lifted start comes before the long solves, and above H = 7,
+// where the patient solve's 600 iterations cost most (Table XI, H = 13, 100 N, 170 Hz: they failed, the ladder
+// converges), the ladder of H comes before it. The homotopy steps start from the last converged force alone with the
+// sweep's iterations: a failed step costs 20 iterations, not the 600 of three patient starts (Table XI, H = 13, 110 N:
+// 4 476 iterations before).
 hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec, double force, int harmonics,
                                 int samples, double omega, const std::optional<Eigen::VectorXd>& initial,
                                 std::optional<double> initial_force) {
@@ -144,6 +175,8 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
     if (auto s = lifted_from(harmonics - 2)) return done(std::move(*s));
   if (auto s = from_a_neighbouring_frequency(quick, omega, initial, total)) return done(std::move(*s));
   failures += "; from frequencies 0.1 % and 1 % away: no solution";
+  if (auto s = by_arclength_from_afar(quick, omega, total)) return done(std::move(*s));
+  failures += "; by arclength from 5 % away: not reached";
   patient.failure += failures;
   return done(std::move(patient));
 }

@@ -2,7 +2,8 @@
 // XI's blades and damper (the committed reduced model of table11_calibrate_contact.toml, kt and mu
 // as identified until 2026-11-28): where Newton from the static state, the H = 1 solution lifted to H, the patient
 // solve and the force homotopy all fail, the solution two harmonics below lifted by two converges,
-// and at H = 1 (no ladder) a start from a frequency a hair away.
+// at H = 1 (no ladder) a start from a frequency a hair away, and inside a fold the branch traced
+// from 5 % away.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,6 +70,18 @@ TEST(HbmFirstSolution, TableXIAtAStiffContactStartsFromANeighbouringFrequency) {
   ASSERT_TRUE(s.converged) << s.failure;
   EXPECT_EQ(s.omega, kOmega);
   expect_balanced(t, kForce, 1, kOmega, s.x);
+}
+
+// Inside a fold of the branch (identified kt, mu of 2026-11-28; a sweep started at 172.2 Hz): every
+// start at that frequency, the force homotopy and the frequencies 1 % away failed; the branch traced
+// by arclength from 5 % below passes the fold and converges there.
+TEST(HbmFirstSolution, TableXIInsideAFoldIsReachedAlongTheBranchFromAfar) {
+  const TableXI t = table_xi(7.536e7, 0.7628);
+  constexpr double kForce = 80.0, kOmega = 2 * std::numbers::pi * 172.2;
+  const hbm::HbmSolution s = first_solution(t.prepared, t.spec, kForce, 5, 0, kOmega, std::nullopt);
+  ASSERT_TRUE(s.converged) << s.failure;
+  EXPECT_EQ(s.omega, kOmega);
+  expect_balanced(t, kForce, 5, kOmega, s.x);
 }
 
 }  // namespace

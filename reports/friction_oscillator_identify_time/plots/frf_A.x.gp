@@ -8,7 +8,7 @@ set ylabel 'amplitude [m]'
 set grid
 set key outside right
 set datafile missing 'nan'
-plot 'frf_A.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 0.1 N, Newmark', \
+plot 'frf_A.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 0.1 N, time domain', \
      'frf_A.x.dat' index 0 using 1:3 with lines dt 2 lc rgb '#1f5fbf' title 'Fe = 0.1 N, linear (contacts as springs)', \
-     'frf_A.x.dat' index 2 using 1:2 with points pt 7 ps 0.5 lc rgb '#bf1f1f' title 'Fe = 30 N, Newmark', \
+     'frf_A.x.dat' index 2 using 1:2 with points pt 7 ps 0.5 lc rgb '#bf1f1f' title 'Fe = 30 N, time domain', \
      'frf_A.x.dat' index 2 using 1:3 with lines dt 2 lc rgb '#bf1f1f' title 'Fe = 30 N, linear (contacts as springs)'

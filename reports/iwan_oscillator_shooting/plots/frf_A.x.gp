@@ -8,5 +8,5 @@ set ylabel 'amplitude [m]'
 set grid
 set key outside right
 set datafile missing 'nan'
-plot 'frf_A.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 2 N, Newmark', \
+plot 'frf_A.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 2 N, time domain', \
      'frf_A.x.dat' index 0 using 1:3 with lines dt 2 lc rgb '#1f5fbf' title 'Fe = 2 N, linear (contacts as springs)'

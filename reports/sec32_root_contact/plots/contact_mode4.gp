@@ -11,4 +11,4 @@ plot 'contact_mode4.dat' index 0 using 1:2 with linespoints pt 7 ps 0.5 title 'i
      'contact_mode4.dat' index 2 using 1:2 with linespoints pt 7 ps 0.5 title 'interference 1e-05 m', \
      'contact_mode4.dat' index 3 using 1:2 with linespoints pt 7 ps 0.5 title 'interference 3.16e-05 m', \
      'contact_mode4.dat' index 4 using 1:2 with linespoints pt 7 ps 0.5 title 'interference 0.0001 m', \
-     937.631227528 with lines dt 2 lc rgb 'black' title 'glued'
+     937.63122753 with lines dt 2 lc rgb 'black' title 'glued'

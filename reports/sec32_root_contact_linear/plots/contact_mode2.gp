@@ -9,4 +9,4 @@ set key outside right
 plot 'contact_mode2.dat' index 0 using 1:2 with linespoints pt 7 ps 0.5 title 'interference 1e-06 m', \
      'contact_mode2.dat' index 1 using 1:2 with linespoints pt 7 ps 0.5 title 'interference 1e-05 m', \
      'contact_mode2.dat' index 2 using 1:2 with linespoints pt 7 ps 0.5 title 'interference 0.0001 m', \
-     176.640552788 with lines dt 2 lc rgb 'black' title 'glued'
+     176.640552744 with lines dt 2 lc rgb 'black' title 'glued'

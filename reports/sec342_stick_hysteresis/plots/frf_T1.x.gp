@@ -8,6 +8,6 @@ set ylabel 'amplitude [m]'
 set grid
 set key outside right
 set datafile missing 'nan'
-plot 'frf_T1.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 5 N, Newmark', \
+plot 'frf_T1.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 5 N, time domain', \
      'frf_T1.x.dat' index 1 using 1:2 with lines lc rgb '#1f5fbf' title 'Fe = 5 N, HBM', \
      'frf_T1.x.dat' index 0 using 1:3 with lines dt 2 lc rgb '#1f5fbf' title 'Fe = 5 N, linear (contacts as springs)'

@@ -8,7 +8,7 @@ set ylabel 'amplitude [m]'
 set grid
 set key outside right
 set xrange [170:190]
-set arrow from 174.63829371894496,graph 0 to 174.63829371894496,graph 1 nohead dt 3 lc rgb '#bbbbbb'
-set arrow from 174.6482396272064,graph 0 to 174.6482396272064,graph 1 nohead dt 3 lc rgb '#bbbbbb'
+set arrow from 174.63829348077118,graph 0 to 174.63829348077118,graph 1 nohead dt 3 lc rgb '#bbbbbb'
+set arrow from 174.64823938904536,graph 0 to 174.64823938904536,graph 1 nohead dt 3 lc rgb '#bbbbbb'
 plot 'frf_T1.x.dat' using 1:2 with lines lw 2 lc rgb '#1f5fbf' title 'full', \
      'frf_T1.x.dat' using 1:3 with lines lw 1 lc rgb '#bf1f1f' title 'rom'

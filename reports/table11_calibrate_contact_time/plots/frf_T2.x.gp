@@ -8,8 +8,8 @@ set ylabel 'amplitude [m]'
 set grid
 set key outside right
 set datafile missing 'nan'
-plot 'frf_T2.x.dat' index 0 using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '#1f5fbf' title 'Fe = 300 N, not steady: first-harmonic range', \
-     'frf_T2.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 300 N, Newmark', \
+plot 'frf_T2.x.dat' index 0 using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '#1f5fbf' title 'Fe = 300 N, not periodic: first-harmonic range', \
+     'frf_T2.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 300 N, time domain', \
      'frf_T2.x.dat' index 0 using 1:3 with lines dt 2 lc rgb '#1f5fbf' title 'Fe = 300 N, linear (contacts as springs)', \
-     'frf_T2.x.dat' index 2 using 1:2 with points pt 7 ps 0.5 lc rgb '#bf1f1f' title 'Fe = 5 N, Newmark', \
+     'frf_T2.x.dat' index 2 using 1:2 with points pt 7 ps 0.5 lc rgb '#bf1f1f' title 'Fe = 5 N, time domain', \
      'frf_T2.x.dat' index 2 using 1:3 with lines dt 2 lc rgb '#bf1f1f' title 'Fe = 5 N, linear (contacts as springs)'

@@ -1,0 +1,18 @@
+set terminal svg size 900,420 dynamic font 'Helvetica,12' background rgb 'white'
+set output 'frf_T1.x.svg'
+set title 'Response T1.x: time integration (points), harmonic balance and linear model (lines)'
+set logscale y
+set format y '10^{%L}'
+set xlabel 'frequency [Hz]'
+set ylabel 'amplitude [m]'
+set grid
+set key outside right
+set datafile missing 'nan'
+plot 'frf_T1.x.dat' index 0 using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '#1f5fbf' title 'Fe = 100 N, not periodic: first-harmonic range', \
+     'frf_T1.x.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#1f5fbf' title 'Fe = 100 N, time domain', \
+     'frf_T1.x.dat' index 1 using 1:2 with lines lc rgb '#1f5fbf' title 'Fe = 100 N, HBM', \
+     'frf_T1.x.dat' index 0 using 1:3 with lines dt 2 lc rgb '#1f5fbf' title 'Fe = 100 N, linear (contacts as springs)', \
+     'frf_T1.x.dat' index 2 using 1:2:4:5 with yerrorbars pt 7 ps 0 lc rgb '#bf1f1f' title 'Fe = 60 N, not periodic: first-harmonic range', \
+     'frf_T1.x.dat' index 2 using 1:2 with points pt 7 ps 0.5 lc rgb '#bf1f1f' title 'Fe = 60 N, time domain', \
+     'frf_T1.x.dat' index 3 using 1:2 with lines lc rgb '#bf1f1f' title 'Fe = 60 N, HBM', \
+     'frf_T1.x.dat' index 2 using 1:3 with lines dt 2 lc rgb '#bf1f1f' title 'Fe = 60 N, linear (contacts as springs)'

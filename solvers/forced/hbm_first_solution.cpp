@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 
 #include "forced/hbm_level_system.hpp"
@@ -63,8 +64,9 @@ std::optional<hbm::HbmSolution> from_a_neighbouring_frequency(const hbm::Harmoni
 // kinks between (Table XI, H = 5, 80 N, 172.2 Hz: every start at that frequency, the force homotopy
 // and the neighbours 1 % away failed, inside a fold of the branch).
 std::optional<hbm::HbmSolution> by_arclength_from_afar(const hbm::HarmonicBalance& system, double omega,
-                                                       int& iterations) {
-  for (const double d : {-0.05, 0.05}) {
+                                                       int& iterations,
+                                                       std::initializer_list<double> offsets = {-0.05, 0.05}) {
+  for (const double d : offsets) {
     hbm::ContinuationOptions c;
     c.omega_start = omega * (1.0 + d);
     c.omega_end = omega;
@@ -179,6 +181,17 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& sweep_spec,
   failures += "; by arclength from 5 % away: not reached";
   patient.failure += failures;
   return done(std::move(patient));
+}
+
+hbm::HbmSolution first_solution_from_below(const hbm::HarmonicBalance& system, double omega) {
+  int iterations = 0;
+  hbm::HbmSolution s;
+  if (auto traced = by_arclength_from_afar(system, omega, iterations, {-0.05}))
+    s = std::move(*traced);
+  else
+    s.failure = "by arclength from 5 % below: not reached";
+  s.iterations = iterations;
+  return s;
 }
 
 }  // namespace bb

@@ -385,8 +385,20 @@ const hbm::ContinuationPoint& nearest_point(const hbm::ContinuationResult& path,
 
 void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
                 HbmLevel& level, const SweepReport& report) {
-  sweep_grid_on(p, spec, systems, first, fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz), level,
-                report);
+  const std::vector<double> grid = fixed_grid(spec.sweep.f_min, spec.sweep.f_max, spec.sweep.step_hz);
+  const HbmLevel start = level;  // force and H, before the sweep
+  sweep_grid_on(p, spec, systems, first, grid, level, report);
+  if (level.path.converged || level.path.points.empty() || spec.harmonic_scope == HbmSpec::HarmonicScope::point) return;
+  // Once more from the branch that comes up from below the band (first_solution_from_below).
+  HbmLevel again = start;
+  const FirstSolution from_below = [&](int h) {
+    return first_solution_from_below(systems.at(h), kTwoPi * grid.front());
+  };
+  sweep_grid_on(p, spec, systems, from_below, grid, again, report);
+  if (!again.path.converged) return;
+  again.path.corrector_iterations += level.path.corrector_iterations;
+  again.path.rejected_steps += level.path.rejected_steps;
+  level = std::move(again);
 }
 
 void sweep_grid_windows(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems,

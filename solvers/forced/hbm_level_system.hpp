@@ -76,6 +76,12 @@ hbm::HbmSolution first_solution(const PreparedHbm& p, const HbmSpec& spec, doubl
                                 double omega, const std::optional<Eigen::VectorXd>& initial,
                                 std::optional<double> initial_force = std::nullopt);
 
+// The first frequency's solution on the branch that comes up from below: traced by pseudo-arclength
+// from 5 % below omega, where the contacts stick and the static state is the seated one. A start
+// whose stuck sliders sit elsewhere can lie on a branch that ends at a kink further up (Table XI,
+// H = 5, 60 N swept from 172.2 Hz); the sweep is tried again from this one.
+hbm::HbmSolution first_solution_from_below(const hbm::HarmonicBalance& system, double omega);
+
 // The first frequency's solution at H harmonics (first_solution from the level's start).
 using FirstSolution = std::function<hbm::HbmSolution(int harmonics)>;
 // Progress of a sweep: (omega, point, iterations).
@@ -83,8 +89,9 @@ using SweepReport = std::function<void(double, int, int)>;
 
 // The grid sweep of one level: every frequency from the cubic extrapolation of the last four
 // converged points, a failed one approached in smaller steps, then bridged by arclength through a
-// fold. Fills level.path and level.failed_hz, and with the point scope level.point_harmonics and
-// point_change. level.harmonics is the H of a fixed-H sweep, and the start of a
+// fold. A fixed-H sweep that does not reach its end is swept once more from
+// first_solution_from_below, and kept when that one does. Fills level.path and level.failed_hz, and with the point
+// scope level.point_harmonics and point_change. level.harmonics is the H of a fixed-H sweep, and the start of a
 // point-scope one (which sets it to the largest H used).
 void sweep_grid(const PreparedHbm& p, const HbmSpec& spec, const LevelSystems& systems, const FirstSolution& first,
                 HbmLevel& level, const SweepReport& report);

@@ -3,7 +3,7 @@
 // as identified until 2026-11-28): where Newton from the static state, the H = 1 solution lifted to H, the patient
 // solve and the force homotopy all fail, the solution two harmonics below lifted by two converges,
 // at H = 1 (no ladder) a start from a frequency a hair away, and inside a fold the branch traced
-// from 5 % away.
+// from 5 % away; a level whose sweep stops is swept again from the branch below.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -82,6 +82,20 @@ TEST(HbmFirstSolution, TableXIInsideAFoldIsReachedAlongTheBranchFromAfar) {
   ASSERT_TRUE(s.converged) << s.failure;
   EXPECT_EQ(s.omega, kOmega);
   expect_balanced(t, kForce, 5, kOmega, s.x);
+}
+
+// A level swept from 172.2 Hz: its first point, found at that frequency, has the stuck sliders
+// elsewhere than the branch that comes up from below, and that branch ends at a kink at 172.4 Hz
+// (11 frequencies of 172.45-172.95 Hz failed, also from above). Swept again from the first point
+// traced from 5 % below, the level reaches the band's end.
+TEST(HbmFirstSolution, ALevelThatStopsIsSweptAgainFromTheBranchBelowAndReachesItsEnd) {
+  TableXI t = table_xi(7.536e7, 0.7628);
+  t.spec.sweep.f_min = 172.2;
+  t.spec.sweep.f_max = 173.5;
+  const HbmLevel level = sweep_hbm_level(t.prepared, t.spec, 60.0, 5);
+  EXPECT_TRUE(level.path.converged) << level.path.failure;
+  EXPECT_TRUE(level.failed_hz.empty());
+  EXPECT_GE(level.path.points.size(), 27u);
 }
 
 }  // namespace

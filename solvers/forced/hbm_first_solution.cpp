@@ -78,11 +78,7 @@ std::optional<hbm::HbmSolution> by_arclength_from_afar(const hbm::HarmonicBalanc
     const hbm::ContinuationResult path = hbm::continue_in_frequency(system, c);
     iterations += path.corrector_iterations;
     if (!path.converged || path.points.size() < 2) continue;
-    // The path ends at or just past omega: solved there from the last arc interpolated.
-    const hbm::ContinuationPoint& a = path.points[path.points.size() - 2];
-    const hbm::ContinuationPoint& b = path.points.back();
-    const double t = b.omega == a.omega ? 1.0 : (omega - a.omega) / (b.omega - a.omega);
-    hbm::HbmSolution s = hbm::solve_at_frequency(system, omega, Eigen::VectorXd(a.x + t * (b.x - a.x)));
+    hbm::HbmSolution s = solve_on_last_arc(system, path.points, omega);
     iterations += s.iterations;
     if (s.converged) return s;
   }

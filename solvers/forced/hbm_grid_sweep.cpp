@@ -49,6 +49,14 @@ hbm::HbmSolution approach_in_steps(const hbm::HarmonicBalance& system, double w0
   return s;
 }
 
+hbm::HbmSolution solve_on_last_arc(const hbm::HarmonicBalance& system,
+                                   const std::vector<hbm::ContinuationPoint>& points, double omega) {
+  const hbm::ContinuationPoint& a = points.at(points.size() - 2);
+  const hbm::ContinuationPoint& b = points.back();
+  const double t = b.omega == a.omega ? 1.0 : (omega - a.omega) / (b.omega - a.omega);
+  return hbm::solve_at_frequency(system, omega, Eigen::VectorXd(a.x + t * (b.x - a.x)));
+}
+
 namespace {
 
 // Unknowns from which a grid sweep reuses factorized Jacobians (chord steps; see sweep_grid_on).
@@ -96,8 +104,7 @@ Bridge bridge_by_arclength(const hbm::HarmonicBalance& system, const std::vector
   const hbm::ContinuationPoint& a = path.points[path.points.size() - 2];
   const hbm::ContinuationPoint& b = path.points.back();
   if (b.omega != c.omega_end && b.omega != a.omega) {
-    const double t = (c.omega_end - a.omega) / (b.omega - a.omega);
-    hbm::HbmSolution s = hbm::solve_at_frequency(system, c.omega_end, Eigen::VectorXd(a.x + t * (b.x - a.x)));
+    hbm::HbmSolution s = solve_on_last_arc(system, path.points, c.omega_end);
     path.corrector_iterations += s.iterations;
     if (s.converged) path.points.back() = {c.omega_end, std::move(s.x), s.residual, s.iterations, 0.0, 1.0};
   }

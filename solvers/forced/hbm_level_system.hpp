@@ -59,6 +59,11 @@ Eigen::VectorXd with_harmonics(const Eigen::VectorXd& x, Eigen::Index contact_do
 hbm::HbmSolution approach_in_steps(const hbm::HarmonicBalance& system, double w0, Eigen::VectorXd x, double omega,
                                    int steps, int& iterations, ChordFactorization* chord = nullptr);
 
+// The solution at omega from the last arc of a continuation that ended at or just past it (at
+// least two points): the arc's two ends interpolated there, then Newton.
+hbm::HbmSolution solve_on_last_arc(const hbm::HarmonicBalance& system,
+                                   const std::vector<hbm::ContinuationPoint>& points, double omega);
+
 // The point of a non-empty path nearest to omega in frequency (the first of equals): the start
 // of a solve there.
 const hbm::ContinuationPoint& nearest_point(const hbm::ContinuationResult& path, double omega);

@@ -9,12 +9,14 @@
 #include <cmath>
 #include <complex>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "common/constants.hpp"
+#include "common/csv_reader.hpp"
 #include "friction_oscillator.hpp"
 #include "oscillator_case.hpp"
 #include "pipeline/run_case.hpp"
@@ -140,21 +142,17 @@ TEST(NewmarkShooting, EqualsTheSameIntegratorMarchedToItsSteadyState) {
 
 class NewmarkShootingCase : public test::TempFolderTest {};
 
-// The oscillator's frf rows by column name.
+// The oscillator's frf rows by column name (the project's CSV reading; "nan" cells read as NaN).
 std::vector<std::map<std::string, double>> frf_rows(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string cell; std::getline(header, cell, ',');) names.push_back(cell);
+  const std::vector<std::string> names = read_csv_header(file);
+  LineSource in(file);
+  (void)in.next_content();  // the header
   std::vector<std::map<std::string, double>> rows;
-  while (std::getline(in, line)) {
+  while (const std::optional<std::string_view> line = in.next_content()) {
+    const std::vector<std::string_view> cells = split_csv(*line);
     std::map<std::string, double> row;
-    std::stringstream ss(line);
-    size_t k = 0;
-    for (std::string cell; std::getline(ss, cell, ',') && k < names.size(); ++k) row[names[k]] = std::stod(cell);
-    rows.push_back(row);
+    for (size_t k = 0; k < names.size() && k < cells.size(); ++k) row[names[k]] = std::stod(std::string(cells[k]));
+    rows.push_back(std::move(row));
   }
   return rows;
 }

@@ -19,7 +19,8 @@ void basis_at(double theta, int harmonics, Eigen::RowVectorXd& phi, Eigen::RowVe
   dphi.resize(2 * harmonics + 1);
   phi[0] = 1.0;
   dphi[0] = 0.0;
-  const double c1 = std::cos(theta), s1 = std::sin(theta);
+  double s1 = 0.0, c1 = 0.0;
+  sincos(theta, &s1, &c1);  // glibc: the values of std::sin and std::cos, in one call
   double c = 1.0, s = 0.0;
   for (int h = 1; h <= harmonics; ++h) {
     const double cn = c * c1 - s * s1;
@@ -104,7 +105,8 @@ class EventMarch {
         grid_(grid),
         frictionless_(!(p.mu > 0.0)),
         ddu_(u.size()),
-        ddv_(v.size()) {
+        ddv_(v.size()),
+        samples_(static_cast<size_t>(grid.samples + 1)) {
     // Coefficients of u'' and v'': -h^2 times those of u and v.
     for (Eigen::Index i = 0; i < u.size(); ++i) {
       const double h = static_cast<double>((i + 1) / 2);
@@ -126,10 +128,15 @@ class EventMarch {
     basis_at(theta, harmonics_, phi_, dphi_);
     return current(theta);
   }
+  // The motion at sample k (k = n: 2 pi), evaluated once per AFT: the scale, every marched period
+  // and the closure read the same samples.
   Motion sample(int k) {
-    phi_ = grid_.phi.row(k);
-    dphi_ = grid_.dphi.row(k);
-    return current(grid_.theta(k));
+    auto& cached = samples_[static_cast<size_t>(k)];
+    if (!cached) {
+      load_sample_basis(k);
+      cached = current(grid_.theta(k));
+    }
+    return *cached;
   }
   double normal_raw(const Motion& m) const { return p_.n0 + p_.kn * m.v; }
 
@@ -271,6 +278,7 @@ class EventMarch {
 
   // The state at theta = 0 of the first period from a slider w: the step of jenkins_step.
   void start(double w) {
+    load_sample_basis(0);  // for the slider's derivatives
     const Motion m = sample(0);
     const double n = normal_raw(m);
     if (!(n > 0.0)) {
@@ -350,9 +358,25 @@ class EventMarch {
 
   ContactState state() const { return state_; }
   const std::vector<StuckSlider>& sliders() const { return sliders_; }
+  // The state at an instant as far as the rest of a period depends on it: the stuck slider's index
+  // and position in stick, nothing more in slip and lift-off.
+  struct Phase {
+    ContactState state = ContactState::stick;
+    int slider = -1;
+    double w = 0.0;
+    bool continues(const Phase& o) const { return state == o.state && (state != ContactState::stick || w == o.w); }
+  };
+  Phase phase() const {
+    if (state_ != ContactState::stick) return {state_, -1, 0.0};
+    return {state_, static_cast<int>(sliders_.size()) - 1, stuck().w};
+  }
 
  private:
   const StuckSlider& stuck() const { return sliders_.back(); }
+  void load_sample_basis(int k) {
+    phi_ = grid_.phi.row(k);
+    dphi_ = grid_.dphi.row(k);
+  }
   Motion current(double theta) const {
     return {theta, phi_.dot(u_), phi_.dot(v_), dphi_.dot(u_), dphi_.dot(v_), phi_.dot(ddu_), phi_.dot(ddv_)};
   }
@@ -398,7 +422,8 @@ class EventMarch {
   std::array<double, 2> u_bound_{}, v_bound_{};  // bounds of the 2nd and 3rd derivatives of u, v
   Eigen::VectorXd ddu_, ddv_;                    // coefficients of u'' and v''
   std::vector<StuckSlider> sliders_;
-  Eigen::RowVectorXd phi_, dphi_;  // the basis at the last motion() instant
+  Eigen::RowVectorXd phi_, dphi_;  // the basis at the last motion() or sample() instant
+  std::vector<std::optional<Motion>> samples_;
 };
 
 }  // namespace
@@ -415,28 +440,56 @@ AftResult aft_jenkins_events(const JenkinsParameters& p, const Eigen::VectorXd& 
   r.n.resize(n);
   r.w.resize(n);
   r.state.assign(static_cast<size_t>(n), ContactState::stick);
-  std::vector<Piece> pieces;
   march.start(options.initial_slider);
   double scale = 0.0;
   for (int k = 0; k < n; ++k) {
     const Motion m = march.sample(k);
     scale = std::max({scale, std::abs(m.u), p.mu * std::max(march.normal_raw(m), 0.0) / p.kt});
   }
+  // A period that reaches a sample in the phase the period before had there repeats that period
+  // from there on, to the bit: its pieces are copied instead of marched (most periods after the
+  // first differ only until their first slip).
+  std::vector<Piece> pieces, before;
+  std::vector<EventMarch::Phase> phases(static_cast<size_t>(n)), phases_before(static_cast<size_t>(n));
+  std::vector<size_t> first_piece(static_cast<size_t>(n)), first_piece_before(static_cast<size_t>(n));
   double slider = march.slider(march.sample(0));
   for (int period = 1; period <= options.max_periods; ++period) {
     const double start = slider;
+    std::swap(pieces, before);
+    std::swap(phases, phases_before);
+    std::swap(first_piece, first_piece_before);
     pieces.clear();
     Motion m = march.sample(0);
-    for (int k = 0; k < n; ++k) {
+    int k = 0;
+    for (; k < n; ++k) {
+      const EventMarch::Phase phase = march.phase();
+      const size_t ku = static_cast<size_t>(k);
+      if (period > 1 && phase.continues(phases_before[ku])) break;
+      phases[ku] = phase;
+      first_piece[ku] = pieces.size();
       const Motion next = march.sample(k + 1);
       r.u[k] = m.u;
       r.v[k] = m.v;
-      r.state[static_cast<size_t>(k)] = march.state();
+      r.state[ku] = march.state();
       r.w[k] = march.slider(m);
       r.n[k] = march.state() == ContactState::lift_off ? 0.0 : std::max(march.normal_raw(m), 0.0);
       r.t[k] = march.state() == ContactState::lift_off ? 0.0 : p.kt * (m.u - r.w[k]);
       march.march_interval(k, m, next, pieces);
       m = next;
+    }
+    if (k < n) {
+      // The rest as the period before (its samples' records stand in r); its stick run on from
+      // sample k continues this period's stuck slider.
+      const EventMarch::Phase now = march.phase(), then = phases_before[static_cast<size_t>(k)];
+      for (size_t i = first_piece_before[static_cast<size_t>(k)]; i < before.size(); ++i) {
+        Piece piece = before[i];
+        if (then.slider >= 0 && piece.slider == then.slider) piece.slider = now.slider;
+        pieces.push_back(piece);
+      }
+      r.periods = period;
+      r.closure_mismatch = 0.0;  // the period ends where the one before ended, which it started from
+      r.closed = true;
+      break;
     }
     slider = march.slider(m);  // m is the motion at 2 pi
     r.periods = period;

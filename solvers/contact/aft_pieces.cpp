@@ -18,7 +18,8 @@ struct TrigSums {
   explicit TrigSums(int top) : c(Eigen::VectorXd::Zero(top + 1)), s(Eigen::VectorXd::Zero(top + 1)) {}
   void add(double at, double sign) {
     theta += sign * at;
-    const double c1 = std::cos(at), s1 = std::sin(at);
+    double s1 = 0.0, c1 = 0.0;
+    sincos(at, &s1, &c1);  // glibc: the values of std::sin and std::cos, in one call
     double ck = 1.0, sk = 0.0;
     for (Eigen::Index k = 1; k < c.size(); ++k) {
       const double cn = ck * c1 - sk * s1;
@@ -50,18 +51,28 @@ struct TrigSums {
   // diag(scale) int phi phi^T over the pieces.
   Eigen::MatrixXd gram(const Eigen::VectorXd& scale) const {
     const int harmonics = harmonics_of(scale.size());
+    // int cos k and int sin k for k = -2H .. 2H, each divided once.
+    const int top = 2 * harmonics;
+    Eigen::VectorXd ic(2 * top + 1), is(2 * top + 1);
+    for (int k = -top; k <= top; ++k) {
+      ic[k + top] = int_cos(k);
+      is[k + top] = int_sin(k);
+    }
+    const auto cos_of = [&](int k) { return ic[k + top]; };
+    const auto sin_of = [&](int k) { return is[k + top]; };
     Eigen::MatrixXd g(scale.size(), scale.size());
     g(0, 0) = theta;
     for (int h = 1; h <= harmonics; ++h) {
-      g(0, 2 * h - 1) = g(2 * h - 1, 0) = int_cos(h);
-      g(0, 2 * h) = g(2 * h, 0) = int_sin(h);
+      g(0, 2 * h - 1) = g(2 * h - 1, 0) = cos_of(h);
+      g(0, 2 * h) = g(2 * h, 0) = sin_of(h);
       for (int k = 1; k <= harmonics; ++k) {
-        g(2 * h - 1, 2 * k - 1) = 0.5 * (int_cos(h - k) + int_cos(h + k));                    // cos h cos k
-        g(2 * h, 2 * k) = 0.5 * (int_cos(h - k) - int_cos(h + k));                            // sin h sin k
-        g(2 * h - 1, 2 * k) = g(2 * k, 2 * h - 1) = 0.5 * (int_sin(h + k) + int_sin(k - h));  // cos h sin k
+        g(2 * h - 1, 2 * k - 1) = 0.5 * (cos_of(h - k) + cos_of(h + k));                    // cos h cos k
+        g(2 * h, 2 * k) = 0.5 * (cos_of(h - k) - cos_of(h + k));                            // sin h sin k
+        g(2 * h - 1, 2 * k) = g(2 * k, 2 * h - 1) = 0.5 * (sin_of(h + k) + sin_of(k - h));  // cos h sin k
       }
     }
-    return scale.asDiagonal() * g;
+    for (Eigen::Index i = 0; i < g.rows(); ++i) g.row(i) *= scale[i];
+    return g;
   }
 };
 

@@ -144,6 +144,33 @@ void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec
     h.harmonics = level.hbm->harmonics;
     balance.emplace(level_system(p, h, level.hbm->force, level.hbm->harmonics, level.hbm->samples));
   }
+  level.cycles.assign(static_cast<size_t>(nf), 0);
+  level.steady.assign(static_cast<size_t>(nf), false);
+  level.failure.assign(static_cast<size_t>(nf), {});
+  level.residual.assign(static_cast<size_t>(nf), std::numeric_limits<double>::quiet_NaN());
+  level.transitions.assign(static_cast<size_t>(nf), 0);
+  level.floquet_max.assign(static_cast<size_t>(nf), std::numeric_limits<double>::quiet_NaN());
+  // Frequency i's outcome into the level; true where it has a periodic solution.
+  const auto record = [&](Index i, const timeint::ShootingResult& s) {
+    const auto f = static_cast<size_t>(i);
+    if (newmark_map && s.steady.converged) level.period_multiple[f] = 1;
+    level.cycles[f] += s.steady.cycles;
+    level.steady[f] = s.steady.converged;
+    level.failure[f] = s.steady.failure;
+    level.residual[f] = s.residual;
+    level.transitions[f] = s.transitions;
+    level.floquet_max[f] = s.largest_multiplier;
+    level.steps += static_cast<long>(s.steady.cycles) * spec.steps_per_period;
+    level.newton_iterations += s.steady.total_iterations;
+    level.max_step_iterations = std::max(level.max_step_iterations, static_cast<int>(s.steady.total_iterations));
+    // A frequency without a periodic solution keeps the first harmonics of the march's last period.
+    const bool harmonics = s.steady.coefficients.rows() == static_cast<Index>(tracked.dofs.size()) &&
+                           store_first_harmonics(level, i, s.steady.coefficients, tracked, responses);
+    if (!(harmonics && s.steady.converged)) return false;
+    level.largest.row(i) = s.largest.head(responses).transpose();
+    return true;
+  };
+  std::vector<Start> orbit(static_cast<size_t>(nf));  // each frequency's periodic state, where found
   Start start;
   for (Index i = 0; i < nf; ++i) {
     const double hz = level.frequency_hz[static_cast<size_t>(i)];
@@ -164,26 +191,23 @@ void periodic_sweep(TimeLevel& level, const PreparedHbm& p, const TimeSpec& spec
       tried = {};
       s = shoot(spec, model, kTwoPi * hz, options, tried);  // from the static state
     }
-    if (newmark_map && s.steady.converged) level.period_multiple[static_cast<size_t>(i)] = 1;
-    level.cycles.push_back(s.steady.cycles);
-    level.steady.push_back(s.steady.converged);
-    level.failure.push_back(s.steady.failure);
-    level.residual.push_back(s.residual);
-    level.transitions.push_back(s.transitions);
-    level.floquet_max.push_back(s.largest_multiplier);
-    level.steps += static_cast<long>(s.steady.cycles) * spec.steps_per_period;
-    level.newton_iterations += s.steady.total_iterations;
-    level.max_step_iterations = std::max(level.max_step_iterations, static_cast<int>(s.steady.total_iterations));
-    // A frequency without a periodic solution keeps the first harmonics of the march's last period.
-    const bool harmonics = s.steady.coefficients.rows() == static_cast<Index>(tracked.dofs.size()) &&
-                           store_first_harmonics(level, i, s.steady.coefficients, tracked, responses);
-    if (harmonics && s.steady.converged) {
-      level.largest.row(i) = s.largest.head(responses).transpose();
+    if (record(i, s)) {
+      orbit[static_cast<size_t>(i)] = tried;
       start = std::move(tried);
     }
     if (progress && i % 5 == 0)
       progress(fmt::format("Fe = {:g} N: {:.3f} Hz, shooting {} iterations{}", level.force, hz,
                            s.steady.total_iterations, s.steady.converged ? "" : " (no periodic solution found)"));
+  }
+  // Back down from the frequencies that converged: a frequency Newton missed from below (at the
+  // band's start, from the warm start alone; near a stop whose ringing breaks Newton's path) is
+  // shot again from the orbit of the frequency above it.
+  for (Index i = nf - 2; i >= 0; --i) {
+    const auto f = static_cast<size_t>(i);
+    if (level.steady[f] || !level.steady[f + 1]) continue;
+    Start tried = orbit[f + 1];
+    const timeint::ShootingResult s = shoot(spec, model, kTwoPi * level.frequency_hz[f], options, tried);
+    if (s.steady.converged && record(i, s)) orbit[f] = std::move(tried);
   }
 }
 

@@ -1,7 +1,8 @@
 // Shooting on the Newmark / HHT period map (timeint/newmark_shooting.hpp): the monodromy against
 // central differences of the map through stick, slip and lift-off; the multipliers of a linear
 // oscillator against the trapezoidal rule's amplification to the power of the steps; the periodic
-// state against the same integrator marched to its steady state.
+// state against the same integrator marched to its steady state; the sweep's pass back down from
+// the frequencies that converged.
 #include "timeint/newmark_shooting.hpp"
 
 #include <gtest/gtest.h>
@@ -238,6 +239,27 @@ TEST_F(NewmarkShootingCase, WhereTheMarchDoesNotSettleThereIsNoPeriodicSolutionA
     EXPECT_GT(r.at("A.x_amp_m"), 0.0) << r.at("frequency_hz");  // the march's last period
   }
   EXPECT_GE(without, 1);
+}
+
+// The sweep's pass back down (analysis/time_shooting.cpp, both maps): Coulomb's oscillator at
+// Ff/F0 = 0.5 below resonance on the exact flow, kt = 1e14 N/m, where the stuck mass rings on kt.
+// From the warm start Newton misses 80 Hz (measured: line search failed, |R| = 1.5e-10 m); shot
+// again from 84 Hz's orbit it converges, within 2e-3 of the exact motion with one stop per half
+// period (references/verification/coulomb_den_hartog_fp0.5_below.csv, first harmonic 8.8066e-6 m).
+TEST_F(NewmarkShootingCase, AFrequencyMissedFromBelowIsShotAgainFromTheOrbitAboveIt) {
+  const std::string text =
+      "[case]\nname = \"stops\"\n[analysis]\ntype = \"time\"\nmethod = \"shooting\"\nfrequency_hz = [80.0, 84.0]\n"
+      "step_hz = 4.0\nsweep = \"grid\"\nharmonics = 3\nsteps_per_period = 256\nmodal_damping = 0.0\n"
+      "forces = [{ dof = \"A.x\", amplitude = 1.0 }]\nforce_levels = [6.0]\nresponses = [\"A.x\"]\n"
+      "[analysis.model]\nname = \"oscillator\"\ndofs = [\"A.x\"]\nstiffness = [[1.0e6]]\nmass = [[1.0]]\n"
+      "[[analysis.contact]]\nname = \"ground\"\ntangential = { \"A.x\" = 1.0 }\nkn = 1.0e12\nkt = 1.0e14\n"
+      "mu = 0.3\nn0 = 10.0\n";
+  const RunOutcome o = run_case(write(text), {.out_dir = dir_ / "out", .study = false, .plots = false});
+  ASSERT_EQ(o.record.status, RunStatus::no_checks) << o.record.message;
+  const auto rows = frf_rows(o.out_dir / "frf.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& r : rows) EXPECT_EQ(r.at("steady"), 1.0) << r.at("frequency_hz");
+  EXPECT_NEAR(rows[0].at("A.x_amp_m") / 8.806589171106e-06, 1.0, 2e-3);
 }
 
 }  // namespace

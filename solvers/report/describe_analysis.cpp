@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "cache/cache_use.hpp"
 #include "distributed/distributed.hpp"
@@ -108,6 +110,7 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
   if (spec.system.model.file.empty() && !spec.system.model.matrices)
     describe_cache("Craig-Bampton reduction", p.timing.cache, run);
   long steps = 0, not_steady = 0, by_envelope = 0;
+  long settled = 0, subharmonic = 0;  // of the shooting's frequencies marched, not read by their envelope
   double seconds = 0, widest = 0;
   for (const TimeLevel& l : time.levels) {
     steps += l.steps;
@@ -115,19 +118,31 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
     for (size_t i = 0; i < l.steady.size(); ++i) {
       if (l.steady[i]) continue;
       ++not_steady;
-      if (steady_first_harmonic(l, spec, static_cast<Eigen::Index>(i)))
+      if (steady_first_harmonic(l, spec, static_cast<Eigen::Index>(i))) {
         ++by_envelope, widest = std::max(widest, l.envelope_span[i]);
+      } else if (i < l.period_multiple.size()) {
+        settled += l.period_multiple[i] == 1;
+        subharmonic += l.period_multiple[i] >= 2;
+      }
     }
   }
   const bool shooting = spec.method == TimeSpec::Method::shooting;
-  if (not_steady > by_envelope && shooting)
+  if (not_steady > by_envelope && shooting && marches(spec)) {
+    // What the march did where Newton failed: it settled (and Newton failed from its orbit too),
+    // repeats every k >= 2 periods, or repeats within none.
+    std::vector<std::string> parts;
+    if (settled > 0)
+      parts.push_back(fmt::format("{} settled in the march but Newton failed from its orbit as well", settled));
+    if (subharmonic > 0) parts.push_back(fmt::format("{} repeat every 2 or more periods", subharmonic));
+    if (const long rest = not_steady - by_envelope - settled - subharmonic; rest > 0)
+      parts.push_back(fmt::format("{} repeat within no period after {} periods", rest, spec.max_cycles));
     run.warnings.push_back(fmt::format(
-        "{} frequencies have no periodic solution found{}", not_steady - by_envelope,
-        marches(spec) ? fmt::format(" (Newton failed, and the march from its start repeats within no period after "
-                                    "{} periods): their amplitudes are the march's last period (frf: change, "
-                                    "period_multiple and the envelope columns say what the motion did)",
-                                    spec.max_cycles)
-                      : " (Newton failed; frf: residual_m)"));
+        "{} frequencies have no periodic solution found (Newton failed; of them {}): their amplitudes are the "
+        "march's last period (frf: change, period_multiple and the envelope columns say what the motion did)",
+        not_steady - by_envelope, fmt::join(parts, ", ")));
+  } else if (not_steady > by_envelope && shooting)
+    run.warnings.push_back(fmt::format(
+        "{} frequencies have no periodic solution found (Newton failed; frf: residual_m)", not_steady - by_envelope));
   else if (not_steady > by_envelope)
     run.warnings.push_back(
         fmt::format("{} frequencies did not reach the steady state within {} periods: their amplitudes are not the "

@@ -241,6 +241,29 @@ TEST_F(NewmarkShootingCase, WhereTheMarchDoesNotSettleThereIsNoPeriodicSolutionA
   EXPECT_GE(without, 1);
 }
 
+// Where the march settles but Newton cannot finish from its orbit (a tolerance below rounding), the
+// report says so instead of calling the motion one that never repeats.
+TEST_F(NewmarkShootingCase, AMarchThatSettlesWhereNewtonFailsIsReportedAsSettled) {
+  const RunOutcome o = run_case(write(newmark_map_case("[150.0, 160.0]",
+                                                       "steps_per_period = 256\nmax_iterations = 2\n"
+                                                       "tolerance = 1e-30\nsteady_tolerance = 1e-6\n")),
+                                {.out_dir = dir_ / "out", .study = false, .plots = false});
+  bool settled = false, never = false;
+  for (const std::string& w : o.record.warnings) {
+    settled |= w.find("settled in the march but Newton failed from its orbit as well") != w.npos;
+    never |= w.find("repeat within no period") != w.npos;
+  }
+  EXPECT_TRUE(settled) << o.record.message;
+  EXPECT_FALSE(never) << o.record.message;
+  const auto rows = frf_rows(o.out_dir / "frf.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& r : rows) {
+    EXPECT_EQ(r.at("steady"), 0.0) << r.at("frequency_hz");
+    EXPECT_EQ(r.at("period_multiple"), 1.0) << r.at("frequency_hz");
+    EXPECT_LE(r.at("change"), 1e-6) << r.at("frequency_hz");
+  }
+}
+
 // The sweep's pass back down (analysis/time_shooting.cpp, both maps): Coulomb's oscillator at
 // Ff/F0 = 0.5 below resonance on the exact flow, kt = 1e14 N/m, where the stuck mass rings on kt.
 // From the warm start Newton misses 80 Hz (measured: line search failed, |R| = 1.5e-10 m); shot

@@ -1,11 +1,16 @@
 #include "hbm/nonlinear_modes.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <any>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "hbm/condensed_balance.hpp"
 #include "linalg/damped_newton.hpp"
@@ -139,6 +144,40 @@ class EpmcSystem {
   double a_ = 1.0, s0_ = 1.0;
 };
 
+// Where a Newton iteration stopped short: each contact's states over the samples at its last
+// iterate, and the contacts at a corner (stuck the whole period with the loop at its Coulomb limit,
+// where the slider's convention, kept or shaken down to the limit, has a kink the Jacobian does not
+// see; bench/README.md). Empty without the contacts' data.
+std::string contact_states_at(const friction::FrictionModel& model, const NewtonPoint& at) {
+  const auto* contacts = std::any_cast<std::vector<contact::AftResult>>(&at.data);
+  if (!at.valid || !contacts) return {};
+  std::vector<std::string> states, corners;
+  for (size_t k = 0; k < contacts->size() && k < model.contacts.size(); ++k) {
+    const contact::AftResult& c = (*contacts)[k];
+    const double mu = model.contacts[k].law.mu;
+    std::array<int, 4> count{};  // stick, slip +, slip -, lift-off
+    double ratio = 0.0;          // largest |T| / (mu N) over the samples
+    for (size_t i = 0; i < c.state.size(); ++i) {
+      ++count[static_cast<size_t>(c.state[i])];
+      const double n = c.n[static_cast<Index>(i)];
+      if (n > 0.0 && mu > 0.0) ratio = std::max(ratio, std::abs(c.t[static_cast<Index>(i)]) / (mu * n));
+    }
+    const double samples = std::max<double>(1.0, static_cast<double>(c.state.size()));
+    states.push_back(fmt::format("{}: stick {:.0f} %, slip {:.0f} %, lift-off {:.0f} %", k + 1,
+                                 100.0 * count[0] / samples, 100.0 * (count[1] + count[2]) / samples,
+                                 100.0 * count[3] / samples));
+    if (count[0] == static_cast<int>(c.state.size()) && ratio > 0.99)
+      corners.push_back(fmt::format("{} (|T| / mu N = {:.5f})", k + 1, ratio));
+  }
+  std::string out = fmt::format("; contacts at the last iterate {}", fmt::join(states, "; "));
+  if (!corners.empty())
+    out += fmt::format(
+        "; at a corner of the contact states: contact {} stuck the whole period with its loop at the "
+        "Coulomb limit",
+        fmt::join(corners, ", "));
+  return out;
+}
+
 }  // namespace
 
 NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, int linear_mode,
@@ -236,7 +275,8 @@ NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, i
         const std::string why = fmt::format(
             "nonlinear mode {}: no periodic motion at modal amplitude {:.4g} (from {:.4g}, {} halvings of the step): "
             "{}",
-            linear_mode, a, last_a, options.max_halvings, r.converged ? "negative frequency" : r.failure);
+            linear_mode, a, last_a, options.max_halvings,
+            r.converged ? "negative frequency" : r.failure + contact_states_at(model, r.at));
         if (i + 1 < amplitudes.size() && skips_in_a_row < options.max_skips) {
           if (branch.skipped.empty()) branch.first_skip = why;
           branch.skipped.push_back(target);

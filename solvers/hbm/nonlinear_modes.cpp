@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <any>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "contact/state_fractions.hpp"
 #include "hbm/condensed_balance.hpp"
 #include "linalg/damped_newton.hpp"
 #include "linalg/dense_eigen.hpp"
@@ -155,18 +155,15 @@ std::string contact_states_at(const friction::FrictionModel& model, const Newton
   for (size_t k = 0; k < contacts->size() && k < model.contacts.size(); ++k) {
     const contact::AftResult& c = (*contacts)[k];
     const double mu = model.contacts[k].law.mu;
-    std::array<int, 4> count{};  // stick, slip +, slip -, lift-off
-    double ratio = 0.0;          // largest |T| / (mu N) over the samples
+    const contact::StateFractions f = contact::state_fractions(c.state);
+    double ratio = 0.0;  // largest |T| / (mu N) over the samples
     for (size_t i = 0; i < c.state.size(); ++i) {
-      ++count[static_cast<size_t>(c.state[i])];
       const double n = c.n[static_cast<Index>(i)];
       if (n > 0.0 && mu > 0.0) ratio = std::max(ratio, std::abs(c.t[static_cast<Index>(i)]) / (mu * n));
     }
-    const double samples = std::max<double>(1.0, static_cast<double>(c.state.size()));
-    states.push_back(fmt::format("{}: stick {:.0f} %, slip {:.0f} %, lift-off {:.0f} %", k + 1,
-                                 100.0 * count[0] / samples, 100.0 * (count[1] + count[2]) / samples,
-                                 100.0 * count[3] / samples));
-    if (count[0] == static_cast<int>(c.state.size()) && ratio > 0.99)
+    states.push_back(fmt::format("{}: stick {:.0f} %, slip {:.0f} %, lift-off {:.0f} %", k + 1, 100.0 * f.stick,
+                                 100.0 * f.slip, 100.0 * f.lift_off));
+    if (f.stick == 1.0 && ratio > 0.99)
       corners.push_back(fmt::format("{} (|T| / mu N = {:.5f})", k + 1, ratio));
   }
   std::string out = fmt::format("; contacts at the last iterate {}", fmt::join(states, "; "));

@@ -18,6 +18,7 @@
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
 #include "timeint/newmark.hpp"
+#include "timeint/shooting.hpp"
 
 namespace bb {
 namespace {
@@ -184,6 +185,11 @@ TimeOutcome run_time(const Model& model, const TimeSpec& spec, const HbmProgress
   TimeOutcome o;
   o.prepared = prepare_hbm(model, spec.system, cache);
   const PreparedHbm& p = o.prepared;
+  if (spec.rigid_stick) try {
+      timeint::validate_rigid_stick(p.model);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("'analysis.stick' = \"rigid\": {}", e.what()));
+    }
   const TrackedDofs tracked = tracked_dofs(p);
   timeint::SteadyStateOptions options;
   options.dofs = tracked.dofs;

@@ -22,6 +22,7 @@ timeint::ShootingOptions shooting_options(const TimeSpec& spec, const std::vecto
   o.tolerance = spec.system.tolerance;
   o.max_iterations = spec.system.max_iterations;
   o.floquet = spec.floquet;
+  o.rigid_stick = spec.rigid_stick;
   // The Newmark map's start from rest: a lightly damped model (1 % at 175 Hz) needs tens of periods
   // before Newton's nonsmooth map is near enough; the march stops once a period changes by 1e-3.
   if (spec.period_map == TimeSpec::PeriodMap::newmark) o.warmup_periods = 400;

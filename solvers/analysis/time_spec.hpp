@@ -21,7 +21,10 @@ struct TimeSpec {
   // damping the modes the step does not resolve).
   enum class PeriodMap { exact, newmark };
   PeriodMap period_map = PeriodMap::exact;
-  bool floquet = false;            // shooting only: Floquet multipliers and stability per frequency
+  bool floquet = false;  // shooting only: Floquet multipliers and stability per frequency
+  // Shooting on the exact flow only: a stuck contact held rigidly (Coulomb's law; its kt unused)
+  // instead of the Jenkins spring (case key stick = "rigid"; "elastic", the default).
+  bool rigid_stick = false;
   HbmSpec system;                  // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
   int steps_per_period = 128;      // dt = T / steps_per_period (eq 3.42)
   int max_cycles = 2000;           // per frequency, then the point is reported as not steady

@@ -18,6 +18,12 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     t.period_map = r.choice("period_map", {"exact", "newmark"}) == "newmark" ? TimeSpec::PeriodMap::newmark
                                                                              : TimeSpec::PeriodMap::exact;
   }
+  if (r.has("stick")) {
+    t.rigid_stick = r.choice("stick", {"elastic", "rigid"}) == "rigid";
+    if (t.rigid_stick && (t.method != TimeSpec::Method::shooting || t.period_map != TimeSpec::PeriodMap::exact))
+      r.fail("stick",
+             "\"rigid\" (Coulomb's stick) applies to method = \"shooting\" on the exact flow (period_map = \"exact\")");
+  }
   if (r.has("floquet")) {
     t.floquet = r.boolean("floquet", false);
     if (t.floquet && t.method != TimeSpec::Method::shooting)

@@ -15,11 +15,21 @@ namespace {
 
 double scale_of(const VectorXd& x, Index motion) { return x.head(motion).cwiseAbs().maxCoeff(); }
 
-// R = x(2 pi) - x(0), free sliders held.
+// The free sliders and other held directions, as rows replaced.
+std::vector<PeriodEval::Held> held_rows(const PeriodEval& p, const PeriodLayout& layout, Index size) {
+  std::vector<PeriodEval::Held> out = p.held;
+  for (size_t c = 0; c < p.free_slider.size(); ++c)
+    if (p.free_slider[c]) {
+      const Index row = layout.slider_offset + static_cast<Index>(c);
+      out.push_back({row, Eigen::RowVectorXd::Unit(size, row)});
+    }
+  return out;
+}
+
+// R = x(2 pi) - x(0), held directions kept.
 VectorXd residual(const PeriodEval& p, const VectorXd& x, const PeriodLayout& layout) {
   VectorXd r = p.end - x;
-  for (size_t c = 0; c < p.free_slider.size(); ++c)
-    if (p.free_slider[c]) r[layout.slider_offset + static_cast<Index>(c)] = 0.0;
+  for (const PeriodEval::Held& h : held_rows(p, layout, x.size())) r[h.row] = 0.0;
   return r;
 }
 
@@ -44,12 +54,7 @@ PeriodNewtonResult newton_on_period(const PeriodMap& map, VectorXd x, const Peri
     if (out.iterations >= max_iterations) return fail("no convergence");
     ++out.iterations;
     MatrixXd g = out.period.monodromy - MatrixXd::Identity(x.size(), x.size());
-    for (size_t c = 0; c < out.period.free_slider.size(); ++c)
-      if (out.period.free_slider[c]) {
-        const Index row = layout.slider_offset + static_cast<Index>(c);
-        g.row(row).setZero();
-        g(row, row) = 1.0;
-      }
+    for (const PeriodEval::Held& h : held_rows(out.period, layout, x.size())) g.row(h.row) = h.gradient;
     const VectorXd dx = g.colPivHouseholderQr().solve(-r);
     if (!dx.allFinite()) return fail("singular monodromy - I");
     // At the rounding floor |R| stops falling; a correction below the tolerance ends the iteration.
@@ -82,13 +87,18 @@ PeriodNewtonResult newton_on_period(const PeriodMap& map, VectorXd x, const Peri
 }
 
 Eigen::VectorXcd floquet_multipliers(const PeriodEval& p, const PeriodLayout& layout) {
+  // In coordinates whose held ones are the held directions (each repeats exactly: a multiplier 1
+  // decoupled from the rest), then without them.
+  const Index size = p.monodromy.rows();
+  MatrixXd t = MatrixXd::Identity(size, size);
+  std::vector<char> held(static_cast<size_t>(size), 0);
+  for (const PeriodEval::Held& h : held_rows(p, layout, size))
+    t.row(h.row) = h.gradient, held[static_cast<size_t>(h.row)] = 1;
+  const MatrixXd changed = t * p.monodromy * t.inverse();
   std::vector<Index> kept;
-  for (Index i = 0; i < p.monodromy.rows(); ++i) {
-    const Index c = i - layout.slider_offset;
-    const bool free = c >= 0 && c < static_cast<Index>(p.free_slider.size()) && p.free_slider[static_cast<size_t>(c)];
-    if (!free) kept.push_back(i);
-  }
-  const MatrixXd m = p.monodromy(kept, kept);
+  for (Index i = 0; i < size; ++i)
+    if (!held[static_cast<size_t>(i)]) kept.push_back(i);
+  const MatrixXd m = changed(kept, kept);
   Eigen::VectorXcd mu = Eigen::EigenSolver<MatrixXd>(m, false).eigenvalues();
   std::sort(mu.begin(), mu.end(), [](const auto& a, const auto& b) { return std::abs(a) > std::abs(b); });
   return mu;

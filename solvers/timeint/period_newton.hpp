@@ -20,8 +20,15 @@ struct PeriodEval {
   Eigen::VectorXd end;            // x(2 pi)
   Eigen::MatrixXd monodromy;      // d x(2 pi) / d x(0), when asked
   std::vector<char> free_slider;  // per contact: stuck over the whole period
-  int transitions = 0;            // contact transitions over the period
-  std::string failure;            // empty when the period was integrated
+  // Other neutral directions held: equation `row` of the period replaced by gradient . dx = 0 (a
+  // rigidly stuck contact's u, which any value repeats, held where Newton has it).
+  struct Held {
+    Eigen::Index row;
+    Eigen::RowVectorXd gradient;
+  };
+  std::vector<Held> held;
+  int transitions = 0;  // contact transitions over the period
+  std::string failure;  // empty when the period was integrated
 };
 
 using PeriodMap = std::function<PeriodEval(const Eigen::VectorXd& x, bool jacobian)>;
@@ -46,7 +53,7 @@ struct PeriodNewtonResult {
 [[nodiscard]] PeriodNewtonResult newton_on_period(const PeriodMap& map, Eigen::VectorXd x, const PeriodLayout& layout,
                                                   double tolerance, int max_iterations, double omega_rad_s);
 
-// The multipliers of the monodromy without the free sliders, by decreasing modulus.
+// The multipliers of the monodromy without the free sliders and held directions, by decreasing modulus.
 [[nodiscard]] Eigen::VectorXcd floquet_multipliers(const PeriodEval& p, const PeriodLayout& layout);
 
 }  // namespace bb::timeint

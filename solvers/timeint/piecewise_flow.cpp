@@ -10,6 +10,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "timeint/flow_trace.hpp"
+
 namespace bb::timeint {
 
 using contact::ContactState;
@@ -23,81 +25,13 @@ namespace {
 double sign_of(ContactState m) { return m == ContactState::slip_negative ? -1.0 : 1.0; }
 bool slipping(ContactState m) { return m == ContactState::slip_positive || m == ContactState::slip_negative; }
 
-// Phases below this are one point: a transition is located to it (rad; the period is 2 pi).
-constexpr double kPhaseResolution = 1e-13;
-
-// One linear function of the state along one piece, g(tau) = row . exp(a tau) z: by the modes of a
-// (O(size) per value) where their basis reproduces the piece's end, else by the exponential.
-class Trace {
- public:
-  // modal: row V and lambda the eigenvalues of a (a = V diag(lambda) V^-1), coordinates V^-1 z; null
-  // without a usable basis.
-  Trace(const RowVectorXd& row, const MatrixXd& a, const VectorXd& z, const Eigen::RowVectorXcd* modal,
-        const Eigen::VectorXcd* lambda, const Eigen::VectorXcd* coordinates, double check_tau, double check_value)
-      : row_(row), a_(a), z_(z) {
-    if (!modal) return;
-    weights_ = modal->transpose().cwiseProduct(*coordinates);
-    lambda_ = *lambda;
-    const double scale = row.cwiseAbs().dot(z.cwiseAbs()) + std::abs(check_value);
-    spectral_ = std::abs(value(check_tau) - check_value) <= 1e-9 * scale;
-  }
-  double value(double tau) const {
-    if (tau == 0.0) return row_.dot(z_);
-    if (!spectral_) return row_.dot((a_ * tau).exp() * z_);
-    return (weights_.array() * (lambda_.array() * tau).exp()).sum().real();
-  }
-  double rate(double tau) const {
-    if (!spectral_) return (row_ * a_).dot((a_ * tau).exp() * z_);
-    return (weights_.array() * lambda_.array() * (lambda_.array() * tau).exp()).sum().real();
-  }
-
- private:
-  const RowVectorXd& row_;
-  const MatrixXd& a_;
-  const VectorXd& z_;
-  Eigen::VectorXcd weights_, lambda_;
-  bool spectral_ = false;
-};
-
-// The first zero of g in [lo, hi], g(lo) <= 0 < g(hi): Illinois, returning a phase on the far side
-// (g > 0), so the transition has happened there.
-double crossing(const Trace& g, double lo, double hi) {
-  double g_lo = g.value(lo), g_hi = g.value(hi);
-  if (g_lo > 0.0) return lo;
-  int side = 0;
-  for (int it = 0; it < 200 && hi - lo > kPhaseResolution; ++it) {
-    double mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-    if (!(mid > lo && mid < hi) || it % 8 == 7) mid = 0.5 * (lo + hi);  // bisect now and then: bounded
-    const double v = g.value(mid);
-    if (v > 0.0) {
-      hi = mid, g_hi = v;
-      if (side == 1) g_lo *= 0.5;
-      side = 1;
-    } else {
-      lo = mid, g_lo = v;
-      if (side == -1) g_hi *= 0.5;
-      side = -1;
-    }
-  }
-  return hi;
-}
-
-// The phase in (0, hi) where g' changes from + to - (bisection).
-double turning_point(const Trace& g, double hi) {
-  double lo = 0.0;
-  for (int it = 0; it < 200 && hi - lo > kPhaseResolution; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (g.rate(mid) > 0.0 ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 }  // namespace
 
-PiecewiseFlow::PiecewiseFlow(const friction::FrictionModel& model, double omega_rad_s, double step)
+PiecewiseFlow::PiecewiseFlow(const friction::FrictionModel& model, double omega_rad_s, double step, bool rigid_stick)
     : model_(model),
       omega_(omega_rad_s),
       step_(step),
+      rigid_(rigid_stick),
       n_(model.mass.rows()),
       nc_(static_cast<Index>(model.contacts.size())),
       size_(2 * n_ + nc_ + 3) {
@@ -120,6 +54,7 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
     if (m == ContactState::lift_off) continue;
     stiffness += law.kn * an * an.transpose();
     constant -= law.n0 * an;
+    if (rigid(m)) continue;  // held by the constraint below
     if (m == ContactState::stick) {
       stiffness += law.kt * at * at.transpose();
       constant += law.kt * c.tangential_offset * at;
@@ -143,8 +78,9 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
   a(one + 1, one + 2) = -1.0;  // (cos theta)' = -sin theta
   a(one + 2, one + 1) = 1.0;
   Generator g;
+  rigid_constraints(modes, a, g.stuck_force);
   g.a = std::move(a);
-  g.events = events(modes);
+  g.events = events(modes, g.stuck_force);
   const Eigen::EigenSolver<MatrixXd> solver(g.a, true);
   if (solver.info() == Eigen::Success) {
     g.lambda = solver.eigenvalues();
@@ -162,6 +98,43 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
     g.piece_exponential = (g.a * g.piece).exp();
   }
   return generators_.emplace(modes, std::move(g)).first->second;
+}
+
+void PiecewiseFlow::rigid_constraints(const std::vector<ContactState>& modes, MatrixXd& a,
+                                      std::vector<RowVectorXd>& stuck_force) const {
+  stuck_force.assign(static_cast<size_t>(nc_), RowVectorXd());
+  std::vector<Index> stuck;
+  for (Index k = 0; k < nc_; ++k)
+    if (rigid(modes[static_cast<size_t>(k)])) stuck.push_back(k);
+  if (stuck.empty()) return;
+  const auto r = static_cast<Index>(stuck.size());
+  MatrixXd g(r, n_);
+  for (Index i = 0; i < r; ++i)
+    g.row(i) = model_.contacts[static_cast<size_t>(stuck[static_cast<size_t>(i)])].tangential;
+  const MatrixXd mg = mass_inverse_ * g.transpose();
+  const Eigen::FullPivLU<MatrixXd> schur(g * mg);
+  if (!schur.isInvertible())
+    throw std::invalid_argument(
+        "exact flow: the stuck contacts' tangential directions are dependent (rigid stick holds independent ones)");
+  // p' = B z + M^-1 G^T mu with G p' = 0; the contact pulls on the model with -a_t^T T = G^T mu omega^2.
+  const MatrixXd multiplier = -schur.solve(g * a.middleRows(n_, n_));
+  a.middleRows(n_, n_) += mg * multiplier;
+  for (Index i = 0; i < r; ++i)
+    stuck_force[static_cast<size_t>(stuck[static_cast<size_t>(i)])] = -omega_ * omega_ * multiplier.row(i);
+}
+
+MatrixXd PiecewiseFlow::stuck_projection(const std::vector<ContactState>& modes) const {
+  std::vector<Index> stuck;
+  for (Index k = 0; k < nc_; ++k)
+    if (rigid(modes[static_cast<size_t>(k)])) stuck.push_back(k);
+  MatrixXd projection = MatrixXd::Identity(n_, n_);
+  if (stuck.empty()) return projection;
+  MatrixXd g(static_cast<Index>(stuck.size()), n_);
+  for (size_t i = 0; i < stuck.size(); ++i)
+    g.row(static_cast<Index>(i)) = model_.contacts[static_cast<size_t>(stuck[i])].tangential;
+  const MatrixXd mg = mass_inverse_ * g.transpose();
+  projection -= mg * (g * mg).fullPivLu().solve(g);  // the rate a stuck u cannot have, as a plastic impact
+  return projection;
 }
 
 int PiecewiseFlow::halvings(const Generator& mode, const Eigen::VectorXcd& coordinates) const {
@@ -194,20 +167,20 @@ void PiecewiseFlow::unpack(const VectorXd& z, FlowState& s) const {
 
 RowVectorXd PiecewiseFlow::slider_row(Index k, ContactState m) const {
   const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-  if (!slipping(m)) return c.tangential;
+  if (!slipping(m) || rigid_) return c.tangential;
   return c.tangential - sign_of(m) * c.law.mu * c.law.kn / c.law.kt * c.normal;
 }
 
 double PiecewiseFlow::algebraic_slider(const FlowState& s, Index k, ContactState m) const {
   const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
   return slider_row(k, m).dot(s.q) - c.tangential_offset -
-         (slipping(m) ? sign_of(m) * c.law.mu * c.law.n0 / c.law.kt : 0.0);
+         (slipping(m) && !rigid_ ? sign_of(m) * c.law.mu * c.law.n0 / c.law.kt : 0.0);
 }
 
 void PiecewiseFlow::tie_sliders(FlowState& s, MatrixXd* jacobian) const {
   for (Index k = 0; k < nc_; ++k) {
     const ContactState m = s.modes[static_cast<size_t>(k)];
-    if (m == ContactState::stick) continue;
+    if (m == ContactState::stick && !rigid_) continue;
     s.w[k] = algebraic_slider(s, k, m);
     if (jacobian) jacobian->row(2 * n_ + k) = slider_row(k, m) * jacobian->topRows(n_);
   }
@@ -224,6 +197,11 @@ void PiecewiseFlow::settle(FlowState& s) const {
       m = ContactState::lift_off;
     } else if (law.mu == 0.0) {
       m = ContactState::slip_positive;  // T = 0 either way; the slider follows u
+    } else if (rigid_) {
+      // Stuck at rest (u' at the rounding of p), where the constraint force allows it (below).
+      const double rate = c.tangential.dot(s.p), rounding = 1e-13 * c.tangential.cwiseAbs().dot(s.p.cwiseAbs());
+      if (rate > rounding) m = ContactState::slip_positive;
+      if (rate < -rounding) m = ContactState::slip_negative;
     } else {
       const double u = c.tangential.dot(s.q) - c.tangential_offset;
       const double trial = law.kt * (u - s.w[k]);
@@ -237,17 +215,36 @@ void PiecewiseFlow::settle(FlowState& s) const {
         m = ContactState::slip_negative;
     }
   }
+  for (Index pass = 0; rigid_ && pass < nc_; ++pass) {  // a stick that needs more than mu N slips
+    bool changed = false;
+    const Generator& mode = mode_data(s.modes);
+    const VectorXd z = pack(s);
+    for (Index k = 0; k < nc_; ++k) {
+      ContactState& m = s.modes[static_cast<size_t>(k)];
+      if (!rigid(m)) continue;
+      const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+      const double force = mode.stuck_force[static_cast<size_t>(k)].dot(z),
+                   limit = c.law.mu * (c.law.n0 + c.law.kn * c.normal.dot(s.q));
+      if (std::abs(force) <= limit) continue;
+      m = force > 0.0 ? ContactState::slip_positive : ContactState::slip_negative;
+      changed = true;
+      break;  // the others' forces change with it
+    }
+    if (!changed) break;
+  }
   tie_sliders(s, nullptr);
 }
 
 MatrixXd PiecewiseFlow::start_jacobian(const FlowState& settled) const {
   MatrixXd j = MatrixXd::Identity(state_size(), state_size());
+  if (rigid_) j.block(n_, n_, n_, n_) = stuck_projection(settled.modes);
   FlowState copy = settled;
   tie_sliders(copy, &j);
   return j;
 }
 
-std::vector<PiecewiseFlow::Event> PiecewiseFlow::events(const std::vector<ContactState>& modes) const {
+std::vector<PiecewiseFlow::Event> PiecewiseFlow::events(const std::vector<ContactState>& modes,
+                                                        const std::vector<RowVectorXd>& stuck_force) const {
   std::vector<Event> out;
   const Index p = n_, one = 2 * n_ + nc_;
   for (Index k = 0; k < nc_; ++k) {
@@ -266,7 +263,16 @@ std::vector<PiecewiseFlow::Event> PiecewiseFlow::events(const std::vector<Contac
     } else if (m == ContactState::lift_off) {
       continue;  // kn = 0: the normal load is N0 for ever, so a contact neither opens nor closes
     }
-    if (m == ContactState::stick) {
+    if (rigid(m)) {
+      // |T| reaching mu N, divided by mu N0 + kn (newtons per metre of v)
+      RowVectorXd limit = RowVectorXd::Zero(size_);
+      limit.head(n_) = law.mu * law.kn * c.normal;
+      limit[one] = law.mu * law.n0;
+      const double scale = 1.0 / (law.mu * law.n0 + law.kn + 1e-300);
+      for (const double s : {1.0, -1.0})
+        out.push_back({k, s > 0 ? ContactState::slip_positive : ContactState::slip_negative,
+                       scale * (s * stuck_force[static_cast<size_t>(k)] - limit)});
+    } else if (m == ContactState::stick) {
       // |kt (u - w)| reaching mu N, divided by kt (metres of u)
       for (const double s : {1.0, -1.0}) {
         RowVectorXd row = RowVectorXd::Zero(size_);
@@ -300,6 +306,45 @@ void PiecewiseFlow::extremes_in_piece(const MatrixXd& a, const VectorXd& z0, con
   }
 }
 
+void PiecewiseFlow::switch_contact(FlowState& s, const Event& ev, const MatrixXd& a, MatrixXd* jacobian) const {
+  const Index ns = state_size();
+  const Index k = ev.contact;
+  const ContactState before = s.modes[static_cast<size_t>(k)];
+  s.modes[static_cast<size_t>(k)] = ev.next;
+  if (rigid_ && before == ContactState::lift_off && ev.next == ContactState::stick) {
+    // Closing at N = 0: no force jumps, and it slips the way it moves (sticking would take an impulse).
+    const double rate = model_.contacts[static_cast<size_t>(k)].tangential.dot(s.p);
+    if (rate != 0.0)
+      s.modes[static_cast<size_t>(k)] = rate > 0.0 ? ContactState::slip_positive : ContactState::slip_negative;
+  } else if (rigid_ && ev.next == ContactState::stick) {
+    // u' stops. A stick that needs more than mu N reverses the slip at once; either way the
+    // acceleration jumps: the saltation I + (f+ - f-) g' / (g' f-).
+    const VectorXd at = pack(s);
+    const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+    const double force = mode_data(s.modes).stuck_force[static_cast<size_t>(k)].dot(at),
+                 limit = c.law.mu * std::max(c.law.n0 + c.law.kn * c.normal.dot(s.q), 0.0);
+    if (std::abs(force) > limit)
+      s.modes[static_cast<size_t>(k)] = force > 0.0 ? ContactState::slip_positive : ContactState::slip_negative;
+    const VectorXd before_rate = a * at;
+    const double crossing_rate = ev.row.dot(before_rate);
+    if (jacobian && crossing_rate > 0.0) {
+      const VectorXd jump = (mode_data(s.modes).a * at - before_rate).head(ns);
+      const RowVectorXd gradient = ev.row.head(ns) * *jacobian;
+      *jacobian += jump * gradient / crossing_rate;
+    }
+  } else if (before == ContactState::lift_off) {
+    // Closing: the slider sticks at u(theta_c), theta_c moving with the start.
+    const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+    s.w[k] = c.tangential.dot(s.q) - c.tangential_offset;
+    if (jacobian) {
+      const double closing_rate = c.normal.dot(s.p);
+      RowVectorXd row = c.tangential * jacobian->topRows(n_);
+      if (closing_rate > 0.0) row -= c.tangential.dot(s.p) / closing_rate * (c.normal * jacobian->topRows(n_));
+      jacobian->row(2 * n_ + k) = row;
+    }
+  }
+}
+
 void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, int max_events, Advance& log,
                             const std::vector<Index>& watch, VectorXd* extremes) const {
   if (log.switched.size() != static_cast<size_t>(nc_)) log.switched.assign(static_cast<size_t>(nc_), 0);
@@ -326,7 +371,7 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
     const auto trace = [&](const RowVectorXd& row, const Eigen::RowVectorXcd* modal) {
       Eigen::RowVectorXcd own;
       if (mode.spectral && !modal) own = row.cast<std::complex<double>>() * mode.vectors, modal = &own;
-      return Trace(row, a, z, mode.spectral ? modal : nullptr, &mode.lambda, &coordinates, tau_end, row.dot(z_end));
+      return FlowTrace(row, a, z, mode.spectral ? modal : nullptr, &mode.lambda, &coordinates, tau_end, row.dot(z_end));
     };
     // The earliest transition in (0, tau_end].
     double first = std::numeric_limits<double>::infinity();
@@ -336,7 +381,7 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
       const Eigen::RowVectorXcd* modal = mode.spectral ? &mode.modal[i] : nullptr;
       const double g_end = ev.row.dot(z_end);
       double hi = std::numeric_limits<double>::quiet_NaN();
-      std::optional<Trace> g;
+      std::optional<FlowTrace> g;
       if (g_end > 0.0) {
         hi = tau_end;
       } else if (ev.row.dot(z) <= 0.0 && ev.row.dot(a * z) > 0.0 && ev.row.dot(a * z_end) < 0.0) {
@@ -366,21 +411,8 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
     if (jacobian) *jacobian = e.topLeftCorner(ns, ns) * *jacobian;
     tie_sliders(s, jacobian);
     if (!next) continue;
-    const Index k = next->contact;
-    const ContactState before = s.modes[static_cast<size_t>(k)];
-    s.modes[static_cast<size_t>(k)] = next->next;
-    log.switched[static_cast<size_t>(k)] = 1;
-    if (before == ContactState::lift_off) {
-      // Closing: the slider sticks at u(theta_c), theta_c moving with the start.
-      const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-      s.w[k] = c.tangential.dot(s.q) - c.tangential_offset;
-      if (jacobian) {
-        const double closing_rate = c.normal.dot(s.p);
-        RowVectorXd row = c.tangential * jacobian->topRows(n_);
-        if (closing_rate > 0.0) row -= c.tangential.dot(s.p) / closing_rate * (c.normal * jacobian->topRows(n_));
-        jacobian->row(2 * n_ + k) = row;
-      }
-    }
+    switch_contact(s, *next, a, jacobian);
+    log.switched[static_cast<size_t>(next->contact)] = 1;
     tie_sliders(s, jacobian);
     if (++log.events > max_events) {
       log.failure = fmt::format("more than {} contact transitions in one period (chatter) at phase {:.6g} rad",
@@ -402,7 +434,10 @@ ContactSample PiecewiseFlow::sample(const FlowState& s, Index k) const {
   out.slider = s.w[k];
   if (m == ContactState::lift_off) return out;
   out.normal = std::max(law.n0 + law.kn * out.v, 0.0);
-  out.tangential = m == ContactState::stick ? law.kt * (out.u - s.w[k]) : sign_of(m) * law.mu * out.normal;
+  if (rigid(m))
+    out.tangential = mode_data(s.modes).stuck_force[static_cast<size_t>(k)].dot(pack(s));
+  else
+    out.tangential = m == ContactState::stick ? law.kt * (out.u - s.w[k]) : sign_of(m) * law.mu * out.normal;
   return out;
 }
 

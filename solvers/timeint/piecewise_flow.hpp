@@ -17,6 +17,14 @@
 // term: a contact that closes sticks at the u it closes at, which moves with the closing phase. All
 // other transitions keep the forces continuous, so they need none (a slip -> stick transition happens
 // where the slider's rate is zero).
+//
+// Rigid stick (Coulomb's law, `rigid_stick`): a stuck contact holds u fixed instead of pulling on a
+// spring kt (kt is then unused), so the stuck structure does not ring on kt and the flow agrees with
+// Coulomb's law exactly. While contacts stick, the motion is that of the model constrained to
+// a_t . q'' = 0 (the constraint forces are linear in z, so z' = A_m z still holds), a stuck contact
+// slips once |T| reaches mu N, and a slipping one sticks where u' turns; the slider is u throughout.
+// Sticking changes the acceleration at once, so the sensitivity takes the saltation
+// I + (f+ - f-) g' / (g' f-) there; a contact that closes slips (N = 0 then) in the direction of u'.
 #pragma once
 #include <Eigen/Dense>
 
@@ -41,7 +49,8 @@ class PiecewiseFlow {
   // `model` validated (friction::validate_model) with an invertible mass; omega > 0 [rad/s].
   // Throws std::invalid_argument when M is singular. `step` [rad]: the sub-interval whose
   // exponentials are cached per combination of modes.
-  PiecewiseFlow(const friction::FrictionModel& model, double omega_rad_s, double step);
+  // `rigid_stick`: Coulomb's stick (above) instead of the spring kt.
+  PiecewiseFlow(const friction::FrictionModel& model, double omega_rad_s, double step, bool rigid_stick = false);
 
   Eigen::Index dofs() const { return n_; }
   Eigen::Index contacts() const { return nc_; }
@@ -53,7 +62,8 @@ class PiecewiseFlow {
   // their value in that mode (w = u -+ mu N / kt, or u when open).
   void settle(FlowState& s) const;
 
-  // d(q, p, w)/d(q, p, w) at a settled state: the identity, the rows of sliders not stuck tied to q.
+  // d(q, p, w)/d(q, p, w) at a settled state: the identity, the rows of sliders not stuck tied to q
+  // (with rigid stick every slider, and the rate of a stuck contact's u taken out of p).
   Eigen::MatrixXd start_jacobian(const FlowState& settled) const;
 
   // Advances a settled `s` to phase theta_end, locating every transition, and, when `jacobian` is
@@ -69,6 +79,10 @@ class PiecewiseFlow {
   void advance(FlowState& s, double theta_end, Eigen::MatrixXd* jacobian, int max_events, Advance& log,
                const std::vector<Eigen::Index>& watch = {}, Eigen::VectorXd* extremes = nullptr) const;
 
+  const Eigen::RowVectorXd& tangential(Eigen::Index k) const {
+    return model_.contacts[static_cast<size_t>(k)].tangential;
+  }
+
   // Contact k's kinematics and forces in state s (the conventions of timeint/contact_step.hpp).
   ContactSample sample(const FlowState& s, Eigen::Index k) const;
 
@@ -81,8 +95,18 @@ class PiecewiseFlow {
   };
   Eigen::VectorXd pack(const FlowState& s) const;
   void unpack(const Eigen::VectorXd& z, FlowState& s) const;
-  std::vector<Event> events(const std::vector<contact::ContactState>& modes) const;
+  // `stuck_force`: with rigid stick, the row over z of each contact's constraint force T (empty rows
+  // for contacts not stuck).
+  std::vector<Event> events(const std::vector<contact::ContactState>& modes,
+                            const std::vector<Eigen::RowVectorXd>& stuck_force) const;
+  bool rigid(contact::ContactState m) const { return rigid_ && m == contact::ContactState::stick; }
+  void rigid_constraints(const std::vector<contact::ContactState>& modes, Eigen::MatrixXd& a,
+                         std::vector<Eigen::RowVectorXd>& stuck_force) const;
+  Eigen::MatrixXd stuck_projection(const std::vector<contact::ContactState>& modes) const;  // of p
   void tie_sliders(FlowState& s, Eigen::MatrixXd* jacobian) const;
+  // Contact ev.contact's transition at s, reached in the mode of generator a: its new mode, with the
+  // sensitivity's saltation where the state or the acceleration jumps.
+  void switch_contact(FlowState& s, const Event& ev, const Eigen::MatrixXd& a, Eigen::MatrixXd* jacobian) const;
   template <class TraceOf>
   void extremes_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z0, const Eigen::VectorXd& z1, double tau,
                          const std::vector<Eigen::Index>& watch, Eigen::VectorXd& extremes, const TraceOf& trace) const;
@@ -91,6 +115,7 @@ class PiecewiseFlow {
 
   friction::FrictionModel model_;
   double omega_, step_;
+  bool rigid_;
   Eigen::Index n_, nc_, size_;  // DOFs, contacts, augmented size 2n + nc + 3
   Eigen::MatrixXd mass_inverse_;
   struct Generator {
@@ -100,6 +125,7 @@ class PiecewiseFlow {
     Eigen::MatrixXd piece_exponential;                // exp(a piece)
     mutable std::map<int, Eigen::MatrixXd> halvings;  // exp(a step / 2^k)
     std::vector<Event> events;
+    std::vector<Eigen::RowVectorXd> stuck_force;  // rigid stick: T of each stuck contact over z
     // a = V diag(lambda) V^-1 where V is well conditioned: event functions then cost O(size) a value.
     Eigen::VectorXcd lambda;                 // eigenvalues
     Eigen::MatrixXcd vectors;                // V

@@ -36,7 +36,8 @@ FlowState unstack(const PiecewiseFlow& flow, const VectorXd& x) {
 }
 
 // One period from x: the end state, the monodromy (when asked) and which sliders never moved.
-PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int max_events, bool jacobian) {
+PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int max_events, bool jacobian,
+                      bool rigid_stick) {
   PeriodEval out;
   FlowState end = unstack(flow, x);
   const std::vector<ContactState> modes0 = end.modes;
@@ -48,8 +49,23 @@ PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, i
   out.transitions = log.events;
   out.failure = log.failure;
   out.free_slider.resize(modes0.size());
-  for (size_t c = 0; c < modes0.size(); ++c)
-    out.free_slider[c] = modes0[c] == ContactState::stick && (log.switched.empty() || !log.switched[c]);
+  std::vector<char> used(static_cast<size_t>(flow.dofs()), 0);
+  for (size_t c = 0; c < modes0.size(); ++c) {
+    const bool free = modes0[c] == ContactState::stick && (log.switched.empty() || !log.switched[c]);
+    out.free_slider[c] = free && !rigid_stick;
+    if (!free || !rigid_stick) continue;
+    // Held rigidly all period, the contact stays at any u: u is held, in place of the equation of
+    // the DOF it moves most (the DOFs' equations combine to u's, which repeats by itself).
+    const Eigen::RowVectorXd& at = flow.tangential(static_cast<Index>(c));
+    Index dof = -1;
+    for (Index d = 0; d < at.size(); ++d)
+      if (!used[static_cast<size_t>(d)] && at[d] != 0.0 && (dof < 0 || std::abs(at[d]) > std::abs(at[dof]))) dof = d;
+    if (dof < 0) continue;
+    used[static_cast<size_t>(dof)] = 1;
+    Eigen::RowVectorXd gradient = Eigen::RowVectorXd::Zero(x.size());
+    gradient.head(flow.dofs()) = at;
+    out.held.push_back({dof, gradient});
+  }
   return out;
 }
 
@@ -75,6 +91,19 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
 
 }  // namespace
 
+void validate_rigid_stick(const friction::FrictionModel& model) {
+  if (model.contacts.empty()) return;
+  MatrixXd rows(static_cast<Index>(model.contacts.size()), model.mass.rows());
+  for (size_t c = 0; c < model.contacts.size(); ++c) rows.row(static_cast<Index>(c)) = model.contacts[c].tangential;
+  Eigen::FullPivLU<MatrixXd> lu(rows);
+  lu.setThreshold(1e-10);
+  if (lu.rank() < rows.rows())
+    throw std::invalid_argument(
+        fmt::format("Coulomb's stick holds each stuck contact's u, so the {} contacts' tangential directions must be "
+                    "independent (their rank is {})",
+                    rows.rows(), lu.rank()));
+}
+
 void validate_shooting(const friction::FrictionModel& model, double omega, const ShootingOptions& o) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("shooting: " + what); };
   if (!(std::isfinite(omega) && omega > 0.0)) fail(fmt::format("omega must be finite and > 0 (got {})", omega));
@@ -85,6 +114,7 @@ void validate_shooting(const friction::FrictionModel& model, double omega, const
     fail("harmonics >= 0 and steps_per_period >= 2 (harmonics + 1)");
   if (!(o.tolerance > 0.0) || o.max_iterations < 1 || o.warmup_periods < 0 || o.max_events < 1)
     fail("tolerance > 0, max_iterations >= 1, warmup_periods >= 0 and max_events >= 1");
+  if (o.rigid_stick) validate_rigid_stick(model);
 }
 
 VectorXd warm_start(const friction::FrictionModel& model, const PeriodMap& map, Index size, Index slider_offset,
@@ -133,14 +163,14 @@ ShootingResult shooting(const friction::FrictionModel& input, double omega, cons
   friction::FrictionModel model = input;
   friction::validate_model(model, "shooting");
   validate_shooting(model, omega, o);
-  const PiecewiseFlow flow(model, omega, kTwoPi / o.steps_per_period);
+  const PiecewiseFlow flow(model, omega, kTwoPi / o.steps_per_period, o.rigid_stick);
   ShootingResult out;
   out.steady.omega = omega;
   out.largest_multiplier = std::numeric_limits<double>::quiet_NaN();
   int& periods = out.steady.cycles;
   const PeriodLayout layout{.motion = 2 * flow.dofs(), .slider_offset = 2 * flow.dofs()};
   const PeriodMap map = [&](const VectorXd& from, bool jacobian) {
-    return one_period(flow, from, o.steps_per_period, o.max_events, jacobian);
+    return one_period(flow, from, o.steps_per_period, o.max_events, jacobian, o.rigid_stick);
   };
   VectorXd x = start ? stack(*start)
                      : warm_start(model, map, flow.state_size(), layout.slider_offset, o, periods, out.steady.failure);

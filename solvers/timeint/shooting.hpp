@@ -32,6 +32,9 @@ struct ShootingOptions {
   int warmup_periods = 20;  // without a start: periods marched from the static state first
   int max_events = 100000;  // transitions in one period before the flow is declared chattering
   bool floquet = false;     // multipliers and the stability verdict
+  // The exact flow only: Coulomb's stick (timeint/piecewise_flow.hpp, a stuck contact held rigidly,
+  // kt unused) instead of the Jenkins spring.
+  bool rigid_stick = false;
   StaticOptions initial{};  // the static state a run without a start begins from
 };
 
@@ -52,6 +55,10 @@ struct ShootingResult {
 // Throws std::invalid_argument unless omega > 0 and finite and the options are valid (DOFs of the
 // model, steps_per_period >= 2 (harmonics + 1), tolerance > 0, ...): what both period maps require.
 void validate_shooting(const friction::FrictionModel& model, double omega_rad_s, const ShootingOptions& options);
+
+// Throws std::invalid_argument unless the contacts' tangential rows are independent, as Coulomb's
+// stick needs (each stuck contact holds its own u).
+void validate_rigid_stick(const friction::FrictionModel& model);
 
 // The start of a run given none, x of `size` entries: the static state (q first, the sliders from
 // slider_offset, the rest zero), then periods of `map` marched until one changes q and its rate

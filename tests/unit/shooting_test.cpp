@@ -122,6 +122,35 @@ friction::FrictionModel lift_off_pair() {
   return m;
 }
 
+// The period map of lift_off_pair() (2 DOFs, 1 contact) from x = (q, p, w), with its monodromy in j.
+VectorXd pair_period(const timeint::PiecewiseFlow& flow, int steps, const VectorXd& x, MatrixXd* j) {
+  timeint::FlowState st;
+  st.q = x.head(2), st.p = x.segment(2, 2), st.w = x.tail(1);
+  flow.settle(st);
+  if (j) *j = flow.start_jacobian(st);
+  timeint::PiecewiseFlow::Advance log;
+  for (int k = 1; k <= steps; ++k) flow.advance(st, 2 * kPi * k / steps, j, 1000, log);
+  VectorXd out(5);
+  out << st.q, st.p, st.w;
+  return out;
+}
+
+// Every column of the monodromy at `start` against central differences of the period map.
+void expect_monodromy_equals_differences(const timeint::PiecewiseFlow& flow, int steps,
+                                         const timeint::FlowState& start) {
+  VectorXd x(5);
+  x << start.q, start.p, start.w;
+  MatrixXd j;
+  pair_period(flow, steps, x, &j);
+  for (int c = 0; c < 5; ++c) {
+    const double h = 1e-7 * x.head(4).cwiseAbs().maxCoeff();
+    VectorXd xp = x, xm = x;
+    xp[c] += h, xm[c] -= h;
+    const VectorXd fd = (pair_period(flow, steps, xp, nullptr) - pair_period(flow, steps, xm, nullptr)) / (2 * h);
+    EXPECT_LT((fd - j.col(c)).norm(), 1e-5 * std::max(1.0, j.col(c).norm())) << "column " << c;
+  }
+}
+
 TEST(Shooting, MonodromyEqualsDifferencesOfThePeriodMap) {
   friction::FrictionModel m = lift_off_pair();
   friction::validate_model(m, "test");
@@ -136,27 +165,74 @@ TEST(Shooting, MonodromyEqualsDifferencesOfThePeriodMap) {
   }
   ASSERT_TRUE(opened && slipped) << "the test needs lift-off and slip";
   const timeint::PiecewiseFlow flow(m, omega, 2 * kPi / o.steps_per_period);
-  const auto period = [&](VectorXd x, MatrixXd* j) {
-    timeint::FlowState st;
-    st.q = x.head(2), st.p = x.segment(2, 2), st.w = x.tail(1);
-    flow.settle(st);
-    if (j) *j = flow.start_jacobian(st);
-    timeint::PiecewiseFlow::Advance log;
-    for (int k = 1; k <= o.steps_per_period; ++k) flow.advance(st, 2 * kPi * k / o.steps_per_period, j, 1000, log);
-    VectorXd out(5);
-    out << st.q, st.p, st.w;
-    return out;
-  };
-  VectorXd x(5);
-  x << s.start.q, s.start.p, s.start.w;
-  MatrixXd j;
-  period(x, &j);
-  for (int c = 0; c < 5; ++c) {
-    const double h = 1e-7 * x.head(4).cwiseAbs().maxCoeff();
-    VectorXd xp = x, xm = x;
-    xp[c] += h, xm[c] -= h;
-    const VectorXd fd = (period(xp, nullptr) - period(xm, nullptr)) / (2 * h);
-    EXPECT_LT((fd - j.col(c)).norm(), 1e-5 * std::max(1.0, j.col(c).norm())) << "column " << c;
+  expect_monodromy_equals_differences(flow, o.steps_per_period, s.start);
+}
+
+// Coulomb's stick (rigid) is the limit the Jenkins element only approaches as kt^-1/2: the exact flow
+// with it meets Den Hartog's closed form to Newton's tolerance, whatever kt says.
+TEST(Shooting, RigidStickIsDenHartogsClosedFormToNewtonsTolerance) {
+  timeint::ShootingOptions o = options();
+  o.rigid_stick = true;
+  for (const double slip_force : {1.0, 3.0, 5.0})
+    for (const double hz : {200.0, 300.0, 400.0}) {
+      const test::FrictionOscillator c = coulomb(slip_force, 1e3);  // kt unused
+      const double omega = 2 * kPi * hz;
+      const timeint::ShootingResult s = timeint::shooting(c.model(), omega, o);
+      ASSERT_TRUE(s.steady.converged) << s.steady.failure;
+      EXPECT_NEAR(s.largest[0] / den_hartog(c.mass, c.stiffness, slip_force, c.force, omega), 1.0, 1e-8)
+          << slip_force << " N at " << hz << " Hz";
+      EXPECT_LE(s.transitions, 2);  // one reversal per half period, no ringing
+      EXPECT_TRUE(s.stable);
+    }
+}
+
+// The monodromy of the rigid flow (saltation where a contact sticks, the stuck rate projected out at
+// the start) against central differences of the period map, in a model whose contact sticks, slips,
+// opens and closes.
+TEST(Shooting, RigidStickMonodromyEqualsDifferencesOfThePeriodMap) {
+  friction::FrictionModel m = lift_off_pair();
+  m.contacts[0].law.mu = 1.5;  // stuck for a third of the period
+  m.contacts[0].law.n0 = 10.0;
+  friction::validate_model(m, "test");
+  const double omega = 2 * kPi * 180.0;
+  timeint::ShootingOptions o = options();
+  o.rigid_stick = true;
+  const timeint::ShootingResult s = timeint::shooting(m, omega, o);
+  ASSERT_TRUE(s.steady.converged) << s.steady.failure;
+  bool opened = false, slipped = false, stuck = false;
+  for (const timeint::ContactSample& c : s.steady.contacts[0]) {
+    opened |= c.state == contact::ContactState::lift_off;
+    stuck |= c.state == contact::ContactState::stick;
+    slipped |= c.state == contact::ContactState::slip_positive || c.state == contact::ContactState::slip_negative;
+    if (c.state == contact::ContactState::stick) EXPECT_LE(std::abs(c.tangential), 1.5 * c.normal * (1 + 1e-9));
+  }
+  ASSERT_TRUE(opened && slipped && stuck) << "the test needs lift-off, stick and slip";
+  const timeint::PiecewiseFlow flow(m, omega, 2 * kPi / o.steps_per_period, true);
+  expect_monodromy_equals_differences(flow, o.steps_per_period, s.start);
+}
+
+// A contact held rigidly all period stays at any u: Newton holds u where it has it (the period's
+// equations are one short), and the answer is the model with the contact's DOFs tied, to rounding.
+TEST(Shooting, RigidStickThroughoutIsTheTiedModel) {
+  friction::FrictionModel m = lift_off_pair();
+  m.contacts[0].law.mu = 3.0;
+  m.contacts[0].law.n0 = 30.0;
+  friction::validate_model(m, "test");
+  timeint::ShootingOptions o = options();
+  o.rigid_stick = true;
+  for (const double hz : {120.0, 250.0, 300.0}) {
+    const double omega = 2 * kPi * hz;
+    const timeint::ShootingResult s = timeint::shooting(m, omega, o);
+    ASSERT_TRUE(s.steady.converged) << s.steady.failure;
+    EXPECT_EQ(s.transitions, 0);
+    for (const timeint::ContactSample& c : s.steady.contacts[0]) EXPECT_EQ(c.state, contact::ContactState::stick);
+    // q = (y, y) + const: 2 y'' + 10 y' + (2.8e6 + kn 0.9^2) y = 20 cos theta - 8 sin theta
+    const std::complex<double> tied =
+        std::complex<double>(20.0, 8.0) / std::complex<double>(2.8e6 + 5e5 * 0.81 - 2 * omega * omega, 10 * omega);
+    EXPECT_NEAR(s.steady.amplitude(0, 1) / std::abs(tied), 1.0, 1e-9) << hz << " Hz";
+    ASSERT_EQ(s.multipliers.size(), 4);  // u held: the neutral 1 left out; the slider's 0 kept
+    EXPECT_NEAR(std::abs(s.multipliers[0]), std::exp(-2.5 * 2 * kPi / omega), 1e-9);
+    EXPECT_TRUE(s.stable);
   }
 }
 

@@ -5,7 +5,8 @@
 // 128 steps per period at the stuck resonance. Measurement only: nothing here asserts a time.
 // Counters: dofs, contact_dofs, iterations (Newton per step), cycles (periods to the steady state).
 // Shooting (timeint/shooting.hpp) on the same point from the same start, and on Den Hartog's
-// oscillator: counters iterations (Newton), periods (integrated), transitions (per period).
+// oscillator: counters iterations (Newton), periods (integrated), transitions (per period); its stop
+// motion with the Jenkins element against Coulomb's stick (stick = "rigid").
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -135,5 +136,35 @@ void BM_ShootingCoulombOscillator(benchmark::State& state) {
   state.counters["transitions"] = s.transitions;
 }
 BENCHMARK(BM_ShootingCoulombOscillator)->Arg(200)->Arg(300)->Arg(400)->Unit(benchmark::kMillisecond);
+
+// The stop motion of cases/verification/coulomb_oscillator_shooting_stops.toml (Ff/F0 = 0.9 at
+// 100 Hz, one stop per half period) from the static state: the Jenkins element at kt = 1e12 N/m,
+// whose stuck mass rings on kt (rigid:0), against Coulomb's stick (rigid:1).
+void BM_ShootingCoulombStop(benchmark::State& state) {
+  FrictionModel m;
+  m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
+  m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
+  m.contacts.push_back({.law = {.kn = 1e12, .kt = 1e12, .mu = 0.3, .n0 = 10.0},
+                        .tangential = Eigen::RowVectorXd::Ones(1),
+                        .normal = Eigen::RowVectorXd::Zero(1)});
+  m.harmonic_load = Eigen::VectorXcd::Constant(1, 10.0 / 3.0);
+  bb::timeint::ShootingOptions options;
+  options.dofs = {0};
+  options.steps_per_period = 64;
+  options.harmonics = 3;
+  options.floquet = true;
+  options.rigid_stick = state.range(0) == 1;
+  const double omega = 2 * std::numbers::pi * 100.0;
+  bb::timeint::ShootingResult s;
+  for (auto _ : state) {
+    s = bb::timeint::shooting(m, omega, options);
+    benchmark::DoNotOptimize(s.largest);
+  }
+  state.counters["converged"] = s.steady.converged;
+  state.counters["iterations"] = static_cast<double>(s.steady.total_iterations);
+  state.counters["periods"] = s.steady.cycles;
+  state.counters["transitions"] = s.transitions;
+}
+BENCHMARK(BM_ShootingCoulombStop)->ArgName("rigid")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

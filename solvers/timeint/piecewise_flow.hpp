@@ -76,8 +76,12 @@ class PiecewiseFlow {
     std::vector<char> switched;  // per contact: some transition passed
     std::string failure;
   };
+  // With `fourier` (one row per `watch` DOF, 2 H + 1 columns), the integrals of q_d, q_d cos(h theta)
+  // and q_d sin(h theta) over the interval are added to columns 0, 2 h - 1 and 2 h: in closed form
+  // on each piece by the modes of its generator, else by 8-point Gauss-Legendre on the piece.
   void advance(FlowState& s, double theta_end, Eigen::MatrixXd* jacobian, int max_events, Advance& log,
-               const std::vector<Eigen::Index>& watch = {}, Eigen::VectorXd* extremes = nullptr) const;
+               const std::vector<Eigen::Index>& watch = {}, Eigen::VectorXd* extremes = nullptr,
+               Eigen::MatrixXd* fourier = nullptr) const;
 
   const Eigen::RowVectorXd& tangential(Eigen::Index k) const {
     return model_.contacts[static_cast<size_t>(k)].tangential;
@@ -110,6 +114,9 @@ class PiecewiseFlow {
   template <class TraceOf>
   void extremes_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z0, const Eigen::VectorXd& z1, double tau,
                          const std::vector<Eigen::Index>& watch, Eigen::VectorXd& extremes, const TraceOf& trace) const;
+  void fourier_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z, const Eigen::VectorXcd* modal_weights,
+                        const Eigen::MatrixXcd* vectors, const Eigen::VectorXcd* lambda, double theta0, double tau,
+                        const std::vector<Eigen::Index>& watch, Eigen::MatrixXd& fourier) const;
   double algebraic_slider(const FlowState& s, Eigen::Index k, contact::ContactState m) const;
   Eigen::RowVectorXd slider_row(Eigen::Index k, contact::ContactState m) const;  // d w_k / dq in mode m
 
@@ -132,6 +139,7 @@ class PiecewiseFlow {
     std::vector<Eigen::RowVectorXcd> modal;  // each event's row times V
     Eigen::PartialPivLU<Eigen::MatrixXcd> basis;
     bool spectral = false;
+    double basis_rcond = 0.0;  // the modal closed forms of the Fourier integrals need it well above 1e-12
   };
   const Generator& mode_data(const std::vector<contact::ContactState>& modes) const;
   int halvings(const Generator& mode, const Eigen::VectorXcd& coordinates) const;  // of step, for a piece

@@ -80,13 +80,17 @@ void record(const PiecewiseFlow& flow, const VectorXd& x, const ShootingOptions&
   samples.resize(n_t + 1, nd);
   out.steady.contacts.assign(static_cast<size_t>(flow.contacts()), {});
   PiecewiseFlow::Advance log;
+  MatrixXd integrals = MatrixXd::Zero(nd, 2 * o.harmonics + 1);  // of q, q cos h theta, q sin h theta
   for (int k = 0; k <= n_t; ++k) {
-    if (k > 0) flow.advance(s, kTwoPi * k / n_t, nullptr, o.max_events, log, o.dofs, &out.largest);
+    if (k > 0) flow.advance(s, kTwoPi * k / n_t, nullptr, o.max_events, log, o.dofs, &out.largest, &integrals);
     for (Index j = 0; j < nd; ++j) samples(k, j) = s.q[o.dofs[static_cast<size_t>(j)]];
     for (Index c = 0; c < flow.contacts(); ++c)
       out.steady.contacts[static_cast<size_t>(c)].push_back(flow.sample(s, c));
   }
-  fill_harmonics({samples.topRows(n_t)}, o.harmonics, out.steady);
+  // The Fourier integrals of the exact motion: no aliasing of the samples.
+  out.steady.coefficients = integrals / kPi;
+  out.steady.coefficients.col(0) /= 2.0;
+  fill_amplitude_and_phase(out.steady);
 }
 
 }  // namespace

@@ -39,8 +39,9 @@ struct ShootingOptions {
 };
 
 struct ShootingResult {
-  // coefficients, amplitude, phase, contacts (steps_per_period + 1 samples), converged, failure;
-  // cycles = periods integrated, total_iterations = Newton iterations.
+  // coefficients, amplitude, phase (the Fourier integrals of the exact motion, not a DFT of the
+  // samples), contacts (steps_per_period + 1 samples), converged, failure; cycles = periods
+  // integrated, total_iterations = Newton iterations.
   SteadyState steady;
   Eigen::MatrixXd samples;          // (steps_per_period + 1) x reported DOFs: q at the sub-interval ends [m]
   Eigen::VectorXd largest;          // per reported DOF, max |q_d| over the period (extremes located) [m]

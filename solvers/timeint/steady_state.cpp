@@ -131,6 +131,12 @@ void fill_harmonics(const std::deque<MatrixXd>& periods, int harmonics, SteadySt
       }
     }
   }
+  fill_amplitude_and_phase(out);
+}
+
+void fill_amplitude_and_phase(SteadyState& out) {
+  const Index nd = out.coefficients.rows();
+  const auto harmonics = static_cast<int>((out.coefficients.cols() - 1) / 2);
   out.amplitude = MatrixXd::Zero(nd, harmonics + 1);
   out.phase = MatrixXd::Zero(nd, harmonics + 1);
   for (Index j = 0; j < nd; ++j) {

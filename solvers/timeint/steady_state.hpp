@@ -87,6 +87,9 @@ struct SteadyState {
 // rows, one column per DOF, all periods alike): fills coefficients, amplitude and phase.
 void fill_harmonics(const std::deque<Eigen::MatrixXd>& periods, int harmonics, SteadyState& out);
 
+// Amplitude and phase of out.coefficients (c0, a_1, b_1, ... per row).
+void fill_amplitude_and_phase(SteadyState& out);
+
 // From `start` (its displacements, velocities and sliders; its time is reset to 0, where the load
 // has the same value for any omega, so a sweep from the final state of the previous frequency sees
 // a continuous load) or, without one, from static_initial_state(model, options.initial).

@@ -236,6 +236,47 @@ TEST(Shooting, RigidStickThroughoutIsTheTiedModel) {
   }
 }
 
+// The first harmonic of q's samples by the DFT (trapezoidal rule over the period).
+std::complex<double> sampled_first_harmonic(const MatrixXd& samples) {
+  const Eigen::Index n = samples.rows() - 1;
+  std::complex<double> sum = 0.0;
+  const auto count = static_cast<double>(n);
+  for (Eigen::Index k = 0; k < n; ++k)
+    sum += samples(k, 0) * std::polar(2.0 / count, -2 * kPi * static_cast<double>(k) / count);
+  return sum;
+}
+
+// The harmonics are the Fourier integrals of the exact motion, so they do not depend on the
+// sub-intervals, and a DFT of many samples tends to them; on Den Hartog's stop motion (each piece by
+// its modes) and on a critically damped oscillator, whose defective generator has no well-conditioned
+// modal basis (each piece by Gauss-Legendre; its modes would be 3e-9 off).
+TEST(Shooting, HarmonicsAreTheFourierIntegralsOfTheExactMotion) {
+  test::FrictionOscillator stop = coulomb(3.0, 1e3);
+  stop.force = 10.0 / 3.0;  // Ff/F0 = 0.9: one stop per half period at 100 Hz
+  test::FrictionOscillator critical{.mass = 1.0, .damping = 2e3, .stiffness = 1e6, .force = 10.0, .contact = {}};
+  critical.contact = {.kn = 1e12, .kt = 1e3, .mu = 0.3, .n0 = 10.0};
+  for (const auto& [model, frequency] : {std::pair{stop, 100.0}, std::pair{critical, 150.0}}) {
+    const test::FrictionOscillator& o = model;
+    const double hz = frequency;
+    timeint::ShootingOptions opt = options();
+    opt.rigid_stick = true;
+    opt.harmonics = 3;
+    const auto at = [&](int steps) {
+      opt.steps_per_period = steps;
+      timeint::ShootingResult s = timeint::shooting(o.model(), 2 * kPi * hz, opt);
+      EXPECT_TRUE(s.steady.converged) << s.steady.failure;
+      return s;
+    };
+    const timeint::ShootingResult coarse = at(16), fine = at(64), dense = at(8192);
+    const double first = fine.steady.amplitude(0, 1);
+    // to the Newton tolerance (1e-9 of the motion) of each run
+    EXPECT_NEAR(coarse.steady.amplitude(0, 1), first, 1e-8 * first) << hz << " Hz";
+    EXPECT_NEAR(coarse.steady.amplitude(0, 3), fine.steady.amplitude(0, 3), 1e-8 * first) << hz << " Hz";
+    EXPECT_NEAR(std::abs(sampled_first_harmonic(dense.samples)), first, 1e-9 * first) << hz << " Hz";  // 5e-12, 2e-12
+    EXPECT_GT(std::abs(std::abs(sampled_first_harmonic(coarse.samples)) / first - 1.0), 1e-6);  // what the DFT missed
+  }
+}
+
 TEST(Shooting, FailsWithItsResidualWhenNewtonIsCutShort) {
   const test::FrictionOscillator o = coulomb(3.0, 1e12);
   timeint::ShootingOptions opt = options();

@@ -3,6 +3,7 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <cmath>
+#include <complex>
 
 namespace bb::timeint {
 
@@ -56,6 +57,65 @@ double turning_point(const FlowTrace& g, double hi) {
     (g.rate(mid) > 0.0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+namespace {
+
+// (e^(mu tau) - 1) / mu, accurate where mu tau is small (tau where mu = 0).
+std::complex<double> integral_of_exponential(std::complex<double> mu, double tau) {
+  const std::complex<double> x = mu * tau;
+  if (x == 0.0) return tau;
+  // e^x - 1 = (e^re - 1) cos y + (cos y - 1) + i e^re sin y, with cos y - 1 = -2 sin^2(y / 2)
+  const double e = std::expm1(x.real()), half = std::sin(0.5 * x.imag());
+  const std::complex<double> expm1_x(e * std::cos(x.imag()) - 2.0 * half * half, (e + 1.0) * std::sin(x.imag()));
+  return expm1_x / mu;
+}
+
+}  // namespace
+
+void add_fourier_integrals(const Eigen::MatrixXd& a, const Eigen::VectorXd& z, const Eigen::VectorXcd* coordinates,
+                           const Eigen::MatrixXcd* vectors, const Eigen::VectorXcd* lambda, double theta0, double tau,
+                           const std::vector<Eigen::Index>& entries, Eigen::MatrixXd& fourier) {
+  using Eigen::Index;
+  const int harmonics = static_cast<int>((fourier.cols() - 1) / 2);
+  if (coordinates) {
+    // q_d(theta0 + s) = sum_j V_dj c_j e^(lambda_j s): each harmonic's integral in closed form.
+    for (size_t i = 0; i < entries.size(); ++i) {
+      const Eigen::VectorXcd w = vectors->row(entries[i]).transpose().cwiseProduct(*coordinates);
+      const auto r = static_cast<Index>(i);
+      for (int h = 0; h <= harmonics; ++h) {
+        const std::complex<double> shift(0.0, -static_cast<double>(h));
+        std::complex<double> sum = 0.0;
+        for (Index j = 0; j < w.size(); ++j) sum += w[j] * integral_of_exponential((*lambda)[j] + shift, tau);
+        const std::complex<double> value = std::exp(shift * theta0) * sum;  // int q e^(-i h theta)
+        if (h == 0) {
+          fourier(r, 0) += value.real();
+        } else {
+          fourier(r, 2 * h - 1) += value.real();
+          fourier(r, 2 * h) -= value.imag();
+        }
+      }
+    }
+    return;
+  }
+  // Pieces turn the fastest motion by at most 1 rad: 8 Gauss-Legendre points integrate it to rounding.
+  static constexpr double kNodes[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  static constexpr double kWeights[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                         0.1012285362903763};
+  for (int k = 0; k < 8; ++k) {
+    const double x = k < 4 ? -kNodes[3 - k] : kNodes[k - 4], weight = (k < 4 ? kWeights[3 - k] : kWeights[k - 4]);
+    const double s = 0.5 * tau * (1.0 + x), theta = theta0 + s;
+    const Eigen::VectorXd q = (a * s).exp() * z;
+    for (size_t i = 0; i < entries.size(); ++i) {
+      const auto r = static_cast<Index>(i);
+      const double value = 0.5 * tau * weight * q[entries[i]];
+      fourier(r, 0) += value;
+      for (int h = 1; h <= harmonics; ++h) {
+        fourier(r, 2 * h - 1) += value * std::cos(h * theta);
+        fourier(r, 2 * h) += value * std::sin(h * theta);
+      }
+    }
+  }
 }
 
 }  // namespace bb::timeint

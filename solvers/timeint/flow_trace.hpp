@@ -1,8 +1,11 @@
-// A linear function of the exact flow's state along one piece, g(tau) = row . exp(a tau) z, and the
-// location of its first zero and its turning point: how timeint/piecewise_flow.cpp finds where a
-// contact's transition happens inside a piece. Phases in rad (the period is 2 pi).
+// The exact flow's state along one piece, z(tau) = exp(a tau) z: a linear function of it, the
+// location of its first zero and its turning point (how timeint/piecewise_flow.cpp finds where a
+// contact's transition happens inside a piece), and its Fourier integrals. Phases in rad (the period
+// is 2 pi).
 #pragma once
 #include <Eigen/Dense>
+
+#include <vector>
 
 namespace bb::timeint {
 
@@ -35,5 +38,13 @@ double crossing(const FlowTrace& g, double lo, double hi);
 
 // The phase in (0, hi) where g' changes from + to - (bisection).
 double turning_point(const FlowTrace& g, double hi);
+
+// Adds the integrals over the piece [theta0, theta0 + tau] of z_e, z_e cos(h theta) and z_e sin(h
+// theta), z(theta0 + s) = exp(a s) z, to columns 0, 2 h - 1 and 2 h of fourier's row i for e =
+// entries[i]: in closed form by the modes where given (coordinates V^-1 z, vectors V, lambda), else
+// by 8-point Gauss-Legendre (exact to rounding on a piece where the fastest motion turns by 1 rad).
+void add_fourier_integrals(const Eigen::MatrixXd& a, const Eigen::VectorXd& z, const Eigen::VectorXcd* coordinates,
+                           const Eigen::MatrixXcd* vectors, const Eigen::VectorXcd* lambda, double theta0, double tau,
+                           const std::vector<Eigen::Index>& entries, Eigen::MatrixXd& fourier);
 
 }  // namespace bb::timeint

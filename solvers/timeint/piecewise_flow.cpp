@@ -346,64 +346,6 @@ void PiecewiseFlow::switch_contact(FlowState& s, const Event& ev, const MatrixXd
   }
 }
 
-namespace {
-
-// (e^(mu tau) - 1) / mu, accurate where mu tau is small (tau where mu = 0).
-std::complex<double> integral_of_exponential(std::complex<double> mu, double tau) {
-  const std::complex<double> x = mu * tau;
-  if (x == 0.0) return tau;
-  // e^x - 1 = (e^re - 1) cos y + (cos y - 1) + i e^re sin y, with cos y - 1 = -2 sin^2(y / 2)
-  const double e = std::expm1(x.real()), half = std::sin(0.5 * x.imag());
-  const std::complex<double> expm1_x(e * std::cos(x.imag()) - 2.0 * half * half, (e + 1.0) * std::sin(x.imag()));
-  return expm1_x / mu;
-}
-
-}  // namespace
-
-void PiecewiseFlow::fourier_in_piece(const MatrixXd& a, const VectorXd& z, const Eigen::VectorXcd* coordinates,
-                                     const Eigen::MatrixXcd* vectors, const Eigen::VectorXcd* lambda, double theta0,
-                                     double tau, const std::vector<Index>& watch, MatrixXd& fourier) const {
-  const int harmonics = static_cast<int>((fourier.cols() - 1) / 2);
-  if (coordinates) {
-    // q_d(theta0 + s) = sum_j V_dj c_j e^(lambda_j s): each harmonic's integral in closed form.
-    for (size_t i = 0; i < watch.size(); ++i) {
-      const Eigen::VectorXcd w = vectors->row(watch[i]).transpose().cwiseProduct(*coordinates);
-      const auto r = static_cast<Index>(i);
-      for (int h = 0; h <= harmonics; ++h) {
-        const std::complex<double> shift(0.0, -static_cast<double>(h));
-        std::complex<double> sum = 0.0;
-        for (Index j = 0; j < w.size(); ++j) sum += w[j] * integral_of_exponential((*lambda)[j] + shift, tau);
-        const std::complex<double> value = std::exp(shift * theta0) * sum;  // int q e^(-i h theta)
-        if (h == 0) {
-          fourier(r, 0) += value.real();
-        } else {
-          fourier(r, 2 * h - 1) += value.real();
-          fourier(r, 2 * h) -= value.imag();
-        }
-      }
-    }
-    return;
-  }
-  // Pieces turn the fastest motion by at most 1 rad: 8 Gauss-Legendre points integrate it to rounding.
-  static constexpr double kNodes[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  static constexpr double kWeights[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                         0.1012285362903763};
-  for (int k = 0; k < 8; ++k) {
-    const double x = k < 4 ? -kNodes[3 - k] : kNodes[k - 4], weight = (k < 4 ? kWeights[3 - k] : kWeights[k - 4]);
-    const double s = 0.5 * tau * (1.0 + x), theta = theta0 + s;
-    const VectorXd q = ((a * s).exp() * z).head(n_);
-    for (size_t i = 0; i < watch.size(); ++i) {
-      const auto r = static_cast<Index>(i);
-      const double value = 0.5 * tau * weight * q[watch[i]];
-      fourier(r, 0) += value;
-      for (int h = 1; h <= harmonics; ++h) {
-        fourier(r, 2 * h - 1) += value * std::cos(h * theta);
-        fourier(r, 2 * h) += value * std::sin(h * theta);
-      }
-    }
-  }
-}
-
 void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, int max_events, Advance& log,
                             const std::vector<Index>& watch, VectorXd* extremes, MatrixXd* fourier) const {
   if (log.switched.size() != static_cast<size_t>(nc_)) log.switched.assign(static_cast<size_t>(nc_), 0);
@@ -466,8 +408,8 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
     const double tau = next ? first : tau_end;
     if (extremes) extremes_in_piece(a, z, z_end, tau, watch, *extremes, trace);
     if (fourier)
-      fourier_in_piece(a, z, mode.spectral && mode.basis_rcond > 1e-6 ? &coordinates : nullptr, &mode.vectors,
-                       &mode.lambda, s.theta, tau, watch, *fourier);
+      add_fourier_integrals(a, z, mode.spectral && mode.basis_rcond > 1e-6 ? &coordinates : nullptr, &mode.vectors,
+                            &mode.lambda, s.theta, tau, watch, *fourier);
     unpack(z_end, s);
     s.theta = next ? s.theta + first : (whole ? s.theta + tau_end : theta_end);
     if (jacobian) *jacobian = e.topLeftCorner(ns, ns) * *jacobian;

@@ -114,9 +114,6 @@ class PiecewiseFlow {
   template <class TraceOf>
   void extremes_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z0, const Eigen::VectorXd& z1, double tau,
                          const std::vector<Eigen::Index>& watch, Eigen::VectorXd& extremes, const TraceOf& trace) const;
-  void fourier_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z, const Eigen::VectorXcd* modal_weights,
-                        const Eigen::MatrixXcd* vectors, const Eigen::VectorXcd* lambda, double theta0, double tau,
-                        const std::vector<Eigen::Index>& watch, Eigen::MatrixXd& fourier) const;
   double algebraic_slider(const FlowState& s, Eigen::Index k, contact::ContactState m) const;
   Eigen::RowVectorXd slider_row(Eigen::Index k, contact::ContactState m) const;  // d w_k / dq in mode m
 

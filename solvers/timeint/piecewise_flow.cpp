@@ -101,17 +101,23 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
   return generators_.emplace(modes, std::move(g)).first->second;
 }
 
+MatrixXd PiecewiseFlow::stuck_rows(const std::vector<ContactState>& modes, std::vector<Index>& stuck) const {
+  stuck.clear();
+  for (Index k = 0; k < nc_; ++k)
+    if (rigid(modes[static_cast<size_t>(k)])) stuck.push_back(k);
+  MatrixXd g(static_cast<Index>(stuck.size()), n_);
+  for (size_t i = 0; i < stuck.size(); ++i)
+    g.row(static_cast<Index>(i)) = model_.contacts[static_cast<size_t>(stuck[i])].tangential;
+  return g;
+}
+
 void PiecewiseFlow::rigid_constraints(const std::vector<ContactState>& modes, MatrixXd& a,
                                       std::vector<RowVectorXd>& stuck_force) const {
   stuck_force.assign(static_cast<size_t>(nc_), RowVectorXd());
   std::vector<Index> stuck;
-  for (Index k = 0; k < nc_; ++k)
-    if (rigid(modes[static_cast<size_t>(k)])) stuck.push_back(k);
+  const MatrixXd g = stuck_rows(modes, stuck);
   if (stuck.empty()) return;
   const auto r = static_cast<Index>(stuck.size());
-  MatrixXd g(r, n_);
-  for (Index i = 0; i < r; ++i)
-    g.row(i) = model_.contacts[static_cast<size_t>(stuck[static_cast<size_t>(i)])].tangential;
   const MatrixXd mg = mass_inverse_ * g.transpose();
   const Eigen::FullPivLU<MatrixXd> schur(g * mg);
   if (!schur.isInvertible())
@@ -126,13 +132,9 @@ void PiecewiseFlow::rigid_constraints(const std::vector<ContactState>& modes, Ma
 
 MatrixXd PiecewiseFlow::stuck_projection(const std::vector<ContactState>& modes) const {
   std::vector<Index> stuck;
-  for (Index k = 0; k < nc_; ++k)
-    if (rigid(modes[static_cast<size_t>(k)])) stuck.push_back(k);
+  const MatrixXd g = stuck_rows(modes, stuck);
   MatrixXd projection = MatrixXd::Identity(n_, n_);
   if (stuck.empty()) return projection;
-  MatrixXd g(static_cast<Index>(stuck.size()), n_);
-  for (size_t i = 0; i < stuck.size(); ++i)
-    g.row(static_cast<Index>(i)) = model_.contacts[static_cast<size_t>(stuck[i])].tangential;
   const MatrixXd mg = mass_inverse_ * g.transpose();
   projection -= mg * (g * mg).fullPivLu().solve(g);  // the rate a stuck u cannot have, as a plastic impact
   return projection;

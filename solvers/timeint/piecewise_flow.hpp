@@ -106,6 +106,8 @@ class PiecewiseFlow {
   bool rigid(contact::ContactState m) const { return rigid_ && m == contact::ContactState::stick; }
   void rigid_constraints(const std::vector<contact::ContactState>& modes, Eigen::MatrixXd& a,
                          std::vector<Eigen::RowVectorXd>& stuck_force) const;
+  // G: the tangential rows of the rigidly stuck contacts (their indices in `stuck`).
+  Eigen::MatrixXd stuck_rows(const std::vector<contact::ContactState>& modes, std::vector<Eigen::Index>& stuck) const;
   Eigen::MatrixXd stuck_projection(const std::vector<contact::ContactState>& modes) const;  // of p
   void tie_sliders(FlowState& s, Eigen::MatrixXd* jacobian) const;
   // Contact ev.contact's transition at s, reached in the mode of generator a: its new mode, with the

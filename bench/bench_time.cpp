@@ -110,21 +110,33 @@ void BM_ShootingFrequencyPoint(benchmark::State& state) {
 }
 BENCHMARK(BM_ShootingFrequencyPoint)->Unit(benchmark::kMillisecond);
 
-// Den Hartog's oscillator (cases/verification/coulomb_oscillator_shooting.toml: kt = 1e14 N/m,
-// Ff/F0 = 0.3) at one frequency [Hz] from the static state, Floquet multipliers included.
-void BM_ShootingCoulombOscillator(benchmark::State& state) {
+// Den Hartog's oscillator: m = 1 kg, k = 1e6 N/m, slip force 3 N on a Jenkins element of `kt`
+// [N/m], driven at `force` [N]; shot with 64 sub-intervals, 3 harmonics and the multipliers.
+FrictionModel coulomb_oscillator(double kt, double force) {
   FrictionModel m;
   m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
   m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
-  m.contacts.push_back({.law = {.kn = 1e12, .kt = 1e14, .mu = 0.3, .n0 = 10.0},
+  m.contacts.push_back({.law = {.kn = 1e12, .kt = kt, .mu = 0.3, .n0 = 10.0},
                         .tangential = Eigen::RowVectorXd::Ones(1),
                         .normal = Eigen::RowVectorXd::Zero(1)});
-  m.harmonic_load = Eigen::VectorXcd::Constant(1, 10.0);
+  m.harmonic_load = Eigen::VectorXcd::Constant(1, force);
+  return m;
+}
+
+bb::timeint::ShootingOptions coulomb_shooting() {
   bb::timeint::ShootingOptions options;
   options.dofs = {0};
   options.steps_per_period = 64;
   options.harmonics = 3;
   options.floquet = true;
+  return options;
+}
+
+// Den Hartog's oscillator (cases/verification/coulomb_oscillator_shooting.toml: kt = 1e14 N/m,
+// Ff/F0 = 0.3) at one frequency [Hz] from the static state, Floquet multipliers included.
+void BM_ShootingCoulombOscillator(benchmark::State& state) {
+  const FrictionModel m = coulomb_oscillator(1e14, 10.0);
+  const bb::timeint::ShootingOptions options = coulomb_shooting();
   const double omega = 2 * std::numbers::pi * static_cast<double>(state.range(0));
   bb::timeint::ShootingResult s;
   for (auto _ : state) {
@@ -141,18 +153,8 @@ BENCHMARK(BM_ShootingCoulombOscillator)->Arg(200)->Arg(300)->Arg(400)->Unit(benc
 // 100 Hz, one stop per half period) from the static state: the Jenkins element at kt = 1e12 N/m,
 // whose stuck mass rings on kt (rigid:0), against Coulomb's stick (rigid:1).
 void BM_ShootingCoulombStop(benchmark::State& state) {
-  FrictionModel m;
-  m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
-  m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
-  m.contacts.push_back({.law = {.kn = 1e12, .kt = 1e12, .mu = 0.3, .n0 = 10.0},
-                        .tangential = Eigen::RowVectorXd::Ones(1),
-                        .normal = Eigen::RowVectorXd::Zero(1)});
-  m.harmonic_load = Eigen::VectorXcd::Constant(1, 10.0 / 3.0);
-  bb::timeint::ShootingOptions options;
-  options.dofs = {0};
-  options.steps_per_period = 64;
-  options.harmonics = 3;
-  options.floquet = true;
+  const FrictionModel m = coulomb_oscillator(1e12, 10.0 / 3.0);
+  bb::timeint::ShootingOptions options = coulomb_shooting();
   options.rigid_stick = state.range(0) == 1;
   const double omega = 2 * std::numbers::pi * 100.0;
   bb::timeint::ShootingResult s;

@@ -220,22 +220,25 @@ void PiecewiseFlow::settle(FlowState& s) const {
   }
   for (Index pass = 0; rigid_ && pass < nc_; ++pass) {  // a stick that needs more than mu N slips
     bool changed = false;
-    const Generator& mode = mode_data(s.modes);
-    const VectorXd z = pack(s);
-    for (Index k = 0; k < nc_; ++k) {
+    for (Index k = 0; k < nc_ && !changed; ++k) {  // the others' forces change with one that slips
       ContactState& m = s.modes[static_cast<size_t>(k)];
       if (!rigid(m)) continue;
-      const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-      const double force = mode.stuck_force[static_cast<size_t>(k)].dot(z),
-                   limit = c.law.mu * (c.law.n0 + c.law.kn * c.normal.dot(s.q));
-      if (std::abs(force) <= limit) continue;
-      m = force > 0.0 ? ContactState::slip_positive : ContactState::slip_negative;
-      changed = true;
-      break;  // the others' forces change with it
+      m = held_or_slipping(s, k);
+      changed = m != ContactState::stick;
     }
     if (!changed) break;
   }
   tie_sliders(s, nullptr);
+}
+
+ContactState PiecewiseFlow::held_or_slipping(const FlowState& s, Index k) const {
+  const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
+  std::vector<ContactState> modes = s.modes;
+  modes[static_cast<size_t>(k)] = ContactState::stick;
+  const double force = mode_data(modes).stuck_force[static_cast<size_t>(k)].dot(pack(s)),
+               limit = c.law.mu * std::max(c.law.n0 + c.law.kn * c.normal.dot(s.q), 0.0);
+  if (std::abs(force) <= limit) return ContactState::stick;
+  return force > 0.0 ? ContactState::slip_positive : ContactState::slip_negative;
 }
 
 MatrixXd PiecewiseFlow::start_jacobian(const FlowState& settled) const {
@@ -322,18 +325,15 @@ void PiecewiseFlow::switch_contact(FlowState& s, const Event& ev, const MatrixXd
   } else if (rigid_ && ev.next == ContactState::stick) {
     // u' stops. A stick that needs more than mu N reverses the slip at once; either way the
     // acceleration jumps: the saltation I + (f+ - f-) g' / (g' f-).
-    const VectorXd at = pack(s);
-    const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-    const double force = mode_data(s.modes).stuck_force[static_cast<size_t>(k)].dot(at),
-                 limit = c.law.mu * std::max(c.law.n0 + c.law.kn * c.normal.dot(s.q), 0.0);
-    if (std::abs(force) > limit)
-      s.modes[static_cast<size_t>(k)] = force > 0.0 ? ContactState::slip_positive : ContactState::slip_negative;
-    const VectorXd before_rate = a * at;
-    const double crossing_rate = ev.row.dot(before_rate);
-    if (jacobian && crossing_rate > 0.0) {
-      const VectorXd jump = (mode_data(s.modes).a * at - before_rate).head(ns);
-      const RowVectorXd gradient = ev.row.head(ns) * *jacobian;
-      *jacobian += jump * gradient / crossing_rate;
+    s.modes[static_cast<size_t>(k)] = held_or_slipping(s, k);
+    if (jacobian) {
+      const VectorXd at = pack(s), before_rate = a * at;
+      const double crossing_rate = ev.row.dot(before_rate);
+      if (crossing_rate > 0.0) {
+        const VectorXd jump = (mode_data(s.modes).a * at - before_rate).head(ns);
+        const RowVectorXd gradient = ev.row.head(ns) * *jacobian;
+        *jacobian += jump * gradient / crossing_rate;
+      }
     }
   } else if (before == ContactState::lift_off) {
     // Closing: the slider sticks at u(theta_c), theta_c moving with the start.

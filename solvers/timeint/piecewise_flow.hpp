@@ -56,6 +56,7 @@ class PiecewiseFlow {
   Eigen::Index contacts() const { return nc_; }
   Eigen::Index state_size() const { return 2 * n_ + nc_; }  // (q, p, w)
   double omega() const { return omega_; }
+  bool rigid_stick() const { return rigid_; }
 
   // The modes a state is in: lift-off where N <= 0, slip where |kt (u - w)| exceeds mu N (or sits on
   // it with the slider moving outwards), else stick; the sliders of contacts not stuck are set to
@@ -104,6 +105,9 @@ class PiecewiseFlow {
   std::vector<Event> events(const std::vector<contact::ContactState>& modes,
                             const std::vector<Eigen::RowVectorXd>& stuck_force) const;
   bool rigid(contact::ContactState m) const { return rigid_ && m == contact::ContactState::stick; }
+  // With rigid stick, contact k held in state s with the others' modes: stick where its constraint
+  // force is within mu N, else the slip that force drives.
+  contact::ContactState held_or_slipping(const FlowState& s, Eigen::Index k) const;
   void rigid_constraints(const std::vector<contact::ContactState>& modes, Eigen::MatrixXd& a,
                          std::vector<Eigen::RowVectorXd>& stuck_force) const;
   // G: the tangential rows of the rigidly stuck contacts (their indices in `stuck`).

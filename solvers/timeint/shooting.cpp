@@ -36,8 +36,7 @@ FlowState unstack(const PiecewiseFlow& flow, const VectorXd& x) {
 }
 
 // One period from x: the end state, the monodromy (when asked) and which sliders never moved.
-PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int max_events, bool jacobian,
-                      bool rigid_stick) {
+PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, int max_events, bool jacobian) {
   PeriodEval out;
   FlowState end = unstack(flow, x);
   const std::vector<ContactState> modes0 = end.modes;
@@ -49,6 +48,7 @@ PeriodEval one_period(const PiecewiseFlow& flow, const VectorXd& x, int steps, i
   out.transitions = log.events;
   out.failure = log.failure;
   out.free_slider.resize(modes0.size());
+  const bool rigid_stick = flow.rigid_stick();
   std::vector<char> used(static_cast<size_t>(flow.dofs()), 0);
   for (size_t c = 0; c < modes0.size(); ++c) {
     const bool free = modes0[c] == ContactState::stick && (log.switched.empty() || !log.switched[c]);
@@ -174,7 +174,7 @@ ShootingResult shooting(const friction::FrictionModel& input, double omega, cons
   int& periods = out.steady.cycles;
   const PeriodLayout layout{.motion = 2 * flow.dofs(), .slider_offset = 2 * flow.dofs()};
   const PeriodMap map = [&](const VectorXd& from, bool jacobian) {
-    return one_period(flow, from, o.steps_per_period, o.max_events, jacobian, o.rigid_stick);
+    return one_period(flow, from, o.steps_per_period, o.max_events, jacobian);
   };
   VectorXd x = start ? stack(*start)
                      : warm_start(model, map, flow.state_size(), layout.slider_offset, o, periods, out.steady.failure);

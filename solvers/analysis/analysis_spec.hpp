@@ -9,6 +9,7 @@
 #include "analysis/cyclic_modal_spec.hpp"
 #include "analysis/frf_spec.hpp"
 #include "analysis/modal_spec.hpp"
+#include "analysis/nonlinear_modal_spec.hpp"
 #include "analysis/rotating_spec.hpp"
 #include "analysis/static_spec.hpp"
 #include "analysis/time_spec.hpp"
@@ -17,7 +18,7 @@
 namespace bb {
 
 using AnalysisSpec = std::variant<StaticSpec, ModalSpec, FrfSpec, HbmSpec, TimeSpec, ContactLoopSpec, RotatingSpec,
-                                  ContactModalSpec, CyclicModalSpec>;
+                                  ContactModalSpec, CyclicModalSpec, NonlinearModalSpec>;
 
 // The case file's name of each type (`type = "..."` in [analysis]).
 constexpr std::string_view analysis_type_name(const StaticSpec&) { return "static"; }
@@ -29,6 +30,7 @@ constexpr std::string_view analysis_type_name(const ContactLoopSpec&) { return "
 constexpr std::string_view analysis_type_name(const RotatingSpec&) { return "rotating"; }
 constexpr std::string_view analysis_type_name(const ContactModalSpec&) { return "contact_modal"; }
 constexpr std::string_view analysis_type_name(const CyclicModalSpec&) { return "cyclic_modal"; }
+constexpr std::string_view analysis_type_name(const NonlinearModalSpec&) { return "nonlinear_modal"; }
 inline std::string_view analysis_type_name(const AnalysisSpec& a) {
   return std::visit([](const auto& s) { return analysis_type_name(s); }, a);
 }

@@ -83,6 +83,10 @@ AnalysisResults run(const CyclicModalSpec& spec, const RunContext& c) {
   return {std::move(tables), std::move(o), {}};
 }
 
+AnalysisResults run(const NonlinearModalSpec& spec, const RunContext&) {
+  return results_of(run_nonlinear_modal(spec));
+}
+
 }  // namespace
 
 AnalysisResults run_analysis_keeping_tables(const AnalysisSpec& spec, const Model& model, const HbmProgress& progress,

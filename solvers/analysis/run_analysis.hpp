@@ -13,6 +13,7 @@
 #include "analysis/frf_analysis.hpp"
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/modal_analysis.hpp"
+#include "analysis/nonlinear_modal_analysis.hpp"
 #include "analysis/rotating_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "analysis/time_analysis.hpp"
@@ -23,7 +24,8 @@
 namespace bb {
 
 using AnalysisOutcome = std::variant<StaticOutcome, ModalOutcome, FrfOutcome, HbmOutcome, TimeOutcome,
-                                     ContactLoopOutcome, RotatingOutcome, ContactModalOutcome, CyclicModalOutcome>;
+                                     ContactLoopOutcome, RotatingOutcome, ContactModalOutcome, CyclicModalOutcome,
+                                     NonlinearModalOutcome>;
 
 template <typename Spec>
 struct OutcomeOf;
@@ -62,6 +64,10 @@ struct OutcomeOf<ContactModalSpec> {
 template <>
 struct OutcomeOf<CyclicModalSpec> {
   using type = CyclicModalOutcome;
+};
+template <>
+struct OutcomeOf<NonlinearModalSpec> {
+  using type = NonlinearModalOutcome;
 };
 static_assert(std::variant_size_v<AnalysisOutcome> == std::variant_size_v<AnalysisSpec>,
               "one outcome per analysis type");

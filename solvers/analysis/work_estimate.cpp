@@ -122,6 +122,22 @@ WorkEstimate analysis_work(const TimeSpec& t, const Model& model) {
 
 WorkEstimate analysis_work(const ContactLoopSpec&, const Model&) { return {}; }
 
+// A force-controlled point samples its residual 400 times over the roots' bracket (each two
+// spline evaluations) and weighs its knots for the sensitivities; a held point is one evaluation.
+WorkEstimate analysis_work(const NonlinearModalSpec& s, const Model&) {
+  double forced = 0.0, held = 0.0;
+  for (const SteppedSineSpec& sine : s.stepped_sines) forced += static_cast<double>(sine.frequency_hz.size());
+  for (const ResponseControlSpec& c : s.response_controls) held += static_cast<double>(c.frequency_hz.size()) + 100.0;
+  const double knots = static_cast<double>(s.mode.frequency_hz.knots() + s.mode.damping_ratio.knots());
+  WorkEstimate e;
+  e.operations = forced * (500.0 * 60.0 + knots * knots * 20.0) + held * knots * knots * 20.0;
+  e.bytes = 8.0 * (forced + held) * (10.0 + 2.0 * static_cast<double>(s.sensitivities.size()));
+  e.basis = fmt::format("{:.0f} force-controlled and {:.0f} held points, {:.0f} knots", forced, held, knots);
+  e.at = s.at;
+  e.key = "analysis.stepped_sine, analysis.response_control";
+  return e;
+}
+
 WorkEstimate analysis_work(const ModalSpec& s, const Model& model) {
   return estimate_mesh_work(model, s.options.out_of_core);
 }

@@ -19,7 +19,8 @@ constexpr const char* kSupported =
     "analysis.contact[.<i>].<the law's own, e.g. chi, beta>, "
     "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force,centre.0,centre.1}, analysis.modal_damping[.<mode>], "
     "analysis.forces.<i>.amplitude, "
-    "analysis.model.{stiffness,mass}.<i>.<j>, analysis.model.{frequency_hz,modal_mass}.<i>";
+    "analysis.model.{stiffness,mass}.<i>.<j>, analysis.model.{frequency_hz,modal_mass}.<i>, "
+    "analysis.backbone.{frequency_hz,damping_ratio}.<i>, analysis.mass";
 
 // A 0-based index as written in a path: digits only, at most 6.
 std::optional<size_t> index_of(const std::string& t) {
@@ -127,6 +128,12 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
     double& operator()(const ModalCoordinate&) {
       throw std::logic_error("a modal coordinate's frequency is not stored as a number");
     }
+    double& operator()(const BackboneValue& v) {
+      auto* modal = std::get_if<NonlinearModalSpec>(&spec.analysis);
+      if (!modal || v.curve != BackboneValue::Curve::mass)
+        throw std::logic_error("a backbone knot is not stored as a number");
+      return modal->mode.mass;
+    }
     double& operator()(const ForceAmplitude& v) {
       std::vector<FrfForce>* forces = nullptr;
       if (auto* frf = std::get_if<FrfSpec>(&spec.analysis)) forces = &frf->forces;
@@ -183,6 +190,21 @@ std::pair<double*, double*> modal_entries(CaseSpec& spec, const CaseParameter& p
   return {&m.stiffness(i, i), &m.mass(i, i)};
 }
 
+NonlinearModalSpec& nonlinear_modal(CaseSpec& spec, const CaseParameter& p) {
+  auto* modal = std::get_if<NonlinearModalSpec>(&spec.analysis);
+  if (!modal) absent(p, "only a nonlinear_modal analysis has a backbone and a mass");
+  return *modal;
+}
+
+// The knot's curve, checked to have the knot (nullptr for the mass).
+ModalBackbone* backbone_curve(CaseSpec& spec, const CaseParameter& p, const BackboneValue& v) {
+  NonlinearModalSpec& modal = nonlinear_modal(spec, p);
+  if (v.curve == BackboneValue::Curve::mass) return nullptr;
+  ModalBackbone& c = v.curve == BackboneValue::Curve::frequency ? modal.mode.frequency_hz : modal.mode.damping_ratio;
+  if (v.knot >= c.knots()) absent(p, fmt::format("no knot {} (the backbone has {})", v.knot, c.knots()));
+  return &c;
+}
+
 }  // namespace
 
 CaseParameter parse_parameter_path(const std::string& path) {
@@ -204,6 +226,14 @@ CaseParameter parse_parameter_path(const std::string& path) {
     p.target = MaterialValue{&fe::PlaneSection::thickness};
   else if (path == "analysis.modal_damping")
     p.target = ModalDampingValue{};
+  else if (path == "analysis.mass")
+    p.target = BackboneValue{};
+  else if (path.starts_with("analysis.backbone.frequency_hz.") || path.starts_with("analysis.backbone.damping_ratio.")) {
+    const bool damping = path.starts_with("analysis.backbone.damping_ratio.");
+    const auto knot = index_of(after(damping ? "analysis.backbone.damping_ratio." : "analysis.backbone.frequency_hz."));
+    if (!knot) return unknown();
+    p.target = BackboneValue{damping ? BackboneValue::Curve::damping : BackboneValue::Curve::frequency, *knot};
+  }
   else if (const std::string damped = after("analysis.modal_damping."); !damped.empty()) {
     if (!index_of(damped)) return unknown();
     p.target = ModalDampingValue{index_of(damped)};
@@ -273,6 +303,8 @@ double parameter_value(const CaseSpec& spec, const CaseParameter& parameter) {
     const auto [k, m] = modal_entries(s, parameter, *v);
     return v->mass ? *m : std::sqrt(*k / *m) / (2.0 * std::numbers::pi);
   }
+  if (const auto* v = std::get_if<BackboneValue>(&parameter.target))
+    if (const ModalBackbone* c = backbone_curve(s, parameter, *v)) return c->values()[v->knot];
   return locate(s, parameter);
 }
 
@@ -298,6 +330,19 @@ void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double 
       *k = *m * std::pow(2.0 * std::numbers::pi * value, 2);
     }
     return;
+  }
+  if (const auto* v = std::get_if<BackboneValue>(&parameter.target)) {
+    if (!(value > 0.0) || !std::isfinite(value))
+      throw InputError(fmt::format("'{}' = {}: must be positive and finite", parameter.path, value));
+    if (ModalBackbone* c = backbone_curve(spec, parameter, *v)) {
+      c->set_value(v->knot, value);
+      const auto& a = c->amplitudes();
+      if (const double lo = c->range(a.front(), a.back(), 2000).first; !(lo > 0.0))
+        throw InputError(fmt::format("'{}' = {}: the backbone's spline then reaches {:.6g} between its knots; it must "
+                                     "stay positive",
+                                     parameter.path, value, lo));
+      return;
+    }
   }
   locate(spec, parameter) = value;
   if (const auto* e = std::get_if<LumpedMatrixEntry>(&parameter.target); e && e->row != e->col) {

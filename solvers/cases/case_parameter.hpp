@@ -58,10 +58,17 @@ struct ModalCoordinate {
   bool mass = false;
 };
 
+// analysis.backbone.{frequency_hz,damping_ratio}.<i> (a knot's value) or analysis.mass of a
+// nonlinear_modal analysis.
+struct BackboneValue {
+  enum class Curve { frequency, damping, mass } curve = Curve::mass;
+  size_t knot = 0;
+};
+
 struct CaseParameter {
   std::string path;  // as written in the case file
   std::variant<MaterialValue, ArticleDimension, ContactLawValue, DamperValue, ModalDampingValue, ForceAmplitude,
-               LumpedMatrixEntry, LawOwnValue, ModalCoordinate>
+               LumpedMatrixEntry, LawOwnValue, ModalCoordinate, BackboneValue>
       target;
 };
 

@@ -109,6 +109,31 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   return d;
 }
 
+// [calibration.sampler]: walkers even and at least twice the parameters (the stretch move moves one
+// half of the ensemble along lines to the other).
+CalibrationSpec::Sampler parse_sampler(const toml::table& t, const std::string& path,
+                                       const std::filesystem::path& file, const CalibrationSpec& c) {
+  TomlReader s(t, path, file);
+  CalibrationSpec::Sampler out;
+  const long parameters = static_cast<long>(c.parameters.size());
+  if (const auto w = s.optional_integer("walkers", 0, 100000)) {
+    if (*w < 2 * parameters || *w % 2 != 0)
+      s.fail("walkers", fmt::format("the ensemble needs an even number of walkers, at least twice the {} parameters "
+                                    "({}), found {}",
+                                    parameters, 2 * parameters, *w));
+    out.walkers = static_cast<int>(*w);
+  }
+  if (const auto n = s.optional_integer("steps", 10, 1000000)) out.steps = static_cast<int>(*n);
+  if (const auto n = s.optional_integer("burn_in", 0, 1000000)) {
+    if (*n >= out.steps) s.fail("burn_in", fmt::format("must be below steps ({}), found {}", out.steps, *n));
+    out.burn_in = static_cast<int>(*n);
+  }
+  if (const auto n = s.optional_integer("predictions", 10, 100000)) out.predictions = static_cast<int>(*n);
+  if (const auto n = s.optional_integer("seed", 0, 4294967295L)) out.seed = static_cast<unsigned>(*n);
+  s.finish();
+  return out;
+}
+
 }  // namespace
 
 double uncertainty_of(const CalibrationSpec& c, const std::string& name) {
@@ -251,6 +276,12 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     if (*it < 1) r.fail("max_iterations", "must be >= 1");
     c.max_iterations = static_cast<int>(*it);
   }
+  if (const auto level = r.optional_number("band_level")) {
+    if (!(*level > 0.0 && *level < 1.0))
+      r.fail("band_level", fmt::format("a band's probability lies in (0, 1), found {}", *level));
+    c.band_level = *level;
+  }
+  if (const toml::table* s = r.optional_table("sampler")) c.sampler = parse_sampler(*s, r.path() + ".sampler", file, c);
   r.finish();
   return c;
 }

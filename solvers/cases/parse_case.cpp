@@ -15,6 +15,7 @@
 #include "cases/parse_hbm.hpp"
 #include "cases/parse_modal.hpp"
 #include "cases/parse_model.hpp"
+#include "cases/parse_nonlinear_modal.hpp"
 #include "cases/parse_rotating.hpp"
 #include "cases/parse_study.hpp"
 #include "cases/parse_time.hpp"
@@ -45,6 +46,8 @@ constexpr AnalysisParser kAnalysisParsers[] = {
     {"rotating", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_rotating(r); }},
     {"contact_modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_contact_modal(r); }},
     {"cyclic_modal", [](TomlReader& r, const fs::path&) -> AnalysisSpec { return parse_cyclic_modal(r); }},
+    {"nonlinear_modal",
+     [](TomlReader& r, const fs::path& folder) -> AnalysisSpec { return parse_nonlinear_modal(r, folder); }},
 };
 static_assert(std::size(kAnalysisParsers) == std::variant_size_v<AnalysisSpec>, "one parser per analysis type");
 
@@ -80,6 +83,7 @@ ModelNeed model_need(const ContactLoopSpec&) { return ModelNeed::nothing; }
 ModelNeed model_need(const RotatingSpec&) { return ModelNeed::mesh; }
 ModelNeed model_need(const ContactModalSpec&) { return ModelNeed::mesh; }
 ModelNeed model_need(const CyclicModalSpec&) { return ModelNeed::mesh; }
+ModelNeed model_need(const NonlinearModalSpec&) { return ModelNeed::nothing; }
 
 CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   CheckSpec c;
@@ -229,7 +233,9 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
   if (need == ModelNeed::nothing) {
     for (const char* key : {"material", "mesh", "section", "sets", "bc", "load"})
       if (top.has(key))
-        top.fail(key, "a contact_loop analysis drives one contact by an imposed motion: it takes no model data");
+        top.fail(key, std::holds_alternative<ContactLoopSpec>(spec.analysis)
+                          ? "a contact_loop analysis drives one contact by an imposed motion: it takes no model data"
+                          : "a nonlinear_modal analysis is its own model (backbone, mass): it takes no model data");
     spec.model.mesh.kind = MeshSpec::Kind::none;
   } else if (need == ModelNeed::matrices && !top.has("mesh")) {
     for (const char* key : {"material", "section", "sets", "bc", "load"})

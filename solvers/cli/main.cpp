@@ -18,6 +18,7 @@
 #include "cases/case_spec.hpp"
 #include "cli/command_options.hpp"
 #include "cli/compare_command.hpp"
+#include "cli/compare_models_command.hpp"
 #include "cli/validate_command.hpp"
 #include "common/errors.hpp"
 #include "common/progress_clock.hpp"
@@ -417,6 +418,18 @@ int main(int argc, char** argv) {
   compare->add_option("--out", compare_args.out,
                       "Page to write (Markdown, with its HTML twin); default: standard output");
 
+  CompareModelsArgs models_args;
+  CLI::App* compare_models = app.add_subcommand(
+      "compare-models",
+      "Calibrate several model forms on the same data and rank them by held-out error and AIC/BIC");
+  compare_models->add_option("CASES", models_args.cases, "Case files with a [calibration] section, one per model")
+      ->required()
+      ->check(CLI::ExistingFile);
+  compare_models->add_option("--out", models_args.out, "Output folder (default reports/model-comparison)");
+  compare_models->add_flag("--no-plots", models_args.no_plots, "Skip gnuplot figures");
+  add_limit_options(compare_models, models_args.limits);
+  add_cache_options(compare_models, cache_args);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -440,6 +453,10 @@ int main(int argc, char** argv) {
     if (*export_ccx) return export_command(export_args);
     if (*html) return guarded([&] { return html_command(html_folder); });
     if (*compare) return guarded([&] { return compare_command(compare_args); });
+    if (*compare_models) {
+      models_args.cache = bb::cache_or_none(calibrate_args.cache);
+      return guarded([&] { return compare_models_command(models_args); });
+    }
     if (*run) return guarded([&] { return run_command(run_args); });
     return guarded([&] { return validate_command(validate_args); });
   });

@@ -5,6 +5,7 @@
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +24,16 @@ struct CalibrationStart {
   int iterations = 0;
   bool converged = false;
   bool evaluated = true;  // false: the model could not be run at the start values
+};
+
+// The posterior sampled around the identified values ([calibration.sampler]).
+struct PosteriorSummary {
+  int walkers = 0, steps = 0, kept_steps = 0, evaluations = 0, predictions = 0;
+  double acceptance = 0.0;
+  std::vector<double> autocorrelation_steps;  // per parameter
+  std::vector<double> mean, std_dev;          // per parameter, in its units
+  std::string warning;                        // not mixed
+  double seconds = 0.0;
 };
 
 struct CalibrationOutcome {
@@ -61,6 +72,7 @@ struct CalibrationOutcome {
   toml::table calibrated;                    // the case table with the identified values
   // The cross-check case run with the identified values (spec.cross_check), every check entry.
   std::vector<CheckEntry> cross_check;
+  std::optional<PosteriorSummary> posterior;  // when [calibration.sampler] is given
   double cross_check_seconds = 0.0;
   // Why the cross-check case found no solution (its checks then have nothing to read); the
   // identification is kept and reported all the same.

@@ -88,6 +88,19 @@ struct CalibrationSpec {
   // An independent model (e.g. the time integration) run with the identified values at the same
   // parameter paths; its checks must pass for the identification to count (empty: none).
   std::filesystem::path cross_check;
+  // Probability of the two-sided prediction bands written with the predicted curves.
+  double band_level = 0.95;
+  // [calibration.sampler]: the posterior sampled around the optimum by an affine-invariant ensemble
+  // (identify/ensemble_sampler.hpp), likelihood exp(-cost / max(1, reduced chi-square)) within the
+  // bounds; its spread of every predicted point is a second band beside the linearised one.
+  struct Sampler {
+    int walkers = 0;  // even, >= 2 x parameters; 0: the smallest even count >= 4 x parameters
+    int steps = 600;
+    int burn_in = -1;  // -1: half of steps
+    int predictions = 100;  // posterior samples the predicted curves are evaluated at
+    unsigned seed = 1;
+  };
+  std::optional<Sampler> sampler;
   SourceLocation at;
 };
 

@@ -2,6 +2,7 @@
 // stated uncertainty. They come from the entries of fitted checks (a reference value per entry) and
 // from measured curves (identify/measured_data.hpp) matched to the case's result tables.
 #pragma once
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,11 @@ struct FitPoint {
   // The unit its values are shown in ("m", "m/N", "Hz", "N", "deg", ... ; empty: none known); SI
   // in the fields above, degrees shown for an angle (display_scale).
   std::string unit = {};
+  // 1-sigma of `computed` carried from the parameters' covariance (identify/prediction_bands.hpp),
+  // SI; NaN where not computed.
+  double band = std::numeric_limits<double>::quiet_NaN();
+  // The same from posterior samples (identify/posterior_bands.hpp): the spread of `computed`.
+  double sampled_band = std::numeric_limits<double>::quiet_NaN();
 
   double misfit() const;         // computed - measured (wrapped for angles)
   double display_scale() const;  // 180 / pi for an angle, else 1

@@ -15,6 +15,8 @@
 #include "cases/parse_calibration.hpp"
 #include "checks/checks.hpp"
 #include "common/errors.hpp"
+#include "identify/posterior_bands.hpp"
+#include "identify/prediction_bands.hpp"
 #include "model/build_model.hpp"
 
 namespace bb {
@@ -113,6 +115,20 @@ struct AnalyticCase {
   std::vector<std::string> numeric;  // "'path': why" of each parameter that is not
 };
 
+// The nonlinear modal model differentiates its own knots and mass exactly; false when no parameter is one.
+bool nonlinear_modal_sensitivities(NonlinearModalSpec& modal, AnalyticCase& out) {
+  const std::vector<std::string> own = nonlinear_modal_parameter_paths(modal.mode);
+  for (const CaseParameter& p : out.model.parameters) {
+    const bool d = std::find(own.begin(), own.end(), p.path) != own.end();
+    out.differentiated.push_back(d);
+    if (d)
+      modal.sensitivities.push_back(p.path);
+    else
+      out.numeric.push_back(fmt::format("'{}': not a parameter of the nonlinear modal model", p.path));
+  }
+  return !modal.sensitivities.empty();
+}
+
 std::variant<AnalyticCase, std::string> analytic_case(const CalibratedCase& base, const CalibrationSpec& cal) {
   if (cal.derivatives == "numeric") return std::string("derivatives = \"numeric\"");
   const bool peaks = cal.derivatives == "analytic";
@@ -129,6 +145,11 @@ std::variant<AnalyticCase, std::string> analytic_case(const CalibratedCase& base
     curves = curves || d.data.kind == DataKind::frf;
   }
   AnalyticCase out{base, {}, {}};
+  if (auto* modal = std::get_if<NonlinearModalSpec>(&out.model.spec.analysis))
+    return nonlinear_modal_sensitivities(*modal, out) ? std::variant<AnalyticCase, std::string>(out)
+                                                      : fmt::format("the analysis has no sensitivities for these "
+                                                                    "parameters ({})",
+                                                                    fmt::join(out.numeric, "; "));
   HbmSpec* hbm = std::get_if<HbmSpec>(&out.model.spec.analysis);
   if (!hbm) return std::string("the analysis is not hbm");
   hbm->path_sensitivities = curves;  // peaks alone need no curve's derivatives
@@ -152,7 +173,8 @@ std::variant<AnalyticCase, std::string> analytic_case(const CalibratedCase& base
 // what only the start and the identified values are compared with.
 CalibratedCase without_held_out_curves(CalibratedCase c, const CalibrationSpec& cal) {
   HbmSpec* hbm = std::get_if<HbmSpec>(&c.spec.analysis);
-  if (!hbm) return c;
+  auto* modal = std::get_if<NonlinearModalSpec>(&c.spec.analysis);
+  if (!hbm && !modal) return c;
   const auto only_held_out = [&](const std::string& name) {
     const std::string table = "frf_" + name;
     bool held = false;
@@ -165,8 +187,12 @@ CalibratedCase without_held_out_curves(CalibratedCase c, const CalibrationSpec& 
       if (k.result == table) return false;
     return held;
   };
-  std::erase_if(hbm->stepped_sines, [&](const SteppedSineSpec& s) { return only_held_out(s.name); });
-  std::erase_if(hbm->response_controls, [&](const ResponseControlSpec& s) { return only_held_out(s.name); });
+  const auto drop = [&](auto& sines, auto& controls) {
+    std::erase_if(sines, [&](const SteppedSineSpec& s) { return only_held_out(s.name); });
+    std::erase_if(controls, [&](const ResponseControlSpec& s) { return only_held_out(s.name); });
+  };
+  if (hbm) drop(hbm->stepped_sines, hbm->response_controls);
+  if (modal) drop(modal->stepped_sines, modal->response_controls);
   return c;
 }
 
@@ -277,7 +303,10 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
                                 ? fmt::format(", central differences (relative step {:g}) for the columns of {}",
                                               cal->derivative_step, fmt::join(sensitivity_base->numeric, "; "))
                                 : std::string();
-  out.derivatives = analytic ? fmt::format("analytic (implicit function theorem, hbm/sensitivity.hpp){}{}", mixed,
+  const char* how = std::holds_alternative<NonlinearModalSpec>(base.spec.analysis)
+                        ? "analytic (the nonlinear modal model's own, forced/single_mode_synthesis.hpp)"
+                        : "analytic (implicit function theorem, hbm/sensitivity.hpp)";
+  out.derivatives = analytic ? fmt::format("{}{}{}", how, mixed,
                                            out.jacobian_fallbacks == 0
                                                ? ""
                                                : fmt::format("; {} Jacobians by central differences, relative step "
@@ -288,7 +317,16 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   if (out.one_sided_columns > 0)
     out.derivatives += fmt::format("; {} columns one-sided, where the model could not be run on the other side",
                                    out.one_sided_columns);
-  out.after = fitted_points(base, *cal, out.values, limits, cache, &out.curves_after);
+  // With the model's own sensitivities, every point at the identified values carries its band.
+  out.after = fitted_points(analytic ? sensitivity_base->model : base, *cal, out.values, limits, cache,
+                            &out.curves_after, analytic ? differentiated : nullptr);
+  if (analytic) set_linearised_bands(out.after, out.values, parameter_covariance(out));
+  if (cal->sampler) {
+    out.posterior = sample_posterior(*cal, out, evaluate, [&](const std::vector<double>& values) {
+      return fitted_points(base, *cal, values, limits, cache);
+    }, out.after);
+    if (!out.posterior->warning.empty()) out.warnings.push_back(out.posterior->warning);
+  }
   out.calibrated = table;
   for (size_t i = 0; i < out.values.size(); ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);
   if (!cal->cross_check.empty()) cross_check(*cal, limits, cache, out);

@@ -31,6 +31,7 @@ void files(const ContactLoopSpec&, const ContactLoopOutcome&, const fs::path&, R
 void files(const RotatingSpec&, const RotatingOutcome&, const fs::path&, RunRecord&) {}
 void files(const ContactModalSpec&, const ContactModalOutcome&, const fs::path&, RunRecord&) {}
 void files(const CyclicModalSpec&, const CyclicModalOutcome&, const fs::path&, RunRecord&) {}
+void files(const NonlinearModalSpec&, const NonlinearModalOutcome&, const fs::path&, RunRecord&) {}
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "report/frf_plots.hpp"
 #include "report/hbm_plots.hpp"
 #include "report/nonlinear_mode_plots.hpp"
+#include "report/nonlinear_modal_report.hpp"
 #include "report/plots.hpp"
 #include "report/rotating_plots.hpp"
 #include "report/time_plots.hpp"
@@ -129,6 +130,10 @@ void plots(const CyclicModalSpec& spec, const CyclicModalOutcome& o, const PlotT
         plot_sector_wave(o, t.model.mesh, i, 1, t.out, fmt::format("wave_nd{}", o.diameters[i].nodal_diameter)));
     if (o.diameters.size() == 1) break;
   }
+}
+
+void plots(const NonlinearModalSpec& spec, const NonlinearModalOutcome& o, const PlotTarget& t) {
+  plot_nonlinear_modal(spec, o, t.tables, t.out, t.run);
 }
 
 }  // namespace

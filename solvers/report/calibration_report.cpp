@@ -1,6 +1,7 @@
 #include "report/calibration_report.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -13,6 +14,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "identify/prediction_bands.hpp"
 #include "report/gnuplot.hpp"
 #include "report/html_page.hpp"
 #include "report/plots.hpp"
@@ -72,12 +74,16 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
   const double y_scale = quantity == "phase" ? 180.0 / std::numbers::pi : 1.0;  // phases plotted in degrees
   {
     std::ofstream out = open_plot_data(out_dir, stem);
-    out << "# measured: x y sigma | computed at the start | computed at the identified values\n";
+    out << "# measured: x y sigma | computed at the start | computed at the identified values | 95 % prediction "
+           "interval low high\n";
+    const double z = normal_quantile(o.spec.band_level);
     for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
       const FitPoint& a = o.after[k];
       if (a.set != d.name || a.quantity != quantity) continue;
+      const double half = z * std::hypot(std::isfinite(a.band) ? a.band : a.sampled_band, a.sigma);
       out << a.x << ' ' << a.measured * y_scale << ' ' << a.sigma * y_scale << ' ' << o.before[k].computed * y_scale
-          << ' ' << a.computed * y_scale << '\n';
+          << ' ' << a.computed * y_scale << ' ' << (a.computed - half) * y_scale << ' ' << (a.computed + half) * y_scale
+          << '\n';
     }
     for (const ResultTables* tables : {&o.curves_before, &o.curves_after}) {
       out << "\n\n";
@@ -113,7 +119,9 @@ Plot plot_data_set(const CalibrationOutcome& o, const CalibrationData& d, const 
   if (!curve) script += "set logscale x\n";  // force levels span decades
   if (curve) {
     script += fmt::format(
-        "plot '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.5 lc rgb 'black' title 'measured', \\\n"
+        "plot '{0}.dat' index 0 using 1:6:7 with filledcurves fs transparent solid 0.25 lc rgb '#d62728' "
+        "title 'prediction interval', \\\n"
+        "     '{0}.dat' index 0 using 1:2:3 with yerrorbars pt 7 ps 0.5 lc rgb 'black' title 'measured', \\\n"
         "     '{0}.dat' index 1 using 1:2 with lines dt 2 lc rgb '#1f77b4' title 'start values', \\\n"
         "     '{0}.dat' index 2 using 1:2 with lines lw 2 lc rgb '#d62728' title 'identified'\n",
         stem);
@@ -194,16 +202,57 @@ void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_f
   {
     std::ofstream out = open_out(out_dir / "fitted_points.csv");
     // Values in the unit of the `unit` column (phases in degrees, as the data and tables give them).
+    // band_1sigma: the identified values' uncertainty carried into the computed value (linearised);
+    // band_lower/band_upper: the prediction interval of a measurement at [calibration] band_level,
+    // computed +- z sqrt(band^2 + sigma^2); the sampled_ columns the same from posterior samples.
     out << "set,point,quantity,unit,x,measured,sigma,computed_start,residual_start,computed_identified,residual_"
-           "identified,held_out\n";
+           "identified,held_out,band_1sigma,band_lower,band_upper,sampled_band_1sigma,sampled_band_lower,sampled_band_"
+           "upper\n";
+    const double z = normal_quantile(o.spec.band_level);
     for (size_t k = 0; k < o.after.size() && k < o.before.size(); ++k) {
       const FitPoint& a = o.after[k];
-      const double u = a.display_scale();
-      out << fmt::format("\"{}\",\"{}\",{},{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g},{}\n", a.set,
-                         a.label, a.quantity, a.unit, a.x, a.measured * u, a.sigma * u, o.before[k].computed * u,
-                         o.before[k].residual(), a.computed * u, a.residual(), a.held_out ? 1 : 0);
+      const double u = a.display_scale(), half = z * std::hypot(a.band, a.sigma),
+                   sampled = z * std::hypot(a.sampled_band, a.sigma);
+      out << fmt::format("\"{}\",\"{}\",{},{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g},{},{:.6g},{:.10g},{:."
+                         "10g},{:.6g},{:.10g},{:.10g}\n",
+                         a.set, a.label, a.quantity, a.unit, a.x, a.measured * u, a.sigma * u, o.before[k].computed * u,
+                         o.before[k].residual(), a.computed * u, a.residual(), a.held_out ? 1 : 0, a.band * u,
+                         (a.computed - half) * u, (a.computed + half) * u, a.sampled_band * u,
+                         (a.computed - sampled) * u, (a.computed + sampled) * u);
     }
   }
+}
+
+// How often the prediction bands hold the measured points, linearised and sampled.
+void write_band_summary(const CalibrationOutcome& o, std::ostream& md) {
+  const double level = 100.0 * o.spec.band_level;
+  const BandCoverage held = band_coverage(o.after, true, o.spec.band_level),
+                     fitted = band_coverage(o.after, false, o.spec.band_level);
+  md << (held.points + fitted.points == 0
+             ? std::string("Prediction bands, linearised: none (the model gives no exact sensitivities for the "
+                           "identified parameters, or the covariance could not be computed).\n\n")
+             : fmt::format("Prediction bands, linearised (the covariance of the identified values carried by the "
+                           "model's exact sensitivities, plus each point's own sigma): the {:g} % interval holds {} of "
+                           "{} held-out points ({:.1f} %) and {} of {} fitted points ({:.1f} %); columns band_1sigma, "
+                           "band_lower and band_upper of `fitted_points.csv`.\n\n",
+                           level, held.covered, held.points, 100.0 * held.share(), fitted.covered, fitted.points,
+                           100.0 * fitted.share()));
+  if (!o.posterior) return;
+  const PosteriorSummary& p = *o.posterior;
+  std::vector<FitPoint> sampled = o.after;
+  for (FitPoint& q : sampled) q.band = q.sampled_band;
+  const BandCoverage sh = band_coverage(sampled, true, o.spec.band_level);
+  md << fmt::format("Posterior sampled (affine-invariant ensemble, {} walkers x {} steps, {} kept, {} model runs, "
+                    "{:.1f} s): acceptance {:.3f}, autocorrelation times {:.3g} steps; its {:g} % interval holds {} of "
+                    "{} held-out points (columns sampled_band_*, from {} samples).{}\n\n",
+                    p.walkers, p.steps, p.kept_steps, p.evaluations, p.seconds, p.acceptance,
+                    fmt::join(p.autocorrelation_steps, ", "), level, sh.covered, sh.points, p.predictions,
+                    p.warning.empty() ? "" : " **" + p.warning + "**");
+  md << "| parameter | identified | linearised sigma | posterior mean | posterior sigma |\n|---|---|---|---|---|\n";
+  for (size_t i = 0; i < o.values.size() && i < p.mean.size(); ++i)
+    md << fmt::format("| `{}` | {:.6g} | {:.3g} | {:.6g} | {:.3g} |\n", o.spec.parameters[i].path, o.values[i],
+                      o.std_devs[i], p.mean[i], p.std_dev[i]);
+  md << '\n';
 }
 
 }  // namespace
@@ -245,6 +294,7 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
                         rms_residual(o.after, set), 100.0 * largest_relative_misfit(o.after, set));
     }
     md << '\n';
+    write_band_summary(o, md);
   }
   if (!o.spec.fit_checks.empty()) {
     md << "| fitted check | sigma (relative) |\n|---|---|\n";

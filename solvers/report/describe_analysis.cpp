@@ -12,6 +12,7 @@
 #include "distributed/distributed.hpp"
 #include "report/describe_cyclic.hpp"
 #include "report/describe_hbm.hpp"
+#include "report/nonlinear_modal_report.hpp"
 #include "report/number_format.hpp"
 
 namespace bb {

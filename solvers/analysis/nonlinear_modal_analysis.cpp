@@ -1,0 +1,211 @@
+#include "analysis/nonlinear_modal_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+
+#include "common/errors.hpp"
+
+namespace bb {
+
+std::vector<std::string> nonlinear_modal_parameter_paths(const NonlinearMode& mode) {
+  std::vector<std::string> paths;
+  for (size_t i = 0; i < mode.frequency_hz.knots(); ++i) paths.push_back(fmt::format("analysis.backbone.frequency_hz.{}", i));
+  for (size_t i = 0; i < mode.damping_ratio.knots(); ++i)
+    paths.push_back(fmt::format("analysis.backbone.damping_ratio.{}", i));
+  paths.push_back("analysis.mass");
+  return paths;
+}
+
+namespace {
+
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+// Index into the model's parameters of each asked sensitivity, and the parameter's value (p in p d/dp).
+struct Differentiated {
+  std::vector<Eigen::Index> index;
+  std::vector<double> value;
+  const std::vector<std::string>* paths = nullptr;
+};
+
+Differentiated differentiated(const NonlinearModalSpec& spec) {
+  const std::vector<std::string> all = nonlinear_modal_parameter_paths(spec.mode);
+  Differentiated d;
+  d.paths = &spec.sensitivities;
+  const auto& f = spec.mode.frequency_hz.values();
+  const auto& z = spec.mode.damping_ratio.values();
+  for (const std::string& p : spec.sensitivities) {
+    const auto it = std::find(all.begin(), all.end(), p);
+    if (it == all.end())
+      throw InputError(fmt::format("{}: the nonlinear modal model has no parameter '{}'", spec.at.where(), p));
+    const auto k = static_cast<size_t>(it - all.begin());
+    d.index.push_back(static_cast<Eigen::Index>(k));
+    d.value.push_back(k < f.size() ? f[k] : k < f.size() + z.size() ? z[k - f.size()] : spec.mode.mass);
+  }
+  return d;
+}
+
+void add_backbone_table(const NonlinearMode& mode, ResultTables& tables) {
+  const auto& a = mode.frequency_hz.amplitudes();
+  const auto& b = mode.damping_ratio.amplitudes();
+  const double lo = std::min(a.front(), b.front()) / 10.0, hi = std::max(a.back(), b.back()) * 10.0;
+  constexpr int kPoints = 81;
+  std::vector<std::vector<double>> rows;
+  for (int k = 0; k < kPoints; ++k) {
+    const double amp = lo * std::pow(hi / lo, static_cast<double>(k) / (kPoints - 1));
+    rows.push_back({static_cast<double>(k + 1), amp, mode.frequency_hz(amp), mode.damping_ratio(amp)});
+  }
+  tables.emplace("backbone", table_from_rows("backbone", {"point", "amplitude_m", "frequency_hz", "damping_ratio"}, rows));
+}
+
+std::vector<std::string> with_sensitivities(std::vector<std::string> cols, const std::vector<std::string>& quantities,
+                                            const Differentiated& d) {
+  for (const std::string& p : *d.paths)
+    for (const std::string& q : quantities) cols.push_back(q + "_dlog_" + p);
+  return cols;
+}
+
+void append_sensitivities(std::vector<double>& row, const std::vector<const Eigen::VectorXd*>& derivatives,
+                          const std::vector<double>& scales, const Differentiated& d) {
+  for (size_t j = 0; j < d.index.size(); ++j)
+    for (size_t q = 0; q < derivatives.size(); ++q) row.push_back(d.value[j] * (*derivatives[q])[d.index[j]] * scales[q]);
+}
+
+void add_stepped_sine(const NonlinearModalSpec& spec, const SteppedSineSpec& sine, const Differentiated& d,
+                      ResultTables& tables) {
+  const std::string amp = spec.dof + "_amp_m", phase = spec.dof + "_phase_deg";
+  const auto cols =
+      with_sensitivities({"point", "frequency_hz", "force_n", amp, phase, "stable"}, {amp, phase}, d);
+  std::vector<std::vector<double>> rows;
+  std::optional<double> previous;
+  for (size_t i = 0; i < sine.frequency_hz.size(); ++i) {
+    const ModalPoint p = stepped_response(spec.mode, sine.force[i], sine.frequency_hz[i], previous);
+    previous = p.amplitude;
+    std::vector<double> row = {static_cast<double>(i + 1), sine.frequency_hz[i], sine.force[i], p.amplitude,
+                               p.phase * kDegPerRad, p.stable ? 1.0 : 0.0};
+    append_sensitivities(row, {&p.d_amplitude, &p.d_phase}, {1.0, kDegPerRad}, d);
+    rows.push_back(std::move(row));
+  }
+  tables.emplace("frf_" + sine.name, table_from_rows("frf_" + sine.name, cols, rows));
+}
+
+double held_amplitude_m(const ResponseControlSpec& c, double f_hz) {
+  return c.amplitude / std::pow(2.0 * std::numbers::pi * f_hz, c.derivative);
+}
+
+struct ControlMinimum {
+  double force = NAN, frequency_hz = NAN, phase_deg = NAN;
+  bool interior = false;
+};
+
+// Golden section on the force between the neighbours of the smallest point (as the hbm's).
+ControlMinimum smallest_force(const NonlinearModalSpec& spec, const ResponseControlSpec& c, const std::vector<double>& force) {
+  const auto k = static_cast<size_t>(std::min_element(force.begin(), force.end()) - force.begin());
+  const auto at = [&](double f) { return held_response(spec.mode, held_amplitude_m(c, f), f); };
+  ControlMinimum m{force[k], c.frequency_hz[k], at(c.frequency_hz[k]).phase * kDegPerRad, false};
+  if (k == 0 || k + 1 >= force.size()) return m;
+  double lo = std::min(c.frequency_hz[k - 1], c.frequency_hz[k + 1]);
+  double hi = std::max(c.frequency_hz[k - 1], c.frequency_hz[k + 1]);
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = at(x1).force, f2 = at(x2).force;
+  while (hi - lo > 1e-10 * hi) {
+    if (f1 < f2)
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = at(x1).force;
+    else
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = at(x2).force;
+  }
+  const double f = 0.5 * (lo + hi);
+  const ModalPoint p = at(f);
+  if (p.force < m.force) m = {p.force, f, p.phase * kDegPerRad, true};
+  return m;
+}
+
+ControlMinimum add_response_control(const NonlinearModalSpec& spec, const ResponseControlSpec& c, const Differentiated& d,
+                             ResultTables& tables) {
+  const std::string amp = spec.dof + "_amp_m", phase = spec.dof + "_phase_deg";
+  const auto cols = with_sensitivities({"point", "frequency_hz", "force_n", "force_phase_deg", "held_m", amp, phase},
+                                       {"force_n", phase}, d);
+  std::vector<std::vector<double>> rows;
+  std::vector<double> force;
+  for (size_t i = 0; i < c.frequency_hz.size(); ++i) {
+    const double held = held_amplitude_m(c, c.frequency_hz[i]);
+    const ModalPoint p = held_response(spec.mode, held, c.frequency_hz[i]);
+    std::vector<double> row = {static_cast<double>(i + 1), c.frequency_hz[i], p.force, -p.phase * kDegPerRad, held,
+                               held, p.phase * kDegPerRad};
+    append_sensitivities(row, {&p.d_force, &p.d_phase}, {1.0, kDegPerRad}, d);
+    rows.push_back(std::move(row));
+    force.push_back(p.force);
+  }
+  tables.emplace("frf_" + c.name, table_from_rows("frf_" + c.name, cols, rows));
+  return smallest_force(spec, c, force);
+}
+
+void add_response_control_summary(const NonlinearModalSpec& spec, const std::vector<ControlMinimum>& minima,
+                                  ResultTables& tables) {
+  if (minima.empty()) return;
+  const char* quantity[] = {"displacement [m]", "velocity [m/s]", "acceleration [m/s^2]"};
+  std::vector<std::vector<double>> rows;
+  std::vector<std::string> names, dofs, held;
+  for (size_t k = 0; k < minima.size(); ++k) {
+    const ResponseControlSpec& c = spec.response_controls[k];
+    const ControlMinimum& m = minima[k];
+    rows.push_back({static_cast<double>(k + 1), c.amplitude, static_cast<double>(c.derivative), m.force,
+                    m.frequency_hz, m.phase_deg, m.interior ? 1.0 : 0.0,
+                    static_cast<double>(c.frequency_hz.size())});
+    names.push_back(c.name), dofs.push_back(spec.dof), held.push_back(quantity[c.derivative]);
+  }
+  ResultTable t = table_from_rows("response_control",
+                                  {"control", "amplitude", "derivative", "min_force_n", "min_frequency_hz",
+                                   "min_phase_deg", "min_interior", "points"},
+                                  rows);
+  t.add_text_column("name", names);
+  t.add_text_column("dof", dofs);
+  t.add_text_column("held", held);
+  tables.emplace("response_control", std::move(t));
+}
+
+void add_extracted(const NonlinearModalSpec& spec, NonlinearModalOutcome& out) {
+  if (spec.extract.empty()) return;
+  std::vector<std::vector<double>> rows;
+  std::vector<std::string> names;
+  for (size_t k = 0; k < spec.extract.size(); ++k) {
+    const BackboneCurve& c = spec.extract[k];
+    BackbonePoint p;
+    try {
+      p = extract_backbone_point(c.frequency_hz, c.amplitude_m, c.force_n);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("{}: {}: {}", c.at.where(), c.file, e.what()));
+    }
+    out.extracted.push_back(p);
+    rows.push_back({static_cast<double>(k + 1), p.amplitude_m, p.frequency_hz, p.damping_ratio, p.mass_kg,
+                    p.rms_relative, spec.mode.frequency_hz(p.amplitude_m), spec.mode.damping_ratio(p.amplitude_m)});
+    names.push_back(c.name);
+  }
+  ResultTable t = table_from_rows("backbone_extracted",
+                                  {"curve", "amplitude_m", "frequency_hz", "damping_ratio", "mass_kg", "rms_relative",
+                                   "model_frequency_hz", "model_damping_ratio"},
+                                  rows);
+  t.add_text_column("name", names);
+  out.tables.emplace("backbone_extracted", std::move(t));
+}
+
+}  // namespace
+
+NonlinearModalOutcome run_nonlinear_modal(const NonlinearModalSpec& spec) {
+  NonlinearModalOutcome out;
+  const Differentiated d = differentiated(spec);
+  add_backbone_table(spec.mode, out.tables);
+  for (const SteppedSineSpec& s : spec.stepped_sines) add_stepped_sine(spec, s, d, out.tables);
+  std::vector<ControlMinimum> minima;
+  for (const ResponseControlSpec& c : spec.response_controls) minima.push_back(add_response_control(spec, c, d, out.tables));
+  add_response_control_summary(spec, minima, out.tables);
+  add_extracted(spec, out);
+  return out;
+}
+
+}  // namespace bb

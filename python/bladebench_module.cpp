@@ -22,9 +22,11 @@
 #include "cases/case_settings.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
+#include "common/input_number.hpp"
 #include "hbm/harmonic_balance.hpp"
 #include "linalg/modal_solver.hpp"
 #include "model/build_model.hpp"
+#include "reduction/reduced_model.hpp"
 
 namespace py = pybind11;
 
@@ -79,7 +81,18 @@ double law_number(const py::dict& contact, const char* key, const std::string& w
     if (required) throw bb::InputError(where + ": needs '" + key + "'");
     return fallback;
   }
-  return py::cast<double>(contact[key]);
+  // The case reader's rule and words for a number (common/input_number.hpp), not pybind11's cast error.
+  const py::handle value = contact[key];
+  double v = 0.0;
+  try {
+    v = py::cast<double>(value);
+  } catch (const py::cast_error&) {
+    throw bb::InputError(where + ": '" + key + "': expected a number, found " +
+                         std::string(py::str(py::type::of(value).attr("__name__"))));
+  }
+  if (const std::string problem = bb::number_problem(v); !problem.empty())
+    throw bb::InputError(where + ": '" + key + "': " + problem);
+  return v;
 }
 
 // One Jenkins contact from {"tangential": a_t, "normal": a_n (optional), "kn", "kt", "mu", "n0"}.
@@ -137,6 +150,16 @@ py::dict hbm_sweep(const py::handle& mass, const py::handle& stiffness, const py
   model.mass = square_matrix(mass, "mass", n);
   model.stiffness = square_matrix(stiffness, "stiffness", n);
   model.damping = square_matrix(damping, "damping", n);
+  // What the case reader requires of a model written in a case (cases/parse_hbm.cpp), in its words.
+  {
+    bb::ReducedModel rom;
+    rom.mass = model.mass;
+    rom.stiffness = model.stiffness;
+    for (int i = 1; i <= n; ++i) rom.dofs.push_back({.label = "", .direction = -1, .mode = i});
+    bb::validate_reduced_model(rom, "hbm_sweep");
+    if (const std::string problem = bb::damping_matrix_problem(model.damping); !problem.empty())
+      throw bb::InputError("damping: " + problem);
+  }
   {
     const auto f = checked_array<std::complex<double>>(force, "force", {n}, "complex128").unchecked<1>();
     model.harmonic_load.resize(n);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/friction_law.hpp"
+
 namespace bb {
 namespace {
 
@@ -33,6 +35,13 @@ WorkEstimate combine(WorkEstimate a, const WorkEstimate& b) {
   return out;
 }
 
+// The Jenkins sliders the solvers see: an Iwan joint is as many as its distribution's shares.
+double slider_count(const HbmSpec& s) {
+  double n = 0.0;
+  for (const HbmContactSpec& c : s.contacts) n += c.distribution ? static_cast<double>(c.distribution->shares().size()) : 1.0;
+  return n + (s.damper ? static_cast<double>(s.damper->points.size()) : 0.0);
+}
+
 double grid_points(double f_min, double f_max, double step) { return std::floor((f_max - f_min) / step + 1e-9) + 1.0; }
 
 // The sweeps of a harmonic-balance analysis: frequencies x levels x the H and samples it may climb
@@ -40,12 +49,9 @@ double grid_points(double f_min, double f_max, double step) { return std::floor(
 // every contact (DFT of the Jacobian: 4 S (2H+1)^2) and the LU of the condensed Jacobian
 // ((n (2H+1))^3 / 3).
 WorkEstimate hbm_work(const HbmSpec& s) {
-  double unknowns = 0.0, elements = static_cast<double>(s.contacts.size());
+  double unknowns = 0.0, elements = slider_count(s);
   for (const HbmContactSpec& c : s.contacts) unknowns += static_cast<double>(c.tangential.size() + c.normal.size());
-  if (s.damper) {
-    unknowns += 3.0 + 2.0 * static_cast<double>(s.damper->points.size());
-    elements += static_cast<double>(s.damper->points.size());
-  }
+  if (s.damper) unknowns += 3.0 + 2.0 * static_cast<double>(s.damper->points.size());
   unknowns = std::max(unknowns, 1.0);
   elements = std::max(elements, 1.0);
   const bool adaptive_h = s.harmonic_tolerance > 0.0;
@@ -95,8 +101,7 @@ WorkEstimate time_work(const TimeSpec& t) {
   const HbmSpec& s = t.system;
   const double size = s.model.matrices ? static_cast<double>(s.model.matrices->size())
                                        : 3.0 * static_cast<double>(s.model.masters.size()) + s.model.modes;
-  const double elements =
-      static_cast<double>(s.contacts.size()) + (s.damper ? static_cast<double>(s.damper->points.size()) : 0.0);
+  const double elements = slider_count(s);
   const double frequencies = grid_points(s.sweep.f_min, s.sweep.f_max, s.sweep.step_hz);
   const double levels = static_cast<double>(std::max<size_t>(s.force_levels.size(), 1));
   const double steps = frequencies * levels * t.max_cycles * t.steps_per_period;

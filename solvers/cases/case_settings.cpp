@@ -77,6 +77,9 @@ void apply_settings(toml::table& root, const std::vector<std::string>& settings,
     const auto [table, last] = holder(root, setting.substr(0, eq), "--set", setting);
     const toml::node* value = parsed.get("value");
     if (!value) fail("--set", setting, "no value");
+    // More keys or tables after a newline would be dropped silently: one value or nothing.
+    if (parsed.size() != 1)
+      fail("--set", setting, "the value is more than one TOML value (keys or tables after it); give exactly one");
     table->insert_or_assign(last, std::move(*without_source(*value)));
   }
   for (const std::string& key : removals) {

@@ -6,9 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "cases/case_parameter.hpp"
+#include "cases/case_spec.hpp"
 #include "cases/read_measured_file.hpp"
+#include "checks/checks.hpp"
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "common/toml_reader.hpp"
 #include "common/user_text.hpp"
@@ -267,10 +271,13 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   if (const auto n = r.optional_integer("seed", 0, 4294967295L)) {
     c.seed = static_cast<unsigned>(*n);
   }
-  if (const auto cross = r.optional_string("cross_check")) {
-    c.cross_check = file.parent_path() / *cross;
-    if (!std::filesystem::is_regular_file(c.cross_check))
-      r.fail("cross_check", fmt::format("no case file {}", c.cross_check.string()));
+  if (r.has("cross_check")) {
+    c.cross_check = r.input_file("cross_check", file.parent_path());
+    if (const std::string why = file_problem(c.cross_check); !why.empty())
+      r.fail("cross_check", fmt::format("no case file {} ({})", c.cross_check.string(), why));
+    std::error_code ec;
+    if (std::filesystem::equivalent(c.cross_check, file, ec))
+      r.fail("cross_check", "names this case itself; a cross-check is another case the identified values must predict");
   }
   if (const auto it = r.optional_integer("max_iterations")) {
     if (*it < 1) r.fail("max_iterations", "must be >= 1");
@@ -284,6 +291,38 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   if (const toml::table* s = r.optional_table("sampler")) c.sampler = parse_sampler(*s, r.path() + ".sampler", file, c);
   r.finish();
   return c;
+}
+
+namespace {
+
+void require_linked_cases(const std::filesystem::path& file, const CaseSpec& spec,
+                          const std::optional<CalibrationSpec>& calibration, std::set<std::filesystem::path>& seen) {
+  require_check_references(spec.checks);
+  std::vector<std::filesystem::path> linked;
+  for (const CheckSpec& c : spec.checks)
+    if (!c.reference_case.empty()) linked.push_back(c.reference_case);
+  if (calibration && !calibration->cross_check.empty()) linked.push_back(calibration->cross_check);
+  for (const std::filesystem::path& other : linked) {
+    std::error_code ec;
+    const std::filesystem::path id = std::filesystem::weakly_canonical(other, ec);
+    if (!seen.insert(ec ? other : id).second) continue;  // read once, and no cycle
+    try {
+      const toml::table table = read_case_table(other);
+      const CaseSpec other_spec = parse_case_table(table, other);
+      require_linked_cases(other, other_spec, parse_calibration(table, other, other_spec), seen);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: the linked case {}: {}", file.string(), other.string(), e.what()));
+    }
+  }
+}
+
+}  // namespace
+
+void require_linked_cases(const std::filesystem::path& file, const CaseSpec& spec,
+                          const std::optional<CalibrationSpec>& calibration) {
+  std::error_code ec;
+  std::set<std::filesystem::path> seen{std::filesystem::weakly_canonical(file, ec)};
+  require_linked_cases(file, spec, calibration, seen);
 }
 
 }  // namespace bb

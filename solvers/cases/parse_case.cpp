@@ -19,6 +19,7 @@
 #include "cases/parse_rotating.hpp"
 #include "cases/parse_study.hpp"
 #include "cases/parse_time.hpp"
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 
@@ -106,8 +107,8 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
              "names the case whose result table 'reference_result' is compared with (or, with match = \"mac\", "
              "whose modes the keys of 'reference' number)");
     c.reference_case = r.input_file("reference_case", folder);
-    if (!fs::is_regular_file(c.reference_case))
-      r.fail("reference_case", fmt::format("no case file {}", c.reference_case.string()));
+    if (const std::string why = file_problem(c.reference_case); !why.empty())
+      r.fail("reference_case", fmt::format("no case file {} ({})", c.reference_case.string(), why));
   }
   const std::string expect = r.choice("expect", {"equal", "at_most", "at_least"}, "equal");
   c.relation = expect == "at_most"    ? CheckSpec::Relation::at_most
@@ -156,7 +157,8 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
 }
 
 toml::table read_case_table(const fs::path& file, int depth) {
-  if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: case file not found", file.string()));
+  if (const std::string why = file_problem(file); !why.empty())
+    throw InputError(fmt::format("{}: case file not found ({})", file.string(), why));
   toml::table root;
   try {
     root = toml::parse_file(file.string());
@@ -172,12 +174,12 @@ toml::table read_case_table(const fs::path& file, int depth) {
   if (!from->is_string()) throw InputError(fmt::format("{}: 'case.model_from': expected a case file name", at.where()));
   if (depth > 8) throw InputError(fmt::format("{}: 'case.model_from': more than 8 levels (a cycle?)", at.where()));
   const fs::path base_file = file.parent_path() / from->value<std::string>().value();
-  if (fs::is_directory(base_file))
+  if (const std::string why = file_problem(base_file); why == "it is a directory")
     throw InputError(printable(
         fmt::format("{}: 'case.model_from': {} is a folder; name a case file", at.where(), base_file.string())));
-  if (!fs::is_regular_file(base_file))
-    throw InputError(
-        printable(fmt::format("{}: 'case.model_from': case file {} not found", at.where(), base_file.string())));
+  else if (!why.empty())
+    throw InputError(printable(
+        fmt::format("{}: 'case.model_from': case file {} not found ({})", at.where(), base_file.string(), why)));
   const toml::table base = read_case_table(base_file, depth + 1);
   parse_case_table(base, base_file);  // errors in the base name the base file and its lines
   for (const char* key : {"material", "mesh", "sets", "bc", "section"}) {
@@ -222,6 +224,9 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
         if (const std::string problem = dotted_name_problem(plot); !problem.empty())
           c.fail("key_plots",
                  fmt::format("'{}': {}; a key plot is named by its file's stem", printable(plot), problem));
+        // Each copy would be drawn (and inlined) again: 5 000 made a 1 GB report.html.
+        if (std::find(spec.key_plots.begin(), spec.key_plots.end(), plot) != spec.key_plots.end())
+          c.fail("key_plots", fmt::format("'{}' is named twice", printable(plot)));
         spec.key_plots.push_back(plot);
       }
     }

@@ -9,6 +9,7 @@
 
 #include "cases/parse_common.hpp"
 #include "cases/parse_modal.hpp"
+#include "frf/receptance.hpp"
 
 namespace bb {
 namespace fs = std::filesystem;
@@ -172,6 +173,14 @@ FrfDamping parse_damping(TomlReader& r) {
     if (f.size() != 2 || !(f[0] > 0) || !(f[1] > f[0])) d.fail("frequency_hz", "expected [f1, f2] with 0 < f1 < f2");
     if (z.size() != 2 || !(z[0] >= 0) || !(z[1] >= 0) || z[0] >= 1 || z[1] >= 1)
       d.fail("zeta", "expected [zeta1, zeta2], each in [0, 1)");
+    // A negative coefficient damps some frequencies negatively: no steady response balances that.
+    const RayleighCoefficients c =
+        fit_rayleigh(2.0 * std::numbers::pi * f[0], z[0], 2.0 * std::numbers::pi * f[1], z[1]);
+    if (c.alpha < 0.0 || c.beta < 0.0)
+      d.fail("zeta", fmt::format("zeta = {} at {} Hz and {} at {} Hz make a negative Rayleigh coefficient (alpha = "
+                                 "{:.6g} 1/s, beta = {:.6g} s): damping falls below zero at {} frequencies; keep "
+                                 "zeta1 / zeta2 between f1 / f2 and f2 / f1",
+                                 z[0], f[0], z[1], f[1], c.alpha, c.beta, c.alpha < 0.0 ? "low" : "high"));
     d.finish();
     damping.kind = FrfDamping::Kind::rayleigh;
     damping.rayleigh_hz = {f[0], f[1]};

@@ -22,11 +22,14 @@ std::shared_ptr<const contact::SliderDistribution> parse_slider_distribution(Tom
     r.fail("mu", fmt::format("an Iwan element needs a positive slip force mu n0 (the macro-slip force at the preload), "
                              "found mu = {}, n0 = {}",
                              point.mu, point.n0));
+  std::string problem;
   try {
-    return std::make_shared<contact::IwanDistribution>(p);
+    problem = contact::iwan_share_problem(p);
   } catch (const std::invalid_argument& e) {
     r.fail("sliders", e.what());
   }
+  if (!problem.empty()) r.fail("chi", problem);
+  return std::make_shared<contact::IwanDistribution>(p);
 }
 
 }  // namespace bb

@@ -13,7 +13,7 @@
 #include "cases/parse_frf.hpp"
 #include "cases/parse_friction_law.hpp"
 #include "cases/parse_stepped_sine.hpp"
-#include "linalg/dense_eigen.hpp"
+#include "reduction/reduced_model.hpp"
 
 namespace bb {
 namespace {
@@ -369,15 +369,8 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
       if (r.has("modal_damping") || r.has("rayleigh"))
         r.fail("modal_damping", "the model gives its damping matrix: leave out modal_damping and rayleigh");
       s.damping_matrix = parse_square_matrix(m, "damping", m.string_array("dofs").size());
-      if ((*s.damping_matrix - s.damping_matrix->transpose()).cwiseAbs().maxCoeff() >
-          1e-8 * s.damping_matrix->cwiseAbs().maxCoeff())
-        m.fail("damping", "must be symmetric");
-      // Negative damping feeds energy in: no steady forced response exists to balance.
-      const Eigen::VectorXd eig = symmetric_eigen(*s.damping_matrix, false).values;
-      if (eig.size() > 0 && eig.minCoeff() < -1e-12 * std::max(eig.cwiseAbs().maxCoeff(), 1e-300))
-        m.fail("damping",
-               fmt::format("must be positive semi-definite (negative damping); its smallest eigenvalue is {:.6g}",
-                           eig.minCoeff()));
+      if (const std::string problem = damping_matrix_problem(*s.damping_matrix); !problem.empty())
+        m.fail("damping", problem);
     }
     s.model = parse_rom(m, folder);
     if (!s.model.forces.empty() || !s.model.responses.empty())
@@ -387,8 +380,12 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     int i = 0;
     for (const toml::node& n : r.array("contact")) {
       if (!n.is_table()) r.fail("contact", "write each contact as a [[analysis.contact]] table");
-      s.contacts.push_back(
-          parse_contact(TomlReader(*n.as_table(), fmt::format("{}.contact[{}]", r.path(), i++), r.file())));
+      const TomlReader c(*n.as_table(), fmt::format("{}.contact[{}]", r.path(), i++), r.file());
+      s.contacts.push_back(parse_contact(c));
+      // Its name heads its result columns: two of one name would share them.
+      for (size_t k = 0; k + 1 < s.contacts.size(); ++k)
+        if (s.contacts[k].name == s.contacts.back().name)
+          c.fail("name", fmt::format("'{}' is also the name of contact[{}]", s.contacts.back().name, k));
     }
   }
   if (const toml::table* d = r.optional_table("damper"))

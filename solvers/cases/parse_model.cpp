@@ -408,7 +408,18 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
       }
     }
   }
-  for_each_table_in_array(top, "bc", [&](TomlReader r) { spec.constraints.push_back(parse_constraint(std::move(r))); });
+  for_each_table_in_array(top, "bc", [&](TomlReader r) {
+    const ConstraintSpec c = parse_constraint(r);
+    // One direction of a set held at two values: the later would win silently.
+    for (const ConstraintSpec& other : spec.constraints)
+      for (const Direction d : c.constraint.directions)
+        if (other.constraint.set == c.constraint.set && other.constraint.value != c.constraint.value &&
+            std::find(other.constraint.directions.begin(), other.constraint.directions.end(), d) !=
+                other.constraint.directions.end())
+          r.fail("value", fmt::format("set '{}' is held in this direction at {} m already, by the [[bc]] of line {}",
+                                      c.constraint.set, other.constraint.value, other.at.line));
+    spec.constraints.push_back(c);
+  });
   for_each_table_in_array(top, "load", [&](TomlReader r) { parse_load(std::move(r), spec.mesh.dim(), spec); });
   for_each_table_in_array(top, "contact", [&](TomlReader r) { parse_contact_pair(std::move(r), spec); });
   if (!spec.body_loads.empty() && !(spec.section.density > 0))

@@ -29,6 +29,9 @@ RefinementStudySpec parse_refinement_study(TomlReader r, const ModelSpec& model)
   r.choice("kind", {"refinement"});
   for (long level : r.integer_array("levels")) {
     if (level < 1) r.fail("levels", "refinement factors must be >= 1");
+    // A repeated level solves the same mesh twice and fits a convergence order to no refinement.
+    if (!s.levels.empty() && level <= s.levels.back())
+      r.fail("levels", fmt::format("the levels must increase ({} follows {})", level, s.levels.back()));
     s.levels.push_back(static_cast<int>(level));
   }
   if (s.levels.size() < 3) r.fail("levels", "need at least 3 levels to estimate a convergence order");
@@ -126,6 +129,8 @@ ModalRefinementStudySpec parse_modal_study(TomlReader r) {
   r.choice("kind", {"modal_refinement"});
   for (long level : r.integer_array("refinements")) {
     if (level < 1 || level > 16) r.fail("refinements", "levels must lie in 1..16");
+    if (!s.refinements.empty() && level <= s.refinements.back())
+      r.fail("refinements", fmt::format("the levels must increase ({} follows {})", level, s.refinements.back()));
     s.refinements.push_back(static_cast<int>(level));
   }
   if (s.refinements.size() < 2) r.fail("refinements", "need at least 2 levels");

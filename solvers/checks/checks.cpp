@@ -16,10 +16,11 @@ namespace bb {
 
 ReferenceColumn read_reference_column(const std::filesystem::path& file, const std::string& key_column,
                                       const std::string& value_column) {
-  if (!std::filesystem::is_regular_file(file))
+  if (file_problem(file) == "no such file")
     throw InputError(fmt::format("reference file not found: {}", file.string()));
   require_readable_file(file);
   ReferenceColumn out;
+  std::map<long, unsigned> line_of_key;  // a key twice would make two entries of one computed row
   try {
     CsvReader<2> in(file.string());
     in.read_header(io::ignore_extra_column, key_column, value_column);
@@ -31,6 +32,9 @@ ReferenceColumn read_reference_column(const std::filesystem::path& file, const s
       if (kec != std::errc() || kp != key_text.data() + key_text.size())
         throw InputError(
             fmt::format("{}:{}: column '{}': '{}' is not an integer key", file.string(), line, key_column, key_text));
+      if (const auto [it, fresh] = line_of_key.emplace(key, line); !fresh)
+        throw InputError(fmt::format("{}:{}: column '{}': key {} is also the key of line {}; each row needs its own",
+                                     file.string(), line, key_column, key, it->second));
       double value = 0.0;
       auto [vp, vec] = std::from_chars(value_text.data(), value_text.data() + value_text.size(), value);
       if (vec != std::errc() || vp != value_text.data() + value_text.size())
@@ -52,7 +56,7 @@ ReferenceColumn read_reference_column(const std::filesystem::path& file, const s
 std::vector<std::pair<long, std::string>> read_reference_labels(const std::filesystem::path& file,
                                                                 const std::string& key_column,
                                                                 const std::string& label_column) {
-  if (!std::filesystem::is_regular_file(file))
+  if (file_problem(file) == "no such file")
     throw InputError(fmt::format("reference file not found: {}", file.string()));
   require_readable_file(file);
   std::vector<std::pair<long, std::string>> out;
@@ -77,8 +81,8 @@ std::vector<std::pair<long, std::string>> read_reference_labels(const std::files
 void require_check_references(const std::vector<CheckSpec>& checks) {
   for (const CheckSpec& c : checks) {
     try {
-      if (!c.reference_case.empty() && !std::filesystem::is_regular_file(c.reference_case))
-        throw InputError(fmt::format("reference case not found: {}", c.reference_case.string()));
+      if (!c.reference_case.empty() && !file_problem(c.reference_case).empty())
+        throw InputError(fmt::format("reference case {}: {}", c.reference_case.string(), file_problem(c.reference_case)));
       if (c.reference.empty()) continue;
       for (const auto& [result_column, reference_column] : c.compare)
         read_reference_column(c.reference, c.key, reference_column);

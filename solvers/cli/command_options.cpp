@@ -7,6 +7,7 @@
 #include <map>
 
 #include "common/errors.hpp"
+#include "common/input_number.hpp"
 #include "common/user_text.hpp"
 
 namespace bb::cli {
@@ -44,15 +45,28 @@ int guarded(const std::function<int()>& body) {
 }
 
 
+CLI::Validator input_number(bool positive) {
+  // CLI::PositiveNumber lets nan through (nan <= 0 is false), which would switch a bound off.
+  return CLI::Validator(
+      [positive](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v)) return fmt::format("'{}' is not a number", text);
+        if (std::string problem = bb::number_problem(v); !problem.empty()) return problem;
+        if (positive ? !(v > 0.0) : !(v >= 0.0)) return fmt::format("{} must be {}", text, positive ? "> 0" : ">= 0");
+        return {};
+      },
+      positive ? "POSITIVE" : "NONNEGATIVE");
+}
+
 void add_limit_options(CLI::App* app, bb::WorkLimits& limits) {
   app->add_option("--max-work", limits.operations,
                   "Largest estimated floating-point operations of one analysis (default 1e12); a larger input is "
                   "refused before it runs")
-      ->check(CLI::PositiveNumber);
+      ->check(input_number(true));
   app->add_option_function<double>(
          "--max-memory", [&limits](double gb) { limits.bytes = gb * 1e9; },
          "Largest estimated memory of one analysis [GB] (default: three quarters of this machine's)")
-      ->check(CLI::PositiveNumber);
+      ->check(input_number(true));
 }
 
 void append_limit_args(const bb::WorkLimits& limits, std::vector<std::string>& command) {

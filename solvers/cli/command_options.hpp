@@ -18,6 +18,9 @@ void print_outcome(const RunOutcome& o, const std::string& prefix);
 // A subcommand's body: bad input -> exit 2, any other failure -> exit 3, the message on stderr.
 int guarded(const std::function<int()>& body);
 
+// A finite number of the case reader's range (common/input_number.hpp), > 0 or >= 0: the check of
+// every numeric option that bounds work or scales data.
+CLI::Validator input_number(bool positive);
 // --max-work and --max-memory: the bounds every analysis's estimate is held to before it starts.
 void add_limit_options(CLI::App* app, WorkLimits& limits);
 // The same bounds as options of a child `bladebench run`.

@@ -22,6 +22,12 @@ int compare_command(const CompareArgs& a) {
     std::fputs(r.markdown.c_str(), stdout);
   } else {
     const std::filesystem::path page(a.out);
+    // The page (or its HTML twin) inside a report tree could replace a summary it was made from.
+    for (const std::string& tree : {a.old_dir, a.new_dir})
+      if (bb::lies_within(page, tree))
+        throw bb::OutputError(fmt::format("--out {}: lies inside the report tree {}, one of the inputs; write elsewhere",
+                                          bb::printable(a.out), bb::printable(tree)));
+    if (page.extension() == ".md") bb::require_replaceable_file(std::filesystem::path(page).replace_extension(".html"));
     bb::write_file_atomically(page, r.markdown);
     if (page.extension() == ".md") bb::write_html_twin(page);
   }

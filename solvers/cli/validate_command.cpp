@@ -14,6 +14,7 @@
 
 #include "cache/model_cache_settings.hpp"
 #include "cli/command_options.hpp"
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 #include "distributed/distributed.hpp"
@@ -83,9 +84,14 @@ std::string status_verb(bb::RunStatus status) {
 
 int validate_command(const ValidateArgs& a) {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(a.dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".toml" && !in_data_folder(entry.path(), a.dir))
+  for (const auto& entry : fs::recursive_directory_iterator(a.dir)) {
+    if (entry.path().extension() != ".toml" || in_data_folder(entry.path(), a.dir)) continue;
+    // A case file that is a link loop (or a device) is named, not thrown as a filesystem error.
+    if (const std::string why = bb::file_problem(entry.path()); why.empty())
       files.push_back(entry.path());
+    else if (why != "it is a directory")
+      throw bb::InputError(fmt::format("{}: cannot open ({})", bb::printable(entry.path().string()), why));
+  }
   std::sort(files.begin(), files.end());
   if (files.empty()) {
     std::fprintf(stderr, "error: no *.toml case file under %s\n", a.dir.c_str());

@@ -19,16 +19,20 @@ LineSource::LineSource(std::filesystem::path file) : file_(std::move(file)) {
   }
 }
 
-void require_readable_file(const std::filesystem::path& file, bool text) {
+std::string file_problem(const std::filesystem::path& file) {
   std::error_code ec;
   const std::filesystem::file_status st = std::filesystem::status(file, ec);
-  if (ec && ec != std::errc::no_such_file_or_directory)
-    throw InputError(fmt::format("{}: cannot open ({})", file.string(), ec.message()));  // a symlink loop, say
-  if (!std::filesystem::exists(st)) throw InputError(file.string() + ": cannot open (no such file)");
-  if (std::filesystem::is_directory(st)) throw InputError(file.string() + ": cannot open (it is a directory)");
+  if (ec && ec != std::errc::no_such_file_or_directory) return ec.message();  // a symlink loop, say
+  if (!std::filesystem::exists(st)) return "no such file";
+  if (std::filesystem::is_directory(st)) return "it is a directory";
   // A device (/dev/zero), a FIFO or a socket never ends or never is data.
-  if (!std::filesystem::is_regular_file(st))
-    throw InputError(file.string() + ": cannot open (not a regular file: a device, a FIFO or a socket)");
+  if (!std::filesystem::is_regular_file(st)) return "not a regular file: a device, a FIFO or a socket";
+  return {};
+}
+
+void require_readable_file(const std::filesystem::path& file, bool text) {
+  if (const std::string why = file_problem(file); !why.empty())
+    throw InputError(fmt::format("{}: cannot open ({})", file.string(), why));
   if (!text) return;
   // The line readers end a line at a NUL byte: one inside a cell would silently cut its value.
   std::ifstream in(file, std::ios::binary);

@@ -52,6 +52,9 @@ class LineSource {
 // /dev/zero, a FIFO, a dangling link or a link loop) and, when `text`, holds no NUL byte (the line
 // readers would end a cell there silently).
 void require_readable_file(const std::filesystem::path& file, bool text = true);
+// Why `file` is not a regular file that exists ("no such file", "it is a directory", a link loop's
+// "Too many levels of symbolic links", ...); "" when it is one. Never throws.
+std::string file_problem(const std::filesystem::path& file);
 
 // Without leading and trailing blanks (spaces, tabs, \r).
 std::string_view trim(std::string_view text);

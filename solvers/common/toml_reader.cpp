@@ -157,6 +157,9 @@ std::filesystem::path TomlReader::input_file(const std::string& key, const std::
   const std::filesystem::path file = folder / v;
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) fail(key, fmt::format("{} is a folder; name a file", file.string()));
+  // A symbolic-link loop (or a folder on the way that cannot be searched): no reader could open it.
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    fail(key, fmt::format("{}: cannot open ({})", file.string(), ec.message()));
   return file;
 }
 

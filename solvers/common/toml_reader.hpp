@@ -40,8 +40,8 @@ class TomlReader {
   std::string name(const std::string& key);
   std::string label(const std::string& key);
   std::optional<std::string> optional_label(const std::string& key, bool multiline = false);
-  // A file named relative to `folder`; it may be missing (its reader says so), but a folder is an
-  // error naming the key.
+  // A file named relative to `folder`; it may be missing (its reader says so), but a folder or a
+  // path that cannot be resolved (a symbolic-link loop) is an error naming the key.
   std::filesystem::path input_file(const std::string& key, const std::filesystem::path& folder);
   // One of `choices`; the error lists them.
   std::string choice(const std::string& key, const std::vector<std::string>& choices,

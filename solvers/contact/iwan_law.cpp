@@ -43,19 +43,46 @@ double iwan_cycle_energy(const IwanDensity& d, double amplitude) {
          4.0 * d.s * m * (amplitude - m);
 }
 
-IwanDistribution::IwanDistribution(const IwanParameters& p) : p_(p) {
-  // Shares from the density of a unit point (kt = 1, slip force 1): stiffness and slip force of
-  // each interval over the totals, which are 1.
+namespace {
+
+// Shares from the density of a unit point (kt = 1, slip force 1): stiffness and slip force of each
+// interval over the totals, which are 1.
+std::vector<SliderShare> iwan_shares(const IwanParameters& p) {
   const IwanDensity d = iwan_density(p, 1.0, 1.0);
   const int n = p.beta > 0.0 ? p.sliders - 1 : p.sliders;
   const double a = p.chi + 1.0, b = p.chi + 2.0;
+  std::vector<SliderShare> shares;
   for (int j = 0; j < n; ++j) {
     const double lo = d.phi_max * std::pow(static_cast<double>(j) / n, 1.0 / a),
                  hi = d.phi_max * std::pow(static_cast<double>(j + 1) / n, 1.0 / a);
-    shares_.push_back({.stiffness = d.r * (std::pow(hi, a) - std::pow(lo, a)) / a,
-                       .load = d.r * (std::pow(hi, b) - std::pow(lo, b)) / b});
+    shares.push_back({.stiffness = d.r * (std::pow(hi, a) - std::pow(lo, a)) / a,
+                      .load = d.r * (std::pow(hi, b) - std::pow(lo, b)) / b});
   }
-  if (p.beta > 0.0) shares_.push_back({.stiffness = d.s, .load = d.s * d.phi_max});
+  if (p.beta > 0.0) shares.push_back({.stiffness = d.s, .load = d.s * d.phi_max});
+  return shares;
+}
+
+}  // namespace
+
+std::string iwan_share_problem(const IwanParameters& p) {
+  validate(p);
+  const std::vector<SliderShare> shares = iwan_shares(p);
+  for (size_t j = 0; j < shares.size(); ++j)
+    // Near chi = -1 the interval edges phi_max (j/n)^(1/(chi+1)) underflow: a slider of no stiffness.
+    // A tiny slip force is a slider that slips at once; a subnormal or zero one is lost precision.
+    if (!(shares[j].stiffness >= kMinIwanShare && std::isnormal(shares[j].load)))
+      return fmt::format(
+          "chi = {:.17g} with {} sliders gives slider {} a share of the stiffness of {:.3g} (at least {:g} needed) "
+          "and of the slip force of {:.3g} (a normal double needed): too near -1 for double precision; raise chi "
+          "or lower the sliders",
+          p.chi, p.sliders, j + 1, shares[j].stiffness, kMinIwanShare, shares[j].load);
+  return {};
+}
+
+IwanDistribution::IwanDistribution(const IwanParameters& p) : p_(p) {
+  if (const std::string problem = iwan_share_problem(p); !problem.empty())
+    throw std::invalid_argument("Iwan element: " + problem);
+  shares_ = iwan_shares(p);
 }
 
 std::string IwanDistribution::describe() const {

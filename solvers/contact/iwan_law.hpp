@@ -30,6 +30,12 @@ struct IwanParameters {
 
 // Throws std::invalid_argument naming the offending value.
 void validate(const IwanParameters& p);
+// The smallest share of the stiffness a slider may have: 1e-100, the input numbers' rule
+// (common/input_number.hpp), below which a slider's kt underflows in the solvers.
+inline constexpr double kMinIwanShare = 1e-100;
+// Why the sliders of a valid `p` cannot be computed ("" when they can): chi so near -1 that a
+// slider's share underflows (chi = -0.9999999999 with 32 sliders).
+std::string iwan_share_problem(const IwanParameters& p);
 
 // The continuous density for a point of stuck stiffness kt and macro-slip force slip_force (> 0 each).
 struct IwanDensity {
@@ -41,7 +47,7 @@ double iwan_cycle_energy(const IwanDensity& d, double amplitude);
 
 class IwanDistribution final : public SliderDistribution {
  public:
-  explicit IwanDistribution(const IwanParameters& p);  // validates
+  explicit IwanDistribution(const IwanParameters& p);  // validates, and refuses an iwan_share_problem
   std::string describe() const override;
   std::vector<SliderShare> shares() const override { return shares_; }
   // At N0 (slip force mu N0); empty when mu N0 = 0.

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/input_number.hpp"
 
 namespace bb {
 
@@ -107,6 +108,12 @@ void write_synthetic_data(const ResultTable& table, const SyntheticOptions& o, c
     for (Index i = 0; i < n; ++i) v[i] += sigma[i] * gauss(rng);
     if (name == "amplitude" || name == "tangential_force")
       for (Index i : outliers) v[i] *= o.outlier_factor;
+    // An absurd noise (1e308) writes what the data reader refuses: refuse it here, naming the column.
+    for (Index i = 0; i < n; ++i)
+      for (const double x : {v[i], sigma[i]})
+        if (const std::string problem = number_problem(x); !problem.empty())
+          throw InputError(fmt::format("synthetic data: column '{}', row {}: the noise made {:g}: {}; lower the noise",
+                                       name, i + 1, x, problem));
     sigma_columns.push_back(sigma);
     // The loop's sigma column is force_sigma (measured_data.hpp).
     sigma_header.push_back(

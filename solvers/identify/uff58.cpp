@@ -67,7 +67,7 @@ bool is_universal_file(const fs::path& file) {
 }
 
 std::vector<Uff58Function> read_uff58(const fs::path& file) {
-  if (fs::is_directory(file)) throw InputError(fmt::format("{}: is a folder, not a Universal File", file.string()));
+  if (file_problem(file) == "it is a directory") throw InputError(fmt::format("{}: is a folder, not a Universal File", file.string()));
   require_readable_file(file);
   std::ifstream in(file);
   if (!in) throw InputError(fmt::format("{}: cannot open", file.string()));

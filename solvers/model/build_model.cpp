@@ -7,6 +7,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "mesh/boundary.hpp"
 #include "mesh/csv_mesh.hpp"
@@ -20,7 +21,10 @@ namespace {
 namespace fs = std::filesystem;
 
 void require_file(const fs::path& file, const SourceLocation& at) {
-  if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: file not found: {}", at.where(), file.string()));
+  if (const std::string why = file_problem(file); why == "no such file")
+    throw InputError(fmt::format("{}: file not found: {}", at.where(), file.string()));
+  else if (!why.empty())
+    throw InputError(fmt::format("{}: {}: cannot open ({})", at.where(), file.string(), why));
 }
 
 // Merged mesh of the two-blade article and the node sets it defines itself (the names of

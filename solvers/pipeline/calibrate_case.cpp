@@ -254,7 +254,7 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   CaseSpec spec = parse_case_table(table, case_file);
   const std::optional<CalibrationSpec> cal = parse_calibration(table, case_file, spec);
   if (!cal) throw InputError(fmt::format("{}: no [calibration] section", case_file.string()));
-  require_check_references(spec.checks);  // as `run` does: the whole case is valid before any solve
+  require_linked_cases(case_file, spec, cal);  // as `run` does: the whole case is valid before any solve
   const CalibratedCase base = with_parameters(std::move(spec), *cal);
   std::vector<double> start;
   for (const CalibrationParameter& p : cal->parameters) start.push_back(p.start);

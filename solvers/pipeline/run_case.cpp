@@ -237,6 +237,7 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
   outcome.out_dir = options.out_dir.value_or(fs::path("reports") / run.case_name);
   // Everything is written to a temporary sibling of the report folder, moved into place at the end.
   std::optional<StagedFolder> stage;
+  std::vector<fs::path> inputs{case_file};  // what the report folder must not hold (it replaces it whole)
   bool results_written = false;
   try {
     toml::table case_table = read_case_table(case_file);
@@ -249,13 +250,14 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     // A bad [calibration] or data file, or a reference that cannot be read, fails here, before any
     // solve, in `run` as in `calibrate`.
     const std::optional<CalibrationSpec> calibration = parse_calibration(case_table, case_file, spec);
-    require_check_references(spec.checks);
+    require_linked_cases(case_file, spec, calibration);
     run.case_name = spec.name;
     run.title = spec.title;
     run.description = spec.description;
     run.check_specs = spec.checks;
     outcome.out_dir = options.out_dir.value_or(fs::path("reports") / spec.name);
-    stage.emplace(outcome.out_dir);
+    for (const CheckSpec& c : spec.checks) inputs.insert(inputs.end(), {c.reference, c.reference_case});
+    stage.emplace(outcome.out_dir, inputs);
     const HbmProgress progress = terminal_progress();
     std::optional<FidelityChoice> choice;
     if (options.fidelity != FidelityMode::fixed && !spec.fidelity)
@@ -300,7 +302,7 @@ RunOutcome run_case(const fs::path& case_file, const RunOptions& options) {
     drop_results(run);
   }
   try {
-    if (!stage) stage.emplace(outcome.out_dir);
+    if (!stage) stage.emplace(outcome.out_dir, inputs);
     write_report_md(run, stage->path() / "report.md");
     write_html_twin(stage->path() / "report.md");
     write_summary_json(run, stage->path() / "summary.json");

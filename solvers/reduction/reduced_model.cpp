@@ -75,6 +75,16 @@ std::optional<int> ReducedModel::index_of(const std::string& label, int directio
   return std::nullopt;
 }
 
+std::string damping_matrix_problem(const Eigen::MatrixXd& c) {
+  if (c.size() == 0) return {};
+  if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-8 * c.cwiseAbs().maxCoeff()) return "must be symmetric";
+  const Eigen::VectorXd eig = symmetric_eigen(c, false).values;
+  if (eig.minCoeff() < -1e-12 * std::max(eig.cwiseAbs().maxCoeff(), 1e-300))
+    return fmt::format("must be positive semi-definite (negative damping); its smallest eigenvalue is {:.6g}",
+                       eig.minCoeff());
+  return {};
+}
+
 void validate_reduced_model(const ReducedModel& model, const std::string& source) {
   const Eigen::Index n = model.size();
   if (n == 0) throw InputError(fmt::format("{}: the reduced model has no DOFs", source));

@@ -40,4 +40,9 @@ struct ReducedModel {
 // definite or K is indefinite (an eigenvalue below -1e-8 of the largest), or a DOF name repeats.
 void validate_reduced_model(const ReducedModel& model, const std::string& source);
 
+// Why `c` cannot be the damping matrix of a forced response ("" when it can): not symmetric
+// (relative 1e-8 of its largest entry), or not positive semi-definite (negative damping feeds
+// energy in: no steady response balances it).
+std::string damping_matrix_problem(const Eigen::MatrixXd& c);
+
 }  // namespace bb

@@ -188,8 +188,8 @@ Eigen::MatrixXd read_csv_matrix(const fs::path& file, Eigen::Index n) {
 // ---------------------------------------------------------------- sidecar
 
 toml::table parse_sidecar(const fs::path& sidecar) {
-  if (!fs::is_regular_file(sidecar))
-    throw InputError(fmt::format("{}: reduced-model sidecar not found", sidecar.string()));
+  if (const std::string why = file_problem(sidecar); !why.empty())
+    throw InputError(fmt::format("{}: reduced-model sidecar not found ({})", sidecar.string(), why));
   try {
     return toml::parse_file(sidecar.string());
   } catch (const toml::parse_error& e) {
@@ -245,8 +245,10 @@ ReducedModel read_reduced_model(const fs::path& sidecar) {
   const auto n = static_cast<Eigen::Index>(model.dofs.size());
   auto read_matrix = [&](const std::string& key, const std::string& name) {
     const fs::path file = sidecar.parent_path() / name;
-    if (fs::is_directory(file)) r.fail(key, fmt::format("matrix file '{}' is a folder", file.string()));
-    if (!fs::is_regular_file(file)) r.fail(key, fmt::format("matrix file '{}' not found", file.string()));
+    if (const std::string why = file_problem(file); why == "it is a directory")
+      r.fail(key, fmt::format("matrix file '{}' is a folder", file.string()));
+    else if (!why.empty())
+      r.fail(key, fmt::format("matrix file '{}' not found ({})", file.string(), why));
     return format == "csv" ? read_csv_matrix(file, n) : read_matrix_market(file, n);
   };
   model.stiffness = read_matrix("stiffness", k_file);

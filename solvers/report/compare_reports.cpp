@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 #include "report/check_summary.hpp"
@@ -187,10 +188,17 @@ std::vector<CaseSummary> read_report_tree(const fs::path& root) {
     throw InputError(fmt::format("{}: not a folder (compare takes two report folders, e.g. two `validate --out`)",
                                  printable(root.string())));
   std::vector<CaseSummary> runs;
-  if (fs::is_regular_file(root / "summary.json"))
+  // A summary.json that is a link loop or a device is named, not thrown as a filesystem error.
+  const auto summary_in = [](const fs::path& folder) {
+    const std::string why = file_problem(folder / "summary.json");
+    if (!why.empty() && why != "no such file" && why != "it is a directory")
+      throw InputError(fmt::format("{}: cannot open ({})", printable((folder / "summary.json").string()), why));
+    return why.empty();
+  };
+  if (summary_in(root))
     return {read_summary(root / "summary.json", fs::absolute(root).lexically_normal().filename().string())};
   for (const auto& entry : fs::directory_iterator(root))
-    if (entry.is_directory() && fs::is_regular_file(entry.path() / "summary.json"))
+    if (entry.is_directory(ec) && summary_in(entry.path()))
       runs.push_back(read_summary(entry.path() / "summary.json", entry.path().filename().string()));
   if (runs.empty())
     throw InputError(fmt::format("{}: not a report tree: no summary.json in it or in any folder directly under it",

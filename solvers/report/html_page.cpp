@@ -2,6 +2,7 @@
 
 #include <cmark-gfm-core-extensions.h>
 #include <cmark-gfm.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -11,7 +12,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/csv_reader.hpp"
 #include "common/errors.hpp"
+#include "common/user_text.hpp"
 #include "report/output_folder.hpp"
 
 namespace bb {
@@ -76,18 +79,32 @@ std::string rewrite_attribute(const std::string& html, std::string_view attribut
 
 bool is_local(const std::string& target) { return target.find(':') == std::string::npos && !target.starts_with('/'); }
 
-// Local SVG images inlined (a missing one keeps its path) unless `inline_images` is false; links to
-// other Markdown reports sent to their HTML pages.
-std::string rewrite_references(const std::string& html, const fs::path& folder, bool inline_images) {
+// Local SVG images inlined (a missing one keeps its path) unless `inline_images` is false, up to the
+// sizes html_page.hpp states (a larger one stays a link, noted in `notes`); links to other Markdown
+// reports sent to their HTML pages.
+std::string rewrite_references(const std::string& html, const fs::path& folder, bool inline_images,
+                               std::vector<std::string>* notes) {
   const std::string linked = rewrite_attribute(html, "href", [](std::string target) {
     if (is_local(target) && (target.ends_with("report.md") || target.ends_with("index.md")))
       target.replace(target.size() - 3, 3, ".html");
     return target;
   });
   if (!inline_images) return linked;
+  std::uintmax_t inlined = 0;
   return rewrite_attribute(linked, "src", [&](const std::string& target) {
     const fs::path file = folder / target;
-    if (!is_local(target) || !target.ends_with(".svg") || !fs::is_regular_file(file)) return target;
+    if (!is_local(target) || !target.ends_with(".svg") || !file_problem(file).empty()) return target;
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec || size > kMaxInlineSvgBytes || inlined + size > kMaxInlinedBytes) {
+      if (notes)
+        notes->push_back(fmt::format("{}: {:.3g} MB, linked, not inlined (a page inlines SVGs of at most {} MB, {} MB "
+                                     "in all)",
+                                     printable(file.string()), static_cast<double>(size) / 1e6,
+                                     kMaxInlineSvgBytes / 1000000, kMaxInlinedBytes / 1000000));
+      return target;
+    }
+    inlined += size;
     return "data:image/svg+xml;base64," + base64(read_bytes(file));
   });
 }
@@ -178,32 +195,39 @@ std::string markdown_to_html(const std::string& markdown) {
   return html;
 }
 
-std::string html_page(const std::string& markdown, const fs::path& folder, bool inline_images) {
+std::string html_page(const std::string& markdown, const fs::path& folder, bool inline_images,
+                      std::vector<std::string>* notes) {
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>";
   page += escape_html(title_of(markdown));
   page += "</title>\n<style>";
   page += kStyle;
   page += "</style>\n</head>\n<body>\n";
-  page += rewrite_references(markdown_to_html(markdown), folder, inline_images);
+  page += rewrite_references(markdown_to_html(markdown), folder, inline_images, notes);
   page += "</body>\n</html>\n";
   return page;
 }
 
-void write_html_twin(const fs::path& markdown_file) {
+void write_html_twin(const fs::path& markdown_file, std::vector<std::string>* notes) {
   fs::path html_file = markdown_file;
   html_file.replace_extension(".html");
   // The index links its cases' plots as thumbnails: inlined, they would make it the size of all reports.
   const bool inline_images = markdown_file.filename() != "index.md";
-  write_file_atomically(html_file, html_page(read_bytes(markdown_file), markdown_file.parent_path(), inline_images));
+  write_file_atomically(html_file,
+                        html_page(read_bytes(markdown_file), markdown_file.parent_path(), inline_images, notes));
 }
 
-std::vector<fs::path> write_html_twins(const fs::path& folder) {
+std::vector<fs::path> write_html_twins(const fs::path& folder, std::vector<std::string>* notes) {
   std::vector<fs::path> pages;
-  for (const auto& e : fs::recursive_directory_iterator(folder))
-    if (e.is_regular_file() && (e.path().filename() == "report.md" || e.path().filename() == "index.md"))
+  for (const auto& e : fs::recursive_directory_iterator(folder)) {
+    if (e.path().filename() != "report.md" && e.path().filename() != "index.md") continue;
+    // A page that is a link loop or a device is named, not thrown as a filesystem error.
+    if (const std::string why = file_problem(e.path()); why.empty())
       pages.push_back(e.path());
+    else if (why != "it is a directory")
+      throw InputError(fmt::format("{}: cannot open ({})", printable(e.path().string()), why));
+  }
   std::sort(pages.begin(), pages.end());
-  for (const fs::path& md : pages) write_html_twin(md);
+  for (const fs::path& md : pages) write_html_twin(md, notes);
   return pages;
 }
 

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -52,7 +53,8 @@ void ensure_folder(const fs::path& folder, const std::string& what) {
 
 }  // namespace
 
-StagedFolder::StagedFolder(fs::path destination) : destination_(std::move(destination)) {
+StagedFolder::StagedFolder(fs::path destination, const std::vector<fs::path>& inputs)
+    : destination_(std::move(destination)) {
   if (!destination_.has_filename()) destination_ = destination_.parent_path();  // "reports/x/"
   const std::string name = destination_.filename().string();
   const std::string what = "report folder " + shown(destination_);
@@ -71,6 +73,7 @@ StagedFolder::StagedFolder(fs::path destination) : destination_(std::move(destin
         fmt::format("{}: an existing folder that holds no bladebench report (no summary.json or "
                     "report.md); the report would replace it: give a new or empty folder",
                     what));
+  require_outside(destination_, inputs, what);
   fs::path parent = destination_.parent_path();
   if (parent.empty()) parent = ".";
   ensure_folder(parent, what);
@@ -107,29 +110,65 @@ void prepare_output_parent(const fs::path& folder, const std::string& option) {
   ensure_folder(folder, option + " " + shown(folder));
 }
 
-void write_file_atomically(const fs::path& file, const std::string& text) {
+bool lies_within(const fs::path& path, const fs::path& folder) {
+  // Both resolved as far as they exist, so that "a/../b" or a link into the folder is seen.
+  const auto resolved = [](const fs::path& p) {
+    std::error_code ec;
+    fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+    return ec ? fs::absolute(p, ec).lexically_normal() : r;
+  };
+  const fs::path p = resolved(path);
+  fs::path f = resolved(folder);
+  if (!f.has_filename()) f = f.parent_path();  // "folder/"
+  return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
+}
+
+void require_outside(const fs::path& out, const std::vector<fs::path>& inputs, const std::string& what) {
+  for (const fs::path& input : inputs)
+    if (!input.empty() && lies_within(input, out))
+      throw OutputError(fmt::format("{}: would replace {}, an input of this command; write elsewhere", what,
+                                    shown(input)));
+}
+
+void require_replaceable_file(const fs::path& file) {
+  std::error_code ignored;
+  // rename() would put a regular file in place of a device, a FIFO, a link or a folder's entry.
+  if (const fs::file_status st = fs::symlink_status(file, ignored); fs::exists(st) && !fs::is_regular_file(st))
+    throw OutputError(fmt::format("{}: exists and is not a regular file (a folder, a link, a device or a FIFO); "
+                                  "it is not replaced",
+                                  shown(file)));
+}
+
+void replace_file(const fs::path& file, const std::function<void(const fs::path&)>& write) {
+  require_replaceable_file(file);
+  std::error_code ignored;
   fs::path parent = file.parent_path();
   if (parent.empty()) parent = ".";
   std::string temp = (parent / fmt::format(".{}.tmp-XXXXXX", file.filename().string())).string();
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) throw OutputError(fmt::format("{}: cannot write ({})", shown(file), std::strerror(errno)));
   ::close(fd);
-  std::error_code ignored;
   fs::permissions(temp, default_perms(false), ignored);
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) {
-      fs::remove(temp, ignored);
-      throw OutputError(fmt::format("{}: write failed", shown(file)));
-    }
+  try {
+    write(temp);
+  } catch (...) {
+    fs::remove(temp, ignored);
+    throw;
   }
   if (std::rename(temp.c_str(), file.c_str()) != 0) {
     const int error = errno;
     fs::remove(temp, ignored);
     throw OutputError(fmt::format("{}: cannot write ({})", shown(file), std::strerror(error)));
   }
+}
+
+void write_file_atomically(const fs::path& file, const std::string& text) {
+  replace_file(file, [&](const fs::path& temp) {
+    std::ofstream out(temp, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw OutputError(fmt::format("{}: write failed", shown(file)));
+  });
 }
 
 }  // namespace bb

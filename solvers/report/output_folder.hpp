@@ -2,7 +2,9 @@
 // leaves a half-written report that reads as a result.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace bb {
 
@@ -15,9 +17,9 @@ class StagedFolder {
  public:
   // Throws OutputError naming `destination` when it cannot be used: its name is empty, "." or "..";
   // it exists and is not a folder; it is a folder that is neither empty nor a bladebench report
-  // (summary.json or report.md), which commit() would replace; its parent cannot be created or
-  // written in.
-  explicit StagedFolder(std::filesystem::path destination);
+  // (summary.json or report.md), which commit() would replace; it holds one of `inputs` (the files
+  // the command reads); its parent cannot be created or written in.
+  explicit StagedFolder(std::filesystem::path destination, const std::vector<std::filesystem::path>& inputs = {});
   ~StagedFolder();
   StagedFolder(const StagedFolder&) = delete;
   StagedFolder& operator=(const StagedFolder&) = delete;
@@ -38,8 +40,20 @@ class StagedFolder {
 // cannot be created or written in.
 void prepare_output_parent(const std::filesystem::path& folder, const std::string& option);
 
-// Writes `text` to `file` through a temporary sibling renamed over it: a reader sees the old file
-// or the new one, never part of it.
+// Writes `file` through `write`, which fills a temporary sibling that is then renamed over `file`: a
+// reader sees the old file or the new one, never part of it. Throws OutputError naming `file` when
+// it exists and is not a regular file (a device, a FIFO, a link or a folder is never replaced).
+void replace_file(const std::filesystem::path& file, const std::function<void(const std::filesystem::path&)>& write);
+// The check of replace_file alone, for a command that writes only after a long run.
+void require_replaceable_file(const std::filesystem::path& file);
+// replace_file with `text` as the contents.
 void write_file_atomically(const std::filesystem::path& file, const std::string& text);
+
+// Whether `path` is `folder` or lies under it, both resolved as far as they exist.
+bool lies_within(const std::filesystem::path& path, const std::filesystem::path& folder);
+// Throws OutputError starting with `what` when a write to `out` (a file, or a folder replaced whole)
+// would replace one of `inputs`.
+void require_outside(const std::filesystem::path& out, const std::vector<std::filesystem::path>& inputs,
+                     const std::string& what);
 
 }  // namespace bb

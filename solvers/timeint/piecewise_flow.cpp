@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "common/errors.hpp"
 #include "timeint/flow_trace.hpp"
 
 namespace bb::timeint {
@@ -353,6 +354,14 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
   if (log.switched.size() != static_cast<size_t>(nc_)) log.switched.assign(static_cast<size_t>(nc_), 0);
   const Index ns = state_size();
   while (theta_end - s.theta > kPhaseResolution) {
+    // Not a failure of one period that another start could avoid: the model cannot be resolved, so
+    // the whole analysis stops (exit 3) instead of trying every frequency and start at this cost.
+    if (++log.pieces > kMaxPieces)
+      throw SolverError(fmt::format(
+          "shooting at omega = {:.6g} rad/s: more than {} pieces of the exact flow in one period (the cap of "
+          "PiecewiseFlow::kMaxPieces) at phase {:.6g} rad: a stiffness or a force so large that its motion needs "
+          "pieces too short to resolve; lower kt or the force, or use period_map = \"newmark\"",
+          omega_, kMaxPieces, s.theta));
     const Generator& mode = mode_data(s.modes);
     const MatrixXd& a = mode.a;
     const VectorXd z = pack(s);

@@ -71,15 +71,21 @@ class PiecewiseFlow {
   // not null, carries d(q, p, w)/d(start) along (state_size() rows). With `extremes` (one entry per
   // `watch` DOF), each entry becomes the largest of itself and |q_d| over the interval, the extremes
   // of q_d located where dq_d/dtheta changes sign. A failure (more than max_events transitions,
-  // counted in `events` across calls) leaves the state where it stopped.
+  // counted in `events` across calls) leaves the state where it stopped; more than kMaxPieces pieces
+  // (counted in `pieces`) throws SolverError naming the cap.
   struct Advance {
     int events = 0;
+    long pieces = 0;
     std::vector<char> switched;  // per contact: some transition passed
     std::string failure;
   };
   // With `fourier` (one row per `watch` DOF, 2 H + 1 columns), the integrals of q_d, q_d cos(h theta)
   // and q_d sin(h theta) over the interval are added to columns 0, 2 h - 1 and 2 h: in closed form
   // on each piece by the modes of its generator, else by 8-point Gauss-Legendre on the piece.
+  // The pieces one Advance log may take: a stiffness or a force so large (kt = 1e90) that the flow
+  // resolves its motion in pieces of 1e-40 rad would otherwise run until killed. The shipped cases
+  // take at most a few thousand per period.
+  static constexpr long kMaxPieces = 1L << 20;
   void advance(FlowState& s, double theta_end, Eigen::MatrixXd* jacobian, int max_events, Advance& log,
                const std::vector<Eigen::Index>& watch = {}, Eigen::VectorXd* extremes = nullptr,
                Eigen::MatrixXd* fourier = nullptr) const;

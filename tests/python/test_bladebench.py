@@ -113,6 +113,27 @@ def test_an_array_of_the_wrong_dtype_or_shape_is_refused_with_the_shape_expected
                              [{"tangential": np.array([1.0]), "k_t": 1.0, "mu": 0.1, "n0": 1.0}])
 
 
+def test_a_model_is_held_to_what_the_case_reader_requires():
+    """A zero, indefinite or asymmetric mass, negative damping, a contact value that is not a number:
+    each refused as the case reader refuses it (issue 70: "converged" curves, or pybind11's cast error)."""
+    def sweep(mass=np.eye(1), damping=np.zeros((1, 1)), kt=1.0e6, stiffness=None, n=1):
+        return bladebench.hbm_sweep(mass, np.eye(n) * 1.0e6 if stiffness is None else stiffness, damping,
+                                    np.ones(n, dtype=complex), np.array([150.0]),
+                                    [{"tangential": np.eye(n)[0], "kt": kt, "mu": 0.3, "n0": 30.0}])
+    with pytest.raises(bladebench.InputError, match=r"hbm_sweep: M is not positive definite"):
+        sweep(mass=np.zeros((1, 1)))
+    with pytest.raises(bladebench.InputError, match=r"hbm_sweep: M is not positive definite"):
+        sweep(mass=-np.eye(1))
+    with pytest.raises(bladebench.InputError, match=r"hbm_sweep: M is not symmetric"):
+        sweep(mass=np.array([[1.0, 0.5], [0.0, 1.0]]), damping=np.zeros((2, 2)), n=2)
+    with pytest.raises(bladebench.InputError, match=r"damping: must be positive semi-definite"):
+        sweep(damping=-np.eye(1))
+    with pytest.raises(bladebench.InputError, match=r"contacts\[0\]: 'kt': expected a number, found str"):
+        sweep(kt="stiff")
+    with pytest.raises(bladebench.InputError, match=r"contacts\[0\]: 'kt': 1e\+300 is out of range"):
+        sweep(kt=1e300)
+
+
 def test_errors_carry_the_command_lines_exit_classes_and_messages():
     assert issubclass(bladebench.InputError, ValueError) and bladebench.InputError.exit_code == 2
     assert issubclass(bladebench.SolverError, RuntimeError) and bladebench.SolverError.exit_code == 3
@@ -122,6 +143,9 @@ def test_errors_carry_the_command_lines_exit_classes_and_messages():
         bladebench.run_case(str(bad))
     with pytest.raises(bladebench.InputError, match="unknown.key"):
         bladebench.run_case(CANTILEVER, settings=["unknown.key=1"])
+    # A setting is one TOML value: more keys after a newline were dropped silently.
+    with pytest.raises(bladebench.InputError, match="more than one TOML value"):
+        bladebench.run_case(CANTILEVER, settings=["material.E=4.0e11\nmaterial.nu = 0.1"])
     # A contact law the harmonic balance refuses (negative stiffness) is bad input, not a crash.
     with pytest.raises(bladebench.InputError, match="kt"):
         oscillator(mu=0.3, force=1.0, frequencies=[150.0], kt=-1.0)

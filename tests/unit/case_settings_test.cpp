@@ -49,6 +49,23 @@ TEST(CaseSettings, RefusesMalformedSettingsByName) {
   }
 }
 
+// A value followed by more TOML (keys, a table) was parsed as a document and the rest dropped.
+TEST(CaseSettings, RefusesAValueThatIsMoreThanOneTomlValue) {
+  for (const std::string bad : {"analysis.harmonics=13\nother = 2", "analysis.harmonics=13\n[model]\nmodes = 1",
+                                "analysis.levels=[5.0]\r\nx.y = 1"}) {
+    toml::table t = case_table();
+    try {
+      apply_settings(t, {bad});
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("more than one TOML value"), std::string::npos) << e.what();
+    }
+  }
+  toml::table t = case_table();
+  apply_settings(t, {"analysis.harmonics=13 # a comment\n"});  // one value, then nothing
+  EXPECT_EQ(t["analysis"]["harmonics"].value<int64_t>(), 13);
+}
+
 TEST(CaseSettings, RemovesKeysAndTablesThatExist) {
   toml::table t = case_table();
   apply_settings(t, {}, {"analysis.damper", "analysis.time_samples"});

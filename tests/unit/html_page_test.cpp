@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "report/html_page.hpp"
 #include "temp_folder.hpp"
@@ -45,6 +47,24 @@ TEST_F(HtmlPage, InlinesLocalPlotsAndKeepsMissingOnesVisible) {
   EXPECT_NE(page.find("<title>Case</title>"), std::string::npos);
   EXPECT_NE(page.find("src=\"data:image/svg+xml;base64," + base64(svg) + "\""), std::string::npos) << page;
   EXPECT_NE(page.find("src=\"plots/gone.svg\""), std::string::npos) << page;
+}
+
+// A huge plot was inlined whole (issue 70: std::bad_alloc, exit 3): above the stated size it stays a
+// link, and the note names it.
+TEST_F(HtmlPage, LinksAnSvgAboveTheInlineSizeAndNamesIt) {
+  std::filesystem::create_directories(dir_ / "plots");
+  const std::string small = "<svg xmlns=\"http://www.w3.org/2000/svg\"/>";
+  write(small, "plots/small.svg");
+  write("<svg xmlns=\"http://www.w3.org/2000/svg\">" + std::string(kMaxInlineSvgBytes, ' ') + "</svg>",
+        "plots/huge.svg");
+  std::vector<std::string> notes;
+  const std::string page = html_page("![huge](plots/huge.svg)\n\n![small](plots/small.svg)\n", dir_, true, &notes);
+  EXPECT_NE(page.find("src=\"plots/huge.svg\""), std::string::npos);
+  EXPECT_NE(page.find("src=\"data:image/svg+xml;base64," + base64(small) + "\""), std::string::npos);
+  EXPECT_LT(page.size(), 100000u);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("huge.svg"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].find("linked, not inlined"), std::string::npos) << notes[0];
 }
 
 TEST_F(HtmlPage, LinksToReportsPointAtTheirHtmlPages) {

@@ -9,6 +9,7 @@
 #include <complex>
 
 #include "common/constants.hpp"
+#include "common/errors.hpp"
 #include "friction_oscillator.hpp"
 #include "timeint/piecewise_flow.hpp"
 
@@ -75,6 +76,19 @@ TEST(Shooting, ConstantNormalLoadWithoutNormalStiffnessNeedsNoOpeningTransition)
   ASSERT_TRUE(a.steady.converged) << a.steady.failure;
   ASSERT_TRUE(b.steady.converged) << b.steady.failure;
   EXPECT_NEAR(b.largest[0], a.largest[0], 1e-9 * a.largest[0]);
+}
+
+// A contact so stiff (kt = 1e90, inside the case reader's range) that its motion needs pieces far
+// shorter than a step ran until killed (issue 70): the pieces of a period are capped, and the cap,
+// named, stops the shooting as a solver failure.
+TEST(Shooting, StopsAtThePieceCapForAContactTooStiffToResolve) {
+  const test::FrictionOscillator o = coulomb(3.0, 1e90);
+  try {
+    const timeint::ShootingResult s = timeint::shooting(o.model(), 2 * kPi * 300.0, options());
+    ADD_FAILURE() << "kt = 1e90 was shot without reaching the cap: " << s.steady.failure;
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("PiecewiseFlow::kMaxPieces"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Shooting, StuckContactIsTheLinearSpringExactly) {

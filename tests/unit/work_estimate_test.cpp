@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "common/errors.hpp"
+#include "contact/iwan_law.hpp"
 
 namespace bb {
 namespace {
@@ -36,6 +38,18 @@ TEST(WorkEstimate, HarmonicBalanceScalesWithFrequenciesLevelsSamplesAndHarmonics
   // The AFT Jacobian dominates a one-contact model: linear in the samples, (2H + 1)^2 in H.
   EXPECT_NEAR(estimate_work(oscillator_sweep(1.0, 3, 4096), none).operations / base, 4.0, 0.01);
   EXPECT_NEAR(estimate_work(oscillator_sweep(1.0, 7, 1024), none).operations / base, 225.0 / 49.0, 0.01);
+}
+
+// An Iwan joint is as many Jenkins sliders as its distribution holds, each an AFT of its own: it
+// counted as one contact (issue 70: 10 000 sliders ran for minutes, 50 harmonics past 4.6 GB).
+TEST(WorkEstimate, AnIwanJointCountsEverySlider) {
+  const Model none;
+  const HbmSpec jenkins = oscillator_sweep(1.0, 3, 1024);
+  HbmSpec iwan = jenkins;
+  iwan.contacts[0].distribution = std::make_shared<contact::IwanDistribution>(contact::IwanParameters{.sliders = 1000});
+  const WorkEstimate one = estimate_work(jenkins, none), many = estimate_work(iwan, none);
+  EXPECT_NEAR(many.operations / one.operations, 1000.0, 10.0);
+  EXPECT_GT(many.bytes, 100.0 * one.bytes);  // the DFT rows of each slider
 }
 
 TEST(WorkEstimate, ARefusalNamesTheKeyTheEstimateAndTheBound) {

@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
 #include "common/errors.hpp"
 #include "common/parallel_indices.hpp"
 
@@ -19,6 +24,51 @@ std::vector<Out> run_stepped(const std::vector<Spec>& specs, int threads, const 
       throw SolverError(fmt::format("{} '{}' converged at no frequency; at {:.6g} Hz: {}", what, s.name,
                                     s.failed_hz.front(), s.failures.front()));
   return out;
+}
+
+// frf_<name> from its converged rows (point first, 1-based) and its failed points, each a row of
+// NaN where the solution would be, in the order stepped, with the reasons as a text column
+// "failure" when any failed: a frequency without a solution stays in the table, and a fit cannot
+// interpolate over it (issue 68). `force`: the spec's force per point, empty when unknown.
+ResultTable stepped_table(const std::string& name, const std::vector<std::string>& cols,
+                          std::vector<std::vector<double>> rows, const std::vector<double>& spec_hz,
+                          const std::vector<double>& force, const std::vector<double>& failed_hz,
+                          const std::vector<std::string>& failures) {
+  std::vector<std::string> reasons(rows.size());
+  std::vector<bool> used(spec_hz.size(), false);
+  for (const std::vector<double>& r : rows)
+    if (const auto i = static_cast<size_t>(r[0]) - 1; i < used.size()) used[i] = true;
+  for (size_t j = 0; j < failed_hz.size(); ++j) {
+    size_t i = 0;
+    while (i < spec_hz.size() && (used[i] || spec_hz[i] != failed_hz[j])) ++i;
+    if (i == spec_hz.size()) continue;  // not a point of the spec: nothing to place
+    used[i] = true;
+    std::vector<double> row(cols.size(), NAN);
+    row[0] = static_cast<double>(i + 1);
+    row[1] = spec_hz[i];
+    if (!force.empty()) row[2] = force[i];
+    rows.push_back(std::move(row));
+    reasons.push_back(failures[j]);
+  }
+  std::vector<size_t> order(rows.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return rows[a][0] < rows[b][0]; });
+  std::vector<std::vector<double>> sorted;
+  std::vector<std::string> sorted_reasons;
+  for (size_t k : order) {
+    sorted.push_back(std::move(rows[k]));
+    sorted_reasons.push_back(std::move(reasons[k]));
+  }
+  ResultTable t = table_from_rows(name, cols, sorted);
+  if (!failed_hz.empty()) t.add_text_column("failure", std::move(sorted_reasons));
+  return t;
+}
+
+template <class Spec>
+const Spec* named(const std::vector<Spec>& specs, const std::string& name) {
+  for (const Spec& s : specs)
+    if (s.name == name) return &s;
+  return nullptr;
 }
 
 }  // namespace
@@ -51,7 +101,9 @@ void add_stepped_sine_tables(const PreparedHbm& p, const HbmSpec& spec, const st
       rows.push_back(std::move(values));
     }
     const std::string name = "frf_" + s.name;
-    tables.emplace(name, table_from_rows(name, cols, rows));
+    const SteppedSineSpec* sine = named(spec.stepped_sines, s.name);
+    tables.emplace(name, stepped_table(name, cols, std::move(rows), sine ? sine->frequency_hz : std::vector<double>{},
+                                       sine ? sine->force : std::vector<double>{}, s.failed_hz, s.failures));
     const size_t points = s.frequency_hz.size() + s.failed_hz.size();
     cost_rows.push_back({static_cast<double>(k + 1), static_cast<double>(points),
                          static_cast<double>(s.failed_hz.size()), static_cast<double>(s.total_iterations),
@@ -92,7 +144,7 @@ void add_response_control_tables(const PreparedHbm& p, const HbmSpec& spec, cons
       rows.push_back(std::move(values));
     }
     const std::string name = "frf_" + s.name;
-    tables.emplace(name, table_from_rows(name, cols, rows));
+    tables.emplace(name, stepped_table(name, cols, std::move(rows), c.frequency_hz, {}, s.failed_hz, s.failures));
     summary.push_back({static_cast<double>(k + 1), c.amplitude, static_cast<double>(c.derivative), s.min_force,
                        s.min_frequency_hz, s.min_phase_deg, s.min_interior ? 1.0 : 0.0,
                        static_cast<double>(s.frequency_hz.size() + s.failed_hz.size()),

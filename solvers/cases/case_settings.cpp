@@ -53,6 +53,18 @@ std::pair<toml::table*, std::string> holder(toml::table& root, const std::string
   toml::table* table = &root;
   for (size_t i = 0; i + 1 < parts.size(); ++i) {
     toml::node* next = table->get(parts[i]);
+    // An array of tables ([[analysis.contact]]) is entered by index: analysis.contact.0.mu.
+    if (toml::array* array = next ? next->as_array() : nullptr; array && array->is_array_of_tables()) {
+      const std::string name = fmt::format("{}", fmt::join(parts.begin(), parts.begin() + i + 1, "."));
+      if (i + 2 >= parts.size())
+        fail(option, setting,
+             fmt::format("[[{}]] is an array of tables: name an element's key, {}.0.<key>", name, name));
+      const std::string& index = parts[++i];
+      if (index.find_first_not_of("0123456789") != std::string::npos || index.size() > 6 ||
+          std::stoul(index) >= array->size())
+        fail(option, setting, fmt::format("'{}' is not an index of [[{}]] (0 to {})", index, name, array->size() - 1));
+      next = array->get(std::stoul(index));
+    }  // (an empty array is no array of tables)
     if (!next || !next->is_table())
       fail(option, setting,
            fmt::format("the case has no table [{}]", fmt::join(parts.begin(), parts.begin() + i + 1, ".")));

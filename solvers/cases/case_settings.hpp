@@ -11,7 +11,8 @@ namespace bb {
 
 // Each "dotted.key=VALUE" (VALUE in TOML syntax: 13, 1e-3, "events", [1, 2]) replaces or adds the
 // key in `root`; each "dotted.key" of `removals` (`run --unset`) removes a key or a whole table
-// that must exist. Every table on the way must exist and be a table. Throws InputError naming the
+// that must exist. Every table on the way must exist; an array of tables is entered by index
+// (analysis.contact.0.mu). Throws InputError naming the
 // setting. The values carry no source line: messages about them name the case file alone.
 void apply_settings(toml::table& root, const std::vector<std::string>& settings,
                     const std::vector<std::string>& removals = {});

@@ -434,7 +434,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   std::set<std::string> table_names;  // the levels' tables, then each stepped sine's
   for (double f : s.force_levels) table_names.insert(hbm_frf_table_name(f));
   s.stepped_sines = parse_stepped_sines(r, folder, table_names);
-  s.response_controls = parse_response_controls(r, s.responses, table_names);
+  s.response_controls = parse_response_controls(r, s.responses, folder, table_names);
   for (const char* key : {"stepped_sine", "response_control"})
     if (r.has(key) && (s.cyclic || s.gap_damper))
       r.fail(key, "a stepped sine runs on a lumped or reduced model without [analysis.cyclic]");

@@ -8,6 +8,7 @@
 
 #include "cases/parse_frf.hpp"
 #include "cases/read_measured_file.hpp"
+#include "common/constants.hpp"
 #include "common/stepped_order.hpp"
 #include "forced/hbm_level.hpp"
 #include "identify/measured_data.hpp"
@@ -91,7 +92,60 @@ SteppedSineSpec parse_one(TomlReader& r, const toml::table& t, const std::filesy
   return s;
 }
 
-ResponseControlSpec parse_control(TomlReader& r, const std::vector<PointDof>& responses) {
+const char* const kHeld[] = {"displacement", "velocity", "acceleration"};
+const char* const kHeldUnit[] = {"m", "m/s", "m/s^2"};
+
+// The curve of a response control read from a measured frf file: its frequencies as stepped, its
+// level the median of its amplitude column in the column's own quantity (displacement, velocity
+// or acceleration: the file's unit says which), every point within level_tolerance of it (a rig
+// holds one level per curve); a held amplitude also given in the case must be that level.
+void control_from_file(TomlReader& r, const std::filesystem::path& folder, ResponseControlSpec& s) {
+  if (r.has("frequency_hz"))
+    r.fail("frequency_hz", "give either file (a measured response-controlled curve) or frequency_hz");
+  const std::filesystem::path file = r.input_file("file", folder);
+  const MeasuredData data = read_measured_file(r, file, DataKind::frf).data;
+  const double tolerance = r.has("level_tolerance") ? r.positive("level_tolerance") : 0.05;
+  if (!(tolerance < 1.0)) r.fail("level_tolerance", fmt::format("must lie in (0, 1), found {}", tolerance));
+  const int k = data.derivative;
+  const Eigen::VectorXd& f = data.column("frequency");
+  std::vector<double> level(static_cast<size_t>(f.size()));
+  for (Eigen::Index i = 0; i < f.size(); ++i)  // back to the quantity the rig held (the reader made it a displacement)
+    level[static_cast<size_t>(i)] = data.column("amplitude")[i] * std::pow(kTwoPi * f[i], k);
+  std::vector<double> sorted = level;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  size_t worst = 0;
+  for (size_t i = 0; i < level.size(); ++i)
+    if (std::abs(level[i] / median - 1.0) > std::abs(level[worst] / median - 1.0)) worst = i;
+  if (std::abs(level[worst] / median - 1.0) > tolerance)
+    r.fail("file", fmt::format("{}: amplitude {:.6g} {} lies {:+.1f} % from the curve's level {:.6g} {} (the median "
+                               "of its amplitude column), beyond level_tolerance = {:g}: a response-controlled curve "
+                               "holds one level",
+                               data.where(static_cast<Eigen::Index>(worst)), level[worst], kHeldUnit[k],
+                               100.0 * (level[worst] / median - 1.0), median, kHeldUnit[k], tolerance));
+  for (int q = 0; q < 3; ++q) {
+    if (!r.has(kHeld[q])) continue;
+    if (q != k)
+      r.fail(kHeld[q], fmt::format("{} holds its amplitude as a {} ({}): give that, or no held amplitude (the "
+                                   "file's median is the level)",
+                                   file.string(), kHeld[k], data.units.at("amplitude").symbol));
+    const double given = r.positive(kHeld[q]);
+    if (std::abs(given / median - 1.0) > tolerance)
+      r.fail(kHeld[q], fmt::format("{:g} {} but {} holds its amplitude at {:.6g} {} (the median of its amplitude "
+                                   "column), beyond level_tolerance = {:g}",
+                                   given, kHeldUnit[k], file.string(), median, kHeldUnit[k], tolerance));
+  }
+  s.derivative = k;
+  s.amplitude = median;
+  s.frequency_hz.assign(f.data(), f.data() + f.size());
+  s.file = file.string();
+  const auto [lo, hi] = std::minmax_element(level.begin(), level.end());
+  s.spread_low = *lo / median - 1.0;
+  s.spread_high = *hi / median - 1.0;
+}
+
+ResponseControlSpec parse_control(TomlReader& r, const std::vector<PointDof>& responses,
+                                  const std::filesystem::path& folder) {
   ResponseControlSpec s;
   s.at = r.location();
   s.name = r.string("name");
@@ -104,7 +158,12 @@ ResponseControlSpec parse_control(TomlReader& r, const std::vector<PointDof>& re
     r.fail("dof",
            fmt::format("'{}' must be one of analysis.responses (the held response is written with them)", dof.name()));
   s.response = static_cast<size_t>(held - responses.begin());
-  const char* kinds[] = {"displacement", "velocity", "acceleration"};
+  if (r.has("file")) {
+    control_from_file(r, folder, s);
+    return s;
+  }
+  if (r.has("level_tolerance")) r.fail("level_tolerance", "applies only with file (the level read from the data)");
+  const char* const* kinds = kHeld;
   int given = 0;
   for (int k = 0; k < 3; ++k)
     if (r.has(kinds[k])) ++given, s.derivative = k;
@@ -140,10 +199,11 @@ std::vector<Spec> parse_blocks(TomlReader& r, const std::string& key, const char
 }  // namespace
 
 std::vector<ResponseControlSpec> parse_response_controls(TomlReader& r, const std::vector<PointDof>& responses,
+                                                         const std::filesystem::path& folder,
                                                          std::set<std::string>& tables) {
   return parse_blocks<ResponseControlSpec>(
       r, "response_control", "response control", tables,
-      [&](TomlReader& s, const toml::table&) { return parse_control(s, responses); });
+      [&](TomlReader& s, const toml::table&) { return parse_control(s, responses, folder); });
 }
 
 std::vector<SteppedSineSpec> parse_stepped_sines(TomlReader& r, const std::filesystem::path& folder,

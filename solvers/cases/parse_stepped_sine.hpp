@@ -21,8 +21,12 @@ std::vector<SteppedSineSpec> parse_stepped_sines(TomlReader& r, const std::files
 
 // Reads every [[analysis.response_control]]: name, dof (one of `responses`), exactly one of
 // displacement [m], velocity [m/s] or acceleration [m/s^2] (> 0), frequency_hz (a list, or
-// [first, last] with step_hz). Same refusals for names and frequencies.
+// [first, last] with step_hz). Same refusals for names and frequencies. Or `file` (relative to
+// `folder`), a measured response-controlled curve: its frequencies, and its level the median of
+// its amplitude column, refused when a point lies beyond `level_tolerance` (default 0.05) of it
+// or a held amplitude also given is another quantity or another level.
 std::vector<ResponseControlSpec> parse_response_controls(TomlReader& r, const std::vector<PointDof>& responses,
+                                                         const std::filesystem::path& folder,
                                                          std::set<std::string>& tables);
 
 }  // namespace bb

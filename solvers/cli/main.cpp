@@ -111,6 +111,7 @@ struct CalibrateArgs {
   bool no_plots = false;
   bb::WorkLimits limits;  // of each evaluation of the model
   std::optional<bb::ModelCacheSettings> cache;
+  bb::CalibrationStartEdits edits;  // --set, --restart-from
 };
 
 int calibrate_command(const CalibrateArgs& a) {
@@ -141,7 +142,8 @@ int calibrate_command(const CalibrateArgs& a) {
                      s.start, s.starts, s.iteration, s.max_iterations, s.cost, s.gradient_max_norm,
                      s.accepted ? "accepted" : "rejected", clock->bound().c_str());
       };
-    const bb::CalibrationOutcome o = bb::calibrate_case(a.case_file, progress, a.limits, bb::cache_or_none(a.cache));
+    const bb::CalibrationOutcome o =
+        bb::calibrate_case(a.case_file, progress, a.limits, bb::cache_or_none(a.cache), a.edits);
     if (last_start != 0) std::fputc('\n', stderr);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bb::write_calibration_outputs(o, a.case_file, wall, stage.path(), !a.no_plots);
@@ -355,6 +357,12 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   calibrate->add_option("--out", calibrate_args.out, "Output folder (default reports/<case-name>-calibration)");
   calibrate->add_flag("--no-plots", calibrate_args.no_plots, "Skip gnuplot figures");
+  calibrate->add_option("--set", calibrate_args.edits.settings,
+                        "dotted.key=VALUE (TOML value) replacing the case file's setting, as run --set (a calibration "
+                        "parameter's: its start); repeatable");
+  calibrate->add_option("--restart-from", calibrate_args.edits.restart_from,
+                        "calibrated.toml or restart.toml of an earlier fit: every parameter starts from its value "
+                        "there (after --set)");
   add_limit_options(calibrate, calibrate_args.limits);
   add_cache_options(calibrate, cache_args);
 

@@ -151,6 +151,10 @@ struct ResponseControlSpec {
   int derivative = 0;                // 0 displacement, 1 velocity, 2 acceleration
   std::vector<double> frequency_hz;  // strictly increasing or strictly decreasing
   SourceLocation at;
+  // Read from a measured curve (`file`): the level is the median of its amplitude column, whose
+  // smallest and largest values lie at spread_low, spread_high relative to it; file empty otherwise.
+  std::string file;
+  double spread_low = 0.0, spread_high = 0.0;
 };
 
 struct HbmSpec {

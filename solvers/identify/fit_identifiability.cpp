@@ -115,9 +115,20 @@ void profile_weakest_direction(ceres::Problem& problem, std::vector<double>& x, 
     out.weakest_profile.push_back(pt);
   }
   x = optimum;
-  double flattest = INFINITY;
-  for (const auto& pt : out.weakest_profile)
-    if (std::abs(pt.t) == 2.0 && std::isfinite(pt.rise)) flattest = std::min(flattest, pt.rise / pt.predicted);
+  double flattest = INFINITY, steepest = 0.0, steepest_t = 0.0;
+  for (const auto& pt : out.weakest_profile) {
+    if (!std::isfinite(pt.rise)) continue;
+    if (std::abs(pt.t) == 2.0) flattest = std::min(flattest, pt.rise / pt.predicted);
+    if (pt.rise / pt.predicted > steepest) steepest = pt.rise / pt.predicted, steepest_t = pt.t;
+  }
+  // Far steeper than the quadratic (200-2500x seen on a rig's joint, issue 68): the Jacobian at the
+  // optimum does not describe the cost a standard deviation away, in either sense.
+  if (steepest > 10.0)
+    out.warnings.push_back(fmt::format(
+        "along the weakest direction the cost rises {:.3g} times what the covariance predicts at {:+g} standard "
+        "deviations: the cost is far from quadratic there, so the standard deviations are not to be trusted along it "
+        "(report: weakest direction)",
+        steepest, steepest_t));
   if (flattest < 0.25)
     out.warnings.push_back(fmt::format(
         "along the weakest direction the cost rises by only {:.2g} of what the covariance predicts at 2 standard "

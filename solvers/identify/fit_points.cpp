@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 
 namespace bb {
@@ -93,7 +94,10 @@ double interpolate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double xq
   const auto* hi = std::upper_bound(x.data(), x.data() + x.size(), xq);
   const Index j = std::clamp<Index>(hi - x.data(), 1, x.size() - 1);
   const double s = (xq - x[j - 1]) / (x[j] - x[j - 1]);
-  return y[j - 1] + s * (y[j] - y[j - 1]);
+  const double v = y[j - 1] + s * (y[j] - y[j - 1]);
+  // On a row, its value: a neighbour without a solution (NaN) does not spoil it.
+  if (std::isnan(v) && (s == 0.0 || s == 1.0)) return s == 0.0 ? y[j - 1] : y[j];
+  return v;
 }
 
 // The log-sensitivity columns of result column `q` in SI, one per parameter; empty unless all exist.
@@ -149,6 +153,34 @@ void require_same_forces(const CalibrationData& d, const ResultTable& t, const E
                     d.at.where(), d.name, d.table, m.file.string()));
 }
 
+// Data of a response-controlled curve against a table that holds another level (a 20 m/s^2
+// curve mapped onto the 5 m/s^2 table): the medians of the measured and the held amplitude, in
+// the quantity the file holds, more than 10 % apart. `f` and `held` in increasing frequency.
+void require_held_level(const CalibrationData& d, const Eigen::VectorXd& f, const Eigen::VectorXd& held) {
+  const MeasuredData& m = d.data;
+  std::vector<double> measured, computed;
+  for (Index i = 0; i < m.rows(); ++i) {
+    const double fq = m.column("frequency")[i];
+    if (f.size() < 2 || fq < f[0] || fq > f[f.size() - 1]) continue;  // the range is checked per point
+    const double h = interpolate(f, held, fq), w = std::pow(kTwoPi * fq, m.derivative);
+    if (!std::isfinite(h)) continue;  // a point without a solution
+    measured.push_back(m.column("amplitude")[i] * w);
+    computed.push_back(h * w);
+  }
+  if (measured.empty()) return;
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double a = median(measured), b = median(computed);
+  const char* const unit[] = {"m", "m/s", "m/s^2"};
+  if (std::abs(a / b - 1.0) > 0.1)
+    throw InputError(fmt::format(
+        "{}: calibration data '{}': {} was held at {:.4g} {} (the median of its amplitude column) but table '{}' "
+        "holds {:.4g} {}: map the table of the response control at the data's level",
+        d.at.where(), d.name, m.file.string(), a, unit[m.derivative], d.table, b, unit[m.derivative]));
+}
+
 std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
                                  const std::vector<std::string>& parameters) {
   const MeasuredData& m = d.data;
@@ -166,6 +198,7 @@ std::vector<FitPoint> frf_points(const CalibrationData& d, const ResultTable& t,
     return out;
   };
   const Eigen::VectorXd f = sorted(written);
+  if (force_measured && m.has("amplitude")) require_held_level(d, f, sorted(t.values.col(*t.column_index("held_m"))));
   // The fitted columns and their sensitivities, read once for all rows.
   struct Fitted {
     Eigen::VectorXd y;
@@ -339,6 +372,33 @@ std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& 
     if (const auto c = d.columns.find(p.quantity); c != d.columns.end()) p.unit = shown_unit(c->second);
   }
   return points;
+}
+
+void require_solved_points(const std::vector<FitPoint>& points, const CalibrationSpec& cal,
+                           const ResultTables& tables) {
+  for (const FitPoint& p : points) {
+    if (p.held_out || std::isfinite(p.computed)) continue;
+    for (const CalibrationData& d : cal.data) {
+      const auto t = d.name == p.set && d.data.kind == DataKind::frf ? tables.find(d.table) : tables.end();
+      if (t == tables.end()) continue;
+      const ResultTable& table = t->second;
+      const auto failure = std::find(table.text_columns.begin(), table.text_columns.end(), "failure");
+      const auto hz = table.column_index("frequency_hz");
+      if (failure == table.text_columns.end() || !hz) continue;
+      const std::vector<std::string>& why = table.text[static_cast<size_t>(failure - table.text_columns.begin())];
+      Index nearest = -1;  // the failed row next to the point
+      for (Index r = 0; r < table.values.rows(); ++r)
+        if (!why[static_cast<size_t>(r)].empty() &&
+            (nearest < 0 || std::abs(table.values(r, *hz) - p.x) < std::abs(table.values(nearest, *hz) - p.x)))
+          nearest = r;
+      if (nearest < 0) continue;
+      throw SolverError(fmt::format(
+          "{}: calibration data '{}': at the start values the model has no solution at {:.6g} Hz of table '{}', "
+          "next to the measured {} ({}); a fit cannot start there: change the start (calibrate --set) or the "
+          "solver's settings",
+          d.at.where(), d.name, table.values(nearest, *hz), d.table, p.label, why[static_cast<size_t>(nearest)]));
+    }
+  }
 }
 
 }  // namespace bb

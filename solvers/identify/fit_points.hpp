@@ -69,4 +69,10 @@ std::vector<FitPoint> data_points(const CalibrationData& d, const ResultTables& 
 // what `run` checks of a [calibration], whose values it does not fit.
 void require_data_columns(const CalibrationData& d, const ResultTables& tables);
 
+// SolverError when a fitted point has no computed value because its curve's table records no
+// solution next to it (a stepped sine's failed point, a row of NaN with its "failure"): named
+// with the frequency and the solver's failure (its residual). For the start of a fit; inside it,
+// such a point makes the evaluation fail and Ceres rejects the step (never a smaller residual).
+void require_solved_points(const std::vector<FitPoint>& points, const CalibrationSpec& cal, const ResultTables& tables);
+
 }  // namespace bb

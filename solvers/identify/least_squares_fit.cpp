@@ -362,10 +362,10 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
     out.jacobian_fallbacks += runs[s].fallbacks;
     out.one_sided_columns += runs[s].one_sided;
     out.starts.push_back(r);
+    // The lowest cost wins, converged or not: a converged start at a higher cost is a worse model,
+    // and an unconverged one is continued from its values (calibrate --restart-from).
     const CalibrationStart& best = out.starts[out.best];
-    if (s == 0 || (r.evaluated && !best.evaluated) ||
-        (r.converged && (!best.converged || r.final_cost < best.final_cost)) ||
-        (!best.converged && r.final_cost < best.final_cost)) {
+    if (s == 0 || (r.evaluated && !best.evaluated) || (r.evaluated && r.final_cost < best.final_cost)) {
       out.best = s;
       x = runs[s].x;
       message = runs[s].message;
@@ -378,19 +378,17 @@ CalibrationOutcome fit_parameters(const CalibrationSpec& cal, const FitEvaluator
   out.final_cost = chosen.final_cost;
   out.converged = chosen.converged;
   if (!out.converged) out.warnings.push_back("the fit did not converge: " + message);
-  // A converged start is kept over unconverged ones; a cheaper unconverged start is said, since its
-  // end is not a minimum and the true one may lie beyond it.
   for (size_t s = 0; s < out.starts.size(); ++s)
     if (!out.starts[s].evaluated)
       out.warnings.push_back(
           fmt::format("start {} could not be evaluated at its start values (the model failed "
                       "there: {}): it took no step",
                       s + 1, runs[s].message));
-    else if (chosen.converged && !out.starts[s].converged && out.starts[s].final_cost < chosen.final_cost)
+    else if (!chosen.converged && out.starts[s].converged)
       out.warnings.push_back(fmt::format(
-          "start {} reached a lower cost ({:.6g}) than the reported start {} ({:.6g}) but did not converge ({}): "
-          "the best minimum may lie beyond it; raise max_iterations",
-          s + 1, out.starts[s].final_cost, out.best + 1, chosen.final_cost, runs[s].message));
+          "start {} converged, at a higher cost ({:.6g}) than the reported start {} ({:.6g}), which did not: "
+          "continue the reported start (calibrate --restart-from restart.toml, or a higher max_iterations)",
+          s + 1, out.starts[s].final_cost, out.best + 1, chosen.final_cost));
     else if (s != out.best && runs[s].failed)
       out.warnings.push_back(
           fmt::format("start {} stopped after {} iterations at cost {:.6g}: the model could not be run where the fit "

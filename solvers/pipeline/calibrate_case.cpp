@@ -6,15 +6,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <variant>
 
 #include "analysis/hbm_analysis.hpp"
 #include "analysis/run_analysis.hpp"
 #include "cases/case_parameter.hpp"
+#include "cases/case_settings.hpp"
 #include "cases/case_spec.hpp"
 #include "cases/parse_calibration.hpp"
 #include "checks/checks.hpp"
 #include "common/errors.hpp"
+#include "identify/phase_check.hpp"
 #include "identify/posterior_bands.hpp"
 #include "identify/prediction_bands.hpp"
 #include "model/build_model.hpp"
@@ -241,6 +245,25 @@ void cross_check(const CalibrationSpec& cal, const WorkLimits& limits, const Mod
         fmt::format("the cross-check {} fails with the identified values", cal.cross_check.string()));
 }
 
+// Every [calibration] parameter of `table` set to its value in `file` (an earlier fit's output).
+// The paths are read raw: a malformed section is parse_calibration's to report.
+void restart_values(toml::table& table, const fs::path& file) {
+  toml::table earlier = read_case_table(file);
+  const toml::array* parameters = table.at_path("calibration.parameters").as_array();
+  if (!parameters) return;
+  for (const toml::node& p : *parameters) {
+    const std::optional<std::string> path = p.is_table() ? (*p.as_table())["path"].value<std::string>() : std::nullopt;
+    if (!path) continue;
+    const toml::node* value = node_at_path(earlier, *path);
+    if (!value || !value->is_number())
+      throw InputError(
+          fmt::format("--restart-from {}: no number at the calibration path '{}' (not a case "
+                      "calibrated from this one?)",
+                      file.string(), *path));
+    set_number(table, *path, value->value_or(0.0));
+  }
+}
+
 }  // namespace
 
 bool CalibrationOutcome::cross_check_passed() const {
@@ -249,8 +272,13 @@ bool CalibrationOutcome::cross_check_passed() const {
 }
 
 CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& progress, const WorkLimits& limits,
-                                  const ModelCacheSettings* cache) {
-  const toml::table table = read_case_table(case_file);
+                                  const ModelCacheSettings* cache, const CalibrationStartEdits& edits) {
+  const toml::table table = [&] {
+    toml::table t = read_case_table(case_file);
+    apply_settings(t, edits.settings);
+    if (!edits.restart_from.empty()) restart_values(t, edits.restart_from);
+    return t;
+  }();
   CaseSpec spec = parse_case_table(table, case_file);
   const std::optional<CalibrationSpec> cal = parse_calibration(table, case_file, spec);
   if (!cal) throw InputError(fmt::format("{}: no [calibration] section", case_file.string()));
@@ -268,6 +296,8 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
     if (!(p.sigma > 0.0))
       throw InputError(
           fmt::format("{}: fitted entry '{}' has a zero reference or uncertainty", cal->at.where(), p.label));
+  const std::vector<std::string> phase_warnings = check_measured_phases(*cal, before);  // exit 2 before any fit
+  require_solved_points(before, *cal, curves_before);                                   // exit 3 before any fit
   std::string numeric_reason = sensitivity_base ? "" : std::get<std::string>(analytic_base);
   // A point whose table has no sensitivity columns makes the whole fit numeric; one without a
   // finite value at some parameters costs that evaluation central differences (least_squares_fit).
@@ -330,6 +360,12 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
   out.calibrated = table;
   for (size_t i = 0; i < out.values.size(); ++i) set_number(out.calibrated, cal->parameters[i].path, out.values[i]);
   if (!cal->cross_check.empty()) cross_check(*cal, limits, cache, out);
+  out.warnings.insert(out.warnings.end(), phase_warnings.begin(), phase_warnings.end());
+  for (const std::string& setting : edits.settings)
+    out.warnings.push_back(fmt::format("--set {}: the fit ran at this setting, not the file's", setting));
+  if (!edits.restart_from.empty())
+    out.warnings.push_back(
+        fmt::format("--restart-from {}: the fit started from its values, not the file's", edits.restart_from.string()));
   return out;
 }
 

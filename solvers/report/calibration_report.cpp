@@ -175,13 +175,17 @@ void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_f
     out << "iteration,cost\n";
     for (const auto& [it, cost] : o.history) out << fmt::format("{},{:.10g}\n", it, cost);
   }
-  fs::remove(out_dir / "calibrated.toml");  // a failed fit must not leave an earlier one looking current
-  if (o.converged) {
-    std::ofstream out = open_out(out_dir / "calibrated.toml");
+  // A failed fit must not leave an earlier calibrated.toml looking current; its values are written
+  // as restart.toml instead, what `calibrate --restart-from` continues.
+  fs::remove(out_dir / "calibrated.toml");
+  fs::remove(out_dir / "restart.toml");
+  {
+    std::ofstream out = open_out(out_dir / (o.converged ? "calibrated.toml" : "restart.toml"));
     out << fmt::format(
-        "# {} with the values identified by `bladebench calibrate` (comments are not kept; file names relative to "
+        "# {} with the values {} by `bladebench calibrate` (comments are not kept; file names relative to "
         "this folder).\n",
-        case_file.string());
+        case_file.string(),
+        o.converged ? "identified" : "where the fit stopped, NOT converged, to continue with --restart-from,");
     toml::table calibrated = o.calibrated;
     rebase_file_names(calibrated, case_file.parent_path(), out_dir);
     out << calibrated << '\n';
@@ -411,7 +415,10 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
   }
   md << fmt::format(
       "\nSolver: {}\n\nFiles: `identification.csv`, `convergence.csv`, `starts.csv`, `fitted_points.csv`{}.\n",
-      o.termination, o.converged ? ", `calibrated.toml`" : " (no `calibrated.toml`: the fit did not converge)");
+      o.termination,
+      o.converged ? ", `calibrated.toml`"
+                  : ", `restart.toml` (no `calibrated.toml`: the fit did not converge; `calibrate --restart-from "
+                    "restart.toml` continues it)");
   md.close();
   if (!md) throw std::runtime_error("failed writing the calibration report");
   write_html_twin(out_dir / "report.md");

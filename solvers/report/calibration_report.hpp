@@ -1,6 +1,7 @@
-// Files written by `bladebench calibrate`: identification.csv, convergence.csv,
-// starts.csv, fitted_points.csv, calibrated.toml (the case with the identified values, only when
-// the fit converged), report.md and, for measured curves, plots of the fitted curves over the data.
+// Files written by `bladebench calibrate`: identification.csv, convergence.csv, starts.csv,
+// fitted_points.csv, calibrated.toml (the case with the identified values, when the fit converged;
+// else restart.toml, the values where it stopped), report.md and, for measured curves, plots of
+// the fitted curves over the data.
 #pragma once
 #include <filesystem>
 

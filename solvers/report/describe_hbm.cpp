@@ -206,6 +206,23 @@ void describe_harmonics(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& r
   }
 }
 
+// A stepped curve's frequencies without a solution, said: in its table they are rows of NaN, in a
+// fit failed evaluations (issue 68: they used to vanish from the table, the run ending "no checks").
+template <class Curve>
+void warn_failed_points(const char* what, const std::vector<Curve>& curves, RunRecord& run) {
+  for (const Curve& c : curves) {
+    if (c.failed_hz.empty()) continue;
+    std::string list;
+    for (size_t i = 0; i < c.failed_hz.size() && i < 5; ++i)
+      list += fmt::format("{}{:.6g}", i ? ", " : "", c.failed_hz[i]);
+    if (c.failed_hz.size() > 5) list += ", ...";
+    run.warnings.push_back(fmt::format(
+        "{} '{}': no solution at {} of {} frequencies ({} Hz; at {:.6g} Hz: {}): rows of NaN in table frf_{}", what,
+        c.name, c.failed_hz.size(), c.failed_hz.size() + c.frequency_hz.size(), list, c.failed_hz.front(),
+        c.failures.front(), c.name));
+  }
+}
+
 }  // namespace
 
 std::string describe_modal_ratios(const FrfDamping& d) {
@@ -320,6 +337,15 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
         fmt::format("the AFT samples leave a contact-force error of {:.2e} at the {}: raise time_samples or set "
                     "aft_tolerance (samples raised automatically)",
                     worst, where));
+  const char* const held_unit[] = {"m", "m/s", "m/s^2"};
+  for (const ResponseControlSpec& c : spec.response_controls)
+    if (!c.file.empty())
+      run.facts.emplace_back(
+          fmt::format("response control '{}': held level", c.name),
+          fmt::format("{:.6g} {}, the median of the amplitude column of {} (its points {:+.2f} % to {:+.2f} % of it)",
+                      c.amplitude, held_unit[c.derivative], c.file, 100.0 * c.spread_low, 100.0 * c.spread_high));
+  warn_failed_points("stepped sine", hbm.stepped_sines, run);
+  warn_failed_points("response control", hbm.response_controls, run);
   describe_harmonics(spec, hbm, run);
   describe_stability(spec, hbm, run);
   describe_nonlinear_modes(spec, hbm, run);

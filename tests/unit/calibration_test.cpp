@@ -80,6 +80,13 @@ class CalibrationRoundTrip : public test::TempFolderTest {
     write_values(dir_ / "case.toml", e_start, rho_start, parameters);
     return dir_ / "case.toml";
   }
+  // E fitted from e_start towards 2.1e11 with one iteration allowed: a fit that does not converge.
+  fs::path one_iteration_case(double e_start) {
+    const fs::path c =
+        write_case(e_start, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
+    std::ofstream(c, std::ios::app) << "max_iterations = 1\n";
+    return c;
+  }
 
  private:
   static void write_values(const fs::path& file, double e, double rho, const std::string& parameters) {
@@ -184,9 +191,7 @@ TEST_F(CalibrationRoundTrip, TheCalibratedCaseRunsWhereItIsWritten) {
 }
 
 TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedCase) {
-  const fs::path c =
-      write_case(1.1e11, 7800.0, R"({ path = "material.E", lower = 1e11, upper = 3e11 })", 2.1e11, 7800.0);
-  std::ofstream(c, std::ios::app) << "max_iterations = 1\n";
+  const fs::path c = one_iteration_case(1.1e11);
   const CalibrationOutcome o = calibrate_case(c);
   ASSERT_FALSE(o.converged) << o.termination;
   fs::create_directories(dir_ / "out");
@@ -199,6 +204,46 @@ TEST_F(CalibrationRoundTrip, AFitThatDoesNotConvergeSaysSoAndWritesNoCalibratedC
   bool warned = false;
   for (const auto& w : o.warnings) warned = warned || w.find("did not converge") != std::string::npos;
   EXPECT_TRUE(warned);
+}
+
+// An unconverged fit leaves restart.toml, from which `calibrate --restart-from` continues; `--set`
+// changes a setting without a copy of the case, here the iteration cap (issue 68).
+TEST_F(CalibrationRoundTrip, AnUnconvergedFitIsContinuedFromItsRestartFile) {
+  const fs::path c = one_iteration_case(1.1e11);
+  const CalibrationOutcome first = calibrate_case(c);
+  ASSERT_FALSE(first.converged) << first.termination;
+  const fs::path out = dir_ / "out";
+  fs::create_directories(out);
+  write_calibration_outputs(first, c, 1.0, out, false);
+  ASSERT_TRUE(fs::exists(out / "restart.toml"));
+  EXPECT_FALSE(fs::exists(out / "calibrated.toml"));
+  const CalibrationOutcome next =
+      calibrate_case(c, {}, {}, nullptr, {{"calibration.max_iterations=50"}, out / "restart.toml"});
+  ASSERT_EQ(next.starts.size(), 1u);
+  EXPECT_NEAR(next.starts[0].start[0], first.values[0], 1e-9 * first.values[0]);
+  EXPECT_LT(next.initial_cost, first.initial_cost);
+  ASSERT_TRUE(next.converged) << next.termination;
+  EXPECT_NEAR(next.values[0], 2.1e11, 1e-4 * 2.1e11);
+  bool said = false;
+  for (const auto& w : next.warnings) said = said || w.find("--restart-from") != std::string::npos;
+  EXPECT_TRUE(said);
+  write_calibration_outputs(next, c, 1.0, out, false);
+  EXPECT_TRUE(fs::exists(out / "calibrated.toml"));
+  EXPECT_FALSE(fs::exists(out / "restart.toml"));  // not left looking current
+}
+
+TEST_F(CalibrationRoundTrip, SetGivesAParameterItsStartAndARestartFileMustHoldEveryParameter) {
+  const fs::path c = one_iteration_case(1.5e11);
+  EXPECT_EQ(calibrate_case(c, {}, {}, nullptr, {{"material.E=2.5e11"}, {}}).starts[0].start[0], 2.5e11);
+  std::ofstream(dir_ / "other.toml") << "[material]\nnu = 0.3\n";
+  try {
+    calibrate_case(c, {}, {}, nullptr, {{}, dir_ / "other.toml"});
+    ADD_FAILURE() << "a restart file without material.E was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("other.toml: no number at the calibration path 'material.E'"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(CalibrationRoundTrip, ParameterOutsideItsBoundsIsAnInputError) {

@@ -22,12 +22,12 @@ namespace {
 // One sector of a ring of N masses m, each grounded by k0 and coupled to the next by kc: the
 // sector holds its own mass (DOF 0, left face) and the coupling spring's far end (DOF 1, the next
 // sector's mass: right face).
-struct Ring {
+struct OscillatorRing {
   double m = 2.0, k0 = 3.0e4, kc = 5.0e4;
   Eigen::SparseMatrix<double> K, M;
   CyclicDofs cyclic;
 
-  explicit Ring(int sectors) {
+  explicit OscillatorRing(int sectors) {
     Eigen::MatrixXd k(2, 2), mm = Eigen::MatrixXd::Zero(2, 2);
     k << k0 + kc, -kc, -kc, kc;
     mm(0, 0) = m;
@@ -45,7 +45,7 @@ struct Ring {
 
 TEST(CyclicSymmetry, RingOfOscillatorsHasTheClosedFormPerNodalDiameter) {
   for (int N : {5, 6, 12}) {
-    const Ring ring(N);
+    const OscillatorRing ring(N);
     for (int k = 0; 2 * k <= N; ++k) {
       const CyclicProjection p = cyclic_projection(2, ring.cyclic, k);
       const Eigen::MatrixXd Kk = Eigen::MatrixXd(project(ring.K, p)), Mk = Eigen::MatrixXd(project(ring.M, p));
@@ -63,7 +63,7 @@ TEST(CyclicSymmetry, RingOfOscillatorsHasTheClosedFormPerNodalDiameter) {
 TEST(CyclicSymmetry, RingTravellingWaveIsOneHermitianUnknownWithTheClosedForm) {
   for (int N : {5, 6, 12})
     for (int k = 0; 2 * k <= N; ++k) {
-      const Ring ring(N);
+      const OscillatorRing ring(N);
       const auto T = complex_cyclic_projection(2, ring.cyclic, 2 * kPi * k / N);
       const Eigen::MatrixXcd Kk = Eigen::MatrixXcd(project(ring.K, T)), Mk = Eigen::MatrixXcd(project(ring.M, T));
       ASSERT_EQ(Kk.rows(), 1);
@@ -75,7 +75,7 @@ TEST(CyclicSymmetry, RingTravellingWaveIsOneHermitianUnknownWithTheClosedForm) {
 
 TEST(CyclicSymmetry, RingSpectrumIsTheUnionOfTheNodalDiametersTwiceForPairs) {
   const int N = 7;
-  const Ring ring(N);
+  const OscillatorRing ring(N);
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N, N);
   for (int j = 0; j < N; ++j) {
     K(j, j) += ring.k0 + 2 * ring.kc;
@@ -93,7 +93,7 @@ TEST(CyclicSymmetry, RingSpectrumIsTheUnionOfTheNodalDiametersTwiceForPairs) {
 }
 
 TEST(CyclicSymmetry, NodalDiameterOutsideTheRangeIsRefused) {
-  const Ring ring(6);
+  const OscillatorRing ring(6);
   EXPECT_THROW(cyclic_projection(2, ring.cyclic, 4), InputError);
   EXPECT_THROW(cyclic_projection(2, ring.cyclic, -1), InputError);
 }

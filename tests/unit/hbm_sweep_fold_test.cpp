@@ -35,7 +35,7 @@ class HbmSweepFold : public test::TempFolderTest {
   }
 };
 
-double cell(const ResultTable& t, const std::string& column, Eigen::Index row) {
+double fold_cell(const ResultTable& t, const std::string& column, Eigen::Index row) {
   const auto c = t.column_index(column);
   EXPECT_TRUE(c.has_value()) << column;
   return c ? t.values(row, static_cast<Eigen::Index>(*c)) : 0.0;
@@ -51,8 +51,8 @@ Eigen::VectorXd frequencies(const ResultTable& frf) {
 // frequency of 170-190 Hz (0.05 Hz) in its frf table.
 void expect_whole_band_within(const AnalysisResults& r, const std::string& frf, double iterations) {
   const ResultTable& cost = r.tables.at("sweep_cost");
-  EXPECT_EQ(cell(cost, "reached_end", 0), 1.0);
-  EXPECT_LT(cell(cost, "corrector_iterations", 0), iterations);
+  EXPECT_EQ(fold_cell(cost, "reached_end", 0), 1.0);
+  EXPECT_LT(fold_cell(cost, "corrector_iterations", 0), iterations);
   const Eigen::VectorXd hz = frequencies(r.tables.at(frf));
   for (int i = 0; i <= 400; ++i) {
     const double grid = 170.0 + 0.05 * i;
@@ -66,8 +66,8 @@ void expect_whole_band_within(const AnalysisResults& r, const std::string& frf, 
 TEST_F(HbmSweepFold, TheGridSweepFollowsAFoldBackAndForwardAndSolvesEveryGridFrequency) {
   const AnalysisResults r = sweep("80.0", "[183.3, 183.75]", 3, 32);
   const ResultTable& cost = r.tables.at("sweep_cost");
-  EXPECT_EQ(cell(cost, "reached_end", 0), 1.0);
-  EXPECT_GE(cell(cost, "turning_points", 0), 2.0);  // back at the fold, forward again below it
+  EXPECT_EQ(fold_cell(cost, "reached_end", 0), 1.0);
+  EXPECT_GE(fold_cell(cost, "turning_points", 0), 2.0);  // back at the fold, forward again below it
   const ResultTable& frf = r.tables.at("frf_80");
   const Eigen::VectorXd hz = frequencies(frf);
   // Every grid frequency is on the path, and the path ran back below the fold.
@@ -88,9 +88,9 @@ TEST_F(HbmSweepFold, TheGridSweepFollowsAFoldBackAndForwardAndSolvesEveryGridFre
 TEST_F(HbmSweepFold, TheBridgeTurnsAtACornerWhereTheBranchRunsBackInFrequency) {
   const AnalysisResults r = sweep("60.0", "[171.5, 173.3]", 5, 44);
   const ResultTable& cost = r.tables.at("sweep_cost");
-  EXPECT_EQ(cell(cost, "reached_end", 0), 1.0);
-  EXPECT_GE(cell(cost, "corners", 0), 1.0);
-  EXPECT_GE(cell(cost, "turning_points", 0), 4.0);
+  EXPECT_EQ(fold_cell(cost, "reached_end", 0), 1.0);
+  EXPECT_GE(fold_cell(cost, "corners", 0), 1.0);
+  EXPECT_GE(fold_cell(cost, "turning_points", 0), 4.0);
   const Eigen::VectorXd hz = frequencies(r.tables.at("frf_60"));
   const Eigen::Index grid_points = 37;     // 171.5, 171.55, ..., 173.3
   EXPECT_GT(hz.size(), grid_points + 50);  // the arc back and forth besides the grid (89 points)

@@ -106,7 +106,7 @@ NonlinearModalSpec parse_nonlinear_modal(TomlReader& r, const std::filesystem::p
   s.mode = parse_mode(r);
   std::set<std::string> tables;
   s.stepped_sines = parse_stepped_sines(r, folder, tables);
-  s.response_controls = parse_response_controls(r, {dof}, tables);
+  s.response_controls = parse_response_controls(r, {dof}, folder, tables);
   s.extract = parse_extract(r, folder);
   return s;
 }

@@ -44,10 +44,11 @@ Plot plot_backbone(const NonlinearModalSpec& spec, const NonlinearModalOutcome& 
     data << "# model: a [m] f [Hz] z\n";
     for (Eigen::Index r = 0; r < b.values.rows(); ++r)
       data << b.values(r, 1) << ' ' << b.values(r, 2) << ' ' << b.values(r, 3) << '\n';
-    data << "\n\n# knots: a [m] f [Hz] z\n";
-    for (size_t k = 0; k < spec.mode.frequency_hz.knots(); ++k)
-      data << spec.mode.frequency_hz.amplitudes()[k] << ' ' << spec.mode.frequency_hz.values()[k] << ' '
-           << spec.mode.damping_ratio.values()[k] << '\n';
+    // Each curve's knots apart: they may lie at other amplitudes.
+    for (const ModalBackbone* c : {&spec.mode.frequency_hz, &spec.mode.damping_ratio}) {
+      data << "\n\n# knots: a [m] value\n";
+      for (size_t k = 0; k < c->knots(); ++k) data << c->amplitudes()[k] << ' ' << c->values()[k] << '\n';
+    }
     data << "\n\n# read from measured curves: a [m] f [Hz] z\n";
     for (const BackbonePoint& p : o.extracted) data << p.amplitude_m << ' ' << p.frequency_hz << ' ' << p.damping_ratio << '\n';
     if (o.extracted.empty()) data << "nan nan nan\n";
@@ -58,11 +59,11 @@ Plot plot_backbone(const NonlinearModalSpec& spec, const NonlinearModalOutcome& 
       "set ylabel 'f_0 [Hz]'\nset format x ''\n"
       "plot '{s}.dat' index 0 using 1:2 with lines lw 1.5 lc rgb '{c0}' title 'model', \\\n"
       "     '{s}.dat' index 1 using 1:2 with points pt 6 lc rgb '{c0}' title 'knots', \\\n"
-      "     '{s}.dat' index 2 using 1:2 with points pt 7 lc rgb '{c1}' title 'from the curves'\n"
+      "     '{s}.dat' index 3 using 1:2 with points pt 7 lc rgb '{c1}' title 'from the curves'\n"
       "set ylabel 'damping ratio z'\nset xlabel 'amplitude a [m]'\nset format x '%g'\n"
       "plot '{s}.dat' index 0 using 1:3 with lines lw 1.5 lc rgb '{c0}' title 'model', \\\n"
-      "     '{s}.dat' index 1 using 1:3 with points pt 6 lc rgb '{c0}' title 'knots', \\\n"
-      "     '{s}.dat' index 2 using 1:3 with points pt 7 lc rgb '{c1}' title 'from the curves'\n"
+      "     '{s}.dat' index 2 using 1:2 with points pt 6 lc rgb '{c0}' title 'knots', \\\n"
+      "     '{s}.dat' index 3 using 1:3 with points pt 7 lc rgb '{c1}' title 'from the curves'\n"
       "unset multiplot\n",
       gnuplot_quote(title), fmt::arg("s", stem), fmt::arg("c0", series_colour(0)), fmt::arg("c1", series_colour(1)));
   return draw(out, stem, title, script);

@@ -95,7 +95,14 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
     // Pieces of at most 1 rad of the fastest motion: an event function then turns at most once in one.
     const double fastest =
         Eigen::EigenSolver<MatrixXd>(g.a.topLeftCorner(2 * n_, 2 * n_), false).eigenvalues().cwiseAbs().maxCoeff();
-    const int pieces = fastest * step_ > 1.0 ? static_cast<int>(std::ceil(fastest * step_)) : 1;
+    // Counted in double: a stiffness of 1e90 asks more pieces than an int holds.
+    const double pieces = fastest * step_ > 1.0 ? std::ceil(fastest * step_) : 1.0;
+    if (!(pieces <= static_cast<double>(kMaxPieces)))
+      throw SolverError(fmt::format(
+          "shooting at omega = {:.6g} rad/s: {:.3g} pieces of the exact flow in one step, more than {} (the cap of "
+          "PiecewiseFlow::kMaxPieces): a stiffness or a force so large that its motion needs pieces too short to "
+          "resolve; lower kt or the force, or use period_map = \"newmark\"",
+          omega_, pieces, kMaxPieces));
     g.piece = step_ / pieces;
     g.piece_exponential = (g.a * g.piece).exp();
   }

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "frf/sweep.hpp"
 
 namespace bb {
 
@@ -102,24 +103,18 @@ struct ControlMinimum {
   bool interior = false;
 };
 
-// Golden section on the force between the neighbours of the smallest point (as the hbm's).
-ControlMinimum smallest_force(const NonlinearModalSpec& spec, const ResponseControlSpec& c, const std::vector<double>& force) {
+// The smallest force refined between the neighbours of the smallest point (frf/sweep.hpp's golden
+// section on the negated force, as the hbm's response control refines its own).
+ControlMinimum smallest_force(const NonlinearModalSpec& spec, const ResponseControlSpec& c,
+                              const std::vector<double>& force) {
   const auto k = static_cast<size_t>(std::min_element(force.begin(), force.end()) - force.begin());
   const auto at = [&](double f) { return held_response(spec.mode, held_amplitude_m(c, f), f); };
   ControlMinimum m{force[k], c.frequency_hz[k], at(c.frequency_hz[k]).phase * kDegPerRad, false};
   if (k == 0 || k + 1 >= force.size()) return m;
-  double lo = std::min(c.frequency_hz[k - 1], c.frequency_hz[k + 1]);
-  double hi = std::max(c.frequency_hz[k - 1], c.frequency_hz[k + 1]);
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-  double f1 = at(x1).force, f2 = at(x2).force;
-  while (hi - lo > 1e-10 * hi) {
-    if (f1 < f2)
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = at(x1).force;
-    else
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = at(x2).force;
-  }
-  const double f = 0.5 * (lo + hi);
+  const GoldenSearch search = golden_section_maximum([&](double f) { return std::optional<double>(-at(f).force); },
+                                                     std::min(c.frequency_hz[k - 1], c.frequency_hz[k + 1]),
+                                                     std::max(c.frequency_hz[k - 1], c.frequency_hz[k + 1]), 200, 1e-10);
+  const double f = 0.5 * (search.a + search.b);
   const ModalPoint p = at(f);
   if (p.force < m.force) m = {p.force, f, p.phase * kDegPerRad, true};
   return m;

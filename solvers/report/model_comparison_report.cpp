@@ -84,9 +84,10 @@ void write_model_comparison(const std::vector<ModelScore>& scores, const std::ve
         "95 % band covers | cross-check |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (size_t i : order) {
     const ModelScore& s = scores[i];
+    // Each calibration's folder is named after its case file's stem (cli/compare_models_command.cpp).
     md << fmt::format("| {} | [{}]({}/report.md) | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.3g} | {:.3g} % | {} | "
                       "{} of {} |\n",
-                      s.rank, s.name, comparison_slug(s.name), s.converged ? "yes" : "**no**", s.parameters, s.fitted_points,
+                      s.rank, s.name, s.name, s.converged ? "yes" : "**no**", s.parameters, s.fitted_points,
                       s.chi_square, s.aic, s.bic, s.held_out_rms, 100.0 * s.held_out_largest_error,
                       s.band_coverage < 0.0 ? std::string("no band") : fmt::format("{:.1f} %", 100.0 * s.band_coverage),
                       s.cross_check_passed, s.cross_check_entries);

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "../tests/extremes/hbm_models.hpp"
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 #include "hbm/harmonic_balance.hpp"
 #include "hbm/hill_stability.hpp"
 #include "hbm/sensitivity.hpp"
@@ -37,11 +37,11 @@ using bb::hbm::HarmonicBalance;
 
 // Stick-slip with a varying normal load that never opens: u of 1e-5 m (about three times the
 // stick limit mu N0 / kt = 3e-6 m) and v of 5e-6 m about a static 2e-5 m, plus small higher harmonics.
-const bb::contact::JenkinsParameters kStickSlipLaw{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0};
+const bb::friction::PointParameters kStickSlipLaw{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0};
 
 // The tangential (u) and normal (v) coefficients of that motion with H harmonics.
 std::pair<Eigen::VectorXd, Eigen::VectorXd> stick_slip_motion(int harmonics) {
-  const Eigen::Index m = bb::contact::harmonic_size(harmonics);
+  const Eigen::Index m = bb::friction::harmonic_size(harmonics);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(m), v = Eigen::VectorXd::Zero(m);
   u[1] = 1e-5;
   v[0] = 2e-5;
@@ -52,11 +52,11 @@ std::pair<Eigen::VectorXd, Eigen::VectorXd> stick_slip_motion(int harmonics) {
 
 void BM_AftJenkins(benchmark::State& state) {
   const int harmonics = static_cast<int>(state.range(0));
-  const bb::contact::JenkinsParameters& law = kStickSlipLaw;
+  const bb::friction::PointParameters& law = kStickSlipLaw;
   const auto [u, v] = stick_slip_motion(harmonics);
   const Eigen::Index m = u.size();
-  const bb::contact::AftOptions options{.samples = std::max(64, 16 * static_cast<int>(m))};
-  for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(law, u, v, options));
+  const bb::friction::AftOptions options{.samples = std::max(64, 16 * static_cast<int>(m))};
+  for (auto _ : state) benchmark::DoNotOptimize(bb::friction::aft_jenkins(law, u, v, options));
   state.counters["samples"] = options.samples;
 }
 BENCHMARK(BM_AftJenkins)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMicrosecond);
@@ -68,10 +68,10 @@ BENCHMARK(BM_AftJenkins)->ArgName("H")->Arg(1)->Arg(5)->Unit(benchmark::kMicrose
 void BM_AftJenkinsSamples(benchmark::State& state) {
   const int harmonics = static_cast<int>(state.range(0));
   const int samples = static_cast<int>(state.range(1));
-  const bb::contact::JenkinsParameters& law = kStickSlipLaw;
+  const bb::friction::PointParameters& law = kStickSlipLaw;
   const auto [u, v] = stick_slip_motion(harmonics);
-  const bb::contact::AftOptions options{.samples = samples};
-  for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(law, u, v, options));
+  const bb::friction::AftOptions options{.samples = samples};
+  for (auto _ : state) benchmark::DoNotOptimize(bb::friction::aft_jenkins(law, u, v, options));
   state.counters["ns_per_sample"] = benchmark::Counter(
       static_cast<double>(samples), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
@@ -80,14 +80,14 @@ BENCHMARK(BM_AftJenkinsSamples)
     ->ArgsProduct({{1, 7}, {64, 240, 256, 512, 1000, 1024, 4096, 16384}})
     ->Unit(benchmark::kMicrosecond);
 
-// The event-resolved AFT (contact/aft_events.hpp) on the same motion against its sample intervals,
+// The event-resolved AFT (friction/aft_events.hpp) on the same motion against its sample intervals,
 // beside the sampled AFT above at the samples each needs for the same accuracy.
 void BM_AftJenkinsEvents(benchmark::State& state) {
   const int harmonics = static_cast<int>(state.range(0));
   const auto [u, v] = stick_slip_motion(harmonics);
-  bb::contact::AftOptions options{.samples = static_cast<int>(state.range(1))};
+  bb::friction::AftOptions options{.samples = static_cast<int>(state.range(1))};
   options.resolve_events = true;
-  for (auto _ : state) benchmark::DoNotOptimize(bb::contact::aft_jenkins(kStickSlipLaw, u, v, options));
+  for (auto _ : state) benchmark::DoNotOptimize(bb::friction::aft_jenkins(kStickSlipLaw, u, v, options));
 }
 BENCHMARK(BM_AftJenkinsEvents)
     ->ArgNames({"H", "samples"})
@@ -176,7 +176,7 @@ HarmonicBalance sensitivity_system(int harmonics) {
   bb::friction::FrictionModel m =
       bb::hbm::models::planar_blades_with_damper({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0}, 200.0, 1e-2);
   Eigen::MatrixXd k = m.stiffness;
-  for (const bb::friction::ContactElement& c : m.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
+  for (const bb::friction::ContactElement& c : m.contacts) k += c.point.kn * c.normal.transpose() * c.normal;
   const Eigen::VectorXd seat = k.fullPivLu().solve(m.static_load);
   for (bb::friction::ContactElement& c : m.contacts) c.tangential_offset = c.tangential.dot(seat);
   return HarmonicBalance(std::move(m), {.harmonics = harmonics, .tolerance = 1e-12});
@@ -191,10 +191,10 @@ std::optional<bb::hbm::HbmSolution> sensitivity_point(const HarmonicBalance& sys
     return std::nullopt;
   }
   double slip = 0.0, samples = 0.0;
-  for (const bb::contact::AftResult& r : s.contacts)
-    for (const bb::contact::ContactState c : r.state) {
+  for (const bb::friction::AftResult& r : s.contacts)
+    for (const bb::friction::ContactState c : r.state) {
       samples += 1.0;
-      if (c == bb::contact::ContactState::slip_positive || c == bb::contact::ContactState::slip_negative) slip += 1.0;
+      if (c == bb::friction::ContactState::slip_positive || c == bb::friction::ContactState::slip_negative) slip += 1.0;
     }
   state.counters["slip"] = slip / samples;
   return s;
@@ -205,7 +205,7 @@ void BM_HbmSensitivityAnalytic(benchmark::State& state) {
   const auto base = sensitivity_point(system, state);
   if (!base) return;
   std::vector<bb::hbm::ModelDerivative> d;
-  for (const auto p : {bb::contact::law_kn, bb::contact::law_kt, bb::contact::law_mu, bb::contact::law_n0})
+  for (const auto p : {bb::friction::law_kn, bb::friction::law_kt, bb::friction::law_mu, bb::friction::law_n0})
     d.push_back(bb::hbm::law_derivative(system.model(), p));
   for (auto _ : state) benchmark::DoNotOptimize(bb::hbm::solution_sensitivity(system, *base, d));
   state.counters["unknowns"] = static_cast<double>(system.unknowns());
@@ -230,7 +230,7 @@ void BM_HbmSensitivityCentralDifference(benchmark::State& state) {
       for (int side = 0; side < 2; ++side) {
         bb::friction::FrictionModel m = system.model();
         for (bb::friction::ContactElement& c : m.contacts) {
-          double* field = p == 0 ? &c.law.kn : p == 1 ? &c.law.kt : p == 2 ? &c.law.mu : &c.law.n0;
+          double* field = p == 0 ? &c.point.kn : p == 1 ? &c.point.kt : p == 2 ? &c.point.mu : &c.point.n0;
           *field *= side == 0 ? 1.0 + 1e-6 : 1.0 - 1e-6;
         }
         const HarmonicBalance perturbed(std::move(m), system.options());

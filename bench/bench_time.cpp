@@ -29,7 +29,7 @@ FrictionModel friction_model() {
 FrictionModel linear_model() {
   FrictionModel m = friction_model();
   for (const bb::friction::ContactElement& c : m.contacts)
-    m.stiffness += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+    m.stiffness += c.point.kn * c.normal.transpose() * c.normal + c.point.kt * c.tangential.transpose() * c.tangential;
   m.contacts.clear();
   return m;
 }
@@ -116,7 +116,7 @@ FrictionModel coulomb_oscillator(double kt, double force) {
   FrictionModel m;
   m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
   m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
-  m.contacts.push_back({.law = {.kn = 1e12, .kt = kt, .mu = 0.3, .n0 = 10.0},
+  m.contacts.push_back({.point = {.kn = 1e12, .kt = kt, .mu = 0.3, .n0 = 10.0},
                         .tangential = Eigen::RowVectorXd::Ones(1),
                         .normal = Eigen::RowVectorXd::Zero(1)});
   m.harmonic_load = Eigen::VectorXcd::Constant(1, force);

@@ -22,7 +22,7 @@ std::vector<double> response(double kt, double mu, const std::vector<double>& fr
   model.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
   model.damping = Eigen::MatrixXd::Constant(1, 1, 10.0);
   model.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
-  model.contacts.push_back({.law = {.kn = 1e6, .kt = kt, .mu = mu, .n0 = 30.0},
+  model.contacts.push_back({.point = {.kn = 1e6, .kt = kt, .mu = mu, .n0 = 30.0},
                             .tangential = Eigen::RowVectorXd::Ones(1),
                             .normal = Eigen::RowVectorXd::Zero(1)});
   model.harmonic_load = Eigen::VectorXcd::Constant(1, 5.0);

@@ -21,7 +21,7 @@ int main() {
   model.damping = Eigen::MatrixXd::Constant(1, 1, c);
   model.stiffness = Eigen::MatrixXd::Constant(1, 1, k);
   // One contact: normal stiffness kn and preload n0 [N], tangential stiffness kt, friction mu.
-  model.contacts.push_back({.law = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0},
+  model.contacts.push_back({.point = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0},
                             .tangential = Eigen::RowVectorXd::Ones(1),
                             .normal = Eigen::RowVectorXd::Zero(1)});
   model.harmonic_load = Eigen::VectorXcd::Constant(1, 5.0);  // 5 N against a 9 N slip force

@@ -111,10 +111,10 @@ bb::friction::ContactElement contact_of(const py::handle& item, size_t index, py
   bb::friction::ContactElement e;
   e.tangential = dof_row(c["tangential"], where + ".tangential", n);
   e.normal = c.contains("normal") ? dof_row(c["normal"], where + ".normal", n) : Eigen::RowVectorXd::Zero(n);
-  e.law = {.kn = law_number(c, "kn", where, 0.0, false),
-           .kt = law_number(c, "kt", where, 0.0, true),
-           .mu = law_number(c, "mu", where, 0.0, true),
-           .n0 = law_number(c, "n0", where, 0.0, true)};
+  e.point = {.kn = law_number(c, "kn", where, 0.0, false),
+             .kt = law_number(c, "kt", where, 0.0, true),
+             .mu = law_number(c, "mu", where, 0.0, true),
+             .n0 = law_number(c, "n0", where, 0.0, true)};
   return e;
 }
 

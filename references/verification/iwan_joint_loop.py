@@ -35,7 +35,7 @@ def energy_continuous(r, s, phi_max, a):
 
 def sliders(r, s, phi_max):
     """The power-law part cut into intervals of equal stiffness, each one Jenkins slider with the
-    exact stiffness and slip force of its interval; the delta one more (as contact/iwan_law.hpp)."""
+    exact stiffness and slip force of its interval; the delta one more (as friction/iwan_law.hpp)."""
     n = SLIDERS - 1 if BETA > 0 else SLIDERS
     a, b = CHI + 1, CHI + 2
     out = []

@@ -4,7 +4,7 @@ joint, for cases/verification/iwan_oscillator_hbm.toml; writes iwan_oscillator_h
 
 Model (SI): m q'' + c q' + k q + T(q) = F cos(w t), T the Iwan joint to the ground (Segalman 2005:
 K_T = kt, macro-slip force F_S = mu n0, chi, beta) as its parallel Jenkins sliders, cut as
-contact/iwan_law.hpp documents (power law in intervals of equal stiffness, each slider with the
+friction/iwan_law.hpp documents (power law in intervals of equal stiffness, each slider with the
 exact stiffness and slip force of its interval, one slider for the delta); the sliders are built
 here from the density, independently of the code. For u = a cos(theta) each slider (stiffness k_i,
 slip displacement x_i) gives the Jenkins describing function (Griffin 1980): in phase

@@ -13,14 +13,14 @@
 namespace bb {
 namespace {
 
-using contact::ContactState;
+using friction::ContactState;
 
 bool slipping(ContactState s) { return s == ContactState::slip_positive || s == ContactState::slip_negative; }
 
 // Least-squares slope of T against u with one intercept per stick segment (a maximal run of
 // consecutive stuck samples, cyclic). One pooled line would be biased: the two stick branches of a
 // stick-slip loop are parallel lines kt (u - w) with different slider positions w.
-double stick_slope(const contact::AftResult& a) {
+double stick_slope(const friction::AftResult& a) {
   const Eigen::Index n = a.u.size();
   Eigen::Index start = 0;  // a non-stuck sample to start from, so that no run wraps
   while (start < n && a.state[static_cast<size_t>(start)] == ContactState::stick) ++start;
@@ -50,8 +50,8 @@ double stick_slope(const contact::AftResult& a) {
 
 }  // namespace
 
-JenkinsLoopClosedForm jenkins_loop_closed_form(const contact::JenkinsParameters& law, double amplitude) {
-  contact::validate(law);
+JenkinsLoopClosedForm jenkins_loop_closed_form(const friction::PointParameters& law, double amplitude) {
+  friction::validate(law);
   if (!(amplitude > 0.0) || !std::isfinite(amplitude))
     throw std::invalid_argument(fmt::format("Jenkins loop: amplitude must be finite and > 0 (got {})", amplitude));
   const double fs = law.mu * law.n0, xs = fs / law.kt;
@@ -63,14 +63,14 @@ JenkinsLoopClosedForm jenkins_loop_closed_form(const contact::JenkinsParameters&
           .damping = energy / (std::numbers::pi * amplitude * amplitude)};
 }
 
-double lift_off_fraction_closed_form(const contact::JenkinsParameters& law, double normal_amplitude) {
+double lift_off_fraction_closed_form(const friction::PointParameters& law, double normal_amplitude) {
   const double reach = law.kn * normal_amplitude;
   if (!(reach > law.n0)) return 0.0;
   return std::acos(law.n0 / reach) / std::numbers::pi;
 }
 
-ContactLoopSummary summarise_loop(const contact::JenkinsParameters& law, double tangential_amplitude,
-                                  const contact::AftResult& a) {
+ContactLoopSummary summarise_loop(const friction::PointParameters& law, double tangential_amplitude,
+                                  const friction::AftResult& a) {
   ContactLoopSummary s;
   const Eigen::Index n = a.u.size();
   // Loop area by the trapezoid rule in u over the closed sampled loop: what a rig integrates from its
@@ -117,12 +117,12 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
   // H = 1 coefficients [c0, a1, b1]: V cos(theta + phi) = V cos(phi) cos(theta) - V sin(phi) sin(theta).
   const Eigen::Vector3d u(0.0, spec.tangential_amplitude, 0.0);
   const Eigen::Vector3d v(0.0, spec.normal_amplitude * std::cos(phi), -spec.normal_amplitude * std::sin(phi));
-  contact::AftOptions options;
+  friction::AftOptions options;
   options.samples = spec.samples;
   ContactLoopOutcome o;
-  o.aft = contact::aft_parallel(spec.law, spec.distribution.get(), u, v, options);
-  o.summary = summarise_loop(spec.law, spec.tangential_amplitude, o.aft);
-  const contact::AftResult& a = o.aft;
+  o.aft = friction::aft_parallel(spec.point, spec.distribution.get(), u, v, options);
+  o.summary = summarise_loop(spec.point, spec.tangential_amplitude, o.aft);
+  const friction::AftResult& a = o.aft;
   const ContactLoopSummary& s = o.summary;
 
   std::vector<std::vector<double>> rows;
@@ -130,7 +130,7 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
   for (Eigen::Index k = 0; k < a.u.size(); ++k) {
     rows.push_back({static_cast<double>(k + 1), 360.0 * static_cast<double>(k) / spec.samples, a.u[k], a.v[k], a.t[k],
                     a.n[k], a.w[k]});
-    states.emplace_back(contact::state_name(a.state[static_cast<size_t>(k)]));
+    states.emplace_back(friction::state_name(a.state[static_cast<size_t>(k)]));
   }
   ResultTable h = table_from_rows("hysteresis",
                                   {"instant", "phase_deg", "relative_tangential_m", "relative_normal_m",
@@ -140,13 +140,13 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
   o.tables.emplace("hysteresis", std::move(h));
 
   // The closed forms hold at constant normal load only.
-  const bool constant_normal = spec.normal_amplitude == 0.0 || spec.law.kn == 0.0;
+  const bool constant_normal = spec.normal_amplitude == 0.0 || spec.point.kn == 0.0;
   JenkinsLoopClosedForm cf{kNan, kNan, kNan};
   if (constant_normal && !spec.distribution) {
-    cf = jenkins_loop_closed_form(spec.law, spec.tangential_amplitude);
+    cf = jenkins_loop_closed_form(spec.point, spec.tangential_amplitude);
   } else if (constant_normal) {
     // Another law gives its loop energy (and so the loss stiffness energy / (pi U^2)), when it has one.
-    if (const auto energy = spec.distribution->closed_form_energy(spec.law, spec.tangential_amplitude)) {
+    if (const auto energy = spec.distribution->closed_form_energy(spec.point, spec.tangential_amplitude)) {
       cf.energy = *energy;
       cf.damping = *energy / (std::numbers::pi * spec.tangential_amplitude * spec.tangential_amplitude);
     }
@@ -161,7 +161,7 @@ ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec) {
            "closed_form_damping_n_per_m", "max_t_over_mu_n", "max_force_when_open_n", "min_normal_n", "max_normal_n",
            "periods", "closed"},
           {{1.0, s.dissipated_energy, cf.energy, s.max_tangential_force, s.stick_slope, s.stick_fraction,
-            s.slip_fraction, s.lift_off_fraction, lift_off_fraction_closed_form(spec.law, spec.normal_amplitude),
+            s.slip_fraction, s.lift_off_fraction, lift_off_fraction_closed_form(spec.point, spec.normal_amplitude),
             s.equivalent_stiffness, s.equivalent_damping, cf.stiffness, cf.damping, s.max_t_over_mu_n,
             s.max_force_when_open, s.min_normal, s.max_normal, static_cast<double>(a.periods), a.closed ? 1.0 : 0.0}}));
   return o;

@@ -1,11 +1,11 @@
 // The friction-contact test rig (analysis type "contact_loop"): the steady hysteresis loop of one
 // Jenkins contact under an imposed relative motion (analysis/contact_loop_spec.hpp), sampled by the
-// AFT march of contact/aft.hpp with H = 1 inputs, its dissipated energy, stick/slip/lift-off
+// AFT march of friction/aft.hpp with H = 1 inputs, its dissipated energy, stick/slip/lift-off
 // fractions and first-harmonic describing function, with the closed forms at constant normal load.
 // Units: SI.
 #pragma once
 #include "analysis/contact_loop_spec.hpp"
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 #include "results/table.hpp"
 
 namespace bb {
@@ -23,11 +23,11 @@ struct JenkinsLoopClosedForm {
   double damping = 0.0;    // c_eq [N/m], the quadrature (loss) stiffness
 };
 // Throws std::invalid_argument for invalid parameters or U <= 0.
-JenkinsLoopClosedForm jenkins_loop_closed_form(const contact::JenkinsParameters& law, double amplitude);
+JenkinsLoopClosedForm jenkins_loop_closed_form(const friction::PointParameters& law, double amplitude);
 
 // Fraction of the period with n0 + kn V cos(.) < 0: the arc cos(x) < -c, c = n0 / (kn V), has length
 // 2 acos(c), so acos(c) / pi; 0 when kn V <= n0.
-double lift_off_fraction_closed_form(const contact::JenkinsParameters& law, double normal_amplitude);
+double lift_off_fraction_closed_form(const friction::PointParameters& law, double normal_amplitude);
 
 struct ContactLoopSummary {
   double dissipated_energy = 0.0;     // loop area, trapezoid over the samples [J]
@@ -42,8 +42,8 @@ struct ContactLoopSummary {
 };
 
 struct ContactLoopOutcome {
-  ResultTables tables;     // hysteresis, loop_summary
-  contact::AftResult aft;  // the last marched period at the samples, and the periods/closure record
+  ResultTables tables;      // hysteresis, loop_summary
+  friction::AftResult aft;  // the last marched period at the samples, and the periods/closure record
   ContactLoopSummary summary;
 };
 
@@ -52,7 +52,7 @@ struct ContactLoopOutcome {
 ContactLoopOutcome run_contact_loop(const ContactLoopSpec& spec);
 
 // The loop's numbers from a marched period (exposed for the unit tests).
-ContactLoopSummary summarise_loop(const contact::JenkinsParameters& law, double tangential_amplitude,
-                                  const contact::AftResult& aft);
+ContactLoopSummary summarise_loop(const friction::PointParameters& law, double tangential_amplitude,
+                                  const friction::AftResult& aft);
 
 }  // namespace bb

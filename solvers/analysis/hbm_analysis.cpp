@@ -14,12 +14,12 @@
 #include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
-#include "contact/state_fractions.hpp"
 #include "forced/hbm_levels.hpp"
 #include "forced/hbm_nonlinear_modes.hpp"
 #include "forced/hbm_response.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
+#include "friction/state_fractions.hpp"
 
 namespace bb {
 namespace {
@@ -27,11 +27,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 
-// Energy the contact dissipates per cycle: T against u, u's coefficients from its samples (exact:
-// u holds H harmonics and the AFT takes at least 2H + 1 samples).
-double friction_work(const contact::AftResult& a) {
-  const int h = contact::harmonics_of(a.tangential.size());
-  return contact::cycle_work(a.tangential, contact::analysis_matrix(h, static_cast<int>(a.u.size())) * a.u);
+// Energy the contact dissipates per cycle: T against u along each tangential direction, u's
+// coefficients from its samples (exact: u holds H harmonics and the AFT takes at least 2H + 1 samples).
+double friction_work(const friction::AftResult& a) {
+  const Eigen::Index m = a.normal.size();
+  const Eigen::MatrixXd analysis = friction::analysis_matrix(friction::harmonics_of(m), static_cast<int>(a.u.size()));
+  double work = friction::cycle_work(a.tangential.head(m), analysis * a.u);
+  if (a.u_2.size() > 0) work += friction::cycle_work(a.tangential.tail(m), analysis * a.u_2);
+  return work;
 }
 
 // A level whose sweep found no solution, or a peak whose refinement failed, is a failed run: a
@@ -96,8 +99,8 @@ void add_peak_tables(HbmOutcome& o, const HbmSpec& spec) {
            e.normal,
            std::abs(e.excitation - e.viscous - e.friction - e.normal) / std::max(std::abs(e.excitation), 1e-300)});
       for (size_t c = 0; c < pk.solution.contacts.size(); ++c) {
-        const contact::AftResult& a = pk.solution.contacts[c];
-        const contact::StateFractions f = contact::state_fractions(a.state);
+        const friction::AftResult& a = pk.solution.contacts[c];
+        const friction::StateFractions f = friction::state_fractions(a.state);
         state_rows.push_back({key * 1000 + static_cast<double>(k + 1) * 100 + static_cast<double>(c + 1), level.force,
                               pk.frequency_hz, f.stick, f.slip, f.lift_off, a.normal[0], a.n.minCoeff(), a.n.maxCoeff(),
                               friction_work(a)});

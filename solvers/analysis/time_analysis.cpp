@@ -14,9 +14,9 @@
 #include "common/parallel_indices.hpp"
 #include "common/progress_clock.hpp"
 #include "common/seconds_since.hpp"
-#include "contact/jenkins_contact.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
+#include "friction/jenkins.hpp"
 #include "timeint/newmark.hpp"
 #include "timeint/shooting.hpp"
 

@@ -74,7 +74,7 @@ std::optional<Eigen::VectorXd> harmonic_balance_start(const hbm::HarmonicBalance
     const Eigen::VectorXd& t = forces.contacts[static_cast<size_t>(k)].tangential;
     double t0 = t[0];
     for (Index j = 1; j < t.size(); j += 2) t0 += t[j];
-    x[3 * n + k] = e.tangential.dot(x.head(n)) - e.tangential_offset - t0 / e.law.kt;
+    x[3 * n + k] = e.tangential.dot(x.head(n)) - e.tangential_offset - t0 / e.point.kt;
   }
   return x;
 }

@@ -23,7 +23,8 @@ struct TimeSpec {
   PeriodMap period_map = PeriodMap::exact;
   bool floquet = false;  // shooting only: Floquet multipliers and stability per frequency
   // Shooting on the exact flow only: a stuck contact held rigidly (Coulomb's law; its kt unused)
-  // instead of the Jenkins spring (case key stick = "rigid"; "elastic", the default).
+  // instead of the Jenkins spring (set by the parser where every contact has law = "coulomb",
+  // friction/coulomb_law.hpp).
   bool rigid_stick = false;
   HbmSpec system;                  // the grid sweep (frequency_hz, step_hz), levels, model; harmonics = DFT harmonics
   int steps_per_period = 128;      // dt = T / steps_per_period (eq 3.42)

@@ -267,17 +267,17 @@ void add_history_tables(TimeOutcome& o, const TimeSpec& spec) {
       std::vector<std::string> states;
       double stick = 0, slip = 0, open = 0, coulomb = 0, open_force = 0;
       double su = 0, st = 0, suu = 0, sut = 0, n_stick = 0;
-      const double mu = p.model.contacts[c].law.mu, kt = p.model.contacts[c].law.kt;
+      const double mu = p.model.contacts[c].point.mu, kt = p.model.contacts[c].point.kt;
       for (size_t i = 0; i < s.size(); ++i) {
         loop.push_back({static_cast<double>(i + 1), h.time[i], s[i].u, s[i].tangential, s[i].normal, s[i].slider});
-        states.emplace_back(contact::state_name(s[i].state));
+        states.emplace_back(friction::state_name(s[i].state));
         if (i == 0) continue;  // the start instant repeats the previous period's end
         switch (s[i].state) {
-          case contact::ContactState::stick:
+          case friction::ContactState::stick:
             ++stick;
             su += s[i].u, st += s[i].tangential, suu += s[i].u * s[i].u, sut += s[i].u * s[i].tangential, ++n_stick;
             break;
-          case contact::ContactState::lift_off:
+          case friction::ContactState::lift_off:
             ++open;
             open_force = std::max({open_force, std::abs(s[i].tangential), s[i].normal});
             break;

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact/friction_law.hpp"
+#include "friction/masing.hpp"
 
 namespace bb {
 namespace {
@@ -38,7 +38,8 @@ WorkEstimate combine(WorkEstimate a, const WorkEstimate& b) {
 // The Jenkins sliders the solvers see: an Iwan joint is as many as its distribution's shares.
 double slider_count(const HbmSpec& s) {
   double n = 0.0;
-  for (const HbmContactSpec& c : s.contacts) n += c.distribution ? static_cast<double>(c.distribution->shares().size()) : 1.0;
+  for (const HbmContactSpec& c : s.contacts)
+    n += c.distribution ? static_cast<double>(c.distribution->shares().size()) : 1.0;
   return n + (s.damper ? static_cast<double>(s.damper->points.size()) : 0.0);
 }
 

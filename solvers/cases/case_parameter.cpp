@@ -34,23 +34,23 @@ bool law_key(const std::string& t) {
          !std::isdigit(static_cast<unsigned char>(t.front()));
 }
 
-std::optional<contact::LawParameter> law_of(const std::string& key) {
-  if (key == "kn") return contact::law_kn;
-  if (key == "kt") return contact::law_kt;
-  if (key == "mu") return contact::law_mu;
-  if (key == "n0") return contact::law_n0;
+std::optional<friction::LawParameter> law_of(const std::string& key) {
+  if (key == "kn") return friction::law_kn;
+  if (key == "kt") return friction::law_kt;
+  if (key == "mu") return friction::law_mu;
+  if (key == "n0") return friction::law_n0;
   return std::nullopt;
 }
 
-double& law_field(contact::JenkinsParameters& law, contact::LawParameter p) {
+double& law_field(friction::PointParameters& law, friction::LawParameter p) {
   switch (p) {
-    case contact::law_kn:
+    case friction::law_kn:
       return law.kn;
-    case contact::law_kt:
+    case friction::law_kt:
       return law.kt;
-    case contact::law_mu:
+    case friction::law_mu:
       return law.mu;
-    case contact::law_n0:
+    case friction::law_n0:
       return law.n0;
   }
   throw std::logic_error("unknown law parameter");
@@ -89,7 +89,7 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
     double& operator()(const ContactLawValue& v) {
       if (auto* loop = std::get_if<ContactLoopSpec>(&spec.analysis)) {
         if (v.contact) absent(p, "a contact_loop analysis has one [analysis.contact]: leave out the index");
-        return law_field(loop->law, v.law);
+        return law_field(loop->point, v.law);
       }
       HbmSpec* hbm = system();
       if (!hbm) absent(p, "only hbm, time and contact_loop analyses have contacts");
@@ -97,12 +97,12 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
       if (*v.contact >= hbm->contacts.size())
         absent(p, fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", *v.contact,
                               hbm->contacts.size()));
-      return law_field(hbm->contacts[*v.contact].law, v.law);
+      return law_field(hbm->contacts[*v.contact].point, v.law);
     }
     double& operator()(const DamperValue& v) {
       HbmSpec* hbm = system();
       if (!hbm || !hbm->damper) absent(p, "the analysis has no [analysis.damper]");
-      if (v.law) return law_field(hbm->damper->law, *v.law);
+      if (v.law) return law_field(hbm->damper->point, *v.law);
       if (v.centre_axis) return hbm->damper->centre[*v.centre_axis];
       return (*hbm->damper).*v.member;
     }
@@ -156,9 +156,9 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
 }
 
 // The slot of the law of the contact a law's own parameter names.
-std::shared_ptr<const contact::SliderDistribution>& law_slot(CaseSpec& spec, const CaseParameter& p,
-                                                             const LawOwnValue& v) {
-  std::shared_ptr<const contact::SliderDistribution>* slot = nullptr;
+std::shared_ptr<const friction::SliderDistribution>& law_slot(CaseSpec& spec, const CaseParameter& p,
+                                                              const LawOwnValue& v) {
+  std::shared_ptr<const friction::SliderDistribution>* slot = nullptr;
   if (auto* loop = std::get_if<ContactLoopSpec>(&spec.analysis)) {
     if (v.contact) absent(p, "a contact_loop analysis has one [analysis.contact]: leave out the index");
     slot = &loop->distribution;
@@ -228,13 +228,13 @@ CaseParameter parse_parameter_path(const std::string& path) {
     p.target = ModalDampingValue{};
   else if (path == "analysis.mass")
     p.target = BackboneValue{};
-  else if (path.starts_with("analysis.backbone.frequency_hz.") || path.starts_with("analysis.backbone.damping_ratio.")) {
+  else if (path.starts_with("analysis.backbone.frequency_hz.") ||
+           path.starts_with("analysis.backbone.damping_ratio.")) {
     const bool damping = path.starts_with("analysis.backbone.damping_ratio.");
     const auto knot = index_of(after(damping ? "analysis.backbone.damping_ratio." : "analysis.backbone.frequency_hz."));
     if (!knot) return unknown();
     p.target = BackboneValue{damping ? BackboneValue::Curve::damping : BackboneValue::Curve::frequency, *knot};
-  }
-  else if (const std::string damped = after("analysis.modal_damping."); !damped.empty()) {
+  } else if (const std::string damped = after("analysis.modal_damping."); !damped.empty()) {
     if (!index_of(damped)) return unknown();
     p.target = ModalDampingValue{index_of(damped)};
   } else if (path.starts_with("analysis.model.frequency_hz.") || path.starts_with("analysis.model.modal_mass.")) {
@@ -247,7 +247,7 @@ CaseParameter parse_parameter_path(const std::string& path) {
       if (name == f.name) p.target = ArticleDimension{f.member};
     if (!std::holds_alternative<ArticleDimension>(p.target)) return unknown();
   } else if (const std::string key = after("analysis.damper."); !key.empty()) {
-    if (const auto law = law_of(key); law && *law != contact::law_n0)
+    if (const auto law = law_of(key); law && *law != friction::law_n0)
       p.target = DamperValue{law, nullptr, std::nullopt};
     else if (key == "mass")
       p.target = DamperValue{std::nullopt, &DamperSpec::mass, std::nullopt};
@@ -338,9 +338,10 @@ void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double 
       c->set_value(v->knot, value);
       const auto& a = c->amplitudes();
       if (const double lo = c->range(a.front(), a.back(), 2000).first; !(lo > 0.0))
-        throw InputError(fmt::format("'{}' = {}: the backbone's spline then reaches {:.6g} between its knots; it must "
-                                     "stay positive",
-                                     parameter.path, value, lo));
+        throw InputError(
+            fmt::format("'{}' = {}: the backbone's spline then reaches {:.6g} between its knots; it must "
+                        "stay positive",
+                        parameter.path, value, lo));
       return;
     }
   }
@@ -354,19 +355,19 @@ void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double 
     spec.model.mesh.two_blade.validate();  // DimensionError is an InputError
   } else if (std::holds_alternative<ContactLawValue>(parameter.target) ||
              std::holds_alternative<DamperValue>(parameter.target)) {
-    const auto check = [&](const contact::JenkinsParameters& law) {
+    const auto check = [&](const friction::PointParameters& law) {
       try {
-        contact::validate(law);
+        friction::validate(law);
       } catch (const std::invalid_argument& e) {
         throw InputError(fmt::format("'{}' = {}: {}", parameter.path, value, e.what()));
       }
     };
-    if (auto* loop = std::get_if<ContactLoopSpec>(&spec.analysis)) check(loop->law);
+    if (auto* loop = std::get_if<ContactLoopSpec>(&spec.analysis)) check(loop->point);
     const HbmSpec* hbm = std::get_if<HbmSpec>(&spec.analysis);
     if (auto* t = std::get_if<TimeSpec>(&spec.analysis)) hbm = &t->system;
     if (hbm) {
-      for (const HbmContactSpec& c : hbm->contacts) check(c.law);
-      if (hbm->damper) check(hbm->damper->law);
+      for (const HbmContactSpec& c : hbm->contacts) check(c.point);
+      if (hbm->damper) check(hbm->damper->point);
     }
   }
 }
@@ -400,7 +401,7 @@ std::optional<HbmParameter> hbm_parameter(const CaseParameter& parameter) {
   }
   // damper.kn is left out: the damper's seat (the sliders' offsets, from the static pre-solve)
   // moves with kn, which the derivative holds fixed.
-  if (const auto* d = std::get_if<DamperValue>(&parameter.target); d && d->law && *d->law != contact::law_kn) {
+  if (const auto* d = std::get_if<DamperValue>(&parameter.target); d && d->law && *d->law != friction::law_kn) {
     out.kind = HbmParameter::Kind::damper_law;
     out.law = *d->law;
     return out;

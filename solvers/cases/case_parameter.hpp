@@ -7,9 +7,9 @@
 #include <variant>
 
 #include "articles/two_blade.hpp"
-#include "contact/aft.hpp"
 #include "fe/plane_stress.hpp"
 #include "forced/hbm_spec.hpp"
+#include "friction/aft.hpp"
 
 namespace bb {
 
@@ -23,12 +23,12 @@ struct ArticleDimension {  // mesh.dimensions.<name> of the two-blade article
 };
 struct ContactLawValue {  // analysis.contact.<i>.<law> (hbm, time); analysis.contact.<law> (contact_loop)
   std::optional<size_t> contact;
-  contact::LawParameter law = contact::law_kt;
+  friction::LawParameter law = friction::law_kt;
 };
 // analysis.damper.{kn,kt,mu} (law), analysis.damper.{mass,inertia,centrifugal_force} (member) or
 // analysis.damper.centre.{0,1} (x or y of G: where CF acts, which shares it between the points)
 struct DamperValue {
-  std::optional<contact::LawParameter> law;
+  std::optional<friction::LawParameter> law;
   double DamperSpec::*member = nullptr;
   std::optional<size_t> centre_axis;
 };

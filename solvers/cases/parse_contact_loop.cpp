@@ -20,16 +20,16 @@ ContactLoopSpec parse_contact_loop(TomlReader& r) {
   }
   // Every law value is required: a rig states its contact, no silent default.
   TomlReader c(r.table("contact"), r.path() + ".contact", r.file());
-  s.law.kn = c.number("kn");
-  if (!(s.law.kn >= 0.0)) c.fail("kn", fmt::format("must be >= 0, found {}", s.law.kn));
-  s.law.kt = c.positive("kt");
-  s.law.mu = c.number("mu");
-  if (!(s.law.mu >= 0.0)) c.fail("mu", fmt::format("must be >= 0, found {}", s.law.mu));
-  s.law.n0 = c.number("n0");
-  if (!(s.law.n0 >= 0.0)) c.fail("n0", fmt::format("must be >= 0, found {}", s.law.n0));
-  s.distribution = parse_slider_distribution(c, s.law);
+  s.point.kn = c.number("kn");
+  if (!(s.point.kn >= 0.0)) c.fail("kn", fmt::format("must be >= 0, found {}", s.point.kn));
+  s.point.kt = c.positive("kt");
+  s.point.mu = c.number("mu");
+  if (!(s.point.mu >= 0.0)) c.fail("mu", fmt::format("must be >= 0, found {}", s.point.mu));
+  s.point.n0 = c.number("n0");
+  if (!(s.point.n0 >= 0.0)) c.fail("n0", fmt::format("must be >= 0, found {}", s.point.n0));
+  s.distribution = parse_slider_distribution(c, s.point);
   c.finish();
-  if (s.normal_amplitude > 0.0 && s.law.kn == 0.0)
+  if (s.normal_amplitude > 0.0 && s.point.kn == 0.0)
     r.fail("normal_amplitude_m", "a normal motion needs kn > 0 in [analysis.contact] (kn = 0 keeps N = n0)");
   return s;
 }

@@ -4,15 +4,16 @@
 
 #include <stdexcept>
 
-#include "contact/iwan_law.hpp"
+#include "friction/coulomb_law.hpp"
+#include "friction/coupled_slip.hpp"
+#include "friction/iwan_law.hpp"
 
 namespace bb {
 
-std::shared_ptr<const contact::SliderDistribution> parse_slider_distribution(TomlReader& r,
-                                                                             const contact::JenkinsParameters& point) {
-  const std::string law = r.choice("law", {"jenkins", "iwan"}, "jenkins");
-  if (law == "jenkins") return nullptr;
-  contact::IwanParameters p;
+namespace {
+
+std::shared_ptr<const friction::SliderDistribution> parse_iwan(TomlReader& r, const friction::PointParameters& point) {
+  friction::IwanParameters p;
   p.chi = r.number("chi");
   if (!(p.chi > -1.0 && p.chi <= 0.0))
     r.fail("chi", fmt::format("the Iwan power-law exponent must lie in (-1, 0], found {}", p.chi));
@@ -24,12 +25,29 @@ std::shared_ptr<const contact::SliderDistribution> parse_slider_distribution(Tom
                              point.mu, point.n0));
   std::string problem;
   try {
-    problem = contact::iwan_share_problem(p);
+    problem = friction::iwan_share_problem(p);
   } catch (const std::invalid_argument& e) {
     r.fail("sliders", e.what());
   }
   if (!problem.empty()) r.fail("chi", problem);
-  return std::make_shared<contact::IwanDistribution>(p);
+  return std::make_shared<friction::IwanDistribution>(p);
+}
+
+}  // namespace
+
+ContactLaw parse_contact_law(TomlReader& r, const friction::PointParameters& point, bool two_directions) {
+  const std::string law = two_directions ? r.choice("law", {"jenkins", "coulomb", "iwan", "coupled_slip"}, "jenkins")
+                                         : r.choice("law", {"jenkins", "coulomb", "iwan"}, "jenkins");
+  ContactLaw out;
+  if (law == "iwan") out.distribution = parse_iwan(r, point);
+  if (law == "coulomb") out.law = friction::coulomb_law();
+  if (law == "coupled_slip") out.law = friction::coupled_slip_law();
+  return out;
+}
+
+std::shared_ptr<const friction::SliderDistribution> parse_slider_distribution(TomlReader& r,
+                                                                              const friction::PointParameters& point) {
+  return r.choice("law", {"jenkins", "iwan"}, "jenkins") == "iwan" ? parse_iwan(r, point) : nullptr;
 }
 
 }  // namespace bb

@@ -35,14 +35,14 @@ std::vector<std::pair<PointDof, double>> parse_combination(TomlReader& r, const 
 
 // kn, kt, mu (and n0 when `preload`), checked by the contact law itself. kn may be 0 or left out
 // (constant normal load) where `kn_optional`.
-contact::JenkinsParameters parse_law(TomlReader& r, bool preload, bool kn_optional = false) {
-  contact::JenkinsParameters law;
+friction::PointParameters parse_law(TomlReader& r, bool preload, bool kn_optional = false) {
+  friction::PointParameters law;
   law.kn = kn_optional ? r.non_negative("kn", 0.0) : r.positive("kn");
   law.kt = r.positive("kt");
   law.mu = r.non_negative("mu", 0.0);
   if (preload) law.n0 = r.non_negative("n0", 0.0);
   try {
-    contact::validate(law);
+    friction::validate(law);
   } catch (const std::invalid_argument& e) {
     r.fail("kn", e.what());
   }
@@ -55,9 +55,21 @@ HbmContactSpec parse_contact(TomlReader r) {
   c.name = r.name("name");
   // An Iwan joint usually sits at a constant normal load (kn = 0); a Jenkins point needs its kn.
   const bool jenkins = r.optional_string("law").value_or("jenkins") == "jenkins";
-  c.law = parse_law(r, true, !jenkins);
-  c.distribution = parse_slider_distribution(r, c.law);
+  c.point = parse_law(r, true, !jenkins);
+  const ContactLaw law = parse_contact_law(r, c.point, true);
+  c.law = law.law;
+  c.distribution = law.distribution;
   c.tangential = parse_combination(r, "tangential");
+  if (c.law->directions() == 2) {
+    if (!r.has("tangential_2"))
+      r.fail("tangential_2",
+             fmt::format("the {} law needs its second tangential direction, e.g. {{ \"A.z\" = 1.0 }}", c.law->name()));
+    c.tangential_2 = parse_combination(r, "tangential_2");
+  } else if (r.has("tangential_2")) {
+    r.fail("tangential_2", fmt::format("only a law of two tangential directions (coupled_slip) takes one; this "
+                                       "contact's law is {}",
+                                       c.law->name()));
+  }
   if (r.has("normal")) c.normal = parse_combination(r, "normal");
   if (r.has("tangential_next")) c.tangential_next = parse_combination(r, "tangential_next");
   if (r.has("normal_next")) c.normal_next = parse_combination(r, "normal_next");
@@ -83,7 +95,10 @@ DamperSpec parse_damper(TomlReader r) {
     if (!(a > 0.0 && a < 90.0)) r.fail(key, "must lie in (0, 90) degrees");
   }
   d.centrifugal_force = r.positive("centrifugal_force");
-  d.law = parse_law(r, false);
+  d.point = parse_law(r, false);
+  if (r.optional_string("law").value_or("") == "iwan")
+    r.fail("law", "a damper point is one slider of its own law (jenkins or coupled_slip), not an Iwan distribution");
+  d.law = parse_contact_law(r, d.point, true).law;
   int i = 0;
   std::set<std::string> names;
   for (const toml::node& n : r.array("points")) {
@@ -225,11 +240,29 @@ void parse_cyclic(TomlReader& r, HbmSpec& s, bool harmonic_balance) {
     damper.face_angle_deg = d.number("face_angle_deg");
     if (!(damper.face_angle_deg > 0.0 && damper.face_angle_deg < 90.0))
       d.fail("face_angle_deg", "must lie in (0, 90) degrees: a flat face (0) leaves the damper's mean position free");
-    damper.law = parse_law(d, false);
-    damper.distribution = parse_slider_distribution(d, damper.law);
+    damper.point = parse_law(d, false);
+    damper.distribution = parse_slider_distribution(d, damper.point);
     d.finish();
     s.gap_damper = damper;
   }
+}
+
+// A law of two tangential directions runs in the harmonic balance's sweeps only: the time
+// integration keeps one slider coordinate per contact, the sensitivities and the nonlinear modes
+// are built for one direction, a cyclic contact for one.
+void refuse_two_directions_beyond_sweeps(TomlReader& r, const HbmSpec& s, bool harmonic_balance) {
+  bool two = s.damper && s.damper->law->directions() == 2;
+  for (const HbmContactSpec& c : s.contacts) two = two || c.law->directions() == 2;
+  if (!two) return;
+  const char* refused = !harmonic_balance          ? "type"
+                        : !s.sensitivities.empty() ? "sensitivities"
+                        : s.nonlinear_modes        ? "nonlinear_modes"
+                        : s.cyclic                 ? "cyclic"
+                                                   : nullptr;
+  if (refused)
+    r.fail(refused,
+           "a contact of two tangential directions (law = \"coupled_slip\") is solved by the harmonic balance's "
+           "sweeps only (no time integration, sensitivities, nonlinear modes or cyclic sector)");
 }
 
 HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required) {
@@ -431,6 +464,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     s.nonlinear_modes = parse_nonlinear_modes(TomlReader(*t, r.path() + ".nonlinear_modes", r.file()), s);
   }
   parse_cyclic(r, s, contacts_required);
+  refuse_two_directions_beyond_sweeps(r, s, contacts_required);
   std::set<std::string> table_names;  // the levels' tables, then each stepped sine's
   for (double f : s.force_levels) table_names.insert(hbm_frf_table_name(f));
   s.stepped_sines = parse_stepped_sines(r, folder, table_names);

@@ -5,8 +5,36 @@
 #include <cmath>
 
 #include "cases/parse_hbm.hpp"
+#include "common/errors.hpp"
 
 namespace bb {
+
+namespace {
+
+// Coulomb's law (law = "coulomb") asks the exact flow to hold stuck contacts rigidly; the flow holds
+// every one or none, and only shooting on the exact flow has that flow.
+bool rigid_stick(const TimeSpec& t) {
+  size_t rigid = 0;
+  const HbmContactSpec* first = nullptr;
+  for (const HbmContactSpec& c : t.system.contacts)
+    if (c.law->rigid_stick()) {
+      ++rigid;
+      if (!first) first = &c;
+    }
+  if (rigid == 0) return false;
+  const auto fail = [&](const std::string& what) {
+    throw InputError(fmt::format("{}: 'law': {}", first->at.where(), what));
+  };
+  if (rigid != t.system.contacts.size() || t.system.damper)
+    fail("the exact flow holds every stuck contact rigidly or none: give every contact law = \"coulomb\"");
+  if (t.method != TimeSpec::Method::shooting || t.period_map != TimeSpec::PeriodMap::exact)
+    fail(
+        "\"coulomb\" (Coulomb's stick) applies to method = \"shooting\" on the exact flow (period_map = \"exact\"); "
+        "elsewhere write law = \"jenkins\" with a stiff kt");
+  return true;
+}
+
+}  // namespace
 
 TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
   TimeSpec t;
@@ -18,12 +46,10 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
     t.period_map = r.choice("period_map", {"exact", "newmark"}) == "newmark" ? TimeSpec::PeriodMap::newmark
                                                                              : TimeSpec::PeriodMap::exact;
   }
-  if (r.has("stick")) {
-    t.rigid_stick = r.choice("stick", {"elastic", "rigid"}) == "rigid";
-    if (t.rigid_stick && (t.method != TimeSpec::Method::shooting || t.period_map != TimeSpec::PeriodMap::exact))
-      r.fail("stick",
-             "\"rigid\" (Coulomb's stick) applies to method = \"shooting\" on the exact flow (period_map = \"exact\")");
-  }
+  if (r.has("stick"))
+    r.fail("stick",
+           "Coulomb's stick is a friction law now: write law = \"coulomb\" in each [[analysis.contact]] and leave "
+           "out stick");
   if (r.has("floquet")) {
     t.floquet = r.boolean("floquet", false);
     if (t.floquet && t.method != TimeSpec::Method::shooting)
@@ -70,6 +96,7 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
       r.fail("alpha", "applies to method = \"newmark\" (or to shooting with period_map = \"newmark\")");
   }
   t.system = parse_hbm(r, folder, false);
+  t.rigid_stick = rigid_stick(t);
   if (t.system.harmonic_tolerance > 0.0)
     r.fail("harmonic_tolerance", "applies to an hbm analysis (a time integration carries every harmonic)");
   if (t.system.sweep.method != HbmSweepSpec::Method::grid)

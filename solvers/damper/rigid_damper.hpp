@@ -17,7 +17,7 @@
 //    (cos beta_L, sin beta_L).
 //  - Relative displacement = platform (blade) point - damper point: u = t . (d_blade - d_damper),
 //    v = n . (d_blade - d_damper). v > 0 PRESSES the bodies together (the platform moves into the
-//    damper, or the damper moves against n into the platform): contact/jenkins_contact.hpp's
+//    damper, or the damper moves against n into the platform): friction/jenkins.hpp's
 //    convention, so a row pair (a_t, a_n) below feeds jenkins_step directly.
 //  - Contact forces (T, N) act on the DAMPER as T t + N n and on the blade as -(T t + N n). With
 //    Jenkins' T = kt (u - w) this is the force that drags the damper along with the platform, and

@@ -108,10 +108,10 @@ void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& s
   const Index n = m.mass.rows();
   m.static_load = Eigen::VectorXd::Zero(n);
   m.harmonic_load = Eigen::VectorXcd::Zero(n);
-  contact::JenkinsParameters law = g.law;
+  friction::PointParameters law = g.point;
   law.n0 = 0.0;
   // Every solver sees the face's law as its Jenkins sliders on the same relative motion.
-  const std::vector<contact::JenkinsParameters> sliders = contact::parallel_sliders(law, g.distribution.get());
+  const std::vector<friction::PointParameters> sliders = friction::parallel_sliders(law, g.distribution.get());
   const double cb = std::cos(g.face_angle_deg * kTwoPi / 360.0), sb = std::sin(g.face_angle_deg * kTwoPi / 360.0);
   const std::string where = spec.at.where() + ": 'analysis'";
   for (const FrfForce& f : spec.forces) master_index(first_sector, f.dof, where + " forces");
@@ -158,7 +158,7 @@ void add_dampers_and_loads(PreparedHbm& p, const Model& sector, const HbmSpec& s
     const std::string suffix = j == 0 ? "" : fmt::format("@{}", j);
     for (auto [element, name] : {std::pair{own, "own"}, std::pair{next, "next"}})
       for (size_t i = 0; i < sliders.size(); ++i) {
-        element.law = sliders[i];
+        element.point = sliders[i];
         m.contacts.push_back(element);
         p.contact_names.push_back(sliders.size() == 1 ? name + suffix : fmt::format("{}.{}{}", name, i + 1, suffix));
       }

@@ -19,7 +19,7 @@ namespace {
 static_assert(sizeof(HbmLevel) == 512);
 static_assert(sizeof(HbmPeak) == 472);
 static_assert(sizeof(hbm::HbmSolution) == 112);
-static_assert(sizeof(contact::AftResult) == 272);
+static_assert(sizeof(friction::AftResult) == 288);
 static_assert(sizeof(hbm::ContinuationResult) == 96);
 static_assert(sizeof(hbm::ContinuationPoint) == 56);
 static_assert(sizeof(hbm::HillStability) == 120);
@@ -114,9 +114,9 @@ struct Reader {
 };
 
 template <class A>
-void fields(A& a, contact::AftResult& r) {
+void fields(A& a, friction::AftResult& r) {
   a(r.tangential, r.normal, r.dtangential_du, r.dtangential_dv, r.dnormal_dv, r.dtangential_dlaw, r.dnormal_dlaw, r.u,
-    r.v, r.t, r.n, r.w, r.state, r.periods, r.closed, r.closure_mismatch);
+    r.u_2, r.v, r.t, r.n, r.w, r.state, r.periods, r.closed, r.closure_mismatch);
 }
 template <class A>
 void fields(A& a, hbm::HbmSolution& s) {

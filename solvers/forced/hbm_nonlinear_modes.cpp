@@ -10,8 +10,8 @@
 
 #include "common/constants.hpp"
 #include "common/errors.hpp"
-#include "contact/state_fractions.hpp"
 #include "forced/hbm_response.hpp"
+#include "friction/state_fractions.hpp"
 
 namespace bb {
 namespace {
@@ -47,8 +47,8 @@ BackbonePoint backbone_point(const PreparedHbm& p, const hbm::NonlinearModePoint
     b.ip = peak_values(p, z, 0).component;
     b.oop = peak_values(p, z, 1).component;
   }
-  for (const contact::AftResult& a : pt.contacts) {  // every contact has the same samples
-    const contact::StateFractions f = contact::state_fractions(a.state);
+  for (const friction::AftResult& a : pt.contacts) {  // every contact has the same samples
+    const friction::StateFractions f = friction::state_fractions(a.state);
     b.stick += f.stick / static_cast<double>(pt.contacts.size());
     b.lift += f.lift_off / static_cast<double>(pt.contacts.size());
   }

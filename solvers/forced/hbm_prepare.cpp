@@ -70,6 +70,21 @@ Eigen::RowVectorXd combination_row(const PreparedHbm& p, const ReducedModel& bla
   return row;
 }
 
+// The second tangential row of a damper point of a two-direction law: the platform's z (the planar
+// damper holds its own z), zero for a rigid platform.
+Eigen::RowVectorXd out_of_plane_row(const ReducedModel& blades, const DamperPointSpec& point, Index n) {
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(n);
+  if (point.point.empty()) return row;
+  const auto z = blades.index_of(point.point, 2);
+  if (!z)
+    throw InputError(
+        fmt::format("'analysis.damper': point '{}' has no z DOF for the second direction of its law "
+                    "(a planar model: write law = \"jenkins\")",
+                    point.point));
+  row[*z] = 1.0;
+  return row;
+}
+
 // The sector's model replaced by the whole ring: the first sector keeps the DOF and contact
 // indices (responses, forces, contact slider ranges), the others are named "<name>@<sector>".
 void expand_to_whole_ring(PreparedHbm& p, const HbmCyclicSpec& cyclic) {
@@ -124,10 +139,14 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCach
     m.static_load[dof_index(p, blades, dof, in_analysis + " static_loads")] += f;
   if (spec.damper) {
     const damper::ContactKinematics kin = damper::contact_kinematics(*p.damper, p.blade_dofs);
-    contact::JenkinsParameters law = spec.damper->law;
+    friction::PointParameters law = spec.damper->point;
     law.n0 = 0.0;  // contacts just touch at q = 0; CF loads them through the static balance
     for (size_t c = 0; c < p.damper->contacts.size(); ++c) {
-      m.contacts.push_back({law, kin.tangential.row(static_cast<Index>(c)), kin.normal.row(static_cast<Index>(c))});
+      friction::ContactElement element{law, kin.tangential.row(static_cast<Index>(c)),
+                                       kin.normal.row(static_cast<Index>(c))};
+      element.law = spec.damper->law;
+      if (element.law->directions() == 2) element.tangential_2 = out_of_plane_row(blades, spec.damper->points[c], n);
+      m.contacts.push_back(std::move(element));
       p.contact_names.push_back(p.damper->contacts[c].name);
     }
     m.static_load += damper::centrifugal_load(p.blade_dofs, spec.damper->centrifugal_force);
@@ -146,16 +165,18 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCach
     const Eigen::RowVectorXd normal =
         c.normal.empty() ? Eigen::RowVectorXd::Zero(n) : combination_row(p, blades, c.normal, n, where);
     // Every solver sees the law as its Jenkins sliders on the same relative motion.
-    const std::vector<contact::JenkinsParameters> sliders = contact::parallel_sliders(c.law, c.distribution.get());
+    const std::vector<friction::PointParameters> sliders = friction::parallel_sliders(c.point, c.distribution.get());
     p.contact_sliders.push_back({m.contacts.size(), m.contacts.size() + sliders.size()});
     friction::ContactElement element{{}, tangential, normal};
+    element.law = c.law;
+    if (!c.tangential_2.empty()) element.tangential_2 = combination_row(p, blades, c.tangential_2, n, where);
     if (spec.cyclic) {
       element.tangential_next = combination_row(p, blades, c.tangential_next, n, where);
       element.normal_next = combination_row(p, blades, c.normal_next, n, where);
       element.next_phase = kTwoPi * spec.cyclic->engine_order / spec.cyclic->sectors;
     }
     for (size_t i = 0; i < sliders.size(); ++i) {
-      element.law = sliders[i];
+      element.point = sliders[i];
       m.contacts.push_back(element);
       p.contact_names.push_back(sliders.size() == 1 ? c.name : fmt::format("{}.{}", c.name, i + 1));
     }

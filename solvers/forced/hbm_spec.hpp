@@ -12,10 +12,11 @@
 #include <vector>
 
 #include "common/source_location.hpp"
-#include "contact/aft.hpp"
-#include "contact/friction_law.hpp"
-#include "contact/jenkins_contact.hpp"
 #include "forced/linear_model_spec.hpp"
+#include "friction/aft.hpp"
+#include "friction/friction_law.hpp"
+#include "friction/jenkins.hpp"
+#include "friction/masing.hpp"
 
 namespace bb {
 
@@ -27,8 +28,11 @@ struct HbmContactSpec {
   // With [analysis.cyclic]: the terms of the next sector's DOFs (named as this sector's), which in
   // the travelling wave move as this sector's shifted by 2 pi EO / N (friction/friction_system.hpp).
   std::vector<std::pair<PointDof, double>> tangential_next, normal_next;
-  contact::JenkinsParameters law;  // the point: kn, n0, its stuck kt and its Coulomb limit mu
-  std::shared_ptr<const contact::SliderDistribution> distribution;  // null: one Jenkins slider
+  friction::PointParameters point;  // the point: kn, n0, its stuck kt and its Coulomb limit mu
+  std::shared_ptr<const friction::SliderDistribution> distribution;            // null: one Jenkins slider
+  std::shared_ptr<const friction::FrictionLaw> law = friction::jenkins_law();  // what the solvers call
+  // The second tangential direction of a law of two (coupled_slip); empty otherwise.
+  std::vector<std::pair<PointDof, double>> tangential_2;
   SourceLocation at;
 };
 
@@ -45,8 +49,11 @@ struct DamperSpec {
   double mass = 0.0, inertia = 0.0;  // [kg], [kg m^2] about G
   std::array<double, 2> centre{};    // G in the model frame [m]
   double left_face_deg = 45.0, right_face_deg = 45.0;
-  double centrifugal_force = 0.0;  // CF along +y at G [N]
-  contact::JenkinsParameters law;  // kn, kt, mu of every point (n0 = 0: the static solve sets the load)
+  double centrifugal_force = 0.0;   // CF along +y at G [N]
+  friction::PointParameters point;  // kn, kt, mu of every point (n0 = 0: the static solve sets the load)
+  // Every point's law; one of two directions takes the blade point's z as its second (the planar
+  // damper does not move out of its plane).
+  std::shared_ptr<const friction::FrictionLaw> law = friction::jenkins_law();
   std::vector<DamperPointSpec> points;
 };
 
@@ -78,8 +85,8 @@ struct HbmParameter {
                             //   mass (else the frequency)
   size_t row = 0, col = 0;  // lumped_matrix: (row, col) and its mirror; mode_damping, modal_coordinate:
                             //   the mode (row)
-  contact::LawParameter law = contact::law_kt;  // contact_law, damper_law
-  std::string label;                            // its case path, e.g. "analysis.contact.0.kt": names the columns
+  friction::LawParameter law = friction::law_kt;  // contact_law, damper_law
+  std::string label;                              // its case path, e.g. "analysis.contact.0.kt": names the columns
 };
 
 // Nonlinear modes of the model (hbm/nonlinear_modes.hpp) along a modal amplitude range, and the
@@ -119,12 +126,12 @@ struct HbmCyclicSpec {
 // (0 deg) nothing but friction holds the damper's mean circumferential position, which a slipping
 // contact leaves free (the balance is then singular).
 struct GapDamperSpec {
-  double mass = 0.0;                                                // [kg]
-  double face_angle_deg = 45.0;                                     // in (0, 90)
-  std::string own, next;                                            // master points of the sector
-  double centrifugal_force = 0.0;                                   // [N], outward at the gap
-  contact::JenkinsParameters law;                                   // kn, kt, mu of each face
-  std::shared_ptr<const contact::SliderDistribution> distribution;  // null: one Jenkins slider per face
+  double mass = 0.0;                                                 // [kg]
+  double face_angle_deg = 45.0;                                      // in (0, 90)
+  std::string own, next;                                             // master points of the sector
+  double centrifugal_force = 0.0;                                    // [N], outward at the gap
+  friction::PointParameters point;                                   // kn, kt, mu of each face
+  std::shared_ptr<const friction::SliderDistribution> distribution;  // null: one Jenkins slider per face
   SourceLocation at;
 };
 

@@ -155,19 +155,19 @@ std::vector<hbm::ModelDerivative> log_derivatives(const PreparedHbm& p, const Hb
     hbm::ModelDerivative d;
     d.laws.assign(m.contacts.size(), {});
     for (size_t k = first; k < last; ++k) {
-      const contact::JenkinsParameters& law = m.contacts[k].law;
-      contact::JenkinsParameters& dl = d.laws[k];
+      const friction::PointParameters& law = m.contacts[k].point;
+      friction::PointParameters& dl = d.laws[k];
       switch (parameter.law) {
-        case contact::law_kn:
+        case friction::law_kn:
           dl.kn = law.kn;
           break;
-        case contact::law_kt:
+        case friction::law_kt:
           dl.kt = law.kt;
           break;
-        case contact::law_mu:
+        case friction::law_mu:
           dl.mu = law.mu;
           break;
-        case contact::law_n0:
+        case friction::law_n0:
           dl.n0 = law.n0;
           break;
       }

@@ -46,7 +46,7 @@ Eigen::MatrixXcd dynamic_stiffness(const FrictionModel& m, int harmonic, double 
   return d;
 }
 
-void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowed) {
+void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowed, bool two_directions_allowed) {
   const Index n = m.mass.rows();
   const auto fail = [&who](const std::string& what) { throw std::invalid_argument(fmt::format("{}: {}", who, what)); };
   if (n == 0 || m.mass.cols() != n || m.stiffness.rows() != n || m.stiffness.cols() != n)
@@ -75,9 +75,23 @@ void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowe
         fail(fmt::format("contact {}: the next sector's rows must have {} finite entries, the phase be finite", k, n));
     }
     try {
-      contact::validate(e.law);
+      friction::validate(e.point);
     } catch (const std::invalid_argument& error) {
       fail(fmt::format("contact {}: {}", k, error.what()));
+    }
+    if (!e.law) fail(fmt::format("contact {}: no friction law", k));
+    if (e.law->directions() == 2) {
+      if (!two_directions_allowed)
+        fail(
+            fmt::format("contact {}: the {} law acts along two tangential directions; only the harmonic balance "
+                        "solves it (the time integration keeps one slider coordinate per contact)",
+                        k, e.law->name()));
+      if (e.tangential_2.size() != n || !e.tangential_2.allFinite())
+        fail(fmt::format("contact {}: the {} law needs a second tangential row a_t2 of {} finite entries", k,
+                         e.law->name(), n));
+      if (e.cyclic()) fail(fmt::format("contact {}: a {} contact cannot join the next sector", k, e.law->name()));
+    } else if (e.tangential_2.size() != 0) {
+      fail(fmt::format("contact {}: a second tangential row needs a law of two directions, not {}", k, e.law->name()));
     }
     if (e.tangential.size() != n || e.normal.size() != n)
       fail(fmt::format("contact {}: a_t and a_n must have {} entries (one per DOF)", k, n));
@@ -88,8 +102,10 @@ void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowe
 
 Eigen::MatrixXd stuck_stiffness(const FrictionModel& model) {
   Eigen::MatrixXd k = model.stiffness;
-  for (const ContactElement& c : model.contacts)
-    k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+  for (const ContactElement& c : model.contacts) {
+    k += c.point.kn * c.normal.transpose() * c.normal + c.point.kt * c.tangential.transpose() * c.tangential;
+    if (c.tangential_2.size() != 0) k += c.point.kt * c.tangential_2.transpose() * c.tangential_2;
+  }
   return k;
 }
 
@@ -105,7 +121,8 @@ Eigen::MatrixXcd stuck_stiffness(const FrictionModel& model, int harmonic) {
       return g;
     };
     const Eigen::RowVectorXcd gt = row(c.tangential, c.tangential_next), gn = row(c.normal, c.normal_next);
-    k += c.law.kn * gn.adjoint() * gn + c.law.kt * gt.adjoint() * gt;
+    k += c.point.kn * gn.adjoint() * gn + c.point.kt * gt.adjoint() * gt;
+    if (c.tangential_2.size() != 0) k += c.point.kt * (c.tangential_2.transpose() * c.tangential_2).cast<Complex>();
   }
   return k;
 }
@@ -155,7 +172,7 @@ FrictionSystem::FrictionSystem(const FrictionModel& model) {
   std::vector<bool> touched(static_cast<size_t>(n), false);
   for (const ContactElement& e : model.contacts)
     for (Index i = 0; i < n; ++i)
-      if (e.tangential[i] != 0.0 || e.normal[i] != 0.0 ||
+      if (e.tangential[i] != 0.0 || e.normal[i] != 0.0 || (e.tangential_2.size() != 0 && e.tangential_2[i] != 0.0) ||
           (e.cyclic() && (e.tangential_next[i] != 0.0 || e.normal_next[i] != 0.0)))
         touched[static_cast<size_t>(i)] = true;
   for (Index i = 0; i < n; ++i) (touched[static_cast<size_t>(i)] ? contact_dofs_ : other_dofs_).push_back(i);
@@ -163,6 +180,7 @@ FrictionSystem::FrictionSystem(const FrictionModel& model) {
   for (ContactElement& e : contacts_on_c_) {
     e.tangential = Eigen::RowVectorXd(e.tangential(contact_dofs_));
     e.normal = Eigen::RowVectorXd(e.normal(contact_dofs_));
+    if (e.tangential_2.size() != 0) e.tangential_2 = Eigen::RowVectorXd(e.tangential_2(contact_dofs_));
     if (e.cyclic()) {
       e.tangential_next = Eigen::RowVectorXd(e.tangential_next(contact_dofs_));
       e.normal_next = Eigen::RowVectorXd(e.normal_next(contact_dofs_));

@@ -1,8 +1,9 @@
 // The friction system every nonlinear solver shares (the harmonic balance of hbm/, the time
 // integration and shooting of timeint/; neither depends on the other): a small linear model (dense
-// M, C, K) with point Jenkins friction contacts of variable normal load (contact/jenkins_contact.hpp;
-// a law of several sliders, contact/friction_law.hpp, arrives as several contacts), and its exact
-// condensation onto the DOFs the contacts touch.
+// M, C, K) with point friction contacts of variable normal load, each with its law
+// (friction/friction_law.hpp: Jenkins by default; a Masing law of several sliders,
+// friction/masing.hpp, arrives as several Jenkins contacts), and its exact condensation onto the
+// DOFs the contacts touch.
 // Units: SI.
 //
 // Equation of motion, q the model DOFs:
@@ -26,18 +27,19 @@
 
 #include <complex>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "contact/jenkins_contact.hpp"
+#include "friction/friction_law.hpp"
 
 namespace bb::friction {
 
 // One point contact. Both rows have one entry per model DOF; zero entries leave a DOF untouched.
 struct ContactElement {
-  contact::JenkinsParameters law;  // kn, kt, mu, N0 (validated by contact::validate)
-  Eigen::RowVectorXd tangential;   // a_t: u = a_t . q
-  Eigen::RowVectorXd normal;       // a_n: v = a_n . q
+  PointParameters point;          // kn, kt, mu, N0 (validated by friction::validate)
+  Eigen::RowVectorXd tangential;  // a_t: u = a_t . q
+  Eigen::RowVectorXd normal;      // a_n: v = a_n . q
   // The slider's rest position: u = a_t . q - tangential_offset enters the law, so a contact that
   // closed at a static seat (e.g. a damper pressed in by CF with no friction) carries no tangential
   // force there and a stuck contact stays continuous with one that starts to slip.
@@ -50,6 +52,10 @@ struct ContactElement {
   // contact (in harmonic h the shift turns the coefficients by h phi). Empty rows: no next sector.
   Eigen::RowVectorXd tangential_next{}, normal_next{};
   double next_phase = 0.0;  // phi [rad]
+  // The second tangential direction of a law of two (coupled slip): u_2 = a_t2 . q, its force
+  // -a_t2^T T_2 on the DOFs; empty for a law of one. Not with a next sector.
+  Eigen::RowVectorXd tangential_2{};
+  std::shared_ptr<const FrictionLaw> law = jenkins_law();  // never null
 
   bool cyclic() const { return tangential_next.size() > 0 || normal_next.size() > 0; }
 };
@@ -90,9 +96,12 @@ Eigen::MatrixXcd dynamic_stiffness(const FrictionModel& model, int harmonic, dou
 
 // Fills an empty C and empty loads with zeros (and a cyclic contact's empty next rows), then checks
 // sizes, finiteness and every contact law of `model` (contacts may be empty); cyclic contacts only
-// where `cyclic_allowed` (the harmonic balance). Throws std::invalid_argument, the message prefixed
-// by `who`. Shared by the harmonic balance and the time integration.
-void validate_model(FrictionModel& model, const std::string& who, bool cyclic_allowed = false);
+// where `cyclic_allowed` (the harmonic balance), laws of two tangential directions only where
+// `two_directions_allowed` (the harmonic balance: the time integration keeps one slider coordinate
+// per contact). Throws std::invalid_argument, the message prefixed by `who`. Shared by the harmonic
+// balance and the time integration.
+void validate_model(FrictionModel& model, const std::string& who, bool cyclic_allowed = false,
+                    bool two_directions_allowed = false);
 
 // K with every contact replaced by its springs, kn on a_n and kt on a_t (the fully stuck limit, eq 3.51).
 // A cyclic contact adds its own rows' springs only; the nodal diameters' operators are not used.

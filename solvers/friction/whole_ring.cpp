@@ -41,7 +41,7 @@ FrictionModel whole_ring(const FrictionModel& sector_model, int sectors) {
     whole.harmonic_load.segment(o, n) = s.harmonic_load * std::polar(1.0, j * phase);
     for (const ContactElement& c : s.contacts) {
       ContactElement e;
-      e.law = c.law;
+      e.point = c.point;
       e.tangential_offset = c.tangential_offset;
       e.tangential = Eigen::RowVectorXd::Zero(w);
       e.normal = Eigen::RowVectorXd::Zero(w);

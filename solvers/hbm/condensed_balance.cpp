@@ -20,7 +20,7 @@ using Index = Eigen::Index;
 using Complex = std::complex<double>;
 
 friction::FrictionModel validated(friction::FrictionModel model) {
-  friction::validate_model(model, "harmonic balance", true);
+  friction::validate_model(model, "harmonic balance", true, true);
   return model;
 }
 
@@ -29,6 +29,29 @@ Eigen::VectorXcd harmonic_load(const friction::FrictionModel& m, int h) {
   if (h == 0) return m.static_load.cast<Complex>();
   if (h == 1) return m.harmonic_load;
   return Eigen::VectorXcd::Zero(m.mass.rows());
+}
+
+// The Jacobian of a contact of two tangential directions, g = A^T [T_1; T_2; N] with the rows
+// A = [a_t; a_t2; a_n] on its support: dg_(j,i)/dx_(l,p) = sum_ab A_ai dF_a,j/dy_b,l A_bp, the law's
+// stacked derivatives dF/dy over y = [u_1; u_2; v].
+void add_two_direction_jacobian(const friction::ContactElement& element, const friction::AftResult& r, Index nc,
+                                Index m, Eigen::MatrixXd& jacobian) {
+  Eigen::Matrix<double, 3, Eigen::Dynamic> rows(3, nc);
+  rows << element.tangential, element.tangential_2, element.normal;
+  std::vector<Index> support;
+  for (Index i = 0; i < nc; ++i)
+    if (rows.col(i).cwiseAbs().maxCoeff() > 0.0) support.push_back(i);
+  Eigen::Matrix3d block;
+  for (Index j = 0; j < m; ++j)
+    for (Index l = 0; l < m; ++l) {
+      block << r.dtangential_du(j, l), r.dtangential_du(j, m + l), r.dtangential_dv(j, l), r.dtangential_du(m + j, l),
+          r.dtangential_du(m + j, m + l), r.dtangential_dv(m + j, l), 0.0, 0.0, r.dnormal_dv(j, l);
+      if (block.isZero(0.0)) continue;
+      for (const Index p : support) {
+        const Eigen::Vector3d column = block * rows.col(p);
+        for (const Index i : support) jacobian(j * nc + i, l * nc + p) += rows.col(i).dot(column);
+      }
+    }
 }
 
 }  // namespace
@@ -74,12 +97,12 @@ HarmonicBalance::HarmonicBalance(friction::FrictionModel model, HbmOptions optio
   if (model_.nodal_diameters.empty()) modal_ = ModalBasis::of(model_, contact_dofs(), other_dofs());
 
   double preload = 0.0;
-  for (const friction::ContactElement& e : model_.contacts) preload += (1.0 + e.law.mu) * e.law.n0;
+  for (const friction::ContactElement& e : model_.contacts) preload += (1.0 + e.point.mu) * e.point.n0;
   force_scale_ = model_.static_load.norm() + model_.harmonic_load.norm() + preload;
 }
 
 Index HarmonicBalance::unknowns() const {
-  return static_cast<Index>(contact_dofs().size()) * contact::harmonic_size(options_.harmonics);
+  return static_cast<Index>(contact_dofs().size()) * friction::harmonic_size(options_.harmonics);
 }
 
 template <class Use>
@@ -127,7 +150,7 @@ std::optional<HarmonicBalance::Linear> HarmonicBalance::condense(double omega) c
 
 HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::VectorXd& x, bool with_jacobian) const {
   const Index nc = static_cast<Index>(contact_dofs().size());
-  const Index m = contact::harmonic_size(options_.harmonics);
+  const Index m = friction::harmonic_size(options_.harmonics);
   // Column j of the nc x m matrix is harmonic coefficient j of every contact DOF.
   const Eigen::Map<const Eigen::MatrixXd> coefficients(x.data(), nc, m);
   ContactForces out{Eigen::VectorXd::Zero(unknowns()), Eigen::MatrixXd(), {}, true};
@@ -139,7 +162,7 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
       const Eigen::MatrixXd &gt = cyclic_gaps_[k].tangential, &gn = cyclic_gaps_[k].normal;
       Eigen::VectorXd u = gt * x;
       u[0] -= element.tangential_offset;
-      contact::AftResult r = contact::aft_jenkins(element.law, u, gn * x, aft_);
+      friction::AftResult r = element.law->harmonics(element.point, u, gn * x, aft_);
       out.closed = out.closed && r.closed;
       out.force += gt.transpose() * r.tangential + gn.transpose() * r.normal;
       out.contacts.push_back(std::move(r));
@@ -147,30 +170,38 @@ HarmonicBalance::ContactForces HarmonicBalance::contact_forces(const Eigen::Vect
     }
     const Eigen::RowVectorXd& at = element.tangential;
     const Eigen::RowVectorXd& an = element.normal;
-    Eigen::VectorXd u = (at * coefficients).transpose();
+    const bool two = element.tangential_2.size() != 0;
+    Eigen::VectorXd u(two ? 2 * m : m);
+    u.head(m) = (at * coefficients).transpose();
+    if (two) u.tail(m) = (element.tangential_2 * coefficients).transpose();
     const Eigen::VectorXd v = (an * coefficients).transpose();
     u[0] -= element.tangential_offset;
-    contact::AftResult r = contact::aft_jenkins(element.law, u, v, aft_);
+    friction::AftResult r = element.law->harmonics(element.point, u, v, aft_);
     out.closed = out.closed && r.closed;
-    // g = a_t^T T + a_n^T N, per coefficient.
-    force += at.transpose() * r.tangential.transpose() + an.transpose() * r.normal.transpose();
+    // g = a_t^T T + a_t2^T T_2 + a_n^T N, per coefficient.
+    force += at.transpose() * r.tangential.head(m).transpose() + an.transpose() * r.normal.transpose();
+    if (two) force += element.tangential_2.transpose() * r.tangential.tail(m).transpose();
     out.contacts.push_back(std::move(r));
   }
   if (with_jacobian) out.jacobian = contact_jacobian(out.contacts);
   return out;
 }
 
-Eigen::MatrixXd HarmonicBalance::contact_jacobian(const std::vector<contact::AftResult>& contacts) const {
+Eigen::MatrixXd HarmonicBalance::contact_jacobian(const std::vector<friction::AftResult>& contacts) const {
   const Index nc = static_cast<Index>(contact_dofs().size());
-  const Index m = contact::harmonic_size(options_.harmonics);
+  const Index m = friction::harmonic_size(options_.harmonics);
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(unknowns(), unknowns());
   for (size_t k = 0; k < system_.contacts_on_c().size() && k < contacts.size(); ++k) {
     const friction::ContactElement& element = system_.contacts_on_c()[k];
-    const contact::AftResult& r = contacts[k];
+    const friction::AftResult& r = contacts[k];
     if (element.cyclic()) {
       const Eigen::MatrixXd &gt = cyclic_gaps_[k].tangential, &gn = cyclic_gaps_[k].normal;
       jacobian.noalias() += gt.transpose() * (r.dtangential_du * gt + r.dtangential_dv * gn);
       jacobian.noalias() += gn.transpose() * (r.dnormal_dv * gn);
+      continue;
+    }
+    if (element.tangential_2.size() != 0) {
+      add_two_direction_jacobian(element, r, nc, m, jacobian);
       continue;
     }
     const Eigen::RowVectorXd& at = element.tangential;
@@ -206,7 +237,7 @@ HarmonicBalance::Residual HarmonicBalance::residual(const Linear& linear, const 
 
 Eigen::MatrixXd HarmonicBalance::recover(const Eigen::VectorXd& x, double omega) const {
   const Index n = model_.mass.rows(), nc = static_cast<Index>(contact_dofs().size());
-  const Index m = contact::harmonic_size(options_.harmonics);
+  const Index m = friction::harmonic_size(options_.harmonics);
   if (x.size() != unknowns()) throw std::invalid_argument("harmonic balance: x has the wrong size");
   Eigen::MatrixXd q = Eigen::MatrixXd::Zero(n, m);
   const Eigen::Map<const Eigen::MatrixXd> xc(x.data(), nc, m);
@@ -239,14 +270,14 @@ std::optional<Eigen::VectorXd> HarmonicBalance::linearized(double omega, bool st
   const auto linear = condense(omega);
   if (!linear) return std::nullopt;
   const Index nc = static_cast<Index>(contact_dofs().size());
-  const Index m = contact::harmonic_size(options_.harmonics);
+  const Index m = friction::harmonic_size(options_.harmonics);
   Eigen::MatrixXd springs = Eigen::MatrixXd::Zero(nc, nc);
   Eigen::VectorXd preload = Eigen::VectorXd::Zero(nc);
   Eigen::MatrixXd a = linear->operator_;
   Eigen::VectorXd b = linear->load;
   for (size_t k = 0; k < system_.contacts_on_c().size(); ++k) {
     const friction::ContactElement& element = system_.contacts_on_c()[k];
-    const contact::JenkinsParameters& law = element.law;
+    const friction::PointParameters& law = element.point;
     if (element.cyclic()) {
       const Eigen::MatrixXd &gt = cyclic_gaps_[k].tangential, &gn = cyclic_gaps_[k].normal;
       a += law.kn * gn.transpose() * gn;

@@ -6,7 +6,7 @@
 // the receptance r^(C,C) of eq 3.24, without ever forming it), so the nonlinear system has
 // |c| (2H + 1) unknowns:
 //   R(x, omega) = L(omega) x + g(x) - b(omega) = 0,
-// L block-diagonal per harmonic, g the contact forces by the AFT (contact/aft.hpp). Requirement:
+// L block-diagonal per harmonic, g the contact forces by the AFT (friction/aft.hpp). Requirement:
 // D_h,oo must be invertible, i.e. the model with its contact DOFs clamped has no rigid-body mode
 // (K_oo nonsingular, checked: std::invalid_argument) and is not driven exactly at an undamped
 // resonance (reported as a failed solve). K_cc itself may be singular: a damper held only by its
@@ -24,7 +24,7 @@
 #include <optional>
 #include <vector>
 
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 #include "friction/friction_system.hpp"
 #include "hbm/modal_condensation.hpp"
 
@@ -39,7 +39,7 @@ struct HbmOptions {
   // AFT options; samples = 0 picks max(64, 16 (2H + 1)), enough for coefficient errors ~1e-4 on
   // stick-slip loops (the forces have kinks, their harmonics converge as 1 / n_t^2), or with
   // resolve_events max(32, 4 (2H + 1)), which only bracket the transitions.
-  contact::AftOptions aft{};
+  friction::AftOptions aft{};
   int max_iterations = 50;  // Newton iterations per solve (bounded: never hangs)
   // Converged when ||R|| <= tolerance * force_scale, R the condensed harmonic force balance [N] and
   // force_scale = ||f_static|| + ||F|| + sum_k (1 + mu_k) N0_k (see force_scale()).
@@ -66,7 +66,7 @@ class HarmonicBalance {
   // ||R|| below which a solution counts as converged: options().tolerance * force_scale() [N].
   double residual_tolerance() const { return options_.tolerance * force_scale_; }
   // The AFT options every contact evaluation uses (samples resolved from options().aft).
-  const contact::AftOptions& aft_options() const { return aft_; }
+  const friction::AftOptions& aft_options() const { return aft_; }
 
   // Condensed linear operator L(omega) (real layout, block-diagonal per harmonic) and load b(omega),
   // so that R(x, omega) = L x + g(x) - b. Returns nullopt when some D_h,oo is singular.
@@ -81,13 +81,13 @@ class HarmonicBalance {
   struct ContactForces {
     Eigen::VectorXd force;
     Eigen::MatrixXd jacobian;
-    std::vector<contact::AftResult> contacts;
+    std::vector<friction::AftResult> contacts;
     bool closed = true;  // every slider loop closed
   };
   // With with_jacobian false the Jacobian is left empty (contact_jacobian assembles it later).
   ContactForces contact_forces(const Eigen::VectorXd& x, bool with_jacobian = true) const;
   // dg/dx from the AFT of every contact at x (ContactForces::contacts).
-  Eigen::MatrixXd contact_jacobian(const std::vector<contact::AftResult>& contacts) const;
+  Eigen::MatrixXd contact_jacobian(const std::vector<friction::AftResult>& contacts) const;
 
   // R(x) = L x + g(x) - b for the operator `linear` of some omega.
   struct Residual {
@@ -112,7 +112,7 @@ class HarmonicBalance {
   friction::FrictionModel model_;
   HbmOptions options_;
   friction::FrictionSystem system_;
-  contact::AftOptions aft_;
+  friction::AftOptions aft_;
   double force_scale_ = 0.0;
   // D_0 = K does not depend on omega: condensed once. Harmonics h >= 1 by modal superposition
   // where the damping allows it (hbm/modal_condensation.hpp), else by factorizing D_h,oo.

@@ -3,7 +3,7 @@
 #include <complex>
 #include <numbers>
 
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 #include "hbm/cyclic_shift.hpp"
 
 namespace bb::hbm {
@@ -20,7 +20,7 @@ CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) 
     Eigen::VectorXd f = Eigen::VectorXd::Zero(q.cols()), qi = q.row(i).transpose();
     f[1] = model.harmonic_load[i].real();
     f[2] = -model.harmonic_load[i].imag();
-    e.excitation += contact::cycle_work(f, qi);
+    e.excitation += friction::cycle_work(f, qi);
   }
   // Viscous: integral over a period of q'^T C q' = pi h^2 w (a^T C a + b^T C b) per harmonic.
   // With a cyclic sector's Hermitian C_k: pi h^2 w Z^H C_k Z, Z = a - i b (real for Hermitian C_k).
@@ -37,15 +37,18 @@ CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) 
       e.viscous += std::numbers::pi * h * h * solution.omega * (a.dot(model.damping * a) + b.dot(model.damping * b));
     }
   for (size_t k = 0; k < solution.contacts.size() && k < model.contacts.size(); ++k) {
-    const contact::AftResult& r = solution.contacts[k];
+    const friction::AftResult& r = solution.contacts[k];
     const friction::ContactElement& c = model.contacts[k];
     Eigen::VectorXd u = (c.tangential * q).transpose(), v = (c.normal * q).transpose();
     if (c.cyclic()) {
       u += shift_coefficients((c.tangential_next * q).transpose(), c.next_phase);
       v += shift_coefficients((c.normal_next * q).transpose(), c.next_phase);
     }
-    e.friction += contact::cycle_work(r.tangential, u);
-    e.normal += contact::cycle_work(r.normal, v);
+    const Eigen::Index m = u.size();
+    e.friction += friction::cycle_work(r.tangential.head(m), u);
+    if (c.tangential_2.size() > 0)
+      e.friction += friction::cycle_work(r.tangential.tail(m), Eigen::VectorXd((c.tangential_2 * q).transpose()));
+    e.normal += friction::cycle_work(r.normal, v);
   }
   return e;
 }

@@ -24,7 +24,7 @@ NewtonPoint balance_at(const HarmonicBalance& s, const HarmonicBalance::Linear& 
   p.residual = std::move(r.residual);
   p.data = std::move(r.forces.contacts);
   p.complete_jacobian = [&s, &linear](NewtonPoint& q) {
-    q.jacobian = linear.operator_ + s.contact_jacobian(std::any_cast<const std::vector<contact::AftResult>&>(q.data));
+    q.jacobian = linear.operator_ + s.contact_jacobian(std::any_cast<const std::vector<friction::AftResult>&>(q.data));
   };
   return p;
 }
@@ -74,7 +74,7 @@ HbmSolution newton(const HarmonicBalance& s, const HarmonicBalance::Linear& line
           s.options().max_backtracks, r.residual, target, omega);
       break;
   }
-  if (auto* contacts = std::any_cast<std::vector<contact::AftResult>>(&r.at.data)) out.contacts = std::move(*contacts);
+  if (auto* contacts = std::any_cast<std::vector<friction::AftResult>>(&r.at.data)) out.contacts = std::move(*contacts);
   return out;
 }
 

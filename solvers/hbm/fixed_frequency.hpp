@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 #include "hbm/condensed_balance.hpp"
 
 namespace bb {
@@ -30,9 +30,9 @@ struct HbmSolution {
   int iterations = 0;     // Newton iterations taken
   double residual = 0.0;  // ||R|| [N] (finite; the largest double when the start could not be evaluated)
   bool converged = false;
-  std::string failure;                       // why not converged (with |R| and omega); empty when converged
-  std::vector<contact::AftResult> contacts;  // the AFT of each contact at x
-  HbmStart start = HbmStart::initial;        // the start x was reached from
+  std::string failure;                        // why not converged (with |R| and omega); empty when converged
+  std::vector<friction::AftResult> contacts;  // the AFT of each contact at x
+  HbmStart start = HbmStart::initial;         // the start x was reached from
 };
 
 // Newton-Raphson with backtracking line search (Armijo on ||R||) at fixed omega, Levenberg-

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/state_fractions.hpp"
+#include "friction/state_fractions.hpp"
 #include "hbm/condensed_balance.hpp"
 #include "linalg/damped_newton.hpp"
 #include "linalg/dense_eigen.hpp"
@@ -36,7 +36,7 @@ class EpmcSystem {
         kmax_(kmax),
         n_(model.mass.rows()),
         h_(contacts.options().harmonics),
-        size_(n_ * contact::harmonic_size(h_)) {}
+        size_(n_ * friction::harmonic_size(h_)) {}
 
   Index unknowns() const { return size_ + 2; }
 
@@ -149,13 +149,13 @@ class EpmcSystem {
 // where the slider's convention, kept or shaken down to the limit, has a kink the Jacobian does not
 // see; bench/README.md). Empty without the contacts' data.
 std::string contact_states_at(const friction::FrictionModel& model, const NewtonPoint& at) {
-  const auto* contacts = std::any_cast<std::vector<contact::AftResult>>(&at.data);
+  const auto* contacts = std::any_cast<std::vector<friction::AftResult>>(&at.data);
   if (!at.valid || !contacts) return {};
   std::vector<std::string> states, corners;
   for (size_t k = 0; k < contacts->size() && k < model.contacts.size(); ++k) {
-    const contact::AftResult& c = (*contacts)[k];
-    const double mu = model.contacts[k].law.mu;
-    const contact::StateFractions f = contact::state_fractions(c.state);
+    const friction::AftResult& c = (*contacts)[k];
+    const double mu = model.contacts[k].point.mu;
+    const friction::StateFractions f = friction::state_fractions(c.state);
     double ratio = 0.0;  // largest |T| / (mu N) over the samples
     for (size_t i = 0; i < c.state.size(); ++i) {
       const double n = c.n[static_cast<Index>(i)];
@@ -163,8 +163,7 @@ std::string contact_states_at(const friction::FrictionModel& model, const Newton
     }
     states.push_back(fmt::format("{}: stick {:.0f} %, slip {:.0f} %, lift-off {:.0f} %", k + 1, 100.0 * f.stick,
                                  100.0 * f.slip, 100.0 * f.lift_off));
-    if (f.stick == 1.0 && ratio > 0.99)
-      corners.push_back(fmt::format("{} (|T| / mu N = {:.5f})", k + 1, ratio));
+    if (f.stick == 1.0 && ratio > 0.99) corners.push_back(fmt::format("{} (|T| / mu N = {:.5f})", k + 1, ratio));
   }
   std::string out = fmt::format("; contacts at the last iterate {}", fmt::join(states, "; "));
   if (!corners.empty())
@@ -214,14 +213,14 @@ NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, i
   const double kmax = k_stuck.diagonal().cwiseAbs().maxCoeff();
 
   EpmcSystem system(model, contacts, phi, branch.linear_omega, kmax);
-  const Index m = contact::harmonic_size(options.harmonics);
+  const Index m = friction::harmonic_size(options.harmonics);
   Eigen::MatrixXd q = Eigen::MatrixXd::Zero(n, m);
   if (static_guess.size() == n) {
     q.col(0) = static_guess;
   } else {
     Eigen::VectorXd load = model.static_load;
     for (const friction::ContactElement& c : model.contacts)
-      load -= c.law.n0 * c.normal.transpose() - c.law.kt * c.tangential_offset * c.tangential.transpose();
+      load -= c.point.n0 * c.normal.transpose() - c.point.kt * c.tangential_offset * c.tangential.transpose();
     q.col(0) = k_stuck.ldlt().solve(load);
   }
   double omega = branch.linear_omega, kappa = phi.dot(model.damping * phi);
@@ -257,7 +256,7 @@ NonlinearModeBranch trace_nonlinear_mode(const friction::FrictionModel& input, i
           pt.omega = w;
           pt.kappa = k;
           pt.coefficients = q;
-          pt.contacts = std::any_cast<std::vector<contact::AftResult>>(r.at.data);
+          pt.contacts = std::any_cast<std::vector<friction::AftResult>>(r.at.data);
           pt.residual = r.residual;
           pt.iterations = r.iterations;
           branch.points.push_back(std::move(pt));

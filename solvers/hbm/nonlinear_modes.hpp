@@ -7,7 +7,7 @@
 // gives the frequency omega(a), the modal damping ratio D(a) = kappa / (2 omega) and the shape.
 // Units: SI; a in m kg^(1/2) (q = a psi with psi's first harmonic mass-normalized).
 //
-// Unknowns: every DOF's 2H + 1 coefficients (layout of contact/aft.hpp), omega and kappa; equations:
+// Unknowns: every DOF's 2H + 1 coefficients (layout of friction/aft.hpp), omega and kappa; equations:
 // the harmonic balance of every DOF (no condensation: kappa changes the damping the condensation would
 // fold in), psi_1^H M psi_1 = 1 (amplitude) and b_1 . M phi = 0 (phase, phi the stuck linear mode).
 #pragma once
@@ -16,17 +16,17 @@
 #include <string>
 #include <vector>
 
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 #include "friction/friction_system.hpp"
 
 namespace bb::hbm {
 
 struct NonlinearModeOptions {
   int harmonics = 1;
-  contact::AftOptions aft{};  // samples = 0: max(64, 16 (2H + 1)), as HbmOptions
-  double tolerance = 1e-9;    // on the scaled residual (forces over k_max a, k_max the largest stuck stiffness)
-  int max_iterations = 30;    // Newton iterations per amplitude
-  int max_halvings = 6;       // halvings of a failed amplitude step before the amplitude is given up
+  friction::AftOptions aft{};  // samples = 0: max(64, 16 (2H + 1)), as HbmOptions
+  double tolerance = 1e-9;     // on the scaled residual (forces over k_max a, k_max the largest stuck stiffness)
+  int max_iterations = 30;     // Newton iterations per amplitude
+  int max_halvings = 6;        // halvings of a failed amplitude step before the amplitude is given up
   // Requested amplitudes given up in a row (each after its halvings) before the branch stops: at a
   // corner of the contact states (a contact that sticks throughout next to one that shakes down to
   // its Coulomb limit) Newton can stall at one amplitude and converge again past it.
@@ -38,7 +38,7 @@ struct NonlinearModePoint {
   double omega = 0.0;            // [rad/s]
   double kappa = 0.0;            // [1/s]; modal damping ratio kappa / (2 omega)
   Eigen::MatrixXd coefficients;  // n x (2H + 1): q's harmonics [m]
-  std::vector<contact::AftResult> contacts;
+  std::vector<friction::AftResult> contacts;
   double residual = 0.0;  // scaled
   int iterations = 0;
   double damping_ratio() const { return kappa / (2.0 * omega); }

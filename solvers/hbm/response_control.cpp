@@ -125,7 +125,7 @@ ControlledSolution solve_controlled(const HarmonicBalance& s, double omega, cons
       out.solution.converged = r.converged;
       out.solution.failure =
           r.converged ? "" : fmt::format("{} (held response, omega = {:.6g} rad/s)", r.failure, omega);
-      if (auto* contacts = std::any_cast<std::vector<contact::AftResult>>(&r.at.data))
+      if (auto* contacts = std::any_cast<std::vector<friction::AftResult>>(&r.at.data))
         out.solution.contacts = std::move(*contacts);
     }
     if (r.converged) break;

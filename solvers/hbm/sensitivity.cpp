@@ -79,7 +79,7 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
   check_sizes(model, derivatives);
   const double omega = solution.omega;
   const int harmonics = s.options().harmonics;
-  const Index n = model.mass.rows(), m = contact::harmonic_size(harmonics);
+  const Index n = model.mass.rows(), m = friction::harmonic_size(harmonics);
   const std::vector<Index>& c = s.contact_dofs();
   const Index nc = static_cast<Index>(c.size());
   const std::vector<Index>& o = s.other_dofs();
@@ -137,7 +137,7 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
   for (const ModelDerivative& d : derivatives) any_law = any_law || !d.laws.empty();
   if (any_law) {
     // A second AFT per contact, with the law derivatives: contact_forces keeps the Newton's cost.
-    contact::AftOptions options = s.aft_options();
+    friction::AftOptions options = s.aft_options();
     options.law_derivatives = true;
     const Eigen::Map<const Eigen::MatrixXd> coefficients(solution.x.data(), nc, m);
     for (size_t k = 0; k < model.contacts.size(); ++k) {
@@ -150,11 +150,11 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
       Eigen::VectorXd u = (at * coefficients).transpose();
       const Eigen::VectorXd v = (an * coefficients).transpose();
       u[0] -= e.tangential_offset;
-      const contact::AftResult r = contact::aft_jenkins(e.law, u, v, options);
+      const friction::AftResult r = e.law->harmonics(e.point, u, v, options);
       for (Index j = 0; j < np; ++j) {
         const ModelDerivative& d = derivatives[static_cast<size_t>(j)];
         if (d.laws.empty()) continue;
-        const contact::JenkinsParameters& dl = d.laws[k];
+        const friction::PointParameters& dl = d.laws[k];
         const Eigen::Vector4d theta(dl.kn, dl.kt, dl.mu, dl.n0);
         const Eigen::VectorXd dt = r.dtangential_dlaw * theta, dn = r.dnormal_dlaw * theta;
         Eigen::Map<Eigen::MatrixXd> column(rhs.col(j).data(), nc, m);
@@ -193,19 +193,19 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
 
 }  // namespace
 
-ModelDerivative law_derivative(const friction::FrictionModel& model, contact::LawParameter parameter) {
-  contact::JenkinsParameters unit;
+ModelDerivative law_derivative(const friction::FrictionModel& model, friction::LawParameter parameter) {
+  friction::PointParameters unit;
   switch (parameter) {
-    case contact::law_kn:
+    case friction::law_kn:
       unit.kn = 1.0;
       break;
-    case contact::law_kt:
+    case friction::law_kt:
       unit.kt = 1.0;
       break;
-    case contact::law_mu:
+    case friction::law_mu:
       unit.mu = 1.0;
       break;
-    case contact::law_n0:
+    case friction::law_n0:
       unit.n0 = 1.0;
       break;
   }

@@ -9,7 +9,7 @@
 // recovered harmonics of all DOFs and r_h = dD_h q_h - dF_h (full DOF set) the linear part of dR/dp
 // is r_c - D_co D_oo^-1 r_o per harmonic (the D_oo^-1 derivative folds into q_o), and the non-contact
 // DOFs follow from D_oo dq_o = -r_o - D_oc dq_c, the derivative of HarmonicBalance::recover. The
-// contact part dg/dp comes from the AFT law derivatives (contact/aft.hpp, law_derivatives).
+// contact part dg/dp comes from the AFT law derivatives (friction/aft.hpp, law_derivatives).
 //
 // Validity: the AFT map is piecewise smooth (each time sample sticks, slips or is open). These are
 // the exact derivatives of the discrete map on the piece that holds the solution; a parameter change
@@ -20,8 +20,8 @@
 
 #include <vector>
 
-#include "contact/aft.hpp"
-#include "contact/jenkins_contact.hpp"
+#include "friction/aft.hpp"
+#include "friction/jenkins.hpp"
 #include "hbm/condensed_balance.hpp"
 #include "hbm/fixed_frequency.hpp"
 
@@ -33,11 +33,11 @@ struct ModelDerivative {
   Eigen::VectorXd static_load;               // df_static/dp (n)
   Eigen::VectorXcd harmonic_load;            // dF/dp (n), complex amplitude at harmonic 1
   // One entry per contact: d(kn, kt, mu, n0)/dp in the fields of the same name; empty = none.
-  std::vector<contact::JenkinsParameters> laws;
+  std::vector<friction::PointParameters> laws;
 };
 
 // d/dp for p = one law parameter shared by every contact (the usual single-law model).
-ModelDerivative law_derivative(const friction::FrictionModel& model, contact::LawParameter parameter);
+ModelDerivative law_derivative(const friction::FrictionModel& model, friction::LawParameter parameter);
 // d/ds of the model with C replaced by s C, at s = 1 (dC/ds = C). For modal or proportional damping
 // C = zeta C1 this is zeta d/dzeta: divide the sensitivities by zeta for d/dzeta.
 ModelDerivative damping_scale_derivative(const friction::FrictionModel& model);

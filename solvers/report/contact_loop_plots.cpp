@@ -9,8 +9,8 @@
 namespace bb {
 
 Plot plot_contact_loop(const ContactLoopOutcome& loop, const std::filesystem::path& out_dir, const std::string& stem) {
-  const contact::AftResult& a = loop.aft;
-  using contact::ContactState;
+  const friction::AftResult& a = loop.aft;
+  using friction::ContactState;
   const std::array<ContactState, 4> states{ContactState::stick, ContactState::slip_positive,
                                            ContactState::slip_negative, ContactState::lift_off};
   {
@@ -19,7 +19,7 @@ Plot plot_contact_loop(const ContactLoopOutcome& loop, const std::filesystem::pa
     for (Eigen::Index k = 0; k <= a.u.size(); ++k) out << a.u[k % a.u.size()] << ' ' << a.t[k % a.u.size()] << '\n';
     for (ContactState s : states) {
       // One block per state; "nan nan" keeps the block (and the indices) when a state never occurs.
-      out << "\n\n# samples in state " << contact::state_name(s) << ": u [m] T [N]\n";
+      out << "\n\n# samples in state " << friction::state_name(s) << ": u [m] T [N]\n";
       bool any = false;
       for (Eigen::Index k = 0; k < a.u.size(); ++k)
         if (a.state[static_cast<size_t>(k)] == s) out << a.u[k] << ' ' << a.t[k] << '\n', any = true;
@@ -35,7 +35,7 @@ Plot plot_contact_loop(const ContactLoopOutcome& loop, const std::filesystem::pa
       gnuplot_quote(title), stem);
   for (size_t i = 0; i < states.size(); ++i)
     script += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points pt 7 ps 0.5 lc rgb '{}' title '{}'", stem,
-                          i + 1, series_colour(i), contact::state_name(states[i]));
+                          i + 1, series_colour(i), friction::state_name(states[i]));
   script += '\n';
   return draw(out_dir, stem, title, script);
 }

@@ -171,7 +171,7 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
 }
 
 void describe(const ContactLoopSpec& spec, const ContactLoopOutcome& loop, RunRecord& run) {
-  const contact::JenkinsParameters& p = spec.law;
+  const friction::PointParameters& p = spec.point;
   run.facts.emplace_back("analysis",
                          fmt::format("friction-contact test rig: one Jenkins contact under u = {} cos(theta) m, "
                                      "v = {} cos(theta + {} deg) m (v > 0 presses), {} samples per period, "

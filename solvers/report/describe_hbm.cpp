@@ -236,15 +236,17 @@ std::string describe_modal_ratios(const FrfDamping& d) {
 
 std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec) {
   std::string out;
-  const auto add = [&](const std::string& name, const contact::JenkinsParameters& law,
-                       const contact::SliderDistribution* distribution) {
-    out += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}{}", out.empty() ? "" : "; ", name, format_setting(law.kn),
-                       format_setting(law.kt), format_setting(law.mu),
+  const auto add = [&](const std::string& name, const friction::PointParameters& point,
+                       const friction::FrictionLaw& law, const friction::SliderDistribution* distribution) {
+    out += fmt::format("{}{}: kn {} N/m, kt {} N/m, mu {}{}{}", out.empty() ? "" : "; ", name, format_setting(point.kn),
+                       format_setting(point.kt), format_setting(point.mu),
+                       law.name() == "jenkins" ? "" : ", " + law.describe(),
                        distribution ? ", " + distribution->describe() : "");
   };
   const size_t damper = p.damper ? p.damper->contacts.size() : 0;
-  for (size_t c = 0; c < damper; ++c) add(p.contact_names[c], p.model.contacts[c].law, nullptr);
-  for (const HbmContactSpec& c : spec.contacts) add(c.name, c.law, c.distribution.get());
+  for (size_t c = 0; c < damper; ++c)
+    add(p.contact_names[c], p.model.contacts[c].point, *p.model.contacts[c].law, nullptr);
+  for (const HbmContactSpec& c : spec.contacts) add(c.name, c.point, *c.law, c.distribution.get());
   return out;
 }
 

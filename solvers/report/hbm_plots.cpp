@@ -150,11 +150,11 @@ Plot plot_contact_states(const HbmOutcome& hbm, const std::string& kind, const f
         if (p.kind == kind && p.solution.converged) peak = &p;
       if (!peak) continue;
       out << abscissa(hbm, level.force);
-      for (const contact::AftResult& a : peak->solution.contacts) {
+      for (const friction::AftResult& a : peak->solution.contacts) {
         double stick = 0, lift = 0;
-        for (const contact::ContactState s : a.state) {
-          stick += s == contact::ContactState::stick ? 1 : 0;
-          lift += s == contact::ContactState::lift_off ? 1 : 0;
+        for (const friction::ContactState s : a.state) {
+          stick += s == friction::ContactState::stick ? 1 : 0;
+          lift += s == friction::ContactState::lift_off ? 1 : 0;
         }
         out << ' ' << stick / static_cast<double>(a.state.size()) << ' ' << lift / static_cast<double>(a.state.size());
       }

@@ -5,23 +5,20 @@ namespace bb::timeint {
 ContactSample contact_step(const friction::ContactElement& contact, double slider_before, const Eigen::VectorXd& q) {
   const double u = contact.tangential.dot(q) - contact.tangential_offset;
   const double v = contact.normal.dot(q);
-  const contact::JenkinsStep s = contact::jenkins_step(contact.law, slider_before, u, v);
-  return {.u = u, .v = v, .tangential = s.tangential, .normal = s.normal, .slider = s.slider, .state = s.state};
+  const friction::LawStep s = contact.law->step(contact.point, {slider_before, 0.0}, {u, 0.0}, v);
+  return {.u = u,
+          .v = v,
+          .tangential = s.tangential[0],
+          .normal = s.normal,
+          .slider = s.slider[0],
+          .state = s.state,
+          .dt_du = s.dt_du(0, 0),
+          .dt_dv = s.dt_dv[0],
+          .dn_dv = s.dn_dv};
 }
 
-ContactTangent contact_tangent(const friction::ContactElement& contact, const ContactSample& sample) {
-  const contact::JenkinsParameters& p = contact.law;
-  switch (sample.state) {
-    case contact::ContactState::stick:
-      return {.dt_du = p.kt, .dt_dv = 0.0, .dn_dv = p.kn};
-    case contact::ContactState::slip_positive:
-      return {.dt_du = 0.0, .dt_dv = p.mu * p.kn, .dn_dv = p.kn};
-    case contact::ContactState::slip_negative:
-      return {.dt_du = 0.0, .dt_dv = -p.mu * p.kn, .dn_dv = p.kn};
-    case contact::ContactState::lift_off:
-      return {};
-  }
-  return {};
+ContactTangent contact_tangent(const friction::ContactElement&, const ContactSample& sample) {
+  return {.dt_du = sample.dt_du, .dt_dv = sample.dt_dv, .dn_dv = sample.dn_dv};
 }
 
 }  // namespace bb::timeint

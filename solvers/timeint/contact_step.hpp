@@ -2,7 +2,8 @@
 // of thesis Table XII (section 3.4.2.1, eqs 3.44-3.48) evaluated on the rows of an
 // friction::ContactElement, with the consistent tangent a Newton iteration needs. Units: SI.
 //
-// The law is exactly contact::jenkins_step (contact/jenkins_contact.hpp): Table XII's s* = s - t2
+// The law is the contact's (friction/friction_law.hpp), one step per call; for Jenkins,
+// friction::jenkins_step (friction/jenkins.hpp): Table XII's s* = s - t2
 // (eq 3.44) is the slider position w relative to body 2, t1 - t2 the relative tangential
 // displacement u, and
 //   stick          : s*(1) = s*(0),               T = kt (u - s*(0))   (eq 3.46)
@@ -20,7 +21,6 @@
 #pragma once
 #include <Eigen/Dense>
 
-#include "contact/jenkins_contact.hpp"
 #include "friction/friction_system.hpp"
 
 namespace bb::timeint {
@@ -32,7 +32,8 @@ struct ContactSample {
   double tangential = 0.0;  // T [N]
   double normal = 0.0;      // N [N], >= 0
   double slider = 0.0;      // w = s* after the step [m]
-  contact::ContactState state = contact::ContactState::stick;
+  friction::ContactState state = friction::ContactState::stick;
+  double dt_du = 0.0, dt_dv = 0.0, dn_dv = 0.0;  // the law's tangent in the state reached
 };
 
 // Derivatives of (T, N) with respect to (u, v) in the state reached (the consistent tangent of the

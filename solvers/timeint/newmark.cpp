@@ -24,7 +24,7 @@ friction::FrictionModel validated(friction::FrictionModel model) {
 
 double model_force_scale(const friction::FrictionModel& m) {
   double s = m.static_load.norm();
-  for (const friction::ContactElement& c : m.contacts) s += (1.0 + c.law.mu) * c.law.n0;
+  for (const friction::ContactElement& c : m.contacts) s += (1.0 + c.point.mu) * c.point.n0;
   return s;
 }
 

@@ -3,7 +3,7 @@
 //
 //   M q'' + C q' + K q + sum_k (a_t,k^T T_k + a_n,k^T N_k) = f_static + f(t),
 //
-// T_k, N_k the Table XII slider of contact k (timeint/contact_step.hpp, = contact::jenkins_step).
+// T_k, N_k the Table XII slider of contact k (timeint/contact_step.hpp, = friction::jenkins_step).
 //
 // Scheme: Newmark with the HHT-alpha modification (Hilber, Hughes, Taylor 1977): alpha in
 // [-1/3, 0], beta = (1 - alpha)^2 / 4, gamma = 1/2 - alpha; the balance is written at

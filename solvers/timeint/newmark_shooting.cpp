@@ -11,10 +11,10 @@
 
 namespace bb::timeint {
 
-using contact::ContactState;
 using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using friction::ContactState;
 
 namespace {
 
@@ -97,7 +97,7 @@ class NewmarkPeriod {
   Eigen::RowVectorXd slider_row(Index k, ContactState state) const {
     const friction::ContactElement& c = contact(k);
     if (state == ContactState::lift_off) return c.tangential;
-    const double ratio = c.law.mu * c.law.kn / c.law.kt;
+    const double ratio = c.point.mu * c.point.kn / c.point.kt;
     return c.tangential + (state == ContactState::slip_positive ? -ratio : ratio) * c.normal;
   }
 
@@ -129,13 +129,13 @@ class NewmarkPeriod {
       const ContactSample& before = s0.contacts[static_cast<size_t>(k)];
       const ContactSample& after = s1.contacts[static_cast<size_t>(k)];
       if (alpha != 0.0 && before.state != ContactState::lift_off)  // alpha g(q0, w0): T0 = kt (u0 - w0)
-        rhs += alpha * (c.tangential.transpose() * (c.law.kt * (c.tangential * q - w.row(k))) +
-                        c.normal.transpose() * (c.law.kn * (c.normal * q)));
+        rhs += alpha * (c.tangential.transpose() * (c.point.kt * (c.tangential * q - w.row(k))) +
+                        c.normal.transpose() * (c.point.kn * (c.normal * q)));
       const ContactTangent d = contact_tangent(c, after);
       tangent += (1.0 + alpha) * (c.tangential.transpose() * (d.dt_du * c.tangential + d.dt_dv * c.normal) +
                                   d.dn_dv * c.normal.transpose() * c.normal);
       if (after.state == ContactState::stick)  // T1 = kt (u1 - w0)
-        rhs += (1.0 + alpha) * c.law.kt * c.tangential.transpose() * w.row(k);
+        rhs += (1.0 + alpha) * c.point.kt * c.tangential.transpose() * w.row(k);
     }
     if (alpha != 0.0) rhs += alpha * (m.damping * v + m.stiffness * q);
     MatrixXd out(phi.rows(), phi.cols());

@@ -15,11 +15,11 @@
 
 namespace bb::timeint {
 
-using contact::ContactState;
 using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::RowVectorXd;
 using Eigen::VectorXd;
+using friction::ContactState;
 
 namespace {
 
@@ -37,6 +37,11 @@ PiecewiseFlow::PiecewiseFlow(const friction::FrictionModel& model, double omega_
       nc_(static_cast<Index>(model.contacts.size())),
       size_(2 * n_ + nc_ + 3) {
   if (!(omega_ > 0.0 && std::isfinite(omega_))) throw std::invalid_argument("exact flow: omega must be finite and > 0");
+  for (const friction::ContactElement& c : model.contacts)
+    if (!c.law->piecewise_linear())
+      throw std::invalid_argument(fmt::format(
+          "exact flow: the {} law has no piecewise-linear form; shoot on the Newmark step (method = \"newmark\")",
+          c.law->name()));
   const Eigen::FullPivLU<MatrixXd> lu(model.mass);
   if (!lu.isInvertible()) throw std::invalid_argument("exact flow: the mass matrix is singular");
   mass_inverse_ = lu.inverse();
@@ -49,7 +54,7 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
   VectorXd constant = model_.static_load;  // f_static minus the contacts' constant forces
   for (Index k = 0; k < nc_; ++k) {
     const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-    const contact::JenkinsParameters& law = c.law;
+    const friction::PointParameters& law = c.point;
     const VectorXd at = c.tangential.transpose(), an = c.normal.transpose();
     const ContactState m = modes[static_cast<size_t>(k)];
     if (m == ContactState::lift_off) continue;
@@ -179,13 +184,13 @@ void PiecewiseFlow::unpack(const VectorXd& z, FlowState& s) const {
 RowVectorXd PiecewiseFlow::slider_row(Index k, ContactState m) const {
   const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
   if (!slipping(m) || rigid_) return c.tangential;
-  return c.tangential - sign_of(m) * c.law.mu * c.law.kn / c.law.kt * c.normal;
+  return c.tangential - sign_of(m) * c.point.mu * c.point.kn / c.point.kt * c.normal;
 }
 
 double PiecewiseFlow::algebraic_slider(const FlowState& s, Index k, ContactState m) const {
   const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
   return slider_row(k, m).dot(s.q) - c.tangential_offset -
-         (slipping(m) && !rigid_ ? sign_of(m) * c.law.mu * c.law.n0 / c.law.kt : 0.0);
+         (slipping(m) && !rigid_ ? sign_of(m) * c.point.mu * c.point.n0 / c.point.kt : 0.0);
 }
 
 void PiecewiseFlow::tie_sliders(FlowState& s, MatrixXd* jacobian) const {
@@ -201,7 +206,7 @@ void PiecewiseFlow::settle(FlowState& s) const {
   s.modes.assign(static_cast<size_t>(nc_), ContactState::stick);
   for (Index k = 0; k < nc_; ++k) {
     const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-    const contact::JenkinsParameters& law = c.law;
+    const friction::PointParameters& law = c.point;
     const double normal = law.n0 + law.kn * c.normal.dot(s.q);
     ContactState& m = s.modes[static_cast<size_t>(k)];
     if (normal <= 0.0) {
@@ -244,7 +249,7 @@ ContactState PiecewiseFlow::held_or_slipping(const FlowState& s, Index k) const 
   std::vector<ContactState> modes = s.modes;
   modes[static_cast<size_t>(k)] = ContactState::stick;
   const double force = mode_data(modes).stuck_force[static_cast<size_t>(k)].dot(pack(s)),
-               limit = c.law.mu * std::max(c.law.n0 + c.law.kn * c.normal.dot(s.q), 0.0);
+               limit = c.point.mu * std::max(c.point.n0 + c.point.kn * c.normal.dot(s.q), 0.0);
   if (std::abs(force) <= limit) return ContactState::stick;
   return force > 0.0 ? ContactState::slip_positive : ContactState::slip_negative;
 }
@@ -263,7 +268,7 @@ std::vector<PiecewiseFlow::Event> PiecewiseFlow::events(const std::vector<Contac
   const Index p = n_, one = 2 * n_ + nc_;
   for (Index k = 0; k < nc_; ++k) {
     const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-    const contact::JenkinsParameters& law = c.law;
+    const friction::PointParameters& law = c.point;
     const ContactState m = modes[static_cast<size_t>(k)];
     if (law.kn > 0.0) {
       RowVectorXd open = RowVectorXd::Zero(size_);  // N <= 0, in metres of v
@@ -447,7 +452,7 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
 
 ContactSample PiecewiseFlow::sample(const FlowState& s, Index k) const {
   const friction::ContactElement& c = model_.contacts[static_cast<size_t>(k)];
-  const contact::JenkinsParameters& law = c.law;
+  const friction::PointParameters& law = c.point;
   const ContactState m = s.modes[static_cast<size_t>(k)];
   ContactSample out;
   out.u = c.tangential.dot(s.q) - c.tangential_offset;

@@ -41,7 +41,7 @@ namespace bb::timeint {
 struct FlowState {
   double theta = 0.0;
   Eigen::VectorXd q, p, w;
-  std::vector<contact::ContactState> modes;
+  std::vector<friction::ContactState> modes;
 };
 
 class PiecewiseFlow {
@@ -101,24 +101,24 @@ class PiecewiseFlow {
   // Event function of contact k in a mode as a row over z (> 0: the transition has happened).
   struct Event {
     Eigen::Index contact;
-    contact::ContactState next;
+    friction::ContactState next;
     Eigen::RowVectorXd row;
   };
   Eigen::VectorXd pack(const FlowState& s) const;
   void unpack(const Eigen::VectorXd& z, FlowState& s) const;
   // `stuck_force`: with rigid stick, the row over z of each contact's constraint force T (empty rows
   // for contacts not stuck).
-  std::vector<Event> events(const std::vector<contact::ContactState>& modes,
+  std::vector<Event> events(const std::vector<friction::ContactState>& modes,
                             const std::vector<Eigen::RowVectorXd>& stuck_force) const;
-  bool rigid(contact::ContactState m) const { return rigid_ && m == contact::ContactState::stick; }
+  bool rigid(friction::ContactState m) const { return rigid_ && m == friction::ContactState::stick; }
   // With rigid stick, contact k held in state s with the others' modes: stick where its constraint
   // force is within mu N, else the slip that force drives.
-  contact::ContactState held_or_slipping(const FlowState& s, Eigen::Index k) const;
-  void rigid_constraints(const std::vector<contact::ContactState>& modes, Eigen::MatrixXd& a,
+  friction::ContactState held_or_slipping(const FlowState& s, Eigen::Index k) const;
+  void rigid_constraints(const std::vector<friction::ContactState>& modes, Eigen::MatrixXd& a,
                          std::vector<Eigen::RowVectorXd>& stuck_force) const;
   // G: the tangential rows of the rigidly stuck contacts (their indices in `stuck`).
-  Eigen::MatrixXd stuck_rows(const std::vector<contact::ContactState>& modes, std::vector<Eigen::Index>& stuck) const;
-  Eigen::MatrixXd stuck_projection(const std::vector<contact::ContactState>& modes) const;  // of p
+  Eigen::MatrixXd stuck_rows(const std::vector<friction::ContactState>& modes, std::vector<Eigen::Index>& stuck) const;
+  Eigen::MatrixXd stuck_projection(const std::vector<friction::ContactState>& modes) const;  // of p
   void tie_sliders(FlowState& s, Eigen::MatrixXd* jacobian) const;
   // Contact ev.contact's transition at s, reached in the mode of generator a: its new mode, with the
   // sensitivity's saltation where the state or the acceleration jumps.
@@ -126,8 +126,8 @@ class PiecewiseFlow {
   template <class TraceOf>
   void extremes_in_piece(const Eigen::MatrixXd& a, const Eigen::VectorXd& z0, const Eigen::VectorXd& z1, double tau,
                          const std::vector<Eigen::Index>& watch, Eigen::VectorXd& extremes, const TraceOf& trace) const;
-  double algebraic_slider(const FlowState& s, Eigen::Index k, contact::ContactState m) const;
-  Eigen::RowVectorXd slider_row(Eigen::Index k, contact::ContactState m) const;  // d w_k / dq in mode m
+  double algebraic_slider(const FlowState& s, Eigen::Index k, friction::ContactState m) const;
+  Eigen::RowVectorXd slider_row(Eigen::Index k, friction::ContactState m) const;  // d w_k / dq in mode m
 
   friction::FrictionModel model_;
   double omega_, step_;
@@ -150,9 +150,9 @@ class PiecewiseFlow {
     bool spectral = false;
     double basis_rcond = 0.0;  // the modal closed forms of the Fourier integrals need it well above 1e-12
   };
-  const Generator& mode_data(const std::vector<contact::ContactState>& modes) const;
+  const Generator& mode_data(const std::vector<friction::ContactState>& modes) const;
   int halvings(const Generator& mode, const Eigen::VectorXcd& coordinates) const;  // of step, for a piece
-  mutable std::map<std::vector<contact::ContactState>, Generator> generators_;
+  mutable std::map<std::vector<friction::ContactState>, Generator> generators_;
 };
 
 }  // namespace bb::timeint

@@ -12,10 +12,10 @@
 
 namespace bb::timeint {
 
-using contact::ContactState;
 using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using friction::ContactState;
 
 namespace {
 

@@ -22,7 +22,7 @@ StaticState static_initial_state(const friction::FrictionModel& input, const Sta
   const Index n = m.mass.rows();
   const bool stuck = options.friction == StaticFriction::stuck_at_offset;
   double scale = m.static_load.norm();
-  for (const friction::ContactElement& c : m.contacts) scale += (1.0 + c.law.mu) * c.law.n0;
+  for (const friction::ContactElement& c : m.contacts) scale += (1.0 + c.point.mu) * c.point.n0;
   const double tolerance = options.tolerance * (scale + 1.0);
 
   const auto balance = [&](const VectorXd& q) {
@@ -31,13 +31,13 @@ StaticState static_initial_state(const friction::FrictionModel& input, const Sta
     p.jacobian = m.stiffness;
     for (const friction::ContactElement& c : m.contacts) {
       const double v = c.normal.dot(q);
-      const double normal = std::max(c.law.n0 + c.law.kn * v, 0.0);
+      const double normal = std::max(c.point.n0 + c.point.kn * v, 0.0);
       p.residual += c.normal.transpose() * normal;
       // Semismooth choice at N0 + kn v == 0: closed, so a contact that just touches is stiff.
-      if (c.law.n0 + c.law.kn * v >= 0.0) p.jacobian += c.law.kn * c.normal.transpose() * c.normal;
+      if (c.point.n0 + c.point.kn * v >= 0.0) p.jacobian += c.point.kn * c.normal.transpose() * c.normal;
       if (stuck) {
-        p.residual += c.tangential.transpose() * (c.law.kt * (c.tangential.dot(q) - c.tangential_offset));
-        p.jacobian += c.law.kt * c.tangential.transpose() * c.tangential;
+        p.residual += c.tangential.transpose() * (c.point.kt * (c.tangential.dot(q) - c.tangential_offset));
+        p.jacobian += c.point.kt * c.tangential.transpose() * c.tangential;
       }
     }
     return p;

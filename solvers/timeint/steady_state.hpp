@@ -53,7 +53,7 @@ struct SteadyStateOptions {
 
 struct SteadyState {
   double omega = 0.0;  // [rad/s]
-  // Rows follow options.dofs. Real layout of contact/aft.hpp: [c0, a1, b1, ..., aH, bH] with
+  // Rows follow options.dofs. Real layout of friction/aft.hpp: [c0, a1, b1, ..., aH, bH] with
   // x(t) = c0 + sum a_h cos(h omega t) + b_h sin(h omega t).
   Eigen::MatrixXd coefficients;
   Eigen::MatrixXd amplitude;  // [|c0|, sqrt(a_h^2 + b_h^2)...], H + 1 columns [m]

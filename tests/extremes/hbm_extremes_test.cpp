@@ -69,7 +69,7 @@ void check(const HarmonicBalance& system, const HbmSolution& s, const Point& p, 
   EXPECT_GE(s.residual, 0.0);
   EXPECT_GE(s.iterations, 0);
   EXPECT_LE(s.iterations, system.options().max_iterations * starts);
-  for (const contact::AftResult& c : s.contacts)
+  for (const friction::AftResult& c : s.contacts)
     EXPECT_TRUE(c.tangential.allFinite() && c.normal.allFinite() && c.t.allFinite() && c.n.allFinite());
   if (s.converged) {
     EXPECT_LE(s.residual, target);

@@ -8,9 +8,9 @@
 #include <complex>
 
 #include "../unit/damper_support.hpp"
-#include "contact/jenkins_contact.hpp"
 #include "damper/rigid_damper.hpp"
 #include "frf/receptance.hpp"
+#include "friction/jenkins.hpp"
 #include "hbm/harmonic_balance.hpp"
 
 namespace bb::hbm::models {
@@ -24,7 +24,7 @@ inline Eigen::RowVectorXd unit_row(Eigen::Index n, Eigen::Index i) {
 // A blade of three DOFs (also the model of tests/unit/hbm_harmonic_balance_test.cpp): DOF 0 root (excited, no contact),
 // 1 platform tangential (u = q1), 2 platform normal (v = q2, a push along +q2 presses). Modal damping zeta on every
 // mode; `static_push` is an extra static force on DOF 2 [N].
-inline friction::FrictionModel blade_on_ground(const contact::JenkinsParameters& law, double force, double zeta = 0.01,
+inline friction::FrictionModel blade_on_ground(const friction::PointParameters& law, double force, double zeta = 0.01,
                                                double static_push = 0.0) {
   friction::FrictionModel m;
   m.stiffness.resize(3, 3);
@@ -54,7 +54,7 @@ inline damper::RigidDamper planar_damper() {
 
 inline constexpr double kCentrifugalForce = 300.0;  // [N]
 
-inline friction::FrictionModel planar_blades_with_damper(const contact::JenkinsParameters& law, double force,
+inline friction::FrictionModel planar_blades_with_damper(const friction::PointParameters& law, double force,
                                                          double zeta, double cf = kCentrifugalForce) {
   Eigen::Matrix4d kb = Eigen::Matrix4d::Zero(), mb = Eigen::Vector4d(0.5, 0.5, 0.45, 0.45).asDiagonal();
   kb.topLeftCorner<2, 2>() << 1.0e6, 2.0e5, 2.0e5, 1.5e6;
@@ -81,7 +81,7 @@ inline friction::FrictionModel planar_blades_with_damper(const contact::JenkinsP
 inline double stuck_resonance(const friction::FrictionModel& m, Eigen::Index forced) {
   Eigen::MatrixXd k = m.stiffness;
   for (const friction::ContactElement& c : m.contacts)
-    k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
+    k += c.point.kn * c.normal.transpose() * c.normal + c.point.kt * c.tangential.transpose() * c.tangential;
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k, m.mass);
   double best = -1.0, omega = 0.0;
   for (Eigen::Index r = 0; r < eig.eigenvalues().size(); ++r) {

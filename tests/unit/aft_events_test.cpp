@@ -1,9 +1,9 @@
-// Event-resolved AFT (contact/aft_events): the closed-form describing function to rounding at 16
+// Event-resolved AFT (friction/aft_events): the closed-form describing function to rounding at 16
 // sample intervals, coefficients independent of the sample count where the sampled AFT converges
 // as 1 / n, the energy of a loop with lift-off against a fine march, and the Jacobian and the law
 // derivatives against central differences at every column: the map is smooth, so no column is
 // skipped. Units: SI.
-#include "contact/aft_events.hpp"
+#include "friction/aft_events.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "common/constants.hpp"
-#include "contact/jenkins_contact.hpp"
 #include "fourier_series.hpp"
+#include "friction/jenkins.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 namespace {
 
 AftOptions events(int samples) {
@@ -30,7 +30,7 @@ AftOptions events(int samples) {
 
 // u and v out of phase with second harmonics: the contact opens for part of the cycle, slips under
 // a varying limit and re-sticks (as aft_test.cpp's lift-off loop).
-const JenkinsParameters kLiftOff{.kn = 1e7, .kt = 1e6, .mu = 0.6, .n0 = 100.0};
+const PointParameters kLiftOff{.kn = 1e7, .kt = 1e6, .mu = 0.6, .n0 = 100.0};
 Eigen::VectorXd lift_off_u() {
   Eigen::VectorXd u(5);
   u << 1e-5, 2e-4, 1e-4, 3e-5, -2e-5;
@@ -43,7 +43,7 @@ Eigen::VectorXd lift_off_v() {
 }
 
 TEST(AftEvents, FirstHarmonicIsTheDescribingFunctionAtSixteenSamples) {
-  const JenkinsParameters p{.kn = 0.0, .kt = 1.0e6, .mu = 0.5, .n0 = 100.0};  // F = 50 N
+  const PointParameters p{.kn = 0.0, .kt = 1.0e6, .mu = 0.5, .n0 = 100.0};  // F = 50 N
   double worst = 0.0;
   for (double ratio : {0.5, 1.1, 2.0, 5.0, 50.0})
     for (double phase : {0.0, 0.7, 2.9}) {
@@ -106,7 +106,7 @@ TEST(AftEvents, EnergyWithLiftOffIsTheIntegralOfTdu) {
 
 struct EventRegime {
   const char* name;
-  JenkinsParameters p;
+  PointParameters p;
   double u_amplitude, v_amplitude, u_cos, v_cos;
 };
 
@@ -172,7 +172,7 @@ TEST(AftEvents, LawDerivativesMatchCentralDifferences) {
       const AftResult base = aft_jenkins(regime.p, u, v, options);
       const double force = std::max(base.tangential.cwiseAbs().maxCoeff(), regime.p.mu * regime.p.n0);
       for (Eigen::Index j = 0; j < 4; ++j) {
-        JenkinsParameters plus = regime.p, minus = regime.p;
+        PointParameters plus = regime.p, minus = regime.p;
         double* field[4] = {&plus.kn, &plus.kt, &plus.mu, &plus.n0};
         double* other[4] = {&minus.kn, &minus.kt, &minus.mu, &minus.n0};
         const double step = 1e-6 * *field[j];
@@ -230,4 +230,4 @@ TEST(AftEvents, EveryStartingSliderClosesOnTheSameLoop) {
 }
 
 }  // namespace
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,9 +1,9 @@
-// Alternating frequency-time evaluation of a Jenkins contact (contact/aft): the steady hysteresis
+// Alternating frequency-time evaluation of a Jenkins contact (friction/aft): the steady hysteresis
 // loop against the closed-form parallelogram and describing function, the energy it dissipates,
 // the clipped normal load against its closed-form harmonics, the exact Jacobian against central
 // differences, convergence with the number of time samples, and finite, closed loops over extreme
 // parameters. Units: SI.
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "common/constants.hpp"
-#include "contact/jenkins_contact.hpp"
 #include "fourier_series.hpp"
+#include "friction/jenkins.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 namespace {
 
 Eigen::VectorXd cosine(int harmonics, double amplitude, double phase = 0.0) {
@@ -49,7 +49,7 @@ Eigen::Vector2d shifted_describing_function(double amplitude, double phase, doub
   return {d[0] * std::cos(phase) - d[1] * std::sin(phase), d[0] * std::sin(phase) + d[1] * std::cos(phase)};
 }
 
-constexpr JenkinsParameters kConstantLoad{.kn = 0.0, .kt = 1.0e6, .mu = 0.5, .n0 = 100.0};  // F = 50 N
+constexpr PointParameters kConstantLoad{.kn = 0.0, .kt = 1.0e6, .mu = 0.5, .n0 = 100.0};  // F = 50 N
 constexpr double kSlipForce = 50.0, kSlipDistance = 5.0e-5;
 
 TEST(AftJenkins, AnalysisInvertsSynthesis) {
@@ -143,7 +143,7 @@ TEST(AftJenkins, HarmonicsConvergeAsTheInverseSquareOfTheSampleCount) {
 }
 
 TEST(AftJenkins, StuckContactIsALinearSpringAndFrictionlessOneCarriesNothing) {
-  const JenkinsParameters stuck{.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 1e4};  // elastic range 5e-3 m
+  const PointParameters stuck{.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 1e4};  // elastic range 5e-3 m
   Eigen::VectorXd u(5), v(5);
   u << 1e-4, 2e-4, -1e-4, 5e-5, 3e-5;
   v << 1e-5, -3e-5, 2e-5, 0.0, 1e-5;
@@ -156,7 +156,7 @@ TEST(AftJenkins, StuckContactIsALinearSpringAndFrictionlessOneCarriesNothing) {
   EXPECT_LT(r.dtangential_dv.norm(), 1e-9 * stuck.kt);
   EXPECT_LT((r.normal - (stuck.kn * v + Eigen::VectorXd::Unit(5, 0) * stuck.n0)).norm(), 1e-9 * stuck.n0);
 
-  JenkinsParameters frictionless = stuck;
+  PointParameters frictionless = stuck;
   frictionless.mu = 0.0;
   r = aft_jenkins(frictionless, u, v, {.samples = 32});
   EXPECT_EQ(r.tangential.cwiseAbs().maxCoeff(), 0.0);
@@ -179,7 +179,7 @@ Eigen::VectorXd clipped_cosine(int harmonics, double c, double a) {
 }
 
 TEST(AftJenkins, OpeningContactNormalLoadMatchesTheClippedCosine) {
-  const JenkinsParameters p{.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 100.0};
+  const PointParameters p{.kn = 1e7, .kt = 1e6, .mu = 0.5, .n0 = 100.0};
   const int harmonics = 5;
   Eigen::VectorXd v = Eigen::VectorXd::Zero(harmonic_size(harmonics));
   v[0] = 2e-6;  // c = 120 N
@@ -197,7 +197,7 @@ TEST(AftJenkins, OpeningContactNormalLoadMatchesTheClippedCosine) {
 
 // Work of T on u over the second of two periods marched by jenkins_step on a fine grid, trapezoidal
 // in u: an independent time-domain evaluation of the loop area.
-double fine_march_work(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v, int steps) {
+double fine_march_work(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v, int steps) {
   double slider = 0.0, work = 0.0, previous_t = 0.0, previous_u = 0.0;
   for (int k = 0; k <= 2 * steps; ++k) {
     const double theta = 2.0 * kPi * k / steps, uk = evaluate(u, theta);
@@ -213,7 +213,7 @@ double fine_march_work(const JenkinsParameters& p, const Eigen::VectorXd& u, con
 TEST(AftJenkins, EnergyWithVariableNormalLoadAndLiftOffIsTheIntegralOfTdu) {
   // u and v out of phase and with a second harmonic: the contact opens for part of the cycle,
   // slips under a varying limit and re-sticks; |T| <= mu N at every sample.
-  const JenkinsParameters p{.kn = 1e7, .kt = 1e6, .mu = 0.6, .n0 = 100.0};
+  const PointParameters p{.kn = 1e7, .kt = 1e6, .mu = 0.6, .n0 = 100.0};
   Eigen::VectorXd u(5), v(5);
   u << 1e-5, 2e-4, 1e-4, 3e-5, -2e-5;
   v << 0.0, 5e-6, -1.2e-5, 2e-6, 1e-6;
@@ -240,7 +240,7 @@ TEST(AftJenkins, EnergyWithVariableNormalLoadAndLiftOffIsTheIntegralOfTdu) {
 TEST(AftJenkins, JacobianMatchesCentralDifferences) {
   struct Regime {
     const char* name;
-    JenkinsParameters p;
+    PointParameters p;
     double u_amplitude, v_amplitude;  // of the random coefficients
     double u_cos, v_cos;              // added to a1 to force the regime
     ContactState expected;            // a state that must appear in the loop
@@ -328,7 +328,7 @@ TEST(AftJenkins, ExtremeParametersGiveFiniteForcesAndLoopsThatClose) {
   const double preloads[] = {0.0, 1e-3, 300.0, 1e5};
   int runs = 0, lift_offs = 0;
   for (int i = 0; i < 400; ++i) {
-    const JenkinsParameters p{
+    const PointParameters p{
         .kn = log_uniform(1e3, 1e12), .kt = log_uniform(1e3, 1e12), .mu = 2.0 * unit(rng), .n0 = preloads[i % 4]};
     const int harmonics = 1 + i % 3;
     const Eigen::VectorXd u = random_coefficients(rng, harmonics, log_uniform(1e-9, 1e-2));
@@ -366,4 +366,4 @@ TEST(AftJenkins, RejectsMalformedInput) {
 }
 
 }  // namespace
-}  // namespace bb::contact
+}  // namespace bb::friction

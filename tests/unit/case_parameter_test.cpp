@@ -47,7 +47,7 @@ TEST(CaseParameter, EveryContactLawPathReadsAndWritesItsField) {
     set_parameter_value(spec, p, 2.0 * e.value);
     EXPECT_EQ(parameter_value(spec, p), 2.0 * e.value) << e.path;
   }
-  EXPECT_EQ(std::get<HbmSpec>(spec.analysis).contacts[0].law.kt, 2.0e6);
+  EXPECT_EQ(std::get<HbmSpec>(spec.analysis).contacts[0].point.kt, 2.0e6);
   EXPECT_EQ(std::get<HbmSpec>(spec.analysis).damping.zeta, 0.02);
 }
 

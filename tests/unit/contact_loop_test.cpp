@@ -17,7 +17,7 @@ namespace {
 
 ContactLoopSpec rig(double u_amp, double v_amp = 0.0, int samples = 256) {
   ContactLoopSpec s;
-  s.law = {.kn = 1e8, .kt = 5e7, .mu = 0.5, .n0 = 100.0};  // Fs = 50 N, xs = 1e-6 m
+  s.point = {.kn = 1e8, .kt = 5e7, .mu = 0.5, .n0 = 100.0};  // Fs = 50 N, xs = 1e-6 m
   s.tangential_amplitude = u_amp;
   s.normal_amplitude = v_amp;
   s.samples = samples;
@@ -31,11 +31,11 @@ TEST(ContactLoop, EnergyMatchesClosedFormFromBelowWithinTheCornerBound) {
   for (double ratio : {1.5, 3.0, 20.0, 200.0}) {
     const ContactLoopSpec s = rig(ratio * 1e-6);
     const ContactLoopOutcome o = run_contact_loop(s);
-    const JenkinsLoopClosedForm cf = jenkins_loop_closed_form(s.law, s.tangential_amplitude);
+    const JenkinsLoopClosedForm cf = jenkins_loop_closed_form(s.point, s.tangential_amplitude);
     EXPECT_DOUBLE_EQ(cf.energy, 4 * 50.0 * (s.tangential_amplitude - 1e-6));
     const double beta = std::acos(1 - 2 / ratio), h = h_of(s);
     const double du = s.tangential_amplitude * h * (std::sin(beta) + h);
-    const double bound = 2 * s.law.kt * du * du / 8;
+    const double bound = 2 * s.point.kt * du * du / 8;
     EXPECT_LE(o.summary.dissipated_energy, cf.energy * (1 + 1e-12)) << ratio;
     EXPECT_GE(o.summary.dissipated_energy, cf.energy - bound) << ratio;
     EXPECT_TRUE(o.aft.closed);
@@ -45,12 +45,12 @@ TEST(ContactLoop, EnergyMatchesClosedFormFromBelowWithinTheCornerBound) {
 TEST(ContactLoop, StuckContactIsTheSpringKtAndDissipatesNothing) {
   const ContactLoopSpec s = rig(0.5e-6);  // U < xs
   const ContactLoopOutcome o = run_contact_loop(s);
-  EXPECT_EQ(jenkins_loop_closed_form(s.law, s.tangential_amplitude).energy, 0.0);
+  EXPECT_EQ(jenkins_loop_closed_form(s.point, s.tangential_amplitude).energy, 0.0);
   EXPECT_NEAR(o.summary.dissipated_energy, 0.0, 1e-12 * 50.0 * s.tangential_amplitude);
   EXPECT_DOUBLE_EQ(o.summary.stick_fraction, 1.0);
-  EXPECT_NEAR(o.summary.stick_slope / s.law.kt, 1.0, 1e-12);
-  EXPECT_NEAR(o.summary.equivalent_stiffness / s.law.kt, 1.0, 1e-12);
-  EXPECT_NEAR(o.summary.equivalent_damping, 0.0, 1e-9 * s.law.kt);
+  EXPECT_NEAR(o.summary.stick_slope / s.point.kt, 1.0, 1e-12);
+  EXPECT_NEAR(o.summary.equivalent_stiffness / s.point.kt, 1.0, 1e-12);
+  EXPECT_NEAR(o.summary.equivalent_damping, 0.0, 1e-9 * s.point.kt);
 }
 
 TEST(ContactLoop, DescribingFunctionMatchesGriffinWithinTheKinkBound) {
@@ -59,8 +59,8 @@ TEST(ContactLoop, DescribingFunctionMatchesGriffinWithinTheKinkBound) {
     for (int samples : {256, 1024}) {
       const ContactLoopSpec s = rig(ratio * 1e-6, 0.0, samples);
       const ContactLoopOutcome o = run_contact_loop(s);
-      const JenkinsLoopClosedForm cf = jenkins_loop_closed_form(s.law, s.tangential_amplitude);
-      const double beta = std::acos(1 - 2 / ratio), h = h_of(s), kt = s.law.kt;
+      const JenkinsLoopClosedForm cf = jenkins_loop_closed_form(s.point, s.tangential_amplitude);
+      const double beta = std::acos(1 - 2 / ratio), h = h_of(s), kt = s.point.kt;
       const double k_bound = kt * std::sin(beta) * std::abs(std::cos(beta)) * h * h / (6 * kPi) + kt * h * h * h / 10;
       const double c_bound = kt * std::sin(beta) * std::sin(beta) * h * h / (6 * kPi) + kt * h * h * h / 10;
       EXPECT_NEAR(o.summary.equivalent_stiffness, cf.stiffness, k_bound) << ratio << " " << samples;
@@ -80,11 +80,11 @@ TEST(ContactLoop, StickSlopeIsKtAndTheSlipPlateauIsMuN0) {
 
 TEST(ContactLoop, FrictionlessContactCarriesNoForceAndDissipatesNothing) {
   ContactLoopSpec s = rig(2e-5);
-  s.law.mu = 0.0;
+  s.point.mu = 0.0;
   const ContactLoopOutcome o = run_contact_loop(s);
   EXPECT_EQ(o.summary.max_tangential_force, 0.0);
   EXPECT_EQ(o.summary.dissipated_energy, 0.0);
-  EXPECT_EQ(jenkins_loop_closed_form(s.law, s.tangential_amplitude).energy, 0.0);
+  EXPECT_EQ(jenkins_loop_closed_form(s.point, s.tangential_amplitude).energy, 0.0);
   EXPECT_NEAR(o.summary.equivalent_stiffness, 0.0, 1e-12);
 }
 
@@ -93,12 +93,12 @@ TEST(ContactLoop, RigidContactGivesTheRigidPlasticEnergy) {
   // force jumps within the first interval after each reversal: the chord loses at most mu n0 du per
   // reversal, du = U (1 - cos h) <= U h^2 / 2.
   ContactLoopSpec s = rig(2e-5);
-  s.law.kt = 1e16;
+  s.point.kt = 1e16;
   const ContactLoopOutcome o = run_contact_loop(s);
   const double exact = 4 * 0.5 * 100.0 * s.tangential_amplitude, h = h_of(s);
   EXPECT_NEAR(o.summary.dissipated_energy, exact,
-              2 * 50.0 * s.tangential_amplitude * h * h / 2 + 4 * 50.0 * 50.0 / s.law.kt);
-  EXPECT_NEAR(jenkins_loop_closed_form(s.law, s.tangential_amplitude).energy, exact, 1e-9 * exact);
+              2 * 50.0 * s.tangential_amplitude * h * h / 2 + 4 * 50.0 * 50.0 / s.point.kt);
+  EXPECT_NEAR(jenkins_loop_closed_form(s.point, s.tangential_amplitude).energy, exact, 1e-9 * exact);
 }
 
 TEST(ContactLoop, LoopIsOddSymmetricAtConstantNormalLoad) {
@@ -118,7 +118,7 @@ TEST(ContactLoop, OpenSamplesCarryNoForceAndTheOpenFractionMatchesTheArc) {
       const ContactLoopOutcome o = run_contact_loop(s);
       int open = 0;
       for (size_t k = 0; k < o.aft.state.size(); ++k) {
-        if (o.aft.state[k] != contact::ContactState::lift_off) continue;
+        if (o.aft.state[k] != friction::ContactState::lift_off) continue;
         ++open;
         EXPECT_EQ(o.aft.t[static_cast<Eigen::Index>(k)], 0.0);
         EXPECT_EQ(o.aft.n[static_cast<Eigen::Index>(k)], 0.0);
@@ -127,12 +127,12 @@ TEST(ContactLoop, OpenSamplesCarryNoForceAndTheOpenFractionMatchesTheArc) {
       EXPECT_EQ(o.summary.max_force_when_open, 0.0);
       // An arc of length L holds L / h samples within one.
       const double expected = std::acos(100.0 / (1e8 * v_amp)) / kPi;
-      EXPECT_DOUBLE_EQ(lift_off_fraction_closed_form(s.law, v_amp), expected);
+      EXPECT_DOUBLE_EQ(lift_off_fraction_closed_form(s.point, v_amp), expected);
       EXPECT_NEAR(o.summary.lift_off_fraction, expected, 1.0 / s.samples) << v_amp << " " << phase;
       EXPECT_LE(o.summary.max_t_over_mu_n, 1.0 + 1e-12);
     }
   }
-  EXPECT_EQ(lift_off_fraction_closed_form(rig(2e-5).law, 0.5e-6), 0.0);  // kn V < n0: never opens
+  EXPECT_EQ(lift_off_fraction_closed_form(rig(2e-5).point, 0.5e-6), 0.0);  // kn V < n0: never opens
 }
 
 TEST(ContactLoop, ClosedFormsAreNotClaimedForAVariableNormalLoad) {
@@ -150,7 +150,7 @@ TEST(ContactLoop, VerificationCaseParsesIntoTheRigSpec) {
   const CaseSpec spec = parse_case_file(std::string(BB_SOURCE_DIR) + "/cases/verification/jenkins_loop_lift_off.toml");
   ASSERT_TRUE(std::holds_alternative<ContactLoopSpec>(spec.analysis));
   EXPECT_EQ(std::get<ContactLoopSpec>(spec.analysis).normal_amplitude, 2e-6);
-  EXPECT_EQ(std::get<ContactLoopSpec>(spec.analysis).law.kt, 5e7);
+  EXPECT_EQ(std::get<ContactLoopSpec>(spec.analysis).point.kt, 5e7);
   EXPECT_EQ(spec.model.mesh.kind, MeshSpec::Kind::none);
 }
 

@@ -29,7 +29,7 @@ enum Dof : Index { px = 0, py = 1, tx = 2, dx = 3, dy = 4 };
 struct Ring {
   int sectors = 6;
   double force = 3.0, centrifugal = 20.0;
-  contact::JenkinsParameters law{.kn = 1e6, .kt = 5e5, .mu = 0.5, .n0 = 0.0};
+  friction::PointParameters law{.kn = 1e6, .kt = 5e5, .mu = 0.5, .n0 = 0.0};
 
   void blade(friction::FrictionModel& m, Index o) const {
     m.mass.diagonal().segment(o, kDofs) << 0.2, 0.2, 0.3, 0.02, 0.02;
@@ -45,7 +45,7 @@ struct Ring {
   // Damper of sector at offset o against the platform at offset p (its own blade or the next).
   friction::ContactElement contact(Index n, Index o, Index p) const {
     friction::ContactElement c;
-    c.law = law;
+    c.point = law;
     c.tangential = Eigen::RowVectorXd::Zero(n);
     c.normal = Eigen::RowVectorXd::Zero(n);
     c.tangential[o + dx] += 1.0;

@@ -7,9 +7,9 @@
 #include <numbers>
 #include <random>
 
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 // The series c at the phase angle theta.
 inline double evaluate(const Eigen::VectorXd& c, double theta) {
@@ -45,4 +45,4 @@ inline Eigen::Vector2d describing_function(double amplitude, double kt, double s
           -kt * amplitude / std::numbers::pi * std::pow(std::sin(beta), 2)};
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

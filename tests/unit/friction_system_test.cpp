@@ -21,7 +21,7 @@ friction::FrictionModel five_dofs() {
   t[3] = 1.0;
   t[1] = -1.0;
   n[4] = 1.0;
-  m.contacts.push_back({.law = {.kn = 1.0, .kt = 1.0, .mu = 0.1, .n0 = 0.0}, .tangential = t, .normal = n});
+  m.contacts.push_back({.point = {.kn = 1.0, .kt = 1.0, .mu = 0.1, .n0 = 0.0}, .tangential = t, .normal = n});
   return m;
 }
 

@@ -86,7 +86,7 @@ TEST_F(HbmAnalysis, SmallestLevelIsTheClosedFormStuckOscillator) {
             1,
         0.0, 1e-9)
         << level.frequency_hz[i] << " Hz";
-  for (const contact::ContactState s : peak.solution.contacts.at(0).state) EXPECT_EQ(s, contact::ContactState::stick);
+  for (const friction::ContactState s : peak.solution.contacts.at(0).state) EXPECT_EQ(s, friction::ContactState::stick);
 }
 
 TEST_F(HbmAnalysis, FrictionlessContactGivesTheFreeLinearOscillatorAtEveryLevel) {

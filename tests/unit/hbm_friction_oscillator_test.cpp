@@ -10,15 +10,15 @@
 #include <vector>
 
 #include "common/constants.hpp"
-#include "contact/aft.hpp"
-#include "contact/jenkins_contact.hpp"
+#include "friction/aft.hpp"
+#include "friction/jenkins.hpp"
 #include "friction_oscillator.hpp"
 #include "hbm/harmonic_balance.hpp"
 
 namespace bb::hbm {
 namespace {
 
-using contact::ContactState;
+using friction::ContactState;
 using test::first_harmonic_amplitude;
 using test::FrictionOscillator;
 
@@ -41,7 +41,7 @@ Eigen::Vector2d time_integration_first_harmonic(const FrictionOscillator& o, dou
                                                 int steps_per_period) {
   const double dt = 2.0 * kPi / (omega * steps_per_period);
   const auto acceleration = [&](double t, double x, double v, double slider) {
-    const double contact = contact::jenkins_step(o.contact, slider, x, 0.0).tangential;
+    const double contact = friction::jenkins_step(o.contact, slider, x, 0.0).tangential;
     return (o.force * std::cos(omega * t) - o.damping * v - o.stiffness * x - contact) / o.mass;
   };
   double x = 0.0, v = 0.0, slider = 0.0;
@@ -59,7 +59,7 @@ Eigen::Vector2d time_integration_first_harmonic(const FrictionOscillator& o, dou
     const double k4x = v + dt * k3v, k4v = acceleration(t + dt, x + dt * k3x, v + dt * k3v, slider);
     x += dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
     v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-    slider = contact::jenkins_step(o.contact, slider, x, 0.0).slider;
+    slider = friction::jenkins_step(o.contact, slider, x, 0.0).slider;
   }
   return harmonic * (2.0 / (static_cast<double>(averaged) * steps_per_period));
 }
@@ -106,8 +106,8 @@ TEST(HbmFrictionOscillator, ConvergedHarmonicsBalanceInputAndDissipatedEnergy) {
   ASSERT_TRUE(s.converged) << s.failure;
   Eigen::VectorXd excitation = Eigen::VectorXd::Zero(s.x.size());
   excitation[1] = o.force;
-  const double input = contact::cycle_work(excitation, s.x),
-               friction = contact::cycle_work(s.contacts[0].tangential, s.x);
+  const double input = friction::cycle_work(excitation, s.x),
+               friction = friction::cycle_work(s.contacts[0].tangential, s.x);
   double viscous = 0.0;
   for (int h = 1; h <= 5; ++h)
     viscous += kPi * o.damping * omega * h * h * (s.x[2 * h - 1] * s.x[2 * h - 1] + s.x[2 * h] * s.x[2 * h]);

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "../extremes/hbm_models.hpp"
-#include "contact/aft.hpp"
 #include "frf/receptance.hpp"
+#include "friction/aft.hpp"
 #include "friction_oscillator.hpp"
 #include "hbm/harmonic_balance.hpp"
 
@@ -40,9 +40,9 @@ MatrixXd linear_reference(const friction::FrictionModel& m, double omega, bool s
   MatrixXd k = m.stiffness;
   VectorXd fs = m.static_load;
   for (const friction::ContactElement& c : m.contacts) {
-    k += c.law.kn * c.normal.transpose() * c.normal;
-    if (stuck) k += c.law.kt * c.tangential.transpose() * c.tangential;
-    fs -= c.law.n0 * c.normal.transpose();
+    k += c.point.kn * c.normal.transpose() * c.normal;
+    if (stuck) k += c.point.kt * c.tangential.transpose() * c.tangential;
+    fs -= c.point.n0 * c.normal.transpose();
   }
   const VectorXd q0 = k.fullPivLu().solve(fs);
   const Eigen::VectorXcd q1 = direct_response(k, m.damping, m.mass, omega, m.harmonic_load);
@@ -95,8 +95,8 @@ TEST(HbmMultiDof, StuckSliderRestsAtItsOffset) {
   MatrixXd k = m.stiffness;
   VectorXd fs = m.static_load;
   const friction::ContactElement& c = m.contacts[0];
-  k += c.law.kn * c.normal.transpose() * c.normal + c.law.kt * c.tangential.transpose() * c.tangential;
-  fs += c.law.kt * d * c.tangential.transpose() - c.law.n0 * c.normal.transpose();
+  k += c.point.kn * c.normal.transpose() * c.normal + c.point.kt * c.tangential.transpose() * c.tangential;
+  fs += c.point.kt * d * c.tangential.transpose() - c.point.n0 * c.normal.transpose();
   const VectorXd q0 = k.fullPivLu().solve(fs);
   const HarmonicBalance system(m, {.harmonics = 1});
   const double omega = 900.0;
@@ -108,7 +108,7 @@ TEST(HbmMultiDof, StuckSliderRestsAtItsOffset) {
   ASSERT_TRUE(start.has_value());
   EXPECT_LT((*start - s.x).norm(), 1e-10 * s.x.norm());
   // The contact carries kt (u - d) statically, less than mu N: it does stick.
-  EXPECT_NEAR(s.contacts[0].tangential[0], c.law.kt * (c.tangential.dot(q0) - d), 1e-8);
+  EXPECT_NEAR(s.contacts[0].tangential[0], c.point.kt * (c.tangential.dot(q0) - d), 1e-8);
 }
 
 TEST(HbmMultiDof, OpeningContactLiftsOffWithoutNaN) {
@@ -121,7 +121,7 @@ TEST(HbmMultiDof, OpeningContactLiftsOffWithoutNaN) {
     ASSERT_TRUE(s.x.allFinite());
     const auto& n = s.contacts[0].n;
     const auto open =
-        std::count(s.contacts[0].state.begin(), s.contacts[0].state.end(), contact::ContactState::lift_off);
+        std::count(s.contacts[0].state.begin(), s.contacts[0].state.end(), friction::ContactState::lift_off);
     std::printf("  lift-off, omega %6.0f: %ld of %ld samples open, max N %.3g N\n", omega, static_cast<long>(open),
                 static_cast<long>(n.size()), n.maxCoeff());
     EXPECT_GT(open, 0);
@@ -142,7 +142,7 @@ friction::FrictionModel blade_with_damper(double force, double mu) {
   m.damping = MatrixXd::Zero(5, 5);
   m.damping.topLeftCorner(3, 3) =
       modal_damping_matrix(m.stiffness.topLeftCorner(3, 3), m.mass.topLeftCorner(3, 3), 0.005);
-  const contact::JenkinsParameters law{.kn = 2.0e6, .kt = 1.0e6, .mu = mu, .n0 = 0.0};
+  const friction::PointParameters law{.kn = 2.0e6, .kt = 1.0e6, .mu = mu, .n0 = 0.0};
   m.contacts.push_back({law, unit_row(5, 1) - unit_row(5, 3), unit_row(5, 4) - unit_row(5, 2)});
   m.contacts.push_back({law, unit_row(5, 3), unit_row(5, 4)});
   m.static_load = VectorXd::Zero(5);
@@ -239,7 +239,7 @@ TEST(HbmMultiDof, SingleDofAgreesWithTheFrictionOscillator) {
                                    .force = 30.0,
                                    .contact = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0}};
   const HarmonicBalance system(o.model(), {.harmonics = 5, .tolerance = 1e-12});
-  const Eigen::Index m = contact::harmonic_size(5);
+  const Eigen::Index m = friction::harmonic_size(5);
   double worst = 0.0;
   for (const double omega : {900.0, 1050.0, 1150.0, 1250.0, 1400.0}) {
     const HbmSolution s = solve_at_frequency(system, omega);
@@ -252,7 +252,7 @@ TEST(HbmMultiDof, SingleDofAgreesWithTheFrictionOscillator) {
       a(i, i + 1) = o.damping * h * omega;
       a(i + 1, i) = -o.damping * h * omega;
     }
-    const contact::AftResult t = contact::aft_jenkins(o.contact, s.x, VectorXd::Zero(m), system.aft_options());
+    const friction::AftResult t = friction::aft_jenkins(o.contact, s.x, VectorXd::Zero(m), system.aft_options());
     VectorXd r = a * s.x + t.tangential;
     r[1] -= o.force;
     const double e = (a + t.dtangential_du).fullPivLu().solve(r).norm() / s.x.norm();
@@ -264,8 +264,8 @@ TEST(HbmMultiDof, SingleDofAgreesWithTheFrictionOscillator) {
 
 // Peak over time of q1(t) from its harmonics.
 double peak_in_time(const VectorXd& coefficients) {
-  const int harmonics = contact::harmonics_of(coefficients.size());
-  const MatrixXd e = contact::synthesis_matrix(harmonics, 512);
+  const int harmonics = friction::harmonics_of(coefficients.size());
+  const MatrixXd e = friction::synthesis_matrix(harmonics, 512);
   return (e * coefficients).cwiseAbs().maxCoeff();
 }
 

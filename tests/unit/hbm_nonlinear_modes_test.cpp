@@ -21,7 +21,7 @@ friction::FrictionModel oscillator() {
   m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1.0e6);
   m.damping = Eigen::MatrixXd::Constant(1, 1, 20.0);
   friction::ContactElement c;
-  c.law = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0};
+  c.point = {.kn = 0.0, .kt = 5.0e5, .mu = 0.5, .n0 = 20.0};
   c.tangential = Eigen::RowVectorXd::Constant(1, 1.0);
   c.normal = Eigen::RowVectorXd::Zero(1);
   m.contacts.push_back(c);
@@ -75,7 +75,7 @@ TEST(NonlinearModes, InPhaseModeOfSymmetricBladesNeverLoadsTheirContact) {
   m.stiffness = (Eigen::Matrix2d() << 1.1e6, -1e5, -1e5, 1.1e6).finished();
   m.damping = 20.0 * Eigen::Matrix2d::Identity();
   friction::ContactElement c;
-  c.law = {.kn = 1.0e6, .kt = 2.0e5, .mu = 0.3, .n0 = 20.0};
+  c.point = {.kn = 1.0e6, .kt = 2.0e5, .mu = 0.3, .n0 = 20.0};
   c.tangential = Eigen::RowVector2d(1.0, -1.0);
   c.normal = Eigen::RowVector2d::Zero();
   m.contacts.push_back(c);

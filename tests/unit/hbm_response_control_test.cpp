@@ -104,7 +104,7 @@ TEST(ResponseControl, HeldDofAwayFromTheContactIsRecoveredFromTheContactDofs) {
   m.mass = Eigen::Matrix2d::Identity();
   m.stiffness = (Eigen::Matrix2d() << 1.5e6, -5.0e5, -5.0e5, 5.0e5).finished();
   m.damping = 1e-5 * m.stiffness + 2.0 * m.mass;
-  m.contacts.push_back({.law = {.kn = 1.0e6, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0},
+  m.contacts.push_back({.point = {.kn = 1.0e6, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0},
                         .tangential = (Eigen::RowVector2d() << 1.0, 0.0).finished(),
                         .normal = Eigen::RowVector2d::Zero()});
   for (double hz : {80.0, 110.0, 150.0, 230.0}) expect_round_trip(m, 1, 1, 3.0, hz);

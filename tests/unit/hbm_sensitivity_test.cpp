@@ -1,5 +1,5 @@
 // Implicit-function-theorem sensitivities of harmonic-balance solutions (hbm/sensitivity) and the
-// AFT law derivatives behind them (contact/aft, law_derivatives), against central differences of
+// AFT law derivatives behind them (friction/aft, law_derivatives), against central differences of
 // full re-solves and of the AFT. Units: SI.
 //
 // Every parameter is a relative scale s (p -> s p, derivative at s = 1, i.e. p d/dp), for kn, kt,
@@ -26,8 +26,8 @@
 
 #include "../extremes/hbm_models.hpp"
 #include "common/errors.hpp"
-#include "contact/aft.hpp"
 #include "frf/receptance.hpp"
+#include "friction/aft.hpp"
 #include "hbm/harmonic_balance.hpp"
 #include "hbm/sensitivity.hpp"
 
@@ -47,10 +47,10 @@ constexpr std::array<const char*, parameter_count> kNames{"kn", "kt", "mu", "n0"
 
 friction::FrictionModel scaled(friction::FrictionModel m, int which, double s) {
   for (friction::ContactElement& c : m.contacts) {
-    if (which == p_kn) c.law.kn *= s;
-    if (which == p_kt) c.law.kt *= s;
-    if (which == p_mu) c.law.mu *= s;
-    if (which == p_n0) c.law.n0 *= s;
+    if (which == p_kn) c.point.kn *= s;
+    if (which == p_kt) c.point.kt *= s;
+    if (which == p_mu) c.point.mu *= s;
+    if (which == p_n0) c.point.n0 *= s;
   }
   if (which == p_zeta) m.damping *= s;
   if (which == p_load) m.harmonic_load *= s;
@@ -61,9 +61,9 @@ friction::FrictionModel scaled(friction::FrictionModel m, int which, double s) {
 ModelDerivative scale_derivative(const friction::FrictionModel& m, int which) {
   if (which == p_zeta) return damping_scale_derivative(m);
   if (which == p_load) return excitation_scale_derivative(m);
-  ModelDerivative d = law_derivative(m, static_cast<contact::LawParameter>(which));
+  ModelDerivative d = law_derivative(m, static_cast<friction::LawParameter>(which));
   for (size_t k = 0; k < m.contacts.size(); ++k) {
-    const contact::JenkinsParameters& law = m.contacts[k].law;
+    const friction::PointParameters& law = m.contacts[k].point;
     d.laws[k].kn *= law.kn, d.laws[k].kt *= law.kt, d.laws[k].mu *= law.mu, d.laws[k].n0 *= law.n0;
   }
   return d;
@@ -75,11 +75,11 @@ struct StateCount {
 
 StateCount count_states(const HbmSolution& s) {
   StateCount c;
-  for (const contact::AftResult& r : s.contacts)
-    for (const contact::ContactState state : r.state) {
-      if (state == contact::ContactState::stick)
+  for (const friction::AftResult& r : s.contacts)
+    for (const friction::ContactState state : r.state) {
+      if (state == friction::ContactState::stick)
         ++c.stick;
-      else if (state == contact::ContactState::lift_off)
+      else if (state == friction::ContactState::lift_off)
         ++c.open;
       else
         ++c.slip;
@@ -195,7 +195,7 @@ Comparison compare(const friction::FrictionModel& model, int harmonics, double o
 // One DOF against the ground: m x'' + c x' + k x + T = F cos(omega t), k = 1e6 N/m, m = 1 kg
 // (omega_0 = 1000 rad/s), 1 % damping. a_n = 0: N = N0 throughout; a_n = 0.5 (inclined contact):
 // v = x / 2 varies and opens the contact for x < -2 N0 / kn.
-friction::FrictionModel oscillator(const contact::JenkinsParameters& law, double force, double inclination) {
+friction::FrictionModel oscillator(const friction::PointParameters& law, double force, double inclination) {
   friction::FrictionModel m;
   m.mass = MatrixXd::Constant(1, 1, 1.0);
   m.stiffness = MatrixXd::Constant(1, 1, 1.0e6);
@@ -206,7 +206,7 @@ friction::FrictionModel oscillator(const contact::JenkinsParameters& law, double
 }
 
 TEST(HbmSensitivity, OneDofOscillatorMatchesCentralDifferencesInEveryRegime) {
-  const contact::JenkinsParameters law{.kn = 2.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 100.0};  // mu N0 = 30 N
+  const friction::PointParameters law{.kn = 2.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 100.0};  // mu N0 = 30 N
   compare(oscillator(law, 5.0, 0.0), 3, 1300.0, Regime::stuck, "1-DOF");
   compare(oscillator(law, 20.0, 0.0), 3, 1300.0, Regime::stick_slip, "1-DOF");
   compare(oscillator(law, 200.0, 0.0), 3, 900.0, Regime::gross_slip, "1-DOF");
@@ -215,7 +215,7 @@ TEST(HbmSensitivity, OneDofOscillatorMatchesCentralDifferencesInEveryRegime) {
 }
 
 TEST(HbmSensitivity, BladeOnGroundMatchesCentralDifferencesInEveryRegime) {
-  const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
+  const friction::PointParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
   const double omega = 0.9 * models::stuck_resonance(models::blade_on_ground(law, 1.0), 0);
   compare(models::blade_on_ground(law, 2.0), 3, omega, Regime::stuck, "blade");
   compare(models::blade_on_ground(law, 30.0), 3, omega, Regime::stick_slip, "blade");
@@ -229,12 +229,12 @@ TEST(HbmSensitivity, PlanarDamperMatchesCentralDifferences) {
   // The sliders rest at the frictionless static seat (as hbm_analysis does): from zero offsets the
   // first period would slip into the seat and leave a sample exactly on the Coulomb limit, a kink
   // whose state flips under any perturbation.
-  const contact::JenkinsParameters law{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 0.0};
+  const friction::PointParameters law{.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 0.0};
   for (const auto& [force, below, regime] :
        {std::tuple{2.0, 0.98, Regime::stuck}, std::tuple{200.0, 0.9, Regime::stick_slip}}) {
     friction::FrictionModel model = models::planar_blades_with_damper(law, force, 1e-2);
     MatrixXd k = model.stiffness;
-    for (const friction::ContactElement& c : model.contacts) k += c.law.kn * c.normal.transpose() * c.normal;
+    for (const friction::ContactElement& c : model.contacts) k += c.point.kn * c.normal.transpose() * c.normal;
     const VectorXd seat = k.fullPivLu().solve(model.static_load);
     for (friction::ContactElement& c : model.contacts) c.tangential_offset = c.tangential.dot(seat);
     compare(model, 1, below * models::stuck_resonance(model, 0), regime, "damper");
@@ -243,32 +243,32 @@ TEST(HbmSensitivity, PlanarDamperMatchesCentralDifferences) {
 
 TEST(HbmSensitivity, StuckContactHasExactlyZeroFrictionSensitivity) {
   // A contact stuck throughout never reaches mu N: the solution cannot depend on mu at all.
-  const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
+  const friction::PointParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
   const friction::FrictionModel model = models::blade_on_ground(law, 2.0);
   const HarmonicBalance system(model, tight(3));
   const HbmSolution s = solve_at_frequency(system, 0.9 * models::stuck_resonance(model, 0));
   ASSERT_TRUE(s.converged) << s.failure;
   expect_regime(s, Regime::stuck);
-  const MatrixXd dx = solution_sensitivity(system, s, {law_derivative(model, contact::law_mu)});
+  const MatrixXd dx = solution_sensitivity(system, s, {law_derivative(model, friction::law_mu)});
   EXPECT_EQ(dx.norm(), 0.0);
-  EXPECT_GT(solution_sensitivity(system, s, {law_derivative(model, contact::law_kt)}).norm(), 0.0);
+  EXPECT_GT(solution_sensitivity(system, s, {law_derivative(model, friction::law_kt)}).norm(), 0.0);
 }
 
 TEST(HbmSensitivity, FrictionlessContactHasExactlyZeroTangentialStiffnessSensitivity) {
   // mu = 0: the contact slips with T = 0 at every sample, whatever kt; N still depends on kn.
-  const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.0, .n0 = 50.0};
+  const friction::PointParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.0, .n0 = 50.0};
   const friction::FrictionModel model = models::blade_on_ground(law, 10.0);
   const HarmonicBalance system(model, tight(3));
   const HbmSolution s = solve_at_frequency(system, 1000.0);
   ASSERT_TRUE(s.converged) << s.failure;
-  const MatrixXd dx =
-      solution_sensitivity(system, s, {law_derivative(model, contact::law_kt), law_derivative(model, contact::law_kn)});
+  const MatrixXd dx = solution_sensitivity(
+      system, s, {law_derivative(model, friction::law_kt), law_derivative(model, friction::law_kn)});
   EXPECT_EQ(dx.col(0).norm(), 0.0);
   EXPECT_GT(dx.col(1).norm(), 0.0);
 }
 
 TEST(HbmSensitivity, AmplitudeSensitivityIsTheDerivativeOfTheFirstHarmonicModulus) {
-  const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
+  const friction::PointParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
   const friction::FrictionModel model = models::blade_on_ground(law, 30.0);
   const double omega = 0.9 * models::stuck_resonance(model, 0);
   const HarmonicBalance system(model, tight(3));
@@ -295,7 +295,7 @@ TEST(HbmSensitivity, AmplitudeSensitivityIsTheDerivativeOfTheFirstHarmonicModulu
 }
 
 TEST(HbmSensitivity, RefusesAnUnconvergedSolutionAndMismatchedDerivatives) {
-  const contact::JenkinsParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
+  const friction::PointParameters law{.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 50.0};
   const friction::FrictionModel model = models::blade_on_ground(law, 15.0);
   const HarmonicBalance system(model, tight(1));
   HbmSolution s = solve_at_frequency(system, 1000.0);
@@ -311,7 +311,7 @@ TEST(HbmSensitivity, RefusesAnUnconvergedSolutionAndMismatchedDerivatives) {
 
 struct AftCase {
   const char* name;
-  contact::JenkinsParameters law;
+  friction::PointParameters point;
   double u1, v0, v1;  // u = u1 cos + small 3rd harmonic; v = v0 + v1 sin
 };
 
@@ -323,37 +323,37 @@ TEST(AftLawDerivatives, MatchCentralDifferencesOfTheMarch) {
       {"gross slip", {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 100.0}, 2e-3, 0.0, 2e-5},
       {"lift-off", {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 10.0}, 1e-4, 0.0, 3e-5},
   };
-  const contact::AftOptions plain{.samples = 112};  // H = 3 below, the default 16 (2H + 1)
-  contact::AftOptions with = plain;
+  const friction::AftOptions plain{.samples = 112};  // H = 3 below, the default 16 (2H + 1)
+  friction::AftOptions with = plain;
   with.law_derivatives = true;
   for (const AftCase& c : cases) {
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(contact::harmonic_size(3)),
-                    v = Eigen::VectorXd::Zero(contact::harmonic_size(3));
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(friction::harmonic_size(3)),
+                    v = Eigen::VectorXd::Zero(friction::harmonic_size(3));
     u[1] = c.u1, u[5] = 0.1 * c.u1, v[0] = c.v0, v[2] = c.v1;
-    const contact::AftResult r = contact::aft_jenkins(c.law, u, v, with);
+    const friction::AftResult r = friction::aft_jenkins(c.point, u, v, with);
     ASSERT_EQ(r.dtangential_dlaw.rows(), 7);
     ASSERT_EQ(r.dtangential_dlaw.cols(), 4);
     // The flag adds outputs only.
-    const contact::AftResult reference = contact::aft_jenkins(c.law, u, v, plain);
+    const friction::AftResult reference = friction::aft_jenkins(c.point, u, v, plain);
     EXPECT_EQ(reference.dtangential_dlaw.size(), 0);
     EXPECT_EQ((reference.tangential - r.tangential).norm(), 0.0);
     EXPECT_EQ((reference.dtangential_du - r.dtangential_du).norm(), 0.0);
     std::printf("  AFT %-24s", c.name);
     for (int p = 0; p < 4; ++p) {
-      std::array<contact::AftResult, 2> side;
+      std::array<friction::AftResult, 2> side;
       double value = 0.0;
       for (int k = 0; k < 2; ++k) {
-        contact::JenkinsParameters law = c.law;
+        friction::PointParameters law = c.point;
         double* field = p == 0 ? &law.kn : p == 1 ? &law.kt : p == 2 ? &law.mu : &law.n0;
         value = *field;
         *field *= k == 0 ? 1.0 + kStep : 1.0 - kStep;
-        side[static_cast<size_t>(k)] = contact::aft_jenkins(law, u, v, plain);
+        side[static_cast<size_t>(k)] = friction::aft_jenkins(law, u, v, plain);
         ASSERT_EQ(side[static_cast<size_t>(k)].state, r.state) << c.name << ": a sample switched within the step";
       }
       const Eigen::VectorXd fd_t = (side[0].tangential - side[1].tangential) / (2.0 * kStep * value);
       const Eigen::VectorXd fd_n = (side[0].normal - side[1].normal) / (2.0 * kStep * value);
       // Compared per unit relative change of the parameter, against the force scale mu N0 + kn |v|.
-      const double scale = c.law.mu * c.law.n0 + c.law.kn * v.norm();
+      const double scale = c.point.mu * c.point.n0 + c.point.kn * v.norm();
       const double e_t =
           (r.dtangential_dlaw.col(p) - fd_t).norm() * value / std::max(fd_t.norm() * value, 1e-6 * scale);
       const double e_n = (r.dnormal_dlaw.col(p) - fd_n).norm() * value / std::max(fd_n.norm() * value, 1e-6 * scale);
@@ -368,15 +368,16 @@ TEST(AftLawDerivatives, MatchCentralDifferencesOfTheMarch) {
 TEST(AftLawDerivatives, StuckLoopIgnoresFrictionAndFrictionlessLoopIgnoresTangentialStiffness) {
   Eigen::VectorXd u = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
   u[1] = 1e-5, v[2] = 1e-5;
-  const contact::AftOptions options{.samples = 64, .law_derivatives = true};
-  const contact::AftResult stuck = contact::aft_jenkins({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 100.0}, u, v, options);
-  EXPECT_EQ(stuck.dtangential_dlaw.col(contact::law_mu).norm(), 0.0);
-  EXPECT_EQ(stuck.dtangential_dlaw.col(contact::law_kn).norm(), 0.0);
+  const friction::AftOptions options{.samples = 64, .law_derivatives = true};
+  const friction::AftResult stuck =
+      friction::aft_jenkins({.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 100.0}, u, v, options);
+  EXPECT_EQ(stuck.dtangential_dlaw.col(friction::law_mu).norm(), 0.0);
+  EXPECT_EQ(stuck.dtangential_dlaw.col(friction::law_kn).norm(), 0.0);
   // T = kt u exactly: dT/dkt = u.
-  EXPECT_LT((stuck.dtangential_dlaw.col(contact::law_kt) - u).norm(), 1e-13 * u.norm());  // P E = I to rounding
-  const contact::AftResult free = contact::aft_jenkins({.kn = 1e6, .kt = 1e6, .mu = 0.0, .n0 = 100.0}, u, v, options);
-  EXPECT_EQ(free.dtangential_dlaw.col(contact::law_kt).norm(), 0.0);
-  EXPECT_GT(free.dtangential_dlaw.col(contact::law_mu).norm(), 0.0);
+  EXPECT_LT((stuck.dtangential_dlaw.col(friction::law_kt) - u).norm(), 1e-13 * u.norm());  // P E = I to rounding
+  const friction::AftResult free = friction::aft_jenkins({.kn = 1e6, .kt = 1e6, .mu = 0.0, .n0 = 100.0}, u, v, options);
+  EXPECT_EQ(free.dtangential_dlaw.col(friction::law_kt).norm(), 0.0);
+  EXPECT_GT(free.dtangential_dlaw.col(friction::law_mu).norm(), 0.0);
 }
 
 }  // namespace

@@ -1,23 +1,23 @@
-// The Iwan element (contact/iwan_law) as parallel Jenkins sliders (contact/friction_law): its
+// The Iwan element (friction/iwan_law) as parallel Jenkins sliders (friction/masing): its
 // shares add up to the point's stiffness and slip force, its loop energy converges to Segalman's
 // closed form (micro-slip power law of slope chi + 3, macro-slip beyond phi_max), its stiffness
 // barely drops while its damping grows, and the law derivatives of the summed AFT follow the chain
 // rule through the shares. Loops by the event-resolved AFT, exact for the sliders. Units: SI.
-#include "contact/iwan_law.hpp"
+#include "friction/iwan_law.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "contact/aft.hpp"
-#include "contact/friction_law.hpp"
+#include "friction/aft.hpp"
+#include "friction/masing.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 namespace {
 
 // A joint at constant normal load: K_T = 1e6 N/m, F_S = mu N0 = 0.5 * 200 = 100 N.
-constexpr JenkinsParameters kPoint{.kn = 0.0, .kt = 1.0e6, .mu = 0.5, .n0 = 200.0};
+constexpr PointParameters kPoint{.kn = 0.0, .kt = 1.0e6, .mu = 0.5, .n0 = 200.0};
 
 struct Loop {
   double energy = 0.0, stiffness = 0.0, damping = 0.0, peak_force = 0.0;
@@ -57,7 +57,7 @@ TEST(IwanLaw, SharesAddUpToThePointsStiffnessAndSlipForceInSlipOrder) {
     EXPECT_NEAR(load, 1.0, 1e-14);
     double kt = 0.0, slip = 0.0;
     const IwanDistribution law(p);
-    for (const JenkinsParameters& j : parallel_sliders(kPoint, &law)) kt += j.kt, slip += j.mu * j.n0;
+    for (const PointParameters& j : parallel_sliders(kPoint, &law)) kt += j.kt, slip += j.mu * j.n0;
     EXPECT_NEAR(kt, kPoint.kt, 1e-8 * kPoint.kt);
     EXPECT_NEAR(slip, kPoint.mu * kPoint.n0, 1e-12 * kPoint.mu * kPoint.n0);
   }
@@ -116,7 +116,7 @@ TEST(IwanLaw, BeyondPhiMaxEverySliderSlipsAndTheForceIsMuN) {
 // dT/d(kt, mu, n0) of the point: the sliders' derivatives carried through the shares.
 TEST(IwanLaw, LawDerivativesOfTheSummedAftMatchCentralDifferences) {
   const IwanDistribution law(IwanParameters{-0.5, 0.2, 16});
-  JenkinsParameters point = kPoint;
+  PointParameters point = kPoint;
   point.kn = 2.0e7;  // a varying normal load, so kn and n0 act too
   AftOptions o;
   o.samples = 64;
@@ -126,10 +126,10 @@ TEST(IwanLaw, LawDerivativesOfTheSummedAftMatchCentralDifferences) {
   const AftResult r = aft_parallel(point, &law, u, v, o);
   o.law_derivatives = false;
   for (const LawParameter k : {law_kn, law_kt, law_mu, law_n0}) {
-    const auto field = [&](JenkinsParameters& p) -> double& {
+    const auto field = [&](PointParameters& p) -> double& {
       return k == law_kn ? p.kn : k == law_kt ? p.kt : k == law_mu ? p.mu : p.n0;
     };
-    JenkinsParameters up = point, down = point;
+    PointParameters up = point, down = point;
     const double h = 1e-6 * field(up);
     field(up) += h, field(down) -= h;
     const Eigen::VectorXd fd =
@@ -148,9 +148,9 @@ TEST(IwanLaw, RejectsAnExponentOutsideMinusOneToZeroAndTooFewSliders) {
 }
 
 }  // namespace
-}  // namespace bb::contact
+}  // namespace bb::friction
 
-namespace bb::contact {
+namespace bb::friction {
 namespace {
 
 // chi and beta are the law's own parameters: a calibration reads them by name and varies them by
@@ -186,4 +186,4 @@ TEST(IwanLaw, ChiAndBetaAreItsOwnParametersReadAndVariedByName) {
 }
 
 }  // namespace
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -37,7 +37,7 @@ friction::FrictionModel pressed_slider() {
   m.mass = MatrixXd::Identity(2, 2);
   m.stiffness = (MatrixXd(2, 2) << 1e6, 2e5, 2e5, 2e6).finished();
   m.damping = 2e-4 * m.stiffness;
-  m.contacts.push_back({.law = {.kn = 1e6, .kt = 5e5, .mu = 0.4, .n0 = 5.0},
+  m.contacts.push_back({.point = {.kn = 1e6, .kt = 5e5, .mu = 0.4, .n0 = 5.0},
                         .tangential = (Eigen::RowVectorXd(2) << 1.0, 0.0).finished(),
                         .normal = (Eigen::RowVectorXd(2) << 0.0, 1.0).finished()});
   m.harmonic_load = (Eigen::VectorXcd(2) << 10.0, std::polar(8.0, 0.7)).finished();
@@ -66,8 +66,8 @@ TEST(NewmarkShooting, MonodromyEqualsDifferencesOfTheMapThroughStickSlipAndLiftO
     ASSERT_TRUE(s.result.steady.converged) << s.result.steady.failure;
     int slips = 0, lifts = 0;
     for (const auto& c : s.result.steady.contacts[0]) {
-      slips += c.state == contact::ContactState::slip_positive || c.state == contact::ContactState::slip_negative;
-      lifts += c.state == contact::ContactState::lift_off;
+      slips += c.state == friction::ContactState::slip_positive || c.state == friction::ContactState::slip_negative;
+      lifts += c.state == friction::ContactState::lift_off;
     }
     EXPECT_GT(slips, 0);
     EXPECT_GT(lifts, 0);

@@ -133,7 +133,7 @@ TEST(Newmark, CondensationOntoContactDofsMatchesTheFullSolveOfALinearModel) {
   friction::FrictionModel with_contact = chain();
   with_contact.damping = 0.01 * with_contact.stiffness;
   const Eigen::RowVectorXd a_n = Eigen::RowVector3d(0.0, 1.0, -1.0);
-  with_contact.contacts.push_back({.law = {.kn = 3.0, .kt = 1.0, .mu = 0.0, .n0 = 100.0},
+  with_contact.contacts.push_back({.point = {.kn = 3.0, .kt = 1.0, .mu = 0.0, .n0 = 100.0},
                                    .tangential = Eigen::RowVector3d(0.0, 1.0, 0.0),
                                    .normal = a_n});
   friction::FrictionModel linear = chain();

@@ -128,7 +128,7 @@ friction::FrictionModel lift_off_pair() {
   m.damping = 5.0 * MatrixXd::Identity(2, 2);
   m.stiffness = (MatrixXd(2, 2) << 2e6, -1e5, -1e5, 1e6).finished();
   friction::ContactElement c;
-  c.law = {.kn = 5e5, .kt = 2e6, .mu = 0.4, .n0 = 3.0};
+  c.point = {.kn = 5e5, .kt = 2e6, .mu = 0.4, .n0 = 3.0};
   c.tangential = (Eigen::RowVectorXd(2) << 1.0, -1.0).finished();
   c.normal = (Eigen::RowVectorXd(2) << 0.6, 0.3).finished();
   m.contacts.push_back(c);
@@ -174,8 +174,8 @@ TEST(Shooting, MonodromyEqualsDifferencesOfThePeriodMap) {
   ASSERT_TRUE(s.steady.converged) << s.steady.failure;
   bool opened = false, slipped = false;
   for (const timeint::ContactSample& c : s.steady.contacts[0]) {
-    opened |= c.state == contact::ContactState::lift_off;
-    slipped |= c.state == contact::ContactState::slip_positive || c.state == contact::ContactState::slip_negative;
+    opened |= c.state == friction::ContactState::lift_off;
+    slipped |= c.state == friction::ContactState::slip_positive || c.state == friction::ContactState::slip_negative;
   }
   ASSERT_TRUE(opened && slipped) << "the test needs lift-off and slip";
   const timeint::PiecewiseFlow flow(m, omega, 2 * kPi / o.steps_per_period);
@@ -205,8 +205,8 @@ TEST(Shooting, RigidStickIsDenHartogsClosedFormToNewtonsTolerance) {
 // opens and closes.
 TEST(Shooting, RigidStickMonodromyEqualsDifferencesOfThePeriodMap) {
   friction::FrictionModel m = lift_off_pair();
-  m.contacts[0].law.mu = 1.5;  // stuck for a third of the period
-  m.contacts[0].law.n0 = 10.0;
+  m.contacts[0].point.mu = 1.5;  // stuck for a third of the period
+  m.contacts[0].point.n0 = 10.0;
   friction::validate_model(m, "test");
   const double omega = 2 * kPi * 180.0;
   timeint::ShootingOptions o = options();
@@ -215,10 +215,10 @@ TEST(Shooting, RigidStickMonodromyEqualsDifferencesOfThePeriodMap) {
   ASSERT_TRUE(s.steady.converged) << s.steady.failure;
   bool opened = false, slipped = false, stuck = false;
   for (const timeint::ContactSample& c : s.steady.contacts[0]) {
-    opened |= c.state == contact::ContactState::lift_off;
-    stuck |= c.state == contact::ContactState::stick;
-    slipped |= c.state == contact::ContactState::slip_positive || c.state == contact::ContactState::slip_negative;
-    if (c.state == contact::ContactState::stick) EXPECT_LE(std::abs(c.tangential), 1.5 * c.normal * (1 + 1e-9));
+    opened |= c.state == friction::ContactState::lift_off;
+    stuck |= c.state == friction::ContactState::stick;
+    slipped |= c.state == friction::ContactState::slip_positive || c.state == friction::ContactState::slip_negative;
+    if (c.state == friction::ContactState::stick) EXPECT_LE(std::abs(c.tangential), 1.5 * c.normal * (1 + 1e-9));
   }
   ASSERT_TRUE(opened && slipped && stuck) << "the test needs lift-off, stick and slip";
   const timeint::PiecewiseFlow flow(m, omega, 2 * kPi / o.steps_per_period, true);
@@ -229,8 +229,8 @@ TEST(Shooting, RigidStickMonodromyEqualsDifferencesOfThePeriodMap) {
 // equations are one short), and the answer is the model with the contact's DOFs tied, to rounding.
 TEST(Shooting, RigidStickThroughoutIsTheTiedModel) {
   friction::FrictionModel m = lift_off_pair();
-  m.contacts[0].law.mu = 3.0;
-  m.contacts[0].law.n0 = 30.0;
+  m.contacts[0].point.mu = 3.0;
+  m.contacts[0].point.n0 = 30.0;
   friction::validate_model(m, "test");
   timeint::ShootingOptions o = options();
   o.rigid_stick = true;
@@ -239,7 +239,7 @@ TEST(Shooting, RigidStickThroughoutIsTheTiedModel) {
     const timeint::ShootingResult s = timeint::shooting(m, omega, o);
     ASSERT_TRUE(s.steady.converged) << s.steady.failure;
     EXPECT_EQ(s.transitions, 0);
-    for (const timeint::ContactSample& c : s.steady.contacts[0]) EXPECT_EQ(c.state, contact::ContactState::stick);
+    for (const timeint::ContactSample& c : s.steady.contacts[0]) EXPECT_EQ(c.state, friction::ContactState::stick);
     // q = (y, y) + const: 2 y'' + 10 y' + (2.8e6 + kn 0.9^2) y = 20 cos theta - 8 sin theta
     const std::complex<double> tied =
         std::complex<double>(20.0, 8.0) / std::complex<double>(2.8e6 + 5e5 * 0.81 - 2 * omega * omega, 10 * omega);

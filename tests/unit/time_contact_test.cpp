@@ -29,9 +29,9 @@
 namespace bb::timeint {
 namespace {
 
-using contact::ContactState;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using friction::ContactState;
 
 ContactState state_from_table(const std::string& name) {
   if (name == "stick") return ContactState::stick;
@@ -45,7 +45,7 @@ ContactState state_from_table(const std::string& name) {
 TEST(TimeContact, TableXiiTransitionsOfThePredictorCorrectorSlider) {
   // Bodies 1 and 2 at the contact point, DOFs q = (t1, t2, n1, n2): u = t1 - t2 (eq 3.44's s* is
   // the slider relative to body 2), v = n1 - n2 (eq 3.45).
-  friction::ContactElement c{.law = {.kn = 1e6, .kt = 2e6, .mu = 0.5, .n0 = 0.0},
+  friction::ContactElement c{.point = {.kn = 1e6, .kt = 2e6, .mu = 0.5, .n0 = 0.0},
                              .tangential = Eigen::RowVector4d(1.0, -1.0, 0.0, 0.0),
                              .normal = Eigen::RowVector4d(0.0, 0.0, 1.0, -1.0)};
   const std::filesystem::path file = std::filesystem::path(BB_SOURCE_DIR) / "references" / "thesis" / "table12.csv";
@@ -67,7 +67,7 @@ TEST(TimeContact, TableXiiTransitionsOfThePredictorCorrectorSlider) {
     EXPECT_NEAR(r.normal, n, scale * 10.0) << name;
     // The Table's own formula for T in every state: kt (t1 - s) when stuck, +-mu N when slipping.
     if (r.state == ContactState::stick) {
-      EXPECT_NEAR(r.tangential, c.law.kt * (t1 - s1), 1e-9) << name;
+      EXPECT_NEAR(r.tangential, c.point.kt * (t1 - s1), 1e-9) << name;
     }
     if (r.state == ContactState::lift_off) {
       EXPECT_EQ(r.slider + t2, t1) << name;
@@ -81,7 +81,7 @@ TEST(TimeContact, TableXiiTransitionsOfThePredictorCorrectorSlider) {
 }
 
 TEST(TimeContact, ConsistentTangentIsTheDerivativeOfTheSlider) {
-  const friction::ContactElement c{.law = {.kn = 3e5, .kt = 1e6, .mu = 0.4, .n0 = 20.0},
+  const friction::ContactElement c{.point = {.kn = 3e5, .kt = 1e6, .mu = 0.4, .n0 = 20.0},
                                    .tangential = Eigen::RowVector2d(1.0, 0.0),
                                    .normal = Eigen::RowVector2d(0.0, 1.0)};
   for (const Eigen::Vector2d& q : {Eigen::Vector2d(2e-6, 1e-5), Eigen::Vector2d(3e-5, 1e-5),
@@ -91,16 +91,16 @@ TEST(TimeContact, ConsistentTangentIsTheDerivativeOfTheSlider) {
     const double h = 1e-12;
     const ContactSample su = contact_step(c, 0.0, Eigen::Vector2d(q + Eigen::Vector2d(h, 0.0)));
     const ContactSample sv = contact_step(c, 0.0, Eigen::Vector2d(q + Eigen::Vector2d(0.0, h)));
-    EXPECT_NEAR((su.tangential - s.tangential) / h, d.dt_du, 1e-6 * c.law.kt) << state_name(s.state);
-    EXPECT_NEAR((sv.tangential - s.tangential) / h, d.dt_dv, 1e-6 * c.law.kt) << state_name(s.state);
-    EXPECT_NEAR((sv.normal - s.normal) / h, d.dn_dv, 1e-6 * c.law.kt) << state_name(s.state);
+    EXPECT_NEAR((su.tangential - s.tangential) / h, d.dt_du, 1e-6 * c.point.kt) << state_name(s.state);
+    EXPECT_NEAR((sv.tangential - s.tangential) / h, d.dt_dv, 1e-6 * c.point.kt) << state_name(s.state);
+    EXPECT_NEAR((sv.normal - s.normal) / h, d.dn_dv, 1e-6 * c.point.kt) << state_name(s.state);
   }
 }
 
 // m x'' + c x' + k x + T = F cos(w t), ground contact u = x at constant N0 (a_n = 0).
 struct Oscillator {
   double m = 1.0, k = 1.0e4, zeta = 0.02, force = 3.0;
-  contact::JenkinsParameters law{.kn = 0.0, .kt = 2.0e4, .mu = 0.5, .n0 = 2.0};
+  friction::PointParameters point{.kn = 0.0, .kt = 2.0e4, .mu = 0.5, .n0 = 2.0};
   double c() const { return 2.0 * zeta * std::sqrt(k * m); }
   friction::FrictionModel model() const {
     friction::FrictionModel mo;
@@ -108,7 +108,7 @@ struct Oscillator {
     mo.damping = MatrixXd::Constant(1, 1, c());
     mo.stiffness = MatrixXd::Constant(1, 1, k);
     mo.contacts.push_back(
-        {.law = law, .tangential = Eigen::RowVectorXd::Ones(1), .normal = Eigen::RowVectorXd::Zero(1)});
+        {.point = point, .tangential = Eigen::RowVectorXd::Ones(1), .normal = Eigen::RowVectorXd::Zero(1)});
     mo.harmonic_load = Eigen::VectorXcd::Constant(1, force);
     return mo;
   }
@@ -188,7 +188,7 @@ TEST(TimeContact, StuckLoopIsALineOfSlopeKt) {
   for (const ContactSample& p : loop) {
     EXPECT_EQ(p.state, ContactState::stick);
     EXPECT_EQ(p.slider, loop.front().slider);
-    off_line = std::max(off_line, std::abs(p.tangential - o.law.kt * (p.u - p.slider)));
+    off_line = std::max(off_line, std::abs(p.tangential - o.point.kt * (p.u - p.slider)));
     if (p.u < umin) {
       umin = p.u;
       tmin = p.tangential;
@@ -198,17 +198,17 @@ TEST(TimeContact, StuckLoopIsALineOfSlopeKt) {
       tmax = p.tangential;
     }
   }
-  EXPECT_NEAR((tmax - tmin) / (umax - umin), o.law.kt, 1e-9 * o.law.kt);
+  EXPECT_NEAR((tmax - tmin) / (umax - umin), o.point.kt, 1e-9 * o.point.kt);
   EXPECT_LT(off_line, 1e-12);
   // No hysteresis: what remains is the end-point mismatch of a loop closed to the steady-state tolerance.
   EXPECT_NEAR(loop_area(loop), 0.0, 1e-6 * (tmax - tmin) * (umax - umin));
-  EXPECT_LT(std::abs(tmax), o.law.mu * o.law.n0);
+  EXPECT_LT(std::abs(tmax), o.point.mu * o.point.n0);
 }
 
 TEST(TimeContact, SlippingLoopHasPlateausAtPlusMinusMuN) {
   const Oscillator o;
   const SteadyState s = oscillator_steady_state(o, 110.0);
-  const double limit = o.law.mu * o.law.n0;
+  const double limit = o.point.mu * o.point.n0;
   int positive = 0, negative = 0, stuck = 0;
   double tmax = -1e9, tmin = 1e9;
   for (const ContactSample& p : s.contacts[0]) {
@@ -247,7 +247,7 @@ friction::FrictionModel blade_on_ground(double force) {
   m.stiffness << 2.0e6, -5.0e5, -2.0e5, -5.0e5, 1.5e6, 3.0e5, -2.0e5, 3.0e5, 1.0e6;
   m.mass = Eigen::Vector3d(1.0, 0.4, 0.3).asDiagonal();
   m.damping = modal_damping_matrix(m.stiffness, m.mass, 0.02);
-  m.contacts.push_back({.law = {.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0},
+  m.contacts.push_back({.point = {.kn = 3.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 30.0},
                         .tangential = unit_row(3, 1),
                         .normal = unit_row(3, 2)});
   m.static_load = Eigen::Vector3d::Zero();
@@ -297,10 +297,10 @@ friction::FrictionModel blade_with_damper(double force) {
   // Unlike the HBM test, the damper gets a little damping of its own (1% of critical on its contact
   // springs): undamped damper modes make the transient from rest last thousands of periods.
   m.damping(3, 3) = m.damping(4, 4) = 2.0 * 0.01 * std::sqrt(2.0e6 * 0.05);
-  const contact::JenkinsParameters law{.kn = 2.0e6, .kt = 1.0e6, .mu = 0.4, .n0 = 0.0};
+  const friction::PointParameters law{.kn = 2.0e6, .kt = 1.0e6, .mu = 0.4, .n0 = 0.0};
   m.contacts.push_back(
-      {.law = law, .tangential = unit_row(5, 1) - unit_row(5, 3), .normal = unit_row(5, 4) - unit_row(5, 2)});
-  m.contacts.push_back({.law = law, .tangential = unit_row(5, 3), .normal = unit_row(5, 4)});
+      {.point = law, .tangential = unit_row(5, 1) - unit_row(5, 3), .normal = unit_row(5, 4) - unit_row(5, 2)});
+  m.contacts.push_back({.point = law, .tangential = unit_row(5, 3), .normal = unit_row(5, 4)});
   m.static_load = VectorXd::Zero(5);
   m.static_load[4] = 40.0;
   m.harmonic_load = Eigen::VectorXcd::Zero(5);
@@ -385,7 +385,7 @@ friction::FrictionModel platform(double static_normal, double normal_force) {
   m.mass = Eigen::Vector2d(0.5, 0.5).asDiagonal();
   m.stiffness = Eigen::Vector2d(1e4, 1e4).asDiagonal();
   m.damping = 2.0 * 0.02 * std::sqrt(1e4 * 0.5) * MatrixXd::Identity(2, 2);
-  m.contacts.push_back({.law = {.kn = 1e5, .kt = 1e4, .mu = 0.5, .n0 = 2.0},
+  m.contacts.push_back({.point = {.kn = 1e5, .kt = 1e4, .mu = 0.5, .n0 = 2.0},
                         .tangential = Eigen::RowVector2d(1.0, 0.0),
                         .normal = Eigen::RowVector2d(0.0, 1.0)});
   m.static_load = Eigen::Vector2d(0.0, static_normal);
@@ -434,7 +434,7 @@ TEST(TimeContact, StiffContactNeedsNoSmallerStepThanAccuracyAsks) {
   // the time step at 64 steps per excitation period. The implicit step and the consistent tangent
   // keep Newton bounded; HHT alpha = -0.1 damps the unresolved contact frequency.
   Oscillator o;
-  o.law.kt = 1e9;
+  o.point.kt = 1e9;
   for (const double alpha : {0.0, -0.1}) {
     SteadyStateOptions opt{.dofs = {0}, .steps_per_period = 64, .harmonics = 7, .tolerance = 1e-7};
     opt.newmark.alpha = alpha;
@@ -488,7 +488,7 @@ BladesAndDamper blades_and_damper() {
   m.stiffness = sys.stiffness;
   m.damping = 1e-5 * sys.stiffness;
   for (Eigen::Index c = 0; c < kin.tangential.rows(); ++c)
-    m.contacts.push_back({.law = {.kn = 2e7, .kt = 2e7, .mu = 0.3, .n0 = 0.0},
+    m.contacts.push_back({.point = {.kn = 2e7, .kt = 2e7, .mu = 0.3, .n0 = 0.0},
                           .tangential = kin.tangential.row(c),
                           .normal = kin.normal.row(c)});
   m.static_load = damper::centrifugal_load(nb, 300.0);

@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "common/errors.hpp"
-#include "contact/iwan_law.hpp"
+#include "friction/iwan_law.hpp"
 
 namespace bb {
 namespace {
@@ -46,7 +46,8 @@ TEST(WorkEstimate, AnIwanJointCountsEverySlider) {
   const Model none;
   const HbmSpec jenkins = oscillator_sweep(1.0, 3, 1024);
   HbmSpec iwan = jenkins;
-  iwan.contacts[0].distribution = std::make_shared<contact::IwanDistribution>(contact::IwanParameters{.sliders = 1000});
+  iwan.contacts[0].distribution =
+      std::make_shared<friction::IwanDistribution>(friction::IwanParameters{.sliders = 1000});
   const WorkEstimate one = estimate_work(jenkins, none), many = estimate_work(iwan, none);
   EXPECT_NEAR(many.operations / one.operations, 1000.0, 10.0);
   EXPECT_GT(many.bytes, 100.0 * one.bytes);  // the DFT rows of each slider

@@ -12,7 +12,7 @@ int main() {
   m.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
   m.damping = Eigen::MatrixXd::Constant(1, 1, 20.0);
   m.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e6);
-  m.contacts.push_back({.law = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0},
+  m.contacts.push_back({.point = {.kn = 1e6, .kt = 1e6, .mu = 0.3, .n0 = 30.0},
                         .tangential = Eigen::RowVectorXd::Ones(1),
                         .normal = Eigen::RowVectorXd::Zero(1)});
   m.harmonic_load = Eigen::VectorXcd::Constant(1, 0.01);

@@ -12,11 +12,13 @@
 
 #include <array>
 
-namespace bb::contact {
+namespace bb::friction {
 
-// Parameters of one contact point. Every value must be finite; kt > 0 (the slider position is
-// recovered from T / kt in slip), kn >= 0 (kn = 0 keeps N = N0), mu >= 0, n0 >= 0.
-struct JenkinsParameters {
+// Parameters of one contact point, shared by every friction law here (friction/friction_law.hpp):
+// the normal spring and preload, the stuck tangential stiffness, the Coulomb coefficient. Every
+// value must be finite; kt > 0 (the slider position is recovered from T / kt in slip), kn >= 0
+// (kn = 0 keeps N = N0), mu >= 0, n0 >= 0.
+struct PointParameters {
   double kn = 0.0;  // normal contact stiffness [N/m]
   double kt = 0.0;  // tangential contact stiffness [N/m]
   double mu = 0.0;  // friction coefficient [-]
@@ -24,7 +26,7 @@ struct JenkinsParameters {
 };
 
 // Throws std::invalid_argument naming the offending value.
-void validate(const JenkinsParameters& p);
+void validate(const PointParameters& p);
 
 // Table X. slip_positive: T = +mu N and the slider moves towards +u (sgn w' = +1 in eq 3.29).
 enum class ContactState { stick, slip_positive, slip_negative, lift_off };
@@ -53,7 +55,7 @@ struct JenkinsStep {
 // to the new (u, v) at constant N; a marching caller takes steps small enough for that to hold.
 // Neither the parameters nor the finiteness of (u, v) are checked here (the law is called in inner
 // loops): call validate() once and keep the inputs finite.
-JenkinsStep jenkins_step(const JenkinsParameters& p, double slider, double u, double v);
+JenkinsStep jenkins_step(const PointParameters& p, double slider, double u, double v);
 
 struct JenkinsStep2D {
   Eigen::Vector2d tangential = Eigen::Vector2d::Zero();  // (T1, T2) [N]
@@ -65,7 +67,7 @@ struct JenkinsStep2D {
 // 2D contact of thesis Fig 3.55: two 1D sliders along orthogonal tangential directions, each with
 // its own Coulomb limit mu N, sharing the normal load. The directions are uncoupled: a consequence
 // is that |T| may reach sqrt(2) mu N in diagonal slip, the price of the 1D cost per direction.
-JenkinsStep2D jenkins_step_2d(const JenkinsParameters& p, const Eigen::Vector2d& slider, const Eigen::Vector2d& u,
+JenkinsStep2D jenkins_step_2d(const PointParameters& p, const Eigen::Vector2d& slider, const Eigen::Vector2d& u,
                               double v);
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,10 +1,10 @@
-#include "contact/aft_pieces.hpp"
+#include "friction/aft_pieces.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <tuple>
 
-namespace bb::contact {
+namespace bb::friction {
 namespace {
 
 // Signed sums over the ends of a set of pieces (+ at b, - at a) of theta, cos k theta and sin k theta
@@ -82,7 +82,7 @@ struct TrigSums {
 // the piece, both in closed form: no quadrature error. The Gram matrices enter summed per state.
 }  // namespace
 
-void integrate_pieces(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+void integrate_pieces(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const std::vector<Piece>& pieces, const std::vector<StuckSlider>& sliders, bool with_law,
                       AftResult& r) {
   const Eigen::Index m = u.size();
@@ -168,4 +168,4 @@ void integrate_pieces(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
   }
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

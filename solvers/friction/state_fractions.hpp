@@ -3,9 +3,9 @@
 #pragma once
 #include <vector>
 
-#include "contact/jenkins_contact.hpp"
+#include "friction/jenkins.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 struct StateFractions {
   double stick = 0.0, slip = 0.0, lift_off = 0.0;
@@ -27,4 +27,4 @@ inline StateFractions state_fractions(const std::vector<ContactState>& states) {
   return f;
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -14,14 +14,14 @@
 // d(u -+ mu N / kt)/dtheta = 0), except after a lift-off, whose closing point theta_c (N = 0) moves
 // the stuck slider u(theta_c) by u'(theta_c) d theta_c; that term is carried.
 #pragma once
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 // As aft_jenkins (inputs checked by it). options.samples is the number of sample intervals that
 // bracket the transitions: two of one kind inside one interval (a stick or lift-off phase shorter
 // than 2 pi / n that starts and ends within it) are not seen.
-[[nodiscard]] AftResult aft_jenkins_events(const JenkinsParameters& p, const Eigen::VectorXd& u,
-                                           const Eigen::VectorXd& v, const AftOptions& options);
+[[nodiscard]] AftResult aft_jenkins_events(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                           const AftOptions& options);
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,4 +1,4 @@
-#include "contact/aft_events.hpp"
+#include "friction/aft_events.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "common/constants.hpp"
-#include "contact/aft_pieces.hpp"
+#include "friction/aft_pieces.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 namespace {
 
 // [1, cos t, sin t, ..., cos Ht, sin Ht] and its derivative in theta.
@@ -97,7 +97,7 @@ struct Grid {
 
 class EventMarch {
  public:
-  EventMarch(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Grid& grid)
+  EventMarch(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Grid& grid)
       : p_(p),
         u_(u),
         v_(v),
@@ -412,7 +412,7 @@ class EventMarch {
     state_ = ContactState::stick;
   }
 
-  const JenkinsParameters& p_;
+  const PointParameters& p_;
   const Eigen::VectorXd& u_;
   const Eigen::VectorXd& v_;
   const int harmonics_;
@@ -428,7 +428,7 @@ class EventMarch {
 
 }  // namespace
 
-AftResult aft_jenkins_events(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+AftResult aft_jenkins_events(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                              const AftOptions& options) {
   const int n = options.samples;
   const Grid& grid = Grid::of(harmonics_of(u.size()), n);
@@ -503,4 +503,4 @@ AftResult aft_jenkins_events(const JenkinsParameters& p, const Eigen::VectorXd& 
   return r;
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,4 +1,4 @@
-// The pieces of one period of an event-resolved AFT (contact/aft_events.cpp) and the force
+// The pieces of one period of an event-resolved AFT (friction/aft_events.cpp) and the force
 // coefficients integrated over them in closed form: within a piece the contact is in one state, T
 // and N are linear in the trigonometric polynomials u and v, so each coefficient is a product with
 // the basis's integral or its Gram matrix over the piece.
@@ -7,9 +7,9 @@
 
 #include <vector>
 
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 // The stuck slider of a stick phase, with its derivatives: d w / d[u; v] and d w / d(law).
 struct StuckSlider {
@@ -27,8 +27,8 @@ struct Piece {
 
 // The coefficients of T and N and their derivatives (the law's too with `with_law`) from the
 // pieces of one period into r.
-void integrate_pieces(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+void integrate_pieces(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const std::vector<Piece>& pieces, const std::vector<StuckSlider>& sliders, bool with_law,
                       AftResult& r);
 
-}  // namespace bb::contact
+}  // namespace bb::friction

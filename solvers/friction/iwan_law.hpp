@@ -18,9 +18,9 @@
 // F_S hold exactly for any n, and the dissipation converges as the first slider's slip displacement
 // phi_max n^(-1/(chi+1)) falls below the amplitude of interest.
 #pragma once
-#include "contact/friction_law.hpp"
+#include "friction/masing.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 struct IwanParameters {
   double chi = -0.5;  // power-law exponent, in (-1, 0]
@@ -51,7 +51,7 @@ class IwanDistribution final : public SliderDistribution {
   std::string describe() const override;
   std::vector<SliderShare> shares() const override { return shares_; }
   // At N0 (slip force mu N0); empty when mu N0 = 0.
-  std::optional<double> closed_form_energy(const JenkinsParameters& point, double amplitude) const override;
+  std::optional<double> closed_form_energy(const PointParameters& point, double amplitude) const override;
   // chi and beta. Beta's slider exists only when beta > 0: at 0 the power law takes it back, so
   // the sliders (not the continuous law) jump there.
   std::vector<std::string> parameter_names() const override { return {"chi", "beta"}; }
@@ -63,4 +63,4 @@ class IwanDistribution final : public SliderDistribution {
   std::vector<SliderShare> shares_;
 };
 
-}  // namespace bb::contact
+}  // namespace bb::friction

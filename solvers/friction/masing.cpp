@@ -1,4 +1,4 @@
-#include "contact/friction_law.hpp"
+#include "friction/masing.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace bb::contact {
+namespace bb::friction {
 
 namespace {
 
@@ -25,20 +25,19 @@ std::shared_ptr<const SliderDistribution> SliderDistribution::with_parameter(con
   no_parameter(*this, name);
 }
 
-std::vector<JenkinsParameters> parallel_sliders(const JenkinsParameters& point,
-                                                const SliderDistribution* distribution) {
+std::vector<PointParameters> parallel_sliders(const PointParameters& point, const SliderDistribution* distribution) {
   if (!distribution) return {point};
-  std::vector<JenkinsParameters> out;
+  std::vector<PointParameters> out;
   for (const SliderShare& s : distribution->shares())
     out.push_back({.kn = s.load * point.kn, .kt = s.stiffness * point.kt, .mu = point.mu, .n0 = s.load * point.n0});
   return out;
 }
 
-AftResult aft_parallel(const JenkinsParameters& point, const SliderDistribution* distribution, const Eigen::VectorXd& u,
+AftResult aft_parallel(const PointParameters& point, const SliderDistribution* distribution, const Eigen::VectorXd& u,
                        const Eigen::VectorXd& v, const AftOptions& options) {
   if (!distribution) return aft_jenkins(point, u, v, options);
   const std::vector<SliderShare> shares = distribution->shares();
-  const std::vector<JenkinsParameters> sliders = parallel_sliders(point, distribution);
+  const std::vector<PointParameters> sliders = parallel_sliders(point, distribution);
   if (sliders.empty()) throw std::invalid_argument("friction law: no sliders");
   AftResult sum;
   for (size_t i = 0; i < sliders.size(); ++i) {
@@ -71,4 +70,4 @@ AftResult aft_parallel(const JenkinsParameters& point, const SliderDistribution*
   return sum;
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,4 +1,4 @@
-#include "contact/jenkins_contact.hpp"
+#include "friction/jenkins.hpp"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace bb::contact {
+namespace bb::friction {
 
-void validate(const JenkinsParameters& p) {
+void validate(const PointParameters& p) {
   const auto require = [](bool ok, const char* what, double value) {
     if (!ok) throw std::invalid_argument(fmt::format("Jenkins contact: {} (got {})", what, value));
   };
@@ -32,7 +32,7 @@ const char* state_name(ContactState s) {
   return "?";
 }
 
-JenkinsStep jenkins_step(const JenkinsParameters& p, double slider, double u, double v) {
+JenkinsStep jenkins_step(const PointParameters& p, double slider, double u, double v) {
   const double normal = std::max(p.n0 + p.kn * v, 0.0);
   if (normal <= 0.0) return {.tangential = 0.0, .normal = 0.0, .slider = u, .state = ContactState::lift_off};
   const double limit = p.mu * normal;
@@ -46,7 +46,7 @@ JenkinsStep jenkins_step(const JenkinsParameters& p, double slider, double u, do
           .state = trial >= 0.0 ? ContactState::slip_positive : ContactState::slip_negative};
 }
 
-JenkinsStep2D jenkins_step_2d(const JenkinsParameters& p, const Eigen::Vector2d& slider, const Eigen::Vector2d& u,
+JenkinsStep2D jenkins_step_2d(const PointParameters& p, const Eigen::Vector2d& slider, const Eigen::Vector2d& u,
                               double v) {
   JenkinsStep2D out;
   for (int i = 0; i < 2; ++i) {
@@ -59,4 +59,4 @@ JenkinsStep2D jenkins_step_2d(const JenkinsParameters& p, const Eigen::Vector2d&
   return out;
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,4 +1,4 @@
-#include "contact/iwan_law.hpp"
+#include "friction/iwan_law.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
-namespace bb::contact {
+namespace bb::friction {
 
 void validate(const IwanParameters& p) {
   if (!(p.chi > -1.0 && p.chi <= 0.0))
@@ -89,7 +89,7 @@ std::string IwanDistribution::describe() const {
   return fmt::format("Iwan (Segalman 2005): chi = {:g}, beta = {:g}, {} sliders", p_.chi, p_.beta, p_.sliders);
 }
 
-std::optional<double> IwanDistribution::closed_form_energy(const JenkinsParameters& point, double amplitude) const {
+std::optional<double> IwanDistribution::closed_form_energy(const PointParameters& point, double amplitude) const {
   const double slip_force = point.mu * point.n0;
   if (!(slip_force > 0.0)) return std::nullopt;
   return iwan_cycle_energy(iwan_density(p_, point.kt, slip_force), amplitude);
@@ -113,4 +113,4 @@ std::shared_ptr<const SliderDistribution> IwanDistribution::with_parameter(const
   return std::make_shared<IwanDistribution>(p);  // validates
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,7 +1,7 @@
-// Jenkins point contact (contact/jenkins_contact): the states and transitions of thesis Table X,
+// Jenkins point contact (friction/jenkins): the states and transitions of thesis Table X,
 // eqs 3.28-3.29, lift-off and re-stick, the Coulomb bound, frictionless, very stiff and unloaded
 // contacts, and the 2D contact of two sliders sharing N. Units: SI.
-#include "contact/jenkins_contact.hpp"
+#include "friction/jenkins.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,11 +10,11 @@
 #include <stdexcept>
 #include <vector>
 
-namespace bb::contact {
+namespace bb::friction {
 namespace {
 
 // kt = 1e6 N/m, mu N0 = 50 N: the slider lets go after 5e-5 m of tangential travel.
-constexpr JenkinsParameters kContact{.kn = 1.0e7, .kt = 1.0e6, .mu = 0.5, .n0 = 100.0};
+constexpr PointParameters kContact{.kn = 1.0e7, .kt = 1.0e6, .mu = 0.5, .n0 = 100.0};
 
 TEST(JenkinsContact, StickThenPositiveSlipThenStickOnReversalThenNegativeSlip) {
   const auto& p = kContact;
@@ -87,7 +87,7 @@ TEST(JenkinsContact, LiftOffCarriesNoForceAndReSticksWithZeroTangentialForce) {
 
 TEST(JenkinsContact, ExactlyZeroNormalLoadIsLiftOff) {
   // N0 = 0: v = 0 is touching without load, which carries no friction.
-  JenkinsParameters p = kContact;
+  PointParameters p = kContact;
   p.n0 = 0.0;
   JenkinsStep s = jenkins_step(p, 0.0, 1.0e-6, 0.0);
   EXPECT_EQ(s.state, ContactState::lift_off);
@@ -99,7 +99,7 @@ TEST(JenkinsContact, ExactlyZeroNormalLoadIsLiftOff) {
 }
 
 TEST(JenkinsContact, FrictionlessContactCarriesNoTangentialForce) {
-  JenkinsParameters p = kContact;
+  PointParameters p = kContact;
   p.mu = 0.0;
   double slider = 0.0;
   for (double u : {0.0, 1e-6, 1e-3, -1e-2, 5e-4}) {
@@ -114,7 +114,7 @@ TEST(JenkinsContact, FrictionlessContactCarriesNoTangentialForce) {
 TEST(JenkinsContact, VeryStiffTangentialSpringIsARigidCoulombContact) {
   // kt = 1e12 N/m: the elastic range mu N / kt is 5e-11 m, so any visible motion slips at
   // exactly +-mu N and a reversal of more than 1e-10 m flips the force.
-  JenkinsParameters p = kContact;
+  PointParameters p = kContact;
   p.kt = 1.0e12;
   JenkinsStep s = jenkins_step(p, 0.0, 1.0e-3, 0.0);
   EXPECT_EQ(s.state, ContactState::slip_positive);
@@ -132,10 +132,10 @@ TEST(JenkinsContact, ForceNeverExceedsTheCoulombLimitAndNormalLoadIsNeverNegativ
   // the force must obey the law of the state it reports.
   std::mt19937 rng(7);
   std::normal_distribution<double> step(0.0, 1.0);
-  const std::vector<JenkinsParameters> contacts = {kContact,
-                                                   {.kn = 1e3, .kt = 1e12, .mu = 2.0, .n0 = 0.0},
-                                                   {.kn = 1e12, .kt = 1e3, .mu = 0.1, .n0 = 1.0},
-                                                   {.kn = 1e6, .kt = 1e6, .mu = 0.0, .n0 = 10.0}};
+  const std::vector<PointParameters> contacts = {kContact,
+                                                 {.kn = 1e3, .kt = 1e12, .mu = 2.0, .n0 = 0.0},
+                                                 {.kn = 1e12, .kt = 1e3, .mu = 0.1, .n0 = 1.0},
+                                                 {.kn = 1e6, .kt = 1e6, .mu = 0.0, .n0 = 10.0}};
   std::vector<int> seen(4, 0);
   for (const auto& p : contacts) {
     const double du = 3.0 * (p.mu * p.n0 + 1.0) / p.kt, dv = 0.5 * (p.n0 + 1.0) / p.kn;
@@ -205,4 +205,4 @@ TEST(JenkinsContact, InvalidParametersAreRejected) {
 }
 
 }  // namespace
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -1,4 +1,4 @@
-#include "contact/aft.hpp"
+#include "friction/aft.hpp"
 
 #include <fmt/format.h>
 
@@ -7,9 +7,9 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "contact/aft_events.hpp"
+#include "friction/aft_events.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 Eigen::Index harmonic_size(int harmonics) {
   if (harmonics < 0) throw std::invalid_argument(fmt::format("harmonic count must be >= 0 (got {})", harmonics));
@@ -65,7 +65,7 @@ Eigen::MatrixXd analysis_matrix(int harmonics, int samples) {
 namespace {
 
 // The checks of aft_jenkins's inputs; returns the number of harmonics of u and v.
-int checked_harmonics(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+int checked_harmonics(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const AftOptions& options) {
   validate(p);
   if (u.size() != v.size())
@@ -83,7 +83,7 @@ int checked_harmonics(const JenkinsParameters& p, const Eigen::VectorXd& u, cons
 
 // One sample of the chain rule below for the coefficients [u; v]: the row dT_k (from the row dN_k
 // and the synthesis row phi_k) and the slider's row dw, updated from w_{k-1}'s to w_k's.
-void coefficient_derivative_step(const JenkinsParameters& p, const JenkinsStep& s, const Eigen::RowVectorXd& phi,
+void coefficient_derivative_step(const PointParameters& p, const JenkinsStep& s, const Eigen::RowVectorXd& phi,
                                  const Eigen::RowVectorXd& dn, Eigen::RowVectorXd& dt, Eigen::RowVectorXd& dw) {
   const Eigen::Index m = phi.size();
   switch (s.state) {
@@ -108,7 +108,7 @@ void coefficient_derivative_step(const JenkinsParameters& p, const JenkinsStep& 
 }
 
 // The same for the law's parameters (kt, mu, kn, n0); `elongation` is u_k - w_{k-1}.
-void law_derivative_step(const JenkinsParameters& p, const JenkinsStep& s, double elongation,
+void law_derivative_step(const PointParameters& p, const JenkinsStep& s, double elongation,
                          const Eigen::RowVector4d& dn, Eigen::RowVector4d& dt, Eigen::RowVector4d& dw) {
   switch (s.state) {
     case ContactState::lift_off:
@@ -161,7 +161,7 @@ void law_derivative_step(const JenkinsParameters& p, const JenkinsStep& s, doubl
 //   stick:     dT = (u_k - w_{k-1}) dkt - kt dw_{k-1},        dw_k = dw_{k-1}
 //   slip:      dT = s (N dmu + mu dN),                        dw_k = -dT / kt + T / kt^2 dkt
 // so a contact stuck throughout has dT/dmu = 0 exactly and a frictionless one dT/dkt = 0.
-AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+AftResult aft_jenkins(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const AftOptions& options) {
   const int harmonics = checked_harmonics(p, u, v, options);
   if (options.resolve_events) return aft_jenkins_events(p, u, v, options);
@@ -264,4 +264,4 @@ double cycle_work(const Eigen::VectorXd& force, const Eigen::VectorXd& displacem
   return std::numbers::pi * work;
 }
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -12,9 +12,9 @@
 
 #include <vector>
 
-#include "contact/jenkins_contact.hpp"
+#include "friction/jenkins.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 // 2H + 1; throws std::invalid_argument when harmonics < 0.
 Eigen::Index harmonic_size(int harmonics);
@@ -53,7 +53,7 @@ struct AftOptions {
   // sensitivity.hpp). Off by default: the Newton solves do not need them.
   bool law_derivatives = false;
   // Locate every stick / slip / lift-off transition and integrate the forces between them
-  // (contact/aft_events.hpp) instead of taking the DFT of the samples: coefficients and Jacobian
+  // (friction/aft_events.hpp) instead of taking the DFT of the samples: coefficients and Jacobian
   // continuous in the inputs, their error independent of where a transition falls.
   bool resolve_events = false;
 };
@@ -77,6 +77,7 @@ struct AftResult {
   // sample and the state of Table X at each sample.
   Eigen::VectorXd u, v, t, n, w;
   std::vector<ContactState> state;
+  Eigen::VectorXd u_2;  // the second direction's displacement samples; empty for a law of one
 
   int periods = 0;                // periods marched
   bool closed = false;            // the slider loop closed within the tolerance
@@ -87,7 +88,7 @@ struct AftResult {
 // vectors differ in size or hold a non-finite value, or the options are out of range. A loop
 // that does not close within max_periods is returned with closed == false, never thrown: the
 // caller decides (a Newton solve treats it as a failed evaluation).
-[[nodiscard]] AftResult aft_jenkins(const JenkinsParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+[[nodiscard]] AftResult aft_jenkins(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                                     const AftOptions& options);
 
 // Work done by the force f on the displacement x over one period, W = integral of f dx
@@ -96,4 +97,4 @@ struct AftResult {
 // Throws std::invalid_argument when the sizes differ.
 double cycle_work(const Eigen::VectorXd& force, const Eigen::VectorXd& displacement);
 
-}  // namespace bb::contact
+}  // namespace bb::friction

@@ -3,7 +3,7 @@
 // family: the Jenkins element is one slider, the Iwan element a distribution of them). The
 // harmonic balance (its AFT), Newmark, the exact flow that shooting integrates, the nonlinear modes
 // and the sensitivities all see a law as its sliders, each an ordinary Jenkins contact
-// (contact/jenkins_contact.hpp): a new law of this family is one SliderDistribution, its test and
+// (friction/jenkins.hpp): a new law of this family is one SliderDistribution, its test and
 // its parser entry. A law outside it (a smooth Dahl or Bouc-Wen law, a coupled 2D slip) would need
 // its own step and AFT behind this header instead.
 //
@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "contact/aft.hpp"
-#include "contact/jenkins_contact.hpp"
+#include "friction/aft.hpp"
+#include "friction/jenkins.hpp"
 
-namespace bb::contact {
+namespace bb::friction {
 
 // One slider's shares of the point's stuck stiffness and of its normal law (so of its slip force).
 struct SliderShare {
@@ -39,7 +39,7 @@ class SliderDistribution {
   virtual std::vector<SliderShare> shares() const = 0;
   // Energy dissipated per cycle by the continuous law (not its sliders) under u = A cos(theta) at
   // the constant normal load `point.n0` [J]; empty when the law has no closed form.
-  virtual std::optional<double> closed_form_energy(const JenkinsParameters& point, double amplitude) const = 0;
+  virtual std::optional<double> closed_form_energy(const PointParameters& point, double amplitude) const = 0;
   // The law's own parameters (beyond the point's kn, kt, mu, N0) by their case keys, e.g. Iwan's
   // "chi" and "beta": what a calibration may vary. Empty for a law with none.
   virtual std::vector<std::string> parameter_names() const { return {}; }
@@ -50,13 +50,13 @@ class SliderDistribution {
 };
 
 // The point's sliders (one, the point itself, when `distribution` is null).
-std::vector<JenkinsParameters> parallel_sliders(const JenkinsParameters& point, const SliderDistribution* distribution);
+std::vector<PointParameters> parallel_sliders(const PointParameters& point, const SliderDistribution* distribution);
 
-// The AFT of the whole point: the sum of its sliders' (contact/aft.hpp, with the same options): the
+// The AFT of the whole point: the sum of its sliders' (friction/aft.hpp, with the same options): the
 // forces, their derivatives (the law's with respect to the point's kn, kt, mu, N0) and the sampled
 // t, n are the point's; `state` and `w` are those of the first slider to slip (whether the point
 // slips at all), `closed` holds when every slider's loop closed. Throws as aft_jenkins.
-[[nodiscard]] AftResult aft_parallel(const JenkinsParameters& point, const SliderDistribution* distribution,
+[[nodiscard]] AftResult aft_parallel(const PointParameters& point, const SliderDistribution* distribution,
                                      const Eigen::VectorXd& u, const Eigen::VectorXd& v, const AftOptions& options);
 
-}  // namespace bb::contact
+}  // namespace bb::friction

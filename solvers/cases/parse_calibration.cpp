@@ -113,6 +113,41 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
   return d;
 }
 
+// A measured loop probes the computed one at its displacements: a loop that never moves has no
+// branches to probe, and a contact_loop rig imposes u in [-U, U], so a displacement beyond U
+// (by more than 0.1 %) was clamped to the loop's end without a word.
+void check_hysteresis_probes(const TomlReader& r, const CalibrationData& d, const CaseSpec& spec) {
+  if (d.data.kind != DataKind::hysteresis) return;
+  const Eigen::VectorXd& u = d.data.column("relative_displacement");
+  if (u.maxCoeff() == u.minCoeff())
+    r.fail("file", fmt::format("{}: the relative displacement is {:g} m on every row: a hysteresis loop needs a "
+                               "motion to probe",
+                               d.data.where(0), u[0]));
+  const auto* rig = std::get_if<ContactLoopSpec>(&spec.analysis);
+  if (!rig) return;
+  for (Eigen::Index i = 0; i < u.size(); ++i)
+    if (std::abs(u[i]) > 1.001 * rig->tangential_amplitude)
+      r.fail("file", fmt::format("{}: relative displacement {:g} m lies outside the imposed motion's range +-{:g} m "
+                                 "(analysis.tangential_amplitude_m): the computed loop has no force there",
+                                 d.data.where(i), u[i], rig->tangential_amplitude));
+}
+
+// A measured peak outside the swept band cannot be met by any computed one (a band of 150-200 Hz
+// against peaks measured at 214-225 Hz ran a fit to the band's edge and exited 0).
+void check_peaks_in_band(const TomlReader& r, const CalibrationData& d, const CaseSpec& spec) {
+  if (d.data.kind != DataKind::peaks || !d.columns.count("frequency")) return;
+  const HbmSweepSpec* sweep = nullptr;
+  if (const auto* h = std::get_if<HbmSpec>(&spec.analysis)) sweep = &h->sweep;
+  if (const auto* t = std::get_if<TimeSpec>(&spec.analysis)) sweep = &t->system.sweep;
+  if (!sweep) return;
+  const Eigen::VectorXd& f = d.data.column("frequency");
+  for (Eigen::Index i = 0; i < f.size(); ++i)
+    if (f[i] < sweep->f_min || f[i] > sweep->f_max)
+      r.fail("file", fmt::format("{}: peak frequency {:g} Hz lies outside the swept band [{:g}, {:g}] Hz "
+                                 "(analysis.frequency_hz): no computed peak can meet it",
+                                 d.data.where(i), f[i], sweep->f_min, sweep->f_max));
+}
+
 // [calibration.sampler]: walkers even and at least twice the parameters (the stretch move moves one
 // half of the ensemble along lines to the other).
 CalibrationSpec::Sampler parse_sampler(const toml::table& t, const std::string& path,
@@ -209,7 +244,10 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
     int block = 0;
     for (const toml::node& n : r.array("data")) {
       if (!n.is_table()) r.fail("data", "write each data set as a [[calibration.data]] table");
-      c.data.push_back(parse_data_block(*n.as_table(), fmt::format("calibration.data[{}]", block++), file));
+      const std::string path = fmt::format("calibration.data[{}]", block++);
+      c.data.push_back(parse_data_block(*n.as_table(), path, file));
+      check_hysteresis_probes(TomlReader(*n.as_table(), path, file), c.data.back(), spec);
+      check_peaks_in_band(TomlReader(*n.as_table(), path, file), c.data.back(), spec);
     }
   }
   if (c.fit_checks.empty() && c.data.empty())

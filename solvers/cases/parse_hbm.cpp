@@ -109,7 +109,7 @@ DamperSpec parse_damper(TomlReader r) {
     if (!names.insert(s.name).second) p.fail("name", fmt::format("a damper point named '{}' exists already", s.name));
     s.left_face = p.choice("face", {"left", "right"}) == "left";
     s.point = p.optional_string("point").value_or("");
-    if (p.has("position")) s.position = parse_xy(p, "position");
+    if (p.has("position")) s.position = parse_xy(p, "position"), s.position_at = p.location("position");
     if (s.point.empty() && !s.position)
       p.fail("point", "give the blade point it touches ('point'), or a 'position' for a rigid platform");
     p.finish();

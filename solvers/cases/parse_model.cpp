@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "cases/parse_bladed_disk.hpp"
 #include "cases/parse_common.hpp"
@@ -83,6 +84,18 @@ HexBlockSpec parse_hex_block(TomlReader r, ElementType element, std::string& bod
   return b;
 }
 
+// The shortest distance between neighbouring nodes along a block's edges [m] (hex20: its midside nodes too).
+double smallest_node_spacing(const HexBlockSpec& b) {
+  static constexpr int kEdges[12][3] = {{0, 1, 0}, {3, 2, 0}, {4, 5, 0}, {7, 6, 0}, {0, 3, 1}, {1, 2, 1},
+                                        {4, 7, 1}, {5, 6, 1}, {0, 4, 2}, {1, 5, 2}, {2, 6, 2}, {3, 7, 2}};
+  const int divisions[3] = {b.nx, b.ny, b.nz};
+  const double per_division = b.element == ElementType::hex20 ? 2.0 : 1.0;
+  double out = INFINITY;
+  for (const auto& e : kEdges)
+    out = std::min(out, (b.corners[e[1]] - b.corners[e[0]]).norm() / (divisions[e[2]] * per_division));
+  return out;
+}
+
 // [mesh.dimensions] of the two-blade article (the blade_section uses its blade): the defaults are
 // documented in articles/two_blade.hpp.
 void parse_dimensions(TomlReader& r, TwoBladeDimensions& d) { parse_dimensions(r, d, two_blade_dimension_fields()); }
@@ -156,6 +169,9 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
     // Gmsh files hold plane meshes too (3-node triangles, 4-node quadrilaterals); blocks are solids.
     if (kind == "hex_blocks" && m.dim() != 3)
       r.fail("element", "kind 'hex_blocks' needs a solid element (hex8, hex8i, hex20)");
+    // Only blocks are merged: a Gmsh file's nodes are joined by Gmsh, so the key would do nothing there.
+    if (kind == "gmsh" && r.has("merge_tolerance"))
+      r.fail("merge_tolerance", "applies to kind = \"hex_blocks\" (a Gmsh mesh is used as its file joins it)");
     m.merge_tolerance = r.non_negative("merge_tolerance", m.merge_tolerance);
     if (kind == "gmsh") {
       m.kind = MeshSpec::Kind::gmsh;
@@ -171,6 +187,14 @@ MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
         m.block_bodies.push_back(body);
       }
       if (m.blocks.empty()) r.fail("block", "needs at least one [[mesh.block]]");
+      // A tolerance that reaches a neighbouring node of one block would merge an element's own nodes.
+      double spacing = INFINITY;
+      for (const HexBlockSpec& b : m.blocks) spacing = std::min(spacing, smallest_node_spacing(b));
+      if (m.merge_tolerance >= spacing)
+        r.fail("merge_tolerance",
+               fmt::format("{:g} m reaches the smallest node spacing of the blocks ({:.6g} m): it would merge the "
+                           "nodes of one element; nodes that should join lie far closer",
+                           m.merge_tolerance, spacing));
     }
     r.finish();
     return m;

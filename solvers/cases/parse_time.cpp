@@ -2,12 +2,39 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cases/parse_hbm.hpp"
 #include "common/errors.hpp"
 
 namespace bb {
+namespace {
+
+// The exact flow tells stick from slip by comparing the contact force with mu N in the rounding of
+// the forces that drive it: a slip force below 1e-12 of the load is lost in it (a level of 1e90 N
+// against mu N0 = 3 N gave a "converged" motion of 0 after minutes), so such a level is refused.
+constexpr double kLargestLoadPerSlipForce = 1e12;
+
+void refuse_unresolvable_levels(const TomlReader& r, const HbmSpec& s) {
+  if (s.forces.empty() || s.force_levels.empty() || s.forces.front().amplitude == 0.0) return;
+  double pattern = 0.0;  // the largest force per newton of the first
+  for (const FrfForce& f : s.forces) pattern = std::max(pattern, std::abs(f.amplitude / s.forces.front().amplitude));
+  double slip = INFINITY;
+  const HbmContactSpec* smallest = nullptr;
+  for (const HbmContactSpec& c : s.contacts)
+    if (c.law.mu * c.law.n0 > 0.0 && c.law.mu * c.law.n0 < slip) slip = c.law.mu * c.law.n0, smallest = &c;
+  if (!smallest) return;  // no constant slip force: the load sets N (a damper, contacts without n0)
+  const double level = *std::max_element(s.force_levels.begin(), s.force_levels.end());
+  if (level * pattern > kLargestLoadPerSlipForce * slip)
+    r.fail("force_levels",
+           fmt::format("a load of {:g} N is {:.3g} times the slip force mu n0 = {:g} N of contact '{}': above {:g}, "
+                       "the exact flow cannot tell its stick from its slip in the rounding of the forces; lower the "
+                       "level (or raise mu n0)",
+                       level * pattern, level * pattern / slip, slip, smallest->name, kLargestLoadPerSlipForce));
+}
+
+}  // namespace
 
 namespace {
 
@@ -104,6 +131,8 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
   if (2 * (t.system.harmonics + 1) > t.steps_per_period)
     r.fail("steps_per_period", fmt::format("must be at least 2 (H + 1) = {} for the DFT of {} harmonics",
                                            2 * (t.system.harmonics + 1), t.system.harmonics));
+  if (t.method == TimeSpec::Method::shooting && t.period_map == TimeSpec::PeriodMap::exact)
+    refuse_unresolvable_levels(r, t.system);
   return t;
 }
 

@@ -32,6 +32,26 @@ std::array<double, 2> point_position(const Model& model, const std::string& poin
   return {x[0], x[1]};
 }
 
+// A damper point placed both ways, by a blade point that is a node of the mesh and by a position
+// elsewhere: the position would win silently (a reduced model read from a file has no nodes, so
+// there it is the only way).
+void refuse_contradicted_positions(const Model& model, const DamperSpec& spec) {
+  constexpr double kOnNode = 1e-6;  // [m], as model/build_model.cpp places points on nodes
+  for (size_t i = 0; i < spec.points.size(); ++i) {
+    const DamperPointSpec& p = spec.points[i];
+    const auto set = model.node_sets.find(p.point);
+    if (!p.position || p.point.empty() || set == model.node_sets.end() || set->second.size() != 1) continue;
+    const auto x = model.mesh.coords.row(set->second.front());
+    const double distance = std::hypot((*p.position)[0] - x[0], (*p.position)[1] - x[1]);
+    if (distance > kOnNode)
+      throw InputError(fmt::format(
+          "{}: 'analysis.damper.points[{}].position': [{:g}, {:g}] lies {:.3g} m from the node of point '{}' "
+          "([{:g}, {:g}]) that the damper moves with; give 'point' alone (the contact at its node) or 'position' "
+          "alone (a rigid platform)",
+          p.position_at.where(), i, (*p.position)[0], (*p.position)[1], distance, p.point, x[0], x[1]));
+  }
+}
+
 damper::RigidDamper build_damper(const Model& model, const DamperSpec& spec, const ReducedModel& blades) {
   damper::RigidDamper d;
   d.mass = spec.mass;
@@ -107,6 +127,7 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCach
   const auto t0 = Clock::now();
   PreparedHbm p;
   FreeSystem system;
+  if (spec.damper) refuse_contradicted_positions(model, *spec.damper);  // before the reduction
   if (!spec.model.masters.empty()) system = assemble_free_system(model);
   p.linear = build_reduced_model(model, system, spec.model, &p.timing, cache);
   const ReducedModel& blades = p.linear;

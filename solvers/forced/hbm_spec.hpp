@@ -42,6 +42,7 @@ struct DamperPointSpec {
   bool left_face = true;  // flat face on the left platform, else the right platform
   std::string point;      // master point of the blade model (x and y DOFs); empty = rigid platform
   std::optional<std::array<double, 2>> position;  // [x, y] in the model frame; default: the point's node
+  SourceLocation position_at;                     // of `position`, for a position its node contradicts
 };
 
 // Rigid planar damper (damper/rigid_damper.hpp) pressed by the centrifugal force.

@@ -26,6 +26,24 @@ namespace {
 double sign_of(ContactState m) { return m == ContactState::slip_negative ? -1.0 : 1.0; }
 bool slipping(ContactState m) { return m == ContactState::slip_positive || m == ContactState::slip_negative; }
 
+// exp(a tau), its rows of the states (1, cos, sin) from `one` on held to the rotation they are:
+// scaling and squaring loses them, and the motion with them, where a load or a stiffness dwarfs the
+// rest of the generator (a load of 1e30 N gave an exponential of zeros, a "converged" motion of 0).
+MatrixXd exponential(const MatrixXd& a, double tau, Index one, double omega) {
+  MatrixXd e = (a * tau).exp();
+  const double c = std::cos(tau), s = std::sin(tau);
+  const double off =
+      std::max({std::abs(e(one, one) - 1.0), std::abs(e(one + 1, one + 1) - c), std::abs(e(one + 1, one + 2) + s),
+                std::abs(e(one + 2, one + 1) - s), std::abs(e(one + 2, one + 2) - c)});
+  if (!(off <= 1e-9))
+    throw SolverError(fmt::format(
+        "shooting at omega = {:.6g} rad/s: the exact flow's exponential over {:.3g} rad is off by {:.3g} in its "
+        "harmonic rows (a load or a stiffness too large beside the rest of the model to resolve in double "
+        "precision); lower the force levels or the stiffness",
+        omega, tau, off));
+  return e;
+}
+
 }  // namespace
 
 PiecewiseFlow::PiecewiseFlow(const friction::FrictionModel& model, double omega_rad_s, double step, bool rigid_stick)
@@ -109,7 +127,7 @@ const PiecewiseFlow::Generator& PiecewiseFlow::mode_data(const std::vector<Conta
           "resolve; lower kt or the force, or use period_map = \"newmark\"",
           omega_, pieces, kMaxPieces));
     g.piece = step_ / pieces;
-    g.piece_exponential = (g.a * g.piece).exp();
+    g.piece_exponential = exponential(g.a, g.piece, 2 * n_ + nc_, omega_);
   }
   return generators_.emplace(modes, std::move(g)).first->second;
 }
@@ -385,12 +403,13 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
       const int k = halvings(mode, coordinates);
       piece = step_ / std::ldexp(1.0, k);
       auto found = mode.halvings.find(k);
-      if (found == mode.halvings.end()) found = mode.halvings.emplace(k, (a * piece).exp()).first;
+      if (found == mode.halvings.end())
+        found = mode.halvings.emplace(k, exponential(a, piece, 2 * n_ + nc_, omega_)).first;
       piece_exponential = &found->second;
     }
     const bool whole = theta_end - s.theta >= piece * (1.0 - 1e-12);
     const double tau_end = whole ? piece : theta_end - s.theta;
-    MatrixXd e = whole ? *piece_exponential : MatrixXd((a * tau_end).exp());
+    MatrixXd e = whole ? *piece_exponential : exponential(a, tau_end, 2 * n_ + nc_, omega_);
     VectorXd z_end = e * z;
     const auto trace = [&](const RowVectorXd& row, const Eigen::RowVectorXcd* modal) {
       Eigen::RowVectorXcd own;
@@ -421,7 +440,7 @@ void PiecewiseFlow::advance(FlowState& s, double theta_end, MatrixXd* jacobian, 
     if (next) {
       // The exact state there must have crossed (the modal values carry rounding): step on until it has.
       for (int polish = 0; polish < 8; ++polish) {
-        e = (a * first).exp();
+        e = exponential(a, first, 2 * n_ + nc_, omega_);
         z_end = e * z;
         const double g = next->row.dot(z_end), rate = next->row.dot(a * z_end);
         if (g > 0.0 || !(rate > 0.0) || first >= tau_end) break;

@@ -91,6 +91,20 @@ TEST(Shooting, StopsAtThePieceCapForAContactTooStiffToResolve) {
   }
 }
 
+// A load so large (1e90 N against a slip force of 3 N) that the exponential of the flow's generator
+// loses its accuracy came back as a "converged" motion of 0 (issue 70). It is a solver failure
+// naming the exponential, never a converged result.
+TEST(Shooting, RefusesAnExponentialThatLostItsAccuracyInsteadOfConvergingToZero) {
+  test::FrictionOscillator o = coulomb(3.0, 1e14);
+  o.force = 1e90;
+  try {
+    const timeint::ShootingResult s = timeint::shooting(o.model(), 2 * kPi * 300.0, options());
+    EXPECT_FALSE(s.steady.converged) << "converged to " << s.largest[0] << " m";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("exponential"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Shooting, StuckContactIsTheLinearSpringExactly) {
   test::FrictionOscillator o{.mass = 2.0, .damping = 30.0, .stiffness = 1e6, .force = 1.0, .contact = {}};
   o.contact = {.kn = 1e8, .kt = 4e5, .mu = 1.0, .n0 = 1e3};  // mu N far above any spring force

@@ -53,6 +53,31 @@ TEST(WorkEstimate, AnIwanJointCountsEverySlider) {
   EXPECT_GT(many.bytes, 100.0 * one.bytes);  // the DFT rows of each slider
 }
 
+// A point's solve costs more than its AFT and LU where both are tiny (H = 1, 64 samples: 2 300
+// operations counted, 35 us measured): 5 levels of the reader's 1e6 frequencies ran for minutes
+// (issue 70). Each solve now counts at least 1e5 operations; a costlier solve is counted as before.
+TEST(WorkEstimate, ASolveCostsAtLeastItsOverheadWhereItsArithmeticIsTiny) {
+  const Model none;
+  HbmSpec tiny = oscillator_sweep(4e-5, 1, 64);
+  tiny.sweep.f_max = tiny.sweep.f_min + 40.0;  // 1e6 + 1 frequencies
+  tiny.force_levels = {1.0, 3.0, 10.0, 30.0, 100.0};
+  EXPECT_GE(estimate_work(tiny, none).operations, 5.0 * 1e6 * 5.0 * 1e5);
+  EXPECT_THROW(require_within(estimate_work(tiny, none), WorkLimits{}), InputError);
+}
+
+// The contact loop had no estimate: 1e4 sliders at 1e6 samples ran for an hour (issue 70).
+TEST(WorkEstimate, AContactLoopCountsEverySliderAtEverySample) {
+  ContactLoopSpec loop;
+  loop.samples = 1000;
+  const double one = estimate_work(loop, Model{}).operations;
+  EXPECT_GT(one, 0.0);
+  loop.samples = 1'000'000;
+  loop.distribution = std::make_shared<contact::IwanDistribution>(contact::IwanParameters{.sliders = 10000});
+  const WorkEstimate many = estimate_work(loop, Model{});
+  EXPECT_NEAR(many.operations / one, 10000.0 * 1000.0, 1e4);
+  EXPECT_THROW(require_within(many, WorkLimits{}), InputError);
+}
+
 TEST(WorkEstimate, ARefusalNamesTheKeyTheEstimateAndTheBound) {
   const WorkEstimate e = estimate_work(oscillator_sweep(1e-3, 50, 100000), Model{});
   WorkLimits limits;

@@ -23,7 +23,7 @@ void refuse_unresolvable_levels(const TomlReader& r, const HbmSpec& s) {
   double slip = INFINITY;
   const HbmContactSpec* smallest = nullptr;
   for (const HbmContactSpec& c : s.contacts)
-    if (c.law.mu * c.law.n0 > 0.0 && c.law.mu * c.law.n0 < slip) slip = c.law.mu * c.law.n0, smallest = &c;
+    if (c.point.mu * c.point.n0 > 0.0 && c.point.mu * c.point.n0 < slip) slip = c.point.mu * c.point.n0, smallest = &c;
   if (!smallest) return;  // no constant slip force: the load sets N (a damper, contacts without n0)
   const double level = *std::max_element(s.force_levels.begin(), s.force_levels.end());
   if (level * pattern > kLargestLoadPerSlipForce * slip)

@@ -72,7 +72,7 @@ TEST(WorkEstimate, AContactLoopCountsEverySliderAtEverySample) {
   const double one = estimate_work(loop, Model{}).operations;
   EXPECT_GT(one, 0.0);
   loop.samples = 1'000'000;
-  loop.distribution = std::make_shared<contact::IwanDistribution>(contact::IwanParameters{.sliders = 10000});
+  loop.distribution = std::make_shared<friction::IwanDistribution>(friction::IwanParameters{.sliders = 10000});
   const WorkEstimate many = estimate_work(loop, Model{});
   EXPECT_NEAR(many.operations / one, 10000.0 * 1000.0, 1e4);
   EXPECT_THROW(require_within(many, WorkLimits{}), InputError);

@@ -105,6 +105,19 @@ Eigen::RowVectorXd out_of_plane_row(const ReducedModel& blades, const DamperPoin
   return row;
 }
 
+// A law of two directions slips in the plane of a_t and a_t2: a zero or parallel second row leaves
+// it a 1D law with a wrong limit.
+void require_independent_directions(const Eigen::RowVectorXd& first, const Eigen::RowVectorXd& second,
+                                    const HbmContactSpec& c) {
+  const double a = first.norm(), b = second.norm();
+  const double across = a > 0.0 ? (second - (first.dot(second) / (a * a)) * first).norm() : b;
+  if (!(across > 1e-9 * b) || b == 0.0)
+    throw InputError(
+        fmt::format("{}: 'tangential_2': contact '{}': the second tangential direction is {} the first: "
+                    "a {} contact needs two independent directions",
+                    c.at.where(), c.name, b == 0.0 ? "zero, not beside" : "parallel to", c.law->name()));
+}
+
 // The sector's model replaced by the whole ring: the first sector keeps the DOF and contact
 // indices (responses, forces, contact slider ranges), the others are named "<name>@<sector>".
 void expand_to_whole_ring(PreparedHbm& p, const HbmCyclicSpec& cyclic) {
@@ -190,7 +203,10 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCach
     p.contact_sliders.push_back({m.contacts.size(), m.contacts.size() + sliders.size()});
     friction::ContactElement element{{}, tangential, normal};
     element.law = c.law;
-    if (!c.tangential_2.empty()) element.tangential_2 = combination_row(p, blades, c.tangential_2, n, where);
+    if (!c.tangential_2.empty()) {
+      element.tangential_2 = combination_row(p, blades, c.tangential_2, n, where);
+      require_independent_directions(tangential, element.tangential_2, c);
+    }
     if (spec.cyclic) {
       element.tangential_next = combination_row(p, blades, c.tangential_next, n, where);
       element.normal_next = combination_row(p, blades, c.normal_next, n, where);

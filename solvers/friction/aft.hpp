@@ -1,4 +1,4 @@
-// Alternating frequency-time (AFT) evaluation of one Jenkins contact point (jenkins_contact.hpp):
+// Alternating frequency-time (AFT) evaluation of one Jenkins contact point (friction/jenkins.hpp):
 // harmonic coefficients of the relative displacements (u, v) in, harmonic coefficients of the
 // contact forces (T, N) and their exact Jacobian out. The frequency-domain half of the refined
 // approach of thesis section 3.3.2.5 (eqs 3.28-3.31), with H harmonics instead of the thesis's one.

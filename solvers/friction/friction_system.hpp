@@ -9,7 +9,7 @@
 // Equation of motion, q the model DOFs:
 //   M q'' + C q' + K q + sum_k (a_t,k^T T_k + a_n,k^T N_k) = f_static + f(t),
 // u_k = a_t,k . q and v_k = a_n,k . q the relative tangential and normal displacements of contact k
-// (v > 0 presses, as in contact/), T_k and N_k the Jenkins forces of contact k (N_k = max(N0 + kn v,
+// (v > 0 presses, as in friction/jenkins.hpp), T_k and N_k the law's forces of contact k (N_k = max(N0 + kn v,
 // 0) includes the preload N0). Sign convention: T and N are the forces that RESIST u and v, so the
 // contact acts on the DOFs with -a_t^T T - a_n^T N (action = reaction: a contact joining DOF i with
 // +1 and DOF j with -1 pushes them apart with N and drags them together with T). A contact with

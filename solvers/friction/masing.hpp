@@ -1,11 +1,11 @@
-// The friction laws every solver shares. A point contact of variable normal load whose tangential
+// The Masing family of friction laws. A point contact of variable normal load whose tangential
 // force is carried by Jenkins sliders acting in parallel on the same relative motion (the Masing
 // family: the Jenkins element is one slider, the Iwan element a distribution of them). The
 // harmonic balance (its AFT), Newmark, the exact flow that shooting integrates, the nonlinear modes
 // and the sensitivities all see a law as its sliders, each an ordinary Jenkins contact
 // (friction/jenkins.hpp): a new law of this family is one SliderDistribution, its test and
-// its parser entry. A law outside it (a smooth Dahl or Bouc-Wen law, a coupled 2D slip) would need
-// its own step and AFT behind this header instead.
+// its parser entry. A law outside it (a smooth Dahl or Bouc-Wen law, the coupled 2D slip of
+// friction/coupled_slip.hpp) is a class behind friction/friction_law.hpp instead.
 //
 // The split. Slider i takes a share c_i of the point's stuck tangential stiffness kt and a share
 // s_i of its normal law (kn_i = s_i kn, N0_i = s_i N0), with the point's mu: the sliders' normal

@@ -62,15 +62,30 @@ Eigen::MatrixXd analysis_matrix(int harmonics, int samples) {
   return p;
 }
 
-namespace {
+const AftTransforms& aft_transforms(int harmonics, int samples) {
+  thread_local struct {
+    int harmonics = -1, samples = -1;
+    AftTransforms transforms;
+  } cache;
+  if (cache.harmonics != harmonics || cache.samples != samples) {
+    cache.transforms.synthesis = synthesis_matrix(harmonics, samples);
+    cache.transforms.analysis = analysis_matrix(harmonics, samples);
+    cache.harmonics = harmonics;
+    cache.samples = samples;
+  }
+  return cache.transforms;
+}
 
-// The checks of aft_jenkins's inputs; returns the number of harmonics of u and v.
-int checked_harmonics(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                      const AftOptions& options) {
+int checked_aft_inputs(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                       const AftOptions& options, int directions) {
   validate(p);
-  if (u.size() != v.size())
-    throw std::invalid_argument(fmt::format("AFT: {} tangential and {} normal coefficients", u.size(), v.size()));
-  const int harmonics = harmonics_of(u.size());
+  if (u.size() != directions * v.size())
+    throw std::invalid_argument(
+        directions == 1
+            ? fmt::format("AFT: {} tangential and {} normal coefficients", u.size(), v.size())
+            : fmt::format("AFT: {} tangential coefficients for {} normal ones ({} directions: {} times as many)",
+                          u.size(), v.size(), directions, directions));
+  const int harmonics = harmonics_of(v.size());
   if (!u.allFinite() || !v.allFinite()) throw std::invalid_argument("AFT: a displacement coefficient is not finite");
   require_samples(harmonics, options.samples);
   if (options.max_periods < 2)
@@ -80,6 +95,8 @@ int checked_harmonics(const PointParameters& p, const Eigen::VectorXd& u, const 
   if (!std::isfinite(options.initial_slider)) throw std::invalid_argument("AFT: initial_slider must be finite");
   return harmonics;
 }
+
+namespace {
 
 // One sample of the chain rule below for the coefficients [u; v]: the row dT_k (from the row dN_k
 // and the synthesis row phi_k) and the slider's row dw, updated from w_{k-1}'s to w_k's.
@@ -163,29 +180,16 @@ void law_derivative_step(const PointParameters& p, const JenkinsStep& s, double 
 // so a contact stuck throughout has dT/dmu = 0 exactly and a frictionless one dT/dkt = 0.
 AftResult aft_jenkins(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const AftOptions& options) {
-  const int harmonics = checked_harmonics(p, u, v, options);
+  const int harmonics = checked_aft_inputs(p, u, v, options);
   if (options.resolve_events) return aft_jenkins_events(p, u, v, options);
 
   const int n = options.samples;
   const Eigen::Index m = u.size();
-  // A sweep calls this thousands of times with the same H and n: keep the last pair of matrices.
-  // The march reads and writes one row per sample, so the per-sample matrices are row-major: in
-  // column-major storage a row is strided by n doubles, and a power-of-two n maps the row onto a
-  // few L1 sets (measured: 256 samples cost 1.7x per sample what 240 did at H = 7).
+  // The per-sample matrices are row-major as the synthesis (aft_transforms).
   using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  thread_local struct {
-    int harmonics = -1, samples = -1;
-    RowMajor synthesis;
-    Eigen::MatrixXd analysis;
-  } cache;
-  if (cache.harmonics != harmonics || cache.samples != n) {
-    cache.synthesis = synthesis_matrix(harmonics, n);
-    cache.analysis = analysis_matrix(harmonics, n);
-    cache.harmonics = harmonics;
-    cache.samples = n;
-  }
-  const RowMajor& synthesis = cache.synthesis;
-  const Eigen::MatrixXd& analysis = cache.analysis;
+  const AftTransforms& transforms = aft_transforms(harmonics, n);
+  const RowMajor& synthesis = transforms.synthesis;
+  const Eigen::MatrixXd& analysis = transforms.analysis;
 
   AftResult r;
   r.u = synthesis * u;

@@ -31,6 +31,17 @@ int harmonics_of(Eigen::Index coefficients);
 Eigen::MatrixXd synthesis_matrix(int harmonics, int samples);
 Eigen::MatrixXd analysis_matrix(int harmonics, int samples);
 
+// synthesis_matrix and analysis_matrix of (harmonics, samples), kept per thread for the last pair
+// asked (a sweep calls an AFT thousands of times with the same pair). The synthesis is row-major:
+// the march reads one row per sample, and in column-major storage a row is strided by n doubles
+// (a power-of-two n maps it onto a few L1 sets: 256 samples cost 1.7x per sample what 240 did at
+// H = 7). Valid until the thread asks for another pair.
+struct AftTransforms {
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> synthesis;
+  Eigen::MatrixXd analysis;
+};
+const AftTransforms& aft_transforms(int harmonics, int samples);
+
 struct AftOptions {
   // n_t, time samples per period. Required: >= 2H + 1 (no aliasing of the input), in practice
   // >= 16 (2H + 1) since stick-slip forces have kinks and their coefficients converge as 1 / n_t^2.
@@ -83,6 +94,12 @@ struct AftResult {
   bool closed = false;            // the slider loop closed within the tolerance
   double closure_mismatch = 0.0;  // |w(end) - w(end of the period before)| [m], last period
 };
+
+// The checks every AFT makes of its inputs: the point's parameters, `directions` tangential
+// coefficient vectors in u for the normal one in v, every coefficient finite, the options in range.
+// Returns H; throws std::invalid_argument naming what is wrong.
+int checked_aft_inputs(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                       const AftOptions& options, int directions = 1);
 
 // Throws std::invalid_argument when the parameters are invalid (validate()), the two coefficient
 // vectors differ in size or hold a non-finite value, or the options are out of range. A loop

@@ -1,7 +1,5 @@
 #include "friction/coupled_slip.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -42,21 +40,6 @@ namespace {
 
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-void check_inputs(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                  const AftOptions& options) {
-  validate(p);
-  if (u.size() != 2 * v.size())
-    throw std::invalid_argument(
-        fmt::format("coupled_slip AFT: {} tangential coefficients for {} normal ones (two directions: twice as many)",
-                    u.size(), v.size()));
-  if (!u.allFinite() || !v.allFinite()) throw std::invalid_argument("AFT: a displacement coefficient is not finite");
-  if (options.law_derivatives) throw std::invalid_argument("coupled_slip has no law derivatives (sensitivities)");
-  if (options.max_periods < 2)
-    throw std::invalid_argument(fmt::format("AFT: max_periods must be >= 2 (got {})", options.max_periods));
-  if (!(options.closure_tolerance >= 0.0) || !std::isfinite(options.closure_tolerance))
-    throw std::invalid_argument("AFT: closure_tolerance must be finite and >= 0");
-}
-
 // The march and its chain rule over the inputs x = [u1; u2; v] (3m): dw, the slider's 2 x 3m
 // derivative, carried through every period from 0 as aft_jenkins carries its row (friction/aft.cpp):
 //   lift-off: dT = 0,                                   dw = du_k
@@ -67,20 +50,9 @@ AftResult march(const PointParameters& p, const Eigen::VectorXd& u, const Eigen:
   const Eigen::Index m = v.size();
   const int harmonics = harmonics_of(m);
   const int n = options.samples;
-  // A sweep calls this thousands of times with the same H and n (as aft_jenkins).
-  thread_local struct {
-    int harmonics = -1, samples = -1;
-    RowMajor synthesis;
-    Eigen::MatrixXd analysis;
-  } cache;
-  if (cache.harmonics != harmonics || cache.samples != n) {
-    cache.synthesis = synthesis_matrix(harmonics, n);
-    cache.analysis = analysis_matrix(harmonics, n);
-    cache.harmonics = harmonics;
-    cache.samples = n;
-  }
-  const RowMajor& synthesis = cache.synthesis;
-  const Eigen::MatrixXd& analysis = cache.analysis;
+  const AftTransforms& transforms = aft_transforms(harmonics, n);
+  const RowMajor& synthesis = transforms.synthesis;
+  const Eigen::MatrixXd& analysis = transforms.analysis;
   const Eigen::VectorXd u1 = synthesis * u.head(m), u2 = synthesis * u.tail(m);
 
   AftResult r;
@@ -165,7 +137,8 @@ class CoupledSlipLaw final : public FrictionLaw {
   int directions() const override { return 2; }
   AftResult harmonics(const PointParameters& point, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const AftOptions& options) const override {
-    check_inputs(point, u, v, options);
+    checked_aft_inputs(point, u, v, options, 2);
+    if (options.law_derivatives) throw std::invalid_argument("coupled_slip has no law derivatives (sensitivities)");
     return march(point, u, v, options);
   }
   LawStep step(const PointParameters& point, const Eigen::Vector2d& slider, const Eigen::Vector2d& u,

@@ -12,13 +12,7 @@ ContactSample contact_step(const friction::ContactElement& contact, double slide
           .normal = s.normal,
           .slider = s.slider[0],
           .state = s.state,
-          .dt_du = s.dt_du(0, 0),
-          .dt_dv = s.dt_dv[0],
-          .dn_dv = s.dn_dv};
-}
-
-ContactTangent contact_tangent(const friction::ContactElement&, const ContactSample& sample) {
-  return {.dt_du = sample.dt_du, .dt_dv = sample.dt_dv, .dn_dv = sample.dn_dv};
+          .tangent = {.dt_du = s.dt_du(0, 0), .dt_dv = s.dt_dv[0], .dn_dv = s.dn_dv}};
 }
 
 }  // namespace bb::timeint

@@ -25,6 +25,13 @@
 
 namespace bb::timeint {
 
+// Derivatives of (T, N) with respect to (u, v) in the state reached (the consistent tangent of the
+// return map): stick dT/du = kt, dN/dv = kn; slip dT/du = 0, dT/dv = +-mu kn, dN/dv = kn; lift-off
+// all zero. dN/du is always zero.
+struct ContactTangent {
+  double dt_du = 0.0, dt_dv = 0.0, dn_dv = 0.0;
+};
+
 // One contact's kinematics and forces at one instant.
 struct ContactSample {
   double u = 0.0;           // a_t . q - tangential_offset [m]
@@ -33,19 +40,10 @@ struct ContactSample {
   double normal = 0.0;      // N [N], >= 0
   double slider = 0.0;      // w = s* after the step [m]
   friction::ContactState state = friction::ContactState::stick;
-  double dt_du = 0.0, dt_dv = 0.0, dn_dv = 0.0;  // the law's tangent in the state reached
-};
-
-// Derivatives of (T, N) with respect to (u, v) in the state reached (the consistent tangent of the
-// return map): stick dT/du = kt, dN/dv = kn; slip dT/du = 0, dT/dv = +-mu kn, dN/dv = kn; lift-off
-// all zero. dN/du is always zero.
-struct ContactTangent {
-  double dt_du = 0.0, dt_dv = 0.0, dn_dv = 0.0;
+  ContactTangent tangent{};  // the law's, in the state reached
 };
 
 // Table XII for one contact: the slider at the start of the step, the displacements q at its end.
 ContactSample contact_step(const friction::ContactElement& contact, double slider_before, const Eigen::VectorXd& q);
-
-ContactTangent contact_tangent(const friction::ContactElement& contact, const ContactSample& sample);
 
 }  // namespace bb::timeint

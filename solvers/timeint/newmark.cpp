@@ -47,7 +47,7 @@ ContactEval evaluate_contacts(const std::vector<friction::ContactElement>& conta
     const friction::ContactElement& c = contacts[k];
     const ContactSample s = contact_step(c, before[k], x);
     e.force += c.tangential.transpose() * s.tangential + c.normal.transpose() * s.normal;
-    const ContactTangent d = contact_tangent(c, s);
+    const ContactTangent& d = s.tangent;
     e.jacobian += c.tangential.transpose() * (d.dt_du * c.tangential + d.dt_dv * c.normal) +
                   d.dn_dv * c.normal.transpose() * c.normal;
     e.samples.push_back(s);

@@ -19,7 +19,7 @@
 // the contact DOFs c (any nonzero entry of some a_t or a_n); the other DOFs o are condensed exactly,
 // S = K_eff,cc - K_eff,co K_eff,oo^-1 K_eff,oc (the condensation of hbm/friction_system.hpp, which
 // the harmonic balance applies per harmonic), and Newton's method (linalg/damped_newton.hpp) runs
-// on the |c| contact DOFs with the consistent tangent of the slider (contact_tangent): the law is
+// on the |c| contact DOFs with the consistent tangent of the slider (ContactSample::tangent): the law is
 // piecewise linear, so once the states are right the next iterate is exact, and the step size is
 // set by accuracy only. Each Newton step is backtracked (Armijo on ||R||) so that a state switch
 // cannot make the iteration cycle.

@@ -131,7 +131,7 @@ class NewmarkPeriod {
       if (alpha != 0.0 && before.state != ContactState::lift_off)  // alpha g(q0, w0): T0 = kt (u0 - w0)
         rhs += alpha * (c.tangential.transpose() * (c.point.kt * (c.tangential * q - w.row(k))) +
                         c.normal.transpose() * (c.point.kn * (c.normal * q)));
-      const ContactTangent d = contact_tangent(c, after);
+      const ContactTangent& d = after.tangent;
       tangent += (1.0 + alpha) * (c.tangential.transpose() * (d.dt_du * c.tangential + d.dt_dv * c.normal) +
                                   d.dn_dv * c.normal.transpose() * c.normal);
       if (after.state == ContactState::stick)  // T1 = kt (u1 - w0)

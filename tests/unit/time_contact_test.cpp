@@ -87,7 +87,7 @@ TEST(TimeContact, ConsistentTangentIsTheDerivativeOfTheSlider) {
   for (const Eigen::Vector2d& q : {Eigen::Vector2d(2e-6, 1e-5), Eigen::Vector2d(3e-5, 1e-5),
                                    Eigen::Vector2d(-3e-5, -2e-5), Eigen::Vector2d(1e-5, -1e-4)}) {
     const ContactSample s = contact_step(c, 0.0, q);
-    const ContactTangent d = contact_tangent(c, s);
+    const ContactTangent& d = s.tangent;
     const double h = 1e-12;
     const ContactSample su = contact_step(c, 0.0, Eigen::Vector2d(q + Eigen::Vector2d(h, 0.0)));
     const ContactSample sv = contact_step(c, 0.0, Eigen::Vector2d(q + Eigen::Vector2d(0.0, h)));

@@ -1,6 +1,7 @@
 #include "cases/case_parameter.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -155,23 +156,45 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
   return std::visit(Locator{spec, p}, p.target);
 }
 
-// The slot of the law of the contact a law's own parameter names.
-std::shared_ptr<const friction::SliderDistribution>& law_slot(CaseSpec& spec, const CaseParameter& p,
-                                                              const LawOwnValue& v) {
-  std::shared_ptr<const friction::SliderDistribution>* slot = nullptr;
+// The contact of an hbm or time analysis a law's own parameter names, checked to exist; null for
+// the one contact of a contact_loop.
+HbmContactSpec* own_value_contact(CaseSpec& spec, const CaseParameter& p, const LawOwnValue& v) {
   if (auto* loop = std::get_if<ContactLoopSpec>(&spec.analysis)) {
     if (v.contact) absent(p, "a contact_loop analysis has one [analysis.contact]: leave out the index");
-    slot = &loop->distribution;
-  } else {
-    HbmSpec* hbm = system_of(spec);
-    if (!hbm) absent(p, "only hbm, time and contact_loop analyses have contacts");
-    if (!v.contact) absent(p, fmt::format("name the contact by its index, e.g. analysis.contact.0.{}", v.key));
-    if (*v.contact >= hbm->contacts.size())
-      absent(p,
-             fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", *v.contact, hbm->contacts.size()));
-    slot = &hbm->contacts[*v.contact].distribution;
+    return nullptr;
   }
-  if (!*slot) absent(p, fmt::format("the contact's law is jenkins, which has no parameter '{}' of its own", v.key));
+  HbmSpec* hbm = system_of(spec);
+  if (!hbm) absent(p, "only hbm, time and contact_loop analyses have contacts");
+  if (!v.contact) absent(p, fmt::format("name the contact by its index, e.g. analysis.contact.0.{}", v.key));
+  if (*v.contact >= hbm->contacts.size())
+    absent(p,
+           fmt::format("no contact {} (the analysis has {} [[analysis.contact]])", *v.contact, hbm->contacts.size()));
+  return &hbm->contacts[*v.contact];
+}
+
+// The friction law of the contact when the parameter is one of that law's own (a clearance
+// spring's gap), else null: the parameter is then its slider distribution's (Iwan's chi).
+std::shared_ptr<const friction::FrictionLaw>* own_law_slot(CaseSpec& spec, const CaseParameter& p,
+                                                           const LawOwnValue& v) {
+  HbmContactSpec* c = own_value_contact(spec, p, v);
+  if (!c) return nullptr;
+  const std::vector<std::string> names = c->law->parameter_names();
+  return std::find(names.begin(), names.end(), v.key) == names.end() ? nullptr : &c->law;
+}
+
+// The slot of the slider distribution of the contact a law's own parameter names.
+std::shared_ptr<const friction::SliderDistribution>& law_slot(CaseSpec& spec, const CaseParameter& p,
+                                                              const LawOwnValue& v) {
+  HbmContactSpec* c = own_value_contact(spec, p, v);
+  std::shared_ptr<const friction::SliderDistribution>* slot =
+      c ? &c->distribution : &std::get<ContactLoopSpec>(spec.analysis).distribution;
+  if (!*slot) {
+    const std::vector<std::string> names = c ? c->law->parameter_names() : std::vector<std::string>{};
+    absent(p, names.empty() ? fmt::format("the contact's law is {}, which has no parameter '{}' of its own",
+                                          c ? c->law->name() : std::string("jenkins"), v.key)
+                            : fmt::format("the contact's law is {}, whose own parameters are {}", c->law->name(),
+                                          fmt::join(names, ", ")));
+  }
   return *slot;
 }
 
@@ -292,6 +315,7 @@ CaseParameter parse_parameter_path(const std::string& path) {
 double parameter_value(const CaseSpec& spec, const CaseParameter& parameter) {
   CaseSpec& s = const_cast<CaseSpec&>(spec);  // only read here
   if (const auto* v = std::get_if<LawOwnValue>(&parameter.target)) {
+    if (const auto* own = own_law_slot(s, parameter, *v)) return (*own)->parameter(v->key);
     const auto& law = law_slot(s, parameter, *v);
     try {
       return law->parameter(v->key);
@@ -310,6 +334,14 @@ double parameter_value(const CaseSpec& spec, const CaseParameter& parameter) {
 
 void set_parameter_value(CaseSpec& spec, const CaseParameter& parameter, double value) {
   if (const auto* v = std::get_if<LawOwnValue>(&parameter.target)) {
+    if (auto* own = own_law_slot(spec, parameter, *v)) {
+      try {
+        *own = (*own)->with_parameter(v->key, value);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(fmt::format("'{}' = {}: {}", parameter.path, value, e.what()));
+      }
+      return;
+    }
     auto& law = law_slot(spec, parameter, *v);
     parameter_value(spec, parameter);  // names a key the law lacks
     try {

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "friction/clearance_spring.hpp"
 #include "friction/coulomb_law.hpp"
 #include "friction/coupled_slip.hpp"
 #include "friction/iwan_law.hpp"
@@ -33,6 +34,23 @@ std::shared_ptr<const friction::SliderDistribution> parse_iwan(TomlReader& r, co
   return std::make_shared<friction::IwanDistribution>(p);
 }
 
+// A clearance spring beside a Masing law: both keys or neither.
+std::shared_ptr<const friction::FrictionLaw> parse_clearance_spring(TomlReader& r,
+                                                                    std::shared_ptr<const friction::FrictionLaw> law,
+                                                                    const std::string& name) {
+  const char* given = r.has("gap") ? "gap" : "k_gap";
+  if (name != "jenkins" && name != "iwan")
+    r.fail(given,
+           fmt::format("a clearance spring (gap, k_gap) sits beside a Masing law (jenkins or iwan), not {}", name));
+  for (const char* key : {"gap", "k_gap"})
+    if (!r.has(key))
+      r.fail(given, fmt::format("a clearance spring needs both gap [m] and k_gap [N/m]; '{}' is missing", key));
+  friction::ClearanceSpring spring;
+  spring.gap = r.positive("gap");
+  spring.stiffness = r.non_negative("k_gap", 0.0);
+  return friction::with_clearance_spring(std::move(law), spring);
+}
+
 }  // namespace
 
 ContactLaw parse_contact_law(TomlReader& r, const friction::PointParameters& point, bool two_directions) {
@@ -42,6 +60,7 @@ ContactLaw parse_contact_law(TomlReader& r, const friction::PointParameters& poi
   if (law == "iwan") out.distribution = parse_iwan(r, point);
   if (law == "coulomb") out.law = friction::coulomb_law();
   if (law == "coupled_slip") out.law = friction::coupled_slip_law();
+  if (r.has("gap") || r.has("k_gap")) out.law = parse_clearance_spring(r, out.law, law);
   return out;
 }
 

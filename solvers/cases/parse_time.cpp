@@ -131,8 +131,20 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
   if (2 * (t.system.harmonics + 1) > t.steps_per_period)
     r.fail("steps_per_period", fmt::format("must be at least 2 (H + 1) = {} for the DFT of {} harmonics",
                                            2 * (t.system.harmonics + 1), t.system.harmonics));
-  if (t.method == TimeSpec::Method::shooting && t.period_map == TimeSpec::PeriodMap::exact)
+  if (t.method == TimeSpec::Method::shooting && t.period_map == TimeSpec::PeriodMap::exact) {
+    for (const HbmContactSpec& c : t.system.contacts)
+      if (!c.law->piecewise_linear())
+        throw InputError(
+            fmt::format("{}: 'law': the exact flow of shooting integrates piecewise-linear laws only, "
+                        "and the {} law is not one here; write period_map = \"newmark\" to shoot on "
+                        "the Newmark step",
+                        c.at.where(), c.law->name()));
+    if (t.system.damper && !t.system.damper->law->piecewise_linear())
+      r.fail("damper", fmt::format("the exact flow of shooting integrates piecewise-linear laws only, and the "
+                                   "damper's {} law is not one; write period_map = \"newmark\"",
+                                   t.system.damper->law->name()));
     refuse_unresolvable_levels(r, t.system);
+  }
   return t;
 }
 

@@ -214,6 +214,7 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCach
     }
     for (size_t i = 0; i < sliders.size(); ++i) {
       element.point = sliders[i];
+      element.law = friction::slider_law(c.law, i);
       m.contacts.push_back(element);
       p.contact_names.push_back(sliders.size() == 1 ? c.name : fmt::format("{}.{}", c.name, i + 1));
     }

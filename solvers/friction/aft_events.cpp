@@ -9,6 +9,7 @@
 
 #include "common/constants.hpp"
 #include "friction/aft_pieces.hpp"
+#include "friction/illinois.hpp"
 
 namespace bb::friction {
 namespace {
@@ -37,32 +38,6 @@ void basis_at(double theta, int harmonics, Eigen::RowVectorXd& phi, Eigen::RowVe
 struct Motion {
   double theta = 0.0, u = 0.0, v = 0.0, du = 0.0, dv = 0.0, ddu = 0.0, ddv = 0.0;
 };
-
-// Regula falsi with the Illinois modification on [lo, hi], f(lo) and f(hi) of opposite signs: the
-// root to rounding, superlinear for a smooth f.
-template <typename F>
-double illinois(F&& f, double lo, double hi, double f_lo, double f_hi) {
-  const double resolution = 1e-15 * kTwoPi;
-  int side = 0;
-  for (int i = 0; i < 100 && hi - lo > resolution; ++i) {
-    double mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-    if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
-    const double fm = f(mid);
-    if (std::abs(fm) <= 1e-15 * (std::abs(f_lo) + std::abs(f_hi))) return mid;
-    if ((fm > 0.0) == (f_hi > 0.0)) {
-      hi = mid;
-      f_hi = fm;
-      if (side == 1) f_lo *= 0.5;
-      side = 1;
-    } else {
-      lo = mid;
-      f_lo = fm;
-      if (side == -1) f_hi *= 0.5;
-      side = -1;
-    }
-  }
-  return hi;
-}
 
 // What ends a phase. The first four end stick or slip, the last two open or close the contact.
 enum class Event { slip_up, slip_down, stop_positive, stop_negative, open, close };

@@ -82,14 +82,30 @@ struct TrigSums {
 // the piece, both in closed form: no quadrature error. The Gram matrices enter summed per state.
 }  // namespace
 
+namespace {
+
+Eigen::VectorXd coefficient_scale(Eigen::Index m) {
+  // c0 = (1 / 2 pi) int T, a_h = (1 / pi) int T cos h theta, b_h likewise with sin.
+  Eigen::VectorXd scale = Eigen::VectorXd::Constant(m, 1.0 / std::numbers::pi);
+  scale[0] *= 0.5;
+  return scale;
+}
+
+}  // namespace
+
+BasisIntegrals basis_integrals(const std::vector<std::pair<double, double>>& pieces, int harmonics) {
+  TrigSums sums(2 * harmonics);
+  for (const auto& [a, b] : pieces) sums.add_piece(a, b);
+  const Eigen::VectorXd scale = coefficient_scale(harmonic_size(harmonics));
+  return {sums.mean(scale), sums.gram(scale)};
+}
+
 void integrate_pieces(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const std::vector<Piece>& pieces, const std::vector<StuckSlider>& sliders, bool with_law,
                       AftResult& r) {
   const Eigen::Index m = u.size();
   const int top = 2 * harmonics_of(m);
-  // c0 = (1 / 2 pi) int T, a_h = (1 / pi) int T cos h theta, b_h likewise with sin.
-  Eigen::VectorXd scale = Eigen::VectorXd::Constant(m, 1.0 / std::numbers::pi);
-  scale[0] *= 0.5;
+  const Eigen::VectorXd scale = coefficient_scale(m);
   r.tangential = Eigen::VectorXd::Zero(m);
   r.dtangential_du = Eigen::MatrixXd::Zero(m, m);
   r.dtangential_dv = Eigen::MatrixXd::Zero(m, m);

@@ -5,6 +5,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <utility>
 #include <vector>
 
 #include "friction/aft.hpp"
@@ -30,5 +31,14 @@ struct Piece {
 void integrate_pieces(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const std::vector<Piece>& pieces, const std::vector<StuckSlider>& sliders, bool with_law,
                       AftResult& r);
+
+// The integrals over a set of pieces [a, b] of the basis phi = [1, cos theta, sin theta, ...,
+// sin H theta] and of phi phi^T, each row scaled as a coefficient is (1 / 2 pi, then 1 / pi): a force
+// k (u - c) on those pieces has the coefficients k (gram u - c mean), exactly.
+struct BasisIntegrals {
+  Eigen::VectorXd mean;
+  Eigen::MatrixXd gram;
+};
+BasisIntegrals basis_integrals(const std::vector<std::pair<double, double>>& pieces, int harmonics);
 
 }  // namespace bb::friction

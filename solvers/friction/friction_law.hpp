@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "friction/aft.hpp"
 #include "friction/jenkins.hpp"
@@ -58,7 +59,25 @@ class FrictionLaw {
   virtual bool piecewise_linear() const = 0;
   // Whether the exact flow holds a stuck contact rigidly (Coulomb's stick, no tangential spring).
   virtual bool rigid_stick() const { return false; }
+  // The law's own parameters beyond the point's kn, kt, mu, N0, by their case keys (a clearance
+  // spring's "gap" and "k_gap"): what a calibration may vary. Empty for a law with none.
+  virtual std::vector<std::string> parameter_names() const { return {}; }
+  // One of them; std::invalid_argument naming the law's parameters when `name` is not one.
+  virtual double parameter(const std::string& name) const;
+  // The same law with `name` set to `value`; std::invalid_argument when the value leaves its domain.
+  virtual std::shared_ptr<const FrictionLaw> with_parameter(const std::string& name, double value) const;
+  // The law of the second and later sliders of a point whose Masing part is spread over sliders
+  // (friction/masing.hpp); null when every slider has this law. A clearance spring acts once per
+  // point, on the first slider (friction/clearance_spring.hpp).
+  virtual std::shared_ptr<const FrictionLaw> later_sliders_law() const { return nullptr; }
 };
+
+// The law of slider `slider` (from 0) of a point whose law is `law`.
+inline std::shared_ptr<const FrictionLaw> slider_law(const std::shared_ptr<const FrictionLaw>& law, size_t slider) {
+  if (slider == 0) return law;
+  std::shared_ptr<const FrictionLaw> later = law->later_sliders_law();
+  return later ? later : law;
+}
 
 // The Jenkins (elastic-Coulomb) slider of friction/jenkins.hpp: one direction, piecewise linear,
 // sampled or event-resolved AFT, law derivatives. One shared instance.

@@ -58,7 +58,7 @@ PiecewiseFlow::PiecewiseFlow(const friction::FrictionModel& model, double omega_
   for (const friction::ContactElement& c : model.contacts)
     if (!c.law->piecewise_linear())
       throw std::invalid_argument(fmt::format(
-          "exact flow: the {} law has no piecewise-linear form; shoot on the Newmark step (method = \"newmark\")",
+          "exact flow: the {} law has no piecewise-linear form; shoot on the Newmark step (period_map = \"newmark\")",
           c.law->name()));
   const Eigen::FullPivLU<MatrixXd> lu(model.mass);
   if (!lu.isInvertible()) throw std::invalid_argument("exact flow: the mass matrix is singular");

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "frf/sweep.hpp"
 
@@ -15,7 +16,8 @@ namespace bb {
 
 std::vector<std::string> nonlinear_modal_parameter_paths(const NonlinearMode& mode) {
   std::vector<std::string> paths;
-  for (size_t i = 0; i < mode.frequency_hz.knots(); ++i) paths.push_back(fmt::format("analysis.backbone.frequency_hz.{}", i));
+  for (size_t i = 0; i < mode.frequency_hz.knots(); ++i)
+    paths.push_back(fmt::format("analysis.backbone.frequency_hz.{}", i));
   for (size_t i = 0; i < mode.damping_ratio.knots(); ++i)
     paths.push_back(fmt::format("analysis.backbone.damping_ratio.{}", i));
   paths.push_back("analysis.mass");
@@ -23,8 +25,6 @@ std::vector<std::string> nonlinear_modal_parameter_paths(const NonlinearMode& mo
 }
 
 namespace {
-
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 // Index into the model's parameters of each asked sensitivity, and the parameter's value (p in p d/dp).
 struct Differentiated {
@@ -60,7 +60,8 @@ void add_backbone_table(const NonlinearMode& mode, ResultTables& tables) {
     const double amp = lo * std::pow(hi / lo, static_cast<double>(k) / (kPoints - 1));
     rows.push_back({static_cast<double>(k + 1), amp, mode.frequency_hz(amp), mode.damping_ratio(amp)});
   }
-  tables.emplace("backbone", table_from_rows("backbone", {"point", "amplitude_m", "frequency_hz", "damping_ratio"}, rows));
+  tables.emplace("backbone",
+                 table_from_rows("backbone", {"point", "amplitude_m", "frequency_hz", "damping_ratio"}, rows));
 }
 
 std::vector<std::string> with_sensitivities(std::vector<std::string> cols, const std::vector<std::string>& quantities,
@@ -73,29 +74,25 @@ std::vector<std::string> with_sensitivities(std::vector<std::string> cols, const
 void append_sensitivities(std::vector<double>& row, const std::vector<const Eigen::VectorXd*>& derivatives,
                           const std::vector<double>& scales, const Differentiated& d) {
   for (size_t j = 0; j < d.index.size(); ++j)
-    for (size_t q = 0; q < derivatives.size(); ++q) row.push_back(d.value[j] * (*derivatives[q])[d.index[j]] * scales[q]);
+    for (size_t q = 0; q < derivatives.size(); ++q)
+      row.push_back(d.value[j] * (*derivatives[q])[d.index[j]] * scales[q]);
 }
 
 void add_stepped_sine(const NonlinearModalSpec& spec, const SteppedSineSpec& sine, const Differentiated& d,
                       ResultTables& tables) {
   const std::string amp = spec.dof + "_amp_m", phase = spec.dof + "_phase_deg";
-  const auto cols =
-      with_sensitivities({"point", "frequency_hz", "force_n", amp, phase, "stable"}, {amp, phase}, d);
+  const auto cols = with_sensitivities({"point", "frequency_hz", "force_n", amp, phase, "stable"}, {amp, phase}, d);
   std::vector<std::vector<double>> rows;
   std::optional<double> previous;
   for (size_t i = 0; i < sine.frequency_hz.size(); ++i) {
     const ModalPoint p = stepped_response(spec.mode, sine.force[i], sine.frequency_hz[i], previous);
     previous = p.amplitude;
     std::vector<double> row = {static_cast<double>(i + 1), sine.frequency_hz[i], sine.force[i], p.amplitude,
-                               p.phase * kDegPerRad, p.stable ? 1.0 : 0.0};
+                               p.phase * kDegPerRad,       p.stable ? 1.0 : 0.0};
     append_sensitivities(row, {&p.d_amplitude, &p.d_phase}, {1.0, kDegPerRad}, d);
     rows.push_back(std::move(row));
   }
   tables.emplace("frf_" + sine.name, table_from_rows("frf_" + sine.name, cols, rows));
-}
-
-double held_amplitude_m(const ResponseControlSpec& c, double f_hz) {
-  return c.amplitude / std::pow(2.0 * std::numbers::pi * f_hz, c.derivative);
 }
 
 struct ControlMinimum {
@@ -108,30 +105,32 @@ struct ControlMinimum {
 ControlMinimum smallest_force(const NonlinearModalSpec& spec, const ResponseControlSpec& c,
                               const std::vector<double>& force) {
   const auto k = static_cast<size_t>(std::min_element(force.begin(), force.end()) - force.begin());
-  const auto at = [&](double f) { return held_response(spec.mode, held_amplitude_m(c, f), f); };
+  const auto at = [&](double f) { return held_response(spec.mode, c.held_displacement(kTwoPi * f), f); };
   ControlMinimum m{force[k], c.frequency_hz[k], at(c.frequency_hz[k]).phase * kDegPerRad, false};
   if (k == 0 || k + 1 >= force.size()) return m;
-  const GoldenSearch search = golden_section_maximum([&](double f) { return std::optional<double>(-at(f).force); },
-                                                     std::min(c.frequency_hz[k - 1], c.frequency_hz[k + 1]),
-                                                     std::max(c.frequency_hz[k - 1], c.frequency_hz[k + 1]), 200, 1e-10);
+  const GoldenSearch search =
+      golden_section_maximum([&](double f) { return std::optional<double>(-at(f).force); },
+                             std::min(c.frequency_hz[k - 1], c.frequency_hz[k + 1]),
+                             std::max(c.frequency_hz[k - 1], c.frequency_hz[k + 1]), 200, 1e-10);
   const double f = 0.5 * (search.a + search.b);
   const ModalPoint p = at(f);
   if (p.force < m.force) m = {p.force, f, p.phase * kDegPerRad, true};
   return m;
 }
 
-ControlMinimum add_response_control(const NonlinearModalSpec& spec, const ResponseControlSpec& c, const Differentiated& d,
-                             ResultTables& tables) {
+ControlMinimum add_response_control(const NonlinearModalSpec& spec, const ResponseControlSpec& c,
+                                    const Differentiated& d, ResultTables& tables) {
   const std::string amp = spec.dof + "_amp_m", phase = spec.dof + "_phase_deg";
   const auto cols = with_sensitivities({"point", "frequency_hz", "force_n", "force_phase_deg", "held_m", amp, phase},
                                        {"force_n", phase}, d);
   std::vector<std::vector<double>> rows;
   std::vector<double> force;
   for (size_t i = 0; i < c.frequency_hz.size(); ++i) {
-    const double held = held_amplitude_m(c, c.frequency_hz[i]);
+    const double held = c.held_displacement(kTwoPi * c.frequency_hz[i]);
     const ModalPoint p = held_response(spec.mode, held, c.frequency_hz[i]);
-    std::vector<double> row = {static_cast<double>(i + 1), c.frequency_hz[i], p.force, -p.phase * kDegPerRad, held,
-                               held, p.phase * kDegPerRad};
+    std::vector<double> row = {
+        static_cast<double>(i + 1), c.frequency_hz[i], p.force, -p.phase * kDegPerRad, held, held,
+        p.phase * kDegPerRad};
     append_sensitivities(row, {&p.d_force, &p.d_phase}, {1.0, kDegPerRad}, d);
     rows.push_back(std::move(row));
     force.push_back(p.force);
@@ -149,9 +148,8 @@ void add_response_control_summary(const NonlinearModalSpec& spec, const std::vec
   for (size_t k = 0; k < minima.size(); ++k) {
     const ResponseControlSpec& c = spec.response_controls[k];
     const ControlMinimum& m = minima[k];
-    rows.push_back({static_cast<double>(k + 1), c.amplitude, static_cast<double>(c.derivative), m.force,
-                    m.frequency_hz, m.phase_deg, m.interior ? 1.0 : 0.0,
-                    static_cast<double>(c.frequency_hz.size())});
+    rows.push_back({static_cast<double>(k + 1), c.amplitude, static_cast<double>(c.derivative), m.force, m.frequency_hz,
+                    m.phase_deg, m.interior ? 1.0 : 0.0, static_cast<double>(c.frequency_hz.size())});
     names.push_back(c.name), dofs.push_back(spec.dof), held.push_back(quantity[c.derivative]);
   }
   ResultTable t = table_from_rows("response_control",
@@ -197,7 +195,8 @@ NonlinearModalOutcome run_nonlinear_modal(const NonlinearModalSpec& spec) {
   add_backbone_table(spec.mode, out.tables);
   for (const SteppedSineSpec& s : spec.stepped_sines) add_stepped_sine(spec, s, d, out.tables);
   std::vector<ControlMinimum> minima;
-  for (const ResponseControlSpec& c : spec.response_controls) minima.push_back(add_response_control(spec, c, d, out.tables));
+  for (const ResponseControlSpec& c : spec.response_controls)
+    minima.push_back(add_response_control(spec, c, d, out.tables));
   add_response_control_summary(spec, minima, out.tables);
   add_extracted(spec, out);
   return out;

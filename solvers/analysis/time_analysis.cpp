@@ -90,7 +90,7 @@ TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint:
   TimeLevel level;
   level.force = force;
   level.frequency_hz = frequencies;
-  level.amplitude = Eigen::MatrixXd::Constant(nf, nr, kNan);
+  level.amplitude = level.phase = Eigen::MatrixXd::Constant(nf, nr, kNan);
   if (tracked.pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
   friction::FrictionModel m = p.model;
   m.harmonic_load *= force;
@@ -151,7 +151,10 @@ bool store_first_harmonics(TimeLevel& level, Index i, const Eigen::MatrixXd& coe
   if (!coefficients.allFinite()) return false;
   Eigen::VectorXcd z(coefficients.rows());
   for (Index j = 0; j < z.size(); ++j) z[j] = std::complex<double>(coefficients(j, 1), -coefficients(j, 2));
-  for (Index r = 0; r < responses; ++r) level.amplitude(i, r) = std::abs(z[r]);
+  for (Index r = 0; r < responses; ++r) {
+    level.amplitude(i, r) = std::abs(z[r]);
+    level.phase(i, r) = std::arg(z[r]);
+  }
   if (const auto& pair = tracked.pair) {
     level.components(i, 0) = std::abs(z[pair->first] + z[pair->second]) / 2;
     level.components(i, 1) = std::abs(z[pair->second] - z[pair->first]) / 2;

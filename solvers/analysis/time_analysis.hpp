@@ -20,6 +20,7 @@ struct TimeLevel {
   double force = 0.0;  // amplitude of the first force [N]
   std::vector<double> frequency_hz;
   Eigen::MatrixXd amplitude;         // frequencies x responses, first harmonic [m]
+  Eigen::MatrixXd phase;             // the same harmonic's phase to the force, arg(a - i b) [rad]
   Eigen::MatrixXd components;        // frequencies x (IP, OOP) [m] when ip_oop is set
   std::vector<int> cycles;           // periods integrated per frequency
   std::vector<bool> steady;          // the cycle-to-cycle criterion was met (shooting: Newton converged)

@@ -40,6 +40,7 @@ std::vector<std::string> frf_columns(const PreparedHbm& p, const TimeSpec& spec,
                                      std::vector<std::string>& periodic_cols) {
   std::vector<std::string> frf_cols = {"point", "fe_n", "frequency_hz"};
   for (const std::string& r : p.response_names) frf_cols.push_back(r + "_amp_m");
+  for (const std::string& r : p.response_names) frf_cols.push_back(r + "_phase_deg");
   if (pair) frf_cols.insert(frf_cols.end(), {"ip_component_m", "oop_component_m"});
   frf_cols.insert(frf_cols.end(), {"cycles", "steady"});
   const bool shooting = spec.method == TimeSpec::Method::shooting;
@@ -142,6 +143,7 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
       std::vector<double> row = {static_cast<double>((l + 1) * 100000 + static_cast<size_t>(i) + 1), level.force,
                                  frequencies[static_cast<size_t>(i)]};
       for (Index r = 0; r < nr; ++r) row.push_back(level.amplitude(i, r));
+      for (Index r = 0; r < nr; ++r) row.push_back(level.phase(i, r) * kDegPerRad);
       if (pair) row.insert(row.end(), {level.components(i, 0), level.components(i, 1)});
       row.insert(row.end(), {static_cast<double>(level.cycles[static_cast<size_t>(i)]),
                              level.steady[static_cast<size_t>(i)] ? 1.0 : 0.0});
@@ -163,6 +165,7 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
         row.insert(row.end(), periodic.begin(), periodic.end());
         std::vector<double> own = {static_cast<double>(i + 1), frequencies[f]};
         for (Index r = 0; r < nr; ++r) own.push_back(level.amplitude(i, r));
+        for (Index r = 0; r < nr; ++r) own.push_back(level.phase(i, r) * kDegPerRad);
         own.insert(own.end(), periodic.begin(), periodic.end());
         level_rows.push_back(own);
       }
@@ -174,6 +177,7 @@ void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<do
     if (shooting) {
       std::vector<std::string> cols = {"point", "frequency_hz"};
       for (const std::string& r : p.response_names) cols.push_back(r + "_amp_m");
+      for (const std::string& r : p.response_names) cols.push_back(r + "_phase_deg");
       cols.insert(cols.end(), periodic_cols.begin(), periodic_cols.end());
       const std::string name = fmt::format("frf_{:g}", level.force);
       o.tables.emplace(name, table_from_rows(name, cols, level_rows));

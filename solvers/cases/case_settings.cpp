@@ -73,6 +73,23 @@ std::pair<toml::table*, std::string> holder(toml::table& root, const std::string
   return {table, parts.back()};
 }
 
+// An element of an array of values (analysis.model.frequency_hz.0 = 75.3): false when `key` does
+// not end in an index of one.
+bool set_array_element(toml::table& root, const std::string& key, const toml::node& value, const std::string& setting) {
+  const size_t dot = key.rfind('.');
+  if (dot == std::string::npos) return false;
+  const std::string index = key.substr(dot + 1);
+  if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos) return false;
+  const auto [table, last] = holder(root, key.substr(0, dot), "--set", setting);
+  toml::array* array = table->get(last) ? table->get(last)->as_array() : nullptr;
+  if (!array || array->is_array_of_tables()) return false;
+  if (index.size() > 6 || std::stoul(index) >= array->size())
+    fail("--set", setting,
+         fmt::format("'{}' is not an index of {} ({} element(s))", index, key.substr(0, dot), array->size()));
+  array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(std::stoul(index)), std::move(*without_source(value)));
+  return true;
+}
+
 }  // namespace
 
 void apply_settings(toml::table& root, const std::vector<std::string>& settings,
@@ -86,12 +103,14 @@ void apply_settings(toml::table& root, const std::vector<std::string>& settings,
     } catch (const toml::parse_error& e) {
       fail("--set", setting, fmt::format("the value is not TOML ({}); strings need quotes", e.description()));
     }
-    const auto [table, last] = holder(root, setting.substr(0, eq), "--set", setting);
+    const std::string key = setting.substr(0, eq);
     const toml::node* value = parsed.get("value");
     if (!value) fail("--set", setting, "no value");
     // More keys or tables after a newline would be dropped silently: one value or nothing.
     if (parsed.size() != 1)
       fail("--set", setting, "the value is more than one TOML value (keys or tables after it); give exactly one");
+    if (set_array_element(root, key, *value, setting)) continue;
+    const auto [table, last] = holder(root, key, "--set", setting);
     table->insert_or_assign(last, std::move(*without_source(*value)));
   }
   for (const std::string& key : removals) {

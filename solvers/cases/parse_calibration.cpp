@@ -50,7 +50,7 @@ KindColumns kind_columns(DataKind kind) {
     case DataKind::peaks:
       return {{"force"}, {"frequency", "amplitude"}};
     case DataKind::frf:
-      return {{"frequency", "amplitude"}, {"phase", "force"}};
+      return {{"frequency"}, {"amplitude", "phase", "force"}};
     case DataKind::hysteresis:
       return {{"relative_displacement", "tangential_force"}, {}};
   }
@@ -102,6 +102,10 @@ CalibrationData parse_data_block(const toml::table& t, const std::string& path,
                        "reads this file (e.g. force = \"force_n\" with table = \"frf_<name>\"), so each point is "
                        "compared with a solve at its own force",
                        file.string()));
+  // Phases alone count one residual per point; an amplitude column the file does not have cannot
+  // be mapped (above), so no placeholder amplitude doubles the count.
+  if (k == DataKind::frf && !d.columns.count("amplitude") && !d.columns.count("phase"))
+    r.fail("columns", "frf data need a result column for 'amplitude', 'phase' or both");
   if (k == DataKind::peaks && !d.columns.count("frequency") && !d.columns.count("amplitude"))
     r.fail("columns", "peaks data need 'frequency', 'amplitude' or both");
   if (r.has("amplitude_uncertainty")) d.amplitude_uncertainty = r.positive("amplitude_uncertainty");
@@ -150,8 +154,8 @@ void check_peaks_in_band(const TomlReader& r, const CalibrationData& d, const Ca
 
 // [calibration.sampler]: walkers even and at least twice the parameters (the stretch move moves one
 // half of the ensemble along lines to the other).
-CalibrationSpec::Sampler parse_sampler(const toml::table& t, const std::string& path,
-                                       const std::filesystem::path& file, const CalibrationSpec& c) {
+CalibrationSpec::Sampler parse_sampler(const toml::table& t, const std::string& path, const std::filesystem::path& file,
+                                       const CalibrationSpec& c) {
   TomlReader s(t, path, file);
   CalibrationSpec::Sampler out;
   const long parameters = static_cast<long>(c.parameters.size());

@@ -38,7 +38,7 @@ std::shared_ptr<const friction::SliderDistribution> parse_iwan(TomlReader& r, co
 std::shared_ptr<const friction::FrictionLaw> parse_clearance_spring(TomlReader& r,
                                                                     std::shared_ptr<const friction::FrictionLaw> law,
                                                                     const std::string& name) {
-  const char* given = r.has("gap") ? "gap" : "k_gap";
+  const char* given = r.has("gap") ? "gap" : r.has("k_gap") ? "k_gap" : r.has("gap_max") ? "gap_max" : "gap_springs";
   if (name != "jenkins" && name != "iwan")
     r.fail(given,
            fmt::format("a clearance spring (gap, k_gap) sits beside a Masing law (jenkins or iwan), not {}", name));
@@ -48,6 +48,14 @@ std::shared_ptr<const friction::FrictionLaw> parse_clearance_spring(TomlReader& 
   friction::ClearanceSpring spring;
   spring.gap = r.positive("gap");
   spring.stiffness = r.non_negative("k_gap", 0.0);
+  if (r.has("gap_springs") && !r.has("gap_max"))
+    r.fail("gap_springs", "spreads the springs' gaps from gap to gap_max: give gap_max too");
+  if (r.has("gap_max")) {
+    spring.gap_max = r.positive("gap_max");
+    if (!(spring.gap_max > spring.gap))
+      r.fail("gap_max", fmt::format("must lie above the gap ({:g} m), found {:g} m", spring.gap, spring.gap_max));
+    spring.springs = static_cast<int>(r.optional_integer("gap_springs", 2, 1000).value_or(16));
+  }
   return friction::with_clearance_spring(std::move(law), spring);
 }
 
@@ -60,7 +68,8 @@ ContactLaw parse_contact_law(TomlReader& r, const friction::PointParameters& poi
   if (law == "iwan") out.distribution = parse_iwan(r, point);
   if (law == "coulomb") out.law = friction::coulomb_law();
   if (law == "coupled_slip") out.law = friction::coupled_slip_law();
-  if (r.has("gap") || r.has("k_gap")) out.law = parse_clearance_spring(r, out.law, law);
+  if (r.has("gap") || r.has("k_gap") || r.has("gap_max") || r.has("gap_springs"))
+    out.law = parse_clearance_spring(r, out.law, law);
   return out;
 }
 

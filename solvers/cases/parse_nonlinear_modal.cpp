@@ -78,11 +78,16 @@ std::vector<BackboneCurve> parse_extract(TomlReader& r, const std::filesystem::p
     c.at = e.location();
     const std::filesystem::path file = e.input_file("file", folder);
     const MeasuredData data = read_measured_file(e, file, DataKind::frf).data;
+    if (!data.has("amplitude"))
+      e.fail("file", fmt::format("{} has no amplitude column: a backbone point is read from the amplitudes a "
+                                 "response-controlled curve held",
+                                 file.string()));
     if (!data.has("force"))
       e.fail("file", fmt::format("{} has no 'force [<unit>]' column: a response-controlled curve gives the force that "
                                  "held the amplitude",
                                  file.string()));
-    if (data.rows() < 5) e.fail("file", fmt::format("{} has {} points; a backbone point needs 5", file.string(), data.rows()));
+    if (data.rows() < 5)
+      e.fail("file", fmt::format("{} has {} points; a backbone point needs 5", file.string(), data.rows()));
     c.file = file.string();
     c.name = e.optional_label("name").value_or(file.stem().string());
     const auto copy = [&](const char* column) {

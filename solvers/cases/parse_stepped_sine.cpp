@@ -104,6 +104,10 @@ void control_from_file(TomlReader& r, const std::filesystem::path& folder, Respo
     r.fail("frequency_hz", "give either file (a measured response-controlled curve) or frequency_hz");
   const std::filesystem::path file = r.input_file("file", folder);
   const MeasuredData data = read_measured_file(r, file, DataKind::frf).data;
+  if (!data.has("amplitude"))
+    r.fail("file", fmt::format("{} has no amplitude column: a response-controlled curve's level is the median of its "
+                               "amplitudes",
+                               file.string()));
   const double tolerance = r.has("level_tolerance") ? r.positive("level_tolerance") : 0.05;
   if (!(tolerance < 1.0)) r.fail("level_tolerance", fmt::format("must lie in (0, 1), found {}", tolerance));
   const int k = data.derivative;

@@ -15,7 +15,10 @@ struct MeasuredFile {
   std::optional<long> dataset;  // the Universal File's response record, when picked
 };
 
-// Reads `file` as data of `kind`, with the block's keys `dataset` and `force_dataset`. Throws
+// Reads `file` as data of `kind`, with the block's keys `dataset` and `force_dataset`,
+// `natural_frequency_hz` (the natural frequency a frequency column of ratios is relative to) and
+// `phase_of` (what a frf file of phases alone, without an amplitude column, holds the phase of:
+// "displacement", "velocity" or "acceleration"; required there, refused elsewhere). Throws
 // InputError with file:line:key (then the file's own error) for a file that does not read, a
 // dataset key on a CSV file or on data other than frf, a dataset beyond the file's, a force_dataset
 // without dataset or equal to it, or records that do not pair.

@@ -19,12 +19,6 @@ namespace {
 
 using Eigen::Index;
 using Complex = std::complex<double>;
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-// The displacement amplitude that holds `amplitude` in the controlled quantity at omega.
-double held_displacement(const ResponseControlSpec& c, double omega) {
-  return c.amplitude / std::pow(omega, c.derivative);
-}
 
 // Every DOF's harmonics at the force F (the unit system's recovery is linear in the harmonic load).
 Eigen::MatrixXd recover_at(const hbm::HarmonicBalance& unit, const Eigen::VectorXd& x, double omega, Complex force) {
@@ -45,7 +39,7 @@ struct Solver {
 
   hbm::ControlledSolution at(double hz, const std::optional<hbm::ControlledStart>& start) const {
     const double omega = kTwoPi * hz;
-    return hbm::solve_controlled(unit, omega, {p.responses[c.response], held_displacement(c, omega)}, start);
+    return hbm::solve_controlled(unit, omega, {p.responses[c.response], c.held_displacement(omega)}, start);
   }
 };
 
@@ -72,7 +66,7 @@ void refine_minimum(const Solver& solver, double a, double b, const hbm::Control
   if (!s.solution.converged || !(std::abs(s.force) <= out.min_force)) return;  // keep the grid's smallest
   out.min_force = std::abs(s.force);
   out.min_frequency_hz = hz;
-  out.min_phase_deg = -std::arg(s.force) * kDeg;
+  out.min_phase_deg = -std::arg(s.force) * kDegPerRad;
   out.min_interior = true;
 }
 
@@ -106,9 +100,9 @@ HbmControlled run_response_control(const PreparedHbm& p, const HbmSpec& spec, co
     const Index row = static_cast<Index>(out.frequency_hz.size());
     out.point.push_back(i);
     out.frequency_hz.push_back(hz);
-    out.held_m.push_back(held_displacement(c, omega));
+    out.held_m.push_back(c.held_displacement(omega));
     out.force.push_back(std::abs(s.force));
-    out.force_phase_deg.push_back(std::arg(s.force) * kDeg);
+    out.force_phase_deg.push_back(std::arg(s.force) * kDegPerRad);
     out.residual.push_back(s.solution.residual);
     out.iterations.push_back(s.solution.iterations);
     write_response_row(p, recover_at(unit, s.solution.x, omega, s.force), s.force, row, out.amplitude, out.phase_deg,

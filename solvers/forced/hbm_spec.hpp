@@ -5,6 +5,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -163,6 +164,9 @@ struct ResponseControlSpec {
   // smallest and largest values lie at spread_low, spread_high relative to it; file empty otherwise.
   std::string file;
   double spread_low = 0.0, spread_high = 0.0;
+
+  // The displacement amplitude that holds `amplitude` in the controlled quantity at omega [rad/s].
+  double held_displacement(double omega) const { return amplitude / std::pow(omega, derivative); }
 };
 
 struct HbmSpec {

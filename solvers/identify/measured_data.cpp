@@ -57,13 +57,14 @@ std::pair<int, Dimension> response_derivative(Dimension d) {
 }
 
 const std::vector<ColumnSpec>& column_specs(DataKind kind) {
-  static const std::vector<ColumnSpec> peaks = {{"force", {force}, true},
-                                                {"frequency", {frequency}, true},
-                                                {"amplitude", response_dims(), true, true},
-                                                {"amplitude_sigma", response_dims(), false, true, "amplitude"},
-                                                {"frequency_sigma", {frequency}, false, true, "frequency"}};
-  static const std::vector<ColumnSpec> frf = {{"frequency", {frequency}, true},
-                                              {"amplitude", response_dims(), true, true},
+  static const std::vector<ColumnSpec> peaks = {
+      {"force", {force}, true},
+      {"frequency", {frequency, dimensionless}, true},
+      {"amplitude", response_dims(), true, true},
+      {"amplitude_sigma", response_dims(), false, true, "amplitude"},
+      {"frequency_sigma", {frequency, dimensionless}, false, true, "frequency"}};
+  static const std::vector<ColumnSpec> frf = {{"frequency", {frequency, dimensionless}, true},
+                                              {"amplitude", response_dims(), false, true},
                                               {"phase", {angle}},
                                               {"force", {force}, false, true},
                                               {"force_phase", {angle}},
@@ -243,7 +244,7 @@ std::string MeasuredData::where(Eigen::Index row) const {
   return fmt::format("{}:{}", file.string(), lines.at(static_cast<size_t>(row)));
 }
 
-MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
+MeasuredData read_measured_data(const fs::path& file, DataKind kind, const MeasuredReadOptions& options) {
   const std::string fname = file.string();
   if (is_universal_file(file)) {
     if (kind != DataKind::frf)
@@ -303,6 +304,16 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
     if (s.required && !find(s.name))
       throw fail(header_line, fmt::format("missing column '{} [<{} unit>]'; the file has: {}", s.name,
                                           dims_text(s.dims), join_names(names)));
+  if (kind == DataKind::frf && !find("amplitude") && !find("phase"))
+    throw fail(header_line, fmt::format("missing column 'amplitude [<{} unit>]' (or 'phase [<angle unit>]' for a "
+                                        "curve of phases alone); the file has: {}",
+                                        dims_text(response_dims()), join_names(names)));
+  const bool ratios = kind != DataKind::hysteresis && find("frequency")->unit.dimension == dimensionless;
+  if (ratios && !options.natural_frequency_hz)
+    throw fail(header_line,
+               fmt::format("column 'frequency' holds ratios ('{}'): give the natural frequency they are ratios to "
+                           "(natural_frequency_hz in the case block that names the file)",
+                           find("frequency")->unit.symbol));
   for (const auto& c : cols) {
     if (!c.spec->sigma_of) continue;
     const Column* of = find(c.spec->sigma_of);
@@ -364,9 +375,23 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind) {
         Eigen::Map<const Eigen::VectorXd>(c.written.data(), static_cast<Eigen::Index>(n)) * c.unit.to_si;
     data.units[c.name] = c.unit;
   }
+  if (ratios) {
+    for (const char* name : {"frequency", "frequency_sigma"}) {
+      if (!data.has(name)) continue;
+      data.columns[name] *= *options.natural_frequency_hz;
+      data.units[name].dimension = frequency;
+    }
+    data.frequency_ratio = true;
+  }
   if (kind != DataKind::hysteresis) amplitude_to_displacement(data);
   if (data.has("force_phase")) phase_to_force(data);
   return data;
+}
+
+void phase_to_displacement(MeasuredData& data, int derivative) {
+  data.derivative = derivative;
+  if (data.has("phase"))
+    for (double& phase : data.columns["phase"]) phase = wrapped_phase(phase - derivative * 0.5 * std::numbers::pi);
 }
 
 void phase_to_force(MeasuredData& data) {
@@ -376,6 +401,7 @@ void phase_to_force(MeasuredData& data) {
 }
 
 void amplitude_to_displacement(MeasuredData& data) {
+  if (!data.has("amplitude")) return;  // phases alone: the case says what they are of
   const auto [k, displacement] = response_derivative(data.units.at("amplitude").dimension);
   data.derivative = k;
   if (k == 0) return;
@@ -385,8 +411,7 @@ void amplitude_to_displacement(MeasuredData& data) {
     data.columns[name] = (data.columns[name].array() / w.pow(k)).matrix();
     data.units[name].dimension = displacement;
   }
-  if (data.has("phase"))
-    for (double& phase : data.columns["phase"]) phase = wrapped_phase(phase - k * 0.5 * std::numbers::pi);
+  phase_to_displacement(data, k);
 }
 
 }  // namespace bb

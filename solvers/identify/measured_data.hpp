@@ -7,7 +7,7 @@
 //   peaks       force [force], frequency [frequency], amplitude [length or compliance],
 //               optional amplitude_sigma, frequency_sigma (same dimension as their column).
 //               One row per force level; levels must be distinct.
-//   frf         frequency [frequency], amplitude [length or compliance], optional phase [angle],
+//   frf         frequency [frequency], amplitude [length or compliance] and/or phase [angle],
 //               amplitude_sigma, phase_sigma, force [force] (the force amplitude each point was
 //               measured at: a force-controlled rig's drifts; a response-controlled rig's is the
 //               measurement, with force_sigma) and force_phase [angle] (the force's
@@ -21,6 +21,10 @@
 // with w = 2 pi f, and the phase moved by -90 or -180 degrees (v = i w x, a = -w^2 x for
 // x e^{i w t}; wrapped to (-180, 180]), so the data hold displacement (or compliance) as the model
 // computes it. MeasuredData::derivative says which.
+// A frf file of phases alone (no amplitude column) keeps them as written: what they are the phase
+// of (displacement, velocity or acceleration) is the case's to say (phase_to_displacement).
+// Frequencies may be ratios to a natural frequency (unit "-" or "1"; frequency_sigma alike): the
+// reader then needs MeasuredReadOptions::natural_frequency_hz and holds them in Hz.
 // A sigma column needs its column (phase_sigma needs phase; force_sigma's is tangential_force) and
 // must have the same dimension as it. peaks and frf need at least one row.
 // Every cell must be a finite number; amplitudes and sigmas must be positive.
@@ -89,6 +93,8 @@ struct MeasuredData {
   // The time derivative the file's amplitude held (0 displacement, 1 velocity, 2 acceleration),
   // converted on reading; units keeps the symbol as written, with the displacement's dimension.
   int derivative = 0;
+  // The frequency column was written as ratios to MeasuredReadOptions::natural_frequency_hz.
+  bool frequency_ratio = false;
 
   Eigen::Index rows() const { return static_cast<Eigen::Index>(lines.size()); }
   bool has(const std::string& column) const { return columns.count(column) > 0; }
@@ -102,12 +108,22 @@ struct MeasuredData {
 // many cells, an empty, non-numeric, NaN or infinite cell, a non-positive amplitude or sigma,
 // frequencies neither strictly increasing nor strictly decreasing (frf), force_phase without force
 // and phase (frf), repeated force levels (peaks), too few rows.
-MeasuredData read_measured_data(const std::filesystem::path& file, DataKind kind);
+struct MeasuredReadOptions {
+  // The natural frequency [Hz] a frequency column of ratios is relative to; a file of ratios
+  // without it is refused.
+  std::optional<double> natural_frequency_hz;
+};
+MeasuredData read_measured_data(const std::filesystem::path& file, DataKind kind,
+                                const MeasuredReadOptions& options = {});
 
 // A velocity or acceleration amplitude (by units["amplitude"]) and its sigma divided by w^k row by
 // row, the phase moved by -k 90 degrees, the unit's dimension set to the displacement's; sets
 // `derivative`. Nothing for a displacement. The CSV and Universal File readers call it.
 void amplitude_to_displacement(MeasuredData& data);
+// The phase of a frf file of phases alone, given as the phase of the `derivative`-th time
+// derivative (0 displacement, 1 velocity, 2 acceleration), moved by -derivative 90 degrees to the
+// displacement's; sets `derivative`.
+void phase_to_displacement(MeasuredData& data, int derivative);
 
 // The column phase made the response's phase to the force: phase - force_phase, wrapped to
 // (-pi, pi], as the model computes it. The CSV reader (a force_phase column) and the Universal

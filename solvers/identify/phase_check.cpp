@@ -9,12 +9,11 @@
 #include <utility>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "common/errors.hpp"
 
 namespace bb {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 double wrap(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
 
@@ -93,24 +92,26 @@ std::vector<std::string> check_measured_phases(const CalibrationSpec& cal, const
     const auto best = std::min_element(alternatives.begin(), alternatives.end());
     const std::string where = fmt::format("{}: calibration data '{}': column '{}' of {}", d.at.where(), d.name,
                                           column_of(d), d.data.file.string());
-    if (data.span >= 90.0 * kDeg && given >= 45.0 * kDeg && best->first <= given / 3.0)
+    if (data.span >= 90.0 * kRadPerDeg && given >= 45.0 * kRadPerDeg && best->first <= given / 3.0)
       throw InputError(fmt::format(
           "{} is {}: the measured phase lies {:.0f} deg from the model's at the start (rms of {} points), {:.0f} "
           "deg once corrected; correct the file's phase",
-          where, best->second, given / kDeg, phase.size(), best->first / kDeg));
+          where, best->second, given / kRadPerDeg, phase.size(), best->first / kRadPerDeg));
     const double n = static_cast<double>(phase.size());
     const double mean = std::atan2(s / n, c / n), length = std::hypot(s / n, c / n);
-    if (std::abs(mean) >= 150.0 * kDeg && length >= 0.8)
+    if (std::abs(mean) >= 150.0 * kRadPerDeg && length >= 0.8)
       warnings.push_back(fmt::format(
           "{}: at the start the measured phase lies {:.0f} deg from the model's at every point (mean), and it changes "
           "by {:.0f} deg only over the curve: the start may be far from the data's resonance, or the phase is 180 "
           "deg off ({})",
-          where, mean / kDeg, data.span / kDeg, shift_cause(d)));
-    else if (data.net * model.net < 0.0 && std::abs(data.net) >= 90.0 * kDeg && std::abs(model.net) >= 90.0 * kDeg)
+          where, mean / kRadPerDeg, data.span / kRadPerDeg, shift_cause(d)));
+    else if (data.net * model.net < 0.0 && std::abs(data.net) >= 90.0 * kRadPerDeg &&
+             std::abs(model.net) >= 90.0 * kRadPerDeg)
       warnings.push_back(fmt::format(
           "{}: the measured phase {} by {:.0f} deg over the curve where the model's {} by {:.0f} deg at the start: "
           "is the lag of the opposite sign?",
-          where, direction(data.net), std::abs(data.net) / kDeg, direction(model.net), std::abs(model.net) / kDeg));
+          where, direction(data.net), std::abs(data.net) / kRadPerDeg, direction(model.net),
+          std::abs(model.net) / kRadPerDeg));
   }
   return warnings;
 }

@@ -217,12 +217,12 @@ void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_f
       const FitPoint& a = o.after[k];
       const double u = a.display_scale(), half = z * std::hypot(a.band, a.sigma),
                    sampled = z * std::hypot(a.sampled_band, a.sigma);
-      out << fmt::format("\"{}\",\"{}\",{},{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g},{},{:.6g},{:.10g},{:."
-                         "10g},{:.6g},{:.10g},{:.10g}\n",
-                         a.set, a.label, a.quantity, a.unit, a.x, a.measured * u, a.sigma * u, o.before[k].computed * u,
-                         o.before[k].residual(), a.computed * u, a.residual(), a.held_out ? 1 : 0, a.band * u,
-                         (a.computed - half) * u, (a.computed + half) * u, a.sampled_band * u,
-                         (a.computed - sampled) * u, (a.computed + sampled) * u);
+      out << fmt::format(
+          "\"{}\",\"{}\",{},{},{:.10g},{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g},{},{:.6g},{:.10g},{:."
+          "10g},{:.6g},{:.10g},{:.10g}\n",
+          a.set, a.label, a.quantity, a.unit, a.x, a.measured * u, a.sigma * u, o.before[k].computed * u,
+          o.before[k].residual(), a.computed * u, a.residual(), a.held_out ? 1 : 0, a.band * u, (a.computed - half) * u,
+          (a.computed + half) * u, a.sampled_band * u, (a.computed - sampled) * u, (a.computed + sampled) * u);
     }
   }
 }
@@ -246,12 +246,13 @@ void write_band_summary(const CalibrationOutcome& o, std::ostream& md) {
   std::vector<FitPoint> sampled = o.after;
   for (FitPoint& q : sampled) q.band = q.sampled_band;
   const BandCoverage sh = band_coverage(sampled, true, o.spec.band_level);
-  md << fmt::format("Posterior sampled (affine-invariant ensemble, {} walkers x {} steps, {} kept, {} model runs, "
-                    "{:.1f} s): acceptance {:.3f}, autocorrelation times {:.3g} steps; its {:g} % interval holds {} of "
-                    "{} held-out points (columns sampled_band_*, from {} samples).{}\n\n",
-                    p.walkers, p.steps, p.kept_steps, p.evaluations, p.seconds, p.acceptance,
-                    fmt::join(p.autocorrelation_steps, ", "), level, sh.covered, sh.points, p.predictions,
-                    p.warning.empty() ? "" : " **" + p.warning + "**");
+  md << fmt::format(
+      "Posterior sampled (affine-invariant ensemble, {} walkers x {} steps, {} kept, {} model runs, "
+      "{:.1f} s): acceptance {:.3f}, autocorrelation times {:.3g} steps; its {:g} % interval holds {} of "
+      "{} held-out points (columns sampled_band_*, from {} samples).{}\n\n",
+      p.walkers, p.steps, p.kept_steps, p.evaluations, p.seconds, p.acceptance,
+      fmt::join(p.autocorrelation_steps, ", "), level, sh.covered, sh.points, p.predictions,
+      p.warning.empty() ? "" : " **" + p.warning + "**");
   md << "| parameter | identified | linearised sigma | posterior mean | posterior sigma |\n|---|---|---|---|---|\n";
   for (size_t i = 0; i < o.values.size() && i < p.mean.size(); ++i)
     md << fmt::format("| `{}` | {:.6g} | {:.3g} | {:.6g} | {:.3g} |\n", o.spec.parameters[i].path, o.values[i],
@@ -310,8 +311,10 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     md << fmt::format(
         "Data set `{}`: {} file `{}` ({} rows), {} table `{}`{}.\n\n", d.name, data_kind_name(d.data.kind),
         d.data.file.filename().string(), d.data.rows(), d.held_out ? "held out, predicted by" : "fitted to", d.table,
-        d.data.derivative == 0
-            ? std::string()
+        d.data.derivative == 0 ? std::string()
+        : !d.data.has("amplitude")
+            ? fmt::format("; its phases, of the {}, moved by -{} deg to the displacement's",
+                          d.data.derivative == 1 ? "velocity" : "acceleration", 90 * d.data.derivative)
             : fmt::format("; its {} amplitudes (in {}) read as displacement, each row divided by "
                           "(2 pi f)^{} and its phase moved by -{} deg",
                           d.data.derivative == 1 ? "velocity" : "acceleration", d.data.units.at("amplitude").symbol,

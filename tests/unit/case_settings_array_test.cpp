@@ -15,6 +15,8 @@ toml::table contacts() {
   return toml::parse(R"(
 [analysis]
 type = "hbm"
+[analysis.model]
+frequency_hz = [78.6, 120.0]
 [[analysis.contact]]
 kt = 1e5
 mu = 0.5
@@ -52,6 +54,17 @@ TEST(CaseSettingsArrays, RefusesAnIndexOutsideTheArrayOrAPathThatNamesNoElementK
             std::string::npos);
   EXPECT_NE(refusal({"analysis.contact.0=1"}).find("array of tables: name an element's key"), std::string::npos);
   EXPECT_NE(refusal({}, {"analysis.contact.0.chi"}).find("--unset 'analysis.contact.0.chi': the case has no such key"),
+            std::string::npos);
+}
+
+// An element of an array of values, the way calibration names it (analysis.model.frequency_hz.0).
+TEST(CaseSettingsArrays, SetsAnElementOfAnArrayOfValuesByIndex) {
+  toml::table t = contacts();
+  apply_settings(t, {"analysis.model.frequency_hz.1=121.5"}, {});
+  EXPECT_EQ(t["analysis"]["model"]["frequency_hz"][0].value<double>(), 78.6);
+  EXPECT_EQ(t["analysis"]["model"]["frequency_hz"][1].value<double>(), 121.5);
+  EXPECT_NE(refusal({"analysis.model.frequency_hz.2=1"})
+                .find("'2' is not an index of analysis.model.frequency_hz (2 element(s))"),
             std::string::npos);
 }
 

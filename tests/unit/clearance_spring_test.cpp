@@ -79,6 +79,39 @@ TEST(ClearanceSpring, FirstHarmonicIsTheDeadZonesDescribingFunctionAndItDissipat
   }
 }
 
+// A spread of springs: log-spaced gaps sharing k_gap; the describing function is their sum, and the
+// AFT integrates each exactly. A spread smooths the stiffening one gap would put at one amplitude.
+TEST(ClearanceSpring, ASpreadOfGapsIsTheSumOfItsSprings) {
+  const ClearanceSpring spread{.gap = 1e-5, .stiffness = 8e5, .gap_max = 1e-3, .springs = 5};
+  const std::vector<SpringShare> shares = clearance_springs(spread);
+  ASSERT_EQ(shares.size(), 5u);
+  EXPECT_EQ(shares.front().gap, 1e-5);
+  EXPECT_NEAR(shares[1].gap, std::sqrt(1e-5 * 1e-4), 1e-18);  // half-decades apart
+  EXPECT_NEAR(shares[2].gap, 1e-4, 1e-18);
+  EXPECT_NEAR(shares.back().gap, 1e-3, 1e-18);
+  double k1 = 0.0;
+  for (const SpringShare& k : shares) {
+    EXPECT_EQ(k.stiffness, 1.6e5);
+    k1 += clearance_describing_stiffness({k.gap, k.stiffness}, 3e-4);
+  }
+  EXPECT_NEAR(clearance_describing_stiffness(spread, 3e-4), k1, 1e-9);
+  // At 2e-4 m the first three springs are engaged.
+  EXPECT_NEAR(clearance_force(spread, 2e-4),
+              1.6e5 * ((2e-4 - shares[0].gap) + (2e-4 - shares[1].gap) + (2e-4 - shares[2].gap)), 1e-12);
+  EXPECT_EQ(clearance_slope(spread, -2e-4), 4.8e5);
+  const auto law = with_clearance_spring(jenkins_law(), spread);
+  EXPECT_EQ(law->parameter_names(), (std::vector<std::string>{"gap", "gap_max", "k_gap"}));
+  PointParameters free = kPoint;
+  free.mu = 0.0;
+  const AftResult r = law->harmonics(free, cosine(2, 3e-4), Eigen::VectorXd::Zero(5), options(64));
+  EXPECT_NEAR(r.tangential[1] / 3e-4, k1, 1e-9 * 8e5);
+  EXPECT_THROW(law->with_parameter("gap_max", 1e-6), std::invalid_argument);  // below the gap
+  EXPECT_THROW(validate(ClearanceSpring{.gap = 1e-5, .stiffness = 1.0, .gap_max = 0.0, .springs = 3}),
+               std::invalid_argument);
+  EXPECT_THROW(validate(ClearanceSpring{.gap = 1e-5, .stiffness = 1.0, .gap_max = 2e-5, .springs = 1}),
+               std::invalid_argument);
+}
+
 // Where the kinks fall between samples, sampling would add a quadrature term; the exact pieces
 // do not, at any phase of the motion.
 TEST(ClearanceSpring, NoSpuriousQuadratureAtAnyPhase) {

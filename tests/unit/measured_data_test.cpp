@@ -192,6 +192,46 @@ TEST_F(MeasuredDataFile, VelocityAndAccelerationAreReadAsTheDisplacementTheyImpl
   EXPECT_NEAR(wrapped.column("phase")(1), 0.0, 1e-14);
 }
 
+// A rig's phase-only curve (no amplitude column): the phases are kept as written until the case
+// says what they are of; then an acceleration's phase is moved by -180 degrees like any other.
+TEST_F(MeasuredDataFile, PhasesAloneAreReadAndMovedOnlyWhenTheCaseSaysWhatTheyAreOf) {
+  const auto file = write("frequency [Hz], phase [deg], phase_sigma [deg]\n80, 150, 1\n90, 120, 1\n", "phase.csv");
+  MeasuredData d = read_measured_data(file, DataKind::frf);
+  EXPECT_FALSE(d.has("amplitude"));
+  EXPECT_EQ(d.derivative, 0);
+  EXPECT_NEAR(d.column("phase")(0), 150.0 * pi / 180.0, 1e-14);
+  phase_to_displacement(d, 2);
+  EXPECT_EQ(d.derivative, 2);
+  EXPECT_NEAR(d.column("phase")(0), -30.0 * pi / 180.0, 1e-14);
+  EXPECT_NEAR(d.column("phase")(1), -60.0 * pi / 180.0, 1e-14);
+  // Neither an amplitude nor a phase: nothing to compare.
+  expect_contains(refusal(write("frequency [Hz], force [N]\n80, 1\n", "none.csv"), DataKind::frf),
+                  {"none.csv:1: missing column 'amplitude", "or 'phase [<angle unit>]' for a curve of phases alone"});
+}
+
+// Frequencies as ratios to a stated natural frequency: held in Hz (their sigma alike), and the
+// velocity or acceleration each row converts through is at that frequency.
+TEST_F(MeasuredDataFile, FrequencyRatiosAreReadInHertzThroughTheStatedNaturalFrequency) {
+  const auto file = write("frequency [-], amplitude [m/s], phase [deg]\n0.5, 1, 0\n1.5, 1, 0\n", "ratio.csv");
+  expect_contains(refusal(file, DataKind::frf),
+                  {"ratio.csv:1: column 'frequency' holds ratios ('-'): give the natural frequency"});
+  const MeasuredData d = read_measured_data(file, DataKind::frf, {.natural_frequency_hz = 100.0});
+  EXPECT_TRUE(d.frequency_ratio);
+  EXPECT_EQ(d.units.at("frequency").dimension, Dimension::frequency);
+  EXPECT_DOUBLE_EQ(d.column("frequency")(0), 50.0);
+  EXPECT_DOUBLE_EQ(d.column("frequency")(1), 150.0);
+  EXPECT_NEAR(d.column("amplitude")(0), 1.0 / (2.0 * pi * 50.0), 1e-15);
+  const MeasuredData peaks = read_measured_data(
+      write("force [N], frequency [1], amplitude [m], frequency_sigma [-]\n1, 0.98, 1e-5, 0.01\n", "peaks_ratio.csv"),
+      DataKind::peaks, {.natural_frequency_hz = 200.0});
+  EXPECT_DOUBLE_EQ(peaks.column("frequency")(0), 196.0);
+  EXPECT_DOUBLE_EQ(peaks.column("frequency_sigma")(0), 2.0);
+  const MeasuredData hz = read_measured_data(write("frequency [Hz], amplitude [m]\n5, 1\n", "hz.csv"), DataKind::frf,
+                                             {.natural_frequency_hz = 100.0});
+  EXPECT_FALSE(hz.frequency_ratio);
+  EXPECT_DOUBLE_EQ(hz.column("frequency")(0), 5.0);
+}
+
 TEST_F(MeasuredDataFile, AnAccelerationWithADisplacementSigmaIsRefused) {
   expect_contains(
       refusal(write("frequency [Hz], amplitude [g], amplitude_sigma [um]\n10, 1, 1\n", "mixed.csv"), DataKind::frf),
@@ -293,7 +333,7 @@ TEST_F(MeasuredDataFile, UnitOfTheWrongDimensionIsRefused) {
                   {"rig.csv:3: column 'amplitude' has unit 'N' (force); it needs a length, compliance, velocity, "
                    "acceleration, mobility or accelerance unit"});
   expect_contains(refusal(write("frequency [deg], amplitude [m]\n1, 1\n", "rig.csv"), DataKind::frf),
-                  {"rig.csv:1: column 'frequency' has unit 'deg' (angle); it needs a frequency unit"});
+                  {"rig.csv:1: column 'frequency' has unit 'deg' (angle); it needs a frequency or dimensionless unit"});
   expect_contains(
       refusal(write("relative_displacement [um/N], tangential_force [N]\n1, 1\n", "loop.csv"), DataKind::hysteresis),
       {"loop.csv:1: column 'relative_displacement' has unit 'um/N' (compliance); it needs a length unit"});

@@ -64,18 +64,27 @@ SteppedSineSpec parse_one(TomlReader& r, const toml::table& t, const std::filesy
     r.fail("name", fmt::format("'{}': use letters, digits, '_', '.' and '-' (it names the table frf_<name>)", s.name));
   if (r.has("file") == r.has("frequency_hz"))
     r.fail(r.has("file") ? "frequency_hz" : "file",
-           "give either file (a measured frf file with a force column) or frequency_hz with force");
+           "give either file (a measured frf file, with a force column or force) or frequency_hz with force");
   if (r.has("file")) {
     const std::filesystem::path file = r.input_file("file", folder);
-    const MeasuredData data = read_measured_file(r, file, DataKind::frf).data;
-    if (!data.has("force"))
-      r.fail("file", fmt::format("{} has no 'force [<unit>]' column: a stepped sine needs the force of each point",
-                                 file.string()));
+    const MeasuredData data = read_measured_file(r, file, DataKind::frf, false).data;
     const Eigen::VectorXd& f = data.column("frequency");
-    const Eigen::VectorXd& force = data.column("force");
     s.frequency_hz.assign(f.data(), f.data() + f.size());
-    s.force.assign(force.data(), force.data() + force.size());
     s.file = file.string();
+    // A rig that held one force writes none per point: the case states it.
+    if (data.has("force")) {
+      if (r.has("force"))
+        r.fail("force",
+               fmt::format("{} gives the force of each point: leave out force (or the file's column)", file.string()));
+      const Eigen::VectorXd& force = data.column("force");
+      s.force.assign(force.data(), force.data() + force.size());
+      return s;
+    }
+    if (!r.has("force"))
+      r.fail("file", fmt::format("{} has no 'force [<unit>]' column: give the force the rig held, force = <N>, or "
+                                 "a force per point in the file",
+                                 file.string()));
+    s.force.assign(s.frequency_hz.size(), r.positive("force"));
     return s;
   }
   s.frequency_hz = stepped_frequencies(r);

@@ -33,7 +33,7 @@ void phases_alone(TomlReader& r, const std::filesystem::path& file, MeasuredData
 
 }  // namespace
 
-MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file, DataKind kind) {
+MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file, DataKind kind, bool phases_read) {
   MeasuredFile out;
   // A Universal File may hold several levels, one dataset 58 each.
   const std::optional<long> dataset = r.optional_integer("dataset", 1, INT_MAX);
@@ -66,7 +66,7 @@ MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file
       r.fail("natural_frequency_hz", fmt::format("{}'s frequency column is in {}, not ratios ('-'): leave out "
                                                  "natural_frequency_hz",
                                                  file.string(), out.data.units.at("frequency").symbol));
-    phases_alone(r, file, out.data);
+    if (phases_read || r.has("phase_of")) phases_alone(r, file, out.data);
     return out;
   }
   const auto within_file = [&](const char* key, long index) {

@@ -22,6 +22,9 @@ struct MeasuredFile {
 // InputError with file:line:key (then the file's own error) for a file that does not read, a
 // dataset key on a CSV file or on data other than frf, a dataset beyond the file's, a force_dataset
 // without dataset or equal to it, or records that do not pair.
-MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file, DataKind kind);
+// `phases_read`: the block uses the file's phases (a stepped sine reads only its frequencies and
+// forces, so phases alone need no phase_of there).
+MeasuredFile read_measured_file(TomlReader& r, const std::filesystem::path& file, DataKind kind,
+                                bool phases_read = true);
 
 }  // namespace bb

@@ -1,8 +1,8 @@
 # `compare-models` on the decoupled joint: exit 0 (every fit converged), and the model named in
 # FIRST ranked first in ranking.csv (it predicts the held-out curves best). Arguments: BIN, OUT,
-# FIRST, CASES (a ;-list).
+# FIRST, CASES (a ;-list), optional FLAGS (a ;-list of compare-models options, e.g. --leave-one-out).
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${BIN} compare-models ${CASES} --no-plots --out ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+execute_process(COMMAND ${BIN} compare-models ${CASES} ${FLAGS} --no-plots --out ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "expected exit 0, got ${rc}:\n${out}${err}")

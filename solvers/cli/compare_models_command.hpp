@@ -14,6 +14,7 @@ struct CompareModelsArgs {
   std::vector<std::string> cases;
   std::string out = "reports/model-comparison";
   bool no_plots = false;
+  bool leave_one_out = false;  // refit each model once per fitted curve, that curve held out
   WorkLimits limits;
   const ModelCacheSettings* cache = nullptr;
 };

@@ -431,13 +431,15 @@ int main(int argc, char** argv) {
 
   CompareModelsArgs models_args;
   CLI::App* compare_models = app.add_subcommand(
-      "compare-models",
-      "Calibrate several model forms on the same data and rank them by held-out error and AIC/BIC");
+      "compare-models", "Calibrate several model forms on the same data and rank them by held-out error and AIC/BIC");
   compare_models->add_option("CASES", models_args.cases, "Case files with a [calibration] section, one per model")
       ->required()
       ->check(CLI::ExistingFile);
   compare_models->add_option("--out", models_args.out, "Output folder (default reports/model-comparison)");
   compare_models->add_flag("--no-plots", models_args.no_plots, "Skip gnuplot figures");
+  compare_models->add_flag("--leave-one-out", models_args.leave_one_out,
+                           "Also refit each model once per fitted curve, that curve held out, and rank by the "
+                           "predicted curves' rms");
   add_limit_options(compare_models, models_args.limits);
   add_cache_options(compare_models, cache_args);
 

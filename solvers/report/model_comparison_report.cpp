@@ -55,21 +55,24 @@ Plot plot_held_out(const std::vector<ModelScore>& scores, const std::vector<cons
 
 }  // namespace
 
-void write_model_comparison(const std::vector<ModelScore>& scores, const std::vector<const CalibrationOutcome*>& outcomes,
-                            const fs::path& out_dir, bool plots) {
+void write_model_comparison(const std::vector<ModelScore>& scores,
+                            const std::vector<const CalibrationOutcome*>& outcomes, const fs::path& out_dir,
+                            bool plots) {
   std::vector<size_t> order(scores.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return scores[a].rank < scores[b].rank; });
   {
     std::ofstream csv(out_dir / "ranking.csv");
     csv << "rank,model,converged,parameters,fitted_points,chi_square,aic,bic,held_out_points,held_out_rms_sigma,"
-           "held_out_largest_error,band_coverage_95,cross_check_passed,cross_check_entries\n";
+           "held_out_largest_error,band_coverage_95,cross_check_passed,cross_check_entries,leave_one_out_rms_sigma,"
+           "folds,"
+           "folds_converged\n";
     for (size_t i : order) {
       const ModelScore& s = scores[i];
-      csv << fmt::format("{},\"{}\",{},{},{},{:.10g},{:.10g},{:.10g},{},{:.6g},{:.6g},{:.6g},{},{}\n", s.rank, s.name,
-                         s.converged ? 1 : 0, s.parameters, s.fitted_points, s.chi_square, s.aic, s.bic,
+      csv << fmt::format("{},\"{}\",{},{},{},{:.10g},{:.10g},{:.10g},{},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{},{}\n",
+                         s.rank, s.name, s.converged ? 1 : 0, s.parameters, s.fitted_points, s.chi_square, s.aic, s.bic,
                          s.held_out_points, s.held_out_rms, s.held_out_largest_error, s.band_coverage,
-                         s.cross_check_passed, s.cross_check_entries);
+                         s.cross_check_passed, s.cross_check_entries, s.leave_one_out_rms, s.folds, s.folds_converged);
     }
     if (!csv) throw std::runtime_error("failed writing ranking.csv");
   }
@@ -79,18 +82,25 @@ void write_model_comparison(const std::vector<ModelScore>& scores, const std::ve
         "it), ranked by the rms residual of the points held out of every fit (in sigma: what the model predicts), "
         "then by BIC. AIC = chi2 + 2 k and BIC = chi2 + k ln n, chi2 the sum of squared fitted residuals, k the "
         "parameters, n the fitted points: they reward the fit and charge the parameters, but only the held-out "
-        "error measures prediction.\n\n"
+        "error measures prediction. With `--leave-one-out` each model is also refitted once per fitted curve with "
+        "that curve held out, and ranked by the rms residual of every curve predicted by the fit that left it out "
+        "(the leave-one-out column).\n\n"
         "| rank | model | converged | k | n | chi2 | AIC | BIC | held-out rms [sigma] | largest held-out error | "
-        "95 % band covers | cross-check |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "95 % band covers | cross-check | leave-one-out rms [sigma] "
+        "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (size_t i : order) {
     const ModelScore& s = scores[i];
     // Each calibration's folder is named after its case file's stem (cli/compare_models_command.cpp).
-    md << fmt::format("| {} | [{}]({}/report.md) | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.3g} | {:.3g} % | {} | "
-                      "{} of {} |\n",
-                      s.rank, s.name, s.name, s.converged ? "yes" : "**no**", s.parameters, s.fitted_points,
-                      s.chi_square, s.aic, s.bic, s.held_out_rms, 100.0 * s.held_out_largest_error,
-                      s.band_coverage < 0.0 ? std::string("no band") : fmt::format("{:.1f} %", 100.0 * s.band_coverage),
-                      s.cross_check_passed, s.cross_check_entries);
+    md << fmt::format(
+        "| {} | [{}]({}/report.md) | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.3g} | {:.3g} % | {} | "
+        "{} of {} | {} |\n",
+        s.rank, s.name, s.name, s.converged ? "yes" : "**no**", s.parameters, s.fitted_points, s.chi_square, s.aic,
+        s.bic, s.held_out_rms, 100.0 * s.held_out_largest_error,
+        s.band_coverage < 0.0 ? std::string("no band") : fmt::format("{:.1f} %", 100.0 * s.band_coverage),
+        s.cross_check_passed, s.cross_check_entries,
+        std::isnan(s.leave_one_out_rms)
+            ? std::string("not run")
+            : fmt::format("{:.3g} ({} of {} folds converged)", s.leave_one_out_rms, s.folds_converged, s.folds));
   }
   if (plots && !outcomes.empty()) {
     md << "\n## Predictions over the held-out curves\n\n";

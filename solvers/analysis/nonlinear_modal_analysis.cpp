@@ -84,8 +84,9 @@ void add_stepped_sine(const NonlinearModalSpec& spec, const SteppedSineSpec& sin
   const auto cols = with_sensitivities({"point", "frequency_hz", "force_n", amp, phase, "stable"}, {amp, phase}, d);
   std::vector<std::vector<double>> rows;
   std::optional<double> previous;
+  const BackboneBounds bounds = backbone_bounds(spec.mode);  // the same for every point
   for (size_t i = 0; i < sine.frequency_hz.size(); ++i) {
-    const ModalPoint p = stepped_response(spec.mode, sine.force[i], sine.frequency_hz[i], previous);
+    const ModalPoint p = stepped_response(spec.mode, sine.force[i], sine.frequency_hz[i], previous, bounds);
     previous = p.amplitude;
     std::vector<double> row = {static_cast<double>(i + 1), sine.frequency_hz[i], sine.force[i], p.amplitude,
                                p.phase * kDegPerRad,       p.stable ? 1.0 : 0.0};

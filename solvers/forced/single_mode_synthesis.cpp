@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
 
 #include "common/constants.hpp"
 
@@ -75,18 +76,25 @@ ModalPoint held_response(const NonlinearMode& mode, double amplitude, double f_e
   return p;
 }
 
-std::vector<double> amplitudes_at_force(const NonlinearMode& mode, double force, double f_exc_hz) {
-  if (!(force > 0.0) || !(f_exc_hz > 0.0)) throw std::invalid_argument("force and frequency must be positive");
+BackboneBounds backbone_bounds(const NonlinearMode& mode) {
   require_positive_damping(mode);
-  // |D| lies between 2 z w0 w (its imaginary part) and w0^2 + w^2 + 2 z w0 w: so do the roots'
-  // m a |D| = F, in a bracket where the residual changes sign at every root.
   const auto& af = mode.frequency_hz.amplitudes();
   const auto& az = mode.damping_ratio.amplitudes();
-  const double lo_a = std::min(af.front(), az.front()), hi_a = std::max(af.back(), az.back());
-  const auto [f_lo, f_hi] = mode.frequency_hz.range(lo_a, hi_a);
-  const auto [z_lo, z_hi] = mode.damping_ratio.range(lo_a, hi_a);
-  const double w = kTwoPi * f_exc_hz, w_lo = kTwoPi * f_lo, w_hi = kTwoPi * f_hi;
-  const double d_max = w_hi * w_hi + w * w + 2.0 * z_hi * w_hi * w, d_min = 2.0 * z_lo * w_lo * w;
+  BackboneBounds b;
+  b.a_lo = std::min(af.front(), az.front()), b.a_hi = std::max(af.back(), az.back());
+  std::tie(b.f_lo, b.f_hi) = mode.frequency_hz.range(b.a_lo, b.a_hi);
+  std::tie(b.z_lo, b.z_hi) = mode.damping_ratio.range(b.a_lo, b.a_hi);
+  return b;
+}
+
+std::vector<double> amplitudes_at_force(const NonlinearMode& mode, double force, double f_exc_hz,
+                                        const std::optional<BackboneBounds>& bounds) {
+  if (!(force > 0.0) || !(f_exc_hz > 0.0)) throw std::invalid_argument("force and frequency must be positive");
+  const BackboneBounds b = bounds ? *bounds : backbone_bounds(mode);
+  // |D| lies between 2 z w0 w (its imaginary part) and w0^2 + w^2 + 2 z w0 w: so do the roots'
+  // m a |D| = F, in a bracket where the residual changes sign at every root.
+  const double w = kTwoPi * f_exc_hz, w_lo = kTwoPi * b.f_lo, w_hi = kTwoPi * b.f_hi;
+  const double d_max = w_hi * w_hi + w * w + 2.0 * b.z_hi * w_hi * w, d_min = 2.0 * b.z_lo * w_lo * w;
   const double a_lo = 0.5 * force / (mode.mass * d_max), a_hi = 2.0 * force / (mode.mass * d_min);
   const auto residual = [&](double s) {
     const double a = std::exp(s);
@@ -117,8 +125,8 @@ std::vector<double> amplitudes_at_force(const NonlinearMode& mode, double force,
 }
 
 ModalPoint stepped_response(const NonlinearMode& mode, double force, double f_exc_hz,
-                            std::optional<double> previous_amplitude) {
-  const std::vector<double> roots = amplitudes_at_force(mode, force, f_exc_hz);
+                            std::optional<double> previous_amplitude, const std::optional<BackboneBounds>& bounds) {
+  const std::vector<double> roots = amplitudes_at_force(mode, force, f_exc_hz, bounds);
   double a = 0.0, best = INFINITY;
   for (double r : roots) {
     if (!(force_rate(mode, r, dynamic(mode, r, f_exc_hz)) > 0.0)) continue;

@@ -31,24 +31,37 @@ struct NonlinearMode {
 };
 
 struct ModalPoint {
-  double amplitude = 0.0;    // |x| [m]
-  double phase = 0.0;        // of x to the force [rad]
-  double force = 0.0;        // |F| [N]
-  bool stable = true;        // a force-controlled point on a branch d|F|/da > 0
+  double amplitude = 0.0;                         // |x| [m]
+  double phase = 0.0;                             // of x to the force [rad]
+  double force = 0.0;                             // |F| [N]
+  bool stable = true;                             // a force-controlled point on a branch d|F|/da > 0
   Eigen::VectorXd d_amplitude, d_phase, d_force;  // per parameter (NonlinearMode order)
 };
 
 // The force that holds amplitude a at f_exc, its phase, and their sensitivities (a held fixed).
 ModalPoint held_response(const NonlinearMode& mode, double amplitude, double f_exc_hz);
 
+// The backbone's extent and the ranges of f(a) and z(a) over its knots (sampled): what bounds the
+// roots of every force-controlled point of one mode, computed once per sweep. Throws
+// std::invalid_argument for a damping ratio that is not positive on the backbone.
+struct BackboneBounds {
+  double a_lo = 0.0, a_hi = 0.0;  // the knots' amplitude span [m]
+  double f_lo = 0.0, f_hi = 0.0;  // [Hz]
+  double z_lo = 0.0, z_hi = 0.0;
+};
+BackboneBounds backbone_bounds(const NonlinearMode& mode);
+
 // Every amplitude the force F holds at f_exc (roots of m a |D(a)| = F, ascending); each root's
 // stability is d(m a |D|)/da > 0. Throws std::invalid_argument for a non-positive force or
-// frequency, or a damping ratio that is not positive on the backbone.
-std::vector<double> amplitudes_at_force(const NonlinearMode& mode, double force, double f_exc_hz);
+// frequency, or a damping ratio that is not positive on the backbone. `bounds`: the mode's
+// backbone_bounds (computed here when absent).
+std::vector<double> amplitudes_at_force(const NonlinearMode& mode, double force, double f_exc_hz,
+                                        const std::optional<BackboneBounds>& bounds = std::nullopt);
 
 // The stable amplitude a stepped sine reaches at (F, f_exc) from the point before (its amplitude;
 // nullopt: from rest, the smallest), the nearest in log a; with its sensitivities.
 ModalPoint stepped_response(const NonlinearMode& mode, double force, double f_exc_hz,
-                            std::optional<double> previous_amplitude);
+                            std::optional<double> previous_amplitude,
+                            const std::optional<BackboneBounds>& bounds = std::nullopt);
 
 }  // namespace bb

@@ -313,6 +313,11 @@ std::optional<CalibrationSpec> parse_calibration(const toml::table& root, const 
   if (const auto n = r.optional_integer("seed", 0, 4294967295L)) {
     c.seed = static_cast<unsigned>(*n);
   }
+  if (r.has("cross_check_bands")) {
+    c.cross_check_bands = r.boolean("cross_check_bands", false);
+    if (!r.has("cross_check"))
+      r.fail("cross_check_bands", "writes the cross-check's tables with bands: give cross_check too");
+  }
   if (r.has("cross_check")) {
     c.cross_check = r.input_file("cross_check", file.parent_path());
     if (const std::string why = file_problem(c.cross_check); !why.empty())

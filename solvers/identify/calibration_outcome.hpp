@@ -72,6 +72,8 @@ struct CalibrationOutcome {
   toml::table calibrated;                    // the case table with the identified values
   // The cross-check case run with the identified values (spec.cross_check), every check entry.
   std::vector<CheckEntry> cross_check;
+  // Its result tables at the identified values (with band columns when spec.cross_check_bands).
+  ResultTables cross_check_tables;
   std::optional<PosteriorSummary> posterior;  // when [calibration.sampler] is given
   double cross_check_seconds = 0.0;
   // Why the cross-check case found no solution (its checks then have nothing to read); the

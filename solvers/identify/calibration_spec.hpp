@@ -88,6 +88,9 @@ struct CalibrationSpec {
   // An independent model (e.g. the time integration) run with the identified values at the same
   // parameter paths; its checks must pass for the identification to count (empty: none).
   std::filesystem::path cross_check;
+  // The cross-check's result tables written with a band column beside every column the parameters
+  // move (`<column>_band_1sigma`: the covariance carried by central differences, 2 k more runs).
+  bool cross_check_bands = false;
   // Probability of the two-sided prediction bands written with the predicted curves.
   double band_level = 0.95;
   // [calibration.sampler]: the posterior sampled around the optimum by an affine-invariant ensemble
@@ -96,7 +99,7 @@ struct CalibrationSpec {
   struct Sampler {
     int walkers = 0;  // even, >= 2 x parameters; 0: the smallest even count >= 4 x parameters
     int steps = 600;
-    int burn_in = -1;  // -1: half of steps
+    int burn_in = -1;       // -1: half of steps
     int predictions = 100;  // posterior samples the predicted curves are evaluated at
     unsigned seed = 1;
   };

@@ -31,6 +31,15 @@ struct BandCoverage {
 // interval of probability `level` holds.
 BandCoverage band_coverage(const std::vector<FitPoint>& points, bool held_out, double level = 0.95);
 
+// The tables `at` (a model run at the identified values) with a column `<column>_band_1sigma`
+// beside every numeric column that some parameter moves (wall times aside: `*seconds`, `*_per_step`): sqrt(d^T C d), d
+// the column's central differences over the parameters (`minus[j]`, `plus[j]`: the same model at p_j -+ step[j]), C the
+// covariance in the parameters' own units. A cell whose differences are not finite (a run without that row's solution)
+// gets NaN. Tables the runs do not all have are returned unchanged.
+ResultTables with_band_columns(const ResultTables& at, const std::vector<ResultTables>& minus,
+                               const std::vector<ResultTables>& plus, const std::vector<double>& step,
+                               const Eigen::MatrixXd& covariance);
+
 // The two-sided standard normal quantile of `level` (1.95996 for 0.95).
 double normal_quantile(double level);
 

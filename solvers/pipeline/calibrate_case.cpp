@@ -151,9 +151,10 @@ std::variant<AnalyticCase, std::string> analytic_case(const CalibratedCase& base
   AnalyticCase out{base, {}, {}};
   if (auto* modal = std::get_if<NonlinearModalSpec>(&out.model.spec.analysis))
     return nonlinear_modal_sensitivities(*modal, out) ? std::variant<AnalyticCase, std::string>(out)
-                                                      : fmt::format("the analysis has no sensitivities for these "
-                                                                    "parameters ({})",
-                                                                    fmt::join(out.numeric, "; "));
+                                                      : fmt::format(
+                                                            "the analysis has no sensitivities for these "
+                                                            "parameters ({})",
+                                                            fmt::join(out.numeric, "; "));
   HbmSpec* hbm = std::get_if<HbmSpec>(&out.model.spec.analysis);
   if (!hbm) return std::string("the analysis is not hbm");
   hbm->path_sensitivities = curves;  // peaks alone need no curve's derivatives
@@ -221,21 +222,53 @@ void set_number(toml::table& root, const std::string& path, double value) {
   }
 }
 
+// The cross-check's tables with band columns: each parameter moved by 1e-4 of itself both ways
+// (central differences in its own units), the covariance carried through.
+template <class Run>
+void cross_check_bands(const CalibratedCase& cross, const Run& tables_at, CalibrationOutcome& out) {
+  const Eigen::MatrixXd covariance = parameter_covariance(out);
+  if (covariance.size() == 0) {
+    out.warnings.push_back("the cross-check's tables have no band columns: the fit has no covariance");
+    return;
+  }
+  std::vector<ResultTables> minus, plus;
+  std::vector<double> step;
+  try {
+    for (size_t j = 0; j < out.values.size(); ++j) {
+      step.push_back(1e-4 * std::abs(out.values[j]));
+      for (const double sign : {-1.0, 1.0}) {
+        std::vector<double> v = out.values;
+        v[j] += sign * step.back();
+        (sign < 0.0 ? minus : plus).push_back(tables_at(with_values(cross, v)));
+      }
+    }
+  } catch (const std::exception& e) {  // no solution there (SolverError), or a value off its domain (InputError)
+    out.warnings.push_back(fmt::format(
+        "the cross-check's tables have no band columns: a run 1e-4 from the identified values failed: {}", e.what()));
+    return;
+  }
+  out.cross_check_tables = with_band_columns(out.cross_check_tables, minus, plus, step, covariance);
+}
+
 // The same parameter paths in an independent model (e.g. Newmark instead of the harmonic balance).
 void cross_check(const CalibrationSpec& cal, const WorkLimits& limits, const ModelCacheSettings* cache,
                  CalibrationOutcome& out) {
   const auto t0 = std::chrono::steady_clock::now();
   const CalibratedCase cross = with_parameters(parse_case_file(cal.cross_check), cal);
   const CaseSpec spec = with_values(cross, out.values);
+  const auto tables_at = [&](const CaseSpec& s) {
+    return run_analysis(s.analysis, build_model(s.model), {}, limits, cache).tables;
+  };
   try {
-    const AnalysisResults results = run_analysis(spec.analysis, build_model(spec.model), {}, limits, cache);
+    out.cross_check_tables = tables_at(spec);
     for (const CheckSpec& c : spec.checks) {
-      const auto e = evaluate_check(c, results.tables);
+      const auto e = evaluate_check(c, out.cross_check_tables);
       out.cross_check.insert(out.cross_check.end(), e.begin(), e.end());
     }
   } catch (const SolverError& e) {  // the identification stands: say why its check has no verdict
     out.cross_check_failure = e.what();
   }
+  if (cal.cross_check_bands && out.cross_check_failure.empty()) cross_check_bands(cross, tables_at, out);
   out.cross_check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!out.cross_check_failure.empty())
     out.warnings.push_back(fmt::format("the cross-check {} found no solution with the identified values: {}",
@@ -352,9 +385,9 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
                             &out.curves_after, analytic ? differentiated : nullptr);
   if (analytic) set_linearised_bands(out.after, out.values, parameter_covariance(out));
   if (cal->sampler) {
-    out.posterior = sample_posterior(*cal, out, evaluate, [&](const std::vector<double>& values) {
-      return fitted_points(base, *cal, values, limits, cache);
-    }, out.after);
+    out.posterior = sample_posterior(
+        *cal, out, evaluate,
+        [&](const std::vector<double>& values) { return fitted_points(base, *cal, values, limits, cache); }, out.after);
     if (!out.posterior->warning.empty()) out.warnings.push_back(out.posterior->warning);
   }
   out.calibrated = table;

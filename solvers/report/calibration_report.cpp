@@ -18,6 +18,7 @@
 #include "report/gnuplot.hpp"
 #include "report/html_page.hpp"
 #include "report/plots.hpp"
+#include "report/writers.hpp"
 
 namespace bb {
 namespace {
@@ -161,6 +162,11 @@ void rebase_file_names(toml::node& node, const fs::path& from, const fs::path& t
 
 // The machine-readable outputs; calibrated.toml only for a converged fit.
 void write_calibration_files(const CalibrationOutcome& o, const fs::path& case_file, const fs::path& out_dir) {
+  if (!o.cross_check_tables.empty()) {
+    fs::create_directories(out_dir / "cross_check");
+    for (const auto& [name, table] : o.cross_check_tables)
+      write_table_csv(table, out_dir / "cross_check" / (name + ".csv"));
+  }
   {
     std::ofstream out = open_out(out_dir / "identification.csv");
     out << "parameter,start,value,std,lower,upper\n";
@@ -389,6 +395,13 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
     for (const CheckEntry& e : o.cross_check)
       md << fmt::format("| {} | {:.6g} | {:.6g} | {:.3g} | {:.3g} | {} |\n", e.name, e.computed, e.reference,
                         e.abs_error, e.tolerance, e.pass ? "yes" : "**no**");
+    if (!o.cross_check_tables.empty())
+      md << fmt::format(
+          "\nIts result tables at the identified values: `cross_check/*.csv`{}.\n",
+          o.spec.cross_check_bands
+              ? ", beside every column the parameters move a `<column>_band_1sigma` (the parameters' covariance "
+                "carried by central differences, 1e-4 of each value both ways)"
+              : "");
   }
   if (plots && !o.spec.data.empty()) {
     md << "\n## Fitted curves over the data\n\n";

@@ -2,6 +2,8 @@
 // its level says (20 seeds of synthetic data with known noise), and the ensemble sampler recovers a
 // correlated Gaussian's mean and covariance, repeats itself whatever the threads, and says when it
 // has not mixed.
+#include "identify/prediction_bands.hpp"
+
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
@@ -10,7 +12,6 @@
 
 #include "identify/ensemble_sampler.hpp"
 #include "identify/least_squares_fit.hpp"
-#include "identify/prediction_bands.hpp"
 
 namespace bb {
 namespace {
@@ -64,8 +65,8 @@ TEST(PredictionBands, NinetyFivePercentBandsCoverHeldOutPointsAsOftenAsTheirLeve
     spec.parameters = {{"A", 0.1, 10.0, 1.0}, {"tau", 0.05, 5.0, 1.0}};
     spec.threads = 1;
     spec.max_iterations = 100;
-    const CalibrationOutcome o =
-        fit_parameters(spec, [&](const std::vector<double>& v, bool) { return points(d, v, false); }, true, 12);
+    const CalibrationOutcome o = fit_parameters(
+        spec, [&](const std::vector<double>& v, bool) { return points(d, v, false); }, true, 12);
     ASSERT_TRUE(o.converged) << o.termination;
     std::vector<FitPoint> all = points(d, o.values, true);
     set_linearised_bands(all, o.values, parameter_covariance(o));
@@ -151,6 +152,32 @@ TEST(EnsembleSampler, AShortChainSaysItHasNotMixed) {
 TEST(EnsembleSampler, RefusesFewerWalkersThanTwiceTheParameters) {
   EXPECT_THROW(sample_ensemble(gaussian_log_density, ball(3, 1), {}), std::invalid_argument);
   EXPECT_THROW(sample_ensemble(gaussian_log_density, ball(5, 1), {}), std::invalid_argument);  // odd
+}
+
+// A cross-check's table with band columns: y = 3 p1 + p2^2 at p = (2, 5) has the gradient (3, 10);
+// with C = [[0.04, 0.01], [0.01, 0.09]] its band is sqrt(g^T C g); the key column and a column
+// no parameter moves get none, and a table some run lacks is left as it was.
+TEST(PredictionBands, CrossCheckTablesGetABandBesideEveryColumnTheParametersMove) {
+  const auto tables = [](double p1, double p2) {
+    ResultTables t;
+    t.emplace("peaks", table_from_rows("peaks", {"level", "fixed", "y"},
+                                       {{1.0, 7.0, 3.0 * p1 + p2 * p2}, {2.0, 7.0, 2.0 * (3.0 * p1 + p2 * p2)}}));
+    return t;
+  };
+  const std::vector<double> step = {1e-4, 1e-4};
+  std::vector<ResultTables> minus = {tables(2.0 - 1e-4, 5.0), tables(2.0, 5.0 - 1e-4)};
+  std::vector<ResultTables> plus = {tables(2.0 + 1e-4, 5.0), tables(2.0, 5.0 + 1e-4)};
+  Eigen::Matrix2d c;
+  c << 0.04, 0.01, 0.01, 0.09;
+  ResultTables at = tables(2.0, 5.0);
+  at.emplace("only_here", table_from_rows("only_here", {"k", "v"}, {{1.0, 2.0}}));
+  const ResultTables out = with_band_columns(at, minus, plus, step, c);
+  const ResultTable& peaks = out.at("peaks");
+  ASSERT_EQ(peaks.columns, (std::vector<std::string>{"level", "fixed", "y", "y_band_1sigma"}));
+  const Eigen::Vector2d g(3.0, 10.0);
+  EXPECT_NEAR(peaks.values(0, 3), std::sqrt(g.dot(c * g)), 1e-6);
+  EXPECT_NEAR(peaks.values(1, 3), 2.0 * std::sqrt(g.dot(c * g)), 1e-6);
+  EXPECT_EQ(out.at("only_here").columns.size(), 2u);
 }
 
 }  // namespace

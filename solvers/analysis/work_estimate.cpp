@@ -55,6 +55,12 @@ WorkEstimate hbm_work(const HbmSpec& s) {
   if (s.damper) unknowns += 3.0 + 2.0 * static_cast<double>(s.damper->points.size());
   unknowns = std::max(unknowns, 1.0);
   elements = std::max(elements, 1.0);
+  // The whole ring (cyclic verification) solves every sector's contacts at once, on a linear part
+  // N times the sector's, decomposed densely for its modes.
+  const double ring = s.cyclic && s.cyclic->whole ? static_cast<double>(s.cyclic->sectors) : 1.0;
+  unknowns *= ring;
+  elements *= ring;
+  const double ring_dofs = ring > 1.0 && s.model.matrices ? ring * static_cast<double>(s.model.matrices->size()) : 0.0;
   const bool adaptive_h = s.harmonic_tolerance > 0.0;
   const int top_h = adaptive_h ? std::max(s.max_harmonics, s.harmonics) : s.harmonics;
   const double m = 2.0 * top_h + 1.0;
@@ -90,15 +96,19 @@ WorkEstimate hbm_work(const HbmSpec& s) {
   const double per_point = std::max(per_point_counted, solves * kLeastPerSolve);
   const double per_solve_iterations = 5.0;
   WorkEstimate e;
-  e.operations = points * per_solve_iterations * per_point;
-  // The DFT matrices, and per point and level the solution and its output rows (about 40 numbers).
-  e.bytes = 2.0 * samples * m * 8.0 * elements + points * (unknowns * m + 40.0) * 8.0 * 3.0;
+  e.operations = points * per_solve_iterations * per_point + 10.0 * std::pow(ring_dofs, 3.0);
+  // The DFT matrices, and per point and level the solution and its output rows (about 40 numbers);
+  // the whole ring's dense matrices and modes.
+  e.bytes = 2.0 * samples * m * 8.0 * elements + points * (unknowns * m + 40.0) * 8.0 * 3.0 +
+            8.0 * 6.0 * ring_dofs * ring_dofs + 8.0 * std::pow(unknowns * m, 2.0);
   e.basis = fmt::format(
-      "{:.0f} frequencies x {:.0f} levels{} x {:.0f} sweeps, H up to {}, {:.0f} AFT samples, {:.0f} condensed unknowns",
+      "{:.0f} frequencies x {:.0f} levels{} x {:.0f} sweeps, H up to {}, {:.0f} AFT samples, {:.0f} condensed "
+      "unknowns{}",
       frequencies, levels, stepped > 0.0 ? fmt::format(" + {:.0f} stepped-sine points", stepped) : "", solves, top_h,
-      samples, unknowns);
+      samples, unknowns, ring > 1.0 ? fmt::format(" (the whole ring of {:.0f} sectors)", ring) : "");
   e.at = s.at;
   e.key = grid ? "analysis.step_hz, harmonics, time_samples" : "analysis.max_step, harmonics, time_samples";
+  if (ring > 1.0) e.key += ", analysis.cyclic.sectors";
   return e;
 }
 
@@ -113,11 +123,27 @@ WorkEstimate time_work(const TimeSpec& t) {
   const double steps = frequencies * levels * t.max_cycles * t.steps_per_period;
   WorkEstimate e;
   e.operations = steps * (4.0 * size * size + 100.0 * std::max(elements, 1.0));
+  if (t.method == TimeSpec::Method::shooting && t.period_map == TimeSpec::PeriodMap::exact) {
+    // The exact flow: about 10 Newton iterations per frequency, each a period of pieces (a stick
+    // and a slip per contact and half period), each piece a matrix exponential of the flow's
+    // state (2 n + contacts + 3): 30 d^3. A chain of 20 contacts held by Coulomb's stick took
+    // 21.5 s, where this counts 7e10; the flow's own cap on transitions bounds a chattering one.
+    const double d = 2.0 * size + elements + 3.0;
+    const double shooting = frequencies * levels * 10.0 * (4.0 * elements + 2.0) * 30.0 * d * d * d;
+    e.operations = std::max(e.operations, shooting);
+  }
   e.bytes = 8.0 * (t.history_cycles * t.steps_per_period * (size + 10.0) + frequencies * levels * 40.0);
   e.basis = fmt::format("{:.0f} frequencies x {:.0f} levels x at most {} cycles x {} steps, {:.0f} DOFs", frequencies,
                         levels, t.max_cycles, t.steps_per_period, size);
   e.at = s.at;
   e.key = "analysis.step_hz, max_cycles, steps_per_period";
+  if (t.method == TimeSpec::Method::shooting && t.period_map == TimeSpec::PeriodMap::exact) {
+    e.basis = fmt::format(
+        "{:.0f} frequencies x {:.0f} levels x about 10 Newton iterations, each a period of about "
+        "{:.0f} pieces of the exact flow, a matrix exponential of {:.0f} states each",
+        frequencies, levels, 4.0 * elements + 2.0, 2.0 * size + elements + 3.0);
+    e.key = "analysis.step_hz, force_levels, [[analysis.contact]]";
+  }
   return e;
 }
 

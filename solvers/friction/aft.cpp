@@ -7,8 +7,6 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "friction/aft_events.hpp"
-
 namespace bb::friction {
 
 Eigen::Index harmonic_size(int harmonics) {
@@ -178,10 +176,9 @@ void law_derivative_step(const PointParameters& p, const JenkinsStep& s, double 
 //   stick:     dT = (u_k - w_{k-1}) dkt - kt dw_{k-1},        dw_k = dw_{k-1}
 //   slip:      dT = s (N dmu + mu dN),                        dw_k = -dT / kt + T / kt^2 dkt
 // so a contact stuck throughout has dT/dmu = 0 exactly and a frictionless one dT/dkt = 0.
-AftResult aft_jenkins(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                      const AftOptions& options) {
-  const int harmonics = checked_aft_inputs(p, u, v, options);
-  if (options.resolve_events) return aft_jenkins_events(p, u, v, options);
+AftResult aft_jenkins_sampled(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                              const AftOptions& options) {
+  const int harmonics = harmonics_of(u.size());
 
   const int n = options.samples;
   const Eigen::Index m = u.size();

@@ -101,12 +101,17 @@ struct AftResult {
 int checked_aft_inputs(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                        const AftOptions& options, int directions = 1);
 
-// Throws std::invalid_argument when the parameters are invalid (validate()), the two coefficient
-// vectors differ in size or hold a non-finite value, or the options are out of range. A loop
-// that does not close within max_periods is returned with closed == false, never thrown: the
-// caller decides (a Newton solve treats it as a failed evaluation).
+// The Jenkins law's AFT, sampled or event-resolved (friction/aft_events.hpp) as
+// options.resolve_events asks; the dispatch is the law's (friction/jenkins_law.cpp). Throws
+// std::invalid_argument when the parameters are invalid (validate()), the two coefficient vectors
+// differ in size or hold a non-finite value, or the options are out of range. A loop that does not
+// close within max_periods is returned with closed == false, never thrown: the caller decides (a
+// Newton solve treats it as a failed evaluation).
 [[nodiscard]] AftResult aft_jenkins(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                                     const AftOptions& options);
+// Its sampled march alone, inputs checked by aft_jenkins.
+[[nodiscard]] AftResult aft_jenkins_sampled(const PointParameters& p, const Eigen::VectorXd& u,
+                                            const Eigen::VectorXd& v, const AftOptions& options);
 
 // Work done by the force f on the displacement x over one period, W = integral of f dx
 // = pi sum_h h (f_a,h x_b,h - f_b,h x_a,h) in the layout above; the energy a contact dissipates per

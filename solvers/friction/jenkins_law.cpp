@@ -1,8 +1,15 @@
-// The Jenkins slider behind the friction-law interface: friction/jenkins.hpp's step and
-// friction/aft.hpp's AFT, with the tangent of the return map.
+// The Jenkins slider behind the friction-law interface: friction/jenkins.hpp's step, and its AFT
+// sampled (friction/aft.hpp) or event-resolved (friction/aft_events.hpp): the choice is the law's.
+#include "friction/aft_events.hpp"
 #include "friction/friction_law.hpp"
 
 namespace bb::friction {
+
+AftResult aft_jenkins(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                      const AftOptions& options) {
+  checked_aft_inputs(p, u, v, options);
+  return options.resolve_events ? aft_jenkins_events(p, u, v, options) : aft_jenkins_sampled(p, u, v, options);
+}
 
 namespace {
 

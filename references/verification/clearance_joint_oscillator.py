@@ -17,12 +17,19 @@ H = 1, up to the AFT sampling. For each a the force needed is least at one w; th
 force F is the a whose least force is F (the least force grows with a here), the peak frequency
 that w.
 """
+import importlib.util
 import math
 from pathlib import Path
 
-m, k, zeta = 1.0, 1.0e6, 0.01
+# The single-harmonic balance of the friction oscillator (the same m, k and c), with this joint's
+# describing function passed in.
+_spec = importlib.util.spec_from_file_location(
+    "df", Path(__file__).resolve().parent / "hbm_friction_oscillator_describing_function.py")
+df = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(df)
+
+assert (df.m, df.k, df.zeta) == (1.0, 1.0e6, 0.01)
 kt, mu, n0 = 1.0e6, 0.3, 30.0
-c = 2 * zeta * math.sqrt(k * m)
 Fs = mu * n0
 xs = Fs / kt
 g, kg = xs, kt
@@ -42,33 +49,11 @@ def contact(a):
 
 
 def least_force(a):
-    ke, q = contact(a)
-    K = k + ke
-
-    def dg(w):
-        return -4 * m * w * (K - m * w * w) * a * a + 2 * c * a * (c * w * a + q)
-
-    lo, hi = 0.5 * math.sqrt(K / m), math.sqrt(K / m)
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if dg(lo) * dg(mid) <= 0:
-            hi = mid
-        else:
-            lo = mid
-    w = 0.5 * (lo + hi)
-    return math.hypot((K - m * w * w) * a, c * w * a + q), w
+    return df.least_force(a, contact)
 
 
 def peak(F):
-    lo, hi = 1e-12, 10 * F / (c * math.sqrt(k / m))
-    for _ in range(300):
-        mid = math.sqrt(lo * hi)
-        if least_force(mid)[0] < F:
-            lo = mid
-        else:
-            hi = mid
-    a = math.sqrt(lo * hi)
-    return least_force(a)[1] / (2 * math.pi), a / F
+    return df.peak(F, contact)
 
 
 if __name__ == "__main__":

@@ -29,7 +29,9 @@ def contact(a):
     return kt / math.pi * (beta - math.sin(2 * beta) / 2), 4 * Fs * (1 - xs / a) / math.pi
 
 
-def least_force(a):
+def least_force(a, contact=contact):
+    """The least force holding amplitude a, and its w; `contact(a)` gives the contact's in-phase
+    stiffness and quadrature force (the Jenkins element here; other scripts pass their joint's)."""
     ke, q = contact(a)
     K = k + ke
     # d/dw [((K - m w^2) a)^2 + (c w a + q)^2] = 0: bisection on the derivative near sqrt(K/m)
@@ -46,16 +48,16 @@ def least_force(a):
     return math.hypot((K - m * w * w) * a, c * w * a + q), w
 
 
-def peak(F):
+def peak(F, contact=contact):
     lo, hi = 1e-12, 10 * F / (c * math.sqrt(k / m))
     for _ in range(300):
         mid = math.sqrt(lo * hi)
-        if least_force(mid)[0] < F:
+        if least_force(mid, contact)[0] < F:
             lo = mid
         else:
             hi = mid
     a = math.sqrt(lo * hi)
-    return least_force(a)[1] / (2 * math.pi), a / F
+    return least_force(a, contact)[1] / (2 * math.pi), a / F
 
 
 def free_peak():

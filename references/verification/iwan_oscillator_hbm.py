@@ -14,11 +14,18 @@ what the HBM solves with H = 1 and the event-resolved AFT (exact coefficients). 
 force needed is least at one w; the peak for force F is the a whose least force is F.
 Run: python3 references/verification/iwan_oscillator_hbm.py
 """
+import importlib.util
 import math
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# The single-harmonic balance of the friction oscillator (the same m, k and c), with the Iwan
+# joint's describing function passed in.
+_spec = importlib.util.spec_from_file_location("df", os.path.join(HERE, "hbm_friction_oscillator_describing_function.py"))
+df = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(df)
 M, K, ZETA = 1.0, 1.0e6, 0.01
+assert (df.m, df.k, df.zeta) == (M, K, ZETA)
 KT, MU, N0 = 1.0e6, 0.5, 20.0  # F_S = 10 N
 CHI, BETA, SLIDERS = -0.5, 0.2, 32
 C = 2 * ZETA * math.sqrt(K * M)
@@ -58,34 +65,9 @@ def contact(a):
     return ke, q
 
 
-def least_force(a):
-    ke, q = contact(a)
-    stiffness = K + ke
-
-    def dg(w):
-        return -4 * M * w * (stiffness - M * w * w) * a * a + 2 * C * a * (C * w * a + q)
-
-    lo, hi = 0.5 * math.sqrt(stiffness / M), math.sqrt(stiffness / M)
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if dg(lo) * dg(mid) <= 0:
-            hi = mid
-        else:
-            lo = mid
-    w = 0.5 * (lo + hi)
-    return math.hypot((stiffness - M * w * w) * a, C * w * a + q), w
-
-
 def peak(force):
-    lo, hi = 1e-12, 10 * force / (C * math.sqrt(K / M))
-    for _ in range(300):
-        mid = math.sqrt(lo * hi)
-        if least_force(mid)[0] < force:
-            lo = mid
-        else:
-            hi = mid
-    a = math.sqrt(lo * hi)
-    return least_force(a)[1] / (2 * math.pi), a / force, a
+    f, per_n = df.peak(force, contact)
+    return f, per_n, per_n * force
 
 
 def main():

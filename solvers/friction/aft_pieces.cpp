@@ -76,14 +76,6 @@ struct TrigSums {
   }
 };
 
-// The coefficients of T and N and their derivatives from the pieces of one period. Within a piece
-// T and N are linear in the trigonometric polynomials u, v (stick: kt (u - w0), slip: +-mu N, N =
-// n0 + kn v), so each coefficient is a product with the basis's integral or its Gram matrix over
-// the piece, both in closed form: no quadrature error. The Gram matrices enter summed per state.
-}  // namespace
-
-namespace {
-
 Eigen::VectorXd coefficient_scale(Eigen::Index m) {
   // c0 = (1 / 2 pi) int T, a_h = (1 / pi) int T cos h theta, b_h likewise with sin.
   Eigen::VectorXd scale = Eigen::VectorXd::Constant(m, 1.0 / std::numbers::pi);
@@ -100,6 +92,10 @@ BasisIntegrals basis_integrals(const std::vector<std::pair<double, double>>& pie
   return {sums.mean(scale), sums.gram(scale)};
 }
 
+// The coefficients of T and N and their derivatives from the pieces of one period. Within a piece
+// T and N are linear in the trigonometric polynomials u, v (stick: kt (u - w0), slip: +-mu N, N =
+// n0 + kn v), so each coefficient is a product with the basis's integral or its Gram matrix over
+// the piece, both in closed form: no quadrature error. The Gram matrices enter summed per state.
 void integrate_pieces(const PointParameters& p, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                       const std::vector<Piece>& pieces, const std::vector<StuckSlider>& sliders, bool with_law,
                       AftResult& r) {

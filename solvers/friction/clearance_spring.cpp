@@ -41,21 +41,31 @@ std::vector<SpringShare> clearance_springs(const ClearanceSpring& s) {
   return out;
 }
 
-double clearance_force(const ClearanceSpring& s, double u) {
+namespace {
+
+// The force and its slope over the springs' shares, which the law keeps: a Newmark step and every
+// AFT sample asks for them.
+double force_of(const std::vector<SpringShare>& shares, double u) {
   double f = 0.0;
-  for (const SpringShare& k : clearance_springs(s)) {
+  for (const SpringShare& k : shares) {
     const double past = std::abs(u) - k.gap;
     if (past > 0.0) f += std::copysign(k.stiffness * past, u);
   }
   return f;
 }
 
-double clearance_slope(const ClearanceSpring& s, double u) {
+double slope_of(const std::vector<SpringShare>& shares, double u) {
   double slope = 0.0;
-  for (const SpringShare& k : clearance_springs(s))
+  for (const SpringShare& k : shares)
     if (std::abs(u) > k.gap) slope += k.stiffness;
   return slope;
 }
+
+}  // namespace
+
+double clearance_force(const ClearanceSpring& s, double u) { return force_of(clearance_springs(s), u); }
+
+double clearance_slope(const ClearanceSpring& s, double u) { return slope_of(clearance_springs(s), u); }
 
 double clearance_describing_stiffness(const ClearanceSpring& s, double amplitude) {
   double k1 = 0.0;
@@ -72,7 +82,7 @@ namespace {
 class ClearanceStiffenedLaw final : public FrictionLaw {
  public:
   ClearanceStiffenedLaw(std::shared_ptr<const FrictionLaw> masing, const ClearanceSpring& spring)
-      : masing_(std::move(masing)), spring_(spring), shares_() {
+      : masing_(std::move(masing)), spring_(spring) {
     if (!masing_) throw std::invalid_argument("clearance spring: no friction law to put it beside");
     if (masing_->directions() != 1)
       throw std::invalid_argument(
@@ -109,14 +119,14 @@ class ClearanceStiffenedLaw final : public FrictionLaw {
       r.dtangential_du.noalias() += k.stiffness * (above.gram + below.gram);
     }
     if (r.t.size() == samples.size())  // the law's whole tangential force at the samples
-      for (Eigen::Index i = 0; i < samples.size(); ++i) r.t[i] += clearance_force(spring_, samples[i]);
+      for (Eigen::Index i = 0; i < samples.size(); ++i) r.t[i] += force_of(shares_, samples[i]);
     return r;
   }
   LawStep step(const PointParameters& point, const Eigen::Vector2d& slider, const Eigen::Vector2d& u,
                double v) const override {
     LawStep s = masing_->step(point, slider, u, v);
-    s.tangential[0] += clearance_force(spring_, u[0]);
-    s.dt_du(0, 0) += clearance_slope(spring_, u[0]);
+    s.tangential[0] += force_of(shares_, u[0]);
+    s.dt_du(0, 0) += slope_of(shares_, u[0]);
     return s;
   }
   // The exact flow of shooting (timeint/piecewise_flow.cpp) knows the Jenkins pieces only.

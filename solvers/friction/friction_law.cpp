@@ -7,21 +7,18 @@
 
 namespace bb::friction {
 
-namespace {
-
-[[noreturn]] void no_parameter(const FrictionLaw& law, const std::string& name) {
-  const std::vector<std::string> names = law.parameter_names();
+void throw_no_parameter(const std::string& law, const std::string& name, const std::vector<std::string>& own) {
   throw std::invalid_argument(fmt::format(
-      "the {} law has no parameter '{}' ({})", law.name(), name,
-      names.empty() ? std::string("it has none of its own") : fmt::format("its own: {}", fmt::join(names, ", "))));
+      "the {} has no parameter '{}' ({})", law, name,
+      own.empty() ? std::string("it has none of its own") : fmt::format("its own: {}", fmt::join(own, ", "))));
 }
 
-}  // namespace
-
-double FrictionLaw::parameter(const std::string& name) const { no_parameter(*this, name); }
+double FrictionLaw::parameter(const std::string& name) const {
+  throw_no_parameter(this->name() + " law", name, parameter_names());
+}
 
 std::shared_ptr<const FrictionLaw> FrictionLaw::with_parameter(const std::string& name, double) const {
-  no_parameter(*this, name);
+  throw_no_parameter(this->name() + " law", name, parameter_names());
 }
 
 }  // namespace bb::friction

@@ -72,6 +72,11 @@ class FrictionLaw {
   virtual std::shared_ptr<const FrictionLaw> later_sliders_law() const { return nullptr; }
 };
 
+// A law's own parameter asked that it does not have: throws std::invalid_argument "the <law> has no
+// parameter '<name>'" with the law's own parameters. For FrictionLaw and SliderDistribution alike.
+[[noreturn]] void throw_no_parameter(const std::string& law, const std::string& name,
+                                     const std::vector<std::string>& own);
+
 // The law of slider `slider` (from 0) of a point whose law is `law`.
 inline std::shared_ptr<const FrictionLaw> slider_law(const std::shared_ptr<const FrictionLaw>& law, size_t slider) {
   if (slider == 0) return law;

@@ -1,28 +1,18 @@
 #include "friction/masing.hpp"
 
-#include <fmt/format.h>
-#include <fmt/ranges.h>
-
 #include <algorithm>
 #include <stdexcept>
 
+#include "friction/friction_law.hpp"
+
 namespace bb::friction {
 
-namespace {
-
-[[noreturn]] void no_parameter(const SliderDistribution& law, const std::string& name) {
-  const std::vector<std::string> names = law.parameter_names();
-  throw std::invalid_argument(fmt::format(
-      "the law {} has no parameter '{}' ({})", law.describe(), name,
-      names.empty() ? std::string("it has none of its own") : fmt::format("its own: {}", fmt::join(names, ", "))));
+double SliderDistribution::parameter(const std::string& name) const {
+  throw_no_parameter("law " + describe(), name, parameter_names());
 }
 
-}  // namespace
-
-double SliderDistribution::parameter(const std::string& name) const { no_parameter(*this, name); }
-
 std::shared_ptr<const SliderDistribution> SliderDistribution::with_parameter(const std::string& name, double) const {
-  no_parameter(*this, name);
+  throw_no_parameter("law " + describe(), name, parameter_names());
 }
 
 std::vector<PointParameters> parallel_sliders(const PointParameters& point, const SliderDistribution* distribution) {

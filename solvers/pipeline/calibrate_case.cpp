@@ -222,8 +222,9 @@ void set_number(toml::table& root, const std::string& path, double value) {
   }
 }
 
-// The cross-check's tables with band columns: each parameter moved by 1e-4 of itself both ways
-// (central differences in its own units), the covariance carried through.
+// The cross-check's tables with band columns: each parameter moved both ways by 1e-4 in the fit's
+// own variable (of itself on a log scale, of its range on a linear one, where it may be zero), the
+// covariance carried through.
 template <class Run>
 void cross_check_bands(const CalibratedCase& cross, const Run& tables_at, CalibrationOutcome& out) {
   const Eigen::MatrixXd covariance = parameter_covariance(out);
@@ -235,7 +236,7 @@ void cross_check_bands(const CalibratedCase& cross, const Run& tables_at, Calibr
   std::vector<double> step;
   try {
     for (size_t j = 0; j < out.values.size(); ++j) {
-      step.push_back(1e-4 * std::abs(out.values[j]));
+      step.push_back(1e-4 * out.spec.parameters[j].value_per_fit(out.values[j]));
       for (const double sign : {-1.0, 1.0}) {
         std::vector<double> v = out.values;
         v[j] += sign * step.back();

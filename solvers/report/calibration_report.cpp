@@ -400,7 +400,7 @@ void write_calibration_outputs(const CalibrationOutcome& o, const fs::path& case
           "\nIts result tables at the identified values: `cross_check/*.csv`{}.\n",
           o.spec.cross_check_bands
               ? ", beside every column the parameters move a `<column>_band_1sigma` (the parameters' covariance "
-                "carried by central differences, 1e-4 of each value both ways)"
+                "carried by central differences, 1e-4 both ways in each parameter's fit variable)"
               : "");
   }
   if (plots && !o.spec.data.empty()) {

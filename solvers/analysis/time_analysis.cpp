@@ -93,7 +93,7 @@ TimeLevel sweep_level(const PreparedHbm& p, const TimeSpec& spec, const timeint:
   level.amplitude = level.phase = Eigen::MatrixXd::Constant(nf, nr, kNan);
   if (tracked.pair) level.components = Eigen::MatrixXd::Constant(nf, 2, kNan);
   friction::FrictionModel m = p.model;
-  m.harmonic_load *= force;
+  friction::scale_excitation(m, force);
   if (spec.compare_harmonics > 0) {  // first: shooting on the Newmark map starts from it
     HbmSpec h = spec.system;
     h.harmonics = spec.compare_harmonics;
@@ -116,7 +116,7 @@ TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec,
   rec.frequency_hz = *spec.history_hz;
   rec.force = spec.system.force_levels.front();
   friction::FrictionModel m = p.model;
-  m.harmonic_load *= rec.force;
+  friction::scale_excitation(m, rec.force);
   const double omega = kTwoPi * rec.frequency_hz;
   rec.steady = timeint::steady_state(m, omega, options);
   if (rec.steady.cycles > 0) {
@@ -125,9 +125,8 @@ TimeHistoryRecord record_history(const PreparedHbm& p, const TimeSpec& spec,
     const timeint::NewmarkIntegrator integrator(m, n);
     timeint::RecordOptions record;
     record.dofs = p.responses;
-    rec.history =
-        timeint::integrate(integrator, rec.steady.final_state, timeint::harmonic_excitation(m.harmonic_load, omega),
-                           spec.history_cycles * spec.steps_per_period, record);
+    rec.history = timeint::integrate(integrator, rec.steady.final_state, timeint::model_excitation(m, omega),
+                                     spec.history_cycles * spec.steps_per_period, record);
   }
   return rec;
 }

@@ -217,7 +217,7 @@ TimeHistoryRecord periodic_history(const PreparedHbm& p, const TimeSpec& spec) {
   rec.frequency_hz = *spec.history_hz;
   rec.force = spec.system.force_levels.front();
   friction::FrictionModel m = p.model;
-  m.harmonic_load *= rec.force;
+  friction::scale_excitation(m, rec.force);
   const double omega = kTwoPi * rec.frequency_hz;
   Start none;
   const timeint::ShootingResult s = shoot(spec, m, omega, shooting_options(spec, p.responses), none);

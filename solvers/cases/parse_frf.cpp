@@ -30,6 +30,19 @@ std::vector<PointDof> parse_responses(TomlReader& r) {
   return out;
 }
 
+// { "A.x" = 1.0, "B.x" = -1.0 }: the coefficients of a relative displacement.
+std::vector<std::pair<PointDof, double>> parse_combination(TomlReader& r, const std::string& key) {
+  std::vector<std::pair<PointDof, double>> out;
+  for (const auto& [name, value] : r.table(key)) {
+    const std::optional<double> c = toml_number(value);
+    if (!c || !number_problem(*c).empty() || *c == 0.0)
+      r.fail(key, fmt::format("the coefficient of '{}' must be a finite nonzero number", name.str()));
+    out.emplace_back(parse_point_dof(r, key, std::string(name.str())), *c);
+  }
+  if (out.empty()) r.fail(key, "needs at least one DOF, e.g. { \"A.x\" = 1.0 }");
+  return out;
+}
+
 std::vector<FrfForce> parse_forces(TomlReader& r) {
   std::vector<FrfForce> out;
   int i = 0;

@@ -10,6 +10,7 @@
 
 #include "analysis/hbm_analysis.hpp"
 #include "cases/case_parameter.hpp"
+#include "cases/parse_base_motion.hpp"
 #include "cases/parse_frf.hpp"
 #include "cases/parse_friction_law.hpp"
 #include "cases/parse_stepped_sine.hpp"
@@ -19,19 +20,6 @@ namespace bb {
 namespace {
 
 namespace fs = std::filesystem;
-
-// { "A.x" = 1.0, "B.x" = -1.0 }: the coefficients of a relative displacement.
-std::vector<std::pair<PointDof, double>> parse_combination(TomlReader& r, const std::string& key) {
-  std::vector<std::pair<PointDof, double>> out;
-  for (const auto& [name, value] : r.table(key)) {
-    const std::optional<double> c = toml_number(value);
-    if (!c || !number_problem(*c).empty() || *c == 0.0)
-      r.fail(key, fmt::format("the coefficient of '{}' must be a finite nonzero number", name.str()));
-    out.emplace_back(parse_point_dof(r, key, std::string(name.str())), *c);
-  }
-  if (out.empty()) r.fail(key, "needs at least one DOF, e.g. { \"A.x\" = 1.0 }");
-  return out;
-}
 
 // kn, kt, mu (and n0 when `preload`), checked by the contact law itself. kn may be 0 or left out
 // (constant normal load) where `kn_optional`.
@@ -353,7 +341,16 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
       r.fail("threads", fmt::format("must lie in [1, 256] (force levels swept at once), found {}", *n));
     s.threads = static_cast<int>(*n);
   }
-  s.forces = parse_forces(r);
+  if (r.has("base_motion")) {
+    for (const char* key : {"forces", "force_levels"})
+      if (r.has(key))
+        r.fail(key,
+               "a base motion is the excitation: leave out forces and force_levels ([analysis.base_motion] "
+               "levels are its accelerations)");
+    s.base_motion = parse_base_motion(r, folder, s.force_levels);
+  } else {
+    s.forces = parse_forces(r);
+  }
   s.responses = parse_responses(r);
   for (const char* key : {"stepped_sine", "response_control"})
     if (r.has(key) && !contacts_required)
@@ -361,7 +358,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
              "only a harmonic balance analysis solves stepped sines point by point (a time analysis "
              "has stepped_sine = true)");
   // A case of stepped sines alone sweeps no band.
-  if (r.has("force_levels") || !(r.has("stepped_sine") || r.has("response_control"))) {
+  if (!s.base_motion && (r.has("force_levels") || !(r.has("stepped_sine") || r.has("response_control")))) {
     s.force_levels = r.number_array("force_levels");
     if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level [N]");
   }
@@ -472,6 +469,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
   for (const char* key : {"stepped_sine", "response_control"})
     if (r.has(key) && (s.cyclic || s.gap_damper))
       r.fail(key, "a stepped sine runs on a lumped or reduced model without [analysis.cyclic]");
+  if (s.base_motion) refuse_base_motion_misfits(r, s, contacts_required);
   return s;
 }
 

@@ -7,6 +7,7 @@
 
 #include "cases/parse_hbm.hpp"
 #include "common/errors.hpp"
+#include "reduction/reduced_model.hpp"
 
 namespace bb {
 namespace {
@@ -16,10 +17,26 @@ namespace {
 // against mu N0 = 3 N gave a "converged" motion of 0 after minutes), so such a level is refused.
 constexpr double kLargestLoadPerSlipForce = 1e12;
 
-void refuse_unresolvable_levels(const TomlReader& r, const HbmSpec& s) {
-  if (s.forces.empty() || s.force_levels.empty() || s.forces.front().amplitude == 0.0) return;
-  double pattern = 0.0;  // the largest force per newton of the first
+// The largest force per unit level: per newton of the first force, or per m/s^2 of a base motion
+// (|M r|, known here when the matrices are written in the case; 0 when unknown).
+double load_per_level(const HbmSpec& s) {
+  double pattern = 0.0;
+  if (s.base_motion) {
+    const std::optional<ReducedModel>& m = s.model.matrices;
+    if (!m) return 0.0;
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(m->size());
+    for (const auto& [dof, c] : s.base_motion->influence)
+      if (const std::optional<int> i = m->index_of(dof.point, static_cast<int>(dof.direction))) r[*i] += c;
+    return (m->mass * r).cwiseAbs().maxCoeff();
+  }
+  if (s.forces.empty() || s.forces.front().amplitude == 0.0) return 0.0;
   for (const FrfForce& f : s.forces) pattern = std::max(pattern, std::abs(f.amplitude / s.forces.front().amplitude));
+  return pattern;
+}
+
+void refuse_unresolvable_levels(const TomlReader& r, const HbmSpec& s) {
+  const double pattern = load_per_level(s);
+  if (s.force_levels.empty() || !(pattern > 0.0)) return;
   double slip = INFINITY;
   const HbmContactSpec* smallest = nullptr;
   for (const HbmContactSpec& c : s.contacts)
@@ -27,7 +44,7 @@ void refuse_unresolvable_levels(const TomlReader& r, const HbmSpec& s) {
   if (!smallest) return;  // no constant slip force: the load sets N (a damper, contacts without n0)
   const double level = *std::max_element(s.force_levels.begin(), s.force_levels.end());
   if (level * pattern > kLargestLoadPerSlipForce * slip)
-    r.fail("force_levels",
+    r.fail(s.base_motion ? "base_motion" : "force_levels",
            fmt::format("a load of {:g} N is {:.3g} times the slip force mu n0 = {:g} N of contact '{}': above {:g}, "
                        "the exact flow cannot tell its stick from its slip in the rounding of the forces; lower the "
                        "level (or raise mu n0)",
@@ -143,8 +160,16 @@ TimeSpec parse_time(TomlReader& r, const std::filesystem::path& folder) {
       r.fail("damper", fmt::format("the exact flow of shooting integrates piecewise-linear laws only, and the "
                                    "damper's {} law is not one; write period_map = \"newmark\"",
                                    t.system.damper->law->name()));
+    if (t.system.base_motion && t.system.base_motion->harmonics.size() > 1)
+      r.fail("base_motion", fmt::format("the exact flow carries the excitation's harmonic 1 alone; the base moves at "
+                                        "harmonic {} too: write period_map = \"newmark\"",
+                                        t.system.base_motion->harmonics[1].order));
     refuse_unresolvable_levels(r, t.system);
   }
+  if (t.system.base_motion && 2 * (t.system.base_motion->highest_order() + 1) > t.steps_per_period)
+    r.fail("steps_per_period",
+           fmt::format("must be at least 2 (h + 1) = {} for the base's harmonic {}",
+                       2 * (t.system.base_motion->highest_order() + 1), t.system.base_motion->highest_order()));
   return t;
 }
 

@@ -223,6 +223,21 @@ PreparedHbm prepare_hbm(const Model& model, const HbmSpec& spec, const ModelCach
   for (const FrfForce& f : spec.forces)
     m.harmonic_load[dof_index(p, blades, f.dof, in_analysis + " forces")] +=
         f.amplitude / spec.forces.front().amplitude;
+  if (spec.base_motion) {  // -M r a_b per m/s^2 of harmonic 1 (forced/base_motion_spec.hpp)
+    const Eigen::VectorXd r =
+        combination_row(p, blades, spec.base_motion->influence, n, in_analysis + " base_motion influence").transpose();
+    const Eigen::VectorXd inertia = -(m.mass * r);
+    for (const BaseHarmonic& h : spec.base_motion->harmonics) {
+      const Eigen::VectorXcd load =
+          inertia.cast<std::complex<double>>() * std::polar(h.ratio, h.phase_deg * kRadPerDeg);
+      if (h.order == 1) {
+        m.harmonic_load = load;
+      } else {
+        m.higher_loads.resize(static_cast<size_t>(h.order - 1));
+        m.higher_loads[static_cast<size_t>(h.order - 2)] = load;
+      }
+    }
+  }
   for (const PointDof& r : spec.responses) {
     p.responses.push_back(dof_index(p, blades, r, in_analysis + " responses"));
     p.response_names.push_back(r.name());

@@ -30,6 +30,9 @@ std::optional<std::string> unsupported_sensitivity(const HbmSpec& spec, const Hb
     case HbmParameter::Kind::lumped_matrix:
     case HbmParameter::Kind::modal_coordinate:  // a diagonal entry of K (and M)
       if (!spec.model.matrices) return "needs the stiffness and mass matrices written in the case ([analysis.model])";
+      if (spec.base_motion && parameter.mass)
+        return "with a base motion the load -M r a_b moves with the mass, which the sensitivities leave out: fit a "
+               "stiffness (or frequency) instead";
       if (spec.damper || spec.cyclic || spec.gap_damper)
         return "an entry of the lumped matrices is differentiated without a damper or [analysis.cyclic]";
       if (std::max(parameter.row, parameter.kind == HbmParameter::Kind::lumped_matrix ? parameter.col : 0) >=

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/source_location.hpp"
+#include "forced/base_motion_spec.hpp"
 #include "forced/linear_model_spec.hpp"
 #include "friction/aft.hpp"
 #include "friction/friction_law.hpp"
@@ -180,10 +181,14 @@ struct HbmSpec {
   std::vector<std::pair<PointDof, double>> static_loads;  // [N], besides the damper's CF
   std::vector<FrfForce> forces;                           // the excitation pattern; each level scales it
   std::vector<double> force_levels;                       // amplitude of the first force at each level [N]
-  std::vector<SteppedSineSpec> stepped_sines;             // solved at spec.harmonics after the levels
-  std::vector<ResponseControlSpec> response_controls;     // likewise
-  std::vector<PointDof> responses;                        // first-harmonic amplitudes written per level
-  std::optional<std::pair<PointDof, PointDof>> ip_oop;    // (left, right): in-phase / out-of-phase peaks
+  // Or the supports' motion as the excitation (no forces): force_levels then hold its levels, the
+  // base acceleration of harmonic 1 [m/s^2], and a stepped sine's or response control's "force"
+  // is that acceleration.
+  std::optional<BaseMotionSpec> base_motion;
+  std::vector<SteppedSineSpec> stepped_sines;           // solved at spec.harmonics after the levels
+  std::vector<ResponseControlSpec> response_controls;   // likewise
+  std::vector<PointDof> responses;                      // first-harmonic amplitudes written per level
+  std::optional<std::pair<PointDof, PointDof>> ip_oop;  // (left, right): in-phase / out-of-phase peaks
   int harmonics = 1;
   int time_samples = 0;  // AFT samples per period; 0 = automatic
   // aft = "events" (default): transitions located and the forces integrated between them (contact/

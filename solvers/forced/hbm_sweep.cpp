@@ -28,7 +28,7 @@ std::string hbm_frf_table_name(double force) { return fmt::format("frf_{:g}", fo
 
 hbm::HarmonicBalance level_system(const PreparedHbm& p, const HbmSpec& spec, double force, int harmonics, int samples) {
   friction::FrictionModel m = p.model;
-  m.harmonic_load *= force;
+  friction::scale_excitation(m, force);
   hbm::HbmOptions options;
   options.harmonics = harmonics;
   options.aft.samples = samples;

@@ -46,6 +46,19 @@ Eigen::MatrixXcd dynamic_stiffness(const FrictionModel& m, int harmonic, double 
   return d;
 }
 
+Eigen::VectorXcd excitation_at(const FrictionModel& m, int harmonic) {
+  if (harmonic == 1) return m.harmonic_load.size() > 0 ? m.harmonic_load : Eigen::VectorXcd::Zero(m.mass.rows());
+  const auto k = static_cast<size_t>(harmonic - 2);
+  if (harmonic < 2 || k >= m.higher_loads.size() || m.higher_loads[k].size() == 0)
+    return Eigen::VectorXcd::Zero(m.mass.rows());
+  return m.higher_loads[k];
+}
+
+void scale_excitation(FrictionModel& m, double factor) {
+  m.harmonic_load *= factor;
+  for (Eigen::VectorXcd& f : m.higher_loads) f *= factor;
+}
+
 void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowed, bool two_directions_allowed) {
   const Index n = m.mass.rows();
   const auto fail = [&who](const std::string& what) { throw std::invalid_argument(fmt::format("{}: {}", who, what)); };
@@ -59,6 +72,14 @@ void validate_model(FrictionModel& m, const std::string& who, bool cyclic_allowe
   if (m.static_load.size() != n || m.harmonic_load.size() != n)
     fail(fmt::format("loads must have {} entries (one per DOF)", n));
   if (!m.static_load.allFinite() || !m.harmonic_load.allFinite()) fail("loads must be finite");
+  for (size_t k = 0; k < m.higher_loads.size(); ++k) {
+    Eigen::VectorXcd& f = m.higher_loads[k];
+    if (f.size() == 0) f = Eigen::VectorXcd::Zero(n);
+    if (f.size() != n || !f.allFinite())
+      fail(fmt::format("the load of harmonic {} must have {} finite entries", k + 2, n));
+  }
+  if (!m.higher_loads.empty() && !m.nodal_diameters.empty())
+    fail("a cyclic sector takes a load of harmonic 1 only (an engine order's travelling wave)");
   validate_nodal_diameters(m, fail, cyclic_allowed);
   for (size_t k = 0; k < m.contacts.size(); ++k) {
     ContactElement& e = m.contacts[k];

@@ -87,8 +87,16 @@ struct FrictionModel {
   std::vector<ContactElement> contacts;      // at least one for the harmonic balance
   Eigen::VectorXd static_load;               // n [N]; empty = none (e.g. centrifugal force on the damper)
   Eigen::VectorXcd harmonic_load;            // n [N], complex amplitude at harmonic 1; empty = none
-  CyclicLinearModel nodal_diameters{};       // the harmonic balance only; empty = none
+  // Harmonics 2, 3, ... of the excitation (a base motion's distortion), entry k at harmonic k + 2,
+  // each n complex amplitudes [N]; empty = harmonic 1 alone. Not with nodal diameters.
+  std::vector<Eigen::VectorXcd> higher_loads;
+  CyclicLinearModel nodal_diameters{};  // the harmonic balance only; empty = none
 };
+
+// The excitation's complex amplitudes at harmonic h >= 1 (zero above the last given), n entries.
+Eigen::VectorXcd excitation_at(const FrictionModel& model, int harmonic);
+// Multiplies every harmonic of the excitation by `factor` (a force or base level).
+void scale_excitation(FrictionModel& model, double factor);
 
 // D_h = K + i h w C - (h w)^2 M, with the nodal diameter's operators for h >= 1 where the model has
 // them; hw = h w [rad/s].

@@ -24,11 +24,10 @@ friction::FrictionModel validated(friction::FrictionModel model) {
   return model;
 }
 
-// The loads of harmonic h on all DOFs: f_static at h = 0, F at h = 1, none above.
+// The loads of harmonic h on all DOFs: f_static at h = 0, the excitation's harmonic h above.
 Eigen::VectorXcd harmonic_load(const friction::FrictionModel& m, int h) {
   if (h == 0) return m.static_load.cast<Complex>();
-  if (h == 1) return m.harmonic_load;
-  return Eigen::VectorXcd::Zero(m.mass.rows());
+  return friction::excitation_at(m, h);
 }
 
 // The Jacobian of a contact of two tangential directions, g = A^T [T_1; T_2; N] with the rows
@@ -99,6 +98,7 @@ HarmonicBalance::HarmonicBalance(friction::FrictionModel model, HbmOptions optio
   double preload = 0.0;
   for (const friction::ContactElement& e : model_.contacts) preload += (1.0 + e.point.mu) * e.point.n0;
   force_scale_ = model_.static_load.norm() + model_.harmonic_load.norm() + preload;
+  for (const Eigen::VectorXcd& f : model_.higher_loads) force_scale_ += f.norm();
 }
 
 Index HarmonicBalance::unknowns() const {
@@ -127,8 +127,7 @@ std::optional<HarmonicBalance::Linear> HarmonicBalance::condense(double omega) c
         return;
       }
       const Eigen::MatrixXcd& reduced = d.reduced();
-      const Eigen::VectorXcd load =
-          h <= 1 ? d.condense(harmonic_load(model_, h)).contact : Eigen::VectorXcd(Eigen::VectorXcd::Zero(nc));
+      const Eigen::VectorXcd load = d.condense(harmonic_load(model_, h)).contact;
       if (h == 0) {
         linear.operator_.topLeftCorner(nc, nc) = reduced.real();
         linear.load.head(nc) = load.real();

@@ -15,11 +15,14 @@ CycleEnergy cycle_energy(const HarmonicBalance& s, const HbmSolution& solution) 
   const Index n = q.rows();
   const int harmonics = s.options().harmonics;
   CycleEnergy e;
-  // Excitation: harmonic 1 only, f = Re F cos - Im F sin.
+  // Excitation: f = Re F_h cos(h w t) - Im F_h sin(h w t) at each harmonic it has.
   for (Index i = 0; i < n; ++i) {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(q.cols()), qi = q.row(i).transpose();
-    f[1] = model.harmonic_load[i].real();
-    f[2] = -model.harmonic_load[i].imag();
+    for (int h = 1; h <= harmonics; ++h) {
+      const std::complex<double> load = friction::excitation_at(model, h)[i];
+      f[2 * h - 1] = load.real();
+      f[2 * h] = -load.imag();
+    }
     e.excitation += friction::cycle_work(f, qi);
   }
   // Viscous: integral over a period of q'^T C q' = pi h^2 w (a^T C a + b^T C b) per harmonic.

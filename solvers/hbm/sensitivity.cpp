@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
@@ -47,7 +48,9 @@ void check_sizes(const friction::FrictionModel& model, const std::vector<ModelDe
       throw std::invalid_argument(
           fmt::format("sensitivity: derivative {}: dM, dC and dK must be empty or {} x {}", j, n, n));
     if ((d.static_load.size() != 0 && d.static_load.size() != n) ||
-        (d.harmonic_load.size() != 0 && d.harmonic_load.size() != n))
+        (d.harmonic_load.size() != 0 && d.harmonic_load.size() != n) ||
+        std::any_of(d.higher_loads.begin(), d.higher_loads.end(),
+                    [n](const Eigen::VectorXcd& f) { return f.size() != 0 && f.size() != n; }))
       throw std::invalid_argument(
           fmt::format("sensitivity: derivative {}: load derivatives must be empty or have {} entries", j, n));
     if (!d.laws.empty() && d.laws.size() != model.contacts.size())
@@ -117,6 +120,8 @@ Sensitivities compute(const HarmonicBalance& s, const HbmSolution& solution,
       if (d.damping.size() > 0) r += Complex(0.0, hw) * (d.damping * qh);
       if (h == 0 && d.static_load.size() > 0) r -= d.static_load.cast<Complex>();
       if (h == 1 && d.harmonic_load.size() > 0) r -= d.harmonic_load;
+      if (h >= 2 && static_cast<size_t>(h - 2) < d.higher_loads.size() && d.higher_loads[h - 2].size() > 0)
+        r -= d.higher_loads[static_cast<size_t>(h - 2)];
       Eigen::VectorXcd rc = rows_of(r, c);
       if (no > 0) {
         Eigen::VectorXcd y = doo_lu[static_cast<size_t>(h)].solve(rows_of(r, o));
@@ -223,6 +228,7 @@ ModelDerivative damping_scale_derivative(const friction::FrictionModel& model) {
 ModelDerivative excitation_scale_derivative(const friction::FrictionModel& model) {
   ModelDerivative d;
   d.harmonic_load = model.harmonic_load;
+  d.higher_loads = model.higher_loads;
   return d;
 }
 

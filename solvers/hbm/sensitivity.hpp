@@ -32,6 +32,7 @@ struct ModelDerivative {
   Eigen::MatrixXd mass, damping, stiffness;  // dM/dp, dC/dp, dK/dp (n x n)
   Eigen::VectorXd static_load;               // df_static/dp (n)
   Eigen::VectorXcd harmonic_load;            // dF/dp (n), complex amplitude at harmonic 1
+  std::vector<Eigen::VectorXcd> higher_loads;  // at harmonics 2, 3, ... (FrictionModel::higher_loads)
   // One entry per contact: d(kn, kt, mu, n0)/dp in the fields of the same name; empty = none.
   std::vector<friction::PointParameters> laws;
 };

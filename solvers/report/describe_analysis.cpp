@@ -101,10 +101,7 @@ void describe(const TimeSpec& spec, const TimeOutcome& time, RunRecord& run) {
                   spec.steps_per_period, format_setting(spec.system.sweep.f_min),
                   format_setting(spec.system.sweep.f_max), format_setting(spec.system.sweep.step_hz),
                   format_setting(spec.steady_tolerance), spec.max_cycles, spec.system.harmonics));
-  std::string levels;
-  for (double f : spec.system.force_levels)
-    levels += fmt::format("{}{}", levels.empty() ? "" : ", ", format_setting(f));
-  run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
+  describe_levels(spec.system, run);
   const std::string contacts = describe_contacts(p, spec.system);
   run.facts.emplace_back("contacts", contacts.empty() ? "none (linear model)" : contacts);
   run.facts.emplace_back("model DOFs", std::to_string(p.model.mass.rows()));

@@ -250,10 +250,31 @@ std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec) {
   return out;
 }
 
-void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
-  const PreparedHbm& p = hbm.prepared;
+void describe_levels(const HbmSpec& spec, RunRecord& run) {
   std::string levels;
   for (double f : spec.force_levels) levels += fmt::format("{}{}", levels.empty() ? "" : ", ", format_setting(f));
+  if (!spec.base_motion) {
+    run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
+    return;
+  }
+  const BaseMotionSpec& b = *spec.base_motion;
+  run.facts.emplace_back("base motion levels [m/s^2] (base acceleration of harmonic 1)", levels);
+  std::string influence, harmonics;
+  for (const auto& [dof, c] : b.influence)
+    influence += fmt::format("{}{} {}", influence.empty() ? "" : ", ", format_setting(c), dof.name());
+  for (const BaseHarmonic& h : b.harmonics)
+    harmonics += fmt::format("{}h = {}: {} at {} deg", harmonics.empty() ? "" : ", ", h.order, format_setting(h.ratio),
+                             format_setting(h.phase_deg));
+  run.facts.emplace_back(
+      "base motion",
+      fmt::format(
+          "the supports move with acceleration a_b(t); the load is -M r a_b with r = {}; responses and contacts "
+          "are relative to the base; harmonics (acceleration relative to harmonic 1's) {}{}",
+          influence, harmonics, b.file.empty() ? "" : fmt::format(", from the measured period {}", b.file)));
+}
+
+void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
+  const PreparedHbm& p = hbm.prepared;
   const std::string damping =
       spec.damping_matrix ? "damping matrix given in the case"
       : spec.damping.kind == FrfDamping::Kind::modal
@@ -271,7 +292,7 @@ void describe(const HbmSpec& spec, const HbmOutcome& hbm, RunRecord& run) {
       "analysis", fmt::format("harmonic balance, H = {}, {} time samples per period, {} to {} Hz by {}; {}",
                               spec.harmonics, spec.time_samples > 0 ? format_setting(spec.time_samples) : "automatic",
                               format_setting(spec.sweep.f_min), format_setting(spec.sweep.f_max), sweep, damping));
-  run.facts.emplace_back("force levels [N] (amplitude of the first force)", levels);
+  describe_levels(spec, run);
   if (spec.cyclic)
     run.facts.emplace_back(
         "cyclic symmetry",

@@ -20,4 +20,7 @@ std::string describe_modal_ratios(const FrfDamping& d);
 // when it is not a single Jenkins slider), "; "-separated; empty without contacts.
 std::string describe_contacts(const PreparedHbm& p, const HbmSpec& spec);
 
+// The excitation's levels as a run fact: force levels, or a base motion's accelerations and harmonics.
+void describe_levels(const HbmSpec& spec, RunRecord& run);
+
 }  // namespace bb

@@ -70,6 +70,19 @@ Excitation harmonic_excitation(const Eigen::VectorXcd& amplitude, double omega_r
   };
 }
 
+Excitation model_excitation(const friction::FrictionModel& model, double omega_rad_s) {
+  if (model.higher_loads.empty()) return harmonic_excitation(model.harmonic_load, omega_rad_s);
+  std::vector<Eigen::VectorXcd> loads{model.harmonic_load};
+  for (const Eigen::VectorXcd& f : model.higher_loads) loads.push_back(f);
+  return [loads, omega_rad_s](double t) -> VectorXd {
+    VectorXd f = VectorXd::Zero(loads.front().size());
+    for (size_t k = 0; k < loads.size(); ++k)
+      if (loads[k].size() > 0)
+        f += (loads[k] * std::exp(std::complex<double>(0.0, static_cast<double>(k + 1) * omega_rad_s * t))).real();
+    return f;
+  };
+}
+
 Excitation no_excitation(Index dofs) {
   return [dofs](double) -> VectorXd { return VectorXd::Zero(dofs); };
 }

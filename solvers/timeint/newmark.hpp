@@ -58,6 +58,8 @@ using Excitation = std::function<Eigen::VectorXd(double)>;
 
 // f(t) = Re(F e^{i omega t}) (cos for real F): the harmonic_load of a friction::FrictionModel.
 Excitation harmonic_excitation(const Eigen::VectorXcd& amplitude, double omega_rad_s);
+// f(t) = Re sum_h F_h e^{i h omega t} over the model's excitation (harmonic_load and higher_loads).
+Excitation model_excitation(const friction::FrictionModel& model, double omega_rad_s);
 // f(t) = 0.
 Excitation no_excitation(Eigen::Index dofs);
 

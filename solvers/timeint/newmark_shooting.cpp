@@ -23,7 +23,7 @@ class NewmarkPeriod {
  public:
   NewmarkPeriod(const friction::FrictionModel& model, double omega, int steps, double alpha)
       : integrator_(model, {.time_step = kTwoPi / (omega * steps), .alpha = alpha}),
-        excitation_(harmonic_excitation(integrator_.model().harmonic_load, omega)),
+        excitation_(model_excitation(integrator_.model(), omega)),
         omega_(omega),
         steps_(steps),
         n_(model.mass.rows()),

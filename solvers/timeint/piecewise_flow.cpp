@@ -55,6 +55,10 @@ PiecewiseFlow::PiecewiseFlow(const friction::FrictionModel& model, double omega_
       nc_(static_cast<Index>(model.contacts.size())),
       size_(2 * n_ + nc_ + 3) {
   if (!(omega_ > 0.0 && std::isfinite(omega_))) throw std::invalid_argument("exact flow: omega must be finite and > 0");
+  for (const Eigen::VectorXcd& f : model_.higher_loads)  // the flow carries one harmonic oscillator: harmonic 1
+    if (f.size() > 0 && !f.isZero(0.0))
+      throw std::invalid_argument(
+          "exact flow: the excitation has harmonics above the first (a base motion's): use period_map = \"newmark\"");
   for (const friction::ContactElement& c : model.contacts)
     if (!c.law->piecewise_linear())
       throw std::invalid_argument(fmt::format(

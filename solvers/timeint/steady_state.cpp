@@ -160,7 +160,7 @@ SteadyState steady_state(const friction::FrictionModel& model, double omega, con
   for (const Index i : options.dofs)
     if (i < 0 || i >= n)
       throw std::invalid_argument(fmt::format("steady state: tracked DOF {} is not in [0, {})", i, n));
-  const Excitation excitation = harmonic_excitation(integrator.model().harmonic_load, omega);
+  const Excitation excitation = model_excitation(integrator.model(), omega);
 
   SteadyState out;
   out.omega = omega;

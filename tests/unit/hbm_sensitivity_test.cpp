@@ -53,7 +53,7 @@ friction::FrictionModel scaled(friction::FrictionModel m, int which, double s) {
     if (which == p_n0) c.point.n0 *= s;
   }
   if (which == p_zeta) m.damping *= s;
-  if (which == p_load) m.harmonic_load *= s;
+  if (which == p_load) friction::scale_excitation(m, s);
   return m;
 }
 
@@ -212,6 +212,14 @@ TEST(HbmSensitivity, OneDofOscillatorMatchesCentralDifferencesInEveryRegime) {
   compare(oscillator(law, 200.0, 0.0), 3, 900.0, Regime::gross_slip, "1-DOF");
   compare(oscillator({.kn = 2.0e6, .kt = 1.0e6, .mu = 0.3, .n0 = 10.0}, 30.0, 0.5), 3, 1200.0, Regime::lift_off,
           "1-DOF");
+}
+
+TEST(HbmSensitivity, LoadOfSeveralHarmonicsMatchesCentralDifferences) {
+  // A distorted excitation (a shaker's third harmonic): every derivative carries it.
+  const friction::PointParameters law{.kn = 2.0e5, .kt = 1.0e6, .mu = 0.3, .n0 = 100.0};
+  friction::FrictionModel m = oscillator(law, 20.0, 0.0);
+  m.higher_loads = {Eigen::VectorXcd(), Eigen::VectorXcd::Constant(1, std::complex<double>(3.0, 2.0))};
+  compare(m, 5, 1300.0, Regime::stick_slip, "1-DOF h1+h3");
 }
 
 TEST(HbmSensitivity, BladeOnGroundMatchesCentralDifferencesInEveryRegime) {

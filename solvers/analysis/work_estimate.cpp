@@ -6,25 +6,12 @@
 #include <cmath>
 
 #include "friction/masing.hpp"
+#include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
 
-// Nonzeros of a stiffness row: the DOFs of the nodes an element shares with a node.
-double row_nonzeros(ElementType type) {
-  switch (type) {
-    case ElementType::q4:
-      return 18.0;
-    case ElementType::cst:
-      return 14.0;
-    case ElementType::hex8:
-    case ElementType::hex8i:
-      return 81.0;
-    case ElementType::hex20:
-      return 180.0;
-  }
-  return 81.0;
-}
+double row_nonzeros(ElementType type) { return topology(type).row_nonzeros; }
 
 // Adds b to a: operations and bytes summed, the basis and key of the larger part kept.
 WorkEstimate combine(WorkEstimate a, const WorkEstimate& b) {

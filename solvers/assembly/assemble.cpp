@@ -7,22 +7,22 @@
 
 #include "assembly/sparsity.hpp"
 #include "common/errors.hpp"
-#include "fe/solid.hpp"
+#include "fe/element_traits.hpp"
 #include "mesh/element_coords.hpp"
 #include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
 
-template <int N, int D, typename Props, typename StiffFn, typename MassFn>
-void assemble_block(const Mesh& mesh, const ElementBlock& block, const Props& props, const NodalPattern& pattern,
-                    StiffFn stiff, MassFn mass, GlobalMatrices& g, const AssemblyOptions& options) {
+template <class E>
+void assemble_block(const Mesh& mesh, const ElementBlock& block, const fe::Materials& materials,
+                    const NodalPattern& pattern, GlobalMatrices& g, const AssemblyOptions& options) {
   for (Eigen::Index e = 0; e < block.conn.rows(); ++e) {
     const int* nodes = block.conn.row(e).data();
-    const auto xyz = element_coords<N, D>(mesh, nodes);
+    const auto xyz = element_coords<E::nodes, E::dim>(mesh, nodes);
     try {
-      if (options.stiffness) pattern.add(g.stiffness, nodes, N, stiff(xyz, props));
-      if (options.mass) pattern.add(g.mass, nodes, N, mass(xyz, props));
+      if (options.stiffness) pattern.add(g.stiffness, nodes, E::nodes, E::stiffness(xyz, materials));
+      if (options.mass) pattern.add(g.mass, nodes, E::nodes, E::mass(xyz, materials));
     } catch (const std::domain_error& err) {
       throw InputError(fmt::format("element {} ({}): {}", block.ids[e], element_name(block.type), err.what()));
     }
@@ -40,26 +40,9 @@ GlobalMatrices assemble(const Mesh& mesh, const fe::PlaneSection& section, const
   if (options.stiffness) g.stiffness = pattern.zero_matrix();
   if (options.mass) g.mass = pattern.zero_matrix();
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  for (const auto& b : mesh.blocks) {
-    switch (b.type) {
-      case ElementType::q4:
-        assemble_block<4, 2>(mesh, b, section, pattern, fe::q4_stiffness, fe::q4_consistent_mass, g, options);
-        break;
-      case ElementType::cst:
-        assemble_block<3, 2>(mesh, b, section, pattern, fe::cst_stiffness, fe::cst_consistent_mass, g, options);
-        break;
-      case ElementType::hex8:
-        assemble_block<8, 3>(mesh, b, solid, pattern, fe::hex8_stiffness, fe::hex8_consistent_mass, g, options);
-        break;
-      case ElementType::hex8i:
-        assemble_block<8, 3>(mesh, b, solid, pattern, fe::hex8_incompatible_stiffness, fe::hex8_consistent_mass, g,
-                             options);
-        break;
-      case ElementType::hex20:
-        assemble_block<20, 3>(mesh, b, solid, pattern, fe::hex20_stiffness, fe::hex20_consistent_mass, g, options);
-        break;
-    }
-  }
+  const fe::Materials materials{section, solid};
+  for (const auto& b : mesh.blocks)
+    fe::with_element(b.type, [&]<class E>(E) { assemble_block<E>(mesh, b, materials, pattern, g, options); });
   // The mass pattern carries the stiffness's direction coupling, which mass never has.
   if (options.mass) g.mass.prune(0.0);
   return g;

@@ -7,8 +7,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
-#include "fe/plane_stress.hpp"
-#include "fe/solid.hpp"
+#include "fe/element_traits.hpp"
 #include "fe/surface_load.hpp"
 #include "mesh/boundary.hpp"
 #include "mesh/element_topology.hpp"
@@ -114,27 +113,12 @@ Eigen::VectorXd surface_load_vector(const Mesh& mesh, double thickness, const Su
 Eigen::VectorXd body_load_vector(const Mesh& mesh, const fe::PlaneSection& section, const BodyLoad& load) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh.n_nodes()) * mesh.dim);
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  for (const ElementBlock& b : mesh.blocks) {
-    switch (b.type) {
-      case ElementType::q4:
-        add_body_block<4, 2>(
-            mesh, b, load, [&](const auto& x) { return fe::q4_consistent_mass(x, section); }, f);
-        break;
-      case ElementType::cst:
-        add_body_block<3, 2>(
-            mesh, b, load, [&](const auto& x) { return fe::cst_consistent_mass(x, section); }, f);
-        break;
-      case ElementType::hex8:
-      case ElementType::hex8i:  // hex8i's mass is hex8's (the bubbles carry none)
-        add_body_block<8, 3>(
-            mesh, b, load, [&](const auto& x) { return fe::hex8_consistent_mass(x, solid); }, f);
-        break;
-      case ElementType::hex20:
-        add_body_block<20, 3>(
-            mesh, b, load, [&](const auto& x) { return fe::hex20_consistent_mass(x, solid); }, f);
-        break;
-    }
-  }
+  const fe::Materials materials{section, solid};
+  for (const ElementBlock& b : mesh.blocks)
+    fe::with_element(b.type, [&]<class E>(E) {
+      add_body_block<E::nodes, E::dim>(
+          mesh, b, load, [&](const auto& x) { return E::mass(x, materials); }, f);
+    });
   return f;
 }
 

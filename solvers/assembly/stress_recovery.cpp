@@ -7,8 +7,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
-#include "fe/initial_stress.hpp"
-#include "fe/stress_recovery.hpp"
+#include "fe/element_traits.hpp"
 #include "mesh/element_coords.hpp"
 
 namespace bb {
@@ -27,14 +26,13 @@ struct BlockNodal {
   Eigen::MatrixXd values;  // (elements * nodes) x components
 };
 
-// Runs `point_stresses(xyz, ue)` -> components x points and `integration_points(xyz)` -> dim x points
-// on every element of the block; extrapolates with `extrapolation` (nodes x points).
-template <int N, int D, int P, typename StressFn, typename PointsFn>
+// The element's Gauss-point stresses (components x points) on every element of the block,
+// extrapolated to its nodes; the points' coordinates too where `points` asks.
+template <class E>
 BlockNodal recover_block(const Mesh& mesh, const ElementBlock& block, const Eigen::MatrixXd& u,
-                         const Eigen::Matrix<double, N, P>& extrapolation, StressFn point_stresses,
-                         PointsFn integration_points, IntegrationPointStresses* points, Eigen::MatrixXd& sum,
+                         const fe::Materials& materials, IntegrationPointStresses* points, Eigen::MatrixXd& sum,
                          Eigen::VectorXi& count) {
-  constexpr int C = D == 2 ? 3 : 6;
+  constexpr int N = E::nodes, D = E::dim, P = E::points, C = D == 2 ? 3 : 6;
   BlockNodal out;
   out.values.resize(block.conn.rows() * N, C);
   for (Eigen::Index e = 0; e < block.conn.rows(); ++e) {
@@ -42,19 +40,19 @@ BlockNodal recover_block(const Mesh& mesh, const ElementBlock& block, const Eige
     const auto xyz = element_coords<N, D>(mesh, nodes);
     Eigen::Matrix<double, C, P> s;
     try {
-      s = point_stresses(xyz, element_displacements<N, D>(u, nodes));
+      s = E::point_stresses(xyz, element_displacements<N, D>(u, nodes), materials);
     } catch (const std::domain_error& err) {
       throw InputError(
           fmt::format("element {} ({}): {}", block.ids[static_cast<size_t>(e)], element_name(block.type), err.what()));
     }
-    const Eigen::Matrix<double, N, C> nodal = extrapolation * s.transpose();
+    const Eigen::Matrix<double, N, C> nodal = E::extrapolation() * s.transpose();
     out.values.middleRows(e * N, N) = nodal;
     for (int a = 0; a < N; ++a) {
       sum.row(nodes[a]) += nodal.row(a);
       ++count[nodes[a]];
     }
     if (points) {
-      const Eigen::Matrix<double, D, P> x = integration_points(xyz);
+      const Eigen::Matrix<double, D, P> x = E::integration_points(xyz);
       const Eigen::Index first = static_cast<Eigen::Index>(points->element.size());  // rows allocated up front
       for (int p = 0; p < P; ++p) {
         points->element.push_back(block.ids[static_cast<size_t>(e)]);
@@ -68,18 +66,7 @@ BlockNodal recover_block(const Mesh& mesh, const ElementBlock& block, const Eige
 }
 
 int integration_point_count(ElementType type) {
-  switch (type) {
-    case ElementType::q4:
-      return 4;
-    case ElementType::cst:
-      return 1;
-    case ElementType::hex8:
-    case ElementType::hex8i:
-      return 8;
-    case ElementType::hex20:
-      return 27;
-  }
-  return 0;
+  return fe::with_element(type, []<class E>(E) { return E::points; });
 }
 
 }  // namespace
@@ -111,43 +98,15 @@ StressField recover_stresses(const Mesh& mesh, const fe::PlaneSection& section, 
   }
   IntegrationPointStresses* points = field.points ? &*field.points : nullptr;
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
+  const fe::Materials materials{section, solid};
   const Eigen::MatrixXd& u = displacements;
   std::vector<BlockNodal> per_block;
   for (const ElementBlock& b : mesh.blocks) {
     if (element_dimension(b.type) != mesh.dim)
       throw InputError(fmt::format("{} elements in a {}D mesh", element_name(b.type), mesh.dim));
-    switch (b.type) {
-      case ElementType::q4:
-        per_block.push_back(recover_block<4, 2, 4>(
-            mesh, b, u, fe::q4_extrapolation(),
-            [&](const auto& x, const auto& ue) { return fe::q4_point_stresses(x, ue, section); },
-            fe::q4_integration_points, points, sum, field.elements));
-        break;
-      case ElementType::cst:
-        per_block.push_back(recover_block<3, 2, 1>(
-            mesh, b, u, fe::cst_extrapolation(),
-            [&](const auto& x, const auto& ue) { return fe::cst_point_stresses(x, ue, section); },
-            fe::cst_integration_points, points, sum, field.elements));
-        break;
-      case ElementType::hex8:
-        per_block.push_back(recover_block<8, 3, 8>(
-            mesh, b, u, fe::hex8_extrapolation(),
-            [&](const auto& x, const auto& ue) { return fe::hex8_point_stresses(x, ue, solid); },
-            fe::hex8_integration_points, points, sum, field.elements));
-        break;
-      case ElementType::hex8i:
-        per_block.push_back(recover_block<8, 3, 8>(
-            mesh, b, u, fe::hex8_extrapolation(),
-            [&](const auto& x, const auto& ue) { return fe::hex8_incompatible_point_stresses(x, ue, solid); },
-            fe::hex8_integration_points, points, sum, field.elements));
-        break;
-      case ElementType::hex20:
-        per_block.push_back(recover_block<20, 3, 27>(
-            mesh, b, u, fe::hex20_extrapolation(),
-            [&](const auto& x, const auto& ue) { return fe::hex20_point_stresses(x, ue, solid); },
-            fe::hex20_integration_points, points, sum, field.elements));
-        break;
-    }
+    fe::with_element(b.type, [&]<class E>(E) {
+      per_block.push_back(recover_block<E>(mesh, b, u, materials, points, sum, field.elements));
+    });
   }
   field.nodal = sum;
   for (int n = 0; n < mesh.n_nodes(); ++n)

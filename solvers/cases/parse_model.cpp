@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "cases/parse_bladed_disk.hpp"
 #include "cases/parse_common.hpp"
 #include "cases/parse_dimensions.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
+#include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
@@ -18,9 +21,10 @@ namespace {
 namespace fs = std::filesystem;
 
 ElementType parse_element(TomlReader& r) {
-  const std::string e = r.choice("element", {"q4", "cst", "hex8", "hex8i", "hex20"});
-  for (ElementType t : {ElementType::q4, ElementType::cst, ElementType::hex8, ElementType::hex8i, ElementType::hex20})
-    if (element_name(t) == e) return t;
+  std::vector<std::string> names;
+  for (ElementType t : element_types()) names.emplace_back(element_name(t));
+  const std::string e = r.choice("element", names);
+  if (const std::optional<ElementType> t = element_type_named(e)) return *t;
   r.fail("element", "unreachable");
 }
 
@@ -65,7 +69,7 @@ HexBlockSpec parse_hex_block(TomlReader r, ElementType element, std::string& bod
   b.nx = parse_divisions(r, "nx");
   b.ny = parse_divisions(r, "ny");
   b.nz = parse_divisions(r, "nz");
-  if (const double nodes = (b.nx + 1.0) * (b.ny + 1.0) * (b.nz + 1.0) * (element == ElementType::hex20 ? 4.0 : 1.0);
+  if (const double nodes = (b.nx + 1.0) * (b.ny + 1.0) * (b.nz + 1.0) * (topology(element).quadratic() ? 4.0 : 1.0);
       nodes > static_cast<double>(kMaxGeneratedNodes))
     r.fail("nx", fmt::format("{} x {} x {} {} divisions make about {:.3g} nodes, above the limit of {} for a "
                              "generated mesh",
@@ -89,7 +93,7 @@ double smallest_node_spacing(const HexBlockSpec& b) {
   static constexpr int kEdges[12][3] = {{0, 1, 0}, {3, 2, 0}, {4, 5, 0}, {7, 6, 0}, {0, 3, 1}, {1, 2, 1},
                                         {4, 7, 1}, {5, 6, 1}, {0, 4, 2}, {1, 5, 2}, {2, 6, 2}, {3, 7, 2}};
   const int divisions[3] = {b.nx, b.ny, b.nz};
-  const double per_division = b.element == ElementType::hex20 ? 2.0 : 1.0;
+  const double per_division = topology(b.element).quadratic() ? 2.0 : 1.0;
   double out = INFINITY;
   for (const auto& e : kEdges)
     out = std::min(out, (b.corners[e[1]] - b.corners[e[0]]).norm() / (divisions[e[2]] * per_division));

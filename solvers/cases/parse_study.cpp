@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "cases/parse_common.hpp"
+#include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
@@ -135,13 +136,10 @@ ModalRefinementStudySpec parse_modal_study(TomlReader r) {
   }
   if (s.refinements.size() < 2) r.fail("refinements", "need at least 2 levels");
   for (const std::string& e : r.string_array("elements")) {
-    bool known = false;
-    for (ElementType t : {ElementType::hex8, ElementType::hex8i, ElementType::hex20})
-      if (element_name(t) == e) {
-        s.elements.push_back(t);
-        known = true;
-      }
-    if (!known) r.fail("elements", fmt::format("unknown solid element '{}'; expected hex8, hex8i or hex20", e));
+    const std::optional<ElementType> t = element_type_named(e);
+    if (!t || topology(*t).dimension != 3)
+      r.fail("elements", fmt::format("unknown solid element '{}'; expected hex8, hex8i or hex20", e));
+    s.elements.push_back(*t);
   }
   if (s.elements.empty()) r.fail("elements", "needs at least one element type");
   if (const auto m = r.optional_integer("modes")) {

@@ -6,8 +6,7 @@
 
 #include "assembly/sparsity.hpp"
 #include "common/errors.hpp"
-#include "fe/initial_stress.hpp"
-#include "fe/solid.hpp"
+#include "fe/element_traits.hpp"
 #include "mesh/element_coords.hpp"
 
 namespace bb::ffrf {
@@ -37,22 +36,10 @@ void for_each_element(const ElementBlock& block, Fn fn) {
 // The scalar consistent mass m_ab of an element, whatever its type.
 Eigen::MatrixXd scalar_mass(ElementType type, const Mesh& mesh, const int* nodes, const fe::PlaneSection& section) {
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  Eigen::MatrixXd expanded;
-  switch (type) {
-    case ElementType::q4:
-      expanded = fe::q4_consistent_mass(element_coords<4, 2>(mesh, nodes), section);
-      break;
-    case ElementType::cst:
-      expanded = fe::cst_consistent_mass(element_coords<3, 2>(mesh, nodes), section);
-      break;
-    case ElementType::hex8:
-    case ElementType::hex8i:
-      expanded = fe::hex8_consistent_mass(element_coords<8, 3>(mesh, nodes), solid);
-      break;
-    case ElementType::hex20:
-      expanded = fe::hex20_consistent_mass(element_coords<20, 3>(mesh, nodes), solid);
-      break;
-  }
+  const fe::Materials materials{section, solid};
+  const Eigen::MatrixXd expanded = fe::with_element(type, [&]<class E>(E) -> Eigen::MatrixXd {
+    return E::mass(element_coords<E::nodes, E::dim>(mesh, nodes), materials);
+  });
   const int dim = element_dimension(type), n = nodes_per_element(type);
   Eigen::MatrixXd m(n, n);
   for (int b = 0; b < n; ++b)
@@ -71,36 +58,13 @@ Eigen::MatrixXd kron(const Eigen::MatrixXd& m, const Eigen::MatrixXd& block) {
 void add_geometric_stiffness(const Mesh& mesh, const ElementBlock& block, const fe::PlaneSection& section,
                              const Eigen::VectorXd& u, const NodalPattern& pattern, Eigen::SparseMatrix<double>& k) {
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  for_each_element(block, [&](const int* nodes) {
-    switch (block.type) {
-      case ElementType::q4: {
-        const auto xy = element_coords<4, 2>(mesh, nodes);
-        const auto s = fe::q4_point_stresses(xy, element_displacement<4, 2>(u, nodes), section);
-        pattern.add(k, nodes, 4, fe::q4_geometric_stiffness(xy, s, section.thickness));
-        break;
-      }
-      case ElementType::cst: {
-        const auto xy = element_coords<3, 2>(mesh, nodes);
-        const auto s = fe::cst_point_stresses(xy, element_displacement<3, 2>(u, nodes), section);
-        pattern.add(k, nodes, 3, fe::cst_geometric_stiffness(xy, s, section.thickness));
-        break;
-      }
-      case ElementType::hex8:
-      case ElementType::hex8i: {
-        const auto xyz = element_coords<8, 3>(mesh, nodes);
-        const auto ue = element_displacement<8, 3>(u, nodes);
-        const auto s = block.type == ElementType::hex8 ? fe::hex8_point_stresses(xyz, ue, solid)
-                                                       : fe::hex8_incompatible_point_stresses(xyz, ue, solid);
-        pattern.add(k, nodes, 8, fe::hex8_geometric_stiffness(xyz, s));
-        break;
-      }
-      case ElementType::hex20: {
-        const auto xyz = element_coords<20, 3>(mesh, nodes);
-        const auto s = fe::hex20_point_stresses(xyz, element_displacement<20, 3>(u, nodes), solid);
-        pattern.add(k, nodes, 20, fe::hex20_geometric_stiffness(xyz, s));
-        break;
-      }
-    }
+  const fe::Materials materials{section, solid};
+  fe::with_element(block.type, [&]<class E>(E) {
+    for_each_element(block, [&](const int* nodes) {
+      const auto xyz = element_coords<E::nodes, E::dim>(mesh, nodes);
+      const auto s = E::point_stresses(xyz, element_displacement<E::nodes, E::dim>(u, nodes), materials);
+      pattern.add(k, nodes, E::nodes, E::geometric_stiffness(xyz, s, materials));
+    });
   });
 }
 

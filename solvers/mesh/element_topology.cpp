@@ -11,11 +11,21 @@ constexpr std::array<std::array<int, 2>, 12> kHexEdges = {
 constexpr std::array<std::array<int, 4>, 6> kHexFaces = {
     {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
 
-constexpr ElementTopology kQ4{"q4", 2, 4, 4, kQuadEdges, {}};
-constexpr ElementTopology kCst{"cst", 2, 3, 3, kTriangleEdges, {}};
-constexpr ElementTopology kHex8{"hex8", 3, 8, 8, kHexEdges, kHexFaces};
-constexpr ElementTopology kHex8i{"hex8i", 3, 8, 8, kHexEdges, kHexFaces};
-constexpr ElementTopology kHex20{"hex20", 3, 20, 8, kHexEdges, kHexFaces};
+// Gmsh numbers hex20's mid-edge nodes by its own edge order ((0-1, 0-3, 0-4, 1-2, 1-5, 2-3, 2-6,
+// 3-7, 4-5, 4-7, 5-6, 6-7), reference manual, "Node ordering"); ours goes round the bottom face, the
+// top face, then up the vertical edges (mesh/mesh.hpp).
+constexpr std::array<int, 20> kGmshHex20 = {0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 13, 9, 16, 18, 19, 17, 10, 12, 14, 15};
+
+// name, dimension, nodes, corners, edges, faces, Gmsh type and order, CalculiX name, row nonzeros.
+constexpr ElementTopology kQ4{"q4", 2, 4, 4, kQuadEdges, {}, 3, {}, "", 18.0};
+constexpr ElementTopology kCst{"cst", 2, 3, 3, kTriangleEdges, {}, 2, {}, "", 14.0};
+constexpr ElementTopology kHex8{"hex8", 3, 8, 8, kHexEdges, kHexFaces, 5, {}, "C3D8", 81.0};
+constexpr ElementTopology kHex8i{"hex8i", 3, 8, 8, kHexEdges, kHexFaces, 5, {}, "C3D8I", 81.0};  // ccx's own bubbles
+constexpr ElementTopology kHex20{"hex20",   3,  20,         8,       kHexEdges,
+                                 kHexFaces, 17, kGmshHex20, "C3D20", 180.0};  // 3x3x3 Gauss
+
+constexpr std::array<ElementType, 5> kTypes = {ElementType::q4, ElementType::cst, ElementType::hex8, ElementType::hex8i,
+                                               ElementType::hex20};
 
 }  // namespace
 
@@ -33,6 +43,14 @@ const ElementTopology& topology(ElementType type) {
       return kHex20;
   }
   return kQ4;  // unreachable: every enumerator is handled above (-Wswitch)
+}
+
+std::span<const ElementType> element_types() { return kTypes; }
+
+std::optional<ElementType> element_type_named(std::string_view name) {
+  for (ElementType t : kTypes)
+    if (topology(t).name == name) return t;
+  return std::nullopt;
 }
 
 int facet_count(ElementType type) {

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <optional>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
@@ -19,16 +20,10 @@
 
 #include "common/csv_reader.hpp"
 #include "common/errors.hpp"
+#include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
-
-// Gmsh's 20-node hexahedron (type 17) numbers its mid-edge nodes by edge: (0-1, 0-3, 0-4, 1-2,
-// 1-5, 2-3, 2-6, 3-7, 4-5, 4-7, 5-6, 6-7) with 0-based corners, which are in our corner order.
-// Ours (mesh/mesh.hpp) goes round the bottom face, the top face, then up the vertical edges:
-// (0-1, 1-2, 2-3, 3-0, 4-5, 5-6, 6-7, 7-4, 0-4, 1-5, 2-6, 3-7). Our node a is Gmsh's node
-// kGmshHex20[a].
-constexpr std::array<int, 20> kGmshHex20 = {0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 13, 9, 16, 18, 19, 17, 10, 12, 14, 15};
 
 // Nodes per element of the Gmsh types a mesh is likely to carry (reference manual, "MSH file
 // format", elm-type); other types are read with whatever nodes their line holds.
@@ -38,13 +33,16 @@ std::optional<int> gmsh_node_count(int type) {
   return std::nullopt;
 }
 
-// Our element type for a Gmsh type in the mesh dimension, or nothing when we have no such element.
+// Our element type for a Gmsh type in the mesh dimension (mesh/element_topology.hpp), or nothing
+// when we have no such element; `linear_hex` chooses between the types that share Gmsh's hexahedron.
 std::optional<ElementType> mesh_element(int gmsh_type, int dim, ElementType linear_hex) {
-  if (dim == 2 && gmsh_type == 2) return ElementType::cst;
-  if (dim == 2 && gmsh_type == 3) return ElementType::q4;
-  if (dim == 3 && gmsh_type == 5) return linear_hex;
-  if (dim == 3 && gmsh_type == 17) return ElementType::hex20;
-  return std::nullopt;
+  std::optional<ElementType> found;
+  for (ElementType t : element_types()) {
+    const ElementTopology& e = topology(t);
+    if (e.gmsh_type != gmsh_type || e.dimension != dim) continue;
+    if (!found || t == linear_hex) found = t;
+  }
+  return found;
 }
 
 // Whitespace-separated tokens (a double-quoted string is one token) with the line each came from.
@@ -370,8 +368,8 @@ RawFile read_sections(MshLexer& lex) {
 }  // namespace
 
 GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_hex) {
-  if (linear_hex != ElementType::hex8 && linear_hex != ElementType::hex8i)
-    throw std::invalid_argument("read_gmsh_msh41: linear_hex must be hex8 or hex8i");
+  if (topology(linear_hex).dimension != 3 || topology(linear_hex).quadratic())
+    throw std::invalid_argument("read_gmsh_msh41: linear_hex must be a linear solid (hex8 or hex8i)");
   MshLexer lex(file);
 
   RawFile f = read_sections(lex);
@@ -446,7 +444,8 @@ GmshMesh read_gmsh_msh41(const std::filesystem::path& file, ElementType linear_h
         lex.fail(e.line, fmt::format("element tag {} is used twice (also on line {})", e.tag, it_line->second));
       const Eigen::Index row = first + static_cast<Eigen::Index>(k);
       for (int a = 0; a < nodes_per_element(type); ++a) {
-        const int gmsh_a = type == ElementType::hex20 ? kGmshHex20[static_cast<size_t>(a)] : a;
+        const std::span<const int> order = topology(type).gmsh_order;
+        const int gmsh_a = order.empty() ? a : order[static_cast<size_t>(a)];
         block.conn(row, a) = internal[static_cast<size_t>(node_position(e, e.nodes[static_cast<size_t>(gmsh_a)]))];
       }
       block.ids.push_back(e.tag);

@@ -10,6 +10,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "mesh/element_topology.hpp"
+
 namespace bb {
 namespace {
 
@@ -95,7 +97,7 @@ int inverted_corner(const std::array<Eigen::Vector3d, 8>& corners) {
 
 Mesh generate_hex_block(const HexBlockSpec& spec) {
   if (spec.nx < 1 || spec.ny < 1 || spec.nz < 1) throw std::invalid_argument("nx, ny and nz must be >= 1");
-  if (spec.element != ElementType::hex8 && spec.element != ElementType::hex8i && spec.element != ElementType::hex20)
+  if (topology(spec.element).dimension != 3)
     throw std::invalid_argument("a hex block needs a solid element type (hex8, hex8i or hex20), not " +
                                 std::string(element_name(spec.element)));
   // Only a necessary condition for a valid block, but it catches the common mistake: corners
@@ -106,7 +108,7 @@ Mesh generate_hex_block(const HexBlockSpec& spec) {
 
   // Nodes live on a lattice of `step` points per division: every point for hex8; for hex20 the
   // doubled lattice without face and cell centres (points with two or three odd indices).
-  const bool quadratic = spec.element == ElementType::hex20;
+  const bool quadratic = topology(spec.element).quadratic();
   const int step = quadratic ? 2 : 1;
   const int mx = step * spec.nx + 1, my = step * spec.ny + 1, mz = step * spec.nz + 1;
   auto lattice = [mx, my](int i, int j, int k) {

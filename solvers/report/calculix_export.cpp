@@ -10,10 +10,12 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "contact/surface_contact.hpp"
 #include "mesh/boundary.hpp"
+#include "mesh/element_topology.hpp"
 
 namespace bb {
 namespace {
@@ -29,21 +31,22 @@ std::string ccx_real(double v) {
   return s;
 }
 
+// "hex8, hex8i and hex20": the types ccx takes, from the element table.
+std::string exported_names() {
+  std::vector<std::string_view> names;
+  for (ElementType t : element_types())
+    if (topology(t).dimension == 3 && !topology(t).calculix.empty()) names.push_back(topology(t).name);
+  std::string out;
+  for (size_t i = 0; i < names.size(); ++i)
+    out += fmt::format("{}{}", i == 0 ? "" : i + 1 == names.size() ? " and " : ", ", names[i]);
+  return out;
+}
+
 std::string_view ccx_element_type(ElementType type) {
-  switch (type) {
-    case ElementType::hex8:
-      return "C3D8";
-    case ElementType::hex8i:
-      return "C3D8I";  // ccx's own incompatible-mode formulation
-    case ElementType::hex20:
-      return "C3D20";  // 3x3x3 Gauss, like fe::hex20_stiffness
-    case ElementType::q4:
-    case ElementType::cst:
-      break;
-  }
-  throw InputError(
-      fmt::format("CalculiX export: element type '{}' is not a 3D solid; only hex8, hex8i and hex20 are exported",
-                  element_name(type)));
+  const ElementTopology& t = topology(type);
+  if (t.dimension == 3 && !t.calculix.empty()) return t.calculix;
+  throw InputError(fmt::format("CalculiX export: element type '{}' is not a 3D solid ccx takes; only {} are exported",
+                               t.name, exported_names()));
 }
 
 // ccx set names are case-insensitive words; keep letters, digits and '_' and make them unique.

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "mesh/boundary.hpp"
+#include "mesh/element_topology.hpp"
 #include "report/gnuplot.hpp"
 
 namespace bb {
@@ -49,7 +50,7 @@ Eigen::Vector4d plane_point(const Mesh& mesh, const Eigen::VectorXd& values, con
 void write_plane(std::ofstream& out, const Mesh& mesh, const Eigen::VectorXd& values) {
   const int k = std::clamp(static_cast<int>(std::sqrt(kMaxCells / std::max(1, mesh.n_elements()))), 1, 6);
   for (const ElementBlock& b : mesh.blocks) {
-    const bool quad = b.type == ElementType::q4;
+    const bool quad = topology(b.type).corners == 4;
     for (Eigen::Index e = 0; e < b.conn.rows(); ++e) {
       const int* nodes = b.conn.row(e).data();
       for (int j = 0; j < k; ++j)

@@ -121,7 +121,7 @@ struct AnalyticCase {
 
 // The nonlinear modal model differentiates its own knots and mass exactly; false when no parameter is one.
 bool nonlinear_modal_sensitivities(NonlinearModalSpec& modal, AnalyticCase& out) {
-  const std::vector<std::string> own = nonlinear_modal_parameter_paths(modal.mode);
+  const std::vector<std::string> own = nonlinear_modal_parameter_paths(modal);
   for (const CaseParameter& p : out.model.parameters) {
     const bool d = std::find(own.begin(), own.end(), p.path) != own.end();
     out.differentiated.push_back(d);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "report/gnuplot.hpp"
 #include "report/number_format.hpp"
 
@@ -19,16 +21,19 @@ void describe(const NonlinearModalSpec& spec, const NonlinearModalOutcome& o, Ru
                             spec.dof, format_setting(spec.modes.front().mass)));
   for (size_t k = 0; k < spec.modes.size(); ++k) {
     const NonlinearMode& m = spec.modes[k];
-    const auto& a = m.frequency_hz.amplitudes();
-    const auto [f_lo, f_hi] = m.frequency_hz.range(a.front(), a.back());
-    const auto [z_lo, z_hi] = m.damping_ratio.range(a.front(), a.back());
+    // Over both curves' knots: each may have its own.
+    const auto& af = m.frequency_hz.amplitudes();
+    const auto& az = m.damping_ratio.amplitudes();
+    const double a_lo = std::min(af.front(), az.front()), a_hi = std::max(af.back(), az.back());
+    const auto [f_lo, f_hi] = m.frequency_hz.range(a_lo, a_hi);
+    const auto [z_lo, z_hi] = m.damping_ratio.range(a_lo, a_hi);
     run.facts.emplace_back(
         several ? fmt::format("backbone of mode {}", k) : std::string("backbone"),
-        fmt::format("{}{} knots from {} to {} m (clamped cubic spline in log a, constant beyond): f from {:.6g} "
-                    "to {:.6g} Hz ({:.3g} % apart), z from {:.4g} to {:.4g} ({:.3g}x)",
-                    several ? fmt::format("mass {} kg, ", format_setting(m.mass)) : std::string(), a.size(),
-                    format_setting(a.front()), format_setting(a.back()), f_lo, f_hi, 100.0 * (f_hi - f_lo) / f_lo, z_lo,
-                    z_hi, z_hi / z_lo));
+        fmt::format("{}{} frequency and {} damping knots from {} to {} m (clamped cubic splines in log a, constant "
+                    "beyond): f from {:.6g} to {:.6g} Hz ({:.3g} % apart), z from {:.4g} to {:.4g} ({:.3g}x)",
+                    several ? fmt::format("mass {} kg, ", format_setting(m.mass)) : std::string(), af.size(), az.size(),
+                    format_setting(a_lo), format_setting(a_hi), f_lo, f_hi, 100.0 * (f_hi - f_lo) / f_lo, z_lo, z_hi,
+                    z_hi / z_lo));
   }
   run.facts.emplace_back("curves", fmt::format("{} force-controlled stepped sines, {} response-controlled",
                                                spec.stepped_sines.size(), spec.response_controls.size()));

@@ -367,9 +367,12 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
                                 ? fmt::format(", central differences (relative step {:g}) for the columns of {}",
                                               cal->derivative_step, fmt::join(sensitivity_base->numeric, "; "))
                                 : std::string();
-  const char* how = std::holds_alternative<NonlinearModalSpec>(base.spec.analysis)
-                        ? "analytic (the nonlinear modal model's own, forced/single_mode_synthesis.hpp)"
-                        : "analytic (implicit function theorem, hbm/sensitivity.hpp)";
+  const auto* modal = std::get_if<NonlinearModalSpec>(&base.spec.analysis);
+  const char* how =
+      !modal ? "analytic (implicit function theorem, hbm/sensitivity.hpp)"
+      : modal->modes.size() == 1
+          ? "analytic (the nonlinear modal model's own, forced/single_mode_synthesis.hpp)"
+          : "analytic (the nonlinear modal model's own, each mode's summed, forced/multi_mode_synthesis.hpp)";
   out.derivatives = analytic ? fmt::format("{}{}{}", how, mixed,
                                            out.jacobian_fallbacks == 0
                                                ? ""

@@ -186,5 +186,36 @@ TEST(MultiModeSynthesis, SensitivitiesEqualCentralDifferences) {
   }
 }
 
+// A hardening fold: an amplitude on its middle (unstable) branch is held by no force on the
+// branches reached from rest; the point is the jump's force (the lower branch's largest), flagged.
+TEST(MultiModeSynthesis, AnAmplitudeOnlyAFoldJumpsPastIsTheJumpsForceAndFlagged) {
+  const Modes modes = {{ModalBackbone({1e-4, 1e-3, 1e-2}, {10.0, 11.0, 14.0}), ModalBackbone({1e-4}, {0.005}), 1.0},
+                       {ModalBackbone({1e-4}, {1000.0}), ModalBackbone({1e-4}, {0.01}), 1.0}};
+  const double f = 12.5;
+  // The lower branch's largest force (where the up-stepping force jumps) and the middle branch's
+  // smallest, sampled densely.
+  double jump = 0.0, a_jump = 0.0, dip = INFINITY;
+  for (double s = std::log(1e-5); s < std::log(1e-1); s += 1e-4) {
+    const double force = bb::held_response(modes[0], std::exp(s), f).force;
+    if (jump > 0.0 && force > dip) break;
+    if (a_jump > 0.0 && force < jump)
+      dip = std::min(dip, force);
+    else
+      jump = force, a_jump = std::exp(s);
+  }
+  ASSERT_LT(dip, 0.9 * jump);
+  const std::vector<double> roots = bb::amplitudes_at_force(modes[0], 0.5 * (jump + dip), f);
+  ASSERT_EQ(roots.size(), 3u);
+  const double held = roots[1];  // the middle branch
+  ASSERT_GT(held, a_jump);
+  const MultiModePoint p = bb::multi_mode_held(modes, held, f, bb::multi_mode_bounds(modes));
+  EXPECT_FALSE(p.holds);
+  // To the resolution at which the single-mode solver tells a fold's two roots apart (400 samples
+  // of its bracket in log a): the lower branch ends a little early, never late (here 5e-5 early).
+  EXPECT_NEAR(p.force, jump, 1e-3 * jump);
+  EXPECT_LE(p.force, jump);
+  EXPECT_GT(std::abs(std::log(p.amplitude / held)), 0.01);  // what it reaches is not the held amplitude
+}
+
 }  // namespace
 }  // namespace multi_mode_synthesis_test

@@ -1,5 +1,6 @@
-// What a nonlinear_modal analysis computes: the driven point of one nonlinear mode whose natural
-// frequency and damping ratio depend on the amplitude there (forced/single_mode_synthesis.hpp),
+// What a nonlinear_modal analysis computes: the driven point of one nonlinear mode, or a few
+// uncoupled ones, whose natural frequency and damping ratio depend on the amplitude there
+// (forced/single_mode_synthesis.hpp, forced/multi_mode_synthesis.hpp),
 // under the stepped sines a rig runs (force-controlled, read from measured files or written in the
 // case; response-controlled at a held amplitude), with exact sensitivities to its backbone's
 // knots and mass for calibration; and, from measured response-controlled curves, the backbone
@@ -23,8 +24,9 @@ struct BackboneCurve {
 };
 
 struct NonlinearModalSpec {
-  NonlinearMode mode;
-  std::string dof;  // the driven and measured point, e.g. "A.x": names the table columns
+  std::vector<NonlinearMode> modes;  // ascending linear frequency; one in the single-mode form
+  bool mode_array = false;           // given as [[analysis.mode]]: names the paths and backbone tables
+  std::string dof;                   // the driven and measured point, e.g. "A.x": names the table columns
   std::vector<SteppedSineSpec> stepped_sines;
   std::vector<ResponseControlSpec> response_controls;
   std::vector<BackboneCurve> extract;  // [analysis] extract = [files]
@@ -34,8 +36,12 @@ struct NonlinearModalSpec {
   SourceLocation at;
 };
 
-// The paths of the model's parameters in NonlinearMode order: analysis.backbone.frequency_hz.<i>,
-// analysis.backbone.damping_ratio.<i>, analysis.mass.
-std::vector<std::string> nonlinear_modal_parameter_paths(const NonlinearMode& mode);
+// The paths of the model's parameters, mode after mode, each in NonlinearMode order:
+// analysis.backbone.frequency_hz.<i>, analysis.backbone.damping_ratio.<i>, analysis.mass (one
+// mode, the single-mode form), or analysis.mode.<k>.backbone.{frequency_hz,damping_ratio}.<i>,
+// analysis.mode.<k>.mass ([[analysis.mode]]).
+std::vector<std::string> nonlinear_modal_parameter_paths(const NonlinearModalSpec& spec);
+// Their values, in the same order.
+std::vector<double> nonlinear_modal_parameter_values(const NonlinearModalSpec& spec);
 
 }  // namespace bb

@@ -160,14 +160,18 @@ WorkEstimate analysis_work(const ContactLoopSpec& s, const Model&) {
 }
 
 // A force-controlled point samples its residual 400 times over the roots' bracket (each two
-// spline evaluations) and weighs its knots for the sensitivities; a held point is one evaluation.
+// spline evaluations) per mode and weighs its knots for the sensitivities; a held point of one
+// mode is one evaluation, of several a root find of about 100 force-controlled points.
 WorkEstimate analysis_work(const NonlinearModalSpec& s, const Model&) {
   double forced = 0.0, held = 0.0;
   for (const SteppedSineSpec& sine : s.stepped_sines) forced += static_cast<double>(sine.frequency_hz.size());
   for (const ResponseControlSpec& c : s.response_controls) held += static_cast<double>(c.frequency_hz.size()) + 100.0;
-  const double knots = static_cast<double>(s.mode.frequency_hz.knots() + s.mode.damping_ratio.knots());
+  double knots = 0.0;
+  for (const NonlinearMode& m : s.modes) knots += static_cast<double>(m.frequency_hz.knots() + m.damping_ratio.knots());
+  const double modes = static_cast<double>(s.modes.size()), held_forced = s.modes.size() > 1 ? 100.0 : 0.0;
   WorkEstimate e;
-  e.operations = forced * (500.0 * 60.0 + knots * knots * 20.0) + held * knots * knots * 20.0;
+  e.operations = forced * (500.0 * 60.0 * modes + knots * knots * 20.0) +
+                 held * (held_forced * 500.0 * 60.0 * modes + knots * knots * 20.0);
   e.bytes = 8.0 * (forced + held) * (10.0 + 2.0 * static_cast<double>(s.sensitivities.size()));
   e.basis = fmt::format("{:.0f} force-controlled and {:.0f} held points, {:.0f} knots", forced, held, knots);
   e.at = s.at;

@@ -21,7 +21,8 @@ constexpr const char* kSupported =
     "analysis.damper.{kn,kt,mu,mass,inertia,centrifugal_force,centre.0,centre.1}, analysis.modal_damping[.<mode>], "
     "analysis.forces.<i>.amplitude, "
     "analysis.model.{stiffness,mass}.<i>.<j>, analysis.model.{frequency_hz,modal_mass}.<i>, "
-    "analysis.backbone.{frequency_hz,damping_ratio}.<i>, analysis.mass";
+    "analysis.backbone.{frequency_hz,damping_ratio}.<i>, analysis.mass, "
+    "analysis.mode.<k>.backbone.{frequency_hz,damping_ratio}.<i>, analysis.mode.<k>.mass";
 
 // A 0-based index as written in a path: digits only, at most 6.
 std::optional<size_t> index_of(const std::string& t) {
@@ -71,6 +72,23 @@ ReducedModel& written_matrices(CaseSpec& spec, const CaseParameter& p) {
   HbmSpec* hbm = system_of(spec);
   if (!hbm || !hbm->model.matrices) absent(p, "the analysis has no matrices written in the case ([analysis.model])");
   return *hbm->model.matrices;
+}
+
+// The mode a backbone value names, checked against the case's form: one mode (analysis.backbone,
+// analysis.mass) or [[analysis.mode]] (analysis.mode.<k>.*).
+NonlinearMode& nonlinear_mode(CaseSpec& spec, const CaseParameter& p, const BackboneValue& v) {
+  auto* modal = std::get_if<NonlinearModalSpec>(&spec.analysis);
+  if (!modal) absent(p, "only a nonlinear_modal analysis has a backbone and a mass");
+  if (!v.mode) {
+    if (modal->mode_array)
+      absent(p, "the analysis lists its modes as [[analysis.mode]]: name one, e.g. analysis.mode.0.mass");
+    return modal->modes.front();
+  }
+  if (!modal->mode_array)
+    absent(p, "the analysis has one mode (mass and [analysis.backbone]): write analysis.mass or analysis.backbone.*");
+  if (*v.mode >= modal->modes.size())
+    absent(p, fmt::format("no mode {} (the analysis has {} [[analysis.mode]])", *v.mode, modal->modes.size()));
+  return modal->modes[*v.mode];
 }
 
 // The number a parameter names inside `spec`, for reading and writing alike.
@@ -130,10 +148,8 @@ double& locate(CaseSpec& spec, const CaseParameter& p) {
       throw std::logic_error("a modal coordinate's frequency is not stored as a number");
     }
     double& operator()(const BackboneValue& v) {
-      auto* modal = std::get_if<NonlinearModalSpec>(&spec.analysis);
-      if (!modal || v.curve != BackboneValue::Curve::mass)
-        throw std::logic_error("a backbone knot is not stored as a number");
-      return modal->mode.mass;
+      if (v.curve != BackboneValue::Curve::mass) throw std::logic_error("a backbone knot is not stored as a number");
+      return nonlinear_mode(spec, p, v).mass;
     }
     double& operator()(const ForceAmplitude& v) {
       std::vector<FrfForce>* forces = nullptr;
@@ -213,19 +229,26 @@ std::pair<double*, double*> modal_entries(CaseSpec& spec, const CaseParameter& p
   return {&m.stiffness(i, i), &m.mass(i, i)};
 }
 
-NonlinearModalSpec& nonlinear_modal(CaseSpec& spec, const CaseParameter& p) {
-  auto* modal = std::get_if<NonlinearModalSpec>(&spec.analysis);
-  if (!modal) absent(p, "only a nonlinear_modal analysis has a backbone and a mass");
-  return *modal;
-}
-
 // The knot's curve, checked to have the knot (nullptr for the mass).
 ModalBackbone* backbone_curve(CaseSpec& spec, const CaseParameter& p, const BackboneValue& v) {
-  NonlinearModalSpec& modal = nonlinear_modal(spec, p);
   if (v.curve == BackboneValue::Curve::mass) return nullptr;
-  ModalBackbone& c = v.curve == BackboneValue::Curve::frequency ? modal.mode.frequency_hz : modal.mode.damping_ratio;
+  NonlinearMode& mode = nonlinear_mode(spec, p, v);
+  ModalBackbone& c = v.curve == BackboneValue::Curve::frequency ? mode.frequency_hz : mode.damping_ratio;
   if (v.knot >= c.knots()) absent(p, fmt::format("no knot {} (the backbone has {})", v.knot, c.knots()));
   return &c;
+}
+
+// "mass", "backbone.frequency_hz.<i>" or "backbone.damping_ratio.<i>": one mode's own values.
+std::optional<BackboneValue> backbone_value(const std::string& rest) {
+  if (rest == "mass") return BackboneValue{};
+  for (const auto& [prefix, curve] : {std::pair{"backbone.frequency_hz.", BackboneValue::Curve::frequency},
+                                      std::pair{"backbone.damping_ratio.", BackboneValue::Curve::damping}})
+    if (rest.starts_with(prefix)) {
+      const auto knot = index_of(rest.substr(std::string(prefix).size()));
+      if (!knot) return std::nullopt;
+      return BackboneValue{curve, *knot, std::nullopt};
+    }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -249,14 +272,17 @@ CaseParameter parse_parameter_path(const std::string& path) {
     p.target = MaterialValue{&fe::PlaneSection::thickness};
   else if (path == "analysis.modal_damping")
     p.target = ModalDampingValue{};
-  else if (path == "analysis.mass")
-    p.target = BackboneValue{};
-  else if (path.starts_with("analysis.backbone.frequency_hz.") ||
-           path.starts_with("analysis.backbone.damping_ratio.")) {
-    const bool damping = path.starts_with("analysis.backbone.damping_ratio.");
-    const auto knot = index_of(after(damping ? "analysis.backbone.damping_ratio." : "analysis.backbone.frequency_hz."));
-    if (!knot) return unknown();
-    p.target = BackboneValue{damping ? BackboneValue::Curve::damping : BackboneValue::Curve::frequency, *knot};
+  else if (path == "analysis.mass" || path.starts_with("analysis.backbone.")) {
+    const std::optional<BackboneValue> v = backbone_value(path.substr(std::string("analysis.").size()));
+    if (!v) return unknown();
+    p.target = *v;
+  } else if (const std::string moded = after("analysis.mode."); !moded.empty()) {
+    const size_t dot = moded.find('.');
+    const auto mode = index_of(moded.substr(0, dot));
+    std::optional<BackboneValue> v = dot == std::string::npos ? std::nullopt : backbone_value(moded.substr(dot + 1));
+    if (!mode || !v) return unknown();
+    v->mode = *mode;
+    p.target = *v;
   } else if (const std::string damped = after("analysis.modal_damping."); !damped.empty()) {
     if (!index_of(damped)) return unknown();
     p.target = ModalDampingValue{index_of(damped)};

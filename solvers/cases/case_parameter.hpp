@@ -59,10 +59,12 @@ struct ModalCoordinate {
 };
 
 // analysis.backbone.{frequency_hz,damping_ratio}.<i> (a knot's value) or analysis.mass of a
-// nonlinear_modal analysis.
+// nonlinear_modal analysis of one mode; analysis.mode.<k>.backbone.{frequency_hz,damping_ratio}.<i>
+// or analysis.mode.<k>.mass of mode k of its [[analysis.mode]].
 struct BackboneValue {
   enum class Curve { frequency, damping, mass } curve = Curve::mass;
   size_t knot = 0;
+  std::optional<size_t> mode;
 };
 
 struct CaseParameter {

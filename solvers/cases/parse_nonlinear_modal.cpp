@@ -67,6 +67,34 @@ NonlinearMode parse_mode(TomlReader& r) {
   return mode;
 }
 
+constexpr size_t kMaxModes = 8;
+
+// [[analysis.mode]]: a few uncoupled modes, each with its mass and backbone, in ascending order of
+// their linear frequency (f at the smallest knot) so that mode k is the k-th resonance.
+std::vector<NonlinearMode> parse_modes(TomlReader& r) {
+  for (const char* single : {"mass", "backbone"})
+    if (r.has(single))
+      r.fail(single,
+             "give the modes either as [[analysis.mode]] (each with its mass and backbone) or as one mode "
+             "(mass and [analysis.backbone]), not both");
+  const toml::array& list = r.array("mode");
+  if (list.empty() || list.size() > kMaxModes || !list.is_array_of_tables())
+    r.fail("mode",
+           fmt::format("give 1 to {} modes as [[analysis.mode]] tables, each with mass and backbone", kMaxModes));
+  std::vector<NonlinearMode> modes;
+  for (size_t k = 0; k < list.size(); ++k) {
+    TomlReader m(*list.get(k)->as_table(), fmt::format("{}.mode[{}]", r.path(), k), r.file());
+    modes.push_back(parse_mode(m));
+    m.finish();
+    if (k > 0 && !(modes[k].frequency_hz.values().front() > modes[k - 1].frequency_hz.values().front()))
+      m.fail("backbone",
+             fmt::format("list the modes in ascending order of their linear frequency (f at the smallest knot): mode "
+                         "{} has {} Hz, mode {} has {} Hz",
+                         k, modes[k].frequency_hz.values().front(), k - 1, modes[k - 1].frequency_hz.values().front()));
+  }
+  return modes;
+}
+
 std::vector<BackboneCurve> parse_extract(TomlReader& r, const std::filesystem::path& folder) {
   std::vector<BackboneCurve> out;
   if (!r.has("extract")) return out;
@@ -108,7 +136,8 @@ NonlinearModalSpec parse_nonlinear_modal(TomlReader& r, const std::filesystem::p
   s.at = r.location();
   const PointDof dof = parse_point_dof(r, "dof", r.string("dof"));
   s.dof = dof.name();
-  s.mode = parse_mode(r);
+  s.mode_array = r.has("mode");
+  s.modes = s.mode_array ? parse_modes(r) : std::vector<NonlinearMode>{parse_mode(r)};
   std::set<std::string> tables;
   s.stepped_sines = parse_stepped_sines(r, folder, tables);
   s.response_controls = parse_response_controls(r, {dof}, folder, tables);

@@ -143,6 +143,8 @@ ModalPoint stepped_response(const NonlinearMode& mode, double force, double f_ex
   p.d_phase += dphase_da * p.d_amplitude;
   p.d_force = Eigen::VectorXd::Zero(mode.parameters());
   p.force = force;
+  p.d_amplitude_d_force = 1.0 / rate;
+  p.d_phase_d_force = dphase_da / rate;
   return p;
 }
 

@@ -36,6 +36,9 @@ struct ModalPoint {
   double force = 0.0;                             // |F| [N]
   bool stable = true;                             // a force-controlled point on a branch d|F|/da > 0
   Eigen::VectorXd d_amplitude, d_phase, d_force;  // per parameter (NonlinearMode order)
+  // Of a force-controlled point: d|x|/d|F| and d phase/d|F| along its branch (parameters held),
+  // what several modes summed need to hold their total amplitude (forced/multi_mode_synthesis.hpp).
+  double d_amplitude_d_force = 0.0, d_phase_d_force = 0.0;
 };
 
 // The force that holds amplitude a at f_exc, its phase, and their sensitivities (a held fixed).

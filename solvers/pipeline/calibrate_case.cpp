@@ -121,7 +121,7 @@ struct AnalyticCase {
 
 // The nonlinear modal model differentiates its own knots and mass exactly; false when no parameter is one.
 bool nonlinear_modal_sensitivities(NonlinearModalSpec& modal, AnalyticCase& out) {
-  const std::vector<std::string> own = nonlinear_modal_parameter_paths(modal.mode);
+  const std::vector<std::string> own = nonlinear_modal_parameter_paths(modal);
   for (const CaseParameter& p : out.model.parameters) {
     const bool d = std::find(own.begin(), own.end(), p.path) != own.end();
     out.differentiated.push_back(d);
@@ -367,9 +367,12 @@ CalibrationOutcome calibrate_case(const fs::path& case_file, const FitProgress& 
                                 ? fmt::format(", central differences (relative step {:g}) for the columns of {}",
                                               cal->derivative_step, fmt::join(sensitivity_base->numeric, "; "))
                                 : std::string();
-  const char* how = std::holds_alternative<NonlinearModalSpec>(base.spec.analysis)
-                        ? "analytic (the nonlinear modal model's own, forced/single_mode_synthesis.hpp)"
-                        : "analytic (implicit function theorem, hbm/sensitivity.hpp)";
+  const auto* modal = std::get_if<NonlinearModalSpec>(&base.spec.analysis);
+  const char* how =
+      !modal ? "analytic (implicit function theorem, hbm/sensitivity.hpp)"
+      : modal->modes.size() == 1
+          ? "analytic (the nonlinear modal model's own, forced/single_mode_synthesis.hpp)"
+          : "analytic (the nonlinear modal model's own, each mode's summed, forced/multi_mode_synthesis.hpp)";
   out.derivatives = analytic ? fmt::format("{}{}{}", how, mixed,
                                            out.jacobian_fallbacks == 0
                                                ? ""

@@ -210,5 +210,49 @@ TEST(CaseParameter, AnIwanJointsChiAndBetaAreCalibrationPathsAJenkinsContactLack
   EXPECT_THROW((void)parse_parameter_path("analysis.contact.0.Chi"), std::invalid_argument);
 }
 
+// Two nonlinear modes as [[analysis.mode]], and one mode in the single-mode form.
+CaseSpec two_nonlinear_modes() {
+  return parse_case_table(
+      toml::parse("[case]\nname = \"m\"\n[analysis]\ntype = \"nonlinear_modal\"\ndof = \"A.x\"\n"
+                  "[[analysis.mode]]\nmass = 1.0\nbackbone = { amplitude_m = [1e-5, 1e-4], frequency_hz = [100.0, "
+                  "99.6], damping_ratio = [0.002, 0.005] }\n[[analysis.mode]]\nmass = 1.5\n[analysis.mode.backbone]\n"
+                  "amplitude_m = [2e-5]\nfrequency_hz = [103.0]\ndamping_ratio = [0.003]\n"
+                  "[[analysis.response_control]]\nname = \"rc\"\ndof = \"A.x\"\ndisplacement = 2e-5\n"
+                  "frequency_hz = [96.0, 106.0]\nstep_hz = 1.0\n"),
+      "modes.toml");
+}
+
+TEST(CaseParameter, EachNonlinearModeOfAnArrayIsNamedByItsIndexAndTheSingleFormByNone) {
+  CaseSpec spec = two_nonlinear_modes();
+  const struct {
+    const char* path;
+    double value;
+  } expected[] = {{"analysis.mode.0.backbone.frequency_hz.1", 99.6},
+                  {"analysis.mode.0.backbone.damping_ratio.0", 0.002},
+                  {"analysis.mode.1.backbone.frequency_hz.0", 103.0},
+                  {"analysis.mode.1.mass", 1.5}};
+  for (const auto& e : expected) {
+    const CaseParameter p = parse_parameter_path(e.path);
+    EXPECT_EQ(parameter_value(spec, p), e.value) << e.path;
+    set_parameter_value(spec, p, 1.01 * e.value);
+    EXPECT_EQ(parameter_value(spec, p), 1.01 * e.value) << e.path;
+  }
+  const auto& modes = std::get<NonlinearModalSpec>(spec.analysis).modes;
+  EXPECT_EQ(modes[1].mass, 1.01 * 1.5);
+  EXPECT_EQ(modes[0].frequency_hz.values()[1], 1.01 * 99.6);
+  for (const char* absent : {"analysis.mass", "analysis.backbone.frequency_hz.0", "analysis.mode.2.mass",
+                             "analysis.mode.1.backbone.damping_ratio.1"})
+    EXPECT_THROW((void)parameter_value(spec, parse_parameter_path(absent)), std::invalid_argument) << absent;
+  for (const char* bad : {"analysis.mode.x.mass", "analysis.mode.0", "analysis.mode.0.backbone.f.0"})
+    EXPECT_THROW((void)parse_parameter_path(bad), std::invalid_argument) << bad;
+  // The single-mode form has no mode index.
+  CaseSpec one = parse_case_table(
+      toml::parse("[case]\nname = \"m\"\n[analysis]\ntype = \"nonlinear_modal\"\ndof = \"A.x\"\nmass = 2.0\n"
+                  "[analysis.backbone]\namplitude_m = [2e-5]\nfrequency_hz = [103.0]\ndamping_ratio = [0.003]\n"),
+      "one.toml");
+  EXPECT_EQ(parameter_value(one, parse_parameter_path("analysis.mass")), 2.0);
+  EXPECT_THROW((void)parameter_value(one, parse_parameter_path("analysis.mode.0.mass")), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace bb

@@ -3,7 +3,10 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <array>
 #include <iterator>
+#include <string>
+#include <vector>
 
 #include "cases/case_spec.hpp"
 #include "cases/parse_common.hpp"
@@ -86,6 +89,17 @@ ModelNeed model_need(const ContactModalSpec&) { return ModelNeed::mesh; }
 ModelNeed model_need(const CyclicModalSpec&) { return ModelNeed::mesh; }
 ModelNeed model_need(const NonlinearModalSpec&) { return ModelNeed::nothing; }
 
+// One of `kinds` by its case-file name (`name_of`), `fallback` when the key is absent.
+template <class Kind, size_t N, class Name>
+Kind named_kind(TomlReader& r, const std::string& key, const std::array<Kind, N>& kinds, Name name_of, Kind fallback) {
+  std::vector<std::string> names;
+  for (Kind k : kinds) names.emplace_back(name_of(k));
+  const std::string chosen = r.choice(key, names, std::string(name_of(fallback)));
+  for (Kind k : kinds)
+    if (name_of(k) == chosen) return k;
+  return fallback;
+}
+
 CheckSpec parse_check(TomlReader r, const fs::path& folder) {
   CheckSpec c;
   c.at = r.location();
@@ -97,8 +111,7 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
     c.reference = r.input_file("reference", folder);
   else
     c.reference_result = r.label("reference_result");
-  const std::string match = r.choice("match", {"key", "mac", "label"}, "key");
-  c.match = match == "mac" ? CheckSpec::Match::mac : match == "label" ? CheckSpec::Match::label : CheckSpec::Match::key;
+  c.match = named_kind(r, "match", kMatches, match_name, CheckSpec::Match::key);
   if (r.has("reference_case")) {
     // With match = "mac" a reference file may be keyed by the other case's modes (e.g. published
     // values numbered as on the benchmark's own mesh): its run pairs them with this run's modes.
@@ -110,10 +123,7 @@ CheckSpec parse_check(TomlReader r, const fs::path& folder) {
     if (const std::string why = file_problem(c.reference_case); !why.empty())
       r.fail("reference_case", fmt::format("no case file {} ({})", c.reference_case.string(), why));
   }
-  const std::string expect = r.choice("expect", {"equal", "at_most", "at_least"}, "equal");
-  c.relation = expect == "at_most"    ? CheckSpec::Relation::at_most
-               : expect == "at_least" ? CheckSpec::Relation::at_least
-                                      : CheckSpec::Relation::equal;
+  c.relation = named_kind(r, "expect", kRelations, relation_name, CheckSpec::Relation::equal);
   if (c.match == CheckSpec::Match::mac && c.reference_case.empty())
     r.fail("match",
            "\"mac\" pairs this run's modes with the modes of another case's run by shape: give reference_case (and "

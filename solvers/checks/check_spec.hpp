@@ -1,7 +1,9 @@
 // What a [[check]] compares: result columns against reference columns, row by row on a shared key.
 #pragma once
+#include <array>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -32,5 +34,34 @@ struct CheckSpec {
   std::string source;  // where the reference values come from (for the report)
   SourceLocation at;
 };
+
+// The case file's name of each relation (`expect = ...`) and match (`match = ...`): a new kind is
+// an enumerator and its case in these switches (-Wswitch), which the parser, the checks and the
+// report read.
+constexpr std::string_view relation_name(CheckSpec::Relation r) {
+  switch (r) {
+    case CheckSpec::Relation::equal:
+      return "equal";
+    case CheckSpec::Relation::at_most:
+      return "at_most";
+    case CheckSpec::Relation::at_least:
+      return "at_least";
+  }
+  return "";
+}
+constexpr std::string_view match_name(CheckSpec::Match m) {
+  switch (m) {
+    case CheckSpec::Match::key:
+      return "key";
+    case CheckSpec::Match::mac:
+      return "mac";
+    case CheckSpec::Match::label:
+      return "label";
+  }
+  return "";
+}
+inline constexpr std::array kRelations{CheckSpec::Relation::equal, CheckSpec::Relation::at_most,
+                                       CheckSpec::Relation::at_least};
+inline constexpr std::array kMatches{CheckSpec::Match::key, CheckSpec::Match::mac, CheckSpec::Match::label};
 
 }  // namespace bb

@@ -82,7 +82,8 @@ void require_check_references(const std::vector<CheckSpec>& checks) {
   for (const CheckSpec& c : checks) {
     try {
       if (!c.reference_case.empty() && !file_problem(c.reference_case).empty())
-        throw InputError(fmt::format("reference case {}: {}", c.reference_case.string(), file_problem(c.reference_case)));
+        throw InputError(
+            fmt::format("reference case {}: {}", c.reference_case.string(), file_problem(c.reference_case)));
       if (c.reference.empty()) continue;
       for (const auto& [result_column, reference_column] : c.compare)
         read_reference_column(c.reference, c.key, reference_column);
@@ -178,9 +179,17 @@ std::string reference_name(const CheckSpec& check) {
 }  // namespace
 
 double tolerance_used(const CheckEntry& e) {
-  const double excess = e.relation == CheckSpec::Relation::equal     ? e.abs_error
-                        : e.relation == CheckSpec::Relation::at_most ? e.computed - e.reference
-                                                                     : e.reference - e.computed;
+  double excess = e.abs_error;
+  switch (e.relation) {
+    case CheckSpec::Relation::equal:
+      break;
+    case CheckSpec::Relation::at_most:
+      excess = e.computed - e.reference;
+      break;
+    case CheckSpec::Relation::at_least:
+      excess = e.reference - e.computed;
+      break;
+  }
   double used = e.tolerance > 0.0 ? excess / e.tolerance : excess > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
   if (std::isnan(used)) used = std::numeric_limits<double>::infinity();
   if (!e.pass && used <= 1.0) used = std::numeric_limits<double>::infinity();

@@ -20,6 +20,19 @@ bool relative_only(const CheckEntry& e, const CheckSpec* spec) {
 }
 
 // The entry's name without its check's name in front ("ip_hz level 9").
+// How the check pairs computed rows with reference rows, for its summary line ("" by key).
+std::string pairing(const CheckSpec& spec) {
+  switch (spec.match) {
+    case CheckSpec::Match::key:
+      return "";
+    case CheckSpec::Match::mac:
+      return fmt::format(", modes paired by shape (MAC >= {})", spec.min_mac);
+    case CheckSpec::Match::label:
+      return fmt::format(", rows paired by label ({})", fmt::join(spec.labels, ", "));
+  }
+  return "";
+}
+
 std::string entry_label(const CheckEntry& e) {
   const std::string prefix = e.group + ": ";
   return e.name.starts_with(prefix) ? e.name.substr(prefix.size()) : e.name;
@@ -160,10 +173,7 @@ void write_check_table(std::ostream& out, const RunRecord& run) {
                                                                  spec->reference_case.filename().string())
                   : spec->reference_result.empty() ? fmt::format("`{}`", spec->reference.filename().string())
                                                    : "result " + spec->reference_result;
-      paired = spec->match == CheckSpec::Match::mac ? fmt::format(", modes paired by shape (MAC >= {})", spec->min_mac)
-               : spec->match == CheckSpec::Match::label
-                   ? fmt::format(", rows paired by label ({})", fmt::join(spec->labels, ", "))
-                   : "";
+      paired = pairing(*spec);
     }
     const std::string expect = spec ? relation_symbol(spec->relation) : worst ? relation_symbol(worst->relation) : "-";
     const std::string against =

@@ -12,7 +12,7 @@
 #include "analysis/nonlinear_modal_spec.hpp"
 #include "analysis/rotating_spec.hpp"
 #include "analysis/static_spec.hpp"
-#include "analysis/time_spec.hpp"
+#include "forced/time_spec.hpp"
 #include "forced/hbm_spec.hpp"
 
 namespace bb {

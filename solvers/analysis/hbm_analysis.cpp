@@ -17,6 +17,7 @@
 #include "forced/hbm_levels.hpp"
 #include "forced/hbm_nonlinear_modes.hpp"
 #include "forced/hbm_response.hpp"
+#include "forced/stuck_limit.hpp"
 #include "frf/receptance.hpp"
 #include "frf/sweep.hpp"
 #include "friction/state_fractions.hpp"
@@ -311,22 +312,16 @@ void add_limit_tables(HbmOutcome& o, const HbmSpec& spec) {
   const std::vector<std::string> kinds = peak_kinds(p);
   const friction::FrictionModel& m = p.model;
   const Index nb = p.blade_dofs;
-  // Harmonic 1 of a travelling wave: a cyclic contact couples its next sector with a phase.
-  const Eigen::MatrixXcd stuck = friction::stuck_stiffness(m, 1);
   // Limit 0: the linear model alone (the damper's DOFs left out); 1: every contact stuck.
   const auto limit_solve = [&](int l, double w) -> Eigen::VectorXcd {
+    if (l == 1) return stuck_response(m, w);
     if (!m.nodal_diameters.empty()) {  // a cyclic sector: harmonic 1's nodal diameter
       const friction::NodalDiameterOperators& k1 = m.nodal_diameters.of_harmonic(1);
-      const Eigen::MatrixXcd d =
-          (l == 0 ? k1.stiffness : stuck) + std::complex<double>(0.0, w) * k1.damping - w * w * k1.mass;
-      if (l == 0) return d.topLeftCorner(nb, nb).partialPivLu().solve(m.harmonic_load.head(nb));
-      return d.partialPivLu().solve(m.harmonic_load);
+      const Eigen::MatrixXcd d = k1.stiffness + std::complex<double>(0.0, w) * k1.damping - w * w * k1.mass;
+      return d.topLeftCorner(nb, nb).partialPivLu().solve(m.harmonic_load.head(nb));
     }
-    if (l == 0)
-      return direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),
-                             m.mass.topLeftCorner(nb, nb), w, m.harmonic_load.head(nb));
-    const Eigen::MatrixXcd d = stuck + std::complex<double>(0.0, w) * m.damping - w * w * m.mass;
-    return d.partialPivLu().solve(m.harmonic_load);
+    return direct_response(m.stiffness.topLeftCorner(nb, nb), m.damping.topLeftCorner(nb, nb),
+                           m.mass.topLeftCorner(nb, nb), w, m.harmonic_load.head(nb));
   };
   const int n_grid = 2001;
   o.limit_frequency_hz = Eigen::VectorXd::LinSpaced(n_grid, spec.sweep.f_min, spec.sweep.f_max);

@@ -108,15 +108,6 @@ std::vector<double> cost_row(const TimeLevel& level, size_t l, const TimeSpec& s
 
 }  // namespace
 
-bool marches(const TimeSpec& spec) {
-  return spec.method == TimeSpec::Method::newmark || spec.period_map == TimeSpec::PeriodMap::newmark;
-}
-
-bool steady_first_harmonic(const TimeLevel& level, const TimeSpec& spec, Index i) {
-  return marches(spec) && spec.envelope_tolerance > 0.0 && !level.steady[static_cast<size_t>(i)] &&
-         level.envelope_span[static_cast<size_t>(i)] <= spec.envelope_tolerance;
-}
-
 void add_sweep_tables(TimeOutcome& o, const TimeSpec& spec, const std::vector<double>& frequencies,
                       const std::optional<std::pair<Index, Index>>& pair) {
   const PreparedHbm& p = o.prepared;

@@ -2,7 +2,7 @@
 #pragma once
 #include <filesystem>
 
-#include "analysis/time_spec.hpp"
+#include "forced/time_spec.hpp"
 #include "common/toml_reader.hpp"
 
 namespace bb {

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <limits>
 
-#include "analysis/time_sweeps.hpp"
 #include "common/constants.hpp"
 #include "forced/hbm_level_system.hpp"
+#include "forced/time_sweep.hpp"
 #include "timeint/newmark_shooting.hpp"
 #include "timeint/shooting.hpp"
 

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "assembly/element_traits.hpp"
 #include "assembly/sparsity.hpp"
 #include "common/errors.hpp"
-#include "fe/element_traits.hpp"
 #include "mesh/element_coords.hpp"
 #include "mesh/element_topology.hpp"
 
@@ -15,7 +15,7 @@ namespace bb {
 namespace {
 
 template <class E>
-void assemble_block(const Mesh& mesh, const ElementBlock& block, const fe::Materials& materials,
+void assemble_block(const Mesh& mesh, const ElementBlock& block, const ElementMaterials& materials,
                     const NodalPattern& pattern, GlobalMatrices& g, const AssemblyOptions& options) {
   for (Eigen::Index e = 0; e < block.conn.rows(); ++e) {
     const int* nodes = block.conn.row(e).data();
@@ -40,9 +40,9 @@ GlobalMatrices assemble(const Mesh& mesh, const fe::PlaneSection& section, const
   if (options.stiffness) g.stiffness = pattern.zero_matrix();
   if (options.mass) g.mass = pattern.zero_matrix();
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  const fe::Materials materials{section, solid};
+  const ElementMaterials materials{section, solid};
   for (const auto& b : mesh.blocks)
-    fe::with_element(b.type, [&]<class E>(E) { assemble_block<E>(mesh, b, materials, pattern, g, options); });
+    with_element(b.type, [&]<class E>(E) { assemble_block<E>(mesh, b, materials, pattern, g, options); });
   // The mass pattern carries the stiffness's direction coupling, which mass never has.
   if (options.mass) g.mass.prune(0.0);
   return g;

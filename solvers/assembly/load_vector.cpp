@@ -6,8 +6,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "assembly/element_traits.hpp"
 #include "common/errors.hpp"
-#include "fe/element_traits.hpp"
 #include "fe/surface_load.hpp"
 #include "mesh/boundary.hpp"
 #include "mesh/element_topology.hpp"
@@ -113,9 +113,9 @@ Eigen::VectorXd surface_load_vector(const Mesh& mesh, double thickness, const Su
 Eigen::VectorXd body_load_vector(const Mesh& mesh, const fe::PlaneSection& section, const BodyLoad& load) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh.n_nodes()) * mesh.dim);
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  const fe::Materials materials{section, solid};
+  const ElementMaterials materials{section, solid};
   for (const ElementBlock& b : mesh.blocks)
-    fe::with_element(b.type, [&]<class E>(E) {
+    with_element(b.type, [&]<class E>(E) {
       add_body_block<E::nodes, E::dim>(
           mesh, b, load, [&](const auto& x) { return E::mass(x, materials); }, f);
     });

@@ -6,8 +6,8 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "assembly/element_traits.hpp"
 #include "common/errors.hpp"
-#include "fe/element_traits.hpp"
 #include "mesh/element_coords.hpp"
 
 namespace bb {
@@ -30,7 +30,7 @@ struct BlockNodal {
 // extrapolated to its nodes; the points' coordinates too where `points` asks.
 template <class E>
 BlockNodal recover_block(const Mesh& mesh, const ElementBlock& block, const Eigen::MatrixXd& u,
-                         const fe::Materials& materials, IntegrationPointStresses* points, Eigen::MatrixXd& sum,
+                         const ElementMaterials& materials, IntegrationPointStresses* points, Eigen::MatrixXd& sum,
                          Eigen::VectorXi& count) {
   constexpr int N = E::nodes, D = E::dim, P = E::points, C = D == 2 ? 3 : 6;
   BlockNodal out;
@@ -66,7 +66,7 @@ BlockNodal recover_block(const Mesh& mesh, const ElementBlock& block, const Eige
 }
 
 int integration_point_count(ElementType type) {
-  return fe::with_element(type, []<class E>(E) { return E::points; });
+  return with_element(type, []<class E>(E) { return E::points; });
 }
 
 }  // namespace
@@ -98,13 +98,13 @@ StressField recover_stresses(const Mesh& mesh, const fe::PlaneSection& section, 
   }
   IntegrationPointStresses* points = field.points ? &*field.points : nullptr;
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  const fe::Materials materials{section, solid};
+  const ElementMaterials materials{section, solid};
   const Eigen::MatrixXd& u = displacements;
   std::vector<BlockNodal> per_block;
   for (const ElementBlock& b : mesh.blocks) {
     if (element_dimension(b.type) != mesh.dim)
       throw InputError(fmt::format("{} elements in a {}D mesh", element_name(b.type), mesh.dim));
-    fe::with_element(b.type, [&]<class E>(E) {
+    with_element(b.type, [&]<class E>(E) {
       per_block.push_back(recover_block<E>(mesh, b, u, materials, points, sum, field.elements));
     });
   }

@@ -4,9 +4,9 @@
 
 #include <stdexcept>
 
+#include "assembly/element_traits.hpp"
 #include "assembly/sparsity.hpp"
 #include "common/errors.hpp"
-#include "fe/element_traits.hpp"
 #include "mesh/element_coords.hpp"
 
 namespace bb::ffrf {
@@ -36,8 +36,8 @@ void for_each_element(const ElementBlock& block, Fn fn) {
 // The scalar consistent mass m_ab of an element, whatever its type.
 Eigen::MatrixXd scalar_mass(ElementType type, const Mesh& mesh, const int* nodes, const fe::PlaneSection& section) {
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  const fe::Materials materials{section, solid};
-  const Eigen::MatrixXd expanded = fe::with_element(type, [&]<class E>(E) -> Eigen::MatrixXd {
+  const ElementMaterials materials{section, solid};
+  const Eigen::MatrixXd expanded = with_element(type, [&]<class E>(E) -> Eigen::MatrixXd {
     return E::mass(element_coords<E::nodes, E::dim>(mesh, nodes), materials);
   });
   const int dim = element_dimension(type), n = nodes_per_element(type);
@@ -58,8 +58,8 @@ Eigen::MatrixXd kron(const Eigen::MatrixXd& m, const Eigen::MatrixXd& block) {
 void add_geometric_stiffness(const Mesh& mesh, const ElementBlock& block, const fe::PlaneSection& section,
                              const Eigen::VectorXd& u, const NodalPattern& pattern, Eigen::SparseMatrix<double>& k) {
   const fe::SolidMaterial solid{section.youngs_modulus, section.poisson_ratio, section.density};
-  const fe::Materials materials{section, solid};
-  fe::with_element(block.type, [&]<class E>(E) {
+  const ElementMaterials materials{section, solid};
+  with_element(block.type, [&]<class E>(E) {
     for_each_element(block, [&](const int* nodes) {
       const auto xyz = element_coords<E::nodes, E::dim>(mesh, nodes);
       const auto s = E::point_stresses(xyz, element_displacement<E::nodes, E::dim>(u, nodes), materials);

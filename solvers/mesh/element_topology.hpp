@@ -1,4 +1,4 @@
-// The data of each element type in one table (its formulas are its row in fe/element_traits.hpp):
+// The data of each element type in one table (its formulas are its row in assembly/element_traits.hpp):
 // name, dimension, node count, its edges and (solids) its faces in local node numbers, node order as
 // in mesh/mesh.hpp (Ansys/CalculiX); its Gmsh type and node order, its CalculiX name, the work its
 // rows cost. Plots, loads on edges and faces, mesh readers and writers, the case parser and the work

@@ -1,6 +1,6 @@
 // The element table (mesh/element_topology.hpp, fe/element_traits.hpp): every type has one data row
 // and one formula row that agree, and the readers' and writers' names come from it.
-#include "fe/element_traits.hpp"
+#include "assembly/element_traits.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@ TEST(ElementTable, EveryTypeOnceInEnumeratorOrderWithAgreeingRows) {
     const ElementTopology& data = topology(t);
     EXPECT_TRUE(names.insert(data.name).second) << data.name;
     EXPECT_EQ(element_type_named(data.name), t);
-    fe::with_element(t, [&]<class E>(E) {
+    with_element(t, [&]<class E>(E) {
       EXPECT_EQ(E::type, t) << data.name;
       EXPECT_EQ(E::nodes, data.nodes) << data.name;
       EXPECT_EQ(E::dim, data.dimension) << data.name;

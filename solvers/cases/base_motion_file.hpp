@@ -1,8 +1,9 @@
 // A measured base acceleration over whole periods of a steady excitation (a shaker table's
-// accelerometer, synchronously averaged), read into the harmonics of a base motion: CSV with the
-// header `time [s],acceleration [m/s^2]` (any time or acceleration unit the measured-data reader
-// knows, e.g. ms, g), rows uniformly spaced, the last one a step before the end of `periods`
-// periods (the DFT's convention: the first sample of the next period is not repeated).
+// accelerometer, synchronously averaged), read into the harmonics of a base motion: a CSV file of
+// the measured-data reader's kind acceleration_history (identify/measured_data.hpp: header
+// `time [s],acceleration [m/s^2]`, any time or acceleration unit it knows, e.g. ms, g), rows
+// uniformly spaced, the last one a step before the end of `periods` periods (the DFT's
+// convention: the first sample of the next period is not repeated).
 #pragma once
 #include <filesystem>
 #include <vector>

@@ -7,6 +7,7 @@
 
 #include "cases/base_motion_file.hpp"
 #include "cases/parse_frf.hpp"
+#include "cases/parse_hbm.hpp"
 
 namespace bb {
 namespace {
@@ -73,13 +74,11 @@ BaseMotionSpec parse_base_motion(TomlReader& analysis, const std::filesystem::pa
   } else {
     levels = {measured_level};
   }
-  for (size_t i = 0; i < levels.size(); ++i) {
+  for (size_t i = 0; i < levels.size(); ++i)
     if (!(levels[i] > 0.0) || !std::isfinite(levels[i]) || levels[i] > 1e9)
       b.fail("levels", fmt::format("every level must be a base acceleration in (0, 1e9] m/s^2, entry {} is {}", i + 1,
                                    levels[i]));
-    if (std::count(levels.begin(), levels.begin() + static_cast<long>(i), levels[i]) > 0)
-      b.fail("levels", fmt::format("level {} m/s^2 is listed twice", levels[i]));
-  }
+  check_levels(b, "levels", levels, "base acceleration", "m/s^2");
   b.finish();
   return s;
 }

@@ -53,6 +53,8 @@ KindColumns kind_columns(DataKind kind) {
       return {{"frequency"}, {"amplitude", "phase", "force"}};
     case DataKind::hysteresis:
       return {{"relative_displacement", "tangential_force"}, {}};
+    case DataKind::acceleration_history:  // a base motion's input, not a calibration kind
+      break;
   }
   return {};
 }

@@ -253,6 +253,21 @@ void refuse_two_directions_beyond_sweeps(TomlReader& r, const HbmSpec& s, bool h
            "sweeps only (no time integration, sensitivities, nonlinear modes or cyclic sector)");
 }
 
+void check_levels(TomlReader& r, const std::string& key, const std::vector<double>& levels, const char* quantity,
+                  const char* unit) {
+  std::set<double> unique;
+  std::map<std::string, double> tables;  // each level writes its own table: no two may share a name
+  for (double f : levels) {
+    if (!(f > 0) || !std::isfinite(f))
+      r.fail(key, fmt::format("every level must be a positive {} [{}]", quantity, unit));
+    if (!unique.insert(f).second) r.fail(key, fmt::format("level {} {} is listed twice", f, unit));
+    if (const auto [it, fresh] = tables.emplace(hbm_frf_table_name(f), f); !fresh)
+      r.fail(key, fmt::format("levels {} {} and {} {} would both write table '{}' (a level is named by its first 6 "
+                              "significant digits): make them differ there",
+                              it->second, unit, f, unit, it->first));
+  }
+}
+
 HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required) {
   HbmSpec s;
   s.at = r.location();
@@ -362,16 +377,7 @@ HbmSpec parse_hbm(TomlReader& r, const fs::path& folder, bool contacts_required)
     s.force_levels = r.number_array("force_levels");
     if (s.force_levels.empty()) r.fail("force_levels", "needs at least one level [N]");
   }
-  std::set<double> unique;
-  std::map<std::string, double> tables;  // each level writes its own table: no two may share a name
-  for (double f : s.force_levels) {
-    if (!(f > 0) || !std::isfinite(f)) r.fail("force_levels", "every level must be a positive force [N]");
-    if (!unique.insert(f).second) r.fail("force_levels", fmt::format("level {} N is listed twice", f));
-    if (const auto [it, fresh] = tables.emplace(hbm_frf_table_name(f), f); !fresh)
-      r.fail("force_levels", fmt::format("levels {} N and {} N would both write table '{}' (a level is named by its "
-                                         "first 6 significant digits): make them differ there",
-                                         it->second, f, it->first));
-  }
+  if (!s.base_motion) check_levels(r, "force_levels", s.force_levels, "force", "N");
   if (const toml::table* t = r.optional_table("ip_oop")) {
     TomlReader p(*t, r.path() + ".ip_oop", r.file());
     s.ip_oop.emplace(parse_point_dof(p, "left", p.string("left")), parse_point_dof(p, "right", p.string("right")));

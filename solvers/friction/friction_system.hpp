@@ -89,7 +89,7 @@ struct FrictionModel {
   Eigen::VectorXcd harmonic_load;            // n [N], complex amplitude at harmonic 1; empty = none
   // Harmonics 2, 3, ... of the excitation (a base motion's distortion), entry k at harmonic k + 2,
   // each n complex amplitudes [N]; empty = harmonic 1 alone. Not with nodal diameters.
-  std::vector<Eigen::VectorXcd> higher_loads;
+  std::vector<Eigen::VectorXcd> higher_loads{};
   CyclicLinearModel nodal_diameters{};  // the harmonic balance only; empty = none
 };
 

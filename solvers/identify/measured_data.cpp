@@ -74,7 +74,19 @@ const std::vector<ColumnSpec>& column_specs(DataKind kind) {
   static const std::vector<ColumnSpec> hysteresis = {{"relative_displacement", {length}, true},
                                                      {"tangential_force", {force}, true},
                                                      {"force_sigma", {force}, false, true, "tangential_force"}};
-  return kind == DataKind::peaks ? peaks : kind == DataKind::frf ? frf : hysteresis;
+  static const std::vector<ColumnSpec> history = {{"time", {Dimension::time}, true},
+                                                  {"acceleration", {acceleration}, true}};
+  switch (kind) {
+    case DataKind::peaks:
+      return peaks;
+    case DataKind::frf:
+      return frf;
+    case DataKind::hysteresis:
+      return hysteresis;
+    case DataKind::acceleration_history:
+      return history;
+  }
+  return frf;
 }
 
 // Appends the number in `cell` to `values`, or says what is wrong with it (empty when nothing).
@@ -207,6 +219,8 @@ const char* data_kind_name(DataKind k) {
       return "frf";
     case DataKind::hysteresis:
       return "hysteresis";
+    case DataKind::acceleration_history:
+      return "acceleration_history";
   }
   return "?";
 }
@@ -308,7 +322,7 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind, const Measu
     throw fail(header_line, fmt::format("missing column 'amplitude [<{} unit>]' (or 'phase [<angle unit>]' for a "
                                         "curve of phases alone); the file has: {}",
                                         dims_text(response_dims()), join_names(names)));
-  const bool ratios = kind != DataKind::hysteresis && find("frequency")->unit.dimension == dimensionless;
+  const bool ratios = find("frequency") && find("frequency")->unit.dimension == dimensionless;
   if (ratios && !options.natural_frequency_hz)
     throw fail(header_line,
                fmt::format("column 'frequency' holds ratios ('{}'): give the natural frequency they are ratios to "
@@ -339,7 +353,7 @@ MeasuredData read_measured_data(const fs::path& file, DataKind kind, const Measu
   }
 
   const size_t n = data.lines.size();
-  const size_t min_rows = kind == DataKind::hysteresis ? 8 : 1;
+  const size_t min_rows = kind == DataKind::hysteresis ? 8 : kind == DataKind::acceleration_history ? 2 : 1;
   if (n < min_rows)
     throw fail(header_line, fmt::format("{} data rows; a {} file needs at least {}{}", n, data_kind_name(kind),
                                         min_rows, kind == DataKind::hysteresis ? " (one loop, in time order)" : ""));

@@ -16,6 +16,9 @@
 //               decreasing (down).
 //   hysteresis  relative_displacement [length], tangential_force [force], optional force_sigma
 //               [force]. Rows in time order over the loop; at least 8 rows.
+//   acceleration_history  time [time], acceleration [acceleration]: a signal in time order, e.g.
+//               a shaker table's accelerometer over whole periods (cases/base_motion_file.hpp);
+//               at least 2 rows.
 // The amplitude of frf and peaks data (and its sigma) may also be a velocity or an acceleration
 // (or either per newton): each row is converted through its own harmonic, |x| = |v| / w = |a| / w^2
 // with w = 2 pi f, and the phase moved by -90 or -180 degrees (v = i w x, a = -w^2 x for
@@ -80,9 +83,9 @@ std::string known_unit_symbols();
 std::optional<Dimension> column_dimension(std::string_view column);
 double column_to_si(std::string_view column);  // 1 except pi/180 for _deg
 
-enum class DataKind { peaks, frf, hysteresis };
+enum class DataKind { peaks, frf, hysteresis, acceleration_history };
 
-const char* data_kind_name(DataKind k);  // "peaks", "frf", "hysteresis"
+const char* data_kind_name(DataKind k);  // "peaks", "frf", "hysteresis", "acceleration_history"
 
 struct MeasuredData {
   std::filesystem::path file;

@@ -11,7 +11,7 @@ PACKAGES=(build-essential cmake pkg-config libeigen3-dev libspectra-dev libtomlp
           libceres-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev
           libbenchmark-dev gnuplot-nox libcmark-gfm-dev libcmark-gfm-extensions-dev libxxhash-dev chromium ccache
           clang libclang-rt-14-dev
-          pybind11-dev python3-dev python3-numpy python3-pytest
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-meshio python3-pandas
           libslepc-real-dev libpetsc-real-dev openmpi-bin)
 
 ensure_packages() {

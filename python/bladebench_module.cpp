@@ -27,6 +27,9 @@
 #include "linalg/modal_solver.hpp"
 #include "model/build_model.hpp"
 #include "reduction/reduced_model.hpp"
+#include "reduction/reduced_model_io.hpp"
+#include "table_arrays.hpp"
+#include "calibrate_binding.hpp"
 
 namespace py = pybind11;
 
@@ -118,23 +121,12 @@ bb::friction::ContactElement contact_of(const py::handle& item, size_t index, py
   return e;
 }
 
-// {table name: {"columns": [...], "values": 2-D array (rows x columns), "text": {column: [str]}}}.
+// {table name: bladebench.Table}, the tables the command line writes as CSV.
 py::dict run_case(const std::string& case_file, const std::vector<std::string>& settings) {
   toml::table root = bb::read_case_table(case_file);
   bb::apply_settings(root, settings);
   const bb::CaseSpec spec = bb::parse_case_table(root, case_file);
-  const bb::AnalysisResults results = bb::run_analysis(spec.analysis, bb::build_model(spec.model));
-  py::dict tables;
-  for (const auto& [name, t] : results.tables) {
-    py::dict text;
-    for (size_t c = 0; c < t.text_columns.size(); ++c) text[py::str(t.text_columns[c])] = t.text[c];
-    py::dict table;
-    table["columns"] = t.columns;
-    table["values"] = t.values;  // pybind11/eigen.h: a float64 array
-    table["text"] = text;
-    tables[py::str(name)] = table;
-  }
-  return tables;
+  return bb::python::table_arrays(bb::run_analysis(spec.analysis, bb::build_model(spec.model)).tables);
 }
 
 // The first-harmonic amplitude of every DOF over the frequencies, each frequency solved from the
@@ -232,6 +224,18 @@ py::dict mesh_modes(const std::string& case_file, int count) {
   return out;
 }
 
+// A reduced model on disk (a sidecar naming Matrix Market, CSV or Harwell-Boeing files and the DOFs).
+py::dict read_reduced_model(const std::string& sidecar) {
+  const bb::ReducedModel model = bb::read_reduced_model(sidecar);
+  std::vector<std::string> dofs;
+  for (const bb::ReducedDof& d : model.dofs) dofs.push_back(d.name());
+  py::dict out;
+  out["stiffness"] = model.stiffness;
+  out["mass"] = model.mass;
+  out["dofs"] = dofs;
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(bladebench, m) {
@@ -241,14 +245,49 @@ PYBIND11_MODULE(bladebench, m) {
   auto solver_error = py::register_exception<bb::SolverError>(m, "SolverError", PyExc_RuntimeError);
   input_error.attr("exit_code") = 2;  // the command line's exit code for the same failure
   solver_error.attr("exit_code") = 3;
+  bb::python::define_table_class(m);
   m.def("run_case", &run_case, py::arg("case_file"), py::arg("settings") = std::vector<std::string>{},
-        "Runs a case file's analysis; returns {table: {'columns', 'values' (2-D float64), 'text'}}. settings: "
-        "'dotted.key=VALUE' strings as `bladebench run --set`.");
+        R"(Runs a case file's analysis (its model and analysis; no checks, no report) and returns its result
+tables, the ones `bladebench run` writes as CSV, as {name: bladebench.Table}: NumPy record arrays,
+one field per column (the key int64, numbers float64 in SI units, labels str), with to_pandas().
+
+  settings  'dotted.key=VALUE' strings replacing the case file's values, as `bladebench run --set`.
+
+Raises InputError (exit class 2: a malformed case, with file:line:key) and SolverError (exit class
+3: a solver that did not converge).)");
+  bb::python::define_calibrate(m);
+  m.def("read_reduced_model", &read_reduced_model, py::arg("sidecar"),
+        R"(Reads a reduced model as the cases do (cases/README.md, "Reduced models on disk"): a TOML sidecar
+naming the stiffness and mass files (Matrix Market, CSV, or Harwell-Boeing as Ansys HBMAT writes
+them) and the DOFs (a list, or a DOF map: Ansys's .mapping or a CSV node,direction). Returns
+{"stiffness", "mass": n x n float64 [N/m, kg], "dofs": ["101.x", ...]}: matrices for hbm_sweep.
+Raises InputError naming the file and line of anything malformed (a header that disagrees with its
+data, a matrix that is not symmetric, a DOF map of the wrong length).)");
   m.def("hbm_sweep", &hbm_sweep, py::arg("mass"), py::arg("stiffness"), py::arg("damping"), py::arg("force"),
         py::arg("frequencies_hz"), py::arg("contacts"), py::arg("harmonics") = 1, py::arg("tolerance") = 1e-9,
-        "Harmonic-balance sweep of a reduced model (n x n float64 M, K, C; complex128 force of n) with Jenkins "
-        "contacts; returns frequency_hz, amplitude (frequencies x n, first harmonic), coefficients (frequencies x "
-        "n x 2H+1: c0, a1, b1, ...), converged, failures.");
+        R"(Harmonic-balance frequency sweep of a reduced model of yours with Jenkins friction contacts (a
+spring kt in series with a Coulomb slider, the normal load n0 + kn a_n.q, lift-off when it reaches 0),
+each frequency solved from the one before (natural continuation).
+
+  mass, stiffness, damping  n x n float64 [kg, N/m, N s/m]: symmetric, M positive definite (the case
+                            reader's rules: read_reduced_model gives them from an export)
+  force                     n complex128: the first harmonic of the force [N], F e^{i w t}
+  frequencies_hz            float64 [Hz], each > 0
+  contacts                  a list of dicts: "tangential" (n float64: the relative tangential
+                            displacement a_t.q), "kt" [N/m], "mu", "n0" [N], and optionally "normal"
+                            (n float64) and "kn" [N/m]
+  harmonics                 H in [1, 100]: harmonics 0..H of the response
+  tolerance                 the Newton loop's relative residual, in (0, 1e-2)
+
+Returns {"frequency_hz", "amplitude" (frequencies x n: |harmonic 1|), "coefficients" (frequencies x
+n x 2H+1: c0, a1, b1, ...), "converged" (bool per frequency), "failures" (why each that did not)}.
+A frequency that does not converge is NaN and named in failures, never silently wrong. Raises
+InputError for an array of the wrong dtype or shape (the shape expected named), a number out of
+range, a matrix that is not symmetric.)");
   m.def("mesh_modes", &mesh_modes, py::arg("case_file"), py::arg("count") = 6,
-        "The lowest modes of a case's mesh: frequency_hz, shapes (free DOFs x count), sturm_count, complete.");
+        R"(The lowest `count` modes (1..10000) of a case's mesh with its material and boundary conditions
+(the case's [analysis] is not run), by Lanczos with the Sturm (inertia) count of K - sigma M.
+Returns {"frequency_hz" (count), "shapes" (free DOFs x count, mass-normalized), "sturm_count" (the
+eigenvalues below the last one's shift), "complete" (no mode missed)}. Raises InputError for a case
+without a mesh or a malformed one.)");
 }

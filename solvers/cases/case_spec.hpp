@@ -26,6 +26,7 @@ struct CaseSpec {
   // The plots a report shows under its verdict, by name (the SVG's stem); empty: the first plot.
   std::vector<std::string> key_plots;
   SourceLocation key_plots_at;
+  bool vtk = false;                  // ParaView files of the run's fields (report/vtk_files.hpp)
   std::filesystem::path model_from;  // the case whose material, mesh, sets and constraints these are
   ModelSpec model;
   AnalysisSpec analysis;

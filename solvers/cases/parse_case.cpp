@@ -241,6 +241,7 @@ CaseSpec parse_case_table(const toml::table& root, const fs::path& file) {
       }
     }
     if (const auto from = c.optional_string("model_from")) spec.model_from = folder / *from;
+    spec.vtk = c.boolean("vtk", false);
     c.finish();
   }
   spec.analysis = parse_analysis(TomlReader(top.table("analysis"), "analysis", file), folder);

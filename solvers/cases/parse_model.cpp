@@ -11,6 +11,7 @@
 #include "cases/parse_bladed_disk.hpp"
 #include "cases/parse_common.hpp"
 #include "cases/parse_dimensions.hpp"
+#include "cases/parse_inp.hpp"
 #include "common/errors.hpp"
 #include "common/user_text.hpp"
 #include "mesh/element_topology.hpp"
@@ -147,11 +148,16 @@ void parse_blade_section(TomlReader& r, MeshSpec& m) {
   parse_dimensions(r, m.two_blade);
 }
 
-MeshSpec parse_mesh(TomlReader r, const fs::path& folder) {
+MeshSpec parse_mesh(TomlReader r, const fs::path& folder, InpDeck& inp_header) {
   MeshSpec m;
   m.at = r.location();
-  const std::string kind =
-      r.choice("kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "two_blade", "blade_section", "bladed_disk"});
+  const std::string kind = r.choice(
+      "kind", {"mapped_quad", "csv", "hex_blocks", "gmsh", "inp", "two_blade", "blade_section", "bladed_disk"});
+  if (kind == "inp") {
+    parse_inp_mesh(r, m, folder, inp_header);
+    r.finish();
+    return m;
+  }
   m.element = parse_element(r);
   if (kind == "bladed_disk") {
     parse_bladed_disk(r, m);
@@ -391,7 +397,12 @@ void parse_contact_pair(TomlReader r, ModelSpec& spec) {
 ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) {
   const fs::path& file = top.file();
   ModelSpec spec;
-  {
+  InpDeck deck;
+  spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder, deck);
+  const bool from_deck = spec.mesh.kind == MeshSpec::Kind::inp;
+  if (from_deck && !top.has("material")) {
+    material_from_deck(deck, spec, needs_mass);
+  } else {
     TomlReader m(top.table("material"), "material", file);
     spec.section.youngs_modulus = m.positive("E");
     spec.section.poisson_ratio = m.number("nu");
@@ -401,9 +412,16 @@ ModelSpec parse_model(TomlReader& top, const fs::path& folder, bool needs_mass) 
     if (needs_mass && !(spec.section.density > 0))
       m.fail("rho", "must be > 0 for a modal analysis or a forced response");
     m.finish();
+    for (const InpMaterial& d : deck.materials)
+      spec.mesh.inp_notes.push_back(fmt::format("the deck's *MATERIAL {} ({}) is replaced by the case's [material]",
+                                                d.name, d.where));
   }
-  spec.mesh = parse_mesh(TomlReader(top.table("mesh"), "mesh", file), folder);
-  if (spec.mesh.dim() == 2) {
+  if (from_deck && spec.mesh.dim() == 2 && deck.thickness) {
+    if (top.has("section"))
+      top.fail("section", fmt::format("the deck gives the thickness ({} m at {}); remove [section] or the deck's",
+                                      *deck.thickness, deck.thickness_where));
+    spec.section.thickness = *deck.thickness;
+  } else if (spec.mesh.dim() == 2) {
     TomlReader s(top.table("section"), "section", file);
     spec.section.thickness = s.positive("thickness");
     s.finish();

@@ -54,7 +54,7 @@ int html_command(const std::string& folder) {
 struct RunArgs {
   std::vector<std::string> cases;
   std::string out;
-  bool study = false, no_plots = false;
+  bool study = false, no_plots = false, vtk = false;
   bb::FidelityMode fidelity = bb::FidelityMode::fixed;
   bb::WorkLimits limits;
   std::vector<std::string> settings, removals;
@@ -87,6 +87,7 @@ int run_command(const RunArgs& a) {
     bb::RunOptions opt;
     opt.study = a.study;
     opt.plots = root && !a.no_plots;
+    opt.vtk = a.vtk;
     opt.fidelity = a.fidelity;
     opt.limits = a.limits;
     opt.cache = a.cache;
@@ -322,6 +323,7 @@ int main(int argc, char** argv) {
                   "Output folder (default reports/<case-name>; with several cases, a parent folder)");
   run->add_flag("--study", run_args.study, "Also run the case's [study] (mesh refinement, accuracy vs cost)");
   run->add_flag("--no-plots", run_args.no_plots, "Skip gnuplot figures");
+  run->add_flag("--vtk", run_args.vtk, "Also write the fields on the mesh for ParaView (vtk/*.vtu), as [case] vtk = true");
   run->add_option("--set", run_args.settings,
                   "dotted.key=VALUE (TOML value) replacing the case file's setting, e.g. --set analysis.harmonics=7; "
                   "repeatable; the report warns that it ran at it");

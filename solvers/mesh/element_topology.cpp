@@ -16,13 +16,13 @@ constexpr std::array<std::array<int, 4>, 6> kHexFaces = {
 // top face, then up the vertical edges (mesh/mesh.hpp).
 constexpr std::array<int, 20> kGmshHex20 = {0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 13, 9, 16, 18, 19, 17, 10, 12, 14, 15};
 
-// name, dimension, nodes, corners, edges, faces, Gmsh type and order, CalculiX name, row nonzeros.
-constexpr ElementTopology kQ4{"q4", 2, 4, 4, kQuadEdges, {}, 3, {}, "", 18.0};
-constexpr ElementTopology kCst{"cst", 2, 3, 3, kTriangleEdges, {}, 2, {}, "", 14.0};
-constexpr ElementTopology kHex8{"hex8", 3, 8, 8, kHexEdges, kHexFaces, 5, {}, "C3D8", 81.0};
-constexpr ElementTopology kHex8i{"hex8i", 3, 8, 8, kHexEdges, kHexFaces, 5, {}, "C3D8I", 81.0};  // ccx's own bubbles
+// name, dimension, nodes, corners, edges, faces, Gmsh type and order, CalculiX name, row nonzeros, VTK type.
+constexpr ElementTopology kQ4{"q4", 2, 4, 4, kQuadEdges, {}, 3, {}, "CPS4", 18.0, 9};
+constexpr ElementTopology kCst{"cst", 2, 3, 3, kTriangleEdges, {}, 2, {}, "CPS3", 14.0, 5};
+constexpr ElementTopology kHex8{"hex8", 3, 8, 8, kHexEdges, kHexFaces, 5, {}, "C3D8", 81.0, 12};
+constexpr ElementTopology kHex8i{"hex8i", 3, 8, 8, kHexEdges, kHexFaces, 5, {}, "C3D8I", 81.0, 12};  // ccx's own bubbles
 constexpr ElementTopology kHex20{"hex20",   3,  20,         8,       kHexEdges,
-                                 kHexFaces, 17, kGmshHex20, "C3D20", 180.0};  // 3x3x3 Gauss
+                                 kHexFaces, 17, kGmshHex20, "C3D20", 180.0, 25};  // 3x3x3 Gauss
 
 constexpr std::array<ElementType, 5> kTypes = {ElementType::q4, ElementType::cst, ElementType::hex8, ElementType::hex8i,
                                                ElementType::hex20};

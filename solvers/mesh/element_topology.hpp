@@ -25,8 +25,9 @@ struct ElementTopology {
   std::span<const std::array<int, 4>> faces;
   int gmsh_type = 0;                // elm-type of the MSH format (hex8 and hex8i share 5: a case says which)
   std::span<const int> gmsh_order;  // our node a is Gmsh's gmsh_order[a]; empty = the same order
-  std::string_view calculix;        // ccx's name of the element; empty = not exported
+  std::string_view calculix;        // the deck name (ccx, Abaqus): read by mesh/abaqus_inp, solids exported
   double row_nonzeros = 0.0;        // nonzeros of a stiffness row: the DOFs of the nodes an element shares with one
+  int vtk_type = 0;                 // VTK's cell type; our node order is VTK's (hex20: VTK_QUADRATIC_HEXAHEDRON)
 
   bool quadratic() const { return nodes > corners; }
 };

@@ -9,6 +9,7 @@
 
 #include "common/csv_reader.hpp"
 #include "common/errors.hpp"
+#include "mesh/abaqus_inp.hpp"
 #include "mesh/boundary.hpp"
 #include "mesh/csv_mesh.hpp"
 #include "mesh/gmsh_import.hpp"
@@ -118,6 +119,32 @@ Mesh build_two_blade(const MeshSpec& spec, std::map<std::string, std::vector<int
   return mesh;
 }
 
+// A deck's mesh; its node sets as groups for [sets] group = ..., those its *BOUNDARY names as node
+// sets of the model, and its *BOUNDARY as constraints.
+void read_deck(const ModelSpec& spec, Model& model, NodeGroups& groups) {
+  require_file(spec.mesh.inp_file, spec.mesh.at);
+  InpDeck deck = read_abaqus_inp(spec.mesh.inp_file, spec.mesh.inp_folder);
+  model.mesh = std::move(deck.mesh);
+  groups = std::move(deck.node_sets);
+  for (const InpBoundary& b : deck.boundaries) {
+    for (const NodeSetSpec& s : spec.sets)
+      if (s.name == b.set)
+        throw InputError(fmt::format("{}: node set '{}': the deck's *BOUNDARY ({}) holds a set of this name; choose "
+                                     "another name",
+                                     s.at.where(), s.name, b.where));
+    Constraint c{b.set, {}, b.value};
+    for (int d = b.first; d <= b.last; ++d) {
+      if (d > model.mesh.dim)
+        throw InputError(fmt::format("{}: *BOUNDARY: DOF {} on a plane mesh (DOFs 1 and 2)", b.where, d));
+      c.directions.push_back(d - 1);
+    }
+    model.node_sets[b.set] = groups.at(b.set);
+    model.constraints.push_back(std::move(c));
+  }
+  model.import_notes = std::move(deck.notes);
+  model.import_notes.insert(model.import_notes.end(), spec.mesh.inp_notes.begin(), spec.mesh.inp_notes.end());
+}
+
 }  // namespace
 
 std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set, const NodeGroups* groups) {
@@ -128,7 +155,7 @@ std::vector<int> select_nodes(const Mesh& mesh, const NodeSetSpec& set, const No
       std::string known;
       if (groups)
         for (const auto& [name, members] : *groups) known += (known.empty() ? "" : ", ") + name;
-      throw InputError(fmt::format("{}: node set '{}': the mesh has no physical group '{}'{}", set.at.where(), set.name,
+      throw InputError(fmt::format("{}: node set '{}': the mesh has no group '{}' (a Gmsh physical group or a deck's *NSET){}", set.at.where(), set.name,
                                    set.group, known.empty() ? "" : " (groups: " + known + ")"));
     }
     nodes = it->second;
@@ -227,6 +254,9 @@ Model build_model(const ModelSpec& spec) {
       groups = std::move(g.node_groups);
       break;
     }
+    case MeshSpec::Kind::inp:
+      read_deck(spec, model, groups);
+      break;
   }
   model.section = spec.section;
   for (const NodeSetSpec& s : spec.sets) {

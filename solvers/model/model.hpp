@@ -81,6 +81,7 @@ struct Model {
   std::vector<SurfaceLoad> surface_loads;
   std::vector<BodyLoad> body_loads;
   std::vector<ContactPair> contact_pairs;
+  std::vector<std::string> import_notes;  // what a deck reader read differently from the file's own solver
 };
 
 }  // namespace bb

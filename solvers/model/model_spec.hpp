@@ -24,6 +24,7 @@ struct MeshSpec {
     csv,
     hex_blocks,
     gmsh,
+    inp,
     two_blade,
     blade_section,
     bladed_disk,
@@ -36,6 +37,9 @@ struct MeshSpec {
   std::vector<std::string> block_bodies;  // hex_blocks: the body of each block
   double merge_tolerance = 1e-9;          // [m]
   std::filesystem::path gmsh_file;        // gmsh: .msh 4.1 ASCII
+  std::filesystem::path inp_file;         // inp: an Abaqus / CalculiX deck
+  std::filesystem::path inp_folder;       // inp: the case's folder, where *INCLUDEs must lie
+  std::vector<std::string> inp_notes;     // inp: what the case changes of the deck (its material replaced)
   TwoBladeDimensions two_blade;           // two_blade and blade_section: the thesis's test article, validated
   BladeSectionDivisions blade_divisions;  // blade_section: the chapter-2 blade's divisions
   BladedDiskDimensions bladed_disk;       // bladed_disk: one sector, validated

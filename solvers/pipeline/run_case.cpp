@@ -24,6 +24,7 @@
 #include "pipeline/run_fidelity.hpp"
 #include "pipeline/run_study.hpp"
 #include "report/analysis_files.hpp"
+#include "report/vtk_files.hpp"
 #include "report/analysis_plots.hpp"
 #include "report/describe_analysis.hpp"
 #include "report/fidelity_plots.hpp"
@@ -192,6 +193,7 @@ void analyse(const CaseSpec& spec, const std::optional<CalibrationSpec>& calibra
   if (!unevaluated.empty())
     throw InputError(fmt::format("{} (the result tables are written; no check verdict)", fmt::join(unevaluated, "; ")));
   write_analysis_files(spec.analysis, results, out, run);
+  if (spec.vtk || options.vtk) write_vtk_files(spec.analysis, results, model, out, run);
   if (options.plots) {
     plot_analysis(spec.analysis, results, model, spec.checks, out, run);
     int i = 0;

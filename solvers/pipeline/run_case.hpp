@@ -16,6 +16,7 @@ struct RunOptions {
   std::optional<std::filesystem::path> out_dir;  // default reports/<case-name>
   bool study = false;                            // also run the case's [study]
   bool plots = true;
+  bool vtk = false;  // ParaView files, as [case] vtk = true
   FidelityMode fidelity = FidelityMode::fixed;   // fixed: the case's own settings; else its [fidelity] axes
   WorkLimits limits = {};                        // every analysis of the run is estimated against these first
   std::optional<ModelCacheSettings> cache = {};  // modes and reductions stored and reused there (none: not cached)

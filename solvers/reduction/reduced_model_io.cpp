@@ -22,6 +22,7 @@
 #include "common/csv_reader.hpp"
 #include "common/errors.hpp"
 #include "common/toml_reader.hpp"
+#include "reduction/harwell_boeing.hpp"
 
 namespace bb {
 namespace fs = std::filesystem;
@@ -224,10 +225,22 @@ ReducedModel read_reduced_model(const fs::path& sidecar) {
   TomlReader top(root, "", sidecar);
   TomlReader r(top.table("reduced_model"), "reduced_model", sidecar);
   top.finish();
-  const std::string format = r.choice("format", {"matrix_market", "csv"});
+  const std::string format = r.choice("format", {"matrix_market", "csv", "harwell_boeing"});
   const std::string k_file = r.string("stiffness"), m_file = r.string("mass");
   ReducedModel model;
-  const std::vector<std::string> names = r.string_array("dofs");
+  if (r.has("dofs") == r.has("dof_map"))
+    r.fail("dofs", "name the DOFs either inline (dofs = [...]) or by a DOF map file (dof_map = \"...\"), one of the two");
+  fs::path dof_map;
+  if (r.has("dof_map")) {
+    const fs::path map = dof_map = sidecar.parent_path() / r.string("dof_map");
+    if (const std::string why = file_problem(map); !why.empty())
+      r.fail("dof_map", fmt::format("DOF map '{}' not found ({})", map.string(), why));
+    model.dofs = read_dof_map(map);
+    if (model.dofs.size() > kMaxFileDofs)
+      throw InputError(fmt::format("{}: names {} DOFs; a reduced-model file holds at most {}", map.string(),
+                                   model.dofs.size(), kMaxFileDofs));
+  }
+  const std::vector<std::string> names = r.has("dofs") ? r.string_array("dofs") : std::vector<std::string>{};
   // The matrices are read into dense n x n arrays: a count taken from the file must not be able to
   // ask for gigabytes before a single entry is read.
   if (names.size() > kMaxFileDofs)
@@ -243,12 +256,16 @@ ReducedModel read_reduced_model(const fs::path& sidecar) {
   r.finish();
 
   const auto n = static_cast<Eigen::Index>(model.dofs.size());
+  const std::string named_by = dof_map.empty()
+                                   ? fmt::format("the sidecar's dofs name {} DOFs", n)
+                                   : fmt::format("the DOF map {} names {} DOFs", dof_map.string(), n);
   auto read_matrix = [&](const std::string& key, const std::string& name) {
     const fs::path file = sidecar.parent_path() / name;
     if (const std::string why = file_problem(file); why == "it is a directory")
       r.fail(key, fmt::format("matrix file '{}' is a folder", file.string()));
     else if (!why.empty())
       r.fail(key, fmt::format("matrix file '{}' not found ({})", file.string(), why));
+    if (format == "harwell_boeing") return read_harwell_boeing(file, n, named_by);
     return format == "csv" ? read_csv_matrix(file, n) : read_matrix_market(file, n);
   };
   model.stiffness = read_matrix("stiffness", k_file);

@@ -2,10 +2,13 @@
 // them and every DOF, so matrices exported from Ansys or NX can replace bladebench's own:
 //
 //   [reduced_model]
-//   format = "matrix_market"        # or "csv": dense, comma-separated, no header, '#' comments
+//   format = "matrix_market"        # or "csv": dense, comma-separated, no header, '#' comments;
+//                                   # or "harwell_boeing" (RSA / RUA, an Ansys HBMAT export)
 //   stiffness = "rom.K.mtx"         # relative to the sidecar
 //   mass = "rom.M.mtx"
 //   dofs = ["R.x", "R.y", "R.z", ..., "mode 1", ..., "mode 10"]
+//   # or instead of dofs: dof_map = "rom.mapping" (reduction/harwell_boeing.hpp: Ansys's .mapping or
+//   # a CSV node,direction; node 7's UX is the DOF "7.x")
 #pragma once
 #include <filesystem>
 

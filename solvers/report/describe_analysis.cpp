@@ -363,6 +363,9 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
     case MeshSpec::Kind::gmsh:
       source = fmt::format("Gmsh {}", spec.mesh.gmsh_file.filename().string());
       break;
+    case MeshSpec::Kind::inp:
+      source = fmt::format("deck {}", spec.mesh.inp_file.filename().string());
+      break;
     case MeshSpec::Kind::none:
       run.facts.emplace_back("model", driven_contact
                                           ? "none: one contact driven by an imposed relative motion (test rig)"
@@ -406,6 +409,7 @@ void describe_model(const ModelSpec& spec, bool driven_contact, const Model& mod
     }
   }
   run.facts.emplace_back("mesh", source);
+  for (const std::string& note : model.import_notes) run.facts.emplace_back("read from the deck", note);
   run.facts.emplace_back("elements", elements);
   run.facts.emplace_back("nodes", std::to_string(mesh.n_nodes()));
   run.facts.emplace_back("E [Pa], nu, rho [kg/m^3]",

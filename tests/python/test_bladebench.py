@@ -62,11 +62,21 @@ def test_a_case_runs_and_its_frequencies_scale_with_the_square_root_of_the_modul
     base = bladebench.run_case(CANTILEVER)
     stiffer = bladebench.run_case(CANTILEVER, settings=["material.E=4.0e11"])
     table = base["frequencies"]
-    column = table["columns"].index("frequency_hz")
-    assert table["values"].dtype == np.float64 and table["values"].shape[1] == len(table["columns"])
+    assert isinstance(table, bladebench.Table) and isinstance(table, np.recarray)
+    assert table.dtype["mode"] == np.int64 and table.dtype["frequency_hz"] == np.float64
+    assert list(table["mode"][:3]) == [1, 2, 3]
     # f ~ sqrt(E / rho); to the eigensolver's convergence (Lanczos residuals, 2e-8 seen on mode 1).
-    np.testing.assert_allclose(stiffer["frequencies"]["values"][:, column] / table["values"][:, column],
-                               math.sqrt(2.0), rtol=1e-6)
+    np.testing.assert_allclose(stiffer["frequencies"]["frequency_hz"] / table["frequency_hz"], math.sqrt(2.0),
+                               rtol=1e-6)
+
+
+def test_a_table_becomes_a_data_frame_with_its_columns():
+    pandas = pytest.importorskip("pandas")
+    table = bladebench.run_case(CANTILEVER)["frequencies"]
+    frame = table.to_pandas()
+    assert isinstance(frame, pandas.DataFrame)
+    assert list(frame.columns) == list(table.dtype.names)
+    np.testing.assert_array_equal(frame["frequency_hz"].to_numpy(), table["frequency_hz"])
 
 
 def test_mesh_modes_are_complete_and_those_of_the_case():
@@ -74,7 +84,7 @@ def test_mesh_modes_are_complete_and_those_of_the_case():
     assert modes["complete"] and modes["sturm_count"] == 4
     assert np.all(np.diff(modes["frequency_hz"]) > 0)
     table = bladebench.run_case(CANTILEVER)["frequencies"]
-    hz = table["values"][:4, table["columns"].index("frequency_hz")]
+    hz = table["frequency_hz"][:4]
     np.testing.assert_allclose(modes["frequency_hz"], hz, rtol=1e-8)
     shapes = modes["shapes"]
     assert shapes.shape[1] == 4 and np.isfinite(shapes).all()
@@ -90,9 +100,8 @@ def test_the_slepc_eigensolver_runs_in_the_interpreter_and_agrees_with_the_defau
         assert "libslepc-real-dev" in str(e)
         pytest.skip("built without PETSc/SLEPc")
     default = bladebench.run_case(pair_cut)["frequencies"]
-    column = default["columns"].index("frequency_hz")
-    assert sliced["values"].shape == default["values"].shape  # the repeated pair 9/10 whole in both
-    np.testing.assert_allclose(sliced["values"][3:, column], default["values"][3:, column], rtol=1e-9)
+    assert sliced.shape == default.shape  # the repeated pair 9/10 whole in both
+    np.testing.assert_allclose(sliced["frequency_hz"][3:], default["frequency_hz"][3:], rtol=1e-9)
 
 
 def test_an_array_of_the_wrong_dtype_or_shape_is_refused_with_the_shape_expected():
@@ -149,3 +158,38 @@ def test_errors_carry_the_command_lines_exit_classes_and_messages():
     # A contact law the harmonic balance refuses (negative stiffness) is bad input, not a crash.
     with pytest.raises(bladebench.InputError, match="kt"):
         oscillator(mu=0.3, force=1.0, frequencies=[150.0], kt=-1.0)
+
+
+def test_calibrate_recovers_the_rig_contact_with_its_covariance():
+    """The contact rig of jenkins_loop_identify: kt = 5e7 N/m, mu = 0.5, kn = 1e8 N/m wrote the loop."""
+    fit = bladebench.calibrate(str(SOURCE / "cases/verification/jenkins_loop_identify.toml"))
+    assert fit["converged"], fit["termination"]
+    assert fit["parameters"] == ["analysis.contact.kt", "analysis.contact.mu", "analysis.contact.kn"]
+    truth = np.array([5.0e7, 0.5, 1.0e8])
+    sigma = fit["std_devs"]
+    assert np.all(np.abs(fit["values"] - truth) < 4 * sigma), (fit["values"], sigma)
+    cov = fit["covariance"]
+    np.testing.assert_allclose(cov, cov.T, rtol=1e-12)
+    np.testing.assert_allclose(np.diag(cov), sigma**2, rtol=1e-12)
+    assert len(fit["starts"]) == 3 and fit["final_cost"] < fit["initial_cost"]
+    points = fit["points"]
+    assert isinstance(points, bladebench.Table) and points.shape[0] == 64
+    assert set(points["set"]) == {"rig loop"}
+    assert "hysteresis" in fit["curves"]
+    assert "[analysis.contact]" in fit["calibrated_case"]
+
+
+def test_calibrate_refuses_a_case_without_calibration_as_the_command_line_does():
+    with pytest.raises(bladebench.InputError, match="calibration"):
+        bladebench.calibrate(CANTILEVER)
+
+
+def test_a_harwell_boeing_export_reads_into_matrices_with_its_dof_names():
+    rom = bladebench.read_reduced_model(str(SOURCE / "cases/verification/data/hb_chain/chain.toml"))
+    assert rom["dofs"] == [f"{n}.x" for n in range(101, 109)]
+    k, m = rom["stiffness"], rom["mass"]
+    np.testing.assert_array_equal(k, k.T)
+    assert k[0, 0] == 4.0e6 and k[7, 7] == 2.0e6 and k[0, 1] == -2.0e6 and k[0, 2] == 0.0
+    np.testing.assert_array_equal(m, 0.5 * np.eye(8))
+    with pytest.raises(bladebench.InputError, match=r"short.mapping names 7 DOFs"):
+        bladebench.read_reduced_model(str(SOURCE / "tests/bad_input/data/hb/short.toml"))

@@ -8,6 +8,7 @@ set(BB_TEST_COSTS
   SweepExtremes.AtSevenHarmonicsEverySweepReachesItsEndOrSaysWhere 144
   HbmSweepFold.ABridgeThatWandersAlongKinksIsNotTriedAgainFromTheSamePoint 75
   calibrate.verification.rig_modal_joint_identify 68
+  inp.roundtrip.thesis.table06_glued_modal 50
   HbmCalibration.PeakDerivativesServeAsTheJacobian 62
   robust.table11_h13 59
   case.thesis.table11_periodic_100_60 39

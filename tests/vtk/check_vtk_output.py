@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""Runs `bladebench run CASE --vtk` and reads every .vtu back with meshio (Debian's python3-meshio, a
+reader independent of bladebench): each point array must equal its CSV column as the CSV prints it
+(12 significant digits, the same rounding), the mode shapes mode_shapes.csv, the field data
+frequency_hz frequencies.csv, and the cells the element count and VTK type of the mesh.
+
+An analysis with no field over the mesh (expect mesh.vtu) must write the mesh alone and warn.
+
+Usage: check_vtk_output.py BLADEBENCH CASE WORK CELL_TYPE [expect files...]"""
+import csv
+import subprocess
+import sys
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+
+def fail(message):
+    print(f"FAIL: {message}", file=sys.stderr)
+    sys.exit(1)
+
+
+def table(path):
+    with open(path, newline="") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    header, body = rows[0], rows[1:]
+    return {name: [row[k] for row in body] for k, name in enumerate(header)}
+
+
+def same_as_csv(name, values, column):
+    printed = ["%.12g" % v for v in values]
+    # The CSV writes -0 as "-0"; both sides print through the same %.12g rounding.
+    for k, (a, b) in enumerate(zip(printed, column)):
+        if float(a) != float(b):
+            fail(f"{name}: row {k + 1} is {a} in the .vtu, {b} in the CSV")
+    if len(printed) != len(column):
+        fail(f"{name}: {len(printed)} values in the .vtu, {len(column)} in the CSV")
+
+
+def main():
+    binary, case, work, cell_type = sys.argv[1:5]
+    expected = sys.argv[5:]
+    out = Path(work)
+    result = subprocess.run([binary, "run", case, "--vtk", "--no-plots", "--no-cache", "--out", str(out)],
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"bladebench run --vtk exited {result.returncode}:\n{result.stderr}")
+    for name in expected:
+        if not (out / "vtk" / name).is_file():
+            fail(f"vtk/{name} was not written")
+    checked = 0
+    if "mesh.vtu" in expected:
+        # No field over the mesh: the mesh alone, and a warning naming it.
+        if "wrote the mesh alone, vtk/mesh.vtu" not in result.stderr:
+            fail(f"no warning naming vtk/mesh.vtu:\n{result.stderr}")
+        mesh = meshio.read(out / "vtk" / "mesh.vtu")
+        ids = mesh.cell_data["element_id"][0]
+        if sorted(int(i) for i in ids) != list(range(1, len(ids) + 1)) or len(mesh.points) == 0:
+            fail(f"mesh.vtu: element ids {ids[:5]}..., {len(mesh.points)} points")
+        checked += 1
+    for vtu in sorted((out / "vtk").glob("*.vtu")):
+        mesh = meshio.read(vtu)
+        if [c.type for c in mesh.cells] != [cell_type]:
+            fail(f"{vtu.name}: cell blocks {[c.type for c in mesh.cells]}, expected one of {cell_type}")
+        ids = mesh.point_data["node_id"]
+        for name, values in mesh.point_data.items():
+            if name == "node_id" or "." not in name:
+                continue
+            table_name, column = name.split(".", 1)
+            t = table(out / f"{table_name}.csv")
+            if [int(v) for v in t["node"]] != [int(v) for v in ids]:
+                fail(f"{vtu.name}: node order differs from {table_name}.csv")
+            same_as_csv(name, values, t[column])
+            checked += 1
+        if vtu.name == "modes.vtu":
+            shapes = table(out / "mode_shapes.csv")
+            modes = sorted(int(k.split("_")[1]) for k in mesh.point_data if k.startswith("mode_"))
+            for k in modes:
+                vectors = mesh.point_data[f"mode_{k}"]
+                for d, axis in enumerate("xyz"[: vectors.shape[1]]):
+                    key = f"mode{k}_u{axis}"
+                    if key in shapes:
+                        same_as_csv(f"mode_{k}.{axis}", vectors[:, d], shapes[key])
+                        checked += 1
+            freqs = table(out / "frequencies.csv")
+            same_as_csv("frequency_hz", mesh.field_data["frequency_hz"], freqs["frequency_hz"])
+            checked += 1
+    if checked == 0:
+        fail("no array was compared")
+    print(f"{checked} arrays equal their CSV columns")
+
+
+if __name__ == "__main__":
+    main()

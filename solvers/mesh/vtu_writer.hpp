@@ -1,6 +1,6 @@
 // VTK XML output for ParaView: a mesh with arrays at its nodes (.vtu, one state) and a collection of
-// such files over time (.pvd, an animation). ASCII, numbers in their shortest round-trip form, so a
-// file read back gives the doubles written.
+// such files over time (.pvd, an animation). Arrays binary (base64 inline), so a file read back gives
+// the doubles written, bit for bit.
 #pragma once
 #include <Eigen/Dense>
 

@@ -1,6 +1,7 @@
-// The bladebench Python module: a case's result tables as NumPy arrays, a harmonic-balance sweep of
-// a user's reduced model with Jenkins contacts (matrices in, curves out), and the lowest modes of a
-// case's mesh with their completeness count. Errors are Python exceptions of the command line's
+// The bladebench Python module: a case's result tables as NumPy record arrays, its calibration, a
+// harmonic-balance sweep of a user's reduced model with every friction law (matrices in, curves out),
+// reduced models read from exports, and the lowest modes of a case's mesh with their completeness
+// count. Errors are Python exceptions of the command line's
 // classes: InputError (exit class 2: bad input, with file:line:key, or an array of the wrong shape
 // or dtype, with the shape expected) and SolverError (exit class 3: a solver that did not converge).
 #include <pybind11/eigen.h>
@@ -8,6 +9,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <filesystem>
@@ -19,17 +21,20 @@
 
 #include "analysis/run_analysis.hpp"
 #include "assembly/free_system.hpp"
+#include "calibrate_binding.hpp"
 #include "cases/case_settings.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
 #include "common/input_number.hpp"
+#include "friction/coulomb_law.hpp"
+#include "friction/coupled_slip.hpp"
+#include "friction/iwan_law.hpp"
 #include "hbm/harmonic_balance.hpp"
 #include "linalg/modal_solver.hpp"
 #include "model/build_model.hpp"
 #include "reduction/reduced_model.hpp"
 #include "reduction/reduced_model_io.hpp"
 #include "table_arrays.hpp"
-#include "calibrate_binding.hpp"
 
 namespace py = pybind11;
 
@@ -98,19 +103,33 @@ double law_number(const py::dict& contact, const char* key, const std::string& w
   return v;
 }
 
-// One Jenkins contact from {"tangential": a_t, "normal": a_n (optional), "kn", "kt", "mu", "n0"}.
-bb::friction::ContactElement contact_of(const py::handle& item, size_t index, py::ssize_t n) {
+// One contact point from {"tangential": a_t, "normal": a_n (optional), "kn", "kt", "mu", "n0",
+// "law": "jenkins" | "coulomb" | "iwan" (with "chi", "beta", "sliders") | "coupled_slip" (with
+// "tangential_2")}: the contacts it is in the friction model (an Iwan joint is its parallel sliders).
+std::vector<bb::friction::ContactElement> contacts_of(const py::handle& item, size_t index, py::ssize_t n) {
   const std::string where = "contacts[" + std::to_string(index) + "]";
   if (!py::isinstance<py::dict>(item))
-    throw bb::InputError(where +
-                         ": expected a dict with 'tangential', 'kt', 'mu', 'n0' (and optionally 'normal', 'kn')");
+    throw bb::InputError(
+        where + ": expected a dict with 'tangential', 'kt', 'mu', 'n0' (and optionally 'normal', 'kn', 'law')");
   const auto c = py::reinterpret_borrow<py::dict>(item);
+  static const std::vector<std::string> keys = {"tangential", "normal", "tangential_2", "kn",   "kt",     "mu",
+                                                "n0",         "law",    "chi",          "beta", "sliders"};
   for (const auto& [key, _] : c) {
     const std::string k = py::str(key);
-    if (k != "tangential" && k != "normal" && k != "kn" && k != "kt" && k != "mu" && k != "n0")
-      throw bb::InputError(where + ": unknown key '" + k + "' (tangential, normal, kn, kt, mu, n0)");
+    if (std::find(keys.begin(), keys.end(), k) == keys.end())
+      throw bb::InputError(where + ": unknown key '" + k +
+                           "' (tangential, normal, tangential_2, kn, kt, mu, n0, law, chi, beta, sliders)");
   }
   if (!c.contains("tangential")) throw bb::InputError(where + ": needs 'tangential', one weight per DOF");
+  const std::string law = c.contains("law") ? std::string(py::str(c["law"])) : "jenkins";
+  if (law != "jenkins" && law != "coulomb" && law != "iwan" && law != "coupled_slip")
+    throw bb::InputError(where + ": 'law': '" + law + "' is not one of jenkins, coulomb, iwan, coupled_slip");
+  if (c.contains("tangential_2") != (law == "coupled_slip"))
+    throw bb::InputError(where +
+                         ": 'tangential_2' (the second tangential direction) goes with law 'coupled_slip', "
+                         "and that law needs it");
+  for (const char* key : {"chi", "beta", "sliders"})
+    if (c.contains(key) && law != "iwan") throw bb::InputError(where + ": '" + key + "' belongs to law 'iwan'");
   bb::friction::ContactElement e;
   e.tangential = dof_row(c["tangential"], where + ".tangential", n);
   e.normal = c.contains("normal") ? dof_row(c["normal"], where + ".normal", n) : Eigen::RowVectorXd::Zero(n);
@@ -118,7 +137,32 @@ bb::friction::ContactElement contact_of(const py::handle& item, size_t index, py
              .kt = law_number(c, "kt", where, 0.0, true),
              .mu = law_number(c, "mu", where, 0.0, true),
              .n0 = law_number(c, "n0", where, 0.0, true)};
-  return e;
+  if (law == "coulomb") e.law = bb::friction::coulomb_law();
+  if (law == "coupled_slip") {
+    e.tangential_2 = dof_row(c["tangential_2"], where + ".tangential_2", n);
+    e.law = bb::friction::coupled_slip_law();
+  }
+  if (law != "iwan") return {e};
+  bb::friction::IwanParameters p;
+  p.chi = law_number(c, "chi", where, p.chi, false);
+  p.beta = law_number(c, "beta", where, p.beta, false);
+  const double slider_count = law_number(c, "sliders", where, p.sliders, false);
+  if (slider_count != std::floor(slider_count) || slider_count < 1 || slider_count > 10000)
+    throw bb::InputError(where + ": 'sliders': an integer in [1, 10000]");
+  p.sliders = static_cast<int>(slider_count);
+  std::vector<bb::friction::ContactElement> sliders;
+  try {
+    const bb::friction::IwanDistribution distribution(p);
+    if (!(e.point.mu * e.point.n0 > 0.0))
+      throw std::invalid_argument("an Iwan element needs a positive slip force mu n0");
+    for (const bb::friction::PointParameters& slider : bb::friction::parallel_sliders(e.point, &distribution)) {
+      sliders.push_back(e);
+      sliders.back().point = slider;
+    }
+  } catch (const std::invalid_argument& error) {
+    throw bb::InputError(where + ": " + error.what());
+  }
+  return sliders;
 }
 
 // {table name: bladebench.Table}, the tables the command line writes as CSV.
@@ -158,7 +202,8 @@ py::dict hbm_sweep(const py::handle& mass, const py::handle& stiffness, const py
     for (py::ssize_t i = 0; i < n; ++i) model.harmonic_load[i] = f(i);
   }
   if (contacts.empty()) throw bb::InputError("contacts: needs at least one contact");
-  for (size_t k = 0; k < contacts.size(); ++k) model.contacts.push_back(contact_of(contacts[k], k, n));
+  for (size_t k = 0; k < contacts.size(); ++k)
+    for (bb::friction::ContactElement& e : contacts_of(contacts[k], k, n)) model.contacts.push_back(std::move(e));
   const auto hz = checked_array<double>(frequencies_hz, "frequencies_hz", {-1}, "float64").unchecked<1>();
   for (py::ssize_t i = 0; i < hz.shape(0); ++i)
     if (!(hz(i) > 0.0) || !std::isfinite(hz(i))) throw bb::InputError("frequencies_hz: every frequency must be > 0");
@@ -265,9 +310,13 @@ Raises InputError naming the file and line of anything malformed (a header that 
 data, a matrix that is not symmetric, a DOF map of the wrong length).)");
   m.def("hbm_sweep", &hbm_sweep, py::arg("mass"), py::arg("stiffness"), py::arg("damping"), py::arg("force"),
         py::arg("frequencies_hz"), py::arg("contacts"), py::arg("harmonics") = 1, py::arg("tolerance") = 1e-9,
-        R"(Harmonic-balance frequency sweep of a reduced model of yours with Jenkins friction contacts (a
-spring kt in series with a Coulomb slider, the normal load n0 + kn a_n.q, lift-off when it reaches 0),
-each frequency solved from the one before (natural continuation).
+        R"(Harmonic-balance frequency sweep of a reduced model of yours with friction contacts, each frequency
+solved from the one before (natural continuation). Every law of the case files: "jenkins" (default:
+a spring kt in series with a Coulomb slider), "coulomb" (regularised by kt in the frequency domain,
+as in the cases), "iwan" (Segalman's four-parameter joint as "sliders" parallel Jenkins sliders,
+exponent "chi" in (-1, 0], macro-slip weight "beta"), "coupled_slip" (the 2D contact: one slider in
+the plane of "tangential" and "tangential_2", a circular limit |T| <= mu N); the normal load is
+n0 + kn a_n.q, with lift-off when it reaches 0.
 
   mass, stiffness, damping  n x n float64 [kg, N/m, N s/m]: symmetric, M positive definite (the case
                             reader's rules: read_reduced_model gives them from an export)
@@ -275,7 +324,8 @@ each frequency solved from the one before (natural continuation).
   frequencies_hz            float64 [Hz], each > 0
   contacts                  a list of dicts: "tangential" (n float64: the relative tangential
                             displacement a_t.q), "kt" [N/m], "mu", "n0" [N], and optionally "normal"
-                            (n float64) and "kn" [N/m]
+                            (n float64), "kn" [N/m], "law" and its keys ("chi", "beta", "sliders";
+                            "tangential_2")
   harmonics                 H in [1, 100]: harmonics 0..H of the response
   tolerance                 the Newton loop's relative residual, in (0, 1e-2)
 

@@ -193,3 +193,44 @@ def test_a_harwell_boeing_export_reads_into_matrices_with_its_dof_names():
     np.testing.assert_array_equal(m, 0.5 * np.eye(8))
     with pytest.raises(bladebench.InputError, match=r"short.mapping names 7 DOFs"):
         bladebench.read_reduced_model(str(SOURCE / "tests/bad_input/data/hb/short.toml"))
+
+
+def law_sweep(contact, frequencies, force=5.0, harmonics=5):
+    """The oscillator of oscillator() with any contact dict (kt = 1e6 N/m, n0 = 30 N)."""
+    base = {"tangential": np.array([1.0]), "kt": 1.0e6, "mu": 0.3, "n0": 30.0}
+    base.update(contact)
+    return bladebench.hbm_sweep(
+        mass=np.array([[1.0]]), stiffness=np.array([[1.0e6]]), damping=np.array([[10.0]]),
+        force=np.array([force], dtype=complex), frequencies_hz=np.asarray(frequencies, dtype=float),
+        contacts=[base], harmonics=harmonics)
+
+
+def test_every_friction_law_reaches_the_sweep_and_meets_its_limits():
+    f = np.arange(150.0, 231.0, 2.0)
+    jenkins = law_sweep({}, f)
+    assert jenkins["converged"].all()
+    # Iwan with one slider and no macro-slip weight is the Jenkins element itself.
+    one_slider = law_sweep({"law": "iwan", "chi": -0.5, "sliders": 1}, f)
+    np.testing.assert_allclose(one_slider["amplitude"], jenkins["amplitude"], rtol=1e-9)
+    # The coupled 2D law on a straight path (no motion along its second direction) is the 1D law.
+    straight = law_sweep({"law": "coupled_slip", "tangential_2": np.array([0.0])}, f)
+    np.testing.assert_allclose(straight["amplitude"], jenkins["amplitude"], rtol=1e-7)
+    # Coulomb's law in the frequency domain is regularised by kt: the Jenkins law, as in the cases.
+    coulomb = law_sweep({"law": "coulomb"}, f)
+    np.testing.assert_allclose(coulomb["amplitude"], jenkins["amplitude"], rtol=1e-12)
+    # A 32-slider Iwan joint slips gradually: its peak lies between the free and the stuck resonance.
+    iwan = law_sweep({"law": "iwan", "chi": -0.5, "beta": 0.5, "sliders": 32}, f)
+    assert iwan["converged"].all(), iwan["failures"]
+    peak = f[np.argmax(iwan["amplitude"][:, 0])]
+    assert math.sqrt(1.0e6) / (2 * math.pi) < peak < math.sqrt(2.0e6) / (2 * math.pi)
+
+
+def test_a_law_s_keys_are_refused_where_they_do_not_belong():
+    with pytest.raises(bladebench.InputError, match=r"contacts\[0\]: 'chi' belongs to law 'iwan'"):
+        law_sweep({"chi": -0.5}, [160.0])
+    with pytest.raises(bladebench.InputError, match="'tangential_2'"):
+        law_sweep({"law": "coupled_slip"}, [160.0])
+    with pytest.raises(bladebench.InputError, match="'law': 'bristle' is not one of"):
+        law_sweep({"law": "bristle"}, [160.0])
+    with pytest.raises(bladebench.InputError, match=r"'sliders': an integer"):
+        law_sweep({"law": "iwan", "sliders": 2.5}, [160.0])

@@ -2,9 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "common/constants.hpp"
+#include "cyclic/cyclic_boundary.hpp"
 #include "mesh/vtu_writer.hpp"
 #include "report/writers.hpp"
 
@@ -61,6 +65,87 @@ void write_modes(const ModalResult& modal, const Mesh& mesh, const fs::path& out
   write_result_csv(t, out, run);
 }
 
+// N copies of the sector, copy j turned by j 2 pi / N about z (not merged: the seams are the sector
+// faces); node id j (largest id + 1) + id, and the point array "sector" = j.
+Mesh whole_disk_mesh(const Mesh& sector, int sectors, std::vector<double>& sector_of_point) {
+  Mesh disk;
+  disk.dim = sector.dim;
+  const long stride = *std::max_element(sector.node_ids.begin(), sector.node_ids.end()) + 1;
+  const Eigen::Index n = sector.n_nodes();
+  disk.coords.resize(n * sectors, sector.dim);
+  const Eigen::MatrixXd rotation = sector_rotation(sectors, sector.dim);
+  Eigen::MatrixXd turn = Eigen::MatrixXd::Identity(sector.dim, sector.dim);
+  for (int j = 0; j < sectors; ++j) {
+    disk.coords.middleRows(j * n, n) = sector.coords * turn.transpose();
+    for (const long id : sector.node_ids) {
+      disk.node_ids.push_back(j * stride + id);
+      sector_of_point.push_back(j);
+    }
+    turn = rotation * turn;
+  }
+  for (const ElementBlock& b : sector.blocks) {
+    ElementBlock copy{b.type, {}, {}};
+    copy.conn.resize(b.conn.rows() * sectors, b.conn.cols());
+    for (int j = 0; j < sectors; ++j) {
+      copy.conn.middleRows(j * b.conn.rows(), b.conn.rows()) = b.conn.array() + static_cast<int>(j * n);
+      for (const long id : b.ids) copy.ids.push_back(j * stride + id);
+    }
+    disk.blocks.push_back(std::move(copy));
+  }
+  return disk;
+}
+
+// The standing waves of every family of each nodal diameter k over the whole disk, one file per k:
+// with the family's cosine and sine parts c, s (cyclic/cyclic_projection.hpp's u_j = Re(U e^{i k j
+// 2 pi / N}), U = c + i s), sector j moves as R^j (c cos(k j 2 pi / N) - s sin(k j 2 pi / N)), and a
+// quarter period later as R^j (s cos + c sin): continuous across every seam (tests/vtk).
+void write_disk(const CyclicModalOutcome& o, const Mesh& sector, const fs::path& out, RunRecord& run) {
+  std::vector<double> sector_of_point;
+  const Mesh disk = whole_disk_mesh(sector, o.sectors, sector_of_point);
+  const int dim = sector.dim;
+  const Eigen::Index n = sector.n_nodes();
+  const Eigen::MatrixXd rotation = sector_rotation(o.sectors, dim);
+  // A sector's free-DOF vector as its nodes' displacements (constrained DOFs 0).
+  auto nodal = [&](const Eigen::VectorXd& free) {
+    Eigen::MatrixXd u = Eigen::MatrixXd::Zero(n, dim);
+    for (Eigen::Index node = 0; node < n; ++node)
+      for (int d = 0; d < dim; ++d)
+        if (const int eq = o.dofs.equation[static_cast<size_t>(node * dim + d)]; eq >= 0) u(node, d) = free[eq];
+    return u;
+  };
+  for (const NodalDiameterModes& nd : o.diameters) {
+    VtkContent c;
+    c.point_arrays.push_back(
+        {"sector",
+         Eigen::Map<const Eigen::VectorXd>(sector_of_point.data(), static_cast<Eigen::Index>(sector_of_point.size())),
+         {}});
+    for (Eigen::Index f = 0; f < nd.frequencies_hz.size(); ++f) {
+      const Eigen::MatrixXd cosine = nodal(nd.cosine.col(f));
+      const Eigen::MatrixXd sine = nd.pairs ? nodal(nd.sine.col(f)) : Eigen::MatrixXd::Zero(n, dim);
+      for (const bool sine_wave : {false, true}) {
+        if (sine_wave && !nd.pairs) continue;
+        Eigen::MatrixXd u(n * o.sectors, dim);
+        Eigen::MatrixXd turn = Eigen::MatrixXd::Identity(dim, dim);
+        for (int j = 0; j < o.sectors; ++j) {
+          const double angle = kTwoPi * nd.nodal_diameter * j / o.sectors;
+          const Eigen::MatrixXd local = sine_wave ? Eigen::MatrixXd(sine * std::cos(angle) + cosine * std::sin(angle))
+                                                  : Eigen::MatrixXd(cosine * std::cos(angle) - sine * std::sin(angle));
+          u.middleRows(j * n, n) = local * turn.transpose();
+          turn = rotation * turn;
+        }
+        c.point_arrays.push_back({fmt::format("family{}_{}", f + 1, sine_wave ? "sin" : "cos"), u,
+                                  std::vector<std::string>(kAxes, kAxes + dim)});
+      }
+    }
+    c.field_arrays.push_back(
+        {"frequency_hz", {nd.frequencies_hz.data(), nd.frequencies_hz.data() + nd.frequencies_hz.size()}});
+    c.field_arrays.push_back({"nodal_diameter", {static_cast<double>(nd.nodal_diameter)}});
+    const std::string name = fmt::format("vtk/disk_nd{}.vtu", nd.nodal_diameter);
+    write_vtu(out / name, disk, c);
+    run.tables.push_back(name);
+  }
+}
+
 }  // namespace
 
 void write_vtk_files(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model, const fs::path& out,
@@ -78,6 +163,10 @@ void write_vtk_files(const AnalysisSpec& spec, const AnalysisResults& results, c
   bool written = false;
   if (const auto* modal = std::get_if<ModalOutcome>(&results.outcome)) {
     write_modes(modal->modal, mesh, out, run);
+    written = true;
+  }
+  if (const auto* cyclic = std::get_if<CyclicModalOutcome>(&results.outcome)) {
+    write_disk(*cyclic, mesh, out, run);
     written = true;
   }
   VtkContent fields;

@@ -2,7 +2,8 @@
 """Runs `bladebench run CASE --vtk` and reads every .vtu back with meshio (Debian's python3-meshio, a
 reader independent of bladebench): each point array must equal its CSV column as the CSV prints it
 (12 significant digits, the same rounding), the mode shapes mode_shapes.csv, the field data
-frequency_hz frequencies.csv, and the cells the element count and VTK type of the mesh.
+frequency_hz frequencies.csv (a whole disk's: nodal_diameter_map.csv, its waves continuous across
+every seam), and the cells the element count and VTK type of the mesh.
 
 An analysis with no field over the mesh (expect mesh.vtu) must write the mesh alone and warn.
 
@@ -36,6 +37,31 @@ def same_as_csv(name, values, column):
             fail(f"{name}: row {k + 1} is {a} in the .vtu, {b} in the CSV")
     if len(printed) != len(column):
         fail(f"{name}: {len(printed)} values in the .vtu, {len(column)} in the CSV")
+
+
+def check_disk(vtu, diameter_map):
+    """A whole-disk file: every family's wave continuous across the seams between sectors (coincident
+    points of neighbouring copies move alike, to 1e-12 of the largest motion), its frequencies those
+    of nodal_diameter_map.csv."""
+    mesh = meshio.read(vtu)
+    key = np.round(mesh.points / 1e-9).astype(np.int64)
+    order = np.lexsort(key.T)
+    same = np.all(key[order][1:] == key[order][:-1], axis=1)
+    first, second = order[:-1][same], order[1:][same]
+    if len(first) == 0:
+        fail(f"{vtu.name}: no seam between sectors")
+    waves = [name for name in mesh.point_data if name.startswith("family")]
+    for name in waves:
+        u = mesh.point_data[name]
+        mismatch = np.abs(u[first] - u[second]).max() / np.abs(u).max()
+        if not mismatch < 1e-12:
+            fail(f"{vtu.name}: {name} jumps by {mismatch:.3g} of its largest motion across a seam")
+    k = int(mesh.field_data["nodal_diameter"][0])
+    row = [int(v) for v in diameter_map["nodal_diameter"]].index(k)
+    columns = [c for c in diameter_map if c.startswith("f") and c.endswith("_hz")]
+    for f, column in enumerate(columns):
+        same_as_csv(f"{vtu.name} frequency {f + 1}", [mesh.field_data["frequency_hz"][f]], [diameter_map[column][row]])
+    return len(waves)
 
 
 def main():
@@ -86,6 +112,8 @@ def main():
             freqs = table(out / "frequencies.csv")
             same_as_csv("frequency_hz", mesh.field_data["frequency_hz"], freqs["frequency_hz"])
             checked += 1
+    for vtu in sorted((out / "vtk").glob("disk_nd*.vtu")):
+        checked += check_disk(vtu, table(out / "nodal_diameter_map.csv"))
     if checked == 0:
         fail("no array was compared")
     print(f"{checked} arrays equal their CSV columns")

@@ -8,6 +8,7 @@
 #include <complex>
 #include <numbers>
 
+#include "analysis/operating_deflection.hpp"
 #include "common/constants.hpp"
 #include "common/errors.hpp"
 #include "common/seconds_since.hpp"
@@ -20,12 +21,6 @@ namespace bb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-Eigen::VectorXd modal_zetas(const FrfDamping& d, const Eigen::VectorXd& omega) {
-  if (d.kind == FrfDamping::Kind::modal) return d.modal_ratios(omega.size());
-  const RayleighCoefficients c = rayleigh_of(d);
-  return (c.alpha / (2 * omega.array().max(1e-300)) + 0.5 * c.beta * omega.array()).matrix();
-}
 
 }  // namespace
 

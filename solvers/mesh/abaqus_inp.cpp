@@ -17,6 +17,7 @@
 #include "mesh/inp_lines.hpp"
 
 namespace bb {
+namespace abaqus_inp_impl {
 namespace {
 
 using inp::InpLines;
@@ -462,8 +463,10 @@ void DeckReader::finish_mesh(InpDeck& out) {
 }
 
 }  // namespace
+}  // namespace abaqus_inp_impl
 
 InpDeck read_abaqus_inp(const std::filesystem::path& file, const std::filesystem::path& folder, bool header_only) {
+  using namespace abaqus_inp_impl;  // this file's helpers, in this scope only (unity builds)
   InpLines deck(file, folder);
   if (deck.lines().empty()) throw InputError(fmt::format("{}: the deck is empty", file.string()));
   return DeckReader(deck, header_only).read();

@@ -15,6 +15,7 @@
 #include "mesh/element_topology.hpp"
 
 namespace bb {
+namespace vtu_writer_impl {
 namespace {
 
 static_assert(std::endian::native == std::endian::little, "the .vtu files say LittleEndian");
@@ -146,8 +147,10 @@ void write_grid(const std::filesystem::path& file, const Eigen::MatrixXd& points
 }
 
 }  // namespace
+}  // namespace vtu_writer_impl
 
 void write_vtu(const std::filesystem::path& file, const Mesh& mesh, const VtkContent& content) {
+  using namespace vtu_writer_impl;  // this file's helpers, in this scope only (unity builds)
   Cells cells;
   int64_t offset = 0;
   for (const ElementBlock& b : mesh.blocks) {
@@ -164,6 +167,7 @@ void write_vtu(const std::filesystem::path& file, const Mesh& mesh, const VtkCon
 }
 
 void write_point_vtu(const std::filesystem::path& file, const Eigen::MatrixXd& points, const VtkContent& content) {
+  using namespace vtu_writer_impl;  // this file's helpers, in this scope only (unity builds)
   constexpr uint8_t kVertex = 1;
   Cells cells;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
@@ -175,6 +179,7 @@ void write_point_vtu(const std::filesystem::path& file, const Eigen::MatrixXd& p
 }
 
 void write_pvd(const std::filesystem::path& file, const std::vector<std::pair<double, std::string>>& steps) {
+  using namespace vtu_writer_impl;  // this file's helpers, in this scope only (unity builds)
   std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\">\n<Collection>\n";
   for (const auto& [time, name] : steps)
     out += fmt::format("<DataSet timestep=\"{}\" part=\"0\" file=\"{}\"/>\n", time, xml_escape(name));

@@ -20,6 +20,7 @@
 
 namespace bb {
 namespace fs = std::filesystem;
+namespace harwell_boeing_impl {
 namespace {
 
 struct FortranFormat {
@@ -127,8 +128,10 @@ std::vector<std::string_view> words(std::string_view s) {
 }
 
 }  // namespace
+}  // namespace harwell_boeing_impl
 
 Eigen::MatrixXd read_harwell_boeing(const fs::path& file, Eigen::Index n, std::string_view named_by) {
+  using namespace harwell_boeing_impl;  // this file's helpers, in this scope only (unity builds)
   LineSource src(file);
   std::string_view line;
   if (!src.next(line)) src.fail("empty file; expected the Harwell-Boeing title card");
@@ -224,6 +227,7 @@ Eigen::MatrixXd read_harwell_boeing(const fs::path& file, Eigen::Index n, std::s
 }
 
 std::vector<ReducedDof> read_dof_map(const fs::path& file) {
+  using namespace harwell_boeing_impl;  // this file's helpers, in this scope only (unity builds)
   LineSource src(file);
   std::optional<std::string_view> content = src.next_content('#');
   if (!content) src.fail("empty DOF map; expected a header (Ansys: 'Matrix Eqn  Node  DOF', CSV: 'node,direction')");

@@ -4,15 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <string>
 #include <vector>
 
+#include "analysis/operating_deflection.hpp"
 #include "common/constants.hpp"
 #include "cyclic/cyclic_boundary.hpp"
 #include "mesh/vtu_writer.hpp"
 #include "report/writers.hpp"
 
 namespace bb {
+namespace vtk_files_impl {
 namespace {
 
 namespace fs = std::filesystem;
@@ -146,10 +149,60 @@ void write_disk(const CyclicModalOutcome& o, const Mesh& sector, const fs::path&
   }
 }
 
-}  // namespace
+// A forced response's operating deflection at each peak of the full model (at the sweep's frequency
+// nearest the peak, where the sweep has its value): real and imaginary parts in vtk/ods.vtu, and one
+// period of the first peak's motion as 16 frames (vtk/ods_peak<key>.pvd) to animate. False when the
+// analysis has no full model or no peak.
+bool write_deflections(const FrfSpec& spec, const FrfOutcome& frf, const ResultTables& tables, const Model& model,
+                       const fs::path& out, RunRecord& run) {
+  const auto peaks = tables.find("peaks_full");
+  const auto sweep = tables.find("frf");
+  if (!frf.full_modal || peaks == tables.end() || sweep == tables.end() || peaks->second.values.rows() == 0)
+    return false;
+  const Eigen::VectorXd grid = sweep->second.values.col(*sweep->second.column_index("frequency_hz"));
+  const Eigen::Index at_hz = *peaks->second.column_index("frequency_hz");
+  std::vector<double> hz, keys;
+  for (Eigen::Index p = 0; p < peaks->second.values.rows(); ++p) {
+    Eigen::Index nearest = 0;
+    (grid.array() - peaks->second.values(p, at_hz)).abs().minCoeff(&nearest);
+    hz.push_back(grid[nearest]);
+    keys.push_back(peaks->second.values(p, 0));
+  }
+  const std::vector<Eigen::MatrixXcd> deflections = operating_deflections(model, spec, *frf.full_modal, hz);
+  const int dim = model.mesh.dim;
+  const std::vector<std::string> axes(kAxes, kAxes + dim);
+  VtkContent c;
+  for (size_t p = 0; p < hz.size(); ++p) {
+    c.point_arrays.push_back({fmt::format("peak{}_re", std::lround(keys[p])), deflections[p].real(), axes});
+    c.point_arrays.push_back({fmt::format("peak{}_im", std::lround(keys[p])), deflections[p].imag(), axes});
+  }
+  c.field_arrays.push_back({"frequency_hz", hz});
+  c.field_arrays.push_back({"peak", keys});
+  write_vtu(out / "vtk" / "ods.vtu", model.mesh, c);
+  run.tables.push_back("vtk/ods.vtu");
+  constexpr int kFrames = 16;
+  const std::string stem = fmt::format("ods_peak{}", std::lround(keys.front()));
+  fs::create_directories(out / "vtk" / stem);
+  std::vector<std::pair<double, std::string>> steps;
+  for (int i = 0; i < kFrames; ++i) {
+    const double theta = kTwoPi * i / kFrames;
+    const std::complex<double> turn = std::polar(1.0, theta);
+    const Eigen::MatrixXd u = (deflections.front() * turn).real();
+    const std::string frame = fmt::format("{}/frame_{:02}.vtu", stem, i);
+    write_vtu(out / "vtk" / frame, model.mesh, {{{"displacement", u, axes}}, {}});
+    steps.emplace_back(theta / (kTwoPi * hz.front()), frame);
+  }
+  write_pvd(out / "vtk" / (stem + ".pvd"), steps);
+  run.tables.push_back("vtk/" + stem + ".pvd");
+  return true;
+}
 
-void write_vtk_files(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model, const fs::path& out,
-                     RunRecord& run) {
+}  // namespace
+}  // namespace vtk_files_impl
+
+void write_vtk_files(const AnalysisSpec& spec, const AnalysisResults& results, const Model& model,
+                     const std::filesystem::path& out, RunRecord& run) {
+  using namespace vtk_files_impl;  // this file's helpers, in this scope only (unity builds)
   const Mesh& mesh = model.mesh;
   const std::string analysis = std::visit([](const auto& s) { return std::string(analysis_type_name(s)); }, spec);
   if (mesh.n_nodes() == 0) {
@@ -165,6 +218,8 @@ void write_vtk_files(const AnalysisSpec& spec, const AnalysisResults& results, c
     write_modes(modal->modal, mesh, out, run);
     written = true;
   }
+  if (const auto* frf = std::get_if<FrfOutcome>(&results.outcome))
+    written = write_deflections(std::get<FrfSpec>(spec), *frf, results.tables, model, out, run);
   if (const auto* cyclic = std::get_if<CyclicModalOutcome>(&results.outcome)) {
     write_disk(*cyclic, mesh, out, run);
     written = true;

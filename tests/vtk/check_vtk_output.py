@@ -7,7 +7,9 @@ every seam), and the cells the element count and VTK type of the mesh.
 
 An analysis with no field over the mesh (expect mesh.vtu) must write the mesh alone and warn.
 
-Usage: check_vtk_output.py BLADEBENCH CASE WORK CELL_TYPE [expect files...]"""
+A forced response's operating deflection (ods=NODE:AXIS:FRF_COLUMN) equals the sweep at its peaks.
+
+Usage: check_vtk_output.py BLADEBENCH CASE WORK CELL_TYPE [expect files...] [ods=NODE:AXIS:COLUMN]"""
 import csv
 import subprocess
 import sys
@@ -64,9 +66,37 @@ def check_disk(vtu, diameter_map):
     return len(waves)
 
 
+def check_deflection(out, node, axis, column):
+    """ods.vtu: at each peak, |U| at the response node equals the sweep's amplitude at that frequency
+    (frf.csv, residual_flexibility off); one period of the first peak as 16 frames in a .pvd, frame 0
+    = Re(U) and frame 4 (a quarter period) = -Im(U)."""
+    mesh = meshio.read(out / "vtk" / "ods.vtu")
+    row = list(mesh.point_data["node_id"]).index(node)
+    d = "xyz".index(axis)
+    sweep = table(out / "frf.csv")
+    grid = [float(f) for f in sweep["frequency_hz"]]
+    checked = 0
+    for f, key in zip(mesh.field_data["frequency_hz"], mesh.field_data["peak"]):
+        u = mesh.point_data[f"peak{int(key)}_re"][row, d] + 1j * mesh.point_data[f"peak{int(key)}_im"][row, d]
+        same_as_csv(f"ods peak {int(key)} at {f} Hz", [abs(u)], [sweep[column][grid.index(f)]])
+        checked += 1
+    first = int(mesh.field_data["peak"][0])
+    import xml.etree.ElementTree as ElementTree
+    frames = [e.get("file") for e in ElementTree.parse(out / "vtk" / f"ods_peak{first}.pvd").getroot().iter("DataSet")]
+    if len(frames) != 16:
+        fail(f"ods_peak{first}.pvd lists {len(frames)} frames, expected 16")
+    re, im = mesh.point_data[f"peak{first}_re"], mesh.point_data[f"peak{first}_im"]
+    for k, expected in ((0, re), (4, -im)):
+        u = meshio.read(out / "vtk" / frames[k]).point_data["displacement"]
+        if not np.abs(u - expected).max() <= 1e-15 * np.abs(expected).max():
+            fail(f"frame {k} of ods_peak{first}.pvd is not the deflection at its phase")
+    return checked + 2
+
+
 def main():
     binary, case, work, cell_type = sys.argv[1:5]
-    expected = sys.argv[5:]
+    expected = [a for a in sys.argv[5:] if not a.startswith("ods=")]
+    deflection = [a[4:].split(":") for a in sys.argv[5:] if a.startswith("ods=")]
     out = Path(work)
     result = subprocess.run([binary, "run", case, "--vtk", "--no-plots", "--no-cache", "--out", str(out)],
                             capture_output=True, text=True)
@@ -112,6 +142,8 @@ def main():
             freqs = table(out / "frequencies.csv")
             same_as_csv("frequency_hz", mesh.field_data["frequency_hz"], freqs["frequency_hz"])
             checked += 1
+    for node, axis, column in deflection:
+        checked += check_deflection(out, int(node), axis, column)
     for vtu in sorted((out / "vtk").glob("disk_nd*.vtu")):
         checked += check_disk(vtu, table(out / "nodal_diameter_map.csv"))
     if checked == 0:

@@ -234,3 +234,68 @@ def test_a_law_s_keys_are_refused_where_they_do_not_belong():
         law_sweep({"law": "bristle"}, [160.0])
     with pytest.raises(bladebench.InputError, match=r"'sliders': an integer"):
         law_sweep({"law": "iwan", "sliders": 2.5}, [160.0])
+
+
+def reference_rows(path):
+    rows = [line.strip().split(",") for line in open(path) if line.strip() and not line.startswith("#")]
+    header = rows[0]
+    return {name: np.array([float(r[k]) for r in rows[1:]]) for k, name in enumerate(header)}
+
+
+def test_shooting_with_coulomb_s_rigid_stick_is_den_hartog_s_exact_motion():
+    """1 kg on 1e6 N/m, 10 N, a Coulomb contact of 3 N (mu 0.3, n0 10 N): Den Hartog's exact
+    non-stop motion (references/verification/coulomb_den_hartog.py), to the reference's 12 digits."""
+    ref = reference_rows(SOURCE / "references/verification/coulomb_den_hartog.csv")
+    pick = [0, 40, 100]
+    out = bladebench.shooting_sweep(
+        mass=np.array([[1.0]]), stiffness=np.array([[1.0e6]]), damping=np.array([[0.0]]),
+        force=np.array([10.0 + 0j]), frequencies_hz=ref["frequency_hz"][pick],
+        contacts=[{"tangential": np.array([1.0]), "kt": 1.0e6, "mu": 0.3, "n0": 10.0, "law": "coulomb"}],
+        harmonics=3, steps_per_period=64, floquet=True)
+    assert out["converged"].all(), out["failures"]
+    np.testing.assert_allclose(out["largest"][:, 0], ref["max_m"][pick], rtol=1e-9)
+    np.testing.assert_allclose(out["amplitude"][:, 0], ref["first_harmonic_m"][pick], rtol=1e-9)
+    assert (out["transitions"] > 0).all() and out["stable"].all()
+
+
+def test_shooting_agrees_with_the_harmonic_balance_and_refuses_a_law_without_a_flow():
+    f = np.array([150.0, 175.0, 200.0])
+    contact = {"tangential": np.array([1.0]), "kt": 1.0e6, "mu": 0.3, "n0": 30.0}
+    args = dict(mass=np.array([[1.0]]), stiffness=np.array([[1.0e6]]), damping=np.array([[10.0]]),
+                force=np.array([5.0 + 0j]), frequencies_hz=f)
+    exact = bladebench.shooting_sweep(contacts=[contact], harmonics=5, **args)
+    balance = bladebench.hbm_sweep(contacts=[contact], harmonics=15, **args)
+    assert exact["converged"].all() and balance["converged"].all()
+    np.testing.assert_allclose(exact["amplitude"], balance["amplitude"], rtol=1e-4)
+    with pytest.raises(bladebench.InputError, match="coupled_slip.*use hbm_sweep"):
+        bladebench.shooting_sweep(contacts=[dict(contact, law="coupled_slip", tangential_2=np.array([0.0]))], **args)
+
+
+def test_a_nonlinear_mode_goes_from_the_stuck_to_the_sliding_oscillator():
+    """1 kg on 1e6 N/m (c = 10 N s/m) with a Jenkins contact kt = 1e6 N/m, slip force 3 N: at small
+    amplitude the stuck oscillator (k + kt, viscous ratio c / (2 m w)), at large amplitude the free
+    one (k), and friction damping in between."""
+    out = bladebench.nonlinear_modes(
+        mass=np.array([[1.0]]), stiffness=np.array([[1.0e6]]), damping=np.array([[10.0]]),
+        contacts=[{"tangential": np.array([1.0]), "kt": 1.0e6, "mu": 0.3, "n0": 10.0}],
+        amplitudes=np.geomspace(1e-8, 1e-2, 25), harmonics=5)
+    assert out["converged"], out["failure"]
+    stuck, free = math.sqrt(2.0e6), math.sqrt(1.0e6)
+    np.testing.assert_allclose(out["frequency_hz"][0], stuck / (2 * math.pi), rtol=1e-9)
+    np.testing.assert_allclose(out["damping_ratio"][0], 10.0 / (2 * stuck), rtol=1e-6)
+    assert abs(out["frequency_hz"][-1] / (free / (2 * math.pi)) - 1) < 2e-3
+    assert out["damping_ratio"].max() > 10 * out["damping_ratio"][0]
+    assert out["coefficients"].shape == (25, 1, 11)
+
+
+def test_cyclic_modes_give_each_nodal_diameter_s_waves():
+    """The 24-sector disk against CalculiX's cyclic symmetry on the same sector (the case's reference)."""
+    disk = bladebench.cyclic_modes(str(SOURCE / "cases/beyond/bladed_disk_cyclic_modal.toml"))
+    ccx = reference_rows(SOURCE / "references/verification/calculix_bladed_disk_cyclic.csv")
+    assert disk["sectors"] == 24 and len(disk["diameters"]) == len(ccx["nodal_diameter"])
+    for k, nd in enumerate(disk["diameters"]):
+        assert nd["nodal_diameter"] == ccx["nodal_diameter"][k]
+        np.testing.assert_allclose(nd["frequency_hz"][:2], [ccx["f1_hz"][k], ccx["f2_hz"][k]], rtol=1e-5)
+        assert nd["cosine"].shape == (len(nd["frequency_hz"]), len(disk["node_ids"]), 3)
+        if nd["nodal_diameter"] in (0, 12):
+            assert not nd["sine"].any()

@@ -11,10 +11,16 @@ Files written to cases/verification/data/hb_chain/ (Harwell-Boeing after Duff, G
   chain.K.rsa   K as RSA, the lower triangle by columns, values 17 digits in (3E26.17)
   chain.M.rua   M as RUA, every entry (the diagonal), (4D20.12): Fortran's D exponent
   chain.mapping the DOF map as Ansys HBMAT writes it ("Matrix Eqn  Node  DOF")
-and references/verification/harwell_boeing_chain_modes.csv (mode, frequency_hz).
+and references/verification/harwell_boeing_chain_modes.csv (mode, frequency_hz), and
+harwell_boeing_chain_receptance.csv: the chain's response to 1 N at its free end (node 108, x) with
+modal damping 0.01 on every mode, C = M Phi diag(2 zeta w_r) Phi^T M (numpy's eigh of the pencil),
+at 40-120 Hz every 5 Hz, the amplitudes at nodes 108 and 101 (cases/verification/
+harwell_boeing_chain_hbm.toml: the harmonic balance of the same export with a frictionless contact).
 """
 import math
 from pathlib import Path
+
+import numpy as np
 
 N, MASS, K_SPRING = 8, 0.5, 2.0e6
 FIRST_NODE = 101
@@ -79,6 +85,22 @@ def main():
         w = 2.0 * math.sqrt(K_SPRING / MASS) * math.sin((2 * j - 1) * math.pi / (2 * (2 * N + 1)))
         out.append(f"{j},{w / (2 * math.pi):.15g}")
     (here / "harwell_boeing_chain_modes.csv").write_text("\n".join(out) + "\n")
+
+    kk, mm = np.array(k), np.array(m)
+    lam, phi = np.linalg.eigh(np.linalg.solve(np.linalg.cholesky(mm), kk) @ np.linalg.inv(np.linalg.cholesky(mm)).T)
+    phi = np.linalg.inv(np.linalg.cholesky(mm)).T @ phi  # mass-normalized
+    w = np.sqrt(lam)
+    c = mm @ phi @ np.diag(2 * 0.01 * w) @ phi.T @ mm
+    f = np.zeros(N)
+    f[N - 1] = 1.0
+    rows = ["# Receptance of the chain of harwell_boeing_chain.py at 1 N on node 108 x, modal damping 0.01",
+            "# (C = M Phi diag(2 zeta w) Phi^T M); amplitudes [m] at nodes 108 and 101 (x)",
+            "point,frequency_hz,tip_amp_m,root_amp_m"]
+    for i, hz in enumerate(np.arange(40.0, 120.0 + 1e-9, 5.0)):
+        om = 2 * math.pi * hz
+        u = np.linalg.solve(kk - om**2 * mm + 1j * om * c, f)
+        rows.append(f"{i + 1},{hz:g},{abs(u[N - 1]):.15g},{abs(u[0]):.15g}")
+    (here / "harwell_boeing_chain_receptance.csv").write_text("\n".join(rows) + "\n")
 
 
 if __name__ == "__main__":

@@ -5,12 +5,17 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/operating_deflection.hpp"
+#include "assembly/dof_map.hpp"
 #include "common/constants.hpp"
 #include "cyclic/cyclic_boundary.hpp"
+#include "friction/friction_system.hpp"
+#include "friction/jenkins.hpp"
+#include "hbm/condensed_balance.hpp"
 #include "mesh/vtu_writer.hpp"
 #include "report/writers.hpp"
 
@@ -149,6 +154,28 @@ void write_disk(const CyclicModalOutcome& o, const Mesh& sector, const fs::path&
   }
 }
 
+// One period of a motion of harmonics `coefficients` (nodes x dim each: c0, a1, b1, ...) as 16 frames
+// in a .pvd (vtk/<stem>.pvd, frames in vtk/<stem>/), u(theta) = c0 + sum a_h cos(h theta) + b_h sin(h theta).
+void write_period(const Mesh& mesh, const std::vector<Eigen::MatrixXd>& coefficients, double hz,
+                  const std::string& stem, const fs::path& out, RunRecord& run) {
+  constexpr int kFrames = 16;
+  const std::vector<std::string> axes(kAxes, kAxes + mesh.dim);
+  fs::create_directories(out / "vtk" / stem);
+  std::vector<std::pair<double, std::string>> steps;
+  for (int i = 0; i < kFrames; ++i) {
+    const double theta = kTwoPi * i / kFrames;
+    Eigen::MatrixXd u = coefficients.front();
+    for (size_t h = 1; 2 * h < coefficients.size(); ++h)
+      u += coefficients[2 * h - 1] * std::cos(static_cast<double>(h) * theta) +
+           coefficients[2 * h] * std::sin(static_cast<double>(h) * theta);
+    const std::string frame = fmt::format("{}/frame_{:02}.vtu", stem, i);
+    write_vtu(out / "vtk" / frame, mesh, {{{"displacement", u, axes}}, {}});
+    steps.emplace_back(theta / (kTwoPi * hz), frame);
+  }
+  write_pvd(out / "vtk" / (stem + ".pvd"), steps);
+  run.tables.push_back("vtk/" + stem + ".pvd");
+}
+
 // A forced response's operating deflection at each peak of the full model (at the sweep's frequency
 // nearest the peak, where the sweep has its value): real and imaginary parts in vtk/ods.vtu, and one
 // period of the first peak's motion as 16 frames (vtk/ods_peak<key>.pvd) to animate. False when the
@@ -180,20 +207,139 @@ bool write_deflections(const FrfSpec& spec, const FrfOutcome& frf, const ResultT
   c.field_arrays.push_back({"peak", keys});
   write_vtu(out / "vtk" / "ods.vtu", model.mesh, c);
   run.tables.push_back("vtk/ods.vtu");
-  constexpr int kFrames = 16;
-  const std::string stem = fmt::format("ods_peak{}", std::lround(keys.front()));
+  // u = Re(U e^{i theta}): a1 = Re U, b1 = -Im U.
+  const Eigen::MatrixXcd& u = deflections.front();
+  write_period(model.mesh, {Eigen::MatrixXd::Zero(u.rows(), u.cols()), u.real(), -u.imag()}, hz.front(),
+               fmt::format("ods_peak{}", std::lround(keys.front())), out, run);
+  return true;
+}
+
+// Where each contact of a harmonic balance acts: the mean position of the node sets its tangential
+// DOFs name ("tip.y" -> set "tip"); nullopt for a contact on none (modal coordinates, a damper).
+std::optional<Eigen::Vector3d> contact_position(const friction::ContactElement& contact,
+                                                const std::vector<std::string>& dof_names, const Model& model) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (Eigen::Index d = 0; d < contact.tangential.size(); ++d) {
+    if (contact.tangential[d] == 0.0 || static_cast<size_t>(d) >= dof_names.size()) continue;
+    const std::string& name = dof_names[static_cast<size_t>(d)];
+    const auto set = model.node_sets.find(name.substr(0, name.rfind('.')));
+    if (set == model.node_sets.end()) continue;
+    for (const int node : set->second) {
+      sum.head(model.mesh.dim) += model.mesh.coords.row(node).transpose();
+      ++count;
+    }
+  }
+  if (count == 0) return std::nullopt;
+  return sum / count;
+}
+
+// The contacts of the first peak over its period, one frame per AFT sample (vtk/contacts_fe1_peak1.pvd):
+// points with the tangential and normal forces [N], the relative tangential displacement [m] and
+// the state (0 stick, 1 and -1 slip along +u and -u, 2 lift-off), the same samples contact_states.csv
+// counts. False when no contact has a place on the mesh.
+bool write_contact_frames(const HbmOutcome& o, const Model& model, const HbmPeak& peak, const fs::path& out,
+                          RunRecord& run) {
+  std::vector<size_t> located;
+  Eigen::MatrixXd points(0, 3);
+  for (size_t c = 0; c < o.prepared.model.contacts.size() && c < peak.solution.contacts.size(); ++c)
+    if (const auto x = contact_position(o.prepared.model.contacts[c], o.prepared.dof_names, model)) {
+      located.push_back(c);
+      points.conservativeResize(points.rows() + 1, 3);
+      points.row(points.rows() - 1) = x->transpose();
+    }
+  if (located.empty()) return false;
+  const std::string stem = "contacts_fe1_peak1";
   fs::create_directories(out / "vtk" / stem);
+  const Eigen::Index samples = peak.solution.contacts[located.front()].t.size();
   std::vector<std::pair<double, std::string>> steps;
-  for (int i = 0; i < kFrames; ++i) {
-    const double theta = kTwoPi * i / kFrames;
-    const std::complex<double> turn = std::polar(1.0, theta);
-    const Eigen::MatrixXd u = (deflections.front() * turn).real();
-    const std::string frame = fmt::format("{}/frame_{:02}.vtu", stem, i);
-    write_vtu(out / "vtk" / frame, model.mesh, {{{"displacement", u, axes}}, {}});
-    steps.emplace_back(theta / (kTwoPi * hz.front()), frame);
+  for (Eigen::Index k = 0; k < samples; ++k) {
+    const auto n = static_cast<Eigen::Index>(located.size());
+    Eigen::VectorXd t(n), normal(n), u(n), state(n), index(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const friction::AftResult& a = peak.solution.contacts[located[static_cast<size_t>(i)]];
+      t[i] = a.t[k];
+      normal[i] = a.n[k];
+      u[i] = a.u[k];
+      const friction::ContactState s = a.state[static_cast<size_t>(k)];
+      state[i] = s == friction::ContactState::stick           ? 0.0
+                 : s == friction::ContactState::slip_positive ? 1.0
+                 : s == friction::ContactState::slip_negative ? -1.0
+                                                              : 2.0;
+      index[i] = static_cast<double>(located[static_cast<size_t>(i)] + 1);
+    }
+    const std::string frame = fmt::format("{}/frame_{:03}.vtu", stem, k);
+    write_point_vtu(out / "vtk" / frame, points,
+                    {{{"tangential_force", t, {}},
+                      {"normal_force", normal, {}},
+                      {"relative_displacement", u, {}},
+                      {"state", state, {}},
+                      {"contact", index, {}}},
+                     {}});
+    steps.emplace_back(kTwoPi * static_cast<double>(k) / static_cast<double>(samples) / peak.solution.omega, frame);
   }
   write_pvd(out / "vtk" / (stem + ".pvd"), steps);
   run.tables.push_back("vtk/" + stem + ".pvd");
+  return true;
+}
+
+// A harmonic balance's motion at each peak recovered on the mesh through the Craig-Bampton model:
+// harmonic h as U_h = a_h - i b_h (u = Re(sum U_h e^{i h w t}) + c0), arrays "fe<level>_peak<k>_h<h>_re"
+// and "_im" (h = 0: the static part, "_re" only) in vtk/hbm_peaks.vtu, and the first peak's period as
+// frames. False when the linear model has no recovery to the mesh (a model read from a file, a
+// cyclic sector) or there is no peak.
+bool write_hbm_deflections(const HbmOutcome& o, const Model& model, const fs::path& out, RunRecord& run) {
+  const ReducedModel& linear = o.prepared.linear;
+  const DofMap dofs = number_dofs(model);
+  if (linear.recovery.size() == 0 || linear.recovery.rows() != dofs.n_free) return false;
+  const int dim = model.mesh.dim;
+  const std::vector<std::string> axes(kAxes, kAxes + dim);
+  auto nodal = [&](const Eigen::VectorXd& free) {
+    Eigen::MatrixXd u = Eigen::MatrixXd::Zero(model.mesh.n_nodes(), dim);
+    for (int node = 0; node < model.mesh.n_nodes(); ++node)
+      for (int d = 0; d < dim; ++d)
+        if (const int eq = dofs.equation[static_cast<size_t>(node * dim + d)]; eq >= 0) u(node, d) = free[eq];
+    return u;
+  };
+  VtkContent c;
+  std::vector<double> hz, force, harmonics;
+  std::vector<Eigen::MatrixXd> first;  // the first peak's coefficients, for its period
+  const HbmPeak* first_peak = nullptr;
+  for (size_t l = 0; l < o.levels.size(); ++l) {
+    const HbmLevel& level = o.levels[l];
+    friction::FrictionModel at_level = o.prepared.model;
+    friction::scale_excitation(at_level, level.force);
+    for (size_t k = 0; k < level.peaks.size(); ++k) {
+      const HbmPeak& peak = level.peaks[k];
+      const hbm::HarmonicBalance balance(at_level, hbm::HbmOptions{.harmonics = peak.harmonics});
+      const Eigen::MatrixXd q = balance.recover(peak.solution.x, peak.solution.omega);
+      const Eigen::MatrixXd free = linear.recovery * q.topRows(linear.recovery.cols());
+      const std::string name = fmt::format("fe{}_peak{}", l + 1, k + 1);
+      std::vector<Eigen::MatrixXd> coefficients;
+      for (Eigen::Index col = 0; col < free.cols(); ++col) coefficients.push_back(nodal(free.col(col)));
+      c.point_arrays.push_back({name + "_h0_re", coefficients.front(), axes});
+      for (int h = 1; 2 * h < static_cast<int>(coefficients.size()); ++h) {
+        c.point_arrays.push_back(
+            {fmt::format("{}_h{}_re", name, h), coefficients[2 * static_cast<size_t>(h) - 1], axes});
+        c.point_arrays.push_back({fmt::format("{}_h{}_im", name, h), -coefficients[2 * static_cast<size_t>(h)], axes});
+      }
+      hz.push_back(peak.frequency_hz);
+      force.push_back(level.force);
+      harmonics.push_back(peak.harmonics);
+      if (first.empty()) {
+        first = std::move(coefficients);
+        first_peak = &peak;
+      }
+    }
+  }
+  if (first.empty()) return false;
+  c.field_arrays.push_back({"frequency_hz", hz});
+  c.field_arrays.push_back({"force_n", force});
+  c.field_arrays.push_back({"harmonics", harmonics});
+  write_vtu(out / "vtk" / "hbm_peaks.vtu", model.mesh, c);
+  run.tables.push_back("vtk/hbm_peaks.vtu");
+  write_period(model.mesh, first, hz.front(), "hbm_fe1_peak1", out, run);
+  write_contact_frames(o, model, *first_peak, out, run);
   return true;
 }
 
@@ -220,6 +366,8 @@ void write_vtk_files(const AnalysisSpec& spec, const AnalysisResults& results, c
   }
   if (const auto* frf = std::get_if<FrfOutcome>(&results.outcome))
     written = write_deflections(std::get<FrfSpec>(spec), *frf, results.tables, model, out, run);
+  if (const auto* hbm = std::get_if<HbmOutcome>(&results.outcome))
+    written = write_hbm_deflections(*hbm, model, out, run);
   if (const auto* cyclic = std::get_if<CyclicModalOutcome>(&results.outcome)) {
     write_disk(*cyclic, mesh, out, run);
     written = true;

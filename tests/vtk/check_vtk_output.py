@@ -7,9 +7,11 @@ every seam), and the cells the element count and VTK type of the mesh.
 
 An analysis with no field over the mesh (expect mesh.vtu) must write the mesh alone and warn.
 
-A forced response's operating deflection (ods=NODE:AXIS:FRF_COLUMN) equals the sweep at its peaks.
+A forced response's operating deflection (ods=NODE:AXIS:FRF_COLUMN) equals the sweep at its peaks;
+a harmonic balance's peak recovered on the mesh (hbm=NODE:AXIS:PEAKS_COLUMN) the peaks table's, and
+its contacts' states over the period the shares of contact_states.csv.
 
-Usage: check_vtk_output.py BLADEBENCH CASE WORK CELL_TYPE [expect files...] [ods=NODE:AXIS:COLUMN]"""
+Usage: check_vtk_output.py BLADEBENCH CASE WORK CELL_TYPE [expect files...] [ods=|hbm=NODE:AXIS:COLUMN]"""
 import csv
 import subprocess
 import sys
@@ -93,10 +95,36 @@ def check_deflection(out, node, axis, column):
     return checked + 2
 
 
+def check_hbm(out, node, axis, column):
+    """hbm_peaks.vtu: the first harmonic of the first peak at the response node equals the peaks
+    table's amplitude there; its period's frame 0 is the sum of its harmonics' cosine parts."""
+    mesh = meshio.read(out / "vtk" / "hbm_peaks.vtu")
+    row = list(mesh.point_data["node_id"]).index(node)
+    d = "xyz".index(axis)
+    u1 = mesh.point_data["fe1_peak1_h1_re"][row, d] + 1j * mesh.point_data["fe1_peak1_h1_im"][row, d]
+    peaks = table(out / "peaks.csv")
+    same_as_csv("hbm peak 1, harmonic 1", [abs(u1)], [peaks[column][0]])
+    import xml.etree.ElementTree as ElementTree
+    frames = [e.get("file") for e in ElementTree.parse(out / "vtk" / "hbm_fe1_peak1.pvd").getroot().iter("DataSet")]
+    start = meshio.read(out / "vtk" / frames[0]).point_data["displacement"]
+    h = int(mesh.field_data["harmonics"][0])
+    expected = mesh.point_data["fe1_peak1_h0_re"] + sum(mesh.point_data[f"fe1_peak1_h{k}_re"] for k in range(1, h + 1))
+    if not np.abs(start - expected).max() <= 1e-14 * np.abs(expected).max():
+        fail("frame 0 of hbm_fe1_peak1.pvd is not the sum of the harmonics' cosine parts")
+    # The contacts over the period: one frame per AFT sample, the share of stuck samples that of
+    # contact_states.csv (its first row: level 1, peak 1, contact 1).
+    frames = [e.get("file") for e in ElementTree.parse(out / "vtk" / "contacts_fe1_peak1.pvd").getroot().iter("DataSet")]
+    states = [meshio.read(out / "vtk" / f).point_data["state"][0] for f in frames]
+    stick = sum(1 for s in states if s == 0) / len(states)
+    same_as_csv("contact 1 stick share over the period", [stick], [table(out / "contact_states.csv")["stick"][0]])
+    return 3
+
+
 def main():
     binary, case, work, cell_type = sys.argv[1:5]
-    expected = [a for a in sys.argv[5:] if not a.startswith("ods=")]
+    expected = [a for a in sys.argv[5:] if "=" not in a]
     deflection = [a[4:].split(":") for a in sys.argv[5:] if a.startswith("ods=")]
+    balance = [a[4:].split(":") for a in sys.argv[5:] if a.startswith("hbm=")]
     out = Path(work)
     result = subprocess.run([binary, "run", case, "--vtk", "--no-plots", "--no-cache", "--out", str(out)],
                             capture_output=True, text=True)
@@ -144,6 +172,8 @@ def main():
             checked += 1
     for node, axis, column in deflection:
         checked += check_deflection(out, int(node), axis, column)
+    for node, axis, column in balance:
+        checked += check_hbm(out, int(node), axis, column)
     for vtu in sorted((out / "vtk").glob("disk_nd*.vtu")):
         checked += check_disk(vtu, table(out / "nodal_diameter_map.csv"))
     if checked == 0:

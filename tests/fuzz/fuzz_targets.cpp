@@ -14,9 +14,11 @@
 #include "common/errors.hpp"
 #include "identify/measured_data.hpp"
 #include "mesh/csv_mesh.hpp"
+#include "mesh/abaqus_inp.hpp"
 #include "mesh/gmsh_import.hpp"
 #include "model/build_model.hpp"
 #include "pipeline/calibrate_case.hpp"
+#include "reduction/harwell_boeing.hpp"
 #include "reduction/reduced_model_io.hpp"
 
 namespace bb::fuzz {
@@ -162,10 +164,30 @@ void gmsh_mesh(const uint8_t* data, size_t size) {
   refuse_or_read([&] { read_gmsh_msh41(file); });
 }
 
+void inp_deck(const uint8_t* data, size_t size) {
+  const auto parts = split({reinterpret_cast<const char*>(data), size}, 2);
+  const fs::path dir = work_folder();
+  write(dir / "deck.inp", parts[0]);
+  write(dir / "part.inp", parts[1]);
+  refuse_or_read([&] { read_abaqus_inp(dir / "deck.inp", dir); });
+}
+
+void harwell_boeing(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  const auto parts = split({reinterpret_cast<const char*>(data) + 1, size - 1}, 2);
+  const fs::path dir = work_folder();
+  write(dir / "matrix.hb", parts[0]);
+  write(dir / "dofs.mapping", parts[1]);
+  const Eigen::Index n = data[0] % 16 + 1;
+  refuse_or_read([&] { read_harwell_boeing(dir / "matrix.hb", n, "the fuzz input names them"); });
+  refuse_or_read([&] { read_dof_map(dir / "dofs.mapping"); });
+}
+
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {{"case_file", case_file},         {"case_run", case_run},         {"calibration", calibration},
                                           {"measured_data", measured_data}, {"reduced_model", reduced_model},
-                                          {"csv_mesh", csv_mesh},           {"gmsh_mesh", gmsh_mesh}};
+                                          {"csv_mesh", csv_mesh},           {"gmsh_mesh", gmsh_mesh},
+                                          {"inp_deck", inp_deck},           {"harwell_boeing", harwell_boeing}};
   return all;
 }
 

@@ -26,6 +26,8 @@ void measured_data(const uint8_t* data, size_t size);  // byte 0 picks peaks / f
 void reduced_model(const uint8_t* data, size_t size);  // sidecar @@ K @@ M (Matrix Market or CSV)
 void csv_mesh(const uint8_t* data, size_t size);       // byte 0 picks the element; nodes @@ elements
 void gmsh_mesh(const uint8_t* data, size_t size);      // a Gmsh .msh file
+void inp_deck(const uint8_t* data, size_t size);       // an Abaqus / CalculiX deck @@ a file it may *INCLUDE (part.inp)
+void harwell_boeing(const uint8_t* data, size_t size);  // byte 0 picks n (1-16); a matrix file @@ a DOF map
 
 struct Target {
   const char* name;

@@ -12,6 +12,7 @@
 
 #include "analysis/cyclic_modal_analysis.hpp"
 #include "analysis/run_analysis.hpp"
+#include "assembly/dof_map.hpp"
 #include "cases/case_settings.hpp"
 #include "cases/case_spec.hpp"
 #include "common/errors.hpp"
@@ -111,13 +112,16 @@ py::dict cyclic_modes(const std::string& case_file, const std::vector<std::strin
         sine({families, nodes, static_cast<py::ssize_t>(dim)});
     auto c = cosine.mutable_unchecked<3>();
     auto s = sine.mutable_unchecked<3>();
-    for (py::ssize_t f = 0; f < families; ++f)
+    for (py::ssize_t f = 0; f < families; ++f) {
+      const Eigen::MatrixXd cos_rows = nodal_rows(o.dofs, nd.cosine.col(f));
+      const Eigen::MatrixXd sin_rows =
+          nd.pairs ? nodal_rows(o.dofs, nd.sine.col(f)) : Eigen::MatrixXd::Zero(nodes, dim);
       for (py::ssize_t node = 0; node < nodes; ++node)
         for (int d = 0; d < dim; ++d) {
-          const int eq = o.dofs.equation[static_cast<size_t>(node * dim + d)];
-          c(f, node, d) = eq >= 0 ? nd.cosine(eq, f) : 0.0;
-          s(f, node, d) = eq >= 0 && nd.pairs ? nd.sine(eq, f) : 0.0;
+          c(f, node, d) = cos_rows(node, d);
+          s(f, node, d) = sin_rows(node, d);
         }
+    }
     py::dict entry;
     entry["nodal_diameter"] = nd.nodal_diameter;
     entry["frequency_hz"] = nd.frequencies_hz;

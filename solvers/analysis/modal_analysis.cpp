@@ -94,10 +94,7 @@ ModalResult solve_modal(const Model& model, const FreeSystem& system, const Mode
     }
   }
   for (Eigen::Index k_mode = 0; k_mode < sol.shapes.cols(); ++k_mode) {
-    Eigen::MatrixXd shape = Eigen::MatrixXd::Zero(mesh.n_nodes(), mesh.dim);
-    for (int i = 0; i < dofs.n_free; ++i)
-      shape(dofs.free_dofs[i] / mesh.dim, dofs.free_dofs[i] % mesh.dim) = sol.shapes(i, k_mode);
-    result.shapes.push_back(std::move(shape));
+    result.shapes.push_back(nodal_rows(dofs, sol.shapes.col(k_mode)));
   }
   return result;
 }

@@ -23,6 +23,15 @@ Eigen::VectorXd to_global(const DofMap& dofs, const Eigen::VectorXd& free, bool 
   return all;
 }
 
+Eigen::MatrixXd nodal_rows(const DofMap& dofs, const Eigen::VectorXd& free) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(dofs.n_global() / dofs.dim, dofs.dim);
+  for (int i = 0; i < dofs.n_free; ++i) {
+    const int global = dofs.free_dofs[static_cast<size_t>(i)];
+    out(global / dofs.dim, global % dofs.dim) = free[i];
+  }
+  return out;
+}
+
 DofMap number_dofs(const Model& model) {
   DofMap map;
   map.dim = model.mesh.dim;

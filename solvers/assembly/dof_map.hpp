@@ -24,6 +24,9 @@ Eigen::VectorXd free_part(const DofMap& dofs, const Eigen::VectorXd& global);
 // A vector over every nodal DOF from the free equations' values: the constrained ones take their
 // prescribed values, or zero (an increment, a shape) when `with_prescribed` is false.
 Eigen::VectorXd to_global(const DofMap& dofs, const Eigen::VectorXd& free, bool with_prescribed);
+// The free equations' values laid out over the mesh, one row per node (n_nodes x dim), constrained
+// DOFs zero: a mode shape, an increment, a harmonic of a response.
+Eigen::MatrixXd nodal_rows(const DofMap& dofs, const Eigen::VectorXd& free);
 
 // Throws InputError when a constraint names an unknown set.
 DofMap number_dofs(const Model& model);

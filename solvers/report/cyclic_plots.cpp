@@ -92,11 +92,7 @@ Plot plot_cyclic_campbell(const CyclicModalOutcome& o, const CyclicModalSpec& sp
 Plot plot_sector_wave(const CyclicModalOutcome& o, const Mesh& mesh, size_t index, int family, const fs::path& out_dir,
                       const std::string& stem) {
   const NodalDiameterModes& nd = o.diameters.at(index);
-  const Eigen::VectorXd global = to_global(o.dofs, nd.cosine.col(family - 1), false);
-  Eigen::MatrixXd u(mesh.n_nodes(), mesh.dim);
-  for (int n = 0; n < mesh.n_nodes(); ++n)
-    for (int d = 0; d < mesh.dim; ++d) u(n, d) = global[n * mesh.dim + d];
-  return plot_deformed_mesh(mesh, u, out_dir, stem,
+  return plot_deformed_mesh(mesh, nodal_rows(o.dofs, nd.cosine.col(family - 1)), out_dir, stem,
                             fmt::format("Nodal diameter {}, family {}: {:.2f} Hz (cosine part on the sector)",
                                         nd.nodal_diameter, family, nd.frequencies_hz[family - 1]));
 }

@@ -13,9 +13,8 @@
 #include "assembly/dof_map.hpp"
 #include "common/constants.hpp"
 #include "cyclic/cyclic_boundary.hpp"
-#include "friction/friction_system.hpp"
+#include "forced/hbm_level_system.hpp"
 #include "friction/jenkins.hpp"
-#include "hbm/condensed_balance.hpp"
 #include "mesh/vtu_writer.hpp"
 #include "report/writers.hpp"
 
@@ -113,14 +112,6 @@ void write_disk(const CyclicModalOutcome& o, const Mesh& sector, const fs::path&
   const int dim = sector.dim;
   const Eigen::Index n = sector.n_nodes();
   const Eigen::MatrixXd rotation = sector_rotation(o.sectors, dim);
-  // A sector's free-DOF vector as its nodes' displacements (constrained DOFs 0).
-  auto nodal = [&](const Eigen::VectorXd& free) {
-    Eigen::MatrixXd u = Eigen::MatrixXd::Zero(n, dim);
-    for (Eigen::Index node = 0; node < n; ++node)
-      for (int d = 0; d < dim; ++d)
-        if (const int eq = o.dofs.equation[static_cast<size_t>(node * dim + d)]; eq >= 0) u(node, d) = free[eq];
-    return u;
-  };
   for (const NodalDiameterModes& nd : o.diameters) {
     VtkContent c;
     c.point_arrays.push_back(
@@ -128,8 +119,8 @@ void write_disk(const CyclicModalOutcome& o, const Mesh& sector, const fs::path&
          Eigen::Map<const Eigen::VectorXd>(sector_of_point.data(), static_cast<Eigen::Index>(sector_of_point.size())),
          {}});
     for (Eigen::Index f = 0; f < nd.frequencies_hz.size(); ++f) {
-      const Eigen::MatrixXd cosine = nodal(nd.cosine.col(f));
-      const Eigen::MatrixXd sine = nd.pairs ? nodal(nd.sine.col(f)) : Eigen::MatrixXd::Zero(n, dim);
+      const Eigen::MatrixXd cosine = nodal_rows(o.dofs, nd.cosine.col(f));
+      const Eigen::MatrixXd sine = nd.pairs ? nodal_rows(o.dofs, nd.sine.col(f)) : Eigen::MatrixXd::Zero(n, dim);
       for (const bool sine_wave : {false, true}) {
         if (sine_wave && !nd.pairs) continue;
         Eigen::MatrixXd u(n * o.sectors, dim);
@@ -288,35 +279,28 @@ bool write_contact_frames(const HbmOutcome& o, const Model& model, const HbmPeak
 // and "_im" (h = 0: the static part, "_re" only) in vtk/hbm_peaks.vtu, and the first peak's period as
 // frames. False when the linear model has no recovery to the mesh (a model read from a file, a
 // cyclic sector) or there is no peak.
-bool write_hbm_deflections(const HbmOutcome& o, const Model& model, const fs::path& out, RunRecord& run) {
+bool write_hbm_deflections(const HbmSpec& spec, const HbmOutcome& o, const Model& model, const fs::path& out,
+                           RunRecord& run) {
   const ReducedModel& linear = o.prepared.linear;
   const DofMap dofs = number_dofs(model);
   if (linear.recovery.size() == 0 || linear.recovery.rows() != dofs.n_free) return false;
   const int dim = model.mesh.dim;
   const std::vector<std::string> axes(kAxes, kAxes + dim);
-  auto nodal = [&](const Eigen::VectorXd& free) {
-    Eigen::MatrixXd u = Eigen::MatrixXd::Zero(model.mesh.n_nodes(), dim);
-    for (int node = 0; node < model.mesh.n_nodes(); ++node)
-      for (int d = 0; d < dim; ++d)
-        if (const int eq = dofs.equation[static_cast<size_t>(node * dim + d)]; eq >= 0) u(node, d) = free[eq];
-    return u;
-  };
   VtkContent c;
   std::vector<double> hz, force, harmonics;
   std::vector<Eigen::MatrixXd> first;  // the first peak's coefficients, for its period
   const HbmPeak* first_peak = nullptr;
   for (size_t l = 0; l < o.levels.size(); ++l) {
     const HbmLevel& level = o.levels[l];
-    friction::FrictionModel at_level = o.prepared.model;
-    friction::scale_excitation(at_level, level.force);
     for (size_t k = 0; k < level.peaks.size(); ++k) {
       const HbmPeak& peak = level.peaks[k];
-      const hbm::HarmonicBalance balance(at_level, hbm::HbmOptions{.harmonics = peak.harmonics});
+      // The peak's own system (its H), as the sweep built it.
+      const hbm::HarmonicBalance balance = level_system(o.prepared, spec, level.force, peak.harmonics, level.samples);
       const Eigen::MatrixXd q = balance.recover(peak.solution.x, peak.solution.omega);
       const Eigen::MatrixXd free = linear.recovery * q.topRows(linear.recovery.cols());
       const std::string name = fmt::format("fe{}_peak{}", l + 1, k + 1);
       std::vector<Eigen::MatrixXd> coefficients;
-      for (Eigen::Index col = 0; col < free.cols(); ++col) coefficients.push_back(nodal(free.col(col)));
+      for (Eigen::Index col = 0; col < free.cols(); ++col) coefficients.push_back(nodal_rows(dofs, free.col(col)));
       c.point_arrays.push_back({name + "_h0_re", coefficients.front(), axes});
       for (int h = 1; 2 * h < static_cast<int>(coefficients.size()); ++h) {
         c.point_arrays.push_back(
@@ -367,7 +351,7 @@ void write_vtk_files(const AnalysisSpec& spec, const AnalysisResults& results, c
   if (const auto* frf = std::get_if<FrfOutcome>(&results.outcome))
     written = write_deflections(std::get<FrfSpec>(spec), *frf, results.tables, model, out, run);
   if (const auto* hbm = std::get_if<HbmOutcome>(&results.outcome))
-    written = write_hbm_deflections(*hbm, model, out, run);
+    written = write_hbm_deflections(std::get<HbmSpec>(spec), *hbm, model, out, run);
   if (const auto* cyclic = std::get_if<CyclicModalOutcome>(&results.outcome)) {
     write_disk(*cyclic, mesh, out, run);
     written = true;
